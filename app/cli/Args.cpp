@@ -1,0 +1,51 @@
+#include "app/cli/Args.h"
+
+#include <algorithm>
+#include <charconv>
+
+namespace palpate::cli {
+
+Args::Args(std::vector<std::string> words, std::vector<std::string> flags, std::vector<std::string> options) {
+    auto known = [](const std::vector<std::string>& list, const std::string& w) {
+        return std::find(list.begin(), list.end(), w) != list.end();
+    };
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        const std::string& w = words[i];
+        if (w.rfind("--", 0) != 0) {
+            mPositional.push_back(w);
+            continue;
+        }
+        const std::string name = w.substr(2);
+        if (known(flags, name)) {
+            mFlagsSet.push_back(name);
+        } else if (known(options, name)) {
+            if (i + 1 >= words.size()) {
+                mError = "option --" + name + " needs a value";
+                return;
+            }
+            mOptions.emplace_back(name, words[++i]);
+        } else {
+            mError = "unknown option " + w;
+            return;
+        }
+    }
+}
+
+bool Args::flag(const std::string& name) const {
+    return std::find(mFlagsSet.begin(), mFlagsSet.end(), name) != mFlagsSet.end();
+}
+
+std::optional<std::string> Args::option(const std::string& name) const {
+    for (const auto& [k, v] : mOptions)
+        if (k == name) return v;
+    return std::nullopt;
+}
+
+std::optional<long long> parsePositiveInt(const std::string& text) {
+    long long value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size() || value <= 0) return std::nullopt;
+    return value;
+}
+
+}  // namespace palpate::cli

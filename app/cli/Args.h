@@ -1,0 +1,29 @@
+#pragma once
+// Minimal command-line options: "--name value" and "--flag", with clear errors.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace palpate::cli {
+
+class Args {
+public:
+    Args(std::vector<std::string> words, std::vector<std::string> flags, std::vector<std::string> options);
+    bool ok() const { return mError.empty(); }
+    const std::string& error() const { return mError; }
+    bool flag(const std::string& name) const;
+    std::optional<std::string> option(const std::string& name) const;
+    const std::vector<std::string>& positional() const { return mPositional; }
+
+private:
+    std::vector<std::string> mFlagsSet;
+    std::vector<std::pair<std::string, std::string>> mOptions;
+    std::vector<std::string> mPositional;
+    std::string mError;
+};
+
+/// Parses a positive integer, or returns nullopt.
+std::optional<long long> parsePositiveInt(const std::string& text);
+
+}  // namespace palpate::cli

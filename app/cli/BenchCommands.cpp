@@ -1,0 +1,158 @@
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "engine/Table1Bench.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace palpate::cli {
+
+namespace {
+
+constexpr SlopeRingMethod kMethods[] = {SlopeRingMethod::Previous, SlopeRingMethod::Hybrid, SlopeRingMethod::Proposed,
+                                        SlopeRingMethod::Palpate};
+
+/// The paper's Table 1 (microseconds per haptic loop), by vertex count.
+struct PaperRow {
+    std::size_t vertices;
+    double previousUs, hybridUs, proposedUs;
+};
+constexpr PaperRow kPaper[] = {{1442, 4.8, 3.8, 0.90}, {3970, 13.50, 10.10, 1.40}, {5762, 19.50, 12.50, 1.85},
+                               {8664, 30.10, 21.50, 2.70}};
+
+nlohmann::json optionalNumber(const std::optional<MethodMeasurement>& m, double MethodMeasurement::*field) {
+    return m ? nlohmann::json((*m).*field) : nlohmann::json(nullptr);
+}
+
+nlohmann::json rowJson(const Table1Row& row) {
+    nlohmann::json j{{"shape", std::string(shapeName(row.shape))},
+                     {"vertices", row.vertices},
+                     {"triangles", row.triangles},
+                     {"ticks", row.ticks}};
+    for (auto m : kMethods) {
+        const std::string name(methodName(m));
+        const auto& measurement = row.methods[std::size_t(m)];
+        j[name + "_us"] = optionalNumber(measurement, &MethodMeasurement::tickUs);
+        j[name + "_wrong_pct"] = optionalNumber(measurement, &MethodMeasurement::wrongPct);
+        j[name + "_max_off_mm"] = optionalNumber(measurement, &MethodMeasurement::maxOffMm);
+    }
+    return j;
+}
+
+double us(const Table1Row& row, SlopeRingMethod m) {
+    const auto& x = row.methods[std::size_t(m)];
+    return x ? x->tickUs : 0.0;
+}
+
+std::string cell(const std::optional<MethodMeasurement>& m, int precision, bool wrong = false) {
+    if (!m) return "-";
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(precision) << (wrong ? m->wrongPct : m->tickUs);
+    return s.str();
+}
+
+std::string ratio(double a, double b) {
+    if (a <= 0.0 || b <= 0.0) return "-";
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(a / b >= 100 ? 0 : 1) << a / b << "x";
+    return s.str();
+}
+
+void printTable(const std::vector<Table1Row>& rows, std::ostream& out) {
+    out << "Table 1 (measured): time of one haptic tick in microseconds (search + deformation + force)\n";
+    out << std::left << std::setw(9) << "shape" << std::right << std::setw(9) << "vertices" << std::setw(10)
+        << "triangles" << std::setw(11) << "previous" << std::setw(10) << "hybrid" << std::setw(10) << "proposed"
+        << std::setw(10) << "palpate" << std::setw(12) << "prev/ours" << std::setw(12) << "hyb/ours" << std::setw(12)
+        << "prop/ours" << "   wrong % (prev/hyb/prop/ours)\n";
+    for (const auto& r : rows) {
+        out << std::left << std::setw(9) << shapeName(r.shape) << std::right << std::setw(9) << r.vertices
+            << std::setw(10) << r.triangles;
+        for (auto m : kMethods) out << std::setw(m == SlopeRingMethod::Previous ? 11 : 10) << cell(r.methods[std::size_t(m)], 3);
+        const double ours = us(r, SlopeRingMethod::Palpate);
+        out << std::setw(12) << ratio(us(r, SlopeRingMethod::Previous), ours) << std::setw(12)
+            << ratio(us(r, SlopeRingMethod::Hybrid), ours) << std::setw(12)
+            << ratio(us(r, SlopeRingMethod::Proposed), ours) << "   ";
+        for (auto m : kMethods) out << cell(r.methods[std::size_t(m)], 1, true) << (m == SlopeRingMethod::Palpate ? "" : "/");
+        out << "\n";
+    }
+    out << "\nThe paper's Table 1 (2012 hardware, OpenHaptics), microseconds:\n";
+    for (const auto& p : kPaper)
+        out << "  " << std::setw(5) << p.vertices << " vertices: previous " << p.previousUs << ", hybrid "
+            << p.hybridUs << ", proposed " << p.proposedUs << "  (previous/proposed "
+            << ratio(p.previousUs, p.proposedUs) << ")\n";
+}
+
+void writeCsv(const std::vector<Table1Row>& rows, std::ostream& out) {
+    out << "shape,vertices,triangles,ticks";
+    for (auto m : kMethods) out << "," << methodName(m) << "_us";
+    for (auto m : kMethods) out << "," << methodName(m) << "_wrong_pct";
+    for (auto m : kMethods) out << "," << methodName(m) << "_max_off_mm";
+    out << "\n";
+    for (const auto& r : rows) {
+        out << shapeName(r.shape) << "," << r.vertices << "," << r.triangles << "," << r.ticks;
+        for (double MethodMeasurement::*field :
+             {&MethodMeasurement::tickUs, &MethodMeasurement::wrongPct, &MethodMeasurement::maxOffMm})
+            for (auto m : kMethods) {
+                const auto& x = r.methods[std::size_t(m)];
+                out << ",";
+                if (x) out << std::setprecision(6) << (*x).*field;
+            }
+        out << "\n";
+    }
+}
+
+}  // namespace
+
+int benchCommand(const std::vector<std::string>& words) {
+    if (words.empty() || words.front() != "table1") {
+        std::cerr << "bench: needs a subcommand: table1\n";
+        return 2;
+    }
+    Args args({words.begin() + 1, words.end()}, {"json", "quick"}, {"csv", "repeats"});
+    if (!args.ok()) {
+        std::cerr << "bench table1: " << args.error() << "\n";
+        return 2;
+    }
+    Table1Options options;
+    if (args.flag("quick")) {  // a smoke run: small meshes, one repeat
+        options.paperSizes = {1442};
+        options.largeSphereSizes = {20000};
+        options.repeats = 1;
+        options.minMeasureMs = 2.0;
+    }
+    if (auto r = args.option("repeats")) {
+        const auto n = parsePositiveInt(*r);
+        if (!n || *n > 100) {
+            std::cerr << "bench table1: --repeats must be 1..100\n";
+            return 2;
+        }
+        options.repeats = int(*n);
+    }
+    const bool json = args.flag("json");
+    options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
+    const auto rows = runTable1(options);
+
+    if (auto csvPath = args.option("csv")) {
+        std::ofstream csv(*csvPath);
+        if (!csv) {
+            std::cerr << "bench table1: cannot write " << *csvPath << "\n";
+            return 1;
+        }
+        writeCsv(rows, csv);
+    }
+    if (json) {
+        nlohmann::json j{{"rows", nlohmann::json::array()}};
+        for (const auto& r : rows) j["rows"].push_back(rowJson(r));
+        std::cout << j.dump(2) << "\n";
+    } else {
+        printTable(rows, std::cout);
+    }
+    return 0;
+}
+
+}  // namespace palpate::cli

@@ -1,0 +1,12 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace palpate::cli {
+
+int meshCommand(const std::vector<std::string>& words);
+int benchCommand(const std::vector<std::string>& words);
+int demoCommand(const std::vector<std::string>& words);
+
+}  // namespace palpate::cli

@@ -1,0 +1,47 @@
+// palpate-cli: headless Palpate. Exit codes: 0 success, 1 failure of the task, 2 bad usage.
+#include "app/cli/Commands.h"
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+void usage(std::ostream& out) {
+    out << "palpate-cli " PALPATE_VERSION " - headless Palpate\n\n"
+           "usage:\n"
+           "  palpate-cli mesh generate --shape sphere|stomach --vertices N --out FILE\n"
+           "  palpate-cli mesh check FILE\n"
+           "  palpate-cli bench table1 [--json] [--csv FILE] [--quick] [--repeats N]\n"
+           "  palpate-cli demo [--mesh FILE] [--method previous|hybrid|proposed|palpate] [--json]\n"
+           "  palpate-cli --help | --version\n";
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> words(argv + 1, argv + argc);
+    if (words.empty()) {
+        usage(std::cerr);
+        return 2;
+    }
+    const std::string command = words.front();
+    words.erase(words.begin());
+    if (command == "--help" || command == "-h" || command == "help") {
+        usage(std::cout);
+        return 0;
+    }
+    if (command == "--version") {
+        std::cout << "palpate-cli " PALPATE_VERSION "\n";
+        return 0;
+    }
+    try {
+        if (command == "mesh") return palpate::cli::meshCommand(words);
+        if (command == "bench") return palpate::cli::benchCommand(words);
+        if (command == "demo") return palpate::cli::demoCommand(words);
+    } catch (const std::exception& e) {
+        std::cerr << "palpate-cli " << command << ": " << e.what() << "\n";
+        return 1;
+    }
+    std::cerr << "palpate-cli: unknown command '" << command << "'\n";
+    usage(std::cerr);
+    return 2;
+}

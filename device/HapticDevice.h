@@ -1,0 +1,51 @@
+#pragma once
+// The device interface (DESIGN §6, after CHAI3D's cGenericHapticDevice). Qt-free.
+// Backends implement it; the haptic loop reads samples without blocking and writes forces.
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace palpate {
+
+enum class DeviceState { Disconnected, Opening, NeedsCalibration, Ready, Fault };
+
+const char* deviceStateName(DeviceState state);
+
+/// What a device can do; forces and stiffness sent to it must stay inside these.
+struct DeviceSpec {
+    std::string name;
+    double maxForceN = 3.0;
+    double maxStiffnessNPerMm = 1.0;
+    double maxDampingNsPerMm = 0.005;
+    double workspaceRadiusMm = 80.0;
+    bool actuated = false;  ///< false for input-only devices (mouse, SpaceMouse)
+    int buttonCount = 0;
+};
+
+/// The latest reading of the device.
+struct DeviceSample {
+    std::uint64_t sequence = 0;    ///< increases with each new reading; a stale sample repeats it
+    double timeS = 0.0;            ///< device clock
+    glm::vec3 positionMm{0.0f};    ///< tool tip, in the scene's frame
+    std::uint32_t buttons = 0;
+};
+
+class HapticDevice {
+public:
+    virtual ~HapticDevice() = default;
+    virtual bool open() = 0;
+    virtual void close() = 0;
+    virtual bool calibrate() = 0;
+    virtual DeviceState state() const = 0;
+    virtual const DeviceSpec& spec() const = 0;
+    /// Latest sample; never blocks. Returns false when no sample is available.
+    virtual bool read(DeviceSample& sample) = 0;
+    /// Commands a force; never blocks. Input-only devices ignore it.
+    virtual void writeForce(const glm::vec3& forceN) = 0;
+    /// Zero force at once and stay safe until reopened.
+    virtual void emergencyStop() = 0;
+};
+
+}  // namespace palpate

@@ -1,0 +1,33 @@
+#pragma once
+// The interface every deformation model implements, so models can be swapped and charted.
+
+#include "engine/TissueMesh.h"
+
+#include <glm/vec3.hpp>
+
+#include <span>
+#include <string>
+
+namespace palpate {
+
+/// What one haptic tick produced.
+struct TickResult {
+    VertexId touched = kNoVertex;  ///< vertex nearest to the tool tip (kNoVertex if none found)
+    glm::vec3 forceN{0.0f};        ///< force rendered to the user (outward spring reaction)
+    bool contact = false;          ///< the tip is below the surface at the touched vertex
+    float penetrationMm = 0.0f;    ///< depth of the tip below the current touched vertex, along its normal
+};
+
+class DeformationModel {
+public:
+    virtual ~DeformationModel() = default;
+    /// One haptic tick: find the touched vertex, deform, return the force. Real-time safe.
+    virtual TickResult step(const glm::vec3& toolTipMm, double dtS) = 0;
+    /// Current vertex positions, in the mesh's vertex order.
+    virtual std::span<const glm::vec3> positionsMm() const = 0;
+    /// Back to the rest shape, no contact.
+    virtual void reset() = 0;
+    virtual std::string name() const = 0;
+};
+
+}  // namespace palpate

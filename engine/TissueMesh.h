@@ -1,0 +1,95 @@
+#pragma once
+// A closed (or open, reported) triangle surface with flat arrays for the haptic loop.
+// OpenMesh owns file IO and topology checks; the hot loop reads only the flat arrays here.
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace palpate {
+
+using VertexId = std::uint32_t;
+inline constexpr VertexId kNoVertex = 0xffffffffu;
+
+/// What validation found. Errors make a mesh unusable; warnings (open boundary) are reported only.
+struct MeshReport {
+    std::string source;                  ///< file path or generator name, for messages
+    std::size_t vertexCount = 0;
+    std::size_t triangleCount = 0;
+    std::size_t boundaryEdgeCount = 0;   ///< > 0 means the surface is open (allowed, reported)
+    std::size_t nonManifoldVertexCount = 0;
+    std::size_t nonManifoldEdgeCount = 0;
+    std::size_t degenerateTriangleCount = 0;
+    std::size_t nonFiniteVertexCount = 0;
+    std::size_t isolatedVertexCount = 0;
+    double bboxDiagonalMm = 0.0;
+    std::vector<std::string> errors;     ///< each names the source and the problem
+    std::vector<std::string> warnings;
+
+    bool valid() const { return errors.empty(); }
+    /// Human-readable, multi-line; what `palpate-cli mesh check` prints.
+    std::string text() const;
+};
+
+/// The tissue surface. Vertices are renumbered along a space-filling curve at construction so that
+/// rings and octree leaves are close in memory; `originalIndex` maps back to the file's numbering.
+class TissueMesh {
+public:
+    struct LoadResult;
+
+    /// Loads OBJ/OFF/PLY/STL/OM. Never throws; on failure the report names the file and the problem.
+    static LoadResult load(const std::string& path);
+    /// Builds from a triangle list (generators, tests). Same validation as `load`.
+    static LoadResult fromTriangles(std::vector<glm::vec3> positionsMm,
+                                    const std::vector<std::array<VertexId, 3>>& triangles,
+                                    const std::string& sourceName,
+                                    bool reorderAlongCurve = true);
+
+    std::size_t vertexCount() const { return mRestMm.size(); }
+    std::size_t triangleCount() const { return mTriangles.size(); }
+
+    const std::vector<glm::vec3>& restPositionsMm() const { return mRestMm; }
+    const std::vector<glm::vec3>& restNormals() const { return mRestNormals; }
+    const std::vector<std::array<VertexId, 3>>& triangles() const { return mTriangles; }
+    /// Compressed adjacency: neighbours of v are mNeighbours[mNeighbourStart[v] .. mNeighbourStart[v+1]).
+    const std::vector<std::uint32_t>& neighbourStart() const { return mNeighbourStart; }
+    const std::vector<VertexId>& neighbours() const { return mNeighbours; }
+    const std::vector<VertexId>& originalIndex() const { return mOriginalIndex; }
+    const MeshReport& report() const { return mReport; }
+    std::size_t maxValence() const { return mMaxValence; }
+    /// Mean edge length of the rest surface, for scale-aware defaults.
+    double meanEdgeLengthMm() const { return mMeanEdgeMm; }
+    glm::vec3 boundsMinMm() const { return mBoundsMin; }
+    glm::vec3 boundsMaxMm() const { return mBoundsMax; }
+
+    /// Writes OBJ/OFF/PLY/STL chosen by extension, in the current (curve) order. Returns an error or "".
+    std::string save(const std::string& path) const;
+
+private:
+    std::vector<glm::vec3> mRestMm;
+    std::vector<glm::vec3> mRestNormals;
+    std::vector<std::array<VertexId, 3>> mTriangles;
+    std::vector<std::uint32_t> mNeighbourStart;
+    std::vector<VertexId> mNeighbours;
+    std::vector<VertexId> mOriginalIndex;
+    MeshReport mReport;
+    std::size_t mMaxValence = 0;
+    double mMeanEdgeMm = 0.0;
+    glm::vec3 mBoundsMin{0.0f};
+    glm::vec3 mBoundsMax{0.0f};
+
+    friend struct MeshBuilder;
+};
+
+struct TissueMesh::LoadResult {
+    std::optional<TissueMesh> mesh;  ///< set only when the report has no errors
+    MeshReport report;
+    /// First error, or "" when loaded.
+    std::string error() const { return report.errors.empty() ? std::string() : report.errors.front(); }
+};
+
+}  // namespace palpate
