@@ -14,8 +14,9 @@ namespace palpate {
 struct TickResult {
     VertexId touched = kNoVertex;  ///< vertex nearest to the tool tip (kNoVertex if none found)
     glm::vec3 forceN{0.0f};        ///< force rendered to the user (outward spring reaction)
-    bool contact = false;          ///< the tip is below the surface at the touched vertex
-    float penetrationMm = 0.0f;    ///< depth of the tip below the current touched vertex, along its normal
+    bool contact = false;          ///< the tissue pushes back on the tool (contact force > 0)
+    float penetrationMm = 0.0f;    ///< depth of the tip below the displaced touched vertex, along its
+                                   ///< rest normal, before this tick's update (< 0: above it)
 };
 
 class DeformationModel {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -42,14 +43,16 @@ std::vector<std::string> contentLines(const std::string& text) {
     return lines;
 }
 
-std::size_t countNumbers(const std::string& line) {
+/// Counts the leading numbers of a record; sets `nonFinite` if one of them is NaN or infinite.
+std::size_t countNumbers(const std::string& line, bool* nonFinite = nullptr) {
     std::istringstream in(line);
     std::size_t n = 0;
     std::string token;
     while (in >> token) {
         char* end = nullptr;
-        std::strtod(token.c_str(), &end);
+        const double value = std::strtod(token.c_str(), &end);
         if (end == token.c_str()) break;
+        if (!std::isfinite(value) && nonFinite) *nonFinite = true;
         ++n;
     }
     return n;
@@ -79,9 +82,12 @@ std::string probeOff(const std::string& text) {
         return "is truncated: the OFF header declares " + std::to_string(nv) + " vertices and " +
                std::to_string(nf) + " faces, but only " + std::to_string(available) + " records follow";
     }
-    for (long long i = 0; i < nv; ++i)
-        if (countNumbers(lines[at + std::size_t(i)]) < 3)
+    for (long long i = 0; i < nv; ++i) {
+        bool nonFinite = false;
+        if (countNumbers(lines[at + std::size_t(i)], &nonFinite) < 3)
             return "has a malformed vertex record at OFF vertex " + std::to_string(i);
+        if (nonFinite) return "has NaN or infinite coordinates at OFF vertex " + std::to_string(i);
+    }
     return {};
 }
 
@@ -98,7 +104,9 @@ std::string probeObj(const std::string& text) {
             ++vertices;
             std::string rest;
             std::getline(words, rest);
-            if (countNumbers(rest) < 3) return "has a malformed vertex at line " + std::to_string(lineNo);
+            bool nonFinite = false;
+            if (countNumbers(rest, &nonFinite) < 3) return "has a malformed vertex at line " + std::to_string(lineNo);
+            if (nonFinite) return "has NaN or infinite coordinates at line " + std::to_string(lineNo);
         } else if (key == "f") {
             ++faces;
             std::size_t corners = 0;
@@ -133,6 +141,13 @@ std::string probeStl(const std::string& bytes) {
     if (bytes.size() > expected + 1024)
         return "is not a binary STL: it declares " + std::to_string(count) + " triangles but has " +
                std::to_string(bytes.size()) + " bytes";
+    for (std::uint32_t t = 0; t < count; ++t)
+        for (int k = 3; k < 12; ++k) {  // skip the facet normal; check the three vertices
+            float value = 0.0f;
+            std::memcpy(&value, bytes.data() + 84 + 50ull * t + 4ull * std::size_t(k), 4);
+            if (!std::isfinite(value))
+                return "has NaN or infinite coordinates in triangle " + std::to_string(t);
+        }
     return {};
 }
 
@@ -175,6 +190,11 @@ std::string probePly(const std::string& bytes) {
         if (lines.size() < std::size_t(nv + nf))
             return "is truncated: the PLY header declares " + std::to_string(nv) + " vertices and " +
                    std::to_string(nf) + " faces, but only " + std::to_string(lines.size()) + " records follow";
+        for (long long i = 0; i < nv; ++i) {
+            bool nonFinite = false;
+            countNumbers(lines[std::size_t(i)], &nonFinite);
+            if (nonFinite) return "has NaN or infinite coordinates at PLY vertex " + std::to_string(i);
+        }
         return {};
     }
     // Binary: each face is at least a count byte and three 32-bit indices.

@@ -161,6 +161,7 @@ TissueMesh::LoadResult generateMesh(GeneratedShape shape, std::size_t vertexCoun
     }
     for (std::size_t k = 0; k < size[rings - 1]; ++k)
         triangles.push_back({lastPole, ringVertex(rings - 1, k + 1), ringVertex(rings - 1, k)});
+    for (auto& t : triangles) std::swap(t[1], t[2]);  // the zipper winds inward; face outward
     return TissueMesh::fromTriangles(std::move(positions), triangles, source);
 }
 

@@ -76,8 +76,12 @@ void Octree::build(std::uint32_t nodeIndex, const std::vector<std::uint64_t>& co
             return;
         }
     }
+    // Children are allocated side by side before any is split, so that a search reading all
+    // siblings' boxes touches consecutive memory.
     const int shift = 3 * (kMortonBitsPerAxis - 1 - depth);
     const std::uint32_t begin = mNodes[nodeIndex].begin, end = mNodes[nodeIndex].end;
+    std::int32_t created[8];
+    int createdCount = 0;
     std::uint32_t at = begin;
     for (int octant = 0; octant < 8; ++octant) {
         std::uint32_t stop = at;
@@ -95,10 +99,11 @@ void Octree::build(std::uint32_t nodeIndex, const std::vector<std::uint64_t>& co
         const auto childIndex = std::int32_t(mNodes.size());
         mNodes.push_back(child);
         mNodes[nodeIndex].child[octant] = childIndex;
-        build(std::uint32_t(childIndex), codes, depth + 1);
+        created[createdCount++] = childIndex;
         at = stop;
     }
     assert(at == end);
+    for (int i = 0; i < createdCount; ++i) build(std::uint32_t(created[i]), codes, depth + 1);
 }
 
 VertexId Octree::searchNodeFaithful(const glm::vec3& p, std::span<const glm::vec3> positionsMm) const {
@@ -188,6 +193,64 @@ VertexId Octree::nearestExact(const glm::vec3& p, std::span<const glm::vec3> pos
         for (int i = 0; i < count; ++i) stack[top++] = children[i];
     }
     return best;
+}
+
+int Octree::nearestRestK(const glm::vec3& p, int count, VertexId* ids, float* d2s, int seedCount) const {
+    int found = 0;
+    auto bound = [&] { return found < count ? std::numeric_limits<float>::infinity() : d2s[count - 1]; };
+    auto insert = [&](VertexId v, float d2) {
+        if (found == count && !(d2 < d2s[count - 1])) return;
+        int k = found < count ? found++ : count - 1;
+        while (k > 0 && d2s[k - 1] > d2) {
+            d2s[k] = d2s[k - 1];
+            ids[k] = ids[k - 1];
+            --k;
+        }
+        d2s[k] = d2;
+        ids[k] = v;
+    };
+    VertexId seeds[64];
+    seedCount = std::clamp(seedCount, 0, std::min(count, 64));
+    std::copy(ids, ids + seedCount, seeds);
+    for (int i = 0; i < seedCount; ++i) insert(seeds[i], distance2(mRestMm[seeds[i]], p));
+    struct Entry {
+        std::int32_t node;
+        float d2;
+    };
+    Entry stack[8 * 24];
+    int top = 0;
+    stack[top++] = {0, boxDistance2(p, mNodes[0].tightMinMm, mNodes[0].tightMaxMm)};
+    while (top > 0) {
+        const Entry e = stack[--top];
+        if (e.d2 > bound()) continue;
+        const Node& node = mNodes[std::size_t(e.node)];
+        if (node.leaf) {
+            for (std::uint32_t v = node.begin; v < node.end; ++v) {
+                const float d2 = distance2(mRestMm[v], p);
+                if (found == count && !(d2 < d2s[count - 1])) continue;
+                if (std::find(seeds, seeds + seedCount, v) != seeds + seedCount) continue;  // already in
+                insert(v, d2);
+            }
+            continue;
+        }
+        Entry children[8];
+        int n = 0;
+        for (int i = 0; i < 8; ++i) {
+            const std::int32_t c = node.child[i];
+            if (c < 0) continue;
+            const Node& child = mNodes[std::size_t(c)];
+            const float d2 = boxDistance2(p, child.tightMinMm, child.tightMaxMm);
+            if (d2 > bound()) continue;
+            int k = n++;
+            while (k > 0 && children[k - 1].d2 < d2) {
+                children[k] = children[k - 1];
+                --k;
+            }
+            children[k] = {c, d2};
+        }
+        for (int i = 0; i < n; ++i) stack[top++] = children[i];
+    }
+    return found;
 }
 
 VertexId nearestLinear(const glm::vec3& p, std::span<const glm::vec3> positionsMm) {

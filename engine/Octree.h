@@ -54,6 +54,13 @@ public:
     VertexId nearestExact(const glm::vec3& pointMm, std::span<const glm::vec3> positionsMm,
                           std::span<const VertexId> displaced, VertexId warmStart = kNoVertex) const;
 
+    /// The `count` rest positions nearest to the point, ascending: fills ids and squared distances
+    /// (both of length >= count) and returns how many were found (fewer on tiny meshes).
+    /// `seedCount` ids already in `ids` (e.g. last query's answer) seed the bound, which makes a
+    /// query near the previous one cheap. Allocation-free; for our touched-vertex search's cache.
+    int nearestRestK(const glm::vec3& pointMm, int count, VertexId* ids, float* distance2Mm2,
+                     int seedCount = 0) const;
+
 private:
     void build(std::uint32_t nodeIndex, const std::vector<std::uint64_t>& codes, int depth);
 

@@ -22,20 +22,28 @@ inline float dist2(const glm::vec3& a, const glm::vec3& b) {
 }  // namespace
 
 SlopeRingDeformer::SlopeRingDeformer(const TissueMesh& mesh, const Octree& octree, const SlopeRingParams& params,
-                                     SlopeRingMethod method)
+                                     SlopeRingMethod method, bool eagerPositions)
     : mMesh(mesh),
       mOctree(octree),
       mMethod(method),
+      mEagerPositions(eagerPositions),
       mPositions(mesh.restPositionsMm()),
       mVelocitiesMmPerS(mesh.vertexCount(), glm::vec3(0.0f)),
-      mRingFinder(mesh),
-      mActive(mRingFinder.makeRingSet()),
-      mActiveStamp(mesh.vertexCount(), 0),
-      mDisplaced(mesh.vertexCount()),
-      mDisplacedSlot(mesh.vertexCount(), kNoSlot) {
-    if (method == SlopeRingMethod::Previous || method == SlopeRingMethod::Hybrid)
-        mRingOf.assign(mesh.vertexCount(), kNotInRing);
-    if (method == SlopeRingMethod::Proposed) mPreviousRingVertices.reserve(mesh.vertexCount());
+      mRingFinder(mesh) {
+    const std::size_t n = mesh.vertexCount();
+    if (method == SlopeRingMethod::Palpate) {
+        mActive = mRingFinder.makeRingSet();
+        mNextActive = mRingFinder.makeRingSet();
+        mActiveRestX.resize(n);
+        mActiveRestY.resize(n);
+        mActiveRestZ.resize(n);
+        mScratchDistance2.resize(n);
+        mActiveStamp.assign(n, 0);
+        mRelaxing.resize(n);
+        mRelaxingSlot.assign(n, kNoSlot);
+    }
+    if (method == SlopeRingMethod::Previous || method == SlopeRingMethod::Hybrid) mRingOf.assign(n, kNotInRing);
+    if (method == SlopeRingMethod::Proposed) mPreviousRingVertices.reserve(n);
     setParams(params);
 }
 
@@ -52,8 +60,10 @@ void SlopeRingDeformer::setParams(const SlopeRingParams& params) {
     mParams = params;
     applyParams();
     if (ringsChanged && mMethod != SlopeRingMethod::Palpate) precomputeRingLists();
-    mActiveCentre = kNoVertex;  // re-derive the active set with the new rings and slopes
-    mWrittenForceN = -1.0f;
+    if (mMethod == SlopeRingMethod::Palpate && mActiveCentre != kNoVertex) {
+        writeActivePositions();
+        mActiveCentre = kNoVertex;  // re-derive the active set with the new rings and slopes
+    }
 }
 
 void SlopeRingDeformer::applyParams() {
@@ -87,15 +97,39 @@ void SlopeRingDeformer::precomputeRingLists() {
 void SlopeRingDeformer::reset() {
     mPositions = mMesh.restPositionsMm();
     std::fill(mVelocitiesMmPerS.begin(), mVelocitiesMmPerS.end(), glm::vec3(0.0f));
-    for (std::size_t i = 0; i < mDisplacedCount; ++i) mDisplacedSlot[mDisplaced[i]] = kNoSlot;
-    mDisplacedCount = 0;
+    for (std::size_t i = 0; i < mRelaxingCount; ++i) mRelaxingSlot[mRelaxing[i]] = kNoSlot;
+    mRelaxingCount = 0;
     mTouched = kNoVertex;
     mForceN = 0.0f;
     mContact = false;
     mActiveCentre = kNoVertex;
     mActiveContact = false;
-    mWrittenForceN = -1.0f;
+    mActiveDirty = false;
+    mActiveForceN = 0.0f;
+    mActiveScanValid = false;
+    if (mMethod == SlopeRingMethod::Palpate) {
+        mActive.ringCount = 0;
+        mActive.ringStart[1] = 0;  // empty: no vertex is active
+        ++mActiveGeneration;
+    }
     mPreviousRingVertices.clear();
+    mCacheCount = 0;
+}
+
+std::span<const glm::vec3> SlopeRingDeformer::positionsMm() const {
+    writeActivePositions();
+    return mPositions;
+}
+
+std::span<const VertexId> SlopeRingDeformer::displacedVertices() const {
+    mDisplacedScratch.clear();
+    if (mMethod != SlopeRingMethod::Palpate) return {};
+    if (mActiveCentre != kNoVertex && mActiveContact)
+        mDisplacedScratch.insert(mDisplacedScratch.end(), mActive.vertices.begin(),
+                                 mActive.vertices.begin() + std::ptrdiff_t(mActive.size()));
+    mDisplacedScratch.insert(mDisplacedScratch.end(), mRelaxing.begin(),
+                             mRelaxing.begin() + std::ptrdiff_t(mRelaxingCount));
+    return mDisplacedScratch;
 }
 
 // Backward Euler on m x'' = -k x - c x' for one vertex: unconditionally stable and dissipative.
@@ -107,34 +141,119 @@ void SlopeRingDeformer::relaxVertex(VertexId v) {
     mPositions[v] = rest + (u + mRelaxDt * vel);
 }
 
-void SlopeRingDeformer::addDisplaced(VertexId v) {
-    if (mDisplacedSlot[v] != kNoSlot) return;
-    mDisplacedSlot[v] = std::uint32_t(mDisplacedCount);
-    mDisplaced[mDisplacedCount++] = v;
+void SlopeRingDeformer::addRelaxing(VertexId v) {
+    if (mRelaxingSlot[v] != kNoSlot) return;
+    mRelaxingSlot[v] = std::uint32_t(mRelaxingCount);
+    mRelaxing[mRelaxingCount++] = v;
+}
+
+void SlopeRingDeformer::removeRelaxing(VertexId v) {
+    const std::uint32_t slot = mRelaxingSlot[v];
+    if (slot == kNoSlot) return;
+    const VertexId last = mRelaxing[--mRelaxingCount];
+    mRelaxing[slot] = last;
+    mRelaxingSlot[last] = slot;
+    mRelaxingSlot[v] = kNoSlot;
+}
+
+void SlopeRingDeformer::refreshCandidateCache(const glm::vec3& tool) const {
+    float d2[kCacheSize];
+    mCacheCount = mOctree.nearestRestK(tool, kCacheSize, mCacheIds, d2, mCacheCount);
+    for (int i = 0; i < mCacheCount; ++i) mCacheDistanceMm[i] = std::sqrt(d2[i]);
+    mCacheRadiusMm = mCacheCount < kCacheSize ? std::numeric_limits<float>::infinity()
+                                              : mCacheDistanceMm[kCacheSize - 1];
+    mCacheCentreMm = tool;
+    ++mCacheRefreshes;
+}
+
+void SlopeRingDeformer::searchActive(const glm::vec3& tool, VertexId& best, float& best2) const {
+    const float slope1 = -mSignedSlope[0];
+    if (mActiveScanValid) {
+        // Every active vertex moved relative to the tool by at most |dtool| + |m1| |dF|.
+        const float moved = glm::length(tool - mActiveScanToolMm) + slope1 * std::fabs(mActiveForceN - mActiveScanForceN);
+        const float margin = mActiveScanSecondMm - moved;
+        const std::uint32_t i = mActiveScanBest;
+        const glm::vec3 q = tool - (mSignedSlope[mActiveScanBestRing] * mActiveForceN) * mActiveNormal;
+        const float dx = mActiveRestX[i] - q.x, dy = mActiveRestY[i] - q.y, dz = mActiveRestZ[i] - q.z;
+        const float d2 = dx * dx + dy * dy + dz * dz;
+        if (margin > 0.0f && d2 < margin * margin) {
+            best = mActive.vertices[i];
+            best2 = d2;
+            return;
+        }
+    }
+    // Full scan: the active rings from their rest copy shifted by each ring's displacement
+    // (contiguous arrays, so the distance loop vectorises).
+    float* d2 = mScratchDistance2.data();
+    const float* rx = mActiveRestX.data();
+    const float* ry = mActiveRestY.data();
+    const float* rz = mActiveRestZ.data();
+    for (int r = 0; r <= mActive.ringCount; ++r) {
+        const glm::vec3 q = tool - (mSignedSlope[r] * mActiveForceN) * mActiveNormal;
+        const std::uint32_t begin = mActive.ringStart[r], end = mActive.ringStart[r + 1];
+        for (std::uint32_t i = begin; i < end; ++i) {
+            const float dx = rx[i] - q.x, dy = ry[i] - q.y, dz = rz[i] - q.z;
+            d2[i] = dx * dx + dy * dy + dz * dz;
+        }
+    }
+    std::uint32_t bestIndex = 0;
+    float first = std::numeric_limits<float>::infinity(), second = first;
+    for (std::uint32_t i = 0, n = std::uint32_t(mActive.size()); i < n; ++i) {
+        const float v = d2[i];
+        if (v < first || (v == first && mActive.vertices[i] < mActive.vertices[bestIndex])) {
+            second = first;
+            first = v;
+            bestIndex = i;
+        } else if (v < second) {
+            second = v;
+        }
+    }
+    best = mActive.vertices[bestIndex];
+    best2 = first;
+    int ring = 0;
+    while (bestIndex >= mActive.ringStart[ring + 1]) ++ring;
+    mActiveScanValid = true;
+    mActiveScanToolMm = tool;
+    mActiveScanForceN = mActiveForceN;
+    mActiveScanBest = bestIndex;
+    mActiveScanBestRing = ring;
+    mActiveScanSecondMm = std::sqrt(second);
 }
 
 VertexId SlopeRingDeformer::searchPalpate(const glm::vec3& tool) const {
-    // Greedy walk from last tick's touched vertex (the tool moves little between ticks), then the
-    // exact octree search bounded by the walk's distance, which proves or corrects it.
-    VertexId best = mTouched;
-    if (best != kNoVertex) {
-        const auto& start = mMesh.neighbourStart();
-        const auto& neighbours = mMesh.neighbours();
-        float bestD2 = dist2(mPositions[best], tool);
-        for (bool improved = true; improved;) {
-            improved = false;
-            for (std::uint32_t k = start[best], end = start[best + 1]; k < end; ++k) {
-                const VertexId w = neighbours[k];
-                const float d2 = dist2(mPositions[w], tool);
-                if (d2 < bestD2) {
-                    bestD2 = d2;
-                    best = w;
-                    improved = true;
-                }
-            }
+    // Exact nearest vertex over current positions, in three parts: (1) every displaced vertex:
+    // the active rings from their rest copy shifted by each ring's displacement (contiguous, so the
+    // compiler vectorises it), the relaxing ones directly; (2) the cached rest vertices that could
+    // still beat the best so far; (3) a proof that no other vertex at rest can: those are at least
+    // mCacheRadiusMm from the cache centre.
+    VertexId best = kNoVertex;
+    float best2 = std::numeric_limits<float>::infinity();
+    auto consider = [&](VertexId v, float d2) {
+        if (d2 < best2 || (d2 == best2 && v < best)) {
+            best2 = d2;
+            best = v;
         }
+    };
+    const bool activeInContact = mActiveCentre != kNoVertex && mActiveContact;
+    if (activeInContact) searchActive(tool, best, best2);
+    for (std::size_t i = 0; i < mRelaxingCount; ++i) consider(mRelaxing[i], dist2(mPositions[mRelaxing[i]], tool));
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        if (attempt == 1 || mCacheCount == 0) refreshCandidateCache(tool);
+        const float shift = glm::length(tool - mCacheCentreMm);
+        for (int i = 0; i < mCacheCount; ++i) {
+            const float lower = mCacheDistanceMm[i] - shift;  // |tool - rest| >= this
+            if (lower > 0.0f && lower * lower > best2) break;  // sorted: no later entry can win
+            const VertexId v = mCacheIds[i];
+            if ((activeInContact && mActiveStamp[v] == mActiveGeneration) || mRelaxingSlot[v] != kNoSlot)
+                continue;  // counted above at its current position
+            consider(v, dist2(mPositions[v], tool));
+        }
+        const float clearance = mCacheRadiusMm - shift;
+        if (clearance > 0.0f && best2 <= clearance * clearance) return best;
     }
-    return mOctree.nearestExact(tool, mPositions, {mDisplaced.data(), mDisplacedCount}, best);
+    ++mFullSearches;
+    writeActivePositions();
+    return mOctree.nearestExact(tool, mPositions, displacedVertices(), best);
 }
 
 VertexId SlopeRingDeformer::findTouched(const glm::vec3& tool) const {
@@ -161,16 +280,21 @@ TickResult SlopeRingDeformer::step(const glm::vec3& tool, double dtS) {
         if (found != kNoVertex) touched = found;  // the paper's search leaves touchedNode unchanged
     }
 
-    // Contact and the contact force: F <- (1 - alpha) F + alpha k_c e, e = penetration below the
-    // touched vertex's current position along its rest normal (docs/method.md).
+    // Contact and the contact force (docs/method.md): d = depth of the tip below the touched
+    // vertex's rest position along its rest normal; the model displaces that vertex by |m1| F, so
+    // the tip is e = d - |m1| F below it. F <- max(0, (1 - alpha) F + alpha k_c e); contact while F > 0.
     float penetration = 0.0f;
-    glm::vec3 normal(0.0f);
     if (toolValid && touched != kNoVertex) {
-        normal = mMesh.restNormals()[touched];
-        penetration = glm::dot(mPositions[touched] - tool, normal);
+        const float depth = glm::dot(mMesh.restPositionsMm()[touched] - tool, mMesh.restNormals()[touched]);
+        penetration = depth + mSignedSlope[0] * mForceN;
     }
-    const bool contact = penetration > 0.0f;
-    mForceN = contact ? (1.0f - mAlpha) * mForceN + mAlpha * (mContactStiffness * penetration) : 0.0f;
+    // Projected onto F >= 0 (the tissue only pushes): a non-expansive step, so the iteration
+    // converges wherever its linear part does, alpha (1 + gain) < 2, overshoot or not.
+    if (toolValid && touched != kNoVertex)
+        mForceN = std::max(0.0f, (1.0f - mAlpha) * mForceN + mAlpha * (mContactStiffness * penetration));
+    else
+        mForceN = 0.0f;
+    const bool contact = mForceN > 0.0f;
     mTouched = touched;
     mContact = contact;
 
@@ -178,71 +302,93 @@ TickResult SlopeRingDeformer::step(const glm::vec3& tool, double dtS) {
         case SlopeRingMethod::Previous:
         case SlopeRingMethod::Hybrid: stepWholeModel(touched, contact); break;
         case SlopeRingMethod::Proposed: stepProposed(touched, contact); break;
-        case SlopeRingMethod::Palpate: stepPalpate(tool, touched, contact); break;
+        case SlopeRingMethod::Palpate: stepPalpate(touched, contact); break;
     }
 
     TickResult result;
     result.touched = touched;
     result.contact = contact;
     result.penetrationMm = penetration;
-    if (contact) result.forceN = -mSpringStiffness * (mPositions[touched] - mMesh.restPositionsMm()[touched]);
+    if (contact) {
+        // The touched vertex's spring reaction. Palpate's active positions may be unwritten; its
+        // displacement is known exactly: (m1 F) n.
+        const glm::vec3 displacement = mMethod == SlopeRingMethod::Palpate
+                                           ? (mSignedSlope[0] * mForceN) * mActiveNormal
+                                           : mPositions[touched] - mMesh.restPositionsMm()[touched];
+        result.forceN = -mSpringStiffness * displacement;
+    }
     return result;
 }
 
-void SlopeRingDeformer::stepPalpate(const glm::vec3&, VertexId touched, bool contact) {
-    const auto& rest = mMesh.restPositionsMm();
-    bool rewrite = false;
-    if (touched != mActiveCentre || contact != mActiveContact) {
-        // The active set changes: the old one relaxes from where it is; the new one is marked.
-        if (++mActiveGeneration == 0) {
-            std::fill(mActiveStamp.begin(), mActiveStamp.end(), 0u);
-            mActiveGeneration = 1;
-        }
-        mActiveCentre = touched;
-        mActiveContact = contact;
-        if (contact) {
-            mRingFinder.find(touched, mRingCount, mActive);
-            for (std::size_t i = 0, n = mActive.size(); i < n; ++i) {
-                const VertexId v = mActive.vertices[i];
-                mActiveStamp[v] = mActiveGeneration;
-                mVelocitiesMmPerS[v] = glm::vec3(0.0f);
-                addDisplaced(v);
-            }
-        }
-        rewrite = true;
+void SlopeRingDeformer::writeActivePositions() const {
+    if (!mActiveDirty) return;
+    for (int r = 0; r <= mActive.ringCount; ++r) {
+        const glm::vec3 displacement = (mSignedSlope[r] * mActiveForceN) * mActiveNormal;
+        for (std::uint32_t i = mActive.ringStart[r], end = mActive.ringStart[r + 1]; i < end; ++i)
+            mPositions[mActive.vertices[i]] =
+                glm::vec3(mActiveRestX[i], mActiveRestY[i], mActiveRestZ[i]) + displacement;
     }
-    if (contact && (rewrite || mForceN != mWrittenForceN)) {
-        const glm::vec3 normal = mMesh.restNormals()[touched];
-        for (int r = 0; r <= mRingCount; ++r) {
-            const glm::vec3 displacement = (mSignedSlope[r] * mForceN) * normal;
-            for (std::uint32_t i = mActive.ringStart[r], end = mActive.ringStart[r + 1]; i < end; ++i) {
-                const VertexId v = mActive.vertices[i];
-                mPositions[v] = rest[v] + displacement;
-            }
-        }
-        mWrittenForceN = mForceN;
-    }
-    if (!contact) mWrittenForceN = -1.0f;
+    mActiveDirty = false;
+}
 
-    // Relax every displaced vertex outside the active set; those back at rest leave the list.
-    const float restEps2 = kRestEpsilonMm * kRestEpsilonMm;
-    for (std::size_t i = 0; i < mDisplacedCount;) {
-        const VertexId v = mDisplaced[i];
-        if (contact && mActiveStamp[v] == mActiveGeneration) {
-            ++i;
-            continue;
+void SlopeRingDeformer::changeActiveSet(VertexId touched, bool contact) {
+    // The old active set is written where it stands (at the force it was last displaced by), then
+    // those of its vertices that leave start relaxing from there.
+    writeActivePositions();
+    if (++mActiveGeneration == 0) {
+        std::fill(mActiveStamp.begin(), mActiveStamp.end(), 0u);
+        mActiveGeneration = 1;
+    }
+    if (contact) {
+        mRingFinder.find(touched, mRingCount, mNextActive);
+        const auto& rest = mMesh.restPositionsMm();
+        for (std::size_t i = 0, n = mNextActive.size(); i < n; ++i) {
+            const VertexId v = mNextActive.vertices[i];
+            mActiveStamp[v] = mActiveGeneration;
+            mVelocitiesMmPerS[v] = glm::vec3(0.0f);
+            removeRelaxing(v);
+            mActiveRestX[i] = rest[v].x;
+            mActiveRestY[i] = rest[v].y;
+            mActiveRestZ[i] = rest[v].z;
         }
+    } else {
+        mNextActive.ringCount = 0;
+        mNextActive.ringStart[1] = 0;
+    }
+    if (mActiveCentre != kNoVertex && mActiveContact)
+        for (std::size_t i = 0, n = mActive.size(); i < n; ++i) {
+            const VertexId v = mActive.vertices[i];
+            if (mActiveStamp[v] != mActiveGeneration) {
+                mVelocitiesMmPerS[v] = glm::vec3(0.0f);
+                addRelaxing(v);
+            }
+        }
+    std::swap(mActive, mNextActive);
+    mActiveScanValid = false;
+    mActiveCentre = touched;
+    mActiveContact = contact;
+    mActiveNormal = touched != kNoVertex ? mMesh.restNormals()[touched] : glm::vec3(0.0f);
+}
+
+void SlopeRingDeformer::stepPalpate(VertexId touched, bool contact) {
+    // Work only where something changed: the active set is rebuilt when the touched vertex or the
+    // contact changes; its positions are a function of the force, written when read (or every
+    // tick with eagerPositions); only the relaxing vertices are integrated.
+    if (touched != mActiveCentre || contact != mActiveContact) changeActiveSet(touched, contact);
+    mActiveForceN = mForceN;
+    mActiveDirty = contact;
+    if (mEagerPositions) writeActivePositions();
+
+    const auto& rest = mMesh.restPositionsMm();
+    const float restEps2 = kRestEpsilonMm * kRestEpsilonMm;
+    for (std::size_t i = 0; i < mRelaxingCount;) {
+        const VertexId v = mRelaxing[i];
         relaxVertex(v);
         const glm::vec3 step = mRelaxDt * mVelocitiesMmPerS[v];
         if (dist2(mPositions[v], rest[v]) < restEps2 && glm::dot(step, step) < restEps2) {
             mPositions[v] = rest[v];
             mVelocitiesMmPerS[v] = glm::vec3(0.0f);
-            mDisplacedSlot[v] = kNoSlot;
-            const VertexId last = mDisplaced[--mDisplacedCount];
-            if (last != v) {
-                mDisplaced[i] = last;
-                mDisplacedSlot[last] = std::uint32_t(i);
-            }
+            removeRelaxing(v);  // moves the last one into slot i
             continue;
         }
         ++i;

@@ -18,11 +18,15 @@ namespace palpate {
 class SlopeRingDeformer final : public DeformationModel {
 public:
     /// `mesh` and `octree` must outlive the deformer. Throws std::invalid_argument on bad params.
+    /// `eagerPositions` (Palpate only) writes the active rings' positions every tick instead of
+    /// when they are read; the benchmark reports both.
     SlopeRingDeformer(const TissueMesh& mesh, const Octree& octree, const SlopeRingParams& params,
-                      SlopeRingMethod method = SlopeRingMethod::Palpate);
+                      SlopeRingMethod method = SlopeRingMethod::Palpate, bool eagerPositions = false);
 
     TickResult step(const glm::vec3& toolTipMm, double dtS) override;
-    std::span<const glm::vec3> positionsMm() const override { return mPositions; }
+    /// Current positions. For Palpate the active rings are written here, on demand (not real-time:
+    /// call from the thread that steps, at display rate).
+    std::span<const glm::vec3> positionsMm() const override;
     void reset() override;
     std::string name() const override;
 
@@ -32,30 +36,40 @@ public:
     const SlopeRingParams& params() const { return mParams; }
     SlopeRingMethod method() const { return mMethod; }
 
-    /// The touched vertex this method's search would report now, without changing state
+    /// The touched vertex this method's search would report now, without changing the deformation
     /// (kNoVertex where the paper's searchNode finds nothing).
     VertexId findTouched(const glm::vec3& toolTipMm) const;
     VertexId touchedVertex() const { return mTouched; }
-
     /// Contact force magnitude of the slope model (N), before the spring rendering.
     float contactForceN() const { return mForceN; }
-    /// Vertices currently away from rest (the active rings and those still relaxing).
-    std::span<const VertexId> displacedVertices() const { return {mDisplaced.data(), mDisplacedCount}; }
+    /// Palpate: every vertex that may be away from rest (the active rings and those relaxing).
+    /// Other methods: empty. Not real-time.
+    std::span<const VertexId> displacedVertices() const;
+    /// Palpate search statistics: how often the candidate cache was retaken, and how often the
+    /// full octree search was needed.
+    std::size_t cacheRefreshes() const { return mCacheRefreshes; }
+    std::size_t fullSearches() const { return mFullSearches; }
 
 private:
     void applyParams();
+    void precomputeRingLists();
     VertexId searchPalpate(const glm::vec3& tool) const;
-    void stepPalpate(const glm::vec3& tool, VertexId touched, bool contact);
+    void searchActive(const glm::vec3& tool, VertexId& best, float& best2) const;
+    void refreshCandidateCache(const glm::vec3& tool) const;
+    void writeActivePositions() const;
+    void changeActiveSet(VertexId touched, bool contact);
+    void stepPalpate(VertexId touched, bool contact);
     void stepWholeModel(VertexId touched, bool contact);
     void stepProposed(VertexId touched, bool contact);
     void relaxVertex(VertexId v);
-    void addDisplaced(VertexId v);
-    void precomputeRingLists();
+    void addRelaxing(VertexId v);
+    void removeRelaxing(VertexId v);
 
     const TissueMesh& mMesh;
     const Octree& mOctree;
     SlopeRingParams mParams;
     SlopeRingMethod mMethod;
+    bool mEagerPositions;
 
     // Hot-loop constants derived from the parameters.
     float mSignedSlope[kMaxRings + 1] = {};  // -|m_r|, mm/N
@@ -68,7 +82,7 @@ private:
     double mRelaxDtS = -1.0;     // dt for which the two factors below hold
     float mRelaxDenominatorInv = 1.0f, mRelaxDt = 0.0f;
 
-    std::vector<glm::vec3> mPositions;
+    mutable std::vector<glm::vec3> mPositions;  // mutable: Palpate writes active rings on demand
     std::vector<glm::vec3> mVelocitiesMmPerS;
 
     // State of the contact.
@@ -76,17 +90,44 @@ private:
     float mForceN = 0.0f;
     bool mContact = false;
 
-    // Palpate: the active ring set and the list of displaced vertices (active or relaxing).
+    // Palpate: the active set (rings of the touched vertex in contact) with a copy of its rest
+    // positions in structure-of-arrays form for the search, and the vertices still relaxing.
     RingFinder mRingFinder;
-    RingSet mActive;
+    RingSet mActive, mNextActive;
+    std::vector<float> mActiveRestX, mActiveRestY, mActiveRestZ;
+    mutable std::vector<float> mScratchDistance2;
     VertexId mActiveCentre = kNoVertex;
     bool mActiveContact = false;
-    float mWrittenForceN = -1.0f;
+    glm::vec3 mActiveNormal{0.0f};
+    float mActiveForceN = 0.0f;  // the force the active positions follow
+    mutable bool mActiveDirty = false;  // active positions not yet written for mForceN
     std::vector<std::uint32_t> mActiveStamp;
     std::uint32_t mActiveGeneration = 1;
-    std::vector<VertexId> mDisplaced;
-    std::size_t mDisplacedCount = 0;
-    std::vector<std::uint32_t> mDisplacedSlot;
+    std::vector<VertexId> mRelaxing;
+    std::size_t mRelaxingCount = 0;
+    std::vector<std::uint32_t> mRelaxingSlot;
+    mutable std::vector<VertexId> mDisplacedScratch;
+    // The last full scan of the active set: its nearest vertex and the margin to the runner-up.
+    // Until the tool and the force have moved more than that margin allows, the nearest active
+    // vertex cannot change and one distance replaces the scan.
+    mutable bool mActiveScanValid = false;
+    mutable glm::vec3 mActiveScanToolMm{0.0f};
+    mutable float mActiveScanForceN = 0.0f;
+    mutable std::uint32_t mActiveScanBest = 0;     // index into mActive
+    mutable int mActiveScanBestRing = 0;
+    mutable float mActiveScanSecondMm = 0.0f;      // runner-up distance at the scan
+
+    // Palpate's touched-vertex search: the K rest vertices nearest to where the cache was taken.
+    // Any other vertex at rest is at least mCacheRadiusMm - |tool - centre| from the tool, which
+    // certifies the answer without touching the octree on most ticks (docs/method.md).
+    static constexpr int kCacheSize = 16;
+    mutable glm::vec3 mCacheCentreMm{0.0f};
+    mutable int mCacheCount = 0;
+    mutable float mCacheRadiusMm = 0.0f;  // distance of the K-th cached vertex (infinite if all cached)
+    mutable VertexId mCacheIds[kCacheSize] = {};
+    mutable float mCacheDistanceMm[kCacheSize] = {};
+    mutable std::size_t mCacheRefreshes = 0;
+    mutable std::size_t mFullSearches = 0;
 
     // The paper's methods: rings precomputed per vertex (nodes[t].firstRing, .secondRing, ...).
     std::vector<std::vector<std::vector<VertexId>>> mRingLists;  // [vertex][ring-1]

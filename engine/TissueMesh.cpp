@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <mutex>
 #include <numeric>
 #include <sstream>
@@ -30,19 +31,18 @@ std::string plural(std::size_t n, const char* word) {
     return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
 }
 
-/// OpenMesh reports reader problems on a global stream; capture it while one file loads.
+/// OpenMesh reports reader problems on its global omerr stream, which writes to std::cerr.
+/// While one file loads, std::cerr (and std::clog) write into a buffer instead, so the text can be
+/// turned into a message that names the file. (Connecting a stream to omerr and disconnecting it
+/// leaks inside OpenMesh, so the standard streams' buffers are swapped instead.)
 class OmErrCapture {
 public:
-    OmErrCapture() : mLock(mutex()) {
-        omerr().disconnect(std::cerr);
-        omlog().disconnect(std::clog);
-        omerr().connect(mText);
-    }
+    OmErrCapture()
+        : mLock(mutex()), mOldErr(std::cerr.rdbuf(mText.rdbuf())), mOldLog(std::clog.rdbuf(mText.rdbuf())) {}
     ~OmErrCapture() {
         omerr().flush();
-        omerr().disconnect(mText);
-        omerr().connect(std::cerr);
-        omlog().connect(std::clog);
+        std::cerr.rdbuf(mOldErr);
+        std::clog.rdbuf(mOldLog);
     }
     std::string text() {
         omerr().flush();
@@ -56,6 +56,8 @@ private:
     }
     std::lock_guard<std::mutex> mLock;
     std::ostringstream mText;
+    std::streambuf* mOldErr;
+    std::streambuf* mOldLog;
 };
 
 std::size_t countOccurrences(const std::string& text, const std::string& what) {

@@ -79,6 +79,8 @@ int demoCommand(const std::vector<std::string>& words) {
                          {"peak_force_n", peakForceN},
                          {"peak_displacement_mm", peakDisplacementMm},
                          {"residual_after_release_mm", residualMm},
+                         {"cache_refreshes", deformer.cacheRefreshes()},
+                         {"full_searches", deformer.fullSearches()},
                          {"mean_tick_us", elapsedUs / double(std::max<std::size_t>(1, ticks))}};
         std::cout << j.dump(2) << "\n";
     } else {
@@ -91,6 +93,8 @@ int demoCommand(const std::vector<std::string>& words) {
                   << " times\n"
                   << "  peak force " << peakForceN << " N, peak displacement " << peakDisplacementMm << " mm\n"
                   << "  after release the surface relaxed to within " << residualMm << " mm of rest\n"
+                  << "  touched-vertex search: candidate cache retaken " << deformer.cacheRefreshes()
+                  << " times, full octree search " << deformer.fullSearches() << " times\n"
                   << "  mean tick " << elapsedUs / double(std::max<std::size_t>(1, ticks)) << " us\n";
     }
     return 0;

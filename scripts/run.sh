@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds Palpate and runs it on its default scene with the simulated
+# device. Without a display it runs headless: the same scene in the command-line demo, and a
+# screenshot from the software renderer.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+cmake --preset default
+cmake --build --preset default -j "$(nproc)"
+bin=build/release/app
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+  exec "$bin/gui/palpate" "$@"
+fi
+echo "No display found: running headless."
+"$bin/palpate-cli" demo
+shot="build/release/palpate-headless.png"
+QT_QPA_PLATFORM=offscreen "$bin/gui/palpate" --software-render --screenshot "$shot" "$@"
+echo "Rendered the default scene with the software renderer to $shot"
