@@ -17,7 +17,7 @@ namespace palpate {
 struct MethodMeasurement {
     double tickUs = 0.0;        ///< median over repeats of the mean tick time
     double wrongPct = 0.0;      ///< ticks whose touched vertex is not the true nearest
-    double maxOffMm = 0.0;      ///< worst extra distance of a wrong touched vertex
+    double maxOffMm = 0.0;      ///< worst extra distance of a wrong touched vertex (when one was found)
 };
 
 struct Table1Row {
@@ -26,6 +26,9 @@ struct Table1Row {
     std::size_t triangles = 0;
     std::size_t ticks = 0;
     std::array<std::optional<MethodMeasurement>, 4> methods;  ///< indexed by SlopeRingMethod
+    /// Ours with the active rings' positions written every tick (as the paper's methods do), for
+    /// an honest comparison of what the lazy writing saves.
+    std::optional<MethodMeasurement> palpateEager;
 };
 
 struct Table1Options {

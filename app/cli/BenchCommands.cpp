@@ -41,6 +41,7 @@ nlohmann::json rowJson(const Table1Row& row) {
         j[name + "_wrong_pct"] = optionalNumber(measurement, &MethodMeasurement::wrongPct);
         j[name + "_max_off_mm"] = optionalNumber(measurement, &MethodMeasurement::maxOffMm);
     }
+    j["palpate_eager_us"] = optionalNumber(row.palpateEager, &MethodMeasurement::tickUs);
     return j;
 }
 
@@ -68,7 +69,7 @@ void printTable(const std::vector<Table1Row>& rows, std::ostream& out) {
     out << std::left << std::setw(9) << "shape" << std::right << std::setw(9) << "vertices" << std::setw(10)
         << "triangles" << std::setw(11) << "previous" << std::setw(10) << "hybrid" << std::setw(10) << "proposed"
         << std::setw(10) << "palpate" << std::setw(12) << "prev/ours" << std::setw(12) << "hyb/ours" << std::setw(12)
-        << "prop/ours" << "   wrong % (prev/hyb/prop/ours)\n";
+        << "prop/ours" << std::setw(10) << "eager" << "   wrong % (prev/hyb/prop/ours)\n";
     for (const auto& r : rows) {
         out << std::left << std::setw(9) << shapeName(r.shape) << std::right << std::setw(9) << r.vertices
             << std::setw(10) << r.triangles;
@@ -76,10 +77,12 @@ void printTable(const std::vector<Table1Row>& rows, std::ostream& out) {
         const double ours = us(r, SlopeRingMethod::Palpate);
         out << std::setw(12) << ratio(us(r, SlopeRingMethod::Previous), ours) << std::setw(12)
             << ratio(us(r, SlopeRingMethod::Hybrid), ours) << std::setw(12)
-            << ratio(us(r, SlopeRingMethod::Proposed), ours) << "   ";
+            << ratio(us(r, SlopeRingMethod::Proposed), ours) << std::setw(10)
+            << (r.palpateEager ? cell(r.palpateEager, 3) : std::string("-")) << "   ";
         for (auto m : kMethods) out << cell(r.methods[std::size_t(m)], 1, true) << (m == SlopeRingMethod::Palpate ? "" : "/");
         out << "\n";
     }
+    out << "\neager: ours with the active rings' positions written every tick instead of when read.\n";
     out << "\nThe paper's Table 1 (2012 hardware, OpenHaptics), microseconds:\n";
     for (const auto& p : kPaper)
         out << "  " << std::setw(5) << p.vertices << " vertices: previous " << p.previousUs << ", hybrid "
@@ -92,7 +95,7 @@ void writeCsv(const std::vector<Table1Row>& rows, std::ostream& out) {
     for (auto m : kMethods) out << "," << methodName(m) << "_us";
     for (auto m : kMethods) out << "," << methodName(m) << "_wrong_pct";
     for (auto m : kMethods) out << "," << methodName(m) << "_max_off_mm";
-    out << "\n";
+    out << ",palpate_eager_us\n";
     for (const auto& r : rows) {
         out << shapeName(r.shape) << "," << r.vertices << "," << r.triangles << "," << r.ticks;
         for (double MethodMeasurement::*field :
@@ -102,6 +105,8 @@ void writeCsv(const std::vector<Table1Row>& rows, std::ostream& out) {
                 out << ",";
                 if (x) out << std::setprecision(6) << (*x).*field;
             }
+        out << ",";
+        if (r.palpateEager) out << std::setprecision(6) << r.palpateEager->tickUs;
         out << "\n";
     }
 }

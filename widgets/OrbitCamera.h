@@ -1,0 +1,60 @@
+#pragma once
+// A turntable camera around a target point: what both viewports render with, so that the OpenGL and
+// the software renderer show the same picture. Qt-free (glm), so it can be tested without a GUI.
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <span>
+
+namespace palpate {
+
+class OrbitCamera {
+public:
+    /// The view a reset returns to: from above (+y) and turned towards +x, where the scripted tool
+    /// path presses; the shipped stomach meshes lie in the x-z plane.
+    static constexpr float kDefaultYawDeg = 80.0f;
+    static constexpr float kDefaultPitchDeg = 40.0f;
+    /// Vertical field of view, or horizontal when the viewport is taller than wide.
+    static constexpr float kFieldOfViewDeg = 40.0f;
+
+    /// Frames the points from the current angles: aims at their centre on screen and moves back until
+    /// all are inside the view (for any aspect). Does nothing for no points.
+    void frame(std::span<const glm::vec3> pointsMm);
+    /// Default angles, then `frame`.
+    void reset(std::span<const glm::vec3> pointsMm);
+
+    /// Turns the camera by a mouse drag: horizontal pixels change the yaw, vertical the pitch.
+    void orbit(float dxPx, float dyPx);
+    /// Moves towards (steps > 0) or away from the target; one wheel notch is one step.
+    void zoom(float steps);
+
+    float yawDeg() const { return mYawDeg; }
+    float pitchDeg() const { return mPitchDeg; }
+    float distanceMm() const { return mDistanceMm; }
+    glm::vec3 targetMm() const { return mTargetMm; }
+    glm::vec3 eyeMm() const;
+
+    /// World (mm) to camera space; a rigid transform, so its upper 3x3 also maps normals.
+    glm::mat4 view() const;
+    /// OpenGL clip-space projection for a viewport of width / height `aspect`.
+    glm::mat4 projection(float aspect) const;
+
+    /// Where a world point lands in a viewport of `sizePx` (origin top left, y down); nullopt when
+    /// it is behind the near plane.
+    std::optional<glm::vec2> projectToPixel(const glm::vec3& pointMm, const glm::vec2& sizePx) const;
+
+private:
+    /// Rotation from world to camera axes (x right, y up, -z forward).
+    glm::mat4 rotation() const;
+
+    glm::vec3 mTargetMm{0.0f};
+    float mSceneRadiusMm = 86.6f;
+    float mDistanceMm = 250.0f;
+    float mYawDeg = kDefaultYawDeg;
+    float mPitchDeg = kDefaultPitchDeg;
+};
+
+}  // namespace palpate

@@ -1,0 +1,67 @@
+#pragma once
+// The viewport behind one interface, with an OpenGL and a QPainter implementation (MeshViewport,
+// SoftwareViewport): where there is no OpenGL (Qt's offscreen platform, tests) the same scene,
+// camera and markers are drawn in software. The scene, camera and mouse handling live here, shared.
+
+#include "widgets/OrbitCamera.h"
+#include "widgets/RenderScene.h"
+
+#include <QImage>
+#include <QPointF>
+#include <QString>
+
+class QMouseEvent;
+class QWheelEvent;
+class QWidget;
+
+namespace palpate {
+
+enum class RendererKind { OpenGL, Software };
+
+QString rendererName(RendererKind kind);
+
+class Viewport {
+public:
+    virtual ~Viewport() = default;
+
+    /// The widget to put in a layout; it owns this viewport (delete the widget, not the interface).
+    virtual QWidget* widget() = 0;
+    virtual RendererKind kind() const = 0;
+    /// Renders the current scene into an image of the widget's size (what --screenshot saves).
+    virtual QImage grabImage() = 0;
+
+    /// Shows a new mesh at rest and frames it. The viewport keeps a copy; `mesh` may go away.
+    void setMesh(const TissueMesh& mesh);
+    void clearMesh();
+    /// The newest simulation state: deformed positions, tool, contact, force.
+    void setSnapshot(const SceneSnapshot& snapshot);
+
+    void setWireframe(bool on);
+    bool wireframe() const { return mWireframe; }
+    /// Default view angles, framing the mesh.
+    void resetCamera();
+    /// Frames the mesh from the current angles.
+    void fitCamera();
+
+    const OrbitCamera& camera() const { return mCamera; }
+    const RenderScene& scene() const { return mScene; }
+
+protected:
+    /// Schedules a repaint. `topologyChanged`: the triangles changed (GPU buffers must be rebuilt).
+    virtual void sceneChanged(bool topologyChanged) = 0;
+
+    // Event helpers for the widgets: left-drag orbits, the wheel zooms. Each returns whether the
+    // view changed (the widget then repaints).
+    bool handleMousePress(const QMouseEvent& event);
+    bool handleMouseMove(const QMouseEvent& event);
+    bool handleWheel(const QWheelEvent& event);
+
+    RenderScene mScene;
+    OrbitCamera mCamera;
+    bool mWireframe = true;
+
+private:
+    QPointF mLastDragPx;
+};
+
+}  // namespace palpate
