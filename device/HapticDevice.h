@@ -46,6 +46,19 @@ public:
     virtual void writeForce(const glm::vec3& forceN) = 0;
     /// Zero force at once and stay safe until reopened.
     virtual void emergencyStop() = 0;
+
+    /// The haptic loop's clock, in seconds since the loop started, given once per tick before
+    /// read(). Simulated devices are driven by it (so a stepped loop is deterministic) and stamp
+    /// their samples with it; hardware backends keep their own clock and ignore it. Haptic thread
+    /// only; must not block or allocate.
+    virtual void setTimeS(double /*loopTimeS*/) {}
+
+    /// Where the scene wants to be touched: a target point, its outward normal and a tangent (all
+    /// in the scene's frame). Devices that script their motion relative to the target (simulated)
+    /// use it; others ignore it. Call before the loop starts or from the haptic thread at a tick
+    /// boundary; must not allocate.
+    virtual void setScene(const glm::vec3& /*targetMm*/, const glm::vec3& /*outwardNormal*/,
+                          const glm::vec3& /*tangent*/) {}
 };
 
 }  // namespace palpate

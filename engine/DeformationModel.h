@@ -1,6 +1,7 @@
 #pragma once
 // The interface every deformation model implements, so models can be swapped and charted.
 
+#include "engine/SlopeRingParams.h"
 #include "engine/TissueMesh.h"
 
 #include <glm/vec3.hpp>
@@ -29,6 +30,16 @@ public:
     /// Back to the rest shape, no contact.
     virtual void reset() = 0;
     virtual std::string name() const = 0;
+
+    /// The vertices away from rest and where they are, at most `capacity` of them; returns how
+    /// many there are (more than `capacity` means the copy was cut). Real-time safe: the haptic
+    /// loop publishes this to observers.
+    virtual std::size_t copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::size_t capacity) const = 0;
+
+    /// Applies already validated slope-ring parameters at a tick boundary. Returns false when this
+    /// model cannot take them without reallocating (the caller must build a new model instead).
+    /// Real-time safe.
+    virtual bool applySlopeRingParams(const SlopeRingParams& /*params*/) { return false; }
 };
 
 }  // namespace palpate

@@ -60,10 +60,66 @@ void SlopeRingDeformer::setParams(const SlopeRingParams& params) {
     mParams = params;
     applyParams();
     if (ringsChanged && mMethod != SlopeRingMethod::Palpate) precomputeRingLists();
-    if (mMethod == SlopeRingMethod::Palpate && mActiveCentre != kNoVertex) {
-        writeActivePositions();
-        mActiveCentre = kNoVertex;  // re-derive the active set with the new rings and slopes
+    if (mMethod == SlopeRingMethod::Palpate) releaseActiveSet();
+}
+
+bool SlopeRingDeformer::applySlopeRingParams(const SlopeRingParams& params) {
+    if (mMethod != SlopeRingMethod::Palpate && params.ringCount != mParams.ringCount) return false;
+    mParams = params;
+    applyParams();
+    if (mMethod == SlopeRingMethod::Palpate) releaseActiveSet();
+    return true;
+}
+
+void SlopeRingDeformer::releaseActiveSet() {
+    // New slopes or rings: the active set is rebuilt on the next tick; its vertices relax from
+    // where they are until then (those that are active again stop relaxing).
+    if (mActiveCentre == kNoVertex) return;
+    writeActivePositions();
+    if (mActiveContact)
+        for (std::size_t i = 0, n = mActive.size(); i < n; ++i) {
+            mVelocitiesMmPerS[mActive.vertices[i]] = glm::vec3(0.0f);
+            addRelaxing(mActive.vertices[i]);
+        }
+    mActive.ringCount = 0;
+    mActive.ringStart[1] = 0;
+    ++mActiveGeneration;
+    mActiveScanValid = false;
+    mActiveCentre = kNoVertex;
+    mActiveContact = false;
+}
+
+std::size_t SlopeRingDeformer::copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::size_t capacity) const {
+    std::size_t count = 0;
+    auto put = [&](VertexId v, const glm::vec3& p) {
+        if (count < capacity) {
+            ids[count] = v;
+            positionsMm[count] = p;
+        }
+        ++count;
+    };
+    const auto& rest = mMesh.restPositionsMm();
+    switch (mMethod) {
+        case SlopeRingMethod::Palpate:
+            if (mActiveCentre != kNoVertex && mActiveContact)
+                for (int r = 0; r <= mActive.ringCount; ++r) {
+                    const glm::vec3 displacement = (mSignedSlope[r] * mActiveForceN) * mActiveNormal;
+                    for (std::uint32_t i = mActive.ringStart[r], end = mActive.ringStart[r + 1]; i < end; ++i)
+                        put(mActive.vertices[i], glm::vec3(mActiveRestX[i], mActiveRestY[i], mActiveRestZ[i]) + displacement);
+                }
+            for (std::size_t i = 0; i < mRelaxingCount; ++i) put(mRelaxing[i], mPositions[mRelaxing[i]]);
+            break;
+        case SlopeRingMethod::Proposed:
+            for (VertexId v : mPreviousRingVertices)
+                if (mPositions[v] != rest[v]) put(v, mPositions[v]);
+            break;
+        case SlopeRingMethod::Previous:
+        case SlopeRingMethod::Hybrid:
+            for (VertexId v = 0; v < mPositions.size(); ++v)
+                if (mPositions[v] != rest[v]) put(v, mPositions[v]);
+            break;
     }
+    return count;
 }
 
 void SlopeRingDeformer::applyParams() {

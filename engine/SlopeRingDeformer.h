@@ -33,6 +33,9 @@ public:
     /// Replaces the parameters (validated first; throws std::invalid_argument listing every problem).
     /// Not real-time: may precompute rings.
     void setParams(const SlopeRingParams& params);
+    std::size_t copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::size_t capacity) const override;
+    /// Real-time: true for Palpate, and for the paper's methods while the ring count is unchanged.
+    bool applySlopeRingParams(const SlopeRingParams& params) override;
     const SlopeRingParams& params() const { return mParams; }
     SlopeRingMethod method() const { return mMethod; }
 
@@ -58,6 +61,7 @@ private:
     void refreshCandidateCache(const glm::vec3& tool) const;
     void writeActivePositions() const;
     void changeActiveSet(VertexId touched, bool contact);
+    void releaseActiveSet();
     void stepPalpate(VertexId touched, bool contact);
     void stepWholeModel(VertexId touched, bool contact);
     void stepProposed(VertexId touched, bool contact);

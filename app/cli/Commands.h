@@ -8,5 +8,6 @@ namespace palpate::cli {
 int meshCommand(const std::vector<std::string>& words);
 int benchCommand(const std::vector<std::string>& words);
 int demoCommand(const std::vector<std::string>& words);
+int loopCommand(const std::vector<std::string>& words);
 
 }  // namespace palpate::cli

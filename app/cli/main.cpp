@@ -13,6 +13,8 @@ void usage(std::ostream& out) {
            "  palpate-cli mesh check FILE\n"
            "  palpate-cli bench table1 [--json] [--csv FILE] [--quick] [--repeats N]\n"
            "  palpate-cli demo [--mesh FILE] [--method previous|hybrid|proposed|palpate] [--json]\n"
+           "  palpate-cli loop [--seconds S] [--rate HZ] [--observer-hz 60] [--device URI] [--mesh FILE]\n"
+           "                   [--spin-us US] [--no-fifo] [--json]\n"
            "  palpate-cli --help | --version\n";
 }
 }  // namespace
@@ -37,6 +39,7 @@ int main(int argc, char** argv) {
         if (command == "mesh") return palpate::cli::meshCommand(words);
         if (command == "bench") return palpate::cli::benchCommand(words);
         if (command == "demo") return palpate::cli::demoCommand(words);
+        if (command == "loop") return palpate::cli::loopCommand(words);
     } catch (const std::exception& e) {
         std::cerr << "palpate-cli " << command << ": " << e.what() << "\n";
         return 1;

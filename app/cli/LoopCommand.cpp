@@ -1,0 +1,145 @@
+// palpate-cli loop: the real haptic thread on the default scene with a simulated device, and an
+// observer thread reading snapshots the way the GUI does; prints the loop's timing.
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "app/cli/DefaultScene.h"
+#include "device/DeviceUri.h"
+#include "engine/HapticLoop.h"
+
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <thread>
+
+namespace palpate::cli {
+
+namespace {
+std::optional<double> parseNumber(const std::string& text) {
+    try {
+        std::size_t used = 0;
+        const double v = std::stod(text, &used);
+        if (used != text.size() || !std::isfinite(v)) return std::nullopt;
+        return v;
+    } catch (...) {
+        return std::nullopt;
+    }
+}
+}  // namespace
+
+int loopCommand(const std::vector<std::string>& words) {
+    Args args(words, {"json", "no-fifo"}, {"seconds", "rate", "observer-hz", "device", "mesh", "spin-us"});
+    if (!args.ok()) {
+        std::cerr << "loop: " << args.error() << "\n";
+        return 2;
+    }
+    const auto seconds = parseNumber(args.option("seconds").value_or("5"));
+    const auto rate = parseNumber(args.option("rate").value_or("1000"));
+    const auto observerHz = parseNumber(args.option("observer-hz").value_or("60"));
+    const auto spinUs = parseNumber(args.option("spin-us").value_or("30"));
+    if (!seconds || *seconds <= 0.0 || *seconds > 86400.0) {
+        std::cerr << "loop: --seconds must be a number in (0, 86400]\n";
+        return 2;
+    }
+    if (!observerHz || *observerHz <= 0.0 || *observerHz > 10000.0) {
+        std::cerr << "loop: --observer-hz must be a number in (0, 10000]\n";
+        return 2;
+    }
+    HapticLoopDef def;
+    def.rateHz = rate.value_or(-1.0);
+    def.spinUs = spinUs.value_or(-1.0);
+    def.trySchedFifo = !args.flag("no-fifo");
+    if (const std::string problem = validateHapticLoopDef(def); !problem.empty()) {
+        std::cerr << "loop: " << problem << "\n";
+        return 2;
+    }
+
+    const std::string meshPath = args.option("mesh").value_or(findResource(kDefaultMesh));
+    auto loaded = TissueMesh::load(meshPath);
+    if (!loaded.mesh) {
+        std::cerr << loaded.report.text();
+        return 1;
+    }
+    const std::string uri = args.option("device").value_or("sim:sine");
+    std::string error;
+    auto device = openDeviceUri(uri, error);
+    if (!device) {
+        std::cerr << "loop: " << error << "\n";
+        return 1;
+    }
+    // Aim the scripted device at the side of the mesh (the vertex with the largest x).
+    const auto& rest = loaded.mesh->restPositionsMm();
+    VertexId target = 0;
+    for (VertexId v = 1; v < rest.size(); ++v)
+        if (rest[v].x > rest[target].x) target = v;
+    device->setScene(rest[target], loaded.mesh->restNormals()[target], glm::vec3(0.0f, 1.0f, 0.0f));
+
+    HapticLoop loop(def, HapticScene::createSlopeRing(std::move(*loaded.mesh), SlopeRingParams{}), std::move(device));
+    std::atomic<bool> observing{true};
+    std::uint64_t snapshotsSeen = 0, torn = 0, contactSnapshots = 0, lastPublish = 0;
+    std::thread observer([&] {
+        const auto period = std::chrono::duration<double>(1.0 / *observerHz);
+        auto next = std::chrono::steady_clock::now();
+        while (observing.load(std::memory_order_acquire)) {
+            const HapticSnapshot& s = loop.newestSnapshot();
+            if (s.publishCount != lastPublish) {
+                ++snapshotsSeen;
+                if (s.closingTick != s.tick || s.publishCount < lastPublish ||
+                    s.displacedCount > HapticSnapshot::kMaxDisplaced)
+                    ++torn;
+                if (s.contact) ++contactSnapshots;
+                lastPublish = s.publishCount;
+            }
+            next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
+            std::this_thread::sleep_until(next);
+        }
+    });
+    if (!loop.start(&error)) {
+        observing = false;
+        observer.join();
+        std::cerr << "loop: " << error << "\n";
+        return 1;
+    }
+    std::this_thread::sleep_for(std::chrono::duration<double>(*seconds));
+    loop.stop();
+    observing = false;
+    observer.join();
+    const LoopReport r = loop.report();
+
+    if (args.flag("json")) {
+        nlohmann::json j{
+            {"rate_hz", def.rateHz},
+            {"ticks", r.counters.ticks},
+            {"missed", r.counters.missedDeadlines},
+            {"jitter_us", {{"p50", r.jitter.p50Us}, {"p99", r.jitter.p99Us}, {"p999", r.jitter.p999Us}, {"max", r.jitter.maxUs}}},
+            {"compute_us", {{"p50", r.compute.p50Us}, {"p99", r.compute.p99Us}, {"max", r.compute.maxUs}}},
+            {"sched_fifo", r.counters.schedFifo},
+            {"overruns", r.counters.overruns},
+            {"achieved_rate_hz", r.counters.achievedRateHz},
+            {"seconds", r.elapsedS},
+            {"device", uri},
+            {"mesh", meshPath},
+            {"observer_hz", *observerHz},
+            {"observer_snapshots", snapshotsSeen},
+            {"observer_torn_snapshots", torn},
+            {"observer_contact_snapshots", contactSnapshots},
+        };
+        std::cout << j.dump(2) << "\n";
+    } else {
+        std::cout << "haptic loop: " << r.counters.ticks << " ticks in " << r.elapsedS << " s at " << def.rateHz
+                  << " Hz (achieved " << r.counters.achievedRateHz << " Hz), "
+                  << (r.counters.schedFifo ? "SCHED_FIFO" : "normal scheduling (SCHED_FIFO not permitted)") << "\n"
+                  << "  missed deadlines " << r.counters.missedDeadlines << ", overruns " << r.counters.overruns << "\n"
+                  << "  jitter us: p50 " << r.jitter.p50Us << ", p99 " << r.jitter.p99Us << ", p99.9 " << r.jitter.p999Us
+                  << ", max " << r.jitter.maxUs << "\n"
+                  << "  compute us: p50 " << r.compute.p50Us << ", p99 " << r.compute.p99Us << ", max "
+                  << r.compute.maxUs << "\n"
+                  << "  observer at " << *observerHz << " Hz saw " << snapshotsSeen << " snapshots (" << torn
+                  << " inconsistent, " << contactSnapshots << " in contact)\n";
+    }
+    return torn == 0 ? 0 : 1;
+}
+
+}  // namespace palpate::cli

@@ -1,0 +1,168 @@
+#include "device/WaypointFile.h"
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+namespace palpate {
+namespace {
+
+constexpr const char* kColumnNames[4] = {"t_s", "x_mm", "y_mm", "z_mm"};
+
+bool isSeparator(char c) { return c == ' ' || c == '\t' || c == ',' || c == '\v' || c == '\f'; }
+
+/// A token as it may appear in a message: printable ASCII kept, the rest escaped, long ones cut.
+std::string quoted(std::string_view token) {
+    static const char* kHex = "0123456789abcdef";
+    std::string out = "'";
+    const std::size_t shown = token.size() < 32 ? token.size() : 32;
+    for (std::size_t i = 0; i < shown; ++i) {
+        const auto c = static_cast<unsigned char>(token[i]);
+        if (c >= 0x20 && c < 0x7f && c != '\'') {
+            out += char(c);
+        } else {
+            out += "\\x";
+            out += kHex[c >> 4];
+            out += kHex[c & 15];
+        }
+    }
+    if (shown < token.size()) out += "...";
+    out += "'";
+    return out;
+}
+
+std::string numberText(double value) {
+    std::ostringstream s;
+    s << value;
+    return s.str();
+}
+
+/// Parses a whole token as a double; a leading '+' is accepted (from_chars does not take it).
+bool parseDouble(std::string_view token, double& value) {
+    if (!token.empty() && token.front() == '+') {
+        token.remove_prefix(1);
+        if (!token.empty() && (token.front() == '+' || token.front() == '-')) return false;  // "+-1"
+    }
+    if (token.empty()) return false;
+    const char* begin = token.data();
+    const char* end = begin + token.size();
+    const auto result = std::from_chars(begin, end, value, std::chars_format::general);
+    return result.ec == std::errc() && result.ptr == end;
+}
+
+}  // namespace
+
+bool parseWaypoints(std::string_view text, std::string_view sourceName, std::vector<Waypoint>& out,
+                    std::string& error) {
+    out.clear();
+    error.clear();
+    const std::string source(sourceName);
+    auto fail = [&](std::size_t lineNumber, const std::string& problem) {
+        out.clear();
+        error = source + ":" + std::to_string(lineNumber) + ": " + problem;
+        return false;
+    };
+
+    std::size_t lineNumber = 0;
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        ++lineNumber;
+        std::size_t eol = text.find('\n', pos);
+        if (eol == std::string_view::npos) eol = text.size();
+        std::string_view line = text.substr(pos, eol - pos);
+        pos = eol + 1;
+
+        if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+
+        std::string_view tokens[4];
+        std::size_t tokenCount = 0;
+        std::size_t i = 0;
+        while (i < line.size()) {
+            while (i < line.size() && isSeparator(line[i])) ++i;
+            if (i >= line.size()) break;
+            const std::size_t start = i;
+            while (i < line.size() && !isSeparator(line[i])) ++i;
+            if (tokenCount < 4) tokens[tokenCount] = line.substr(start, i - start);
+            ++tokenCount;
+        }
+        if (tokenCount == 0) continue;  // blank or comment-only line
+        if (tokenCount != 4)
+            return fail(lineNumber, "expected 4 numbers (t_s x_mm y_mm z_mm), found " +
+                                        std::to_string(tokenCount) + " field" + (tokenCount == 1 ? "" : "s"));
+
+        double values[4];
+        for (std::size_t c = 0; c < 4; ++c) {
+            if (!parseDouble(tokens[c], values[c]))
+                return fail(lineNumber, quoted(tokens[c]) + " is not a number (column " + std::to_string(c + 1) +
+                                            ", " + kColumnNames[c] + ")");
+            if (!std::isfinite(values[c]))
+                return fail(lineNumber, std::string(kColumnNames[c]) + " is not finite (" + quoted(tokens[c]) + ")");
+            if (c > 0 && std::fabs(values[c]) > kMaxWaypointCoordinateMm)
+                return fail(lineNumber, std::string(kColumnNames[c]) + " = " + numberText(values[c]) +
+                                            " mm is beyond +-" + numberText(kMaxWaypointCoordinateMm) +
+                                            " mm (metres instead of millimetres?)");
+        }
+        if (!out.empty() && !(values[0] > out.back().timeS))
+            return fail(lineNumber, "t_s = " + numberText(values[0]) + " s is not after the previous waypoint's " +
+                                        numberText(out.back().timeS) + " s (times must increase)");
+        out.push_back(Waypoint{values[0], glm::vec3(float(values[1]), float(values[2]), float(values[3]))});
+    }
+    if (out.empty()) {
+        error = source + ": no waypoints (expected lines of 't_s x_mm y_mm z_mm')";
+        return false;
+    }
+    return true;
+}
+
+bool loadWaypointFile(const std::string& path, std::vector<Waypoint>& out, std::string& error) {
+    namespace fs = std::filesystem;
+    out.clear();
+    const std::string name = "waypoint file '" + path + "'";
+    if (path.empty()) {
+        error = "waypoint file: no path given";
+        return false;
+    }
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) {
+        error = name + ": does not exist";
+        return false;
+    }
+    if (fs::is_directory(status)) {
+        error = name + ": is a directory, not a file";
+        return false;
+    }
+    if (!fs::is_regular_file(status)) {
+        error = name + ": is not a regular file";
+        return false;
+    }
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec) {
+        error = name + ": cannot get its size (" + ec.message() + ")";
+        return false;
+    }
+    if (size > kMaxWaypointFileBytes) {
+        error = name + ": is " + std::to_string(size) + " bytes, more than the " +
+                std::to_string(kMaxWaypointFileBytes) + " allowed";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        error = name + ": cannot be opened for reading";
+        return false;
+    }
+    std::string text(static_cast<std::size_t>(size), '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    if (in.bad()) {
+        error = name + ": read error";
+        return false;
+    }
+    return parseWaypoints(text, path, out, error);
+}
+
+}  // namespace palpate

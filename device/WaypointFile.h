@@ -1,0 +1,35 @@
+#pragma once
+// A user-supplied tool path for the simulated device (`sim:path:FILE`): a text file with one
+// waypoint "t_s x_mm y_mm z_mm" per line, in the scene's frame, played back by linear
+// interpolation. The file is user input: every defect is an error naming the file and line, and
+// no input crashes the parser (it is fuzzed in tests/device).
+
+#include <glm/vec3.hpp>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace palpate {
+
+struct Waypoint {
+    double timeS = 0.0;
+    glm::vec3 positionMm{0.0f};
+};
+
+/// Files above this are refused rather than read into memory (a path is a few thousand lines).
+inline constexpr std::size_t kMaxWaypointFileBytes = std::size_t(64) << 20;
+/// Coordinates beyond this are a units mistake (metres for millimetres) or garbage.
+inline constexpr double kMaxWaypointCoordinateMm = 1.0e6;
+
+/// Parses waypoint text. Format: fields separated by spaces, tabs or commas; '#' starts a comment;
+/// blank lines are skipped; CRLF is accepted; times strictly increase; at least one waypoint.
+/// On error returns false, leaves `out` empty and sets `error` to "SOURCE:LINE: problem".
+bool parseWaypoints(std::string_view text, std::string_view sourceName, std::vector<Waypoint>& out,
+                    std::string& error);
+
+/// Reads and parses a waypoint file. Missing paths, directories, unreadable or oversized files are
+/// errors that name the path.
+bool loadWaypointFile(const std::string& path, std::vector<Waypoint>& out, std::string& error);
+
+}  // namespace palpate

@@ -1,0 +1,131 @@
+#pragma once
+// The haptic loop: one thread that, every period, reads the device, finds the touched vertex,
+// deforms, filters and writes the force, and publishes a snapshot. The GUI only observes it
+// (snapshots through a triple buffer) and talks to it through a lock-free command queue; the
+// tick itself never allocates, locks, logs or does I/O. The same tick runs in a stepped mode on a
+// virtual clock, so tests and replays are deterministic.
+
+#include "device/HapticDevice.h"
+#include "device/SafetyFilter.h"
+#include "engine/HapticScene.h"
+#include "engine/HapticSnapshot.h"
+#include "engine/LatencyHistogram.h"
+#include "engine/SpscQueue.h"
+#include "engine/TripleBuffer.h"
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <thread>
+
+namespace palpate {
+
+struct HapticLoopDef {
+    double rateHz = 1000.0;        ///< 10 Hz .. 10 kHz
+    bool trySchedFifo = true;      ///< ask for SCHED_FIFO; fall back quietly (reported in counters)
+    int fifoPriority = 80;
+    double spinUs = 30.0;          ///< sleep until this long before the deadline, then spin (0: no spin)
+    SafetyFilterDef safety;
+};
+
+/// "" when usable, else a message naming the field.
+std::string validateHapticLoopDef(const HapticLoopDef& def);
+
+/// Timing of a run, from the loop's histograms (read after stop(), or in stepped mode).
+struct LoopReport {
+    LoopCounters counters;
+    LatencySummary jitter;    ///< lateness of each wake-up after its deadline, µs
+    LatencySummary compute;   ///< time spent in each tick, µs
+    double elapsedS = 0.0;
+    SafetyStats safety;
+    std::uint64_t determinismHash = 0;
+};
+
+class HapticLoop {
+public:
+    /// Takes the scene and the device (already open). Throws std::invalid_argument on a bad def.
+    HapticLoop(const HapticLoopDef& def, std::unique_ptr<HapticScene> scene, std::unique_ptr<HapticDevice> device);
+    ~HapticLoop();
+    HapticLoop(const HapticLoop&) = delete;
+    HapticLoop& operator=(const HapticLoop&) = delete;
+
+    // --- the thread (controller thread calls these) ---
+    /// Starts the haptic thread. False (with a message) if it is already running.
+    bool start(std::string* error = nullptr);
+    /// Stops and joins the thread; the scene and device stay, stepped mode is available again.
+    void stop();
+    bool running() const { return mRunning.load(std::memory_order_acquire); }
+
+    // --- stepped mode: the same tick on a virtual clock, on the caller's thread ---
+    /// One tick at virtual time tickCount * period. Not while the thread runs.
+    void stepOnce();
+
+    // --- commands: validated here, applied by the haptic thread at a tick boundary ---
+    /// "" when queued; otherwise why not (invalid parameters name each problem, or queue full).
+    std::string setParams(const SlopeRingParams& params);
+    std::string swapScene(std::unique_ptr<HapticScene> scene);
+    std::string swapDevice(std::unique_ptr<HapticDevice> device);
+    void pause();
+    void resume();
+    /// Deletes scenes and devices the loop has let go of (closing devices). Controller thread.
+    void collectRetired();
+
+    // --- the observer (one thread) ---
+    const HapticSnapshot& newestSnapshot() { return mSnapshots.newest(); }
+
+    /// Histogram summaries and counters. Call when the thread is not running.
+    LoopReport report() const;
+    double periodS() const { return mPeriodS; }
+
+    // For tests: run the tick's device/scene without the thread (not while running).
+    HapticScene& scene() { return *mScene; }
+    HapticDevice& device() { return *mDevice; }
+
+private:
+    struct Command {
+        enum class Kind : std::uint8_t { Params, Scene, Device, Pause, Resume } kind;
+        SlopeRingParams params;
+        HapticScene* scene;
+        HapticDevice* device;
+    };
+    struct Retired {
+        HapticScene* scene;
+        HapticDevice* device;
+    };
+
+    void threadMain();
+    void tick(double nowS, double lateUs);
+    void applyCommands();
+    void retire(HapticScene* scene, HapticDevice* device);
+    void publish(const TickResult& result, const glm::vec3& forceOutN);
+
+    HapticLoopDef mDef;
+    double mPeriodS;
+    std::unique_ptr<HapticScene> mScene;
+    std::unique_ptr<HapticDevice> mDevice;
+    SafetyFilter mSafety;
+
+    // Haptic-thread state.
+    DeviceSample mLastSample;
+    bool mHaveSample = false;
+    bool mPaused = false;
+    bool mTickOverran = false;
+    std::uint64_t mHash = 1469598103934665603ull;  // FNV-1a offset basis
+    LoopCounters mCounters;
+    LatencyHistogram mJitterUs{1.0, 2000};
+    LatencyHistogram mComputeUs{0.01, 5000};
+    std::uint64_t mPublishCount = 0;
+    Retired mPendingRetire[16] = {};
+    int mPendingRetireCount = 0;
+
+    SpscQueue<Command, 64> mCommands;
+    SpscQueue<Retired, 64> mRetired;
+    TripleBuffer<HapticSnapshot> mSnapshots;
+
+    std::thread mThread;
+    std::atomic<bool> mRunning{false};
+    std::atomic<bool> mStopRequested{false};
+    double mElapsedS = 0.0;
+};
+
+}  // namespace palpate
