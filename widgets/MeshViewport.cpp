@@ -170,6 +170,7 @@ void MeshViewport::paintGL() {
     device.setDevicePixelRatio(dpr);
     QPainter painter(&device);
     paintSceneOverlay(painter, mScene, mCamera, size());
+    countFrame();
 }
 
 void MeshViewport::mousePressEvent(QMouseEvent* event) {

@@ -27,6 +27,7 @@ void SoftwareViewport::sceneChanged(bool) { update(); }
 void SoftwareViewport::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     paintScene(painter, size());
+    countFrame();
 }
 
 void SoftwareViewport::paintScene(QPainter& painter, QSize sizePx) {

@@ -10,6 +10,8 @@
 #include <QPointF>
 #include <QString>
 
+#include <cstdint>
+
 class QMouseEvent;
 class QWheelEvent;
 class QWidget;
@@ -45,6 +47,8 @@ public:
 
     const OrbitCamera& camera() const { return mCamera; }
     const RenderScene& scene() const { return mScene; }
+    /// Frames painted so far (on screen or grabbed): the window divides it by time for its fps.
+    std::uint64_t framesDrawn() const { return mFramesDrawn; }
 
 protected:
     /// Schedules a repaint. `topologyChanged`: the triangles changed (GPU buffers must be rebuilt).
@@ -56,12 +60,16 @@ protected:
     bool handleMouseMove(const QMouseEvent& event);
     bool handleWheel(const QWheelEvent& event);
 
+    /// The widgets call this once per painted frame.
+    void countFrame() { ++mFramesDrawn; }
+
     RenderScene mScene;
     OrbitCamera mCamera;
     bool mWireframe = true;
 
 private:
     QPointF mLastDragPx;
+    std::uint64_t mFramesDrawn = 0;
 };
 
 }  // namespace palpate

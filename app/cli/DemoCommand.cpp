@@ -1,28 +1,29 @@
-// The headless demo: the default scene, a scripted press-and-stroke through a simulated device,
-// and a summary of what happened. What the run command does when there is no display.
+// The headless demo: the default scene and a simulated device driven through the haptic loop in
+// stepped mode (the same tick as the real thread, on a virtual clock), and a summary of what
+// happened. What the run command does when there is no display.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/DefaultScene.h"
-#include "device/ScriptedDevice.h"
-#include "engine/Octree.h"
-#include "engine/SlopeRingDeformer.h"
-#include "engine/ToolPath.h"
+#include "device/DeviceUri.h"
+#include "device/SimulatedDevice.h"
+#include "engine/HapticLoop.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <iostream>
 
 namespace palpate::cli {
 
 int demoCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"mesh", "method"});
+    Args args(words, {"json"}, {"mesh", "method", "device"});
     if (!args.ok()) {
         std::cerr << "demo: " << args.error() << "\n";
         return 2;
     }
-    std::string meshPath = args.option("mesh").value_or(findResource(kDefaultMesh));
+    const std::string meshPath = args.option("mesh").value_or(findResource(kDefaultMesh));
     if (meshPath.empty()) {
         std::cerr << "demo: the default mesh " << kDefaultMesh << " was not found (set PALPATE_RESOURCES)\n";
         return 1;
@@ -37,65 +38,80 @@ int demoCommand(const std::vector<std::string>& words) {
         std::cerr << loaded.report.text();
         return 1;
     }
-    const TissueMesh& mesh = *loaded.mesh;
-    const Octree octree(mesh, OctreeDef{});
-    SlopeRingDeformer deformer(mesh, octree, SlopeRingParams{}, *method);
-    ScriptedDevice device(makePressAndStrokePath(mesh));
-    device.open();
+    const std::string uri = args.option("device").value_or("sim:stroke");
+    std::string error;
+    auto device = openDeviceUri(uri, error);
+    if (!device) {
+        std::cerr << "demo: " << error << "\n";
+        return 1;
+    }
+    const auto* simulated = dynamic_cast<const SimulatedDevice*>(device.get());
+    if (!simulated || !std::isfinite(simulated->durationS())) {
+        std::cerr << "demo: " << uri << " has no end; use sim:press, sim:stroke, sim:scan or sim:path:FILE\n";
+        return 2;
+    }
+    const double durationS = simulated->durationS();
+    const std::size_t vertices = loaded.mesh->vertexCount(), triangles = loaded.mesh->triangleCount();
+    const std::vector<glm::vec3> rest = loaded.mesh->restPositionsMm();
+    VertexId target = 0;
+    for (VertexId v = 1; v < rest.size(); ++v)
+        if (rest[v].x > rest[target].x) target = v;
+    device->setScene(rest[target], loaded.mesh->restNormals()[target], glm::vec3(0.0f, 1.0f, 0.0f));
 
-    std::size_t ticks = 0, contactTicks = 0, touchedChanges = 0;
+    HapticLoopDef def;
+    HapticLoop loop(def, HapticScene::createSlopeRing(std::move(*loaded.mesh), SlopeRingParams{}, *method),
+                    std::move(device));
+    const auto ticksToRun = std::uint64_t(std::ceil(durationS / loop.periodS())) + 300;  // then relax
+    std::uint64_t contactTicks = 0, touchedChanges = 0;
     double peakForceN = 0.0, peakDisplacementMm = 0.0;
     VertexId lastTouched = kNoVertex;
-    DeviceSample sample;
     const auto start = std::chrono::steady_clock::now();
-    while (!device.finished() && device.read(sample)) {
-        const TickResult r = deformer.step(sample.positionMm, 0.001);
-        device.writeForce(r.forceN);
-        ++ticks;
-        if (r.contact) ++contactTicks;
-        if (r.touched != lastTouched) ++touchedChanges;
-        lastTouched = r.touched;
-        peakForceN = std::max(peakForceN, double(glm::length(r.forceN)));
-        if (r.touched != kNoVertex)
-            peakDisplacementMm = std::max(peakDisplacementMm, double(glm::length(deformer.positionsMm()[r.touched] -
-                                                                                mesh.restPositionsMm()[r.touched])));
+    for (std::uint64_t i = 0; i < ticksToRun; ++i) {
+        loop.stepOnce();
+        const HapticSnapshot& s = loop.newestSnapshot();
+        if (s.contact) ++contactTicks;
+        if (s.touched != lastTouched && s.touched != kNoVertex) ++touchedChanges;
+        lastTouched = s.touched;
+        peakForceN = std::max(peakForceN, double(glm::length(s.forceN)));
+        for (std::uint32_t k = 0; k < s.displacedCount; ++k)
+            peakDisplacementMm = std::max(
+                peakDisplacementMm, double(glm::length(s.displacedPositionsMm[k] - rest[s.displacedIds[k]])));
     }
     const double elapsedUs = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
-    // Let the tissue relax after the release and measure what is left.
-    const glm::vec3 away = mesh.boundsMaxMm() + glm::vec3(50.0f);
-    for (int i = 0; i < 200; ++i) deformer.step(away, 0.001);
+    const HapticSnapshot& last = loop.newestSnapshot();
     double residualMm = 0.0;
-    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
-        residualMm = std::max(residualMm, double(glm::length(deformer.positionsMm()[v] - mesh.restPositionsMm()[v])));
+    for (std::uint32_t k = 0; k < last.displacedCount; ++k)
+        residualMm = std::max(residualMm, double(glm::length(last.displacedPositionsMm[k] - rest[last.displacedIds[k]])));
+    const LoopReport report = loop.report();
 
     if (args.flag("json")) {
         nlohmann::json j{{"mesh", meshPath},
-                         {"vertices", mesh.vertexCount()},
-                         {"triangles", mesh.triangleCount()},
+                         {"vertices", vertices},
+                         {"triangles", triangles},
                          {"method", std::string(methodName(*method))},
-                         {"ticks", ticks},
+                         {"device", uri},
+                         {"ticks", report.counters.ticks},
                          {"contact_ticks", contactTicks},
                          {"touched_changes", touchedChanges},
                          {"peak_force_n", peakForceN},
                          {"peak_displacement_mm", peakDisplacementMm},
                          {"residual_after_release_mm", residualMm},
-                         {"cache_refreshes", deformer.cacheRefreshes()},
-                         {"full_searches", deformer.fullSearches()},
-                         {"mean_tick_us", elapsedUs / double(std::max<std::size_t>(1, ticks))}};
+                         {"determinism_hash", report.determinismHash},
+                         {"mean_tick_us", elapsedUs / double(report.counters.ticks)}};
         std::cout << j.dump(2) << "\n";
     } else {
-        std::cout << "Palpate headless demo\n"
-                  << "  scene: " << meshPath << " (" << mesh.vertexCount() << " vertices, " << mesh.triangleCount()
-                  << " triangles)\n"
-                  << "  device: simulated, scripted press-and-stroke (" << ticks << " ticks at 1 kHz)\n"
-                  << "  method: " << methodName(*method) << ", " << deformer.params().ringCount << " rings\n"
+        std::cout << "Palpate headless demo (haptic loop in stepped mode)\n"
+                  << "  scene: " << meshPath << " (" << vertices << " vertices, " << triangles << " triangles)\n"
+                  << "  device: " << uri << ", " << report.counters.ticks << " ticks at "
+                  << 1.0 / loop.periodS() << " Hz of loop time\n"
+                  << "  method: " << methodName(*method) << "\n"
                   << "  contact on " << contactTicks << " ticks; touched vertex changed " << touchedChanges
                   << " times\n"
-                  << "  peak force " << peakForceN << " N, peak displacement " << peakDisplacementMm << " mm\n"
+                  << "  peak force sent to the device " << peakForceN << " N (after the safety filter), peak "
+                  << "displacement " << peakDisplacementMm << " mm\n"
                   << "  after release the surface relaxed to within " << residualMm << " mm of rest\n"
-                  << "  touched-vertex search: candidate cache retaken " << deformer.cacheRefreshes()
-                  << " times, full octree search " << deformer.fullSearches() << " times\n"
-                  << "  mean tick " << elapsedUs / double(std::max<std::size_t>(1, ticks)) << " us\n";
+                  << "  determinism hash " << std::hex << report.determinismHash << std::dec << "\n"
+                  << "  mean tick " << elapsedUs / double(report.counters.ticks) << " us (wall clock, with snapshots)\n";
     }
     return 0;
 }

@@ -1,0 +1,177 @@
+#include "app/gui/HapticSession.h"
+
+#include "app/gui/ScriptClockDevice.h"
+#include "device/DeviceUri.h"
+#include "engine/HapticScene.h"
+
+#include <exception>
+
+namespace palpate {
+
+HapticSession::HapticSession(LoopMode mode, const HapticLoopDef& def) : mMode(mode), mDef(def) {}
+
+HapticSession::~HapticSession() { stop(); }
+
+std::optional<TissueMesh> HapticSession::loadTissueMesh(const std::string& path, std::string& error) {
+    error.clear();
+    try {
+        auto loaded = TissueMesh::load(path);
+        if (loaded.mesh) return std::move(loaded.mesh);
+        for (const auto& e : loaded.report.errors) error += (error.empty() ? "" : "\n") + e;
+        if (error.empty()) error = "the mesh could not be loaded";
+    } catch (const std::exception& e) {
+        // Validated meshes should not throw; if the engine does, it is still no reason to crash the GUI.
+        error = e.what();
+    }
+    // The engine's messages name the file; make sure ours always do.
+    if (error.find(path) == std::string::npos) error = path + ": " + error;
+    return std::nullopt;
+}
+
+std::string HapticSession::loadMesh(const std::string& path) {
+    std::string error;
+    auto loaded = loadTissueMesh(path, error);
+    if (!loaded) return error;
+    auto mesh = std::make_shared<const TissueMesh>(std::move(*loaded));
+    std::unique_ptr<HapticScene> scene;
+    try {
+        // The loop gets its own copy; ours stays for drawing (the loop may free its scene any time after a swap).
+        scene = HapticScene::createSlopeRing(TissueMesh(*mesh), SlopeRingParams{}, SlopeRingMethod::Palpate);
+    } catch (const std::exception& e) {
+        return path + ": " + e.what();
+    }
+    auto device = openDeviceFor(mDeviceUri, *mesh, error);
+    if (!device) return error;
+    SceneRecord record{mesh, path, scene->id()};
+    return handOver(std::move(record), std::move(scene), std::move(device));
+}
+
+std::string HapticSession::setDevice(const std::string& uri) {
+    std::string error;
+    if (!mLoop) {
+        // No scene to aim at yet: check the URI (scheme, waypoint file) now, open it with the first mesh.
+        if (!createDeviceFromUri(uri, error)) return error;
+        mDeviceUri = uri;
+        return {};
+    }
+    auto device = openDeviceFor(uri, *latest().mesh, error);
+    if (!device) return error;
+    if (std::string problem = mLoop->swapDevice(std::move(device)); !problem.empty()) return problem;
+    mDeviceUri = uri;
+    return {};
+}
+
+std::string HapticSession::restart() {
+    if (!mLoop) return "no mesh is loaded";
+    const SceneRecord base = latest();
+    std::unique_ptr<HapticScene> scene;
+    try {
+        scene = HapticScene::createSlopeRing(TissueMesh(*base.mesh), SlopeRingParams{}, SlopeRingMethod::Palpate);
+    } catch (const std::exception& e) {
+        return base.path + ": " + e.what();
+    }
+    std::string error;
+    auto device = openDeviceFor(mDeviceUri, *base.mesh, error);
+    if (!device) return error;
+    SceneRecord record{base.mesh, base.path, scene->id()};
+    return handOver(std::move(record), std::move(scene), std::move(device));
+}
+
+std::unique_ptr<HapticDevice> HapticSession::openDeviceFor(const std::string& uri, const TissueMesh& mesh,
+                                                            std::string& error) {
+    auto device = openScriptedDeviceUri(uri, error);
+    if (!device) return nullptr;
+    // Aim scripted devices at the side of the mesh: the vertex with the largest x, along its rest normal.
+    const auto& rest = mesh.restPositionsMm();
+    VertexId target = 0;
+    for (VertexId v = 1; v < rest.size(); ++v)
+        if (rest[v].x > rest[target].x) target = v;
+    if (!rest.empty()) device->setScene(rest[target], mesh.restNormals()[target], glm::vec3(0.0f, 1.0f, 0.0f));
+    return device;
+}
+
+std::string HapticSession::handOver(SceneRecord record, std::unique_ptr<HapticScene> scene,
+                                    std::unique_ptr<HapticDevice> device) {
+    if (!mLoop) {
+        try {
+            mLoop = std::make_unique<HapticLoop>(mDef, std::move(scene), std::move(device));
+        } catch (const std::exception& e) {
+            return std::string("the haptic loop cannot start: ") + e.what();
+        }
+        if (mPauseRequested) mLoop->pause();
+        // The first scene is the loop's from its first tick: draw it now.
+        mDrawn = std::move(record);
+        mObserver.setRestPositions(mDrawn.mesh->restPositionsMm());
+        std::string error;
+        if (mMode == LoopMode::Threaded && !mLoop->start(&error)) return error;
+        return {};
+    }
+    // The device first: switching it re-arms the safety filter, so whatever the new scene would
+    // make of the old device's last position for a tick never reaches a hand.
+    if (std::string problem = mLoop->swapDevice(std::move(device)); !problem.empty()) return problem;
+    if (std::string problem = mLoop->swapScene(std::move(scene)); !problem.empty()) return problem;
+    // Drawn from the first snapshot that carries this scene's id (observe()).
+    mPending = std::move(record);
+    return {};
+}
+
+void HapticSession::setPaused(bool paused) {
+    mPauseRequested = paused;
+    if (!mLoop) return;
+    if (paused)
+        mLoop->pause();
+    else
+        mLoop->resume();
+}
+
+void HapticSession::step(int ticks) {
+    if (!mLoop || mLoop->running()) return;
+    for (int i = 0; i < ticks; ++i) mLoop->stepOnce();
+}
+
+HapticSession::Observation HapticSession::observe() {
+    if (!mLoop) return Observation::Nothing;
+    const HapticSnapshot& s = mLoop->newestSnapshot();
+    if (s.publishCount == mObserved.publishCount) return Observation::Nothing;
+    ++mSnapshotsObserved;
+
+    mObserved.publishCount = s.publishCount;
+    mObserved.tick = s.tick;
+    mObserved.timeS = s.timeS;
+    mObserved.sceneId = s.sceneId;
+    mObserved.paused = s.paused;
+    mObserved.deviceState = s.deviceState;
+    mObserved.safetyPhase = s.safetyPhase;
+    mObserved.toolTipMm = s.toolTipMm;
+    mObserved.commandedForceN = s.commandedForceN;
+    mObserved.forceN = s.forceN;
+    mObserved.contact = s.contact;
+    mObserved.touched = s.touched;
+    mObserved.counters = s.counters;
+    mObserved.displacedCount = s.displacedCount;
+    mObserved.displacedTotal = s.displacedTotal;
+
+    Observation result = Observation::Updated;
+    if (mPending.mesh && s.sceneId == mPending.sceneId) {
+        mDrawn = std::move(mPending);
+        mPending = SceneRecord{};
+        mObserver.setRestPositions(mDrawn.mesh->restPositionsMm());
+        result = Observation::SceneSwitched;
+    }
+    // A snapshot of another scene (the one before a switch, or one handed over and already replaced)
+    // has vertex ids of another mesh: it moves nothing here.
+    if (s.sceneId == mDrawn.sceneId) mObserver.apply(s);
+    return result;
+}
+
+void HapticSession::collectRetired() {
+    if (mLoop) mLoop->collectRetired();
+}
+
+void HapticSession::stop() {
+    if (!mLoop) return;
+    mLoop->stop();
+    mLoop->collectRetired();
+}
+
+}  // namespace palpate

@@ -1,0 +1,125 @@
+#pragma once
+// The GUI's side of the haptic loop (DESIGN §2, docs/haptic-loop.md): builds scenes and devices off
+// the haptic thread, hands them to the loop as commands, and observes its snapshots. The loop owns
+// the model; this class never steps it while the thread runs. For drawing it keeps its own copy of
+// every mesh it handed over, tagged with the scene id, so nothing it draws can be freed under it.
+// Qt-free; every member is called from one thread (the GUI's).
+
+#include "app/gui/SnapshotObserver.h"
+#include "engine/HapticLoop.h"
+#include "engine/TissueMesh.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace palpate {
+
+enum class LoopMode {
+    Threaded,  ///< the loop's own real-time thread (the interactive window)
+    Stepped,   ///< ticks run on the caller's thread when asked (screenshots, tests): deterministic
+};
+
+/// What the GUI last read from a snapshot, without the vertex data.
+struct ObservedLoop {
+    std::uint64_t publishCount = 0;  ///< 0: nothing observed yet
+    std::uint64_t tick = 0;
+    double timeS = 0.0;
+    std::uint64_t sceneId = 0;
+    bool paused = false;
+    DeviceState deviceState = DeviceState::Disconnected;
+    SafetyPhase safetyPhase = SafetyPhase::HoldOff;
+    glm::vec3 toolTipMm{0.0f};
+    glm::vec3 commandedForceN{0.0f};
+    glm::vec3 forceN{0.0f};
+    bool contact = false;
+    VertexId touched = kNoVertex;
+    LoopCounters counters;
+    std::uint32_t displacedCount = 0;
+    std::uint32_t displacedTotal = 0;
+};
+
+class HapticSession {
+public:
+    static constexpr const char* kDefaultDeviceUri = "sim:stroke";
+
+    explicit HapticSession(LoopMode mode, const HapticLoopDef& def = {});
+    /// Stops the thread before anything it uses goes away.
+    ~HapticSession();
+    HapticSession(const HapticSession&) = delete;
+    HapticSession& operator=(const HapticSession&) = delete;
+
+    /// Loads and validates a mesh. Never throws; on failure `error` names the file and every problem.
+    static std::optional<TissueMesh> loadTissueMesh(const std::string& path, std::string& error);
+
+    /// Loads `path` and builds its scene here, then makes it the loop's scene with a fresh device
+    /// aimed at it. The first scene creates the loop (and, threaded, starts its thread) and is drawn
+    /// at once; later ones are drawn from the first snapshot that shows them. On failure the current
+    /// scene stays and the error (naming the file) is returned; "" on success.
+    std::string loadMesh(const std::string& path);
+    /// Opens a device for `uri`, aims it at the current mesh and swaps it in. Before the first mesh
+    /// the URI is only checked and remembered. "" or an error naming the URI; the old device stays.
+    std::string setDevice(const std::string& uri);
+    /// A fresh device of the same URI and a fresh scene of the same mesh ("" or why not).
+    std::string restart();
+    /// Pause: the model gets no tool position (the tissue relaxes, zero force); the thread runs on.
+    void setPaused(bool paused);
+    bool pauseRequested() const { return mPauseRequested; }
+
+    /// Stepped mode: runs `ticks` ticks now, on this thread. Ignored while the thread runs.
+    void step(int ticks);
+    enum class Observation {
+        Nothing,     ///< no new snapshot
+        Updated,     ///< new snapshot applied to view()
+        SceneSwitched,  ///< the loop now runs the newest scene handed over: drawnMesh() changed
+    };
+    /// Reads the newest snapshot if one was published since the last call and applies it.
+    Observation observe();
+    /// Deletes the scenes and devices the loop has let go of (call periodically).
+    void collectRetired();
+    /// Stops and joins the haptic thread (window close). Idempotent.
+    void stop();
+
+    LoopMode mode() const { return mMode; }
+    bool hasLoop() const { return mLoop != nullptr; }
+    bool threadRunning() const { return mLoop && mLoop->running(); }
+    const std::string& deviceUri() const { return mDeviceUri; }
+    /// The mesh being drawn, its file and its scene id (null before the first load).
+    const std::shared_ptr<const TissueMesh>& drawnMesh() const { return mDrawn.mesh; }
+    const std::string& drawnPath() const { return mDrawn.path; }
+    std::uint64_t drawnSceneId() const { return mDrawn.sceneId; }
+    /// A scene was handed over and has not shown up in a snapshot yet.
+    bool sceneSwitchPending() const { return mPending.mesh != nullptr; }
+    const ObservedLoop& observed() const { return mObserved; }
+    /// Positions, tool, contact and force to draw (the drawn mesh's vertex order).
+    const SceneSnapshot& view() const { return mObserver.view(); }
+    const SnapshotObserver& observer() const { return mObserver; }
+    /// Snapshots applied so far (new publishCount seen).
+    std::uint64_t snapshotsObserved() const { return mSnapshotsObserved; }
+    double periodS() const { return 1.0 / mDef.rateHz; }
+
+private:
+    struct SceneRecord {
+        std::shared_ptr<const TissueMesh> mesh;  // our copy: what is drawn for this scene
+        std::string path;
+        std::uint64_t sceneId = 0;
+    };
+    /// The newest mesh handed to the loop (pending, else drawn).
+    const SceneRecord& latest() const { return mPending.mesh ? mPending : mDrawn; }
+    std::unique_ptr<HapticDevice> openDeviceFor(const std::string& uri, const TissueMesh& mesh, std::string& error);
+    std::string handOver(SceneRecord record, std::unique_ptr<HapticScene> scene, std::unique_ptr<HapticDevice> device);
+
+    LoopMode mMode;
+    HapticLoopDef mDef;
+    std::string mDeviceUri = kDefaultDeviceUri;
+    bool mPauseRequested = false;
+    std::unique_ptr<HapticLoop> mLoop;
+    SceneRecord mDrawn;
+    SceneRecord mPending;
+    SnapshotObserver mObserver;
+    ObservedLoop mObserved;
+    std::uint64_t mSnapshotsObserved = 0;
+};
+
+}  // namespace palpate
