@@ -6,10 +6,14 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <span>
 #include <string>
 
 namespace palpate {
+
+/// Ring index reported for a displaced vertex that is not in the active rings (it is relaxing).
+inline constexpr std::uint8_t kRelaxingRing = 0xff;
 
 /// What one haptic tick produced.
 struct TickResult {
@@ -31,10 +35,12 @@ public:
     virtual void reset() = 0;
     virtual std::string name() const = 0;
 
-    /// The vertices away from rest and where they are, at most `capacity` of them; returns how
-    /// many there are (more than `capacity` means the copy was cut). Real-time safe: the haptic
-    /// loop publishes this to observers.
-    virtual std::size_t copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::size_t capacity) const = 0;
+    /// The vertices away from rest, where they are, and which ring of the touched vertex each
+    /// belongs to (kRelaxingRing when it is returning to rest), at most `capacity` of them; returns
+    /// how many there are (more than `capacity` means the copy was cut). Real-time safe: the
+    /// haptic loop publishes this to observers.
+    virtual std::size_t copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::uint8_t* rings,
+                                      std::size_t capacity) const = 0;
 
     /// Applies already validated slope-ring parameters at a tick boundary. Returns false when this
     /// model cannot take them without reallocating (the caller must build a new model instead).

@@ -198,7 +198,8 @@ void HapticLoop::publish(const TickResult& result, const glm::vec3& forceOutN) {
     s.counters = mCounters;
     s.determinismHash = mHash;
     const std::size_t total =
-        mScene->model().copyDisplaced(s.displacedIds.data(), s.displacedPositionsMm.data(), HapticSnapshot::kMaxDisplaced);
+        mScene->model().copyDisplaced(s.displacedIds.data(), s.displacedPositionsMm.data(), s.displacedRings.data(),
+                                      HapticSnapshot::kMaxDisplaced);
     s.displacedTotal = std::uint32_t(total);
     s.displacedCount = std::uint32_t(std::min(total, HapticSnapshot::kMaxDisplaced));
     s.closingTick = s.tick;

@@ -57,6 +57,9 @@ struct HapticSnapshot {
     std::uint32_t displacedTotal = 0;
     std::array<VertexId, kMaxDisplaced> displacedIds{};
     std::array<glm::vec3, kMaxDisplaced> displacedPositionsMm{};
+    /// Ring of the touched vertex each displaced vertex is in (0 = the touched vertex), or
+    /// kRelaxingRing (255) for one returning to rest.
+    std::array<std::uint8_t, kMaxDisplaced> displacedRings{};
 
     std::uint64_t closingTick = 0;  ///< equal to `tick`; written last, to show the copy is whole
 };

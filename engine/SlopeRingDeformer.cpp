@@ -89,14 +89,26 @@ void SlopeRingDeformer::releaseActiveSet() {
     mActiveContact = false;
 }
 
-std::size_t SlopeRingDeformer::copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::size_t capacity) const {
+std::size_t SlopeRingDeformer::copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::uint8_t* rings,
+                                             std::size_t capacity) const {
     std::size_t count = 0;
-    auto put = [&](VertexId v, const glm::vec3& p) {
+    auto put = [&](VertexId v, const glm::vec3& p, std::uint8_t ring) {
         if (count < capacity) {
             ids[count] = v;
             positionsMm[count] = p;
+            rings[count] = ring;
         }
         ++count;
+    };
+    // For the paper's methods, ring membership of the current touched vertex's rings.
+    auto ringOf = [&](VertexId v) -> std::uint8_t {
+        if (!mContact || mTouched == kNoVertex) return kRelaxingRing;
+        if (v == mTouched) return 0;
+        const auto& lists = mRingLists[mTouched];
+        for (std::size_t r = 0; r < lists.size(); ++r)
+            for (VertexId w : lists[r])
+                if (w == v) return std::uint8_t(r + 1);
+        return kRelaxingRing;
     };
     const auto& rest = mMesh.restPositionsMm();
     switch (mMethod) {
@@ -105,18 +117,19 @@ std::size_t SlopeRingDeformer::copyDisplaced(VertexId* ids, glm::vec3* positions
                 for (int r = 0; r <= mActive.ringCount; ++r) {
                     const glm::vec3 displacement = (mSignedSlope[r] * mActiveForceN) * mActiveNormal;
                     for (std::uint32_t i = mActive.ringStart[r], end = mActive.ringStart[r + 1]; i < end; ++i)
-                        put(mActive.vertices[i], glm::vec3(mActiveRestX[i], mActiveRestY[i], mActiveRestZ[i]) + displacement);
+                        put(mActive.vertices[i], glm::vec3(mActiveRestX[i], mActiveRestY[i], mActiveRestZ[i]) + displacement,
+                            std::uint8_t(r));
                 }
-            for (std::size_t i = 0; i < mRelaxingCount; ++i) put(mRelaxing[i], mPositions[mRelaxing[i]]);
+            for (std::size_t i = 0; i < mRelaxingCount; ++i) put(mRelaxing[i], mPositions[mRelaxing[i]], kRelaxingRing);
             break;
         case SlopeRingMethod::Proposed:
             for (VertexId v : mPreviousRingVertices)
-                if (mPositions[v] != rest[v]) put(v, mPositions[v]);
+                if (mPositions[v] != rest[v]) put(v, mPositions[v], ringOf(v));
             break;
         case SlopeRingMethod::Previous:
         case SlopeRingMethod::Hybrid:
             for (VertexId v = 0; v < mPositions.size(); ++v)
-                if (mPositions[v] != rest[v]) put(v, mPositions[v]);
+                if (mPositions[v] != rest[v]) put(v, mPositions[v], ringOf(v));
             break;
     }
     return count;

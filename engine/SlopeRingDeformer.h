@@ -33,7 +33,8 @@ public:
     /// Replaces the parameters (validated first; throws std::invalid_argument listing every problem).
     /// Not real-time: may precompute rings.
     void setParams(const SlopeRingParams& params);
-    std::size_t copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::size_t capacity) const override;
+    std::size_t copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::uint8_t* rings,
+                              std::size_t capacity) const override;
     /// Real-time: true for Palpate, and for the paper's methods while the ring count is unchanged.
     bool applySlopeRingParams(const SlopeRingParams& params) override;
     const SlopeRingParams& params() const { return mParams; }

@@ -11,6 +11,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <thread>
 
@@ -30,7 +31,7 @@ std::optional<double> parseNumber(const std::string& text) {
 }  // namespace
 
 int loopCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json", "no-fifo"}, {"seconds", "rate", "observer-hz", "device", "mesh", "spin-us"});
+    Args args(words, {"json", "no-fifo"}, {"seconds", "rate", "observer-hz", "device", "mesh", "spin-us", "csv"});
     if (!args.ok()) {
         std::cerr << "loop: " << args.error() << "\n";
         return 2;
@@ -108,6 +109,24 @@ int loopCommand(const std::vector<std::string>& words) {
     observer.join();
     const LoopReport r = loop.report();
 
+    if (auto csvPath = args.option("csv")) {
+        // One row per run, appended, so several rates build one table.
+        const bool fresh = !std::ifstream(*csvPath).good();
+        std::ofstream csv(*csvPath, std::ios::app);
+        if (!csv) {
+            std::cerr << "loop: cannot write " << *csvPath << "\n";
+            return 1;
+        }
+        if (fresh)
+            csv << "rate_hz,seconds,ticks,missed,overruns,achieved_rate_hz,jitter_p50_us,jitter_p99_us,jitter_p999_us,"
+                   "jitter_max_us,compute_p50_us,compute_p99_us,compute_max_us,sched_fifo,observer_hz,"
+                   "observer_snapshots,observer_torn_snapshots\n";
+        csv << def.rateHz << "," << r.elapsedS << "," << r.counters.ticks << "," << r.counters.missedDeadlines << ","
+            << r.counters.overruns << "," << r.counters.achievedRateHz << "," << r.jitter.p50Us << ","
+            << r.jitter.p99Us << "," << r.jitter.p999Us << "," << r.jitter.maxUs << "," << r.compute.p50Us << ","
+            << r.compute.p99Us << "," << r.compute.maxUs << "," << (r.counters.schedFifo ? 1 : 0) << ","
+            << *observerHz << "," << snapshotsSeen << "," << torn << "\n";
+    }
     if (args.flag("json")) {
         nlohmann::json j{
             {"rate_hz", def.rateHz},
