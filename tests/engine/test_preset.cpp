@@ -1,0 +1,140 @@
+// Tissue presets: round trip, and every malformed file gives an error naming the key.
+#include "engine/TissuePreset.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+using namespace palpate;
+
+namespace {
+
+std::string validText() {
+    TissuePreset p;
+    p.name = "test";
+    p.description = "a preset";
+    p.params.ringCount = 3;
+    p.params.slopeMagnitudeMmPerN = {0.7, 0.4, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.001};
+    p.params.springStiffnessNPerMm = 2.0;
+    p.octree.maxDepth = 8;
+    p.octree.leafCapacity = 32;
+    p.hapticRateHz = 2000;
+    p.method = SlopeRingMethod::Proposed;
+    p.tissue = TissueProperties{5.0, 0.45, "a textbook"};
+    return tissuePresetToJson(p);
+}
+
+/// Replaces the first occurrence of `from` in the valid text.
+std::string edited(const std::string& from, const std::string& to) {
+    std::string text = validText();
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    return text;
+}
+
+void expectErrorNaming(const std::string& text, const std::string& key, const std::string& problem = "") {
+    const auto r = parseTissuePreset(text, "my.json");
+    ASSERT_FALSE(r.preset) << "accepted: " << text;
+    ASSERT_FALSE(r.errors.empty());
+    bool found = false;
+    for (const auto& e : r.errors)
+        if (e.find("my.json") == 0 && e.find(key) != std::string::npos && e.find(problem) != std::string::npos) found = true;
+    EXPECT_TRUE(found) << "no error naming '" << key << "' / '" << problem << "' in: " << r.error();
+}
+
+}  // namespace
+
+TEST(TissuePreset, RoundTripKeepsEveryField) {
+    const auto r = parseTissuePreset(validText(), "my.json");
+    ASSERT_TRUE(r.preset) << r.error();
+    const TissuePreset& p = *r.preset;
+    EXPECT_EQ(p.name, "test");
+    EXPECT_EQ(p.description, "a preset");
+    EXPECT_EQ(p.params.ringCount, 3);
+    EXPECT_EQ(p.params.slopeMagnitudeMmPerN[2], 0.2);
+    EXPECT_EQ(p.params.springStiffnessNPerMm, 2.0);
+    EXPECT_EQ(p.octree.maxDepth, 8);
+    EXPECT_EQ(p.octree.leafCapacity, 32);
+    EXPECT_EQ(p.hapticRateHz, 2000);
+    EXPECT_EQ(p.method, SlopeRingMethod::Proposed);
+    ASSERT_TRUE(p.tissue);
+    EXPECT_EQ(p.tissue->source, "a textbook");
+    EXPECT_EQ(tissuePresetToJson(p), validText());
+}
+
+TEST(TissuePreset, SaveIsAtomicAndLoadsBack) {
+    const auto path = (std::filesystem::temp_directory_path() / "palpate_preset_test.json").string();
+    TissuePreset p;
+    p.name = "saved";
+    ASSERT_EQ(saveTissuePreset(p, path), "");
+    EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+    const auto r = loadTissuePreset(path);
+    ASSERT_TRUE(r.preset) << r.error();
+    EXPECT_EQ(r.preset->name, "saved");
+    std::filesystem::remove(path);
+    EXPECT_NE(saveTissuePreset(p, "/nonexistent-dir/x.json"), "");
+}
+
+TEST(TissuePreset, EveryBadKeyIsNamed) {
+    expectErrorNaming(edited("\"name\"", "\"nmae\""), "nmae", "unknown key");
+    expectErrorNaming(edited("\"damping_ratio\"", "\"damping\""), "slope_ring.damping", "unknown key");
+    expectErrorNaming(edited("\"haptic_rate_hz\": 2000.0", "\"haptic_rate_hz\": \"fast\""), "haptic_rate_hz", "number");
+    expectErrorNaming(edited("\"haptic_rate_hz\": 2000.0", "\"haptic_rate_hz\": 50000"), "haptic_rate_hz", "out of range");
+    expectErrorNaming(edited("\"ring_count\": 3", "\"ring_count\": 2"), "slope_ring.slopes_mm_per_n", "needs 3");
+    expectErrorNaming(edited("\"ring_count\": 3", "\"ring_count\": 2.5"), "slope_ring.ring_count", "whole");
+    expectErrorNaming(edited("0.4,", "0.9,"), "slope_ring", "decrease");
+    expectErrorNaming(edited("0.7,", "1.7,"), "slope_ring", "slope limit");
+    expectErrorNaming(edited("0.7,", "\"x\","), "slope_ring.slopes_mm_per_n[0]", "number");
+    expectErrorNaming(edited("\"max_depth\": 8", "\"max_depth\": 40"), "octree.max_depth", "out of range");
+    expectErrorNaming(edited("\"poisson_ratio\": 0.45", "\"poisson_ratio\": 0.6"), "tissue.poisson_ratio", "out of range");
+    expectErrorNaming(edited("\"model\": \"proposed\"", "\"model\": \"fem\""), "model", "unknown model");
+    expectErrorNaming(edited("\"palpate-tissue-preset\"", "\"something-else\""), "format");
+    expectErrorNaming(edited("\"version\": 1", "\"version\": 7"), "version", "not supported");
+    expectErrorNaming(edited("\"version\": 1,", ""), "version", "missing");
+    expectErrorNaming(edited("\"slope_ring\": {", "\"slope_ring\": [{") , "");
+    expectErrorNaming("[1, 2, 3]", "must be an object");
+    expectErrorNaming("{\"format\": ", "not valid JSON");
+    expectErrorNaming("", "not valid JSON");
+}
+
+TEST(TissuePreset, FilesystemProblemsAreNamed) {
+    EXPECT_NE(loadTissuePreset("/no/such/preset.json").error().find("no such file"), std::string::npos);
+    EXPECT_NE(loadTissuePreset(std::filesystem::temp_directory_path().string()).error().find("directory"),
+              std::string::npos);
+}
+
+TEST(TissuePreset, ShippedPresetsLoad) {
+    std::size_t count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(PALPATE_SOURCE_DIR "/resources/presets")) {
+        const auto r = loadTissuePreset(entry.path().string());
+        EXPECT_TRUE(r.preset) << r.error();
+        ++count;
+    }
+    EXPECT_GE(count, 1u);
+}
+
+TEST(TissuePresetFuzz, MutationsNeverCrash) {
+    const std::string valid = validText();
+    std::mt19937 rng(99);
+    int accepted = 0;
+    for (int i = 0; i < 2000; ++i) {
+        std::string text = valid;
+        const int edits = 1 + int(rng() % 4);
+        for (int k = 0; k < edits; ++k) {
+            const std::size_t at = rng() % (text.size() + 1);
+            switch (rng() % 4) {
+                case 0: if (at < text.size()) text[at] = char(rng() % 256); break;
+                case 1: text.insert(at, 1, "{}[]\",:0-e.9a "[rng() % 14]); break;
+                case 2: if (at < text.size()) text.erase(at, 1 + rng() % 8); break;
+                case 3: text.resize(at); break;
+            }
+        }
+        const auto r = parseTissuePreset(text, "fuzz.json");
+        EXPECT_TRUE(r.preset.has_value() == r.errors.empty());
+        if (r.preset) ++accepted;
+    }
+    EXPECT_LT(accepted, 2000);
+}
