@@ -192,12 +192,20 @@ double SimulatedDevice::durationS() const {
     return mKeyframes.back().timeS;
 }
 
+double SimulatedDevice::scriptTimeS(double loopTimeS) const {
+    const double t = mEpochSet ? loopTimeS - mEpochS : 0.0;
+    const double duration = durationS();
+    if (mRepeatRestS < 0.0 || !std::isfinite(duration) || t <= duration) return t;
+    return std::fmod(t, duration + mRepeatRestS);  // in the rest, positionAtMm holds the end
+}
+
 bool SimulatedDevice::open() {
+    mEpochSet = false;
     mOpen.store(true, std::memory_order_release);
     mState.store(DeviceState::Ready, std::memory_order_release);
     ++mSample.sequence;
     mSample.timeS = mLastTimeS;
-    mSample.positionMm = positionAtMm(mLastTimeS);
+    mSample.positionMm = positionAtMm(0.0);
     return true;
 }
 
@@ -221,12 +229,16 @@ void SimulatedDevice::setTimeS(double timeS) {
         mState.store(DeviceState::Disconnected, std::memory_order_release);
     }
     mLastTimeS = timeS;
+    if (!mEpochSet) {
+        mEpochS = timeS;
+        mEpochSet = true;
+    }
     if (mState.load(std::memory_order_acquire) != DeviceState::Ready) return;
     if (timeS >= mStallFromS.load(std::memory_order_relaxed) && timeS < mStallUntilS.load(std::memory_order_relaxed))
         return;  // stalled: the sample (and its sequence) stays as it was
     ++mSample.sequence;
-    mSample.timeS = timeS;
-    mSample.positionMm = positionAtMm(timeS);
+    mSample.timeS = timeS;  // stamped on the loop's clock, for the safety filter's age check
+    mSample.positionMm = positionAtMm(scriptTimeS(timeS));
 }
 
 bool SimulatedDevice::read(DeviceSample& sample) {

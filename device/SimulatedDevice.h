@@ -87,8 +87,14 @@ public:
     /// times give bit-identical positions. Before the start it is at the start, after the end at
     /// the end. Reads the scene frame: not concurrently with setScene.
     glm::vec3 positionAtMm(double timeS) const;
-    /// When the trajectory comes to rest (infinity for Sine).
+    /// When the trajectory comes to rest (infinity for Sine), in script time.
     double durationS() const;
+    /// Plays finite scripts again `restS` after they end (< 0: once, the default). Call before the
+    /// loop uses the device.
+    void setRepeat(double restS) { mRepeatRestS = restS; }
+    /// Script time for a loop time: the script starts at the first setTimeS after open(), so a
+    /// device swapped into a running loop starts from its beginning.
+    double scriptTimeS(double loopTimeS) const;
     SimTrajectory trajectory() const { return mTrajectory; }
     const SimulatedDeviceDef& def() const { return mDef; }
 
@@ -129,6 +135,9 @@ private:
     // Sample (haptic thread).
     DeviceSample mSample;
     double mLastTimeS = 0.0;
+    double mEpochS = 0.0;        // loop time of the first setTimeS since open()
+    bool mEpochSet = false;
+    double mRepeatRestS = -1.0;
 
     std::atomic<DeviceState> mState{DeviceState::Disconnected};
     std::atomic<bool> mOpen{false};

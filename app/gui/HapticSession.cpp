@@ -1,7 +1,7 @@
 #include "app/gui/HapticSession.h"
 
-#include "app/gui/ScriptClockDevice.h"
 #include "device/DeviceUri.h"
+#include "device/SimulatedDevice.h"
 #include "engine/HapticScene.h"
 
 #include <exception>
@@ -79,8 +79,12 @@ std::string HapticSession::restart() {
 
 std::unique_ptr<HapticDevice> HapticSession::openDeviceFor(const std::string& uri, const TissueMesh& mesh,
                                                             std::string& error) {
-    auto device = openScriptedDeviceUri(uri, error);
+    auto device = openDeviceUri(uri, error);
     if (!device) return nullptr;
+    // Finite scripts (press, stroke, scan) repeat after a short rest so the window keeps
+    // showing palpation; a waypoint file plays once.
+    if (auto* simulated = dynamic_cast<SimulatedDevice*>(device.get()))
+        if (simulated->trajectory() != SimTrajectory::Waypoints) simulated->setRepeat(1.0);
     // Aim scripted devices at the side of the mesh: the vertex with the largest x, along its rest normal.
     const auto& rest = mesh.restPositionsMm();
     VertexId target = 0;
@@ -136,6 +140,7 @@ HapticSession::Observation HapticSession::observe() {
     ++mSnapshotsObserved;
 
     mObserved.publishCount = s.publishCount;
+    mObserved.readAt = std::chrono::steady_clock::now();
     mObserved.tick = s.tick;
     mObserved.timeS = s.timeS;
     mObserved.sceneId = s.sceneId;

@@ -9,6 +9,7 @@
 #include "engine/HapticLoop.h"
 #include "engine/TissueMesh.h"
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -24,6 +25,9 @@ enum class LoopMode {
 /// What the GUI last read from a snapshot, without the vertex data.
 struct ObservedLoop {
     std::uint64_t publishCount = 0;  ///< 0: nothing observed yet
+    /// When the GUI read it. The loop publishes every tick, so the newest snapshot is at most a
+    /// tick old when read: ticks over these times give the achieved rate without the GUI's delays.
+    std::chrono::steady_clock::time_point readAt{};
     std::uint64_t tick = 0;
     double timeS = 0.0;
     std::uint64_t sceneId = 0;

@@ -1,17 +1,23 @@
 #pragma once
-// The milestone's main window: the viewport in the centre, menus, and a status bar with the mesh,
-// the renderer, the contact and the force. Docks (parameters, device, recorder...) come later.
+// The main window: the viewport in the centre, menus, and a status bar with the mesh, the haptic
+// loop's health (rate, tick time, jitter, overruns, SCHED_FIFO), the GUI's frame rate, the device,
+// the contact and the force. The haptic loop runs the model; this window only observes its
+// snapshots (DESIGN §2) and sends it commands. Docks (parameters, device, recorder...) come later.
 
-#include "app/gui/SceneSimulation.h"
+#include "app/gui/HapticSession.h"
 #include "widgets/ViewportFactory.h"
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QString>
 #include <QTimer>
 
+#include <chrono>
+#include <cstdint>
 #include <memory>
 
 class QAction;
+class QActionGroup;
 class QLabel;
 
 namespace palpate {
@@ -19,43 +25,89 @@ namespace palpate {
 class MainWindow final : public QMainWindow {
     Q_OBJECT
 public:
-    /// Haptic ticks simulated per displayed frame: 16 ticks of 1 ms at ~60 frames per second keeps
-    /// the scripted tool moving at about real time.
-    static constexpr int kTicksPerFrame = 16;
+    /// The observer reads the newest snapshot and repaints at about 60 Hz ...
     static constexpr int kFrameIntervalMs = 16;
+    /// ... and the status bar's figures change at about 4 Hz, slow enough to read.
+    static constexpr int kStatusIntervalMs = 250;
 
-    explicit MainWindow(RendererChoice renderer, QWidget* parent = nullptr);
+    /// `mode`: Threaded runs the haptic loop's real-time thread (the interactive window); Stepped
+    /// runs ticks only in advanceTicks(), on the GUI thread (screenshots, tests: deterministic).
+    MainWindow(RendererChoice renderer, LoopMode mode, QWidget* parent = nullptr);
+    /// Stops the haptic thread before anything is destroyed.
     ~MainWindow() override;
 
-    /// Loads `path` and makes it the scene. On failure the current scene stays and the error (naming
-    /// the file and the problem) is returned; "" on success. Shows no dialog.
+    /// Loads `path` (on this thread, not the haptic one) and makes it the loop's scene. On failure
+    /// the current scene stays and the error (naming the file and the problem) is returned; "" on
+    /// success. Shows no dialog. The first mesh is drawn at once, later ones once the loop runs them.
     QString loadMesh(const QString& path);
-    /// Runs `ticks` simulation ticks now and shows the result (what the frame timer does, and --ticks).
+    /// Switches the device (a URI, see device/DeviceUri.h). "" or an error naming the URI; no dialog.
+    QString setDeviceUri(const QString& uri);
+    /// A fresh device of the same URI and a fresh scene of the same mesh. "" or why not.
+    QString restartSimulation();
+    /// Stepped mode: runs `ticks` haptic ticks now, then shows the newest snapshot (what --ticks does).
     void advanceTicks(int ticks);
+    /// Play/Pause: resumes or pauses the loop (paused, the tissue relaxes and the force is zero).
     void setPlaying(bool playing);
-    bool isPlaying() const { return mFrameTimer.isActive(); }
+    bool isPlaying() const { return !mSession->pauseRequested(); }
 
     Viewport* viewport() const { return mViewport; }
+    HapticSession& session() { return *mSession; }
+    const HapticSession& session() const { return *mSession; }
     /// Why this renderer was chosen (for the log).
     const QString& rendererReason() const { return mRendererReason; }
+    /// Everything the status bar shows, on one line.
     QString statusText() const;
+    /// Haptic rate and GUI frame rate as last shown (measured over the last status period).
+    double hapticRateHz() const { return mHapticRateHz; }
+    double frameRateFps() const { return mFrameRateFps; }
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 private slots:
     void openMeshDialog();
-    void resetSimulation();
+    void observeFrame();
+    void measureRates();
 
 private:
     void createMenus();
-    void showSimulationState();
+    void createStatusBar();
+    void present(HapticSession::Observation observation);
+    void showDrawnMesh();
+    void showStatus();
+    void checkCurrentDevice();
+    void shutDown();
 
     Viewport* mViewport = nullptr;  // owned by Qt as the central widget
     QString mRendererReason;
-    std::unique_ptr<SceneSimulation> mSimulation;
-    SceneSnapshot mSnapshot;  // reused every frame
+    std::unique_ptr<HapticSession> mSession;
+    std::shared_ptr<const TissueMesh> mShownMesh;  // what the viewport was given last
     QTimer mFrameTimer;
-    QLabel* mStatusLabel = nullptr;
+    QTimer mStatusTimer;
+
+    // Rate measurement between status updates: ticks against the times their snapshots were read,
+    // frames against the GUI's clock.
+    bool mHaveRateBaseline = false;
+    std::uint64_t mRateBaselineTicks = 0;
+    std::chrono::steady_clock::time_point mRateBaselineReadAt{};
+    QElapsedTimer mFrameClock;
+    std::uint64_t mRateBaselineFrames = 0;
+    double mHapticRateHz = 0.0;
+    double mFrameRateFps = 0.0;
+
+    QLabel* mMeshLabel = nullptr;
+    QLabel* mRateLabel = nullptr;
+    QLabel* mComputeLabel = nullptr;
+    QLabel* mJitterLabel = nullptr;
+    QLabel* mOverrunLabel = nullptr;
+    QLabel* mFifoLabel = nullptr;
+    QLabel* mFpsLabel = nullptr;
+    QLabel* mDeviceLabel = nullptr;
+    QLabel* mContactLabel = nullptr;
+    QLabel* mForceLabel = nullptr;
     QAction* mPlayAction = nullptr;
     QAction* mWireframeAction = nullptr;
+    QActionGroup* mDeviceGroup = nullptr;
 };
 
 }  // namespace palpate

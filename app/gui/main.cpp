@@ -1,6 +1,8 @@
-// palpate: the GUI. Exit codes: 0 success, 1 failure (bad mesh, screenshot not written), 2 bad usage.
+// palpate: the GUI. Exit codes: 0 success, 1 failure (bad mesh or device, screenshot not written),
+// 2 bad usage.
 #include "app/cli/DefaultScene.h"
 #include "app/gui/MainWindow.h"
+#include "device/DeviceUri.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -15,6 +17,8 @@ namespace {
 constexpr int kDefaultScreenshotTicks = 800;  // the scripted tool is pressing by then
 constexpr int kScreenshotWidthPx = 1024;
 constexpr int kScreenshotHeightPx = 768;
+constexpr int kWindowWidthPx = 1280;
+constexpr int kWindowHeightPx = 860;
 
 /// Qt aborts when the default platform (xcb, wayland) has no display; offscreen always works.
 bool displayAvailable() {
@@ -28,13 +32,18 @@ bool hasArgument(int argc, char** argv, const char* name) {
     return false;
 }
 
-void printLoaded(const palpate::SceneSimulation& simulation) {
-    const auto& mesh = simulation.mesh();
+void printLoaded(const std::string& path, const palpate::TissueMesh& mesh) {
     const auto lo = mesh.boundsMinMm(), hi = mesh.boundsMaxMm();
-    std::printf("mesh %s: %zu vertices, %zu triangles, bounds (%.1f %.1f %.1f)..(%.1f %.1f %.1f) mm\n",
-                simulation.path().c_str(), mesh.vertexCount(), mesh.triangleCount(), lo.x, lo.y, lo.z, hi.x, hi.y,
-                hi.z);
+    std::printf("mesh %s: %zu vertices, %zu triangles, bounds (%.1f %.1f %.1f)..(%.1f %.1f %.1f) mm\n", path.c_str(),
+                mesh.vertexCount(), mesh.triangleCount(), lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
     for (const auto& warning : mesh.report().warnings) std::printf("warning: %s\n", warning.c_str());
+}
+
+QString deviceHelp() {
+    QStringList forms;
+    for (const auto& scheme : palpate::listDeviceSchemes()) forms << QString::fromStdString(scheme.uri);
+    return QStringLiteral("Haptic device: %1 (default %2).")
+        .arg(forms.join(QStringLiteral(", ")), QLatin1String(palpate::HapticSession::kDefaultDeviceUri));
 }
 
 }  // namespace
@@ -56,18 +65,27 @@ int main(int argc, char** argv) {
     parser.addVersionOption();
     const QCommandLineOption meshOption(QStringLiteral("mesh"), QStringLiteral("Mesh to open (OBJ, OFF, PLY, STL, OM)."),
                                         QStringLiteral("FILE"));
+    const QCommandLineOption deviceOption(QStringLiteral("device"), deviceHelp(), QStringLiteral("URI"),
+                                          QLatin1String(palpate::HapticSession::kDefaultDeviceUri));
     const QCommandLineOption softwareOption(QStringLiteral("software-render"),
                                             QStringLiteral("Draw with QPainter instead of OpenGL."));
-    const QCommandLineOption screenshotOption(QStringLiteral("screenshot"),
-                                              QStringLiteral("Render the scene after --ticks ticks, save a PNG, exit."),
-                                              QStringLiteral("FILE"));
+    const QCommandLineOption screenshotOption(
+        QStringLiteral("screenshot"),
+        QStringLiteral("Run --ticks haptic ticks stepped (no thread: deterministic), render, save a PNG, exit."),
+        QStringLiteral("FILE"));
     const QCommandLineOption ticksOption(QStringLiteral("ticks"),
-                                         QStringLiteral("Simulation ticks (1 ms) before the screenshot (default %1).")
+                                         QStringLiteral("Haptic ticks (1 ms) before the screenshot (default %1).")
                                              .arg(kDefaultScreenshotTicks),
                                          QStringLiteral("N"), QString::number(kDefaultScreenshotTicks));
     const QCommandLineOption headlessOption(QStringLiteral("headless"),
                                             QStringLiteral("No window: load the mesh, print what was loaded, exit."));
-    parser.addOptions({meshOption, softwareOption, screenshotOption, ticksOption, headlessOption});
+    // Hidden, for documentation and checks: `--grab-after-ms MS FILE` runs the interactive window
+    // (with the haptic thread), grabs the whole window after MS milliseconds into FILE, and exits.
+    QCommandLineOption grabOption(QStringLiteral("grab-after-ms"),
+                                  QStringLiteral("Run interactively, save the whole window to FILE after MS ms, exit."),
+                                  QStringLiteral("MS"));
+    grabOption.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOptions({meshOption, deviceOption, softwareOption, screenshotOption, ticksOption, headlessOption, grabOption});
     parser.process(app);  // exits with 0 on --help/--version and with 1 on unknown options
 
     bool ticksOk = false;
@@ -76,44 +94,69 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "palpate: --ticks needs a whole number >= 0, not '%s'\n", qPrintable(parser.value(ticksOption)));
         return 2;
     }
+    const bool grab = parser.isSet(grabOption);
+    int grabAfterMs = 0;
+    QString grabFile;
+    if (grab) {
+        bool msOk = false;
+        grabAfterMs = parser.value(grabOption).toInt(&msOk);
+        const QStringList rest = parser.positionalArguments();
+        if (!msOk || grabAfterMs < 0 || rest.size() != 1) {
+            std::fprintf(stderr, "palpate: usage: --grab-after-ms MS FILE (MS a whole number >= 0)\n");
+            return 2;
+        }
+        grabFile = rest.front();
+    }
     const bool screenshot = parser.isSet(screenshotOption);
     // Without a display and without a task there is nothing to show: report the scene and stop
     // rather than run an invisible window forever.
-    const bool headless = parser.isSet(headlessOption) || (noDisplay && !screenshot);
+    const bool headless = parser.isSet(headlessOption) || (noDisplay && !screenshot && !grab);
+    const bool interactive = !headless && !screenshot && !grab;
     if (noDisplay)
         std::printf("palpate: no display (DISPLAY, WAYLAND_DISPLAY and QT_QPA_PLATFORM unset): running headless "
                     "(QT_QPA_PLATFORM=offscreen) with the software renderer\n");
 
+    auto fail = [interactive](const QString& error) {
+        std::fprintf(stderr, "palpate: %s\n", qPrintable(error));
+        if (interactive) QMessageBox::critical(nullptr, QStringLiteral("Palpate"), error);
+        return 1;
+    };
+
+    // The device URI is checked before anything else is built: the message names the URI.
+    const QString deviceUri = parser.value(deviceOption);
+    {
+        std::string error;
+        if (!palpate::createDeviceFromUri(deviceUri.toStdString(), error)) return fail(QString::fromStdString(error));
+    }
+
     QString meshPath = parser.value(meshOption);
     if (meshPath.isEmpty()) {
         meshPath = QString::fromStdString(palpate::cli::findResource(palpate::cli::kDefaultMesh));
-        if (meshPath.isEmpty()) {
-            const QString error = QStringLiteral("the default mesh %1 was not found (set PALPATE_RESOURCES)")
-                                      .arg(QLatin1String(palpate::cli::kDefaultMesh));
-            std::fprintf(stderr, "palpate: %s\n", qPrintable(error));
-            if (!headless && !screenshot) QMessageBox::critical(nullptr, QStringLiteral("Palpate"), error);
-            return 1;
-        }
+        if (meshPath.isEmpty())
+            return fail(QStringLiteral("the default mesh %1 was not found (set PALPATE_RESOURCES)")
+                            .arg(QLatin1String(palpate::cli::kDefaultMesh)));
     }
 
     if (headless) {
-        const auto outcome = palpate::SceneSimulation::load(meshPath.toStdString());
-        if (!outcome.simulation) {
-            std::fprintf(stderr, "palpate: %s\n", outcome.error.c_str());
+        std::string error;
+        const auto mesh = palpate::HapticSession::loadTissueMesh(meshPath.toStdString(), error);
+        if (!mesh) {
+            std::fprintf(stderr, "palpate: %s\n", error.c_str());
             return 1;
         }
-        printLoaded(*outcome.simulation);
+        printLoaded(meshPath.toStdString(), *mesh);
         return 0;
     }
 
+    // Screenshots step the loop on this thread (deterministic); everything else runs its thread.
+    const auto mode = screenshot ? palpate::LoopMode::Stepped : palpate::LoopMode::Threaded;
     const auto renderer = parser.isSet(softwareOption) ? palpate::RendererChoice::Software : palpate::RendererChoice::Auto;
-    palpate::MainWindow window(renderer);
-    if (const QString error = window.loadMesh(meshPath); !error.isEmpty()) {
-        std::fprintf(stderr, "palpate: %s\n", qPrintable(error));
-        return 1;
-    }
-    std::printf("palpate: %s renderer (%s)\n", qPrintable(palpate::rendererName(window.viewport()->kind())),
-                qPrintable(window.rendererReason()));
+    palpate::MainWindow window(renderer, mode);
+    if (const QString error = window.setDeviceUri(deviceUri); !error.isEmpty()) return fail(error);
+    if (const QString error = window.loadMesh(meshPath); !error.isEmpty()) return fail(error);
+    std::printf("palpate: %s renderer (%s), device %s, haptic loop %s\n",
+                qPrintable(palpate::rendererName(window.viewport()->kind())), qPrintable(window.rendererReason()),
+                qPrintable(deviceUri), mode == palpate::LoopMode::Stepped ? "stepped" : "threaded");
     std::fflush(stdout);  // before the event loop: a session may end by signal
 
     if (screenshot) {
@@ -138,8 +181,24 @@ int main(int argc, char** argv) {
         return exitCode;
     }
 
-    window.resize(1280, 860);
+    window.resize(kWindowWidthPx, kWindowHeightPx);
     window.show();
-    window.setPlaying(true);
+    if (grab) {
+        int exitCode = 1;
+        QTimer::singleShot(grabAfterMs, &window, [&] {
+            const QImage image = window.grab().toImage();  // the whole window: menus, viewport, status bar
+            if (image.isNull() || !image.save(grabFile, "PNG")) {
+                std::fprintf(stderr, "palpate: the window could not be saved to %s\n", qPrintable(grabFile));
+            } else {
+                std::printf("palpate: wrote %s (%dx%d) after %d ms; %s\n", qPrintable(grabFile), image.width(),
+                            image.height(), grabAfterMs, qPrintable(window.statusText()));
+                exitCode = 0;
+            }
+            window.close();  // stops the haptic thread
+            QApplication::exit(exitCode);
+        });
+        QApplication::exec();
+        return exitCode;
+    }
     return QApplication::exec();
 }

@@ -156,8 +156,10 @@ TEST(SeqLock, WideValuesAreNeverTornAcrossThreads) {
         for (std::uint64_t k = 1; !stop.load(std::memory_order_relaxed); ++k) lock.store(Wide{k, k, k, k, k});
     });
     std::uint64_t torn = 0, reads = 0, failedTries = 0;
-    const auto end = Clock::now() + std::chrono::milliseconds(100);
-    while (Clock::now() < end) {
+    // At least 100 ms and 1000 reads (a loaded machine may starve the reader), at most 2 s.
+    const auto start = Clock::now();
+    while ((Clock::now() < start + std::chrono::milliseconds(100) || reads < 1000) &&
+           Clock::now() < start + std::chrono::seconds(2)) {
         Wide w{};
         if (!lock.tryLoad(w, 4)) {
             ++failedTries;  // a bounded reader may give up, but never returns a torn value

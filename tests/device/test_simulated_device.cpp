@@ -361,3 +361,46 @@ TEST(SimulatedDevice, TickPathDoesNotAllocate) {
 
 }  // namespace
 }  // namespace palpate
+
+namespace palpate {
+namespace {
+
+TEST(SimulatedDeviceClock, ScriptStartsAtTheFirstTickAfterOpen) {
+    // A device swapped into a loop that has run for 10 s starts its script from the beginning.
+    SimulatedDevice fresh(SimTrajectory::Stroke);
+    ASSERT_TRUE(fresh.open());
+    SimulatedDevice reference(SimTrajectory::Stroke);
+    fresh.setTimeS(10.0);
+    DeviceSample sample;
+    ASSERT_TRUE(fresh.read(sample));
+    EXPECT_EQ(sample.positionMm, reference.positionAtMm(0.0));
+    EXPECT_EQ(sample.timeS, 10.0);  // stamped on the loop's clock
+    fresh.setTimeS(11.5);
+    ASSERT_TRUE(fresh.read(sample));
+    EXPECT_EQ(sample.positionMm, reference.positionAtMm(1.5));
+    // Reopening restarts the script.
+    fresh.close();
+    ASSERT_TRUE(fresh.open());
+    fresh.setTimeS(20.0);
+    ASSERT_TRUE(fresh.read(sample));
+    EXPECT_EQ(sample.positionMm, reference.positionAtMm(0.0));
+}
+
+TEST(SimulatedDeviceClock, RepeatPlaysTheScriptAgainAfterTheRest) {
+    SimulatedDevice device(SimTrajectory::PressHold);
+    const double duration = device.durationS();
+    ASSERT_TRUE(std::isfinite(duration));
+    device.setRepeat(1.0);
+    ASSERT_TRUE(device.open());
+    device.setTimeS(0.0);
+    EXPECT_EQ(device.scriptTimeS(duration * 0.5), duration * 0.5);
+    EXPECT_EQ(device.positionAtMm(device.scriptTimeS(duration + 0.5)), device.positionAtMm(duration));  // resting
+    EXPECT_NEAR(device.scriptTimeS(duration + 1.0 + 0.25), 0.25, 1e-9);                                // again
+    SimulatedDevice once(SimTrajectory::PressHold);
+    ASSERT_TRUE(once.open());
+    once.setTimeS(0.0);
+    EXPECT_EQ(once.positionAtMm(once.scriptTimeS(duration + 1.25)), once.positionAtMm(duration));  // stays at the end
+}
+
+}  // namespace
+}  // namespace palpate

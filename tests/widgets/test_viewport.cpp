@@ -1,29 +1,39 @@
 // The viewport and the main window under QT_QPA_PLATFORM=offscreen: the factory falls back to the
-// software renderer, which draws the mesh and the touched-vertex highlight; the window loads, steps
-// and reports contact; bad meshes give errors naming the file.
+// software renderer, which draws the mesh and the touched-vertex highlight; the window runs the
+// haptic loop stepped (deterministic) or on its thread (interactive), observes its snapshots, and
+// reports contact, force and the loop's health; bad meshes and devices give errors naming them.
 #include "app/cli/DefaultScene.h"
+#include "app/gui/HapticSession.h"
 #include "app/gui/MainWindow.h"
-#include "app/gui/SceneSimulation.h"
+#include "app/gui/SnapshotObserver.h"
 #include "widgets/SceneOverlay.h"
 #include "widgets/SceneStyle.h"
 #include "widgets/SoftwareViewport.h"
 #include "widgets/ViewportFactory.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QFile>
 #include <QImage>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QRegularExpression>
+#include <QStatusBar>
 #include <QTemporaryDir>
+#include <QTest>
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <functional>
 #include <memory>
 
 using namespace palpate;
 
 namespace {
 
-constexpr int kTicksIntoContact = 800;  // the scripted path is pressing by then
+constexpr int kTicksIntoContact = 800;  // the scripted stroke is pressing by then
 
 QString defaultMeshPath() { return QString::fromStdString(cli::findResource(cli::kDefaultMesh)); }
 
@@ -38,6 +48,28 @@ int countNear(const QImage& image, const QRect& region, const QColor& colour, in
         for (int x = region.left(); x <= region.right(); ++x)
             if (near(image.pixel(x, y), colour, tolerance)) ++count;
     return count;
+}
+
+/// Processes events until `done` or `timeoutMs` passed; returns done().
+bool waitUntil(const std::function<bool()>& done, int timeoutMs) {
+    QElapsedTimer clock;
+    clock.start();
+    while (!done() && clock.elapsed() < timeoutMs) QTest::qWait(10);
+    return done();
+}
+
+/// The number in a status field such as "haptic 998 Hz"; -1 if there is none.
+double statusNumber(const MainWindow& window, const char* objectName) {
+    const auto* label = window.findChild<QLabel*>(QLatin1String(objectName));
+    if (!label) return -1.0;
+    const auto match = QRegularExpression(QStringLiteral("(\\d+(\\.\\d+)?)")).match(label->text());
+    return match.hasMatch() ? match.captured(1).toDouble() : -1.0;
+}
+
+QAction* findAction(QWidget& window, const QString& text) {
+    for (QAction* action : window.findChildren<QAction*>())
+        if (action->text().remove(QLatin1Char('&')) == text) return action;
+    return nullptr;
 }
 
 }  // namespace
@@ -60,13 +92,13 @@ TEST(ViewportFactory, PicksSoftwareUnderOffscreen) {
 TEST(SoftwareViewport, DrawsTheMeshAndTheTouchedVertexInContact) {
     const QString path = defaultMeshPath();
     ASSERT_FALSE(path.isEmpty()) << "resources/" << cli::kDefaultMesh << " not found";
-    auto outcome = SceneSimulation::load(path.toStdString());
-    ASSERT_TRUE(outcome.simulation) << outcome.error;
-    SceneSimulation& simulation = *outcome.simulation;
+    HapticSession session(LoopMode::Stepped);
+    ASSERT_EQ(session.loadMesh(path.toStdString()), "");
+    ASSERT_TRUE(session.drawnMesh());
 
     SoftwareViewport viewport;
     viewport.resize(640, 480);
-    viewport.setMesh(simulation.mesh());
+    viewport.setMesh(*session.drawnMesh());
     const QImage atRest = viewport.grabImage();
     ASSERT_EQ(atRest.size(), QSize(640, 480));
 
@@ -81,24 +113,59 @@ TEST(SoftwareViewport, DrawsTheMeshAndTheTouchedVertexInContact) {
     const QRect all = atRest.rect();
     EXPECT_EQ(countNear(atRest, all, highlight, 10), 0) << "highlight drawn before any contact";
 
-    simulation.advance(kTicksIntoContact);
-    ASSERT_TRUE(simulation.lastTick().contact) << "the scripted path should be pressing after " << kTicksIntoContact;
-    SceneSnapshot snapshot;
-    simulation.fillSnapshot(snapshot);
-    viewport.setSnapshot(snapshot);
+    session.step(kTicksIntoContact);
+    ASSERT_EQ(session.observe(), HapticSession::Observation::Updated);
+    ASSERT_TRUE(session.observed().contact) << "the scripted stroke should be pressing after " << kTicksIntoContact;
+    EXPECT_GT(session.observed().displacedCount, 0u);
+    viewport.setSnapshot(session.view());
     const QImage pressed = viewport.grabImage();
     EXPECT_GT(countNear(pressed, all, highlight, 10), 20) << "no touched-vertex highlight in contact";
     // The pressed tissue is drawn deformed: the picture changed beyond the markers.
     EXPECT_NE(pressed, atRest);
 }
 
+TEST(SnapshotObserver, TouchesOnlyWhatChanged) {
+    const std::vector<glm::vec3> rest = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}};
+    SnapshotObserver observer;
+    observer.setRestPositions(rest);
+    auto snapshot = std::make_unique<HapticSnapshot>();  // ~80 kB: not on the stack
+    snapshot->displacedCount = 2;
+    snapshot->displacedIds[0] = 1;
+    snapshot->displacedPositionsMm[0] = {1, 0, -1};
+    snapshot->displacedIds[1] = 2;
+    snapshot->displacedPositionsMm[1] = {2, 0, -2};
+    EXPECT_EQ(observer.apply(*snapshot), 2u);
+    EXPECT_EQ(observer.view().positionsMm[1], glm::vec3(1, 0, -1));
+    EXPECT_EQ(observer.view().positionsMm[2], glm::vec3(2, 0, -2));
+
+    // Next frame: 2 moved, 3 is new, 1 is back at rest; an id outside the mesh is ignored.
+    snapshot->displacedCount = 3;
+    snapshot->displacedIds[0] = 2;
+    snapshot->displacedPositionsMm[0] = {2, 0, -1.5f};
+    snapshot->displacedIds[1] = 3;
+    snapshot->displacedPositionsMm[1] = {3, 0, -0.5f};
+    snapshot->displacedIds[2] = 99;
+    EXPECT_EQ(observer.apply(*snapshot), 3u);  // 2 set, 3 set, 1 reset; 0 and 4 untouched
+    EXPECT_EQ(observer.view().positionsMm[1], rest[1]);
+    EXPECT_EQ(observer.view().positionsMm[2], glm::vec3(2, 0, -1.5f));
+    EXPECT_EQ(observer.view().positionsMm[3], glm::vec3(3, 0, -0.5f));
+    EXPECT_EQ(observer.view().positionsMm[0], rest[0]);
+    EXPECT_EQ(observer.view().positionsMm[4], rest[4]);
+    EXPECT_EQ(observer.displacedIds(), (std::vector<VertexId>{2, 3}));
+
+    snapshot->displacedCount = 0;
+    EXPECT_EQ(observer.apply(*snapshot), 2u);
+    EXPECT_EQ(observer.view().positionsMm, rest);
+}
+
 TEST(MainWindow, OpensStepsAndShowsContactInTheStatusBar) {
-    MainWindow window(RendererChoice::Auto);
+    MainWindow window(RendererChoice::Auto, LoopMode::Stepped);
     EXPECT_EQ(window.viewport()->kind(), RendererKind::Software);
     const QString path = defaultMeshPath();
     ASSERT_EQ(window.loadMesh(path), QString());
     window.resize(800, 600);
     window.show();
+    EXPECT_FALSE(window.session().threadRunning()) << "stepped mode must not start the haptic thread";
     EXPECT_TRUE(window.statusText().contains(QStringLiteral("stomach_3970.off")));
     EXPECT_TRUE(window.statusText().contains(QStringLiteral("3970 vertices")));
     EXPECT_TRUE(window.statusText().contains(QStringLiteral("software")));
@@ -107,6 +174,8 @@ TEST(MainWindow, OpensStepsAndShowsContactInTheStatusBar) {
     window.advanceTicks(kTicksIntoContact);
     EXPECT_TRUE(window.statusText().contains(QStringLiteral("contact: yes"))) << window.statusText().toStdString();
     EXPECT_FALSE(window.statusText().contains(QStringLiteral("force 0.00 N"))) << window.statusText().toStdString();
+    EXPECT_TRUE(window.statusText().contains(QStringLiteral("sim:stroke: Ready"))) << window.statusText().toStdString();
+    EXPECT_EQ(window.session().observed().tick, std::uint64_t(kTicksIntoContact));
     EXPECT_FALSE(window.viewport()->grabImage().isNull());
 
     window.setPlaying(true);
@@ -115,8 +184,113 @@ TEST(MainWindow, OpensStepsAndShowsContactInTheStatusBar) {
     EXPECT_FALSE(window.isPlaying());
 }
 
+TEST(MainWindow, SteppedRunsAreDeterministic) {
+    std::uint64_t hashes[2] = {};
+    for (auto& hash : hashes) {
+        MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+        ASSERT_EQ(window.loadMesh(defaultMeshPath()), QString());
+        window.advanceTicks(1500);
+        // The snapshot's state is what is drawn; equal runs draw equal pictures.
+        hash = qHash(QByteArray(reinterpret_cast<const char*>(window.session().view().positionsMm.data()),
+                                qsizetype(window.session().view().positionsMm.size() * sizeof(glm::vec3))));
+        EXPECT_TRUE(window.session().observed().contact);
+    }
+    EXPECT_EQ(hashes[0], hashes[1]);
+}
+
+TEST(MainWindow, TheScriptedStrokeRepeatsAfterARest) {
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    ASSERT_EQ(window.loadMesh(defaultMeshPath()), QString());
+    window.advanceTicks(6500);  // the 6 s stroke is over: the tool rests above the tissue
+    EXPECT_FALSE(window.session().observed().contact);
+    EXPECT_EQ(window.session().observer().displacedIds().size(), 0u) << "the tissue has relaxed";
+    window.advanceTicks(1300);  // 7 s period: 0.8 s into the next stroke
+    EXPECT_TRUE(window.session().observed().contact);
+}
+
+TEST(MainWindow, PauseGivesAPausedSnapshotWithZeroForce) {
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    ASSERT_EQ(window.loadMesh(defaultMeshPath()), QString());
+    window.advanceTicks(kTicksIntoContact);
+    ASSERT_TRUE(window.session().observed().contact);
+    ASSERT_GT(glm::length(window.session().observed().forceN), 0.0f);
+    EXPECT_FALSE(window.session().observed().paused);
+
+    // Through the menu, as Space does.
+    QAction* pause = findAction(window, QStringLiteral("Pause"));
+    ASSERT_NE(pause, nullptr);
+    pause->trigger();
+    EXPECT_FALSE(window.isPlaying());
+    window.advanceTicks(1);
+    EXPECT_TRUE(window.session().observed().paused);
+    EXPECT_EQ(window.session().observed().forceN, glm::vec3(0.0f));
+    EXPECT_FALSE(window.session().observed().contact);
+    EXPECT_TRUE(window.statusText().contains(QStringLiteral("force 0.00 N"))) << window.statusText().toStdString();
+
+    window.setPlaying(true);
+    window.advanceTicks(1);
+    EXPECT_FALSE(window.session().observed().paused);
+}
+
+TEST(MainWindow, RestartAndDeviceSwitchSwapTheLoopsSceneAndDevice) {
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    ASSERT_EQ(window.loadMesh(defaultMeshPath()), QString());
+    window.advanceTicks(7000);  // the stroke has ended and is resting before it repeats
+    const std::uint64_t firstScene = window.session().drawnSceneId();
+    EXPECT_EQ(window.session().observed().sceneId, firstScene);
+
+    ASSERT_EQ(window.restartSimulation(), QString());
+    EXPECT_TRUE(window.session().sceneSwitchPending());
+    EXPECT_EQ(window.session().drawnSceneId(), firstScene) << "drawn switches only once the loop runs the new scene";
+    window.advanceTicks(1);
+    EXPECT_FALSE(window.session().sceneSwitchPending());
+    EXPECT_NE(window.session().drawnSceneId(), firstScene);
+    EXPECT_EQ(window.session().observed().sceneId, window.session().drawnSceneId());
+    EXPECT_EQ(window.viewport()->scene().vertexCount(), 3970u);
+    EXPECT_FALSE(window.session().observed().contact);
+    // The fresh device plays its script from the start: pressing again 800 ticks later.
+    window.advanceTicks(kTicksIntoContact - 1);
+    EXPECT_TRUE(window.session().observed().contact) << window.statusText().toStdString();
+
+    // The Device menu lists the four scripted devices; choosing one swaps it in.
+    QMenu* devices = nullptr;
+    for (QMenu* menu : window.findChildren<QMenu*>())
+        if (menu->title().remove(QLatin1Char('&')) == QStringLiteral("Device")) devices = menu;
+    ASSERT_NE(devices, nullptr);
+    QStringList listed;
+    for (QAction* action : devices->actions()) {
+        listed << action->text();
+        EXPECT_TRUE(action->isCheckable());
+        EXPECT_EQ(action->isChecked(), action->text() == QStringLiteral("sim:stroke")) << action->text().toStdString();
+    }
+    EXPECT_EQ(listed, (QStringList{"sim:press", "sim:stroke", "sim:scan", "sim:sine"}));
+    devices->actions().at(3)->trigger();
+    EXPECT_EQ(window.session().deviceUri(), "sim:sine");
+    EXPECT_TRUE(devices->actions().at(3)->isChecked());
+    EXPECT_FALSE(devices->actions().at(1)->isChecked());
+    window.advanceTicks(kTicksIntoContact);
+    EXPECT_TRUE(window.statusText().contains(QStringLiteral("sim:sine: Ready"))) << window.statusText().toStdString();
+    EXPECT_TRUE(window.session().observed().contact);
+
+    // A bad URI is refused with a message naming it; the device stays.
+    const QString error = window.setDeviceUri(QStringLiteral("nosuch:thing"));
+    EXPECT_TRUE(error.contains(QStringLiteral("nosuch:thing"))) << error.toStdString();
+    EXPECT_EQ(window.session().deviceUri(), "sim:sine");
+
+    // Another mesh: drawn once the loop runs it.
+    const QString other = QString::fromStdString(cli::findResource("meshes/sphere_1442.off"));
+    ASSERT_FALSE(other.isEmpty());
+    ASSERT_EQ(window.loadMesh(other), QString());
+    EXPECT_EQ(window.viewport()->scene().vertexCount(), 3970u);
+    window.advanceTicks(1);
+    EXPECT_EQ(window.viewport()->scene().vertexCount(), 1442u);
+    EXPECT_TRUE(window.statusText().contains(QStringLiteral("sphere_1442.off"))) << window.statusText().toStdString();
+    window.advanceTicks(kTicksIntoContact);
+    EXPECT_TRUE(window.session().observed().contact) << "the new device is aimed at the new mesh";
+}
+
 TEST(MainWindow, BadMeshGivesAnErrorNamingTheFileAndKeepsTheScene) {
-    MainWindow window(RendererChoice::Software);
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
     ASSERT_EQ(window.loadMesh(defaultMeshPath()), QString());
 
     const QString missing = QStringLiteral("/nonexistent/dir/missing_mesh.off");
@@ -134,9 +308,49 @@ TEST(MainWindow, BadMeshGivesAnErrorNamingTheFileAndKeepsTheScene) {
     EXPECT_FALSE(garbageError.isEmpty());
     EXPECT_TRUE(garbageError.contains(garbage)) << garbageError.toStdString();
 
-    // The failed loads left the previous scene in place.
+    // The failed loads left the previous scene in place, in the loop too.
+    window.advanceTicks(10);
+    EXPECT_FALSE(window.session().sceneSwitchPending());
     EXPECT_TRUE(window.statusText().contains(QStringLiteral("stomach_3970.off")));
     EXPECT_EQ(window.viewport()->scene().vertexCount(), 3970u);
+}
+
+TEST(MainWindow, InteractiveRunsTheLoopThreadAndOnlyObservesIt) {
+    auto window = std::make_unique<MainWindow>(RendererChoice::Auto, LoopMode::Threaded);
+    ASSERT_EQ(window->loadMesh(defaultMeshPath()), QString());
+    window->resize(800, 600);
+    window->show();
+    EXPECT_TRUE(window->session().threadRunning());
+
+    QTest::qWait(300);
+    // The status bar updates at ~4 Hz; give a loaded machine a little longer to paint it.
+    waitUntil([&] { return statusNumber(*window, "hapticRateStatus") > 0.0; }, 2000);
+    const double rateHz = statusNumber(*window, "hapticRateStatus");
+    EXPECT_GT(rateHz, 500.0) << window->statusText().toStdString();
+    EXPECT_GT(window->session().snapshotsObserved(), 0u);
+    EXPECT_GT(window->session().observed().publishCount, 0u);
+    EXPECT_GT(window->session().observed().counters.ticks, 100u);
+    EXPECT_GE(statusNumber(*window, "overrunStatus"), 0.0);
+    EXPECT_NE(window->findChild<QLabel*>(QStringLiteral("schedFifoStatus")), nullptr);
+    EXPECT_NE(window->findChild<QLabel*>(QStringLiteral("frameRateStatus")), nullptr);
+
+    // Pause reaches the thread: the next snapshots say paused, with zero force.
+    window->setPlaying(false);
+    EXPECT_TRUE(waitUntil([&] { return window->session().observed().paused; }, 2000));
+    EXPECT_EQ(window->session().observed().forceN, glm::vec3(0.0f));
+    window->setPlaying(true);
+    EXPECT_TRUE(waitUntil([&] { return !window->session().observed().paused; }, 2000));
+
+    // Restart while the thread runs: the drawn scene follows the snapshot's scene id.
+    const std::uint64_t firstScene = window->session().drawnSceneId();
+    ASSERT_EQ(window->restartSimulation(), QString());
+    EXPECT_TRUE(waitUntil([&] { return window->session().drawnSceneId() != firstScene; }, 2000));
+    EXPECT_EQ(window->viewport()->scene().vertexCount(), 3970u);
+
+    // Closing stops the thread before anything is destroyed.
+    window->close();
+    EXPECT_FALSE(window->session().threadRunning());
+    window.reset();
 }
 
 int main(int argc, char** argv) {
