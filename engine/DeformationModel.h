@@ -42,6 +42,11 @@ public:
     virtual std::size_t copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::uint8_t* rings,
                                       std::size_t capacity) const = 0;
 
+    /// Reads (without changing anything) the memory the next step() will most likely touch, so
+    /// that an idle core's cold caches and TLB are paid for before the deadline instead of inside
+    /// the tick. The haptic loop calls it while it spins towards the deadline. Real-time safe.
+    virtual void warm(const glm::vec3& /*lastToolTipMm*/) const {}
+
     /// Applies already validated slope-ring parameters at a tick boundary. Returns false when this
     /// model cannot take them without reallocating (the caller must build a new model instead).
     /// Real-time safe.

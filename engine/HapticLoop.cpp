@@ -44,8 +44,8 @@ void hashBytes(std::uint64_t& hash, const void* data, std::size_t size) {
 std::string validateHapticLoopDef(const HapticLoopDef& def) {
     if (!std::isfinite(def.rateHz) || def.rateHz < 10.0 || def.rateHz > 10000.0)
         return "haptic rate " + std::to_string(def.rateHz) + " Hz is out of range 10..10000 Hz";
-    if (!std::isfinite(def.spinUs) || def.spinUs < 0.0 || def.spinUs * 1e-6 >= 1.0 / def.rateHz)
-        return "spinUs " + std::to_string(def.spinUs) + " must be >= 0 and shorter than the period";
+    if (!std::isfinite(def.spinFraction) || def.spinFraction < 0.0 || def.spinFraction > 0.9)
+        return "spinFraction " + std::to_string(def.spinFraction) + " must be in 0..0.9 of the period";
     if (def.fifoPriority < 1 || def.fifoPriority > 99)
         return "fifoPriority " + std::to_string(def.fifoPriority) + " must be in 1..99";
     return validateSafetyFilterDef(def.safety);
@@ -97,13 +97,16 @@ void HapticLoop::threadMain() {
     const double startS = monotonicS();
     const double clockOffsetS = double(mCounters.ticks) * mPeriodS;  // continue the loop clock after a restart
     double deadlineS = startS + mPeriodS;
-    const double spinS = mDef.spinUs * 1e-6;
+    const double spinS = mDef.spinFraction * mPeriodS;
     std::uint64_t ticksThisRun = 0;
     while (!mStopRequested.load(std::memory_order_acquire)) {
         const double sleepUntil = deadlineS - spinS;
         const timespec ts = toTimespec(sleepUntil);
         while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
         }
+        // An idle core comes back with cold caches and TLB (on virtual machines a first touch of a
+        // page can cost tens of µs): pay for it now, before the deadline, not inside the tick.
+        warmUp();
         double nowS = monotonicS();
         while (nowS < deadlineS) nowS = monotonicS();  // the short spin to the deadline
         const double lateUs = (nowS - deadlineS) * 1e6;
@@ -130,6 +133,16 @@ void HapticLoop::threadMain() {
         mCounters.achievedRateHz = mElapsedS > 0.0 ? double(ticksThisRun) / mElapsedS : 0.0;
     }
     mRunning.store(false, std::memory_order_release);
+}
+
+void HapticLoop::warmUp() {
+    mScene->model().warm(mLastSample.positionMm);
+    const HapticSnapshot& s = mSnapshots.back();
+    volatile std::uint64_t sink = s.publishCount + s.displacedIds[0] + s.displacedRings[0] +
+                                  std::uint64_t(s.displacedPositionsMm[0].x != 0.0f) +
+                                  std::uint64_t(mDevice->state()) + mJitterUs.peek(mCounters.lastJitterUs) +
+                                  mComputeUs.peek(mCounters.lastComputeUs) + std::uint64_t(mSafety.phase());
+    (void)sink;
 }
 
 void HapticLoop::stepOnce() {

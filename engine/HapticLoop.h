@@ -24,7 +24,11 @@ struct HapticLoopDef {
     double rateHz = 1000.0;        ///< 10 Hz .. 10 kHz
     bool trySchedFifo = true;      ///< ask for SCHED_FIFO; fall back quietly (reported in counters)
     int fifoPriority = 80;
-    double spinUs = 30.0;          ///< sleep until this long before the deadline, then spin (0: no spin)
+    /// Sleep until this fraction of the period before the deadline, then spin (0: no spin). On
+    /// virtual machines a core that went idle comes back slow (cold TLB and caches, measured in
+    /// docs/haptic-loop.md); spinning part of the period keeps the tick fast. At most 0.9: a
+    /// SCHED_FIFO thread that never sleeps is throttled by the kernel.
+    double spinFraction = 0.6;
     SafetyFilterDef safety;
 };
 
@@ -95,6 +99,7 @@ private:
 
     void threadMain();
     void tick(double nowS, double lateUs);
+    void warmUp();
     void applyCommands();
     void retire(HapticScene* scene, HapticDevice* device);
     void publish(const TickResult& result, const glm::vec3& forceOutN);

@@ -28,6 +28,11 @@ public:
         mSumUs += us;
         if (us > mMaxUs) mMaxUs = us;
     }
+    /// Reads the bin a value would land in (see HapticLoop::warmUp).
+    std::uint64_t peek(double us) const {
+        std::size_t bin = us >= 0.0 ? std::size_t(us / mBinUs) : 0;
+        return mBins[bin < mBins.size() ? bin : mBins.size() - 1] + mCount;
+    }
     void clear();
     /// Percentiles from bin upper edges (conservative), capped at the exact maximum.
     LatencySummary summary() const;

@@ -325,6 +325,17 @@ VertexId SlopeRingDeformer::searchPalpate(const glm::vec3& tool) const {
     return mOctree.nearestExact(tool, mPositions, displacedVertices(), best);
 }
 
+void SlopeRingDeformer::warm(const glm::vec3& lastToolTipMm) const {
+    // Only the cheap searches; the paper's whole-model methods touch everything anyway.
+    if (mMethod != SlopeRingMethod::Palpate || !std::isfinite(lastToolTipMm.x)) return;
+    volatile VertexId sink = searchPalpate(lastToolTipMm);
+    (void)sink;
+    if (mTouched != kNoVertex) {
+        volatile float touch = mMesh.restPositionsMm()[mTouched].x + mMesh.restNormals()[mTouched].x;
+        (void)touch;
+    }
+}
+
 VertexId SlopeRingDeformer::findTouched(const glm::vec3& tool) const {
     switch (mMethod) {
         case SlopeRingMethod::Previous: return nearestLinear(tool, mPositions);

@@ -35,6 +35,9 @@ public:
     void setParams(const SlopeRingParams& params);
     std::size_t copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::uint8_t* rings,
                               std::size_t capacity) const override;
+    /// Runs this method's search for the last tool position (a read-only pass over the search's
+    /// and the active set's memory).
+    void warm(const glm::vec3& lastToolTipMm) const override;
     /// Real-time: true for Palpate, and for the paper's methods while the ring count is unchanged.
     bool applySlopeRingParams(const SlopeRingParams& params) override;
     const SlopeRingParams& params() const { return mParams; }

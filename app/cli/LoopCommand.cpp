@@ -31,7 +31,7 @@ std::optional<double> parseNumber(const std::string& text) {
 }  // namespace
 
 int loopCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json", "no-fifo"}, {"seconds", "rate", "observer-hz", "device", "mesh", "spin-us", "csv"});
+    Args args(words, {"json", "no-fifo"}, {"seconds", "rate", "observer-hz", "device", "mesh", "spin-fraction", "csv"});
     if (!args.ok()) {
         std::cerr << "loop: " << args.error() << "\n";
         return 2;
@@ -39,7 +39,7 @@ int loopCommand(const std::vector<std::string>& words) {
     const auto seconds = parseNumber(args.option("seconds").value_or("5"));
     const auto rate = parseNumber(args.option("rate").value_or("1000"));
     const auto observerHz = parseNumber(args.option("observer-hz").value_or("60"));
-    const auto spinUs = parseNumber(args.option("spin-us").value_or("30"));
+    const auto spinFraction = parseNumber(args.option("spin-fraction").value_or("0.6"));
     if (!seconds || *seconds <= 0.0 || *seconds > 86400.0) {
         std::cerr << "loop: --seconds must be a number in (0, 86400]\n";
         return 2;
@@ -50,7 +50,7 @@ int loopCommand(const std::vector<std::string>& words) {
     }
     HapticLoopDef def;
     def.rateHz = rate.value_or(-1.0);
-    def.spinUs = spinUs.value_or(-1.0);
+    def.spinFraction = spinFraction.value_or(-1.0);
     def.trySchedFifo = !args.flag("no-fifo");
     if (const std::string problem = validateHapticLoopDef(def); !problem.empty()) {
         std::cerr << "loop: " << problem << "\n";
@@ -133,7 +133,7 @@ int loopCommand(const std::vector<std::string>& words) {
             {"ticks", r.counters.ticks},
             {"missed", r.counters.missedDeadlines},
             {"jitter_us", {{"p50", r.jitter.p50Us}, {"p99", r.jitter.p99Us}, {"p999", r.jitter.p999Us}, {"max", r.jitter.maxUs}}},
-            {"compute_us", {{"p50", r.compute.p50Us}, {"p99", r.compute.p99Us}, {"max", r.compute.maxUs}}},
+            {"compute_us", {{"p50", r.compute.p50Us}, {"p99", r.compute.p99Us}, {"max", r.compute.maxUs}, {"mean", r.compute.meanUs}}},
             {"sched_fifo", r.counters.schedFifo},
             {"overruns", r.counters.overruns},
             {"achieved_rate_hz", r.counters.achievedRateHz},

@@ -14,7 +14,7 @@ void usage(std::ostream& out) {
            "  palpate-cli bench table1 [--json] [--csv FILE] [--quick] [--repeats N]\n"
            "  palpate-cli demo [--mesh FILE] [--method previous|hybrid|proposed|palpate] [--json]\n"
            "  palpate-cli loop [--seconds S] [--rate HZ] [--observer-hz 60] [--device URI] [--mesh FILE]\n"
-           "                   [--spin-us US] [--no-fifo] [--json] [--csv FILE]\n"
+           "                   [--spin-fraction F] [--no-fifo] [--json] [--csv FILE]\n"
            "  palpate-cli --help | --version\n";
 }
 }  // namespace

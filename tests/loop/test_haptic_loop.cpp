@@ -68,9 +68,9 @@ TEST(HapticLoop, RejectsBadDefinitions) {
     def.rateHz = 20000.0;
     EXPECT_NE(validateHapticLoopDef(def).find("rate"), std::string::npos);
     def.rateHz = 1000.0;
-    def.spinUs = 2000.0;
-    EXPECT_NE(validateHapticLoopDef(def).find("spinUs"), std::string::npos);
-    def.spinUs = 10.0;
+    def.spinFraction = 0.95;
+    EXPECT_NE(validateHapticLoopDef(def).find("spinFraction"), std::string::npos);
+    def.spinFraction = 0.5;
     EXPECT_EQ(validateHapticLoopDef(def), "");
     def.rateHz = NAN;
     EXPECT_THROW(makeRig(SimTrajectory::PressHold, def), std::invalid_argument);
