@@ -3,7 +3,7 @@
 # Run it on an otherwise idle machine: jitter is what the scheduler gives us.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cli=build/release/app/palpate-cli
+cli=${PALPATE_CLI:-build/release/app/palpate-cli}
 out=docs/bench/loop.csv
 rm -f "$out"
 "$cli" loop --rate 1000 --seconds "${SECONDS_1K:-60}" --csv "$out"
