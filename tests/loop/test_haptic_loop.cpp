@@ -223,13 +223,17 @@ TEST(HapticLoop, OverrunZeroesTheForce) {
             return mInner->read(s);
         }
         void writeForce(const glm::vec3& f) override {
-            if (mReads == stallAtRead + 1) forceAfterStall = f;
+            if (mReads == stallAtRead + 1) {
+                forceAfterStall = f;
+                afterStallWritten = true;
+            }
             mInner->writeForce(f);
         }
         void emergencyStop() override { mInner->emergencyStop(); }
         void setTimeS(double t) override { mInner->setTimeS(t); }
         std::atomic<int> stallAtRead{1 << 30};
         glm::vec3 forceAfterStall{-1.0f};
+        std::atomic<bool> afterStallWritten{false};
 
     private:
         std::unique_ptr<SimulatedDevice> mInner;
@@ -238,14 +242,19 @@ TEST(HapticLoop, OverrunZeroesTheForce) {
     TissueMesh mesh = makeSphere();
     auto stalling = std::make_unique<StallingDevice>(aimedDevice(mesh, SimTrajectory::PressHold));
     StallingDevice* device = stalling.get();
-    device->stallAtRead = 2500;  // during the hold, in contact
+    device->stallAtRead = 2000;  // during the hold, in contact (tick counts, not seconds: a slow
+                                 // sanitizer build or a stalled machine only delays it)
     HapticLoop loop(quietDef(), HapticScene::createSlopeRing(std::move(mesh), {}), std::move(stalling));
     ASSERT_TRUE(loop.start());
-    std::this_thread::sleep_for(std::chrono::milliseconds(3200));
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (!device->afterStallWritten && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
     loop.stop();
+    ASSERT_TRUE(device->afterStallWritten);
     EXPECT_GE(loop.report().counters.overruns, 1u);
     EXPECT_GE(loop.report().counters.missedDeadlines, 1u);
     EXPECT_EQ(device->forceAfterStall, glm::vec3(0.0f));
+    EXPECT_GT(loop.report().safety.overrunTicks, 0u);
 }
 
 TEST(HapticLoopThreads, ObserverNeverSeesATornSnapshotUnderParameterChurn) {
