@@ -12,11 +12,38 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cstddef>
+#include <initializer_list>
+#include <utility>
+
 namespace palpate {
 
 namespace {
-enum Attribute : GLuint { kPositionAttribute = 0, kNormalAttribute = 1, kPressedAttribute = 2 };
+enum Attribute : GLuint { kPositionAttribute = 0, kNormalAttribute = 1, kPressedAttribute = 2, kRingAttribute = 3 };
+
+// The tissue's fill is pushed back by (1, 1) so that its wireframe wins. The ghost (drawn only on
+// triangles with a moved corner) goes further back, so that where it still coincides with the tissue
+// (the barely moved rim of a dent) the tissue wins: an edge's samples can lie half a pixel into the
+// neighbouring triangle, whose plane differs by up to a pixel's depth slope, so the margin is in
+// slope (factor) as well as in units.
+constexpr float kGhostOffsetFactor = 3.0f;
+constexpr float kGhostOffsetUnits = 8.0f;
+
+std::unique_ptr<QOpenGLShaderProgram> buildProgram(std::initializer_list<std::pair<QOpenGLShader::ShaderType, QString>> stages) {
+    auto program = std::make_unique<QOpenGLShaderProgram>();
+    for (const auto& [type, file] : stages) {
+        if (!program->addShaderFromSourceFile(type, file)) {
+            qWarning("MeshViewport: %s does not build: %s", qPrintable(file), qPrintable(program->log()));
+            return nullptr;
+        }
+    }
+    if (!program->link()) {
+        qWarning("MeshViewport: the shaders do not link: %s", qPrintable(program->log()));
+        return nullptr;
+    }
+    return program;
 }
+}  // namespace
 
 MeshViewport::MeshViewport(QWidget* parent) : QOpenGLWidget(parent) {
     QSurfaceFormat format;
@@ -26,6 +53,7 @@ MeshViewport::MeshViewport(QWidget* parent) : QOpenGLWidget(parent) {
     format.setSamples(4);
     setFormat(format);
     setFocusPolicy(Qt::StrongFocus);
+    setContextMenuPolicy(Qt::PreventContextMenu);  // right-drag pans; no menu from the window either
     setMinimumSize(160, 120);
 }
 
@@ -40,17 +68,17 @@ MeshViewport::~MeshViewport() {
 
 void MeshViewport::releaseGl() {
     mVao.destroy();
-    mPositionBuffer.destroy();
-    mNormalBuffer.destroy();
-    mPressedBuffer.destroy();
+    mGhostVao.destroy();
+    mVertexBuffer.destroy();
+    mRestBuffer.destroy();
     mIndexBuffer.destroy();
-    mProgram.reset();
+    mMeshProgram.reset();
+    mFlatProgram.reset();
     mGlReady = false;
 }
 
 void MeshViewport::sceneChanged(bool topologyChanged) {
     mTopologyDirty = mTopologyDirty || topologyChanged;
-    mShapeDirty = true;
     update();
 }
 
@@ -63,57 +91,111 @@ void MeshViewport::initializeGL() {
     });
     initializeOpenGLFunctions();
 
-    mProgram = std::make_unique<QOpenGLShaderProgram>();
-    if (!mProgram->addShaderFromSourceFile(QOpenGLShader::Vertex, QStringLiteral(":/shaders/mesh.vert")) ||
-        !mProgram->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/shaders/mesh.frag")) ||
-        !mProgram->link()) {
-        qWarning("MeshViewport: the mesh shaders do not build: %s", qPrintable(mProgram->log()));
-        mProgram.reset();
+    mMeshProgram = buildProgram({{QOpenGLShader::Vertex, QStringLiteral(":/shaders/mesh.vert")},
+                                 {QOpenGLShader::Geometry, QStringLiteral(":/shaders/mesh.geom")},
+                                 {QOpenGLShader::Fragment, QStringLiteral(":/shaders/mesh.frag")}});
+    mFlatProgram = buildProgram({{QOpenGLShader::Vertex, QStringLiteral(":/shaders/flat.vert")},
+                                 {QOpenGLShader::Fragment, QStringLiteral(":/shaders/flat.frag")}});
+    if (!mMeshProgram || !mFlatProgram) {
+        mMeshProgram.reset();
+        mFlatProgram.reset();
         return;
     }
     mVao.create();
-    for (QOpenGLBuffer* buffer : {&mPositionBuffer, &mNormalBuffer, &mPressedBuffer, &mIndexBuffer}) {
-        buffer->create();
-        buffer->setUsagePattern(buffer == &mIndexBuffer ? QOpenGLBuffer::StaticDraw : QOpenGLBuffer::StreamDraw);
+    mGhostVao.create();
+    mVertexBuffer.create();
+    mVertexBuffer.setUsagePattern(QOpenGLBuffer::DynamicDraw);  // kept, and rewritten in ranges
+    mRestBuffer.create();
+    mRestBuffer.setUsagePattern(QOpenGLBuffer::StaticDraw);
+    mIndexBuffer.create();
+    mIndexBuffer.setUsagePattern(QOpenGLBuffer::StaticDraw);
+
+    // The VAOs record the attribute layouts and the index buffer once.
+    {
+        QOpenGLVertexArrayObject::Binder vaoBinder(&mVao);
+        mVertexBuffer.bind();
+        const GLsizei stride = sizeof(GpuVertex);
+        glEnableVertexAttribArray(kPositionAttribute);
+        glVertexAttribPointer(kPositionAttribute, 3, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<const void*>(offsetof(GpuVertex, positionMm)));
+        glEnableVertexAttribArray(kNormalAttribute);
+        glVertexAttribPointer(kNormalAttribute, 3, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<const void*>(offsetof(GpuVertex, normal)));
+        glEnableVertexAttribArray(kPressedAttribute);
+        glVertexAttribPointer(kPressedAttribute, 1, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<const void*>(offsetof(GpuVertex, pressed)));
+        glEnableVertexAttribArray(kRingAttribute);
+        glVertexAttribIPointer(kRingAttribute, 1, GL_UNSIGNED_BYTE, stride,
+                               reinterpret_cast<const void*>(offsetof(GpuVertex, ring)));
+        mIndexBuffer.bind();
     }
-    // The VAO records the attribute layout and the index buffer once.
-    QOpenGLVertexArrayObject::Binder vaoBinder(&mVao);
-    mPositionBuffer.bind();
-    glEnableVertexAttribArray(kPositionAttribute);
-    glVertexAttribPointer(kPositionAttribute, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-    mNormalBuffer.bind();
-    glEnableVertexAttribArray(kNormalAttribute);
-    glVertexAttribPointer(kNormalAttribute, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-    mPressedBuffer.bind();
-    glEnableVertexAttribArray(kPressedAttribute);
-    glVertexAttribPointer(kPressedAttribute, 1, GL_FLOAT, GL_FALSE, sizeof(float), nullptr);
-    mIndexBuffer.bind();
-    mTopologyDirty = mShapeDirty = true;
+    {
+        // Rest positions, with the deformed vertices' pressed weights: only moved triangles show.
+        QOpenGLVertexArrayObject::Binder vaoBinder(&mGhostVao);
+        mRestBuffer.bind();
+        glEnableVertexAttribArray(kPositionAttribute);
+        glVertexAttribPointer(kPositionAttribute, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+        mVertexBuffer.bind();
+        glEnableVertexAttribArray(kPressedAttribute);
+        glVertexAttribPointer(kPressedAttribute, 1, GL_FLOAT, GL_FALSE, sizeof(GpuVertex),
+                              reinterpret_cast<const void*>(offsetof(GpuVertex, pressed)));
+        mIndexBuffer.bind();
+    }
+    mTopologyDirty = true;
     mGlReady = true;
 }
 
+void MeshViewport::fillVertex(VertexId v) {
+    GpuVertex& g = mVertices[v];
+    g.positionMm = mScene.positionsMm()[v];
+    g.normal = mNormals[v];
+    g.pressed = mScene.pressedWeights()[v];
+    g.ring = mScene.rings()[v];
+}
+
 void MeshViewport::uploadScene() {
-    QOpenGLVertexArrayObject::Binder vaoBinder(&mVao);
+    mLastUpload = UploadStats{};
+    const std::size_t n = mScene.vertexCount();
+    bool full = mScene.allDirty();
     if (mTopologyDirty) {
+        QOpenGLVertexArrayObject::Binder vaoBinder(&mVao);
         const auto indices = mScene.indices();
         mIndexBuffer.bind();
         mIndexBuffer.allocate(indices.data(), int(indices.size_bytes()));
         mIndexCount = int(indices.size());
+        const auto rest = mScene.restPositionsMm();
+        mRestBuffer.bind();
+        mRestBuffer.allocate(rest.data(), int(rest.size_bytes()));
         mTopologyDirty = false;
+        full = true;
     }
-    if (mShapeDirty) {
-        const auto positions = mScene.positionsMm();
-        const auto pressed = mScene.pressedWeights();
+    constexpr int kStride = sizeof(GpuVertex);
+    if (full) {
         mScene.computeVertexNormals(mNormals);
-        // allocate() orphans the old storage, so the driver need not wait for the previous frame.
-        mPositionBuffer.bind();
-        mPositionBuffer.allocate(positions.data(), int(positions.size_bytes()));
-        mNormalBuffer.bind();
-        mNormalBuffer.allocate(mNormals.data(), int(mNormals.size() * sizeof(glm::vec3)));
-        mPressedBuffer.bind();
-        mPressedBuffer.allocate(pressed.data(), int(pressed.size_bytes()));
-        mShapeDirty = false;
+        mVertices.resize(n);
+        for (VertexId v = 0; v < n; ++v) {
+            mVertices[v] = GpuVertex{};
+            fillVertex(v);
+        }
+        mVertexBuffer.bind();
+        mVertexBuffer.allocate(mVertices.data(), int(n * kStride));
+        mLastUpload = {true, n, 1, n * kStride};
+        ++mFullUploads;
+    } else if (!mScene.dirtyVertices().empty()) {
+        // The changed vertices and the corners around them (their normals moved), in runs.
+        mScene.updateVertexNormals(mNormals, mRecomputed);
+        for (const VertexId v : mRecomputed) fillVertex(v);
+        coalesceVertexRanges(mRecomputed, kMaxRangeGap, mRanges);
+        mVertexBuffer.bind();
+        for (const VertexRange& r : mRanges) {
+            // Gap vertices inside a range are re-sent with their current (unchanged) values.
+            mVertexBuffer.write(int(r.first * kStride), &mVertices[r.first], int(r.count * kStride));
+            mLastUpload.vertices += r.count;
+        }
+        mLastUpload.ranges = mRanges.size();
+        mLastUpload.bytes = mLastUpload.vertices * kStride;
     }
+    mScene.clearDirty();
 }
 
 void MeshViewport::paintGL() {
@@ -129,37 +211,63 @@ void MeshViewport::paintGL() {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
         glDisable(GL_CULL_FACE);  // open meshes are allowed: their inside must show
-        mProgram->bind();
-        glUniformMatrix4fv(mProgram->uniformLocation("uView"), 1, GL_FALSE, glm::value_ptr(view));
-        glUniformMatrix4fv(mProgram->uniformLocation("uProjection"), 1, GL_FALSE, glm::value_ptr(projection));
+        mMeshProgram->bind();
+        glUniformMatrix4fv(mMeshProgram->uniformLocation("uView"), 1, GL_FALSE, glm::value_ptr(view));
+        glUniformMatrix4fv(mMeshProgram->uniformLocation("uProjection"), 1, GL_FALSE, glm::value_ptr(projection));
         const glm::vec3 light = glm::normalize(style::kLightDirView);
-        mProgram->setUniformValue("uTissueColor", style::kTissue.x, style::kTissue.y, style::kTissue.z);
-        mProgram->setUniformValue("uPressedColor", style::kPressed.x, style::kPressed.y, style::kPressed.z);
-        mProgram->setUniformValue("uLightDirView", light.x, light.y, light.z);
-        mProgram->setUniformValue("uAmbient", style::kAmbient);
-        mProgram->setUniformValue("uWireColor", style::kWire.x, style::kWire.y, style::kWire.z, style::kWireAlpha);
+        mMeshProgram->setUniformValue("uTissueColor", style::kTissue.x, style::kTissue.y, style::kTissue.z);
+        mMeshProgram->setUniformValue("uPressedColor", style::kPressed.x, style::kPressed.y, style::kPressed.z);
+        mMeshProgram->setUniformValue("uLightDirView", light.x, light.y, light.z);
+        mMeshProgram->setUniformValue("uAmbient", style::kAmbient);
+        mMeshProgram->setUniformValue("uRingAmbient", style::kRingAmbient);
+        glUniform3fv(mMeshProgram->uniformLocation("uRingColors"), GLsizei(style::kRingColours.size()),
+                     glm::value_ptr(style::kRingColours[0]));
 
+        const qreal scale = devicePixelRatioF();  // the framebuffer is in device pixels
+        mMeshProgram->setUniformValue("uViewportPx", float(width() * scale), float(height() * scale));
+        mMeshProgram->setUniformValue("uWireframe", mWireframe);
+        mMeshProgram->setUniformValue("uWireColor", style::kWire.x, style::kWire.y, style::kWire.z, style::kWireAlpha);
+
+        // One pass: shading, ring colours and the wireframe (mesh.geom, mesh.frag). The fill is pushed
+        // back a little so that the ghost's edges can be tested against it.
         QOpenGLVertexArrayObject::Binder vaoBinder(&mVao);
-        // Fill pushed back a little so that the wire pass on the same triangles wins the depth test.
-        mProgram->setUniformValue("uWirePass", false);
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.0f, 1.0f);
         glDrawElements(GL_TRIANGLES, mIndexCount, GL_UNSIGNED_INT, nullptr);
         glDisable(GL_POLYGON_OFFSET_FILL);
-        if (mWireframe) {
-            mProgram->setUniformValue("uWirePass", true);
+        vaoBinder.release();
+        mMeshProgram->release();
+
+        if (mShowRestGhost) {
+            mFlatProgram->bind();
+            glUniformMatrix4fv(mFlatProgram->uniformLocation("uView"), 1, GL_FALSE, glm::value_ptr(view));
+            glUniformMatrix4fv(mFlatProgram->uniformLocation("uProjection"), 1, GL_FALSE, glm::value_ptr(projection));
             glEnable(GL_BLEND);
             // Keep destination alpha at 1: the grabbed image must stay opaque.
             glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
             glDepthMask(GL_FALSE);
+            // The rest shape, pushed back further than the tissue: where the two coincide the tissue
+            // wins the depth test and the ghost vanishes; over a dent the rest surface is well in
+            // front and shows, translucent.
+            QOpenGLVertexArrayObject::Binder ghostBinder(&mGhostVao);
+            glDepthFunc(GL_LESS);
+            glPolygonOffset(kGhostOffsetFactor, kGhostOffsetUnits);
+            mFlatProgram->setUniformValue("uOnlyMoved", true);  // only triangles with a moved corner
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glEnable(GL_POLYGON_OFFSET_LINE);
+            mFlatProgram->setUniformValue("uColor", style::kGhost.x, style::kGhost.y, style::kGhost.z, style::kGhostFillAlpha);
+            glDrawElements(GL_TRIANGLES, mIndexCount, GL_UNSIGNED_INT, nullptr);
+            mFlatProgram->setUniformValue("uColor", style::kGhost.x, style::kGhost.y, style::kGhost.z, style::kGhostWireAlpha);
             glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
             glDrawElements(GL_TRIANGLES, mIndexCount, GL_UNSIGNED_INT, nullptr);
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+            glDisable(GL_POLYGON_OFFSET_LINE);
+            glDisable(GL_POLYGON_OFFSET_FILL);
+            glDepthFunc(GL_LEQUAL);
             glDepthMask(GL_TRUE);
             glDisable(GL_BLEND);
+            mFlatProgram->release();
         }
-        vaoBinder.release();
-        mProgram->release();
         glDisable(GL_DEPTH_TEST);
     }
     // The markers: the same QPainter code as the software renderer, on top of the GL picture. Painted
@@ -169,7 +277,7 @@ void MeshViewport::paintGL() {
     QOpenGLPaintDevice device(QSize(qRound(width() * dpr), qRound(height() * dpr)));
     device.setDevicePixelRatio(dpr);
     QPainter painter(&device);
-    paintSceneOverlay(painter, mScene, mCamera, size());
+    paintSceneOverlay(painter, mScene, mCamera, size(), mShowRestGhost);
     countFrame();
 }
 

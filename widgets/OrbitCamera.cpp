@@ -79,6 +79,33 @@ void OrbitCamera::zoom(float steps) {
     mDistanceMm = std::clamp(mDistanceMm * std::pow(kZoomPerStep, steps), minDistanceMm, maxDistanceMm);
 }
 
+float OrbitCamera::mmPerPixelAtTarget(const glm::vec2& sizePx) const {
+    // projection() gives the field of view to the narrower side; pixels are square.
+    const float narrowPx = std::max(std::min(sizePx.x, sizePx.y), 1.0f);
+    return 2.0f * mDistanceMm * std::tan(glm::radians(0.5f * kFieldOfViewDeg)) / narrowPx;
+}
+
+void OrbitCamera::pan(float dxPx, float dyPx, const glm::vec2& sizePx) {
+    const float mmPerPx = mmPerPixelAtTarget(sizePx);
+    const glm::mat4 toWorld = glm::transpose(rotation());
+    const glm::vec3 right = glm::vec3(toWorld * glm::vec4(1.0f, 0.0f, 0.0f, 0.0f));
+    const glm::vec3 up = glm::vec3(toWorld * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
+    // Dragging right moves the picture right: the camera goes left. Screen y points down.
+    mTargetMm += mmPerPx * (-dxPx * right + dyPx * up);
+}
+
+OrbitCamera::Ray OrbitCamera::rayThroughPixel(const glm::vec2& pixel, const glm::vec2& sizePx) const {
+    const glm::vec2 size = glm::max(sizePx, glm::vec2(1.0f));
+    const glm::vec2 ndc{2.0f * pixel.x / size.x - 1.0f, 1.0f - 2.0f * pixel.y / size.y};
+    const glm::mat4 inverse = glm::inverse(projection(size.x / size.y) * view());
+    const glm::vec4 nearPoint = inverse * glm::vec4(ndc, -1.0f, 1.0f);
+    const glm::vec4 farPoint = inverse * glm::vec4(ndc, 1.0f, 1.0f);
+    const glm::vec3 a = glm::vec3(nearPoint) / nearPoint.w, b = glm::vec3(farPoint) / farPoint.w;
+    // From the eye rather than the near plane: nothing in front of the near plane is lost.
+    const glm::vec3 eye = eyeMm();
+    return {eye, glm::normalize(b - a)};
+}
+
 glm::vec3 OrbitCamera::eyeMm() const {
     const float yaw = glm::radians(mYawDeg), pitch = glm::radians(mPitchDeg);
     const glm::vec3 offset{std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)};

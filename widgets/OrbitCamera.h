@@ -30,6 +30,9 @@ public:
     void orbit(float dxPx, float dyPx);
     /// Moves towards (steps > 0) or away from the target; one wheel notch is one step.
     void zoom(float steps);
+    /// Slides the camera and its target sideways by a mouse drag of (dxPx, dyPx) in a viewport of
+    /// `sizePx`, so that what lies at the target's depth follows the mouse. Reset and fit undo it.
+    void pan(float dxPx, float dyPx, const glm::vec2& sizePx);
 
     float yawDeg() const { return mYawDeg; }
     float pitchDeg() const { return mPitchDeg; }
@@ -45,6 +48,15 @@ public:
     /// Where a world point lands in a viewport of `sizePx` (origin top left, y down); nullopt when
     /// it is behind the near plane.
     std::optional<glm::vec2> projectToPixel(const glm::vec3& pointMm, const glm::vec2& sizePx) const;
+    /// The inverse: the ray from the eye through `pixel` (same coordinates as projectToPixel; the
+    /// centre of pixel (i, j) is (i + 0.5, j + 0.5)). The direction is normalised.
+    struct Ray {
+        glm::vec3 originMm;
+        glm::vec3 direction;
+    };
+    Ray rayThroughPixel(const glm::vec2& pixel, const glm::vec2& sizePx) const;
+    /// World size (mm) of one pixel at the target's depth, in a viewport of `sizePx`.
+    float mmPerPixelAtTarget(const glm::vec2& sizePx) const;
 
 private:
     /// Rotation from world to camera axes (x right, y up, -z forward).

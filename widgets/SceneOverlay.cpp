@@ -4,6 +4,9 @@
 #include "widgets/RenderScene.h"
 #include "widgets/SceneStyle.h"
 
+#include <QFont>
+#include <QFontMetricsF>
+#include <QGuiApplication>
 #include <QPainter>
 #include <QPainterPath>
 
@@ -47,15 +50,84 @@ void paintArrow(QPainter& painter, const QPointF& from, const QPointF& to, const
     painter.drawPolygon(head, 3);
 }
 
+QFont legendFont() {
+    QFont font = QGuiApplication::font();
+    font.setPixelSize(11);  // pixels, not points: the same size on every paint device
+    return font;
+}
+
+struct LegendLayout {
+    int rings = 0;  // rows for the touched vertex and rings 1.., then one for the ghost
+    bool ghost = false;
+    double rowPx = 0.0;
+    QRectF box;
+    int rows() const { return rings + (ghost ? 1 : 0); }
+};
+
+constexpr double kLegendPaddingPx = 6.0;
+constexpr double kLegendGapPx = 6.0;  // between swatch and label
+
+LegendLayout legendLayout(const RenderScene& scene, QSize sizePx, bool showRestGhost) {
+    LegendLayout layout;
+    if (scene.empty()) return layout;
+    layout.rings = scene.highestRing() + 1;
+    layout.ghost = showRestGhost;
+    if (layout.rows() == 0) return layout;
+    const QFontMetricsF metrics(legendFont());
+    layout.rowPx = std::max<double>(style::kLegendSwatchPx + 3, metrics.height());
+    double labelPx = 0.0;
+    for (int r = 0; r < layout.rings; ++r) labelPx = std::max(labelPx, metrics.horizontalAdvance(ringLegendLabel(r)));
+    if (layout.ghost) labelPx = std::max(labelPx, metrics.horizontalAdvance(QStringLiteral("rest shape")));
+    const double width = 2 * kLegendPaddingPx + style::kLegendSwatchPx + kLegendGapPx + std::ceil(labelPx);
+    const double height = 2 * kLegendPaddingPx + layout.rows() * layout.rowPx;
+    layout.box = QRectF(style::kLegendMarginPx, sizePx.height() - style::kLegendMarginPx - height, width, height);
+    return layout;
+}
+
+void paintLegend(QPainter& painter, const LegendLayout& layout) {
+    if (layout.rows() == 0) return;
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(0, 0, 0, 150));
+    painter.drawRoundedRect(layout.box, 4.0, 4.0);
+    painter.setFont(legendFont());
+    const double swatch = style::kLegendSwatchPx;
+    for (int row = 0; row < layout.rows(); ++row) {
+        const bool ghostRow = row >= layout.rings;
+        const double top = layout.box.top() + kLegendPaddingPx + row * layout.rowPx;
+        const QRectF swatchRect(layout.box.left() + kLegendPaddingPx, top + 0.5 * (layout.rowPx - swatch), swatch, swatch);
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(ghostRow ? toQColor(style::kGhost, 0.6f) : toQColor(style::kRingColours[std::size_t(row)]));
+        painter.drawRect(swatchRect);
+        painter.setPen(QColor(230, 230, 230));
+        const QRectF labelRect(swatchRect.right() + kLegendGapPx, top, layout.box.right() - swatchRect.right(), layout.rowPx);
+        painter.drawText(labelRect, Qt::AlignLeft | Qt::AlignVCenter,
+                         ghostRow ? QStringLiteral("rest shape") : ringLegendLabel(row));
+    }
+}
+
 }  // namespace
+
+QString ringLegendLabel(int ring) {
+    return ring == 0 ? QStringLiteral("touched") : QStringLiteral("ring %1").arg(ring);
+}
+
+QRectF sceneLegendRect(const RenderScene& scene, QSize sizePx, bool showRestGhost) {
+    return legendLayout(scene, sizePx, showRestGhost).box;
+}
 
 QColor toQColor(const glm::vec3& rgb, float alpha) { return QColor::fromRgbF(rgb.x, rgb.y, rgb.z, alpha); }
 
-void paintSceneOverlay(QPainter& painter, const RenderScene& scene, const OrbitCamera& camera, QSize sizePx) {
-    if (scene.empty() || !scene.hasTool()) return;
-    const glm::vec2 size(float(sizePx.width()), float(sizePx.height()));
+void paintSceneOverlay(QPainter& painter, const RenderScene& scene, const OrbitCamera& camera, QSize sizePx,
+                       bool showRestGhost) {
+    if (scene.empty()) return;
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
+    paintLegend(painter, legendLayout(scene, sizePx, showRestGhost));
+    if (!scene.hasTool()) {
+        painter.restore();
+        return;
+    }
+    const glm::vec2 size(float(sizePx.width()), float(sizePx.height()));
 
     if (scene.touched() != kNoVertex) {
         if (const auto p = camera.projectToPixel(scene.positionsMm()[scene.touched()], size))

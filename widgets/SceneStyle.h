@@ -3,6 +3,10 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
 namespace palpate::style {
 
 inline constexpr glm::vec3 kBackground{0.13f, 0.14f, 0.17f};
@@ -11,6 +15,32 @@ inline constexpr glm::vec3 kTissue{0.86f, 0.56f, 0.52f};
 inline constexpr glm::vec3 kPressed{0.95f, 0.30f, 0.22f};
 /// The ring around the touched vertex: drawn unshaded, so tests can look for this exact colour.
 inline constexpr glm::vec3 kTouchedHighlight{1.0f, 0.85f, 0.1f};
+/// The touched vertex (ring 0) and rings 1..8 of the slope-ring model, each in its own colour: a
+/// triangle takes the colour of the lowest ring among its corners (both renderers), shaded like the
+/// tissue. The hues stay away from the tissue's pinks and reds and from each other (and, as far as
+/// nine hues allow, from the tool and arrow markers), so that tests can tell them apart by
+/// chromaticity. Vertices in no ring (at rest or relaxing) keep the displacement tint.
+inline constexpr std::size_t kRingColourCount = 9;
+inline constexpr std::array<glm::vec3, kRingColourCount> kRingColours{{
+    kTouchedHighlight,      // touched vertex: the same yellow as its marker
+    {0.45f, 0.95f, 0.20f},  // ring 1: lime
+    {0.10f, 0.80f, 0.75f},  // ring 2: teal
+    {0.25f, 0.45f, 1.00f},  // ring 3: blue
+    {0.65f, 0.35f, 1.00f},  // ring 4: violet
+    {1.00f, 0.30f, 0.85f},  // ring 5: magenta
+    {1.00f, 0.60f, 0.05f},  // ring 6: orange
+    {0.55f, 0.80f, 1.00f},  // ring 7: sky
+    {0.95f, 0.95f, 0.55f},  // ring 8: pale yellow
+}};
+/// Whether ring index `ring` (0 = touched) has a colour; kNoRing and anything past ring 8 do not.
+constexpr bool hasRingColour(std::uint8_t ring) { return ring < kRingColourCount; }
+
+/// The rest shape's ghost (on request): a translucent pale surface with brighter edges, shown only
+/// where the rest surface stands off the deformed one (over a dent).
+inline constexpr glm::vec3 kGhost{0.70f, 0.85f, 1.00f};
+inline constexpr float kGhostFillAlpha = 0.22f;
+inline constexpr float kGhostWireAlpha = 0.45f;
+
 inline constexpr glm::vec3 kTool{0.25f, 0.8f, 1.0f};
 inline constexpr glm::vec3 kForceArrow{0.35f, 1.0f, 0.45f};
 inline constexpr glm::vec3 kWire{0.0f, 0.0f, 0.0f};
@@ -19,6 +49,9 @@ inline constexpr float kWireAlpha = 0.22f;
 /// Key light, camera space, pointing from the surface towards the light (upper left, in front).
 inline constexpr glm::vec3 kLightDirView{-0.35f, 0.55f, 0.76f};
 inline constexpr float kAmbient = 0.28f;
+/// Ring colours are lit with more ambient light than the tissue, so that a ring on a face turned away
+/// from the light still reads as its colour.
+inline constexpr float kRingAmbient = 0.55f;
 
 /// Displacement (mm) at which the pressed tint is full; smaller displacements blend.
 inline constexpr float kFullTintDisplacementMm = 0.5f;
@@ -28,5 +61,9 @@ inline constexpr float kToolMarkerRadiusPx = 3.5f;
 /// Force arrow length per newton as a fraction of the scene's bounding-box diagonal, and its cap.
 inline constexpr float kArrowDiagonalsPerN = 0.04f;
 inline constexpr float kArrowMaxDiagonals = 0.3f;
+
+/// The ring legend (bottom left): swatch size and margins in logical pixels.
+inline constexpr int kLegendSwatchPx = 10;
+inline constexpr int kLegendMarginPx = 8;
 
 }  // namespace palpate::style

@@ -1,6 +1,7 @@
 #pragma once
 // The viewport drawn with QPainter: flat-shaded triangles sorted back to front (painter's algorithm),
-// with the same camera, colours and markers as MeshViewport. Used where OpenGL is missing (Qt's
+// each in the colour of its lowest ring, the rest-shape ghost on request, with the same camera,
+// colours, markers and picking as MeshViewport. Used where OpenGL is missing (Qt's
 // offscreen platform, widget tests, remote sessions) or when --software-render is given.
 
 #include "widgets/Viewport.h"
@@ -42,7 +43,9 @@ private:
     };
     std::vector<ProjectedVertex> mProjected;
     std::vector<glm::vec3> mViewMm;
-    std::vector<std::pair<float, std::uint32_t>> mOrder;  // (camera-space depth, triangle)
+    /// Marks a ghost (rest-shape) triangle in mOrder.
+    static constexpr std::uint32_t kGhostBit = 0x80000000u;
+    std::vector<std::pair<float, std::uint32_t>> mOrder;  // (camera-space depth, triangle | kGhostBit)
 };
 
 }  // namespace palpate

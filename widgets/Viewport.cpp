@@ -2,6 +2,7 @@
 
 #include <QMouseEvent>
 #include <QWheelEvent>
+#include <QWidget>
 
 namespace palpate {
 
@@ -30,6 +31,22 @@ void Viewport::setWireframe(bool on) {
     sceneChanged(false);
 }
 
+void Viewport::setShowRestGhost(bool on) {
+    mShowRestGhost = on;
+    sceneChanged(false);
+}
+
+std::optional<VertexId> Viewport::pickVertex(QPoint pixel) {
+    return pickVertexAt(QPointF(pixel) + QPointF(0.5, 0.5), widget()->size());
+}
+
+std::optional<VertexId> Viewport::pickVertexAt(QPointF pointPx, QSize sizePx) const {
+    if (mScene.empty() || sizePx.isEmpty()) return std::nullopt;
+    const auto ray = mCamera.rayThroughPixel(glm::vec2(float(pointPx.x()), float(pointPx.y())),
+                                             glm::vec2(float(sizePx.width()), float(sizePx.height())));
+    return mScene.pick(ray.originMm, ray.direction);
+}
+
 void Viewport::resetCamera() {
     mCamera.reset(mScene.positionsMm());
     sceneChanged(false);
@@ -46,10 +63,16 @@ bool Viewport::handleMousePress(const QMouseEvent& event) {
 }
 
 bool Viewport::handleMouseMove(const QMouseEvent& event) {
-    if (!(event.buttons() & Qt::LeftButton)) return false;
+    const Qt::MouseButtons buttons = event.buttons();
+    if (!(buttons & (Qt::LeftButton | Qt::RightButton | Qt::MiddleButton))) return false;
     const QPointF d = event.position() - mLastDragPx;
     mLastDragPx = event.position();
-    mCamera.orbit(float(d.x()), float(d.y()));
+    if (buttons & Qt::LeftButton) {
+        mCamera.orbit(float(d.x()), float(d.y()));
+    } else {
+        const QSize size = widget()->size();
+        mCamera.pan(float(d.x()), float(d.y()), glm::vec2(float(size.width()), float(size.height())));
+    }
     return true;
 }
 

@@ -7,10 +7,13 @@
 #include "widgets/RenderScene.h"
 
 #include <QImage>
+#include <QPoint>
 #include <QPointF>
+#include <QSize>
 #include <QString>
 
 #include <cstdint>
+#include <optional>
 
 class QMouseEvent;
 class QWheelEvent;
@@ -40,10 +43,20 @@ public:
 
     void setWireframe(bool on);
     bool wireframe() const { return mWireframe; }
-    /// Default view angles, framing the mesh.
+    /// Draws the rest shape as a translucent ghost where the tissue is pushed away from it.
+    void setShowRestGhost(bool on);
+    bool showRestGhost() const { return mShowRestGhost; }
+    /// Default view angles, framing the mesh (undoes pans).
     void resetCamera();
-    /// Frames the mesh from the current angles.
+    /// Frames the mesh from the current angles (undoes pans).
     void fitCamera();
+
+    /// The vertex under `pixel` (widget coordinates, logical pixels): the nearest triangle the ray
+    /// through the pixel's centre hits, and its corner nearest to the hit. The same camera and
+    /// positions in both renderers, so both pick the same vertex. nullopt over the background.
+    std::optional<VertexId> pickVertex(QPoint pixel);
+    /// The same for a point in a viewport of `sizePx` (sub-pixel: no half-pixel shift is added).
+    std::optional<VertexId> pickVertexAt(QPointF pointPx, QSize sizePx) const;
 
     const OrbitCamera& camera() const { return mCamera; }
     const RenderScene& scene() const { return mScene; }
@@ -54,8 +67,8 @@ protected:
     /// Schedules a repaint. `topologyChanged`: the triangles changed (GPU buffers must be rebuilt).
     virtual void sceneChanged(bool topologyChanged) = 0;
 
-    // Event helpers for the widgets: left-drag orbits, the wheel zooms. Each returns whether the
-    // view changed (the widget then repaints).
+    // Event helpers for the widgets: left-drag orbits, right- or middle-drag pans, the wheel zooms.
+    // Each returns whether the view changed (the widget then repaints).
     bool handleMousePress(const QMouseEvent& event);
     bool handleMouseMove(const QMouseEvent& event);
     bool handleWheel(const QWheelEvent& event);
@@ -66,6 +79,7 @@ protected:
     RenderScene mScene;
     OrbitCamera mCamera;
     bool mWireframe = true;
+    bool mShowRestGhost = false;
 
 private:
     QPointF mLastDragPx;

@@ -33,17 +33,64 @@ std::string HapticSession::loadMesh(const std::string& path) {
     auto loaded = loadTissueMesh(path, error);
     if (!loaded) return error;
     auto mesh = std::make_shared<const TissueMesh>(std::move(*loaded));
-    std::unique_ptr<HapticScene> scene;
-    try {
-        // The loop gets its own copy; ours stays for drawing (the loop may free its scene any time after a swap).
-        scene = HapticScene::createSlopeRing(TissueMesh(*mesh), SlopeRingParams{}, SlopeRingMethod::Palpate);
-    } catch (const std::exception& e) {
-        return path + ": " + e.what();
-    }
+    // The loop gets its own copy; ours stays for drawing (the loop may free its scene any time after a swap).
+    auto scene = makeScene(*mesh, error);
+    if (!scene) return path + ": " + error;
     auto device = openDeviceFor(mDeviceUri, *mesh, error);
     if (!device) return error;
     SceneRecord record{mesh, path, scene->id()};
     return handOver(std::move(record), std::move(scene), std::move(device));
+}
+
+std::unique_ptr<HapticScene> HapticSession::makeScene(const TissueMesh& mesh, std::string& error) const {
+    try {
+        return HapticScene::createSlopeRing(TissueMesh(mesh), mPreset.params, mPreset.method, mPreset.octree);
+    } catch (const std::exception& e) {
+        error = e.what();
+        return nullptr;
+    }
+}
+
+std::string HapticSession::applyPreset(const TissuePreset& preset) {
+    const TissuePreset before = mPreset;
+    mPreset = preset;
+    if (!mLoop) {
+        mDef.rateHz = preset.hapticRateHz;
+        return {};
+    }
+    if (preset.hapticRateHz != mDef.rateHz) {
+        // The period is fixed for a loop's life: stop this one and start a new one on the same mesh.
+        const SceneRecord base = latest();
+        mDef.rateHz = preset.hapticRateHz;
+        stop();
+        mLoop.reset();
+        mPending = SceneRecord{};
+        std::string error;
+        auto scene = makeScene(*base.mesh, error);
+        if (!scene) return base.path + ": " + error;
+        auto device = openDeviceFor(mDeviceUri, *base.mesh, error);
+        if (!device) return error;
+        SceneRecord record{base.mesh, base.path, scene->id()};
+        return handOver(std::move(record), std::move(scene), std::move(device));
+    }
+    const bool needsScene = preset.method != before.method || preset.octree.maxDepth != before.octree.maxDepth ||
+                            preset.octree.leafCapacity != before.octree.leafCapacity ||
+                            (preset.method != SlopeRingMethod::Palpate && preset.params.ringCount != before.params.ringCount);
+    if (!needsScene) return mLoop->setParams(preset.params);
+    const SceneRecord base = latest();
+    std::string error;
+    auto scene = makeScene(*base.mesh, error);
+    if (!scene) return base.path + ": " + error;
+    const std::uint64_t sceneId = scene->id();
+    if (std::string problem = mLoop->swapScene(std::move(scene)); !problem.empty()) return problem;
+    mPending = SceneRecord{base.mesh, base.path, sceneId};  // drawn from its first snapshot
+    return {};
+}
+
+std::string HapticSession::disconnectDevice() {
+    if (!mLoop) return {};
+    // A simulated device that was never opened: Disconnected, it reads nothing and renders nothing.
+    return mLoop->swapDevice(std::make_unique<SimulatedDevice>(SimTrajectory::PressHold));
 }
 
 std::string HapticSession::setDevice(const std::string& uri) {
@@ -64,13 +111,9 @@ std::string HapticSession::setDevice(const std::string& uri) {
 std::string HapticSession::restart() {
     if (!mLoop) return "no mesh is loaded";
     const SceneRecord base = latest();
-    std::unique_ptr<HapticScene> scene;
-    try {
-        scene = HapticScene::createSlopeRing(TissueMesh(*base.mesh), SlopeRingParams{}, SlopeRingMethod::Palpate);
-    } catch (const std::exception& e) {
-        return base.path + ": " + e.what();
-    }
     std::string error;
+    auto scene = makeScene(*base.mesh, error);
+    if (!scene) return base.path + ": " + error;
     auto device = openDeviceFor(mDeviceUri, *base.mesh, error);
     if (!device) return error;
     SceneRecord record{base.mesh, base.path, scene->id()};
@@ -147,6 +190,7 @@ HapticSession::Observation HapticSession::observe() {
     mObserved.paused = s.paused;
     mObserved.deviceState = s.deviceState;
     mObserved.safetyPhase = s.safetyPhase;
+    mObserved.safetyFlags = s.safetyFlags;
     mObserved.toolTipMm = s.toolTipMm;
     mObserved.commandedForceN = s.commandedForceN;
     mObserved.forceN = s.forceN;

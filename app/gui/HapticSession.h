@@ -7,6 +7,7 @@
 
 #include "app/gui/SnapshotObserver.h"
 #include "engine/HapticLoop.h"
+#include "engine/TissuePreset.h"
 #include "engine/TissueMesh.h"
 
 #include <chrono>
@@ -34,6 +35,7 @@ struct ObservedLoop {
     bool paused = false;
     DeviceState deviceState = DeviceState::Disconnected;
     SafetyPhase safetyPhase = SafetyPhase::HoldOff;
+    std::uint32_t safetyFlags = 0;
     glm::vec3 toolTipMm{0.0f};
     glm::vec3 commandedForceN{0.0f};
     glm::vec3 forceN{0.0f};
@@ -65,6 +67,14 @@ public:
     /// Opens a device for `uri`, aims it at the current mesh and swaps it in. Before the first mesh
     /// the URI is only checked and remembered. "" or an error naming the URI; the old device stays.
     std::string setDevice(const std::string& uri);
+    /// Makes `preset` (already validated) the parameters of every scene from now on. The running
+    /// scene gets them at a tick boundary when the model can take them as they are; a new model,
+    /// ring count of the paper's methods or octree means a new scene of the same mesh; a new
+    /// haptic rate means a new loop. "" or why not.
+    std::string applyPreset(const TissuePreset& preset);
+    const TissuePreset& preset() const { return mPreset; }
+    /// Swaps in a device that is not connected (zero force, state Disconnected) until setDevice.
+    std::string disconnectDevice();
     /// A fresh device of the same URI and a fresh scene of the same mesh ("" or why not).
     std::string restart();
     /// Pause: the model gets no tool position (the tissue relaxes, zero force); the thread runs on.
@@ -104,6 +114,8 @@ public:
     double periodS() const { return 1.0 / mDef.rateHz; }
 
 private:
+    TissuePreset mPreset;
+    std::unique_ptr<HapticScene> makeScene(const TissueMesh& mesh, std::string& error) const;
     struct SceneRecord {
         std::shared_ptr<const TissueMesh> mesh;  // our copy: what is drawn for this scene
         std::string path;

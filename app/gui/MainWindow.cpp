@@ -1,11 +1,21 @@
 #include "app/gui/MainWindow.h"
 
 #include "device/DeviceUri.h"
+#include "engine/HapticSnapshot.h"
+#include "engine/TissuePreset.h"
+#include "widgets/DevicePanel.h"
+#include "widgets/ParameterPanel.h"
 
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QMimeData>
+#include <QSettings>
+#include <QUndoStack>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QKeySequence>
@@ -26,6 +36,13 @@ namespace {
 /// The simulated devices the Device menu offers (listDeviceSchemes() also has forms that need an
 /// argument, or a viewport that steers them).
 constexpr std::array<const char*, 4> kMenuDevices = {"sim:press", "sim:stroke", "sim:scan", "sim:sine"};
+constexpr int kMaxRecentFiles = 8;
+const char* const kRecentFilesKey = "recentFiles";
+
+bool isMeshFile(const QString& path) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    return suffix == "obj" || suffix == "off" || suffix == "ply" || suffix == "stl" || suffix == "om";
+}
 
 QLabel* addStatusField(QStatusBar* bar, const char* objectName, const QString& toolTip) {
     auto* label = new QLabel(bar);
@@ -44,7 +61,10 @@ MainWindow::MainWindow(RendererChoice renderer, LoopMode mode, QWidget* parent)
     mViewport = createViewport(renderer, this, &mRendererReason);
     setCentralWidget(mViewport->widget());
     createStatusBar();
+    createDocks();
     createMenus();
+    setAcceptDrops(true);
+    restoreWindowState();
 
     // The observer: reads the newest snapshot (only if a new one was published) and repaints. In
     // stepped mode nothing ticks between advanceTicks() calls, which observe themselves.
@@ -67,17 +87,198 @@ void MainWindow::shutDown() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    saveWindowState();
     shutDown();
     QMainWindow::closeEvent(event);
+}
+
+void MainWindow::createDocks() {
+    setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+    mParameterPanel = new ParameterPanel(this);
+    mParameterPanel->setPreset(mSession->preset());
+    mParameterDock = new QDockWidget(tr("Parameters"), this);
+    mParameterDock->setObjectName(QStringLiteral("parametersDock"));
+    mParameterDock->setWidget(mParameterPanel);
+    addDockWidget(Qt::RightDockWidgetArea, mParameterDock);
+    connect(mParameterPanel, &ParameterPanel::applyRequested, this, [this](const TissuePreset& preset) {
+        if (const QString error = applyPreset(preset); !error.isEmpty())
+            QMessageBox::warning(this, tr("Parameters not applied"), error);
+    });
+
+    mDevicePanel = new DevicePanel(this);
+    mDeviceDock = new QDockWidget(tr("Device"), this);
+    mDeviceDock->setObjectName(QStringLiteral("deviceDock"));
+    mDeviceDock->setWidget(mDevicePanel);
+    addDockWidget(Qt::RightDockWidgetArea, mDeviceDock);
+    tabifyDockWidget(mParameterDock, mDeviceDock);
+    mParameterDock->raise();
+    connect(mDevicePanel, &DevicePanel::connectRequested, this, [this](const QString& uri) {
+        if (const QString error = setDeviceUri(uri); !error.isEmpty()) mDevicePanel->showError(error);
+    });
+    connect(mDevicePanel, &DevicePanel::disconnectRequested, this, [this] {
+        if (const std::string error = mSession->disconnectDevice(); !error.empty())
+            mDevicePanel->showError(QString::fromStdString(error));
+        else
+            mDevicePanel->setDisconnected();
+    });
+
+    mStatusDetails = new QLabel(this);
+    mStatusDetails->setObjectName(QStringLiteral("statusDetails"));
+    mStatusDetails->setTextFormat(Qt::PlainText);
+    mStatusDetails->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    mStatusDetails->setMargin(6);
+    mStatusDock = new QDockWidget(tr("Status"), this);
+    mStatusDock->setObjectName(QStringLiteral("statusDock"));
+    mStatusDock->setWidget(mStatusDetails);
+    addDockWidget(Qt::RightDockWidgetArea, mStatusDock);
+    mPanelSnapshot = std::make_unique<HapticSnapshot>();
+}
+
+QString MainWindow::applyPreset(const TissuePreset& preset) {
+    return QString::fromStdString(mSession->applyPreset(preset));
+}
+
+QString MainWindow::loadPresetFile(const QString& path) {
+    QString error;
+    if (!mParameterPanel->loadPresetFile(path, &error)) return error.isEmpty() ? path + tr(": not loaded") : error;
+    return applyPreset(mParameterPanel->preset());
+}
+
+QStringList MainWindow::recentFiles() const { return QSettings().value(kRecentFilesKey).toStringList(); }
+
+void MainWindow::addRecentFile(const QString& path) {
+    QStringList files = recentFiles();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    files.removeAll(absolute);
+    files.prepend(absolute);
+    while (files.size() > kMaxRecentFiles) files.removeLast();
+    QSettings().setValue(kRecentFilesKey, files);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    if (!mRecentMenu) return;
+    mRecentMenu->clear();
+    const QStringList files = recentFiles();
+    for (int i = 0; i < files.size(); ++i) {
+        const QString path = files[i];
+        QAction* action = mRecentMenu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()));
+        action->setToolTip(path);
+        connect(action, &QAction::triggered, this, [this, path] {
+            if (const QString error = loadMesh(path); !error.isEmpty())
+                QMessageBox::warning(this, tr("Cannot open mesh"), error);
+        });
+    }
+    mRecentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::restoreWindowState() {
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoreState(settings.value("window/state").toByteArray());
+}
+
+void MainWindow::saveWindowState() {
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    for (const QUrl& url : event->mimeData()->urls())
+        if (url.isLocalFile() && isMeshFile(url.toLocalFile())) {
+            event->acceptProposedAction();
+            return;
+        }
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    for (const QUrl& url : event->mimeData()->urls()) {
+        if (!url.isLocalFile() || !isMeshFile(url.toLocalFile())) continue;
+        event->acceptProposedAction();
+        if (const QString error = loadMesh(url.toLocalFile()); !error.isEmpty())
+            QMessageBox::warning(this, tr("Cannot open mesh"), error);
+        return;
+    }
+}
+
+void MainWindow::showAbout() {
+    QMessageBox::about(
+        this, tr("About Palpate"),
+        tr("<h3>Palpate %1</h3>"
+           "<p>Haptic soft-tissue deformation: the slope-ring method of Ahmad, Sulaiman and Rambli, "
+           "made exact and measured.</p>"
+           "<p>Built with these libraries (Debian 12 packages):</p><ul>"
+           "<li>Qt %2 (Widgets, OpenGL): LGPL-3.0</li>"
+           "<li>OpenMesh: BSD-3-Clause</li>"
+           "<li>GLM: MIT (Happy Bunny licence)</li>"
+           "<li>nlohmann/json: MIT</li>"
+           "<li>GoogleTest and Google Benchmark (tests only): BSD-3-Clause, Apache-2.0</li></ul>")
+            .arg(QStringLiteral(PALPATE_VERSION_STRING), QString::fromLatin1(qVersion())));
+}
+
+void MainWindow::updateDocks() {
+    const ObservedLoop& o = mSession->observed();
+    HapticSnapshot& s = *mPanelSnapshot;
+    s.publishCount = o.publishCount;
+    s.tick = o.tick;
+    s.deviceState = o.deviceState;
+    s.safetyPhase = o.safetyPhase;
+    s.safetyFlags = o.safetyFlags;
+    s.toolTipMm = o.toolTipMm;
+    s.forceN = o.forceN;
+    s.commandedForceN = o.commandedForceN;
+    s.contact = o.contact;
+    s.touched = o.touched;
+    s.paused = o.paused;
+    s.counters = o.counters;
+    mDevicePanel->updateFromSnapshot(s);
+    const LoopCounters& c = o.counters;
+    mStatusDetails->setText(
+        tr("Haptic rate: %1 Hz (loop says %2 Hz)\nTicks: %3\nMissed deadlines: %4\nOverruns: %5\n"
+           "Tick compute: last %6 µs, max %7 µs\nJitter: last %8 µs, max %9 µs\nScheduling: %10\n"
+           "GUI: %11 fps\nDisplaced vertices: %12\nPaused: %13")
+            .arg(mHapticRateHz, 0, 'f', 0)
+            .arg(c.achievedRateHz, 0, 'f', 0)
+            .arg(c.ticks)
+            .arg(c.missedDeadlines)
+            .arg(c.overruns)
+            .arg(c.lastComputeUs, 0, 'f', 1)
+            .arg(c.maxComputeUs, 0, 'f', 1)
+            .arg(c.lastJitterUs, 0, 'f', 1)
+            .arg(c.maxJitterUs, 0, 'f', 1)
+            .arg(c.schedFifo ? tr("SCHED_FIFO") : tr("normal (SCHED_FIFO not permitted)"))
+            .arg(mFrameRateFps, 0, 'f', 0)
+            .arg(o.displacedTotal)
+            .arg(o.paused ? tr("yes") : tr("no")));
 }
 
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QAction* open = file->addAction(tr("&Open Mesh…"), this, &MainWindow::openMeshDialog);
     open->setShortcut(QKeySequence::Open);
+    mRecentMenu = file->addMenu(tr("Open &Recent"));
+    rebuildRecentMenu();
+    file->addSeparator();
+    QAction* openPreset = mParameterPanel->openPresetAction();
+    openPreset->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
+    file->addAction(openPreset);
+    QAction* savePreset = mParameterPanel->savePresetAction();
+    savePreset->setShortcut(QKeySequence::Save);
+    file->addAction(savePreset);
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));  // QKeySequence::Quit is empty on some platforms
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = mParameterPanel->undoAction();
+    QAction* redo = mParameterPanel->redoAction();
+    undo->setShortcutContext(Qt::WindowShortcut);
+    redo->setShortcutContext(Qt::WindowShortcut);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addAction(tr("&Apply Parameters"), QKeySequence(Qt::CTRL | Qt::Key_Return), mParameterPanel,
+                    &ParameterPanel::apply);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Reset Camera"), QKeySequence(Qt::Key_R), this, [this] { mViewport->resetCamera(); });
@@ -86,6 +287,10 @@ void MainWindow::createMenus() {
                                        [this](bool on) { mViewport->setWireframe(on); });
     mWireframeAction->setCheckable(true);
     mWireframeAction->setChecked(mViewport->wireframe());
+    view->addSeparator();
+    view->addAction(mParameterDock->toggleViewAction());
+    view->addAction(mDeviceDock->toggleViewAction());
+    view->addAction(mStatusDock->toggleViewAction());
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     mPlayAction = simulation->addAction(tr("&Pause"), QKeySequence(Qt::Key_Space), this,
@@ -117,6 +322,10 @@ void MainWindow::createMenus() {
         });
     }
     checkCurrentDevice();
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About Palpate"), this, &MainWindow::showAbout);
+    help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 }
 
 void MainWindow::createStatusBar() {
@@ -145,6 +354,13 @@ void MainWindow::checkCurrentDevice() {
 QString MainWindow::loadMesh(const QString& path) {
     const std::string error = mSession->loadMesh(path.toStdString());
     if (!error.empty()) return QString::fromStdString(error);
+    addRecentFile(path);
+    if (!mDevicePanel->isConnected()) {
+        const QString uri = QString::fromStdString(mSession->deviceUri());
+        std::string ignored;
+        const auto device = createDeviceFromUri(mSession->deviceUri(), ignored);  // for its spec only
+        mDevicePanel->setConnected(uri, device ? device->spec() : DeviceSpec{});
+    }
     showDrawnMesh();  // the first mesh is drawn at once; a later one once the loop runs it
     showStatus();
     return {};
@@ -153,6 +369,11 @@ QString MainWindow::loadMesh(const QString& path) {
 QString MainWindow::setDeviceUri(const QString& uri) {
     const std::string error = mSession->setDevice(uri.toStdString());
     checkCurrentDevice();
+    if (error.empty()) {
+        std::string ignored;
+        const auto device = createDeviceFromUri(uri.toStdString(), ignored);  // for its spec only
+        mDevicePanel->setConnected(uri, device ? device->spec() : DeviceSpec{});
+    }
     showStatus();
     return QString::fromStdString(error);
 }
@@ -209,6 +430,7 @@ void MainWindow::measureRates() {
 }
 
 void MainWindow::showStatus() {
+    updateDocks();
     const QString renderer = rendererName(mViewport->kind());
     const auto& mesh = mSession->drawnMesh();
     if (!mesh) {

@@ -18,9 +18,16 @@
 
 class QAction;
 class QActionGroup;
+class QDockWidget;
 class QLabel;
+class QMenu;
 
 namespace palpate {
+
+class DevicePanel;
+class ParameterPanel;
+struct HapticSnapshot;
+struct TissuePreset;
 
 class MainWindow final : public QMainWindow {
     Q_OBJECT
@@ -46,6 +53,14 @@ public:
     QString restartSimulation();
     /// Stepped mode: runs `ticks` haptic ticks now, then shows the newest snapshot (what --ticks does).
     void advanceTicks(int ticks);
+    /// Loads a tissue preset into the Parameters panel and applies it. "" or the error (naming the key).
+    QString loadPresetFile(const QString& path);
+    /// Sends a validated preset to the loop (what the Parameters panel's Apply does). "" or why not.
+    QString applyPreset(const TissuePreset& preset);
+    ParameterPanel* parameterPanel() const { return mParameterPanel; }
+    DevicePanel* devicePanel() const { return mDevicePanel; }
+    /// Recent mesh files, newest first (kept in QSettings).
+    QStringList recentFiles() const;
     /// Play/Pause: resumes or pauses the loop (paused, the tissue relaxes and the force is zero).
     void setPlaying(bool playing);
     bool isPlaying() const { return !mSession->pauseRequested(); }
@@ -63,6 +78,8 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private slots:
     void openMeshDialog();
@@ -70,7 +87,14 @@ private slots:
     void measureRates();
 
 private:
+    void createDocks();
     void createMenus();
+    void addRecentFile(const QString& path);
+    void rebuildRecentMenu();
+    void restoreWindowState();
+    void saveWindowState();
+    void showAbout();
+    void updateDocks();
     void createStatusBar();
     void present(HapticSession::Observation observation);
     void showDrawnMesh();
@@ -108,6 +132,14 @@ private:
     QAction* mPlayAction = nullptr;
     QAction* mWireframeAction = nullptr;
     QActionGroup* mDeviceGroup = nullptr;
+    ParameterPanel* mParameterPanel = nullptr;
+    DevicePanel* mDevicePanel = nullptr;
+    QLabel* mStatusDetails = nullptr;
+    QDockWidget* mParameterDock = nullptr;
+    QDockWidget* mDeviceDock = nullptr;
+    QDockWidget* mStatusDock = nullptr;
+    QMenu* mRecentMenu = nullptr;
+    std::unique_ptr<HapticSnapshot> mPanelSnapshot;  // what the Device panel reads (large: on the heap)
 };
 
 }  // namespace palpate

@@ -2,6 +2,7 @@
 // 2 bad usage.
 #include "app/cli/DefaultScene.h"
 #include "app/gui/MainWindow.h"
+#include "app/gui/ViewportBenchmark.h"
 #include "device/DeviceUri.h"
 
 #include <QApplication>
@@ -86,7 +87,18 @@ int main(int argc, char** argv) {
                                   QStringLiteral("MS"));
     grabOption.setFlags(QCommandLineOption::HiddenFromHelp);
     parser.addOptions({meshOption, deviceOption, softwareOption, screenshotOption, ticksOption, headlessOption, grabOption});
+    // --benchmark-viewport [--seconds S]: frame times while deforming a 100k-vertex sphere (ViewportBenchmark.h).
+    const QCommandLineOption benchmarkOption(
+        QStringLiteral("benchmark-viewport"),
+        QStringLiteral("Deform a generated 100 000-vertex sphere with sim:stroke, redraw the viewport as fast as it "
+                       "goes for --seconds, print frame times, exit."));
+    const QCommandLineOption secondsOption(QStringLiteral("seconds"),
+                                           QStringLiteral("Length of --benchmark-viewport (default 5)."),
+                                           QStringLiteral("S"), QStringLiteral("5"));
+    parser.addOptions({benchmarkOption, secondsOption});
     parser.process(app);  // exits with 0 on --help/--version and with 1 on unknown options
+    if (parser.isSet(benchmarkOption))
+        return palpate::runViewportBenchmark(parser.value(secondsOption), parser.isSet(softwareOption));
 
     bool ticksOk = false;
     const int ticks = parser.value(ticksOption).toInt(&ticksOk);

@@ -1,29 +1,38 @@
 #version 330 core
 // Smooth shading with a camera-fixed key light (the same light as the software renderer, plus a
-// highlight), or a flat colour for the wireframe pass.
-in vec3 vPositionView;
-in vec3 vNormalView;
-in float vPressed;
+// highlight). Inside the rings the ring colour replaces the tissue colour; elsewhere the
+// displacement tints it. The wireframe is blended in near the triangle's edges.
+in vec3 fPositionView;
+in vec3 fNormalView;
+in float fPressed;
+flat in vec4 fRingColor;
+noperspective in vec3 fEdgePx;
 
-uniform bool uWirePass;
-uniform vec4 uWireColor;
 uniform vec3 uTissueColor;
 uniform vec3 uPressedColor;
 uniform vec3 uLightDirView;  // normalised, towards the light
 uniform float uAmbient;
+uniform float uRingAmbient;  // more ambient inside the rings: their colours must read on any face
+uniform bool uWireframe;
+uniform vec4 uWireColor;     // rgb, and the opacity of a line's centre
 
 out vec4 fragColor;
 
 void main() {
-    if (uWirePass) {
-        fragColor = uWireColor;
-        return;
-    }
-    vec3 toEye = normalize(-vPositionView);
-    vec3 n = normalize(vNormalView);
+    vec3 toEye = normalize(-fPositionView);
+    vec3 n = normalize(fNormalView);
     if (dot(n, toEye) < 0.0) n = -n;  // two-sided, whatever the winding: open meshes show their inside
     float diffuse = max(dot(n, uLightDirView), 0.0);
     float specular = 0.18 * pow(max(dot(n, normalize(uLightDirView + toEye)), 0.0), 40.0);
-    vec3 base = mix(uTissueColor, uPressedColor, clamp(vPressed, 0.0, 1.0));
-    fragColor = vec4(base * (uAmbient + (1.0 - uAmbient) * diffuse) + vec3(specular), 1.0);
+    vec3 base = mix(uTissueColor, uPressedColor, clamp(fPressed, 0.0, 1.0));
+    base = mix(base, fRingColor.rgb, fRingColor.a);
+    float ambient = mix(uAmbient, uRingAmbient, fRingColor.a);
+    vec3 color = base * (ambient + (1.0 - ambient) * diffuse) + vec3(specular);
+    if (uWireframe) {
+        // A pixel wide (each side of an edge draws its half), fading out over the next half pixel.
+        float d = min(fEdgePx.x, min(fEdgePx.y, fEdgePx.z));
+        float line = 1.0 - smoothstep(0.5, 1.0, d);
+        color = mix(color, uWireColor.rgb, uWireColor.a * line);
+    }
+    fragColor = vec4(color, 1.0);
 }

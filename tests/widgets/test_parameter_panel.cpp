@@ -1,0 +1,443 @@
+// The parameters panel under QT_QPA_PLATFORM=offscreen (main() is in test_viewport.cpp): live
+// validation with the engine's validators (slope order on magnitudes, the loop-gain bound on both
+// sides, the paper's range under a raised limit), rows that follow the ring count, Apply, undo/redo,
+// and preset files (a bad key is named and changes nothing; save then load round-trips).
+#include "widgets/ParameterCommands.h"
+#include "widgets/ParameterPanel.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QImage>
+#include <QLabel>
+#include <QPixmap>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+using namespace palpate;
+
+namespace {
+
+QDoubleSpinBox* slopeSpin(ParameterPanel& panel, int ring) {
+    return panel.findChild<QDoubleSpinBox*>(QStringLiteral("slopeSpin%1").arg(ring));
+}
+QDoubleSpinBox* doubleField(ParameterPanel& panel, const char* name) {
+    return panel.findChild<QDoubleSpinBox*>(QLatin1String(name));
+}
+QSpinBox* intField(ParameterPanel& panel, const char* name) { return panel.findChild<QSpinBox*>(QLatin1String(name)); }
+QPushButton* applyButton(ParameterPanel& panel) { return panel.findChild<QPushButton*>(QStringLiteral("applyButton")); }
+QLabel* label(ParameterPanel& panel, const char* name) { return panel.findChild<QLabel*>(QLatin1String(name)); }
+
+bool visibleIn(QWidget* widget, ParameterPanel& panel) { return widget->isVisibleTo(&panel); }
+
+}  // namespace
+
+TEST(ParameterPanel, DefaultPresetIsValidAndApplyEnabled) {
+    ParameterPanel panel;
+    EXPECT_TRUE(samePreset(panel.preset(), TissuePreset{}));
+    EXPECT_TRUE(panel.isValid());
+    EXPECT_TRUE(panel.problems().isEmpty());
+    ASSERT_NE(applyButton(panel), nullptr);
+    EXPECT_TRUE(applyButton(panel)->isEnabled());
+    EXPECT_FALSE(visibleIn(label(panel, "messageLabel"), panel));
+    EXPECT_EQ(panel.undoStack()->count(), 0);
+    // Automatic relaxation solves the contact in one tick: alpha (1 + gain) = 1, margin 50 %.
+    EXPECT_TRUE(label(panel, "stabilityLabel")->text().contains(QStringLiteral("< 2: stability margin 50")))
+        << label(panel, "stabilityLabel")->text().toStdString();
+}
+
+TEST(ParameterPanel, SlopeAboveTheInnerOneDisablesApplyAndNamesBoth) {
+    ParameterPanel panel;
+    QSignalSpy validity(&panel, &ParameterPanel::validityChanged);
+    slopeSpin(panel, 1)->setValue(0.7);  // |m2| > |m1| = 0.6
+
+    EXPECT_FALSE(panel.isValid());
+    EXPECT_FALSE(applyButton(panel)->isEnabled());
+    ASSERT_EQ(validity.count(), 1);
+    EXPECT_FALSE(validity.at(0).at(0).toBool());
+    QLabel* message = label(panel, "messageLabel");
+    EXPECT_TRUE(visibleIn(message, panel));
+    EXPECT_TRUE(message->text().contains(QStringLiteral("|m1|"))) << message->text().toStdString();
+    EXPECT_TRUE(message->text().contains(QStringLiteral("|m2|"))) << message->text().toStdString();
+    EXPECT_TRUE(slopeSpin(panel, 1)->property("invalid").toBool());
+    EXPECT_TRUE(slopeSpin(panel, 0)->property("invalid").toBool());
+    EXPECT_FALSE(slopeSpin(panel, 2)->property("invalid").toBool());
+
+    slopeSpin(panel, 1)->setValue(0.5);  // order restored
+    EXPECT_TRUE(panel.isValid());
+    EXPECT_TRUE(applyButton(panel)->isEnabled());
+    EXPECT_FALSE(visibleIn(message, panel));
+    EXPECT_FALSE(slopeSpin(panel, 1)->property("invalid").toBool());
+    ASSERT_EQ(validity.count(), 2);
+    EXPECT_TRUE(validity.at(1).at(0).toBool());
+}
+
+TEST(ParameterPanel, SlopeRowsFollowTheRingCount) {
+    ParameterPanel panel;
+    QSpinBox* rings = intField(panel, "ringCountSpin");
+    ASSERT_NE(rings, nullptr);
+    EXPECT_EQ(rings->minimum(), 0);
+    EXPECT_EQ(rings->maximum(), kMaxRings);
+    auto expectRows = [&](int count) {
+        for (int r = 0; r <= kMaxRings; ++r) {
+            EXPECT_EQ(visibleIn(slopeSpin(panel, r), panel), r <= count) << "ring count " << count << ", row " << r;
+            QLabel* rowLabel = label(panel, QStringLiteral("slopeLabel%1").arg(r).toLatin1().constData());
+            EXPECT_EQ(visibleIn(rowLabel, panel), r <= count) << "ring count " << count << ", label " << r;
+        }
+    };
+    expectRows(2);
+    EXPECT_EQ(label(panel, "slopeLabel0")->text(), QStringLiteral("|m1| (touched):"));
+    EXPECT_EQ(label(panel, "slopeLabel1")->text(), QStringLiteral("|m2| (ring 1):"));
+    EXPECT_TRUE(slopeSpin(panel, 0)->toolTip().contains(QStringLiteral("m1 > m2 > m3")));
+    EXPECT_TRUE(slopeSpin(panel, 0)->toolTip().contains(QStringLiteral("decays away from the touched vertex")));
+    EXPECT_EQ(slopeSpin(panel, 0)->suffix(), QStringLiteral(" mm/N"));
+
+    rings->setValue(5);
+    expectRows(5);
+    EXPECT_EQ(panel.preset().params.ringCount, 5);
+    EXPECT_TRUE(panel.isValid());  // the default slopes keep decreasing
+    rings->setValue(0);
+    expectRows(0);
+    rings->setValue(kMaxRings);
+    expectRows(kMaxRings);
+}
+
+TEST(ParameterPanel, UnstableLoopGainIsRejectedAndTheStableSideAccepted) {
+    ParameterPanel panel;
+    doubleField(panel, "forceRelaxationSpin")->setValue(1.0);
+    slopeSpin(panel, 0)->setValue(0.9);
+    doubleField(panel, "contactStiffnessSpin")->setValue(2.0);  // gain 1.8, alpha (1 + gain) = 2.8
+
+    EXPECT_FALSE(panel.isValid());
+    EXPECT_FALSE(applyButton(panel)->isEnabled());
+    EXPECT_TRUE(label(panel, "messageLabel")->text().contains(QStringLiteral("unstable")))
+        << label(panel, "messageLabel")->text().toStdString();
+    QLabel* stability = label(panel, "stabilityLabel");
+    EXPECT_TRUE(stability->text().contains(QStringLiteral("unstable"))) << stability->text().toStdString();
+    EXPECT_TRUE(stability->property("unstable").toBool());
+    EXPECT_TRUE(doubleField(panel, "contactStiffnessSpin")->property("invalid").toBool());
+    EXPECT_TRUE(slopeSpin(panel, 0)->property("invalid").toBool());
+
+    doubleField(panel, "contactStiffnessSpin")->setValue(1.0);  // gain 0.9, alpha (1 + gain) = 1.9 < 2
+    EXPECT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
+    EXPECT_TRUE(stability->text().contains(QStringLiteral("stability margin 5")))  // 1 - 1.9 / 2 = 5 %
+        << stability->text().toStdString();
+    EXPECT_FALSE(stability->property("unstable").toBool());
+}
+
+TEST(ParameterPanel, SlopeOutsideThePapersRangeIsAllowedUnderARaisedLimit) {
+    ParameterPanel panel;
+    slopeSpin(panel, 0)->setValue(2.0);  // above the default limit 1 mm/N
+    EXPECT_FALSE(panel.isValid());
+    EXPECT_TRUE(slopeSpin(panel, 0)->property("invalid").toBool());
+
+    doubleField(panel, "slopeLimitSpin")->setValue(5.0);
+    doubleField(panel, "contactStiffnessSpin")->setValue(0.4);
+    EXPECT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
+    EXPECT_TRUE(applyButton(panel)->isEnabled());
+    EXPECT_FALSE(slopeSpin(panel, 0)->property("invalid").toBool());
+    EXPECT_TRUE(slopeSpin(panel, 0)->property("outsidePaperRange").toBool());
+    EXPECT_FALSE(slopeSpin(panel, 1)->property("outsidePaperRange").toBool());
+    QLabel* note = label(panel, "noteLabel");
+    EXPECT_TRUE(visibleIn(note, panel));
+    EXPECT_TRUE(note->text().contains(QStringLiteral("outside the paper's range"))) << note->text().toStdString();
+}
+
+TEST(ParameterPanel, OctreeAndRateAreValidated) {
+    ParameterPanel panel;
+    intField(panel, "octreeDepthSpin")->setValue(0);
+    EXPECT_FALSE(panel.isValid());
+    EXPECT_TRUE(intField(panel, "octreeDepthSpin")->property("invalid").toBool());
+    EXPECT_TRUE(label(panel, "messageLabel")->text().contains(QStringLiteral("maxDepth")));
+    intField(panel, "octreeDepthSpin")->setValue(12);
+    EXPECT_TRUE(panel.isValid());
+
+    doubleField(panel, "hapticRateSpin")->setValue(20000.0);
+    EXPECT_FALSE(panel.isValid());
+    EXPECT_TRUE(doubleField(panel, "hapticRateSpin")->property("invalid").toBool());
+    EXPECT_TRUE(label(panel, "messageLabel")->text().contains(QStringLiteral("haptic rate")));
+    doubleField(panel, "hapticRateSpin")->setValue(10000.0);
+    EXPECT_TRUE(panel.isValid());
+}
+
+TEST(ParameterPanel, ApplyEmitsExactlyTheFieldValues) {
+    ParameterPanel panel;
+    std::vector<TissuePreset> applied;
+    QObject::connect(&panel, &ParameterPanel::applyRequested, [&](const TissuePreset& p) { applied.push_back(p); });
+
+    auto* model = panel.findChild<QComboBox*>(QStringLiteral("modelCombo"));
+    model->setCurrentIndex(model->findData(QStringLiteral("hybrid")));
+    intField(panel, "ringCountSpin")->setValue(3);
+    slopeSpin(panel, 0)->setValue(0.8);
+    slopeSpin(panel, 1)->setValue(0.4);
+    slopeSpin(panel, 2)->setValue(0.2);
+    slopeSpin(panel, 3)->setValue(0.05);
+    doubleField(panel, "slopeLimitSpin")->setValue(1.5);
+    doubleField(panel, "springStiffnessSpin")->setValue(2.25);
+    doubleField(panel, "dampingRatioSpin")->setValue(0.7);
+    doubleField(panel, "contactStiffnessSpin")->setValue(1.2);
+    doubleField(panel, "forceRelaxationSpin")->setValue(0.5);
+    doubleField(panel, "vertexMassSpin")->setValue(0.002);
+    intField(panel, "octreeDepthSpin")->setValue(8);
+    intField(panel, "leafCapacitySpin")->setValue(32);
+    doubleField(panel, "hapticRateSpin")->setValue(500.0);
+    ASSERT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
+
+    QTest::mouseClick(applyButton(panel), Qt::LeftButton);
+    ASSERT_EQ(applied.size(), 1u);
+    const TissuePreset& p = applied.front();
+    EXPECT_EQ(p.method, SlopeRingMethod::Hybrid);
+    EXPECT_EQ(p.params.ringCount, 3);
+    EXPECT_DOUBLE_EQ(p.params.slopeMagnitudeMmPerN[0], 0.8);
+    EXPECT_DOUBLE_EQ(p.params.slopeMagnitudeMmPerN[1], 0.4);
+    EXPECT_DOUBLE_EQ(p.params.slopeMagnitudeMmPerN[2], 0.2);
+    EXPECT_DOUBLE_EQ(p.params.slopeMagnitudeMmPerN[3], 0.05);
+    EXPECT_DOUBLE_EQ(p.params.slopeLimitMmPerN, 1.5);
+    EXPECT_DOUBLE_EQ(p.params.springStiffnessNPerMm, 2.25);
+    EXPECT_DOUBLE_EQ(p.params.dampingRatio, 0.7);
+    EXPECT_DOUBLE_EQ(p.params.contactStiffnessNPerMm, 1.2);
+    EXPECT_DOUBLE_EQ(p.params.forceRelaxation, 0.5);
+    EXPECT_DOUBLE_EQ(p.params.vertexMassKg, 0.002);
+    EXPECT_EQ(p.octree.maxDepth, 8);
+    EXPECT_EQ(p.octree.leafCapacity, 32);
+    EXPECT_DOUBLE_EQ(p.hapticRateHz, 500.0);
+    EXPECT_TRUE(samePreset(p, panel.preset()));
+    EXPECT_TRUE(validateSlopeRingParams(p.params).empty());
+
+    // Invalid fields: the button is disabled and apply() emits nothing.
+    slopeSpin(panel, 1)->setValue(0.9);
+    EXPECT_FALSE(applyButton(panel)->isEnabled());
+    panel.apply();
+    EXPECT_EQ(applied.size(), 1u);
+}
+
+TEST(ParameterPanel, UndoRestoresAndRedoReappliesEachEdit) {
+    ParameterPanel panel;
+    QDoubleSpinBox* m1 = slopeSpin(panel, 0);
+    QDoubleSpinBox* contact = doubleField(panel, "contactStiffnessSpin");
+    EXPECT_FALSE(panel.undoAction()->isEnabled());
+    EXPECT_EQ(panel.undoAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_Z));
+    EXPECT_EQ(panel.redoAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z));
+
+    m1->setValue(0.7);
+    m1->setValue(0.75);  // consecutive edits of one field: one step
+    contact->setValue(1.3);
+    EXPECT_EQ(panel.undoStack()->count(), 2);
+    EXPECT_TRUE(panel.undoAction()->isEnabled());
+    EXPECT_TRUE(panel.undoAction()->text().contains(QStringLiteral("contact stiffness")))
+        << panel.undoAction()->text().toStdString();
+
+    panel.undoAction()->trigger();
+    EXPECT_DOUBLE_EQ(contact->value(), 1.0);
+    EXPECT_DOUBLE_EQ(m1->value(), 0.75);
+    panel.undoAction()->trigger();
+    EXPECT_DOUBLE_EQ(m1->value(), 0.6);
+    EXPECT_DOUBLE_EQ(panel.preset().params.slopeMagnitudeMmPerN[0], 0.6);
+    EXPECT_TRUE(samePreset(panel.preset(), TissuePreset{}));
+    EXPECT_FALSE(panel.undoAction()->isEnabled());
+
+    panel.redoAction()->trigger();
+    EXPECT_DOUBLE_EQ(m1->value(), 0.75);
+    EXPECT_DOUBLE_EQ(panel.preset().params.slopeMagnitudeMmPerN[0], 0.75);
+    panel.redoAction()->trigger();
+    EXPECT_DOUBLE_EQ(contact->value(), 1.3);
+    EXPECT_EQ(panel.undoStack()->count(), 2);  // undo/redo pushed nothing
+
+    // An undone invalid edit brings validity back with it.
+    slopeSpin(panel, 1)->setValue(0.9);
+    EXPECT_FALSE(panel.isValid());
+    panel.undoAction()->trigger();
+    EXPECT_TRUE(panel.isValid());
+    EXPECT_TRUE(applyButton(panel)->isEnabled());
+
+    // Undo of a ring-count change hides the rows again.
+    intField(panel, "ringCountSpin")->setValue(4);
+    EXPECT_TRUE(visibleIn(slopeSpin(panel, 4), panel));
+    panel.undoAction()->trigger();
+    EXPECT_EQ(intField(panel, "ringCountSpin")->value(), 2);
+    EXPECT_FALSE(visibleIn(slopeSpin(panel, 4), panel));
+
+    // Editing a value back to where the step started leaves no step behind.
+    const int steps = panel.undoStack()->index();
+    doubleField(panel, "dampingRatioSpin")->setValue(0.5);
+    EXPECT_EQ(panel.undoStack()->index(), steps + 1);
+    doubleField(panel, "dampingRatioSpin")->setValue(1.0);
+    EXPECT_EQ(panel.undoStack()->index(), steps);
+    EXPECT_EQ(panel.undoStack()->count(), steps);
+}
+
+TEST(ParameterPanel, CtrlZInAFieldUndoesThePanelsStep) {
+    ParameterPanel panel;
+    panel.show();
+    QApplication::setActiveWindow(&panel);
+    if (!QTest::qWaitForWindowActive(&panel)) GTEST_SKIP() << "the offscreen window did not become active";
+    QDoubleSpinBox* m1 = slopeSpin(panel, 0);
+    m1->setFocus();
+    m1->setValue(0.7);
+    ASSERT_EQ(panel.undoStack()->count(), 1);
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Z, Qt::ControlModifier);
+    EXPECT_DOUBLE_EQ(m1->value(), 0.6);
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    EXPECT_DOUBLE_EQ(m1->value(), 0.7);
+}
+
+TEST(ParameterPanel, SetPresetRecordsNoStep) {
+    ParameterPanel panel;
+    slopeSpin(panel, 0)->setValue(0.7);
+    TissuePreset preset;
+    preset.name = "liver";
+    preset.params.ringCount = 1;
+    preset.params.slopeMagnitudeMmPerN[0] = 0.5;
+    preset.params.slopeMagnitudeMmPerN[1] = 0.25;
+    preset.hapticRateHz = 2000.0;
+    panel.setPreset(preset);
+    EXPECT_EQ(panel.undoStack()->count(), 0);
+    EXPECT_TRUE(samePreset(panel.preset(), preset));
+    EXPECT_TRUE(label(panel, "presetTitleLabel")->text().contains(QStringLiteral("liver")));
+    EXPECT_FALSE(visibleIn(slopeSpin(panel, 2), panel));
+}
+
+TEST(ParameterPanel, MalformedPresetFileIsRejectedNamingTheKeyAndChangesNothing) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    TissuePreset good;
+    good.params.slopeMagnitudeMmPerN[0] = 0.7;
+    nlohmann::ordered_json json = nlohmann::ordered_json::parse(tissuePresetToJson(good));
+    json["slope_ring"]["stifness_typo"] = 3.0;
+    const QString path = dir.filePath(QStringLiteral("bad.json"));
+    {
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write(QByteArray::fromStdString(json.dump(2)));
+    }
+
+    ParameterPanel panel;
+    slopeSpin(panel, 1)->setValue(0.3);  // one step before the load
+    const TissuePreset before = panel.preset();
+    QString error;
+    EXPECT_FALSE(panel.loadPresetFile(path, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("slope_ring.stifness_typo"))) << error.toStdString();
+    EXPECT_TRUE(error.contains(QStringLiteral("unknown key"))) << error.toStdString();
+    QLabel* message = label(panel, "messageLabel");
+    EXPECT_TRUE(visibleIn(message, panel));
+    EXPECT_TRUE(message->text().contains(QStringLiteral("stifness_typo"))) << message->text().toStdString();
+    EXPECT_TRUE(samePreset(panel.preset(), before));
+    EXPECT_DOUBLE_EQ(slopeSpin(panel, 0)->value(), 0.6);
+    EXPECT_EQ(panel.undoStack()->count(), 1);
+    EXPECT_TRUE(panel.isValid());  // a bad file is no problem of the fields: Apply stays enabled
+    EXPECT_TRUE(applyButton(panel)->isEnabled());
+
+    // A missing file names the file.
+    EXPECT_FALSE(panel.loadPresetFile(dir.filePath(QStringLiteral("missing.json")), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("missing.json"))) << error.toStdString();
+    EXPECT_TRUE(samePreset(panel.preset(), before));
+
+    // The next edit clears the file's error.
+    slopeSpin(panel, 1)->setValue(0.25);
+    EXPECT_FALSE(visibleIn(message, panel));
+}
+
+TEST(ParameterPanel, SaveThenLoadRoundTripsAsOneUndoableStep) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("soft.json"));
+
+    ParameterPanel panel;
+    auto* model = panel.findChild<QComboBox*>(QStringLiteral("modelCombo"));
+    model->setCurrentIndex(model->findData(QStringLiteral("proposed")));
+    intField(panel, "ringCountSpin")->setValue(3);
+    doubleField(panel, "slopeLimitSpin")->setValue(8.0);
+    slopeSpin(panel, 0)->setValue(3.5);  // outside the paper's range, allowed by the limit
+    slopeSpin(panel, 1)->setValue(1.25);
+    slopeSpin(panel, 2)->setValue(0.5);
+    slopeSpin(panel, 3)->setValue(0.125);
+    doubleField(panel, "contactStiffnessSpin")->setValue(0.2);
+    doubleField(panel, "forceRelaxationSpin")->setValue(0.4);
+    doubleField(panel, "dampingRatioSpin")->setValue(0.8);
+    doubleField(panel, "vertexMassSpin")->setValue(0.0025);
+    intField(panel, "octreeDepthSpin")->setValue(7);
+    intField(panel, "leafCapacitySpin")->setValue(24);
+    doubleField(panel, "hapticRateSpin")->setValue(2500.0);
+    ASSERT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
+    const TissuePreset saved = panel.preset();
+
+    QString error;
+    ASSERT_TRUE(panel.savePresetFile(path, &error)) << error.toStdString();
+    EXPECT_TRUE(error.isEmpty());
+    EXPECT_TRUE(panel.undoStack()->isClean());
+
+    panel.setPreset(TissuePreset{});
+    ASSERT_TRUE(samePreset(panel.preset(), TissuePreset{}));
+    ASSERT_TRUE(panel.loadPresetFile(path, &error)) << error.toStdString();
+    // Slopes beyond ring_count are not written; compare what the file carries.
+    TissuePreset expected = saved;
+    for (int r = saved.params.ringCount + 1; r <= kMaxRings; ++r)
+        expected.params.slopeMagnitudeMmPerN[std::size_t(r)] = TissuePreset{}.params.slopeMagnitudeMmPerN[std::size_t(r)];
+    EXPECT_TRUE(samePreset(panel.preset(), expected));
+    EXPECT_TRUE(samePreset(panel.preset(), *loadTissuePreset(path.toStdString()).preset));
+    EXPECT_TRUE(panel.isValid());
+    EXPECT_TRUE(visibleIn(slopeSpin(panel, 3), panel));
+    EXPECT_EQ(panel.undoStack()->count(), 1);
+    EXPECT_TRUE(label(panel, "noteLabel")->text().contains(QStringLiteral("soft.json")));
+
+    panel.undoAction()->trigger();  // the load is one step
+    EXPECT_TRUE(samePreset(panel.preset(), TissuePreset{}));
+    panel.redoAction()->trigger();
+    EXPECT_TRUE(samePreset(panel.preset(), expected));
+
+    // An invalid preset is not written (it could not be read back).
+    slopeSpin(panel, 1)->setValue(5.0);
+    ASSERT_FALSE(panel.isValid());
+    const QString second = dir.filePath(QStringLiteral("invalid.json"));
+    EXPECT_FALSE(panel.savePresetFile(second, &error));
+    EXPECT_FALSE(error.isEmpty());
+    EXPECT_FALSE(QFile::exists(second));
+}
+
+TEST(ParameterPanel, RendersEveryFieldInsideThePanel) {
+    ParameterPanel panel;
+    intField(panel, "ringCountSpin")->setValue(4);
+    slopeSpin(panel, 2)->setValue(0.5);  // above |m2|: an error, framed red
+    // Tall enough that the fields need no scrolling (a dock may be shorter: then they scroll).
+    auto* scroll = panel.findChild<QScrollArea*>(QStringLiteral("parameterScroll"));
+    ASSERT_NE(scroll, nullptr);
+    panel.resize(panel.sizeHint().width(),
+                 panel.sizeHint().height() - scroll->sizeHint().height() + scroll->widget()->sizeHint().height() + 8);
+    panel.show();
+    QApplication::processEvents();
+    const QPixmap shot = panel.grab();
+    ASSERT_FALSE(shot.isNull());
+    // Every visible field lies inside the panel horizontally (no clipped column).
+    for (QAbstractSpinBox* spin : panel.findChildren<QAbstractSpinBox*>()) {
+        if (!spin->isVisible()) continue;
+        const QRect box(spin->mapTo(&panel, QPoint(0, 0)), spin->size());
+        EXPECT_GE(box.left(), 0) << spin->objectName().toStdString();
+        EXPECT_LE(box.right(), panel.width()) << spin->objectName().toStdString();
+        EXPECT_GE(spin->width(), spin->minimumSizeHint().width()) << spin->objectName().toStdString();
+    }
+    // The red frame of the invalid field is drawn.
+    const QImage image = shot.toImage();
+    QDoubleSpinBox* bad = slopeSpin(panel, 2);
+    const QRect box(bad->mapTo(&panel, QPoint(0, 0)), bad->size());
+    int red = 0;
+    for (int y = box.top(); y <= box.bottom(); ++y)
+        for (int x = box.left(); x <= box.right(); ++x) {
+            const QRgb c = image.pixel(x * image.width() / panel.width(), y * image.height() / panel.height());
+            if (qRed(c) > 180 && qGreen(c) < 90 && qBlue(c) < 90) ++red;
+        }
+    EXPECT_GT(red, 20);
+    if (const QByteArray out = qgetenv("PALPATE_PARAMETER_PANEL_PNG"); !out.isEmpty()) shot.save(QString::fromLocal8Bit(out));
+}

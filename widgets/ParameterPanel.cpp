@@ -1,0 +1,671 @@
+#include "widgets/ParameterPanel.h"
+
+#include "widgets/ParameterCommands.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSet>
+#include <QSpinBox>
+#include <QStyle>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace palpate {
+
+namespace {
+
+constexpr SlopeRingMethod kMethods[] = {SlopeRingMethod::Palpate, SlopeRingMethod::Proposed, SlopeRingMethod::Hybrid,
+                                        SlopeRingMethod::Previous};
+
+/// A double spin box that shows as many decimals as the value needs ("0.6", "0.0025", "1000"),
+/// so that small slopes and masses keep their precision without a wall of zeros.
+class CompactDoubleSpinBox final : public QDoubleSpinBox {
+public:
+    using QDoubleSpinBox::QDoubleSpinBox;
+
+    QString textFromValue(double value) const override {
+        QString text = locale().toString(value, 'f', decimals());
+        if (std::abs(value) >= 1000.0) text.remove(locale().groupSeparator());
+        const QString point = locale().decimalPoint();
+        if (text.contains(point)) {
+            while (text.endsWith(QLatin1Char('0'))) text.chop(1);
+            if (text.endsWith(point)) text.chop(point.size());
+        }
+        return text;
+    }
+};
+
+QDoubleSpinBox* doubleSpin(QWidget* parent, const char* objectName, double lo, double hi, int decimals, double step) {
+    auto* spin = new CompactDoubleSpinBox(parent);
+    spin->setObjectName(QLatin1String(objectName));
+    spin->setDecimals(decimals);
+    spin->setRange(lo, hi);
+    spin->setSingleStep(step);
+    spin->setAccelerated(true);
+    spin->setAlignment(Qt::AlignRight);
+    return spin;
+}
+
+QSpinBox* intSpin(QWidget* parent, const char* objectName, int lo, int hi) {
+    auto* spin = new QSpinBox(parent);
+    spin->setObjectName(QLatin1String(objectName));
+    spin->setRange(lo, hi);
+    spin->setAlignment(Qt::AlignRight);
+    return spin;
+}
+
+void setRowLabel(QFormLayout* form, QWidget* field, const QString& text) {
+    if (auto* label = qobject_cast<QLabel*>(form->labelForField(field))) {
+        label->setText(text);
+        label->setBuddy(field);
+    }
+}
+
+/// Problems and stability are shown in colour; a field is framed red when a problem names it and
+/// amber when it is allowed but outside the paper's range.
+const char* const kStyleSheet = R"(
+QAbstractSpinBox[invalid="true"] { border: 2px solid #d32f2f; border-radius: 3px; background-color: #fff0f0; }
+QAbstractSpinBox[outsidePaperRange="true"] { border: 2px solid #e69500; border-radius: 3px; background-color: #fff8e6; }
+QAbstractSpinBox[invalid="true"]::up-button, QAbstractSpinBox[invalid="true"]::down-button,
+QAbstractSpinBox[outsidePaperRange="true"]::up-button, QAbstractSpinBox[outsidePaperRange="true"]::down-button { width: 16px; }
+QLabel#messageLabel { color: #c62828; }
+QLabel#noteLabel { color: #8a5a00; }
+QLabel#stabilityLabel[unstable="true"] { color: #c62828; }
+QLabel#presetTitleLabel { font-weight: bold; }
+)";
+
+}  // namespace
+
+ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
+    mUndoStack = new QUndoStack(this);
+    buildUi();
+    retranslateUi();
+    showPreset(TissuePreset{});
+}
+
+ParameterPanel::~ParameterPanel() = default;
+
+void ParameterPanel::buildUi() {
+    setObjectName(QStringLiteral("parameterPanel"));
+    setStyleSheet(QLatin1String(kStyleSheet));
+
+    // The fields scroll (nine slope rows do not fit a short dock); feedback and buttons stay put.
+    auto* fields = new QWidget;
+    auto* fieldsLayout = new QVBoxLayout(fields);
+    fieldsLayout->setContentsMargins(0, 0, 0, 0);
+
+    mTitleLabel = new QLabel(fields);
+    mTitleLabel->setObjectName(QStringLiteral("presetTitleLabel"));
+    mTitleLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    fieldsLayout->addWidget(mTitleLabel);
+
+    auto newForm = [&](QGroupBox*& group, QFormLayout*& form, const char* name) {
+        group = new QGroupBox(fields);
+        group->setObjectName(QLatin1String(name));
+        form = new QFormLayout(group);
+        form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+        fieldsLayout->addWidget(group);
+    };
+
+    newForm(mModelGroup, mModelForm, "modelGroup");
+    mModelCombo = new QComboBox(mModelGroup);
+    mModelCombo->setObjectName(QStringLiteral("modelCombo"));
+    for (SlopeRingMethod method : kMethods)
+        mModelCombo->addItem(QString(), QString::fromLatin1(methodName(method).data(), qsizetype(methodName(method).size())));
+    mModelForm->addRow(new QLabel(fields), mModelCombo);
+    mRateSpin = doubleSpin(mModelGroup, "hapticRateSpin", 0.0, 100000.0, 1, 50.0);
+    mModelForm->addRow(new QLabel(fields), mRateSpin);
+
+    newForm(mSlopeGroup, mSlopeForm, "slopeGroup");
+    mRingSpin = intSpin(mSlopeGroup, "ringCountSpin", 0, kMaxRings);
+    mSlopeForm->addRow(new QLabel(fields), mRingSpin);
+    for (int r = 0; r <= kMaxRings; ++r) {
+        const QByteArray name = "slopeSpin" + QByteArray::number(r);
+        mSlopeSpins[std::size_t(r)] = doubleSpin(mSlopeGroup, name.constData(), 0.0, 100.0, 6, 0.01);
+        mSlopeLabels[std::size_t(r)] = new QLabel(mSlopeGroup);
+        mSlopeLabels[std::size_t(r)]->setObjectName(QString::fromLatin1("slopeLabel%1").arg(r));
+        mSlopeLabels[std::size_t(r)]->setBuddy(mSlopeSpins[std::size_t(r)]);
+        mSlopeForm->addRow(mSlopeLabels[std::size_t(r)], mSlopeSpins[std::size_t(r)]);
+    }
+    mSlopeLimitSpin = doubleSpin(mSlopeGroup, "slopeLimitSpin", 0.0, 1000.0, 4, 0.1);
+    mSlopeForm->addRow(new QLabel(fields), mSlopeLimitSpin);
+
+    newForm(mSpringGroup, mSpringForm, "springGroup");
+    mSpringSpin = doubleSpin(mSpringGroup, "springStiffnessSpin", 0.0, 1.0e6, 4, 0.1);
+    mSpringForm->addRow(new QLabel(fields), mSpringSpin);
+    mDampingSpin = doubleSpin(mSpringGroup, "dampingRatioSpin", 0.0, 1000.0, 3, 0.1);
+    mSpringForm->addRow(new QLabel(fields), mDampingSpin);
+    mContactSpin = doubleSpin(mSpringGroup, "contactStiffnessSpin", 0.0, 1.0e6, 4, 0.1);
+    mSpringForm->addRow(new QLabel(fields), mContactSpin);
+    mRelaxationSpin = doubleSpin(mSpringGroup, "forceRelaxationSpin", 0.0, 10.0, 4, 0.05);
+    mSpringForm->addRow(new QLabel(fields), mRelaxationSpin);
+    mMassSpin = doubleSpin(mSpringGroup, "vertexMassSpin", 0.0, 1.0e3, 7, 0.0005);
+    mSpringForm->addRow(new QLabel(fields), mMassSpin);
+
+    newForm(mOctreeGroup, mOctreeForm, "octreeGroup");
+    mDepthSpin = intSpin(mOctreeGroup, "octreeDepthSpin", 0, 64);
+    mOctreeForm->addRow(new QLabel(fields), mDepthSpin);
+    mLeafSpin = intSpin(mOctreeGroup, "leafCapacitySpin", 0, 10000000);
+    mOctreeForm->addRow(new QLabel(fields), mLeafSpin);
+    fieldsLayout->addStretch(1);
+
+    mScroll = new QScrollArea(this);
+    mScroll->setObjectName(QStringLiteral("parameterScroll"));
+    mScroll->setWidget(fields);
+    mScroll->setWidgetResizable(true);
+    mScroll->setFrameShape(QFrame::NoFrame);
+    mScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+
+    // Feedback under the fields.
+    mStabilityLabel = new QLabel(this);
+    mStabilityLabel->setObjectName(QStringLiteral("stabilityLabel"));
+    mStabilityLabel->setWordWrap(true);
+    mMessageLabel = new QLabel(this);
+    mMessageLabel->setObjectName(QStringLiteral("messageLabel"));
+    mMessageLabel->setWordWrap(true);
+    mMessageLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    mNoteLabel = new QLabel(this);
+    mNoteLabel->setObjectName(QStringLiteral("noteLabel"));
+    mNoteLabel->setWordWrap(true);
+    mNoteLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    // Actions: undo/redo from the stack, preset files.
+    mUndoAction = mUndoStack->createUndoAction(this, tr("Undo"));
+    mUndoAction->setObjectName(QStringLiteral("undoAction"));
+    mUndoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::Key_Z)});
+    mRedoAction = mUndoStack->createRedoAction(this, tr("Redo"));
+    mRedoAction->setObjectName(QStringLiteral("redoAction"));
+    mRedoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)});
+    mUndoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo"), style()->standardIcon(QStyle::SP_ArrowBack)));
+    mRedoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo"), style()->standardIcon(QStyle::SP_ArrowForward)));
+    for (QAction* action : {mUndoAction, mRedoAction}) {
+        action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        addAction(action);
+    }
+    mOpenAction = new QAction(this);
+    mOpenAction->setObjectName(QStringLiteral("openPresetAction"));
+    connect(mOpenAction, &QAction::triggered, this, &ParameterPanel::openPresetDialog);
+    mSaveAction = new QAction(this);
+    mSaveAction->setObjectName(QStringLiteral("savePresetAction"));
+    connect(mSaveAction, &QAction::triggered, this, &ParameterPanel::savePresetDialog);
+
+    mOpenButton = new QPushButton(this);
+    mOpenButton->setObjectName(QStringLiteral("openPresetButton"));
+    connect(mOpenButton, &QPushButton::clicked, mOpenAction, &QAction::trigger);
+    mSaveButton = new QPushButton(this);
+    mSaveButton->setObjectName(QStringLiteral("savePresetButton"));
+    connect(mSaveButton, &QPushButton::clicked, mSaveAction, &QAction::trigger);
+    auto* undoButton = new QToolButton(this);
+    undoButton->setObjectName(QStringLiteral("undoButton"));
+    undoButton->setDefaultAction(mUndoAction);
+    auto* redoButton = new QToolButton(this);
+    redoButton->setObjectName(QStringLiteral("redoButton"));
+    redoButton->setDefaultAction(mRedoAction);
+    mApplyButton = new QPushButton(this);
+    mApplyButton->setObjectName(QStringLiteral("applyButton"));
+    connect(mApplyButton, &QPushButton::clicked, this, &ParameterPanel::apply);
+
+    auto* fileRow = new QHBoxLayout;
+    fileRow->addWidget(mOpenButton);
+    fileRow->addWidget(mSaveButton);
+    fileRow->addStretch(1);
+    auto* applyRow = new QHBoxLayout;
+    applyRow->addWidget(undoButton);
+    applyRow->addWidget(redoButton);
+    applyRow->addStretch(1);
+    applyRow->addWidget(mApplyButton);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(mScroll, 1);
+    layout->addWidget(mStabilityLabel);
+    layout->addWidget(mMessageLabel);
+    layout->addWidget(mNoteLabel);
+    layout->addLayout(fileRow);
+    layout->addLayout(applyRow);
+
+    // Every field: an edit records an undo step and revalidates.
+    connect(mModelCombo, &QComboBox::currentIndexChanged, this, [this] { onEdited(kModel); });
+    connect(mRingSpin, &QSpinBox::valueChanged, this, [this] { onEdited(kRingCount); });
+    const std::pair<QDoubleSpinBox*, int> doubles[] = {
+        {mRateSpin, kHapticRate},      {mSlopeLimitSpin, kSlopeLimit},    {mSpringSpin, kSpringStiffness},
+        {mDampingSpin, kDampingRatio}, {mContactSpin, kContactStiffness}, {mRelaxationSpin, kForceRelaxation},
+        {mMassSpin, kVertexMass}};
+    for (const auto& [spin, field] : doubles)
+        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, field = field] { onEdited(field); });
+    for (int r = 0; r <= kMaxRings; ++r)
+        connect(mSlopeSpins[std::size_t(r)], &QDoubleSpinBox::valueChanged, this, [this, r] { onEdited(kSlope0 + r); });
+    connect(mDepthSpin, &QSpinBox::valueChanged, this, [this] { onEdited(kOctreeDepth); });
+    connect(mLeafSpin, &QSpinBox::valueChanged, this, [this] { onEdited(kLeafCapacity); });
+
+    for (QAbstractSpinBox* spin : findChildren<QAbstractSpinBox*>()) watchEdits(spin);
+}
+
+void ParameterPanel::watchEdits(QWidget* spin) {
+    // A spin box's line edit keeps its own text undo under Ctrl+Z; the panel's history is the one
+    // the user means, so the line edit lets the panel's shortcuts through.
+    spin->installEventFilter(this);
+    for (QLineEdit* edit : spin->findChildren<QLineEdit*>()) edit->installEventFilter(this);
+}
+
+bool ParameterPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::ShortcutOverride) {
+        const QKeySequence pressed(static_cast<QKeyEvent*>(event)->keyCombination());
+        if (mUndoAction->shortcuts().contains(pressed) || mRedoAction->shortcuts().contains(pressed)) {
+            event->ignore();  // not overridden: the shortcut (the panel's action) fires
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+QString ParameterPanel::slopeLabel(int ring) const {
+    if (ring == 0) return tr("|m%1| (touched)").arg(1);
+    return tr("|m%1| (ring %2)").arg(ring + 1).arg(ring);
+}
+
+QString ParameterPanel::fieldName(int field) const {
+    switch (field) {
+    case kModel: return tr("deformation model");
+    case kRingCount: return tr("ring count");
+    case kSlopeLimit: return tr("slope limit");
+    case kSpringStiffness: return tr("spring stiffness");
+    case kDampingRatio: return tr("damping ratio");
+    case kContactStiffness: return tr("contact stiffness");
+    case kForceRelaxation: return tr("force relaxation");
+    case kVertexMass: return tr("vertex mass");
+    case kOctreeDepth: return tr("octree depth");
+    case kLeafCapacity: return tr("leaf capacity");
+    case kHapticRate: return tr("haptic rate");
+    default: return slopeLabel(field - kSlope0);
+    }
+}
+
+void ParameterPanel::retranslateUi() {
+    mModelGroup->setTitle(tr("Model and loop"));
+    mSlopeGroup->setTitle(tr("Slopes (magnitudes, |m1| > |m2| > …)"));
+    mSpringGroup->setTitle(tr("Springs and contact"));
+    mOctreeGroup->setTitle(tr("Octree"));
+
+    setRowLabel(mModelForm, mModelCombo, tr("Deformation model:"));
+    const QString methodTexts[] = {tr("Palpate (ours)"), tr("Proposed (paper)"), tr("Hybrid (paper)"),
+                                   tr("Previous (paper)")};
+    const QString methodTips[] = {
+        tr("Ours: exact warm-started nearest-vertex search, only the rings processed, incremental work per tick."),
+        tr("The paper's method: its octree searchNode (faithful, can miss the nearest vertex) and only the rings."),
+        tr("The paper's hybrid: its octree searchNode, and the whole model processed every tick."),
+        tr("The paper's baseline: linear nearest-vertex search, and the whole model processed every tick.")};
+    for (int i = 0; i < mModelCombo->count(); ++i) {
+        mModelCombo->setItemText(i, methodTexts[i]);
+        mModelCombo->setItemData(i, methodTips[i], Qt::ToolTipRole);
+    }
+    mModelCombo->setToolTip(tr("Which configuration deforms the tissue: ours, or one of the paper's three "
+                               "(kept side by side for measurement)."));
+    setRowLabel(mModelForm, mRateSpin, tr("Haptic rate:"));
+    mRateSpin->setSuffix(tr(" Hz"));
+    mRateSpin->setToolTip(tr("Ticks per second of the haptic loop, %1..%2 Hz (haptics usually runs at 1000 Hz).")
+                              .arg(kMinRateHz)
+                              .arg(kMaxRateHz));
+
+    setRowLabel(mSlopeForm, mRingSpin, tr("Ring count:"));
+    mRingSpin->setToolTip(tr("Rings of neighbours displaced with the touched vertex (ring r: the vertices r edges "
+                             "away). The paper uses 2; each ring adds a slope below."));
+    const QString slopeTip =
+        tr("Slope magnitude |m| in mm/N: how far the vertex moves per newton of contact force; the model applies the "
+           "paper's sign (m < 0), which moves the vertex into the tissue.") +
+        QStringLiteral("\n\n") +
+        tr("Read with signs, the paper's \"m1 > m2 > m3\" would move the outer rings further than the touched "
+           "vertex. Palpate orders the magnitudes instead, |m1| > |m2| > |m3| > …, so the displacement decays away "
+           "from the touched vertex.") +
+        QStringLiteral("\n\n") +
+        tr("The paper's range is (0, 1) mm/N; larger values need a raised slope limit and a stable loop gain.");
+    for (int r = 0; r <= kMaxRings; ++r) {
+        mSlopeLabels[std::size_t(r)]->setText(slopeLabel(r) + QLatin1Char(':'));
+        mSlopeLabels[std::size_t(r)]->setToolTip(slopeTip);
+        mSlopeSpins[std::size_t(r)]->setSuffix(tr(" mm/N"));
+        mSlopeSpins[std::size_t(r)]->setToolTip(slopeTip);
+    }
+    setRowLabel(mSlopeForm, mSlopeLimitSpin, tr("Slope limit:"));
+    mSlopeLimitSpin->setSuffix(tr(" mm/N"));
+    mSlopeLimitSpin->setToolTip(tr("Every slope magnitude must stay below this limit. The paper's range ends at 1 mm/N; "
+                                   "calibrated soft tissue may need more (at most 100 mm/N), allowed while the loop "
+                                   "gain stays stable. Slopes above 1 mm/N are marked as outside the paper's range."));
+
+    setRowLabel(mSpringForm, mSpringSpin, tr("Spring stiffness k:"));
+    mSpringSpin->setSuffix(tr(" N/mm"));
+    mSpringSpin->setToolTip(tr("Stiffness of the springs that tie each vertex to its rest position. The touched "
+                               "vertex's spring reaction is the force rendered to the user."));
+    setRowLabel(mSpringForm, mDampingSpin, tr("Damping ratio:"));
+    mDampingSpin->setToolTip(tr("Damping of the return springs as a fraction of critical: 1 returns without "
+                                "overshoot, below 1 the tissue rings before it settles (0..100)."));
+    setRowLabel(mSpringForm, mContactSpin, tr("Contact stiffness k_c:"));
+    mContactSpin->setSuffix(tr(" N/mm"));
+    mContactSpin->setToolTip(tr("Stiffness of the tool-tissue contact (a penalty spring). The loop gain is "
+                                "|m1| × k_c."));
+    setRowLabel(mSpringForm, mRelaxationSpin, tr("Force relaxation α:"));
+    mRelaxationSpin->setSpecialValueText(tr("automatic"));
+    mRelaxationSpin->setToolTip(tr("Per-tick relaxation α of the contact force, in (0, 1]. Automatic (0) uses "
+                                   "α = 1 / (1 + gain), which solves the contact in one tick for any gain. The update "
+                                   "is stable while α·(1 + gain) < 2."));
+    setRowLabel(mSpringForm, mMassSpin, tr("Vertex mass:"));
+    mMassSpin->setSuffix(tr(" kg"));
+    mMassSpin->setToolTip(tr("Lumped mass per vertex, for the relaxation after the tool lets go."));
+
+    setRowLabel(mOctreeForm, mDepthSpin, tr("Max depth:"));
+    mDepthSpin->setToolTip(tr("Levels below the octree's root (1..20)."));
+    setRowLabel(mOctreeForm, mLeafSpin, tr("Leaf capacity:"));
+    mLeafSpin->setSuffix(tr(" vertices"));
+    mLeafSpin->setToolTip(tr("A node with at most this many vertices is not split (1..100000)."));
+
+    mStabilityLabel->setToolTip(tr("The contact force iteration converges while α·(1 + gain) < 2, with the loop gain "
+                                   "|m1| × k_c (docs/method.md). The margin is how far below 2 it stays: "
+                                   "1 − α·(1 + gain) / 2."));
+    // The slope group's title states the ordering rule; its tooltip says why.
+    mSlopeGroup->setToolTip(slopeTip);
+    mOpenAction->setText(tr("Open preset…"));
+    mOpenAction->setToolTip(tr("Read a tissue preset file (JSON) into the fields; one undoable step."));
+    mSaveAction->setText(tr("Save preset…"));
+    mSaveAction->setToolTip(tr("Write the fields to a tissue preset file (JSON)."));
+    mOpenButton->setText(mOpenAction->text());
+    mOpenButton->setToolTip(mOpenAction->toolTip());
+    mSaveButton->setText(mSaveAction->text());
+    mSaveButton->setToolTip(mSaveAction->toolTip());
+    mApplyButton->setText(tr("Apply"));
+    mApplyButton->setToolTip(tr("Send these parameters to the haptic loop (enabled while they are valid)."));
+
+    // One label column for all groups, as wide as the widest label (the groups line up) ...
+    const QList<QLabel*> rowLabels = mScroll->widget()->findChildren<QLabel*>();
+    int labelWidth = 0;
+    for (QFormLayout* form : {mModelForm, mSlopeForm, mSpringForm, mOctreeForm})
+        for (QLabel* label : rowLabels)
+            if (form->indexOf(label) >= 0) {
+                label->setMinimumWidth(0);
+                labelWidth = std::max(labelWidth, label->sizeHint().width());
+            }
+    for (QFormLayout* form : {mModelForm, mSlopeForm, mSpringForm, mOctreeForm})
+        for (QLabel* label : rowLabels)
+            if (form->indexOf(label) >= 0) label->setMinimumWidth(labelWidth);
+    // ... and the fields wide enough for their texts and a vertical scroll bar: nothing is cut off.
+    mScroll->setMinimumWidth(mScroll->widget()->sizeHint().width() + style()->pixelMetric(QStyle::PM_ScrollBarExtent) +
+                             2 * mScroll->frameWidth() + 4);
+    validate();  // the feedback texts are translated too
+}
+
+void ParameterPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+TissuePreset ParameterPanel::presetFromFields() const {
+    TissuePreset preset = mShown;  // name, description and tissue properties are not fields
+    if (const auto method = parseMethod(mModelCombo->currentData().toString().toStdString())) preset.method = *method;
+    preset.hapticRateHz = mRateSpin->value();
+    SlopeRingParams& p = preset.params;
+    p.ringCount = mRingSpin->value();
+    for (int r = 0; r <= kMaxRings; ++r) p.slopeMagnitudeMmPerN[std::size_t(r)] = mSlopeSpins[std::size_t(r)]->value();
+    p.slopeLimitMmPerN = mSlopeLimitSpin->value();
+    p.springStiffnessNPerMm = mSpringSpin->value();
+    p.dampingRatio = mDampingSpin->value();
+    p.contactStiffnessNPerMm = mContactSpin->value();
+    p.forceRelaxation = mRelaxationSpin->value();
+    p.vertexMassKg = mMassSpin->value();
+    preset.octree.maxDepth = mDepthSpin->value();
+    preset.octree.leafCapacity = mLeafSpin->value();
+    return preset;
+}
+
+TissuePreset ParameterPanel::preset() const { return presetFromFields(); }
+
+void ParameterPanel::setPreset(const TissuePreset& preset) {
+    mUndoStack->clear();
+    showPreset(preset);
+    mUndoStack->setClean();
+}
+
+void ParameterPanel::showPreset(const TissuePreset& preset) {
+    mShowing = true;
+    for (int i = 0; i < mModelCombo->count(); ++i)
+        if (parseMethod(mModelCombo->itemData(i).toString().toStdString()) == preset.method) mModelCombo->setCurrentIndex(i);
+    mRateSpin->setValue(preset.hapticRateHz);
+    const SlopeRingParams& p = preset.params;
+    mRingSpin->setValue(p.ringCount);
+    for (int r = 0; r <= kMaxRings; ++r) mSlopeSpins[std::size_t(r)]->setValue(p.slopeMagnitudeMmPerN[std::size_t(r)]);
+    mSlopeLimitSpin->setValue(p.slopeLimitMmPerN);
+    mSpringSpin->setValue(p.springStiffnessNPerMm);
+    mDampingSpin->setValue(p.dampingRatio);
+    mContactSpin->setValue(p.contactStiffnessNPerMm);
+    mRelaxationSpin->setValue(p.forceRelaxation);
+    mMassSpin->setValue(p.vertexMassKg);
+    mDepthSpin->setValue(preset.octree.maxDepth);
+    mLeafSpin->setValue(preset.octree.leafCapacity);
+    mShowing = false;
+
+    mShown = preset;
+    mShown = presetFromFields();  // as the fields hold it (rounded to their decimals)
+    mFileErrors.clear();
+    mFileNote.clear();
+    mTitleLabel->setText(tr("Preset: %1").arg(QString::fromStdString(mShown.name)));
+    mTitleLabel->setToolTip(QString::fromStdString(mShown.description));
+    updateSlopeRows();
+    validate();
+}
+
+void ParameterPanel::onEdited(int field) {
+    if (mShowing) return;
+    if (field == kRingCount) updateSlopeRows();
+    mFileErrors.clear();
+    mFileNote.clear();
+    const TissuePreset after = presetFromFields();
+    if (!samePreset(after, mShown)) {
+        const TissuePreset before = mShown;
+        mShown = after;
+        // Typing "0.45" or holding an arrow is one step; the model and the ring count are choices.
+        const int mergeKey = (field == kModel || field == kRingCount) ? ParameterEditCommand::kNoMerge : field;
+        mUndoStack->push(new ParameterEditCommand(before, after, tr("Change %1").arg(fieldName(field)), mergeKey,
+                                                  /*alreadyShown=*/true,
+                                                  [this](const TissuePreset& preset) { showPreset(preset); }));
+    }
+    validate();
+}
+
+void ParameterPanel::updateSlopeRows() {
+    const int rings = mRingSpin->value();
+    for (int r = 0; r <= kMaxRings; ++r) mSlopeForm->setRowVisible(mSlopeSpins[std::size_t(r)], r <= rings);
+}
+
+void ParameterPanel::markField(QWidget* field, const char* property, bool on) {
+    if (field->property(property).toBool() == on) return;
+    field->setProperty(property, on);
+    field->style()->unpolish(field);  // re-evaluate the style sheet's [property] selectors
+    field->style()->polish(field);
+    field->update();
+}
+
+void ParameterPanel::validate() {
+    const TissuePreset p = presetFromFields();
+    const QLocale locale = this->locale();
+    auto number = [&](double v) { return locale.toString(v, 'g', 6); };  // like the engine's messages
+
+    QStringList problems;
+    QSet<QWidget*> invalid;
+    // The engine's own validators; their messages name the parameter, which names the field.
+    const std::pair<const char*, QWidget*> names[] = {
+        {"ringCount", mRingSpin},         {"slopeLimit", mSlopeLimitSpin},   {"contactStiffness", mContactSpin},
+        {"springStiffness", mSpringSpin}, {"vertexMass", mMassSpin},         {"dampingRatio", mDampingSpin},
+        {"forceRelaxation", mRelaxationSpin}, {"maxDepth", mDepthSpin},      {"leafCapacity", mLeafSpin}};
+    auto take = [&](const std::string& message) {
+        for (const auto& [name, field] : names)
+            if (message.find(name) != std::string::npos) invalid.insert(field);
+        for (int r = 0; r <= kMaxRings; ++r)
+            if (message.find("|m" + std::to_string(r + 1) + "|") != std::string::npos)
+                invalid.insert(mSlopeSpins[std::size_t(r)]);
+        problems << QString::fromStdString(message);
+    };
+    for (const std::string& message : validateSlopeRingParams(p.params)) take(message);
+    if (const std::string message = validateOctreeDef(p.octree); !message.empty()) take(message);
+    if (!(p.hapticRateHz >= kMinRateHz && p.hapticRateHz <= kMaxRateHz)) {
+        problems << tr("haptic rate = %1 Hz must be in %2..%3 Hz")
+                        .arg(number(p.hapticRateHz))
+                        .arg(number(kMinRateHz))
+                        .arg(number(kMaxRateHz));
+        invalid.insert(mRateSpin);
+    }
+
+    // The slope model's loop gain and its bound, shown whether or not the rest is valid.
+    const double gain = p.params.loopGain();
+    const double alpha = p.params.effectiveRelaxation();
+    const double product = alpha * (1.0 + gain);
+    const bool automatic = p.params.forceRelaxation == 0.0;
+    const QString alphaText = automatic ? tr("%1 (automatic)").arg(number(alpha)) : number(alpha);
+    QString stability = tr("Loop gain |m1| × k_c = %1, α = %2").arg(number(gain), alphaText);
+    const bool unstable = !(std::isfinite(product) && product < 2.0);
+    if (unstable) {
+        stability += QLatin1Char('\n') +
+                     tr("α·(1 + gain) = %1 ≥ 2: unstable (the surface oscillates and grows)").arg(number(product));
+        invalid.insert(mSlopeSpins[0]);
+        invalid.insert(mContactSpin);
+        invalid.insert(mRelaxationSpin);
+    } else {
+        stability += QLatin1Char('\n') + tr("α·(1 + gain) = %1 < 2: stability margin %2\u00a0%")
+                                             .arg(number(product))
+                                             .arg(locale.toString(100.0 * (1.0 - product / 2.0), 'f', 0));
+    }
+    mStabilityLabel->setText(stability);
+    markField(mStabilityLabel, "unstable", unstable);
+
+    // Allowed, but not the paper's: slopes above 1 mm/N under a raised limit.
+    QStringList notes;
+    QSet<QWidget*> outside;
+    QStringList outsideNames;
+    for (int r = 0; r <= p.params.ringCount && r <= kMaxRings; ++r) {
+        QDoubleSpinBox* spin = mSlopeSpins[std::size_t(r)];
+        if (p.params.slopeMagnitudeMmPerN[std::size_t(r)] >= kPaperSlopeMaxMmPerN && !invalid.contains(spin)) {
+            outside.insert(spin);
+            outsideNames << QStringLiteral("|m%1|").arg(r + 1);
+        }
+    }
+    if (!outsideNames.isEmpty()) {
+        const QString text = outsideNames.size() == 1
+                                 ? tr("%1 is outside the paper's range (0, 1) mm/N: allowed by the slope limit %2 "
+                                      "mm/N and the loop-gain bound.")
+                                 : tr("%1 are outside the paper's range (0, 1) mm/N: allowed by the slope limit %2 "
+                                      "mm/N and the loop-gain bound.");
+        notes << text.arg(locale.createSeparatedList(outsideNames), number(p.params.slopeLimitMmPerN));
+    }
+    if (!mFileNote.isEmpty()) notes.prepend(mFileNote);
+
+    const QList<QWidget*> fields = findChildren<QWidget*>();
+    for (QWidget* field : fields) {
+        if (!qobject_cast<QAbstractSpinBox*>(field)) continue;
+        markField(field, "invalid", invalid.contains(field));
+        markField(field, "outsidePaperRange", outside.contains(field));
+    }
+
+    QStringList shown = mFileErrors;
+    shown << problems;
+    mMessageLabel->setText(shown.join(QLatin1Char('\n')));
+    mMessageLabel->setVisible(!shown.isEmpty());
+    mNoteLabel->setText(notes.join(QLatin1Char('\n')));
+    mNoteLabel->setVisible(!notes.isEmpty());
+
+    mProblems = problems;
+    const bool valid = problems.isEmpty();
+    mApplyButton->setEnabled(valid);
+    if (valid != mValid) {
+        mValid = valid;
+        emit validityChanged(valid);
+    }
+}
+
+void ParameterPanel::apply() {
+    validate();
+    if (mValid) emit applyRequested(preset());
+}
+
+bool ParameterPanel::loadPresetFile(const QString& path, QString* error) {
+    const PresetLoadResult result = loadTissuePreset(QDir::toNativeSeparators(path).toStdString());
+    if (!result.preset) {
+        mFileErrors.clear();
+        for (const std::string& message : result.errors) mFileErrors << QString::fromStdString(message);
+        if (mFileErrors.isEmpty()) mFileErrors << tr("%1: could not be read").arg(path);
+        mFileErrors.prepend(tr("Preset not loaded; the fields are unchanged:"));
+        mFileNote.clear();
+        validate();
+        if (error) *error = mFileErrors.mid(1).join(QLatin1Char('\n'));
+        return false;
+    }
+    const TissuePreset before = presetFromFields();
+    if (!samePreset(before, *result.preset))
+        mUndoStack->push(new ParameterEditCommand(before, *result.preset,
+                                                  tr("Load preset %1").arg(QFileInfo(path).fileName()),
+                                                  ParameterEditCommand::kNoMerge, /*alreadyShown=*/false,
+                                                  [this](const TissuePreset& preset) { showPreset(preset); }));
+    mUndoStack->setClean();
+    mLastDirectory = QFileInfo(path).absolutePath();
+    mFileErrors.clear();
+    mFileNote = tr("Loaded %1").arg(QDir::toNativeSeparators(path));
+    validate();
+    if (error) error->clear();
+    return true;
+}
+
+bool ParameterPanel::savePresetFile(const QString& path, QString* error) {
+    QString problem;
+    if (!mValid) {
+        problem = tr("%1: not saved, the parameters are not valid (see above); the file could not be read back")
+                      .arg(QDir::toNativeSeparators(path));
+    } else {
+        problem = QString::fromStdString(saveTissuePreset(preset(), QDir::toNativeSeparators(path).toStdString()));
+    }
+    if (!problem.isEmpty()) {
+        mFileErrors = QStringList{problem};
+        mFileNote.clear();
+        validate();
+        if (error) *error = problem;
+        return false;
+    }
+    mUndoStack->setClean();
+    mLastDirectory = QFileInfo(path).absolutePath();
+    mFileErrors.clear();
+    mFileNote = tr("Saved %1").arg(QDir::toNativeSeparators(path));
+    validate();
+    if (error) error->clear();
+    return true;
+}
+
+void ParameterPanel::openPresetDialog() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open preset"), mLastDirectory,
+                                                      tr("Tissue presets (*.json);;All files (*)"));
+    if (!path.isEmpty()) loadPresetFile(path);
+}
+
+void ParameterPanel::savePresetDialog() {
+    QString start = mLastDirectory;
+    if (!mShown.name.empty())
+        start = QDir(mLastDirectory.isEmpty() ? QDir::currentPath() : mLastDirectory)
+                    .filePath(QString::fromStdString(mShown.name) + QStringLiteral(".json"));
+    QString path = QFileDialog::getSaveFileName(this, tr("Save preset"), start, tr("Tissue presets (*.json);;All files (*)"));
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
+    savePresetFile(path);
+}
+
+}  // namespace palpate
