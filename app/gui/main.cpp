@@ -72,8 +72,14 @@ int main(int argc, char** argv) {
                                             QStringLiteral("Draw with QPainter instead of OpenGL."));
     const QCommandLineOption screenshotOption(
         QStringLiteral("screenshot"),
-        QStringLiteral("Run --ticks haptic ticks stepped (no thread: deterministic), render, save a PNG, exit."),
+        QStringLiteral("Run the loop with the device for --after-ms, save a PNG of the main window, exit. With "
+                       "--ticks: run that many ticks stepped (no thread: deterministic) and save the viewport."),
         QStringLiteral("FILE"));
+    const QCommandLineOption afterMsOption(QStringLiteral("after-ms"),
+                                           QStringLiteral("Milliseconds the loop runs before --screenshot (default 1500)."),
+                                           QStringLiteral("N"), QStringLiteral("1500"));
+    const QCommandLineOption presetOption(QStringLiteral("preset"),
+                                          QStringLiteral("Tissue preset (JSON) to load and apply."), QStringLiteral("FILE"));
     const QCommandLineOption ticksOption(QStringLiteral("ticks"),
                                          QStringLiteral("Haptic ticks (1 ms) before the screenshot (default %1).")
                                              .arg(kDefaultScreenshotTicks),
@@ -86,7 +92,8 @@ int main(int argc, char** argv) {
                                   QStringLiteral("Run interactively, save the whole window to FILE after MS ms, exit."),
                                   QStringLiteral("MS"));
     grabOption.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOptions({meshOption, deviceOption, softwareOption, screenshotOption, ticksOption, headlessOption, grabOption});
+    parser.addOptions({meshOption, deviceOption, presetOption, softwareOption, screenshotOption, afterMsOption, ticksOption,
+                       headlessOption, grabOption});
     // --benchmark-viewport [--seconds S]: frame times while deforming a 100k-vertex sphere (ViewportBenchmark.h).
     const QCommandLineOption benchmarkOption(
         QStringLiteral("benchmark-viewport"),
@@ -119,11 +126,24 @@ int main(int argc, char** argv) {
         }
         grabFile = rest.front();
     }
-    const bool screenshot = parser.isSet(screenshotOption);
+    // --screenshot FILE: timed, threaded, the whole window (as --grab-after-ms), unless --ticks asks
+    // for the deterministic stepped viewport image.
+    const bool screenshot = parser.isSet(screenshotOption) && parser.isSet(ticksOption);
+    if (parser.isSet(screenshotOption) && !screenshot) {
+        bool msOk = false;
+        grabAfterMs = parser.value(afterMsOption).toInt(&msOk);
+        if (!msOk || grabAfterMs < 0) {
+            std::fprintf(stderr, "palpate: --after-ms needs a whole number >= 0, not '%s'\n",
+                         qPrintable(parser.value(afterMsOption)));
+            return 2;
+        }
+        grabFile = parser.value(screenshotOption);
+    }
+    const bool timedShot = parser.isSet(screenshotOption) && !screenshot;
     // Without a display and without a task there is nothing to show: report the scene and stop
     // rather than run an invisible window forever.
-    const bool headless = parser.isSet(headlessOption) || (noDisplay && !screenshot && !grab);
-    const bool interactive = !headless && !screenshot && !grab;
+    const bool headless = parser.isSet(headlessOption) || (noDisplay && !screenshot && !grab && !timedShot);
+    const bool interactive = !headless && !screenshot && !grab && !timedShot;
     if (noDisplay)
         std::printf("palpate: no display (DISPLAY, WAYLAND_DISPLAY and QT_QPA_PLATFORM unset): running headless "
                     "(QT_QPA_PLATFORM=offscreen) with the software renderer\n");
@@ -166,6 +186,8 @@ int main(int argc, char** argv) {
     palpate::MainWindow window(renderer, mode);
     if (const QString error = window.setDeviceUri(deviceUri); !error.isEmpty()) return fail(error);
     if (const QString error = window.loadMesh(meshPath); !error.isEmpty()) return fail(error);
+    if (parser.isSet(presetOption))
+        if (const QString error = window.loadPresetFile(parser.value(presetOption)); !error.isEmpty()) return fail(error);
     std::printf("palpate: %s renderer (%s), device %s, haptic loop %s\n",
                 qPrintable(palpate::rendererName(window.viewport()->kind())), qPrintable(window.rendererReason()),
                 qPrintable(deviceUri), mode == palpate::LoopMode::Stepped ? "stepped" : "threaded");
@@ -195,7 +217,7 @@ int main(int argc, char** argv) {
 
     window.resize(kWindowWidthPx, kWindowHeightPx);
     window.show();
-    if (grab) {
+    if (grab || timedShot) {
         int exitCode = 1;
         QTimer::singleShot(grabAfterMs, &window, [&] {
             const QImage image = window.grab().toImage();  // the whole window: menus, viewport, status bar

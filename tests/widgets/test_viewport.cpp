@@ -323,6 +323,8 @@ TEST(MainWindow, InteractiveRunsTheLoopThreadAndOnlyObservesIt) {
     EXPECT_TRUE(window->session().threadRunning());
 
     QTest::qWait(300);
+    // A loaded (or sanitized) machine may observe later: wait for the observer to see 100 ticks.
+    waitUntil([&] { return window->session().observed().counters.ticks > 100u; }, 5000);
     // The status bar updates at ~4 Hz; give a loaded machine a little longer to paint it.
     waitUntil([&] { return statusNumber(*window, "hapticRateStatus") > 0.0; }, 2000);
     const double rateHz = statusNumber(*window, "hapticRateStatus");
