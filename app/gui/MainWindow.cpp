@@ -287,6 +287,10 @@ void MainWindow::createMenus() {
                                        [this](bool on) { mViewport->setWireframe(on); });
     mWireframeAction->setCheckable(true);
     mWireframeAction->setChecked(mViewport->wireframe());
+    QAction* ghost = view->addAction(tr("Rest Shape &Ghost"), QKeySequence(Qt::Key_G), this,
+                                     [this](bool on) { mViewport->setShowRestGhost(on); });
+    ghost->setCheckable(true);
+    ghost->setChecked(mViewport->showRestGhost());
     view->addSeparator();
     view->addAction(mParameterDock->toggleViewAction());
     view->addAction(mDeviceDock->toggleViewAction());
