@@ -1,5 +1,7 @@
 #include "engine/ToolPath.h"
 
+#include "engine/SceneTarget.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -10,9 +12,7 @@ namespace palpate {
 std::vector<glm::vec3> makePressAndStrokePath(const TissueMesh& mesh, const ToolPathDef& def) {
     const auto& rest = mesh.restPositionsMm();
     const auto& normals = mesh.restNormals();
-    VertexId start = 0;
-    for (VertexId v = 1; v < rest.size(); ++v)
-        if (rest[v].x > rest[start].x) start = v;
+    const VertexId start = defaultTargetVertex(mesh);
 
     // Stroke: a greedy walk over the mesh towards a target along the tangent, as a polyline of
     // surface points and normals.

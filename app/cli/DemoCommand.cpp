@@ -7,6 +7,7 @@
 #include "device/DeviceUri.h"
 #include "device/SimulatedDevice.h"
 #include "engine/HapticLoop.h"
+#include "engine/SceneTarget.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -53,10 +54,7 @@ int demoCommand(const std::vector<std::string>& words) {
     const double durationS = simulated->durationS();
     const std::size_t vertices = loaded.mesh->vertexCount(), triangles = loaded.mesh->triangleCount();
     const std::vector<glm::vec3> rest = loaded.mesh->restPositionsMm();
-    VertexId target = 0;
-    for (VertexId v = 1; v < rest.size(); ++v)
-        if (rest[v].x > rest[target].x) target = v;
-    device->setScene(rest[target], loaded.mesh->restNormals()[target], glm::vec3(0.0f, 1.0f, 0.0f));
+    aimAtDefaultTarget(*device, *loaded.mesh);
 
     HapticLoopDef def;
     HapticLoop loop(def, HapticScene::createSlopeRing(std::move(*loaded.mesh), SlopeRingParams{}, *method),

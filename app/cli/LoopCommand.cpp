@@ -5,6 +5,7 @@
 #include "app/cli/DefaultScene.h"
 #include "device/DeviceUri.h"
 #include "engine/HapticLoop.h"
+#include "engine/SceneTarget.h"
 
 #include <nlohmann/json.hpp>
 
@@ -70,12 +71,7 @@ int loopCommand(const std::vector<std::string>& words) {
         std::cerr << "loop: " << error << "\n";
         return 1;
     }
-    // Aim the scripted device at the side of the mesh (the vertex with the largest x).
-    const auto& rest = loaded.mesh->restPositionsMm();
-    VertexId target = 0;
-    for (VertexId v = 1; v < rest.size(); ++v)
-        if (rest[v].x > rest[target].x) target = v;
-    device->setScene(rest[target], loaded.mesh->restNormals()[target], glm::vec3(0.0f, 1.0f, 0.0f));
+    aimAtDefaultTarget(*device, *loaded.mesh);
 
     HapticLoop loop(def, HapticScene::createSlopeRing(std::move(*loaded.mesh), SlopeRingParams{}), std::move(device));
     std::atomic<bool> observing{true};
