@@ -9,10 +9,11 @@ cmake --preset default
 cmake --build --preset default -j "$(nproc)"
 bin=build/release/app
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
-  exec "$bin/gui/palpate" "$@"
+  # The scripted stroke shows the method at once; without --device the window starts in touch mode.
+  exec "$bin/gui/palpate" --device sim:stroke "$@"
 fi
 echo "No display found: running headless."
 "$bin/palpate-cli" demo
 shot="build/release/palpate-headless.png"
-QT_QPA_PLATFORM=offscreen "$bin/gui/palpate" --software-render --screenshot "$shot" "$@"
+QT_QPA_PLATFORM=offscreen "$bin/gui/palpate" --device sim:stroke --software-render --screenshot "$shot" "$@"
 echo "Rendered the default scene with the software renderer to $shot"

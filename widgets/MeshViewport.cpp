@@ -289,6 +289,10 @@ void MeshViewport::mouseMoveEvent(QMouseEvent* event) {
     if (handleMouseMove(*event)) update();
 }
 
+void MeshViewport::mouseReleaseEvent(QMouseEvent* event) {
+    if (handleMouseRelease(*event)) update();
+}
+
 void MeshViewport::wheelEvent(QWheelEvent* event) {
     if (handleWheel(*event)) update();
     event->accept();

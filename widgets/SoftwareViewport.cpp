@@ -146,6 +146,10 @@ void SoftwareViewport::mouseMoveEvent(QMouseEvent* event) {
     if (handleMouseMove(*event)) update();
 }
 
+void SoftwareViewport::mouseReleaseEvent(QMouseEvent* event) {
+    if (handleMouseRelease(*event)) update();
+}
+
 void SoftwareViewport::wheelEvent(QWheelEvent* event) {
     if (handleWheel(*event)) update();
     event->accept();

@@ -4,6 +4,9 @@
 #include <QWheelEvent>
 #include <QWidget>
 
+#include <algorithm>
+#include <cmath>
+
 namespace palpate {
 
 QString rendererName(RendererKind kind) {
@@ -57,8 +60,42 @@ void Viewport::fitCamera() {
     sceneChanged(false);
 }
 
+void Viewport::setTouchMode(bool on) {
+    if (on == mTouchMode) return;
+    mTouchMode = on;
+    if (!on && mTouching) {
+        mTouching = false;
+        if (mTouchHandlers.released) mTouchHandlers.released();
+    }
+}
+
+void Viewport::setTouchDepthMm(double depthMm) {
+    if (!std::isfinite(depthMm)) return;
+    depthMm = std::clamp(depthMm, 0.0, kMaxTouchDepthMm);
+    if (depthMm == mTouchDepthMm) return;
+    mTouchDepthMm = depthMm;
+    if (mTouchHandlers.depthChanged) mTouchHandlers.depthChanged(depthMm);
+}
+
+void Viewport::touchAt(QPointF pointPx) {
+    // Sub-pixel: the event's own position, on the positions drawn now (deformed).
+    const auto vertex = pickVertexAt(pointPx, widget()->size());
+    if (vertex && mTouchHandlers.moved) mTouchHandlers.moved(*vertex, pointPx);
+}
+
 bool Viewport::handleMousePress(const QMouseEvent& event) {
     mLastDragPx = event.position();
+    if (mTouchMode && event.button() == Qt::LeftButton) {
+        mTouching = true;
+        touchAt(event.position());
+    }
+    return false;
+}
+
+bool Viewport::handleMouseRelease(const QMouseEvent& event) {
+    if (!mTouching || event.button() != Qt::LeftButton) return false;
+    mTouching = false;
+    if (mTouchHandlers.released) mTouchHandlers.released();
     return false;
 }
 
@@ -67,6 +104,20 @@ bool Viewport::handleMouseMove(const QMouseEvent& event) {
     if (!(buttons & (Qt::LeftButton | Qt::RightButton | Qt::MiddleButton))) return false;
     const QPointF d = event.position() - mLastDragPx;
     mLastDragPx = event.position();
+    if (mTouchMode) {
+        // Left touches, right orbits, middle pans (a drag off the mesh keeps the last target).
+        if (mTouching && (buttons & Qt::LeftButton)) touchAt(event.position());
+        if (buttons & Qt::RightButton) {
+            mCamera.orbit(float(d.x()), float(d.y()));
+            return true;
+        }
+        if (buttons & Qt::MiddleButton) {
+            const QSize size = widget()->size();
+            mCamera.pan(float(d.x()), float(d.y()), glm::vec2(float(size.width()), float(size.height())));
+            return true;
+        }
+        return false;
+    }
     if (buttons & Qt::LeftButton) {
         mCamera.orbit(float(d.x()), float(d.y()));
     } else {
@@ -77,9 +128,16 @@ bool Viewport::handleMouseMove(const QMouseEvent& event) {
 }
 
 bool Viewport::handleWheel(const QWheelEvent& event) {
-    // angleDelta is in eighths of a degree; a notch is 15 degrees. Touchpads send fractions.
-    const float steps = float(event.angleDelta().y()) / 120.0f;
+    // angleDelta is in eighths of a degree; a notch is 15 degrees. Touchpads send fractions. Some
+    // platforms turn Shift+wheel into horizontal scrolling: then take the other axis.
+    const QPoint delta = event.angleDelta();
+    const bool shift = event.modifiers() & Qt::ShiftModifier;
+    const float steps = float(delta.y() == 0 && shift ? delta.x() : delta.y()) / 120.0f;
     if (steps == 0.0f) return false;
+    if (mTouchMode && !shift) {
+        setTouchDepthMm(mTouchDepthMm + double(steps) * kTouchDepthStepMm);
+        return false;
+    }
     mCamera.zoom(steps);
     return true;
 }

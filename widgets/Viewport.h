@@ -13,6 +13,7 @@
 #include <QString>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 
 class QMouseEvent;
@@ -58,6 +59,28 @@ public:
     /// The same for a point in a viewport of `sizePx` (sub-pixel: no half-pixel shift is added).
     std::optional<VertexId> pickVertexAt(QPointF pointPx, QSize sizePx) const;
 
+    /// Touch mode: the mouse steers the virtual tool. A left press or drag over the mesh calls
+    /// TouchHandlers::moved with the vertex under the mouse (picked on the drawn, deformed positions),
+    /// the left release calls released; right-drag orbits, middle-drag pans, the wheel changes the
+    /// press depth (kTouchDepthStepMm a notch, forward is deeper) and Shift+wheel zooms.
+    struct TouchHandlers {
+        std::function<void(VertexId, QPointF)> moved;
+        std::function<void()> released;
+        std::function<void(double depthMm)> depthChanged;
+    };
+    static constexpr double kDefaultTouchDepthMm = 3.0;
+    static constexpr double kMaxTouchDepthMm = 10.0;
+    static constexpr double kTouchDepthStepMm = 0.5;
+    void setTouchHandlers(TouchHandlers handlers) { mTouchHandlers = std::move(handlers); }
+    /// Leaving touch mode while pressing releases the touch.
+    void setTouchMode(bool on);
+    bool touchMode() const { return mTouchMode; }
+    /// The left button is down in touch mode.
+    bool touching() const { return mTouching; }
+    /// Clamped to 0..kMaxTouchDepthMm; calls depthChanged when the depth changes.
+    void setTouchDepthMm(double depthMm);
+    double touchDepthMm() const { return mTouchDepthMm; }
+
     const OrbitCamera& camera() const { return mCamera; }
     const RenderScene& scene() const { return mScene; }
     /// Frames painted so far (on screen or grabbed): the window divides it by time for its fps.
@@ -67,10 +90,11 @@ protected:
     /// Schedules a repaint. `topologyChanged`: the triangles changed (GPU buffers must be rebuilt).
     virtual void sceneChanged(bool topologyChanged) = 0;
 
-    // Event helpers for the widgets: left-drag orbits, right- or middle-drag pans, the wheel zooms.
-    // Each returns whether the view changed (the widget then repaints).
+    // Event helpers for the widgets: left-drag orbits, right- or middle-drag pans, the wheel zooms
+    // (touch mode: see TouchHandlers). Each returns whether the view changed (the widget then repaints).
     bool handleMousePress(const QMouseEvent& event);
     bool handleMouseMove(const QMouseEvent& event);
+    bool handleMouseRelease(const QMouseEvent& event);
     bool handleWheel(const QWheelEvent& event);
 
     /// The widgets call this once per painted frame.
@@ -82,7 +106,13 @@ protected:
     bool mShowRestGhost = false;
 
 private:
+    void touchAt(QPointF pointPx);
+
     QPointF mLastDragPx;
+    TouchHandlers mTouchHandlers;
+    bool mTouchMode = false;
+    bool mTouching = false;
+    double mTouchDepthMm = kDefaultTouchDepthMm;
     std::uint64_t mFramesDrawn = 0;
 };
 

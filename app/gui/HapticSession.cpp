@@ -1,10 +1,13 @@
 #include "app/gui/HapticSession.h"
 
 #include "device/DeviceUri.h"
+#include "device/MouseDevice.h"
 #include "device/SimulatedDevice.h"
 #include "engine/HapticScene.h"
+#include "engine/SceneTarget.h"
 
 #include <exception>
+#include <limits>
 
 namespace palpate {
 
@@ -63,6 +66,7 @@ std::string HapticSession::applyPreset(const TissuePreset& preset) {
         const SceneRecord base = latest();
         mDef.rateHz = preset.hapticRateHz;
         stop();
+        mMouse = nullptr;  // deleted with the loop
         mLoop.reset();
         mPending = SceneRecord{};
         std::string error;
@@ -89,6 +93,7 @@ std::string HapticSession::applyPreset(const TissuePreset& preset) {
 
 std::string HapticSession::disconnectDevice() {
     if (!mLoop) return {};
+    mMouse = nullptr;  // the loop retires it with this swap
     // A simulated device that was never opened: Disconnected, it reads nothing and renders nothing.
     return mLoop->swapDevice(std::make_unique<SimulatedDevice>(SimTrajectory::PressHold));
 }
@@ -103,7 +108,10 @@ std::string HapticSession::setDevice(const std::string& uri) {
     }
     auto device = openDeviceFor(uri, *latest().mesh, error);
     if (!device) return error;
+    auto* mouse = dynamic_cast<MouseDevice*>(device.get());
     if (std::string problem = mLoop->swapDevice(std::move(device)); !problem.empty()) return problem;
+    mMouse = mouse;
+    mHaveTouchTarget = false;
     mDeviceUri = uri;
     return {};
 }
@@ -128,23 +136,53 @@ std::unique_ptr<HapticDevice> HapticSession::openDeviceFor(const std::string& ur
     // showing palpation; a waypoint file plays once.
     if (auto* simulated = dynamic_cast<SimulatedDevice*>(device.get()))
         if (simulated->trajectory() != SimTrajectory::Waypoints) simulated->setRepeat(1.0);
-    // Aim scripted devices at the side of the mesh: the vertex with the largest x, along its rest normal.
-    const auto& rest = mesh.restPositionsMm();
-    VertexId target = 0;
-    for (VertexId v = 1; v < rest.size(); ++v)
-        if (rest[v].x > rest[target].x) target = v;
-    if (!rest.empty()) device->setScene(rest[target], mesh.restNormals()[target], glm::vec3(0.0f, 1.0f, 0.0f));
+    aimAtDefaultTarget(*device, mesh);  // scripted devices press the side of the mesh
+    // The mouse tool starts off the surface (its default target, the origin, may lie inside the
+    // tissue): no contact and zero force until the first touch, so the safety filter arms at once.
+    if (auto* mouse = dynamic_cast<MouseDevice*>(device.get())) mouse->setTargetMm(awayPointMm(mesh, nullptr));
     return device;
+}
+
+glm::vec3 HapticSession::awayPointMm(const TissueMesh& mesh, const glm::vec3* nearMm) const {
+    const auto& rest = mesh.restPositionsMm();
+    if (rest.empty()) return glm::vec3(0.0f, 0.0f, 1000.0f);
+    VertexId best = 0;
+    if (nearMm) {
+        float bestD2 = std::numeric_limits<float>::max();
+        for (VertexId v = 0; v < rest.size(); ++v) {
+            const glm::vec3 d = rest[v] - *nearMm;
+            const float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
+            if (d2 < bestD2) bestD2 = d2, best = v;
+        }
+    } else {
+        best = defaultTargetVertex(mesh);
+    }
+    return rest[best] + kTouchLiftMm * mesh.restNormals()[best];
+}
+
+void HapticSession::setTouchTarget(const glm::vec3& targetMm) {
+    if (!mMouse || !mMouse->setTargetMm(targetMm)) return;
+    mLastTouchMm = targetMm;
+    mHaveTouchTarget = true;
+}
+
+void HapticSession::releaseTouch() {
+    if (!mMouse || !mLoop) return;
+    mMouse->setTargetMm(awayPointMm(*latest().mesh, mHaveTouchTarget ? &mLastTouchMm : nullptr));
 }
 
 std::string HapticSession::handOver(SceneRecord record, std::unique_ptr<HapticScene> scene,
                                     std::unique_ptr<HapticDevice> device) {
+    auto* mouse = dynamic_cast<MouseDevice*>(device.get());
+    mHaveTouchTarget = false;
     if (!mLoop) {
+        mMouse = nullptr;
         try {
             mLoop = std::make_unique<HapticLoop>(mDef, std::move(scene), std::move(device));
         } catch (const std::exception& e) {
             return std::string("the haptic loop cannot start: ") + e.what();
         }
+        mMouse = mouse;
         if (mPauseRequested) mLoop->pause();
         // The first scene is the loop's from its first tick: draw it now.
         mDrawn = std::move(record);
@@ -156,6 +194,7 @@ std::string HapticSession::handOver(SceneRecord record, std::unique_ptr<HapticSc
     // The device first: switching it re-arms the safety filter, so whatever the new scene would
     // make of the old device's last position for a tick never reaches a hand.
     if (std::string problem = mLoop->swapDevice(std::move(device)); !problem.empty()) return problem;
+    mMouse = mouse;
     if (std::string problem = mLoop->swapScene(std::move(scene)); !problem.empty()) return problem;
     // Drawn from the first snapshot that carries this scene's id (observe()).
     mPending = std::move(record);

@@ -18,6 +18,8 @@
 
 namespace palpate {
 
+class MouseDevice;
+
 enum class LoopMode {
     Threaded,  ///< the loop's own real-time thread (the interactive window)
     Stepped,   ///< ticks run on the caller's thread when asked (screenshots, tests): deterministic
@@ -48,7 +50,12 @@ struct ObservedLoop {
 
 class HapticSession {
 public:
+    /// The device of stepped runs, screenshots and tests (deterministic, scripted).
     static constexpr const char* kDefaultDeviceUri = "sim:stroke";
+    /// The interactive window's device when no hardware is present: the viewport steers the tool.
+    static constexpr const char* kInteractiveDeviceUri = "mouse:";
+    /// Where releaseTouch() and a fresh mouse device put the tool: this far out along the normal.
+    static constexpr float kTouchLiftMm = 20.0f;
 
     explicit HapticSession(LoopMode mode, const HapticLoopDef& def = {});
     /// Stops the thread before anything it uses goes away.
@@ -80,6 +87,16 @@ public:
     /// Pause: the model gets no tool position (the tissue relaxes, zero force); the thread runs on.
     void setPaused(bool paused);
     bool pauseRequested() const { return mPauseRequested; }
+
+    /// Touch mode (the viewport steers a mouse: device). True while the loop's device is one this
+    /// session made for "mouse:" (until the next device swap, disconnect or restart).
+    bool touchAvailable() const { return mMouse != nullptr; }
+    /// Moves the mouse device's tool tip to `targetMm` (scene frame, mm). Ignored without a mouse
+    /// device or for a non-finite target. Wait-free towards the haptic thread.
+    void setTouchTarget(const glm::vec3& targetMm);
+    /// Lifts the tool off the surface: kTouchLiftMm along the rest normal of the rest vertex nearest
+    /// the last target (before any touch: the vertex the scripted devices aim at), so contact ends.
+    void releaseTouch();
 
     /// Stepped mode: runs `ticks` ticks now, on this thread. Ignored while the thread runs.
     void step(int ticks);
@@ -123,6 +140,9 @@ private:
     };
     /// The newest mesh handed to the loop (pending, else drawn).
     const SceneRecord& latest() const { return mPending.mesh ? mPending : mDrawn; }
+    /// Where a fresh or released mouse tool waits: kTouchLiftMm out from the rest vertex nearest
+    /// `nearMm` (or from the aim vertex when null).
+    glm::vec3 awayPointMm(const TissueMesh& mesh, const glm::vec3* nearMm) const;
     std::unique_ptr<HapticDevice> openDeviceFor(const std::string& uri, const TissueMesh& mesh, std::string& error);
     std::string handOver(SceneRecord record, std::unique_ptr<HapticScene> scene, std::unique_ptr<HapticDevice> device);
 
@@ -131,6 +151,11 @@ private:
     std::string mDeviceUri = kDefaultDeviceUri;
     bool mPauseRequested = false;
     std::unique_ptr<HapticLoop> mLoop;
+    /// Non-owning: the MouseDevice the loop got last (the loop owns it; it stays alive until a later
+    /// swap retires it, and every swap here resets this first). Null for any other device.
+    MouseDevice* mMouse = nullptr;
+    bool mHaveTouchTarget = false;
+    glm::vec3 mLastTouchMm{0.0f};
     SceneRecord mDrawn;
     SceneRecord mPending;
     SnapshotObserver mObserver;

@@ -35,13 +35,19 @@ namespace {
 
 /// The simulated devices the Device menu offers (listDeviceSchemes() also has forms that need an
 /// argument, or a viewport that steers them).
-constexpr std::array<const char*, 4> kMenuDevices = {"sim:press", "sim:stroke", "sim:scan", "sim:sine"};
+constexpr std::array<const char*, 5> kMenuDevices = {"sim:press", "sim:stroke", "sim:scan", "sim:sine", "mouse:"};
 constexpr int kMaxRecentFiles = 8;
 const char* const kRecentFilesKey = "recentFiles";
 
 bool isMeshFile(const QString& path) {
     const QString suffix = QFileInfo(path).suffix().toLower();
     return suffix == "obj" || suffix == "off" || suffix == "ply" || suffix == "stl" || suffix == "om";
+}
+
+bool isMouseUri(const std::string& uri) {
+    DeviceUri parsed;
+    std::string ignored;
+    return parseDeviceUri(uri, parsed, ignored) && parsed.kind == DeviceKind::Mouse;
 }
 
 QLabel* addStatusField(QStatusBar* bar, const char* objectName, const QString& toolTip) {
@@ -60,6 +66,14 @@ MainWindow::MainWindow(RendererChoice renderer, LoopMode mode, QWidget* parent)
     setWindowTitle(QStringLiteral("Palpate"));
     mViewport = createViewport(renderer, this, &mRendererReason);
     setCentralWidget(mViewport->widget());
+    Viewport::TouchHandlers touch;
+    touch.moved = [this](VertexId v, QPointF) { touchVertex(v); };
+    touch.released = [this] { releaseTouch(); };
+    touch.depthChanged = [this](double depthMm) {
+        if (mTouchVertex != kNoVertex) touchVertex(mTouchVertex);
+        statusBar()->showMessage(tr("Touch depth %1 mm").arg(depthMm, 0, 'f', 1), 2000);
+    };
+    mViewport->setTouchHandlers(std::move(touch));
     createStatusBar();
     createDocks();
     createMenus();
@@ -306,6 +320,14 @@ void MainWindow::createMenus() {
             QMessageBox::warning(this, tr("Cannot restart"), error);
     });
 
+    mTouchAction = simulation->addAction(tr("&Touch Mode"), QKeySequence(Qt::Key_T), this,
+                                         [this](bool on) { setTouchMode(on); });
+    mTouchAction->setCheckable(true);
+    mTouchAction->setStatusTip(tr("The mouse steers the tool: left-drag presses the tissue, the wheel sets the "
+                                  "depth; right-drag orbits, middle-drag pans, Shift+wheel zooms"));
+    mTouchAction->setChecked(isMouseUri(mSession->deviceUri()));
+    mViewport->setTouchMode(mTouchAction->isChecked());
+
     QMenu* devices = simulation->addMenu(tr("&Device"));
     mDeviceGroup = new QActionGroup(this);
     mDeviceGroup->setExclusive(true);
@@ -358,6 +380,7 @@ void MainWindow::checkCurrentDevice() {
 QString MainWindow::loadMesh(const QString& path) {
     const std::string error = mSession->loadMesh(path.toStdString());
     if (!error.empty()) return QString::fromStdString(error);
+    mTouchVertex = kNoVertex;  // a fresh device on another mesh: nothing is pressed
     addRecentFile(path);
     if (!mDevicePanel->isConnected()) {
         const QString uri = QString::fromStdString(mSession->deviceUri());
@@ -374,6 +397,8 @@ QString MainWindow::setDeviceUri(const QString& uri) {
     const std::string error = mSession->setDevice(uri.toStdString());
     checkCurrentDevice();
     if (error.empty()) {
+        mTouchVertex = kNoVertex;  // a fresh device: nothing is pressed
+        setTouchMode(isMouseUri(uri.toStdString()));
         std::string ignored;
         const auto device = createDeviceFromUri(uri.toStdString(), ignored);  // for its spec only
         mDevicePanel->setConnected(uri, device ? device->spec() : DeviceSpec{});
@@ -382,7 +407,28 @@ QString MainWindow::setDeviceUri(const QString& uri) {
     return QString::fromStdString(error);
 }
 
-QString MainWindow::restartSimulation() { return QString::fromStdString(mSession->restart()); }
+QString MainWindow::restartSimulation() {
+    mTouchVertex = kNoVertex;  // the fresh device's tool starts off the tissue
+    return QString::fromStdString(mSession->restart());
+}
+
+void MainWindow::setTouchMode(bool on) {
+    mViewport->setTouchMode(on);  // releases a touch in progress when turned off
+    if (mTouchAction) mTouchAction->setChecked(on);
+}
+
+void MainWindow::touchVertex(VertexId v) {
+    const auto& mesh = mSession->drawnMesh();
+    if (!mSession->touchAvailable() || !mesh || v >= mesh->vertexCount()) return;
+    mTouchVertex = v;
+    const float depthMm = float(touchDepthMm());
+    mSession->setTouchTarget(mesh->restPositionsMm()[v] - depthMm * mesh->restNormals()[v]);
+}
+
+void MainWindow::releaseTouch() {
+    mTouchVertex = kNoVertex;
+    mSession->releaseTouch();
+}
 
 void MainWindow::advanceTicks(int ticks) {
     mSession->step(ticks);

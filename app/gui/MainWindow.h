@@ -65,6 +65,20 @@ public:
     void setPlaying(bool playing);
     bool isPlaying() const { return !mSession->pauseRequested(); }
 
+    /// Touch mode: the viewport's left button steers the mouse: device's tool (Viewport::TouchHandlers).
+    /// Switching to mouse: turns it on, to any other device off. The Simulation menu's "Touch Mode" (T).
+    void setTouchMode(bool on);
+    bool touchMode() const { return mViewport->touchMode(); }
+    /// A touch on vertex `v` of the drawn mesh: the tool goes to its rest position, touchDepthMm()
+    /// in along its rest normal. Does nothing without a mouse device or for an unknown vertex.
+    void touchVertex(VertexId v);
+    /// Lifts the tool off the tissue (the left button's release).
+    void releaseTouch();
+    /// The press depth (mm, 0..10; the wheel in touch mode). Re-aims a touch in progress.
+    void setTouchDepthMm(double depthMm) { mViewport->setTouchDepthMm(depthMm); }
+    double touchDepthMm() const { return mViewport->touchDepthMm(); }
+    QAction* touchModeAction() const { return mTouchAction; }
+
     Viewport* viewport() const { return mViewport; }
     HapticSession& session() { return *mSession; }
     const HapticSession& session() const { return *mSession; }
@@ -131,6 +145,8 @@ private:
     QLabel* mForceLabel = nullptr;
     QAction* mPlayAction = nullptr;
     QAction* mWireframeAction = nullptr;
+    QAction* mTouchAction = nullptr;
+    VertexId mTouchVertex = kNoVertex;  // the vertex being pressed (touch mode), else kNoVertex
     QActionGroup* mDeviceGroup = nullptr;
     ParameterPanel* mParameterPanel = nullptr;
     DevicePanel* mDevicePanel = nullptr;

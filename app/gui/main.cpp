@@ -43,8 +43,10 @@ void printLoaded(const std::string& path, const palpate::TissueMesh& mesh) {
 QString deviceHelp() {
     QStringList forms;
     for (const auto& scheme : palpate::listDeviceSchemes()) forms << QString::fromStdString(scheme.uri);
-    return QStringLiteral("Haptic device: %1 (default %2).")
-        .arg(forms.join(QStringLiteral(", ")), QLatin1String(palpate::HapticSession::kDefaultDeviceUri));
+    return QStringLiteral("Haptic device: %1 (default %2 in the interactive window, where the mouse steers the "
+                          "tool; %3 for screenshots).")
+        .arg(forms.join(QStringLiteral(", ")), QLatin1String(palpate::HapticSession::kInteractiveDeviceUri),
+             QLatin1String(palpate::HapticSession::kDefaultDeviceUri));
 }
 
 }  // namespace
@@ -66,8 +68,8 @@ int main(int argc, char** argv) {
     parser.addVersionOption();
     const QCommandLineOption meshOption(QStringLiteral("mesh"), QStringLiteral("Mesh to open (OBJ, OFF, PLY, STL, OM)."),
                                         QStringLiteral("FILE"));
-    const QCommandLineOption deviceOption(QStringLiteral("device"), deviceHelp(), QStringLiteral("URI"),
-                                          QLatin1String(palpate::HapticSession::kDefaultDeviceUri));
+    // No default here: it depends on the mode (below).
+    const QCommandLineOption deviceOption(QStringLiteral("device"), deviceHelp(), QStringLiteral("URI"));
     const QCommandLineOption softwareOption(QStringLiteral("software-render"),
                                             QStringLiteral("Draw with QPainter instead of OpenGL."));
     const QCommandLineOption screenshotOption(
@@ -155,7 +157,12 @@ int main(int argc, char** argv) {
     };
 
     // The device URI is checked before anything else is built: the message names the URI.
-    const QString deviceUri = parser.value(deviceOption);
+    // Without --device: the interactive window has no hardware to find yet, so the mouse steers the
+    // tool; screenshots, grabs and scripted runs keep the scripted stroke (deterministic pictures).
+    const QString deviceUri = parser.isSet(deviceOption)
+                                  ? parser.value(deviceOption)
+                                  : QLatin1String(interactive ? palpate::HapticSession::kInteractiveDeviceUri
+                                                              : palpate::HapticSession::kDefaultDeviceUri);
     {
         std::string error;
         if (!palpate::createDeviceFromUri(deviceUri.toStdString(), error)) return fail(QString::fromStdString(error));

@@ -252,7 +252,7 @@ TEST(MainWindow, RestartAndDeviceSwitchSwapTheLoopsSceneAndDevice) {
     window.advanceTicks(kTicksIntoContact - 1);
     EXPECT_TRUE(window.session().observed().contact) << window.statusText().toStdString();
 
-    // The Device menu lists the four scripted devices; choosing one swaps it in.
+    // The Device menu lists the four scripted devices and the mouse; choosing one swaps it in.
     QMenu* devices = nullptr;
     for (QMenu* menu : window.findChildren<QMenu*>())
         if (menu->title().remove(QLatin1Char('&')) == QStringLiteral("Device")) devices = menu;
@@ -263,7 +263,7 @@ TEST(MainWindow, RestartAndDeviceSwitchSwapTheLoopsSceneAndDevice) {
         EXPECT_TRUE(action->isCheckable());
         EXPECT_EQ(action->isChecked(), action->text() == QStringLiteral("sim:stroke")) << action->text().toStdString();
     }
-    EXPECT_EQ(listed, (QStringList{"sim:press", "sim:stroke", "sim:scan", "sim:sine"}));
+    EXPECT_EQ(listed, (QStringList{"sim:press", "sim:stroke", "sim:scan", "sim:sine", "mouse:"}));
     devices->actions().at(3)->trigger();
     EXPECT_EQ(window.session().deviceUri(), "sim:sine");
     EXPECT_TRUE(devices->actions().at(3)->isChecked());
