@@ -41,6 +41,9 @@ SlopeRingDeformer::SlopeRingDeformer(const TissueMesh& mesh, const Octree& octre
         mActiveStamp.assign(n, 0);
         mRelaxing.resize(n);
         mRelaxingSlot.assign(n, kNoSlot);
+        // The full-search fallback lists active and relaxing vertices (disjoint: at most n) in the
+        // tick: reserved here so that it never allocates.
+        mDisplacedScratch.reserve(n);
     }
     if (method == SlopeRingMethod::Previous || method == SlopeRingMethod::Hybrid) mRingOf.assign(n, kNotInRing);
     if (method == SlopeRingMethod::Proposed) mPreviousRingVertices.reserve(n);
