@@ -66,6 +66,15 @@ HapticLoop::HapticLoop(const HapticLoopDef& def, std::unique_ptr<HapticScene> sc
 
 HapticLoop::~HapticLoop() {
     stop();
+    // Scenes and devices still queued (sent after the last tick) are ours to free.
+    Command c;
+    while (mCommands.pop(c)) {
+        delete c.scene;
+        if (c.device) {
+            c.device->close();
+            delete c.device;
+        }
+    }
     collectRetired();
 }
 

@@ -302,3 +302,32 @@ TEST(HapticLoopThreads, ObserverNeverSeesATornSnapshotUnderParameterChurn) {
     EXPECT_GT(seen, 20u);
     EXPECT_GT(loop.report().counters.ticks, 20u);
 }
+
+TEST(HapticLoop, QueuedScenesAndDevicesAreFreedWithTheLoop) {
+    // Sent but never applied (no tick ran): the loop's destructor frees them (LeakSanitizer in the
+    // asan preset checks; here the device's destructor must run).
+    class CountedDevice final : public HapticDevice {
+    public:
+        explicit CountedDevice(bool* destroyed) : mDestroyed(destroyed) {}
+        ~CountedDevice() override { *mDestroyed = true; }
+        bool open() override { return true; }
+        void close() override {}
+        bool calibrate() override { return true; }
+        DeviceState state() const override { return DeviceState::Ready; }
+        const DeviceSpec& spec() const override { return mSpec; }
+        bool read(DeviceSample&) override { return false; }
+        void writeForce(const glm::vec3&) override {}
+        void emergencyStop() override {}
+
+    private:
+        bool* mDestroyed;
+        DeviceSpec mSpec;
+    };
+    bool destroyed = false;
+    {
+        Rig rig = makeRig(SimTrajectory::PressHold, quietDef());
+        ASSERT_EQ(rig.loop->swapDevice(std::make_unique<CountedDevice>(&destroyed)), "");
+        ASSERT_EQ(rig.loop->swapScene(HapticScene::createSlopeRing(makeSphere(642), {})), "");
+    }
+    EXPECT_TRUE(destroyed);
+}
