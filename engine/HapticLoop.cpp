@@ -68,13 +68,7 @@ HapticLoop::~HapticLoop() {
     stop();
     // Scenes and devices still queued (sent after the last tick) are ours to free.
     Command c;
-    while (mCommands.pop(c)) {
-        delete c.scene;
-        if (c.device) {
-            c.device->close();
-            delete c.device;
-        }
-    }
+    while (mCommands.pop(c)) destroyRetired({c.scene, c.device});
     collectRetired();
 }
 
@@ -290,23 +284,19 @@ std::string HapticLoop::swapDevice(std::unique_ptr<HapticDevice> device) {
 void HapticLoop::pause() { mCommands.push(Command{Command::Kind::Pause, {}, nullptr, nullptr}); }
 void HapticLoop::resume() { mCommands.push(Command{Command::Kind::Resume, {}, nullptr, nullptr}); }
 
+void HapticLoop::destroyRetired(const Retired& r) {
+    delete r.scene;
+    if (r.device) {
+        r.device->close();
+        delete r.device;
+    }
+}
+
 void HapticLoop::collectRetired() {
     Retired r;
-    while (mRetired.pop(r)) {
-        delete r.scene;
-        if (r.device) {
-            r.device->close();
-            delete r.device;
-        }
-    }
+    while (mRetired.pop(r)) destroyRetired(r);
     if (!running()) {  // the thread is gone: its pending list is ours now
-        for (int i = 0; i < mPendingRetireCount; ++i) {
-            delete mPendingRetire[i].scene;
-            if (mPendingRetire[i].device) {
-                mPendingRetire[i].device->close();
-                delete mPendingRetire[i].device;
-            }
-        }
+        for (int i = 0; i < mPendingRetireCount; ++i) destroyRetired(mPendingRetire[i]);
         mPendingRetireCount = 0;
     }
 }

@@ -102,6 +102,8 @@ private:
     void warmUp();
     void applyCommands();
     void retire(HapticScene* scene, HapticDevice* device);
+    /// Controller thread: deletes a retired scene and closes and deletes a retired device.
+    static void destroyRetired(const Retired& retired);
     void publish(const TickResult& result, const glm::vec3& forceOutN);
 
     HapticLoopDef mDef;

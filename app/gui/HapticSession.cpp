@@ -69,13 +69,7 @@ std::string HapticSession::applyPreset(const TissuePreset& preset) {
         mMouse = nullptr;  // deleted with the loop
         mLoop.reset();
         mPending = SceneRecord{};
-        std::string error;
-        auto scene = makeScene(*base.mesh, error);
-        if (!scene) return base.path + ": " + error;
-        auto device = openDeviceFor(mDeviceUri, *base.mesh, error);
-        if (!device) return error;
-        SceneRecord record{base.mesh, base.path, scene->id()};
-        return handOver(std::move(record), std::move(scene), std::move(device));
+        return handOverFresh(base);
     }
     const bool needsScene = preset.method != before.method || preset.octree.maxDepth != before.octree.maxDepth ||
                             preset.octree.leafCapacity != before.octree.leafCapacity ||
@@ -118,7 +112,10 @@ std::string HapticSession::setDevice(const std::string& uri) {
 
 std::string HapticSession::restart() {
     if (!mLoop) return "no mesh is loaded";
-    const SceneRecord base = latest();
+    return handOverFresh(latest());
+}
+
+std::string HapticSession::handOverFresh(const SceneRecord& base) {
     std::string error;
     auto scene = makeScene(*base.mesh, error);
     if (!scene) return base.path + ": " + error;

@@ -138,6 +138,8 @@ private:
         std::string path;
         std::uint64_t sceneId = 0;
     };
+    /// A fresh scene of `base`'s mesh and a fresh device of the current URI, handed to the loop.
+    std::string handOverFresh(const SceneRecord& base);
     /// The newest mesh handed to the loop (pending, else drawn).
     const SceneRecord& latest() const { return mPending.mesh ? mPending : mDrawn; }
     /// Where a fresh or released mouse tool waits: kTouchLiftMm out from the rest vertex nearest
