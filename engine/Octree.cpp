@@ -136,6 +136,43 @@ VertexId Octree::searchNodeFaithful(const glm::vec3& p, std::span<const glm::vec
     return touched;
 }
 
+template <typename Bound, typename ScanLeaf>
+void Octree::visitNearestFirst(const glm::vec3& p, Bound bound, ScanLeaf scanLeaf) const {
+    struct Entry {
+        std::int32_t node;
+        float d2;
+    };
+    Entry stack[8 * 24];
+    int top = 0;
+    stack[top++] = {0, boxDistance2(p, mNodes[0].tightMinMm, mNodes[0].tightMaxMm)};
+    while (top > 0) {
+        const Entry e = stack[--top];
+        if (e.d2 > bound()) continue;
+        const Node& node = mNodes[std::size_t(e.node)];
+        if (node.leaf) {
+            scanLeaf(node);
+            continue;
+        }
+        Entry children[8];
+        int count = 0;
+        for (int i = 0; i < 8; ++i) {
+            const std::int32_t c = node.child[i];
+            if (c < 0) continue;
+            const Node& child = mNodes[std::size_t(c)];
+            const float d2 = boxDistance2(p, child.tightMinMm, child.tightMaxMm);
+            if (d2 > bound()) continue;
+            // insertion sort, farthest first, so the nearest is popped first
+            int k = count++;
+            while (k > 0 && children[k - 1].d2 < d2) {
+                children[k] = children[k - 1];
+                --k;
+            }
+            children[k] = {c, d2};
+        }
+        for (int i = 0; i < count; ++i) stack[top++] = children[i];
+    }
+}
+
 VertexId Octree::nearestExact(const glm::vec3& p, std::span<const glm::vec3> positionsMm,
                               std::span<const VertexId> displaced, VertexId warmStart) const {
     VertexId best = kNoVertex;
@@ -151,47 +188,15 @@ VertexId Octree::nearestExact(const glm::vec3& p, std::span<const glm::vec3> pos
             best = v;
         }
     }
-    // Depth-first, nearest child first, over tight boxes of rest positions. A fixed stack: each level
-    // pushes at most 8 entries and the depth is at most 21.
-    struct Entry {
-        std::int32_t node;
-        float d2;
-    };
-    Entry stack[8 * 24];
-    int top = 0;
-    stack[top++] = {0, boxDistance2(p, mNodes[0].tightMinMm, mNodes[0].tightMaxMm)};
-    while (top > 0) {
-        const Entry e = stack[--top];
-        if (e.d2 > bestD2) continue;
-        const Node& node = mNodes[std::size_t(e.node)];
-        if (node.leaf) {
-            for (std::uint32_t v = node.begin; v < node.end; ++v) {
-                const float d2 = distance2(positionsMm[v], p);
-                if (closer(d2, v, bestD2, best)) {
-                    bestD2 = d2;
-                    best = v;
-                }
+    visitNearestFirst(p, [&] { return bestD2; }, [&](const Node& leaf) {
+        for (std::uint32_t v = leaf.begin; v < leaf.end; ++v) {
+            const float d2 = distance2(positionsMm[v], p);
+            if (closer(d2, v, bestD2, best)) {
+                bestD2 = d2;
+                best = v;
             }
-            continue;
         }
-        Entry children[8];
-        int count = 0;
-        for (int i = 0; i < 8; ++i) {
-            const std::int32_t c = node.child[i];
-            if (c < 0) continue;
-            const Node& child = mNodes[std::size_t(c)];
-            const float d2 = boxDistance2(p, child.tightMinMm, child.tightMaxMm);
-            if (d2 > bestD2) continue;
-            // insertion sort, farthest first, so the nearest is popped first
-            int k = count++;
-            while (k > 0 && children[k - 1].d2 < d2) {
-                children[k] = children[k - 1];
-                --k;
-            }
-            children[k] = {c, d2};
-        }
-        for (int i = 0; i < count; ++i) stack[top++] = children[i];
-    }
+    });
     return best;
 }
 
@@ -213,43 +218,14 @@ int Octree::nearestRestK(const glm::vec3& p, int count, VertexId* ids, float* d2
     seedCount = std::clamp(seedCount, 0, std::min(count, 64));
     std::copy(ids, ids + seedCount, seeds);
     for (int i = 0; i < seedCount; ++i) insert(seeds[i], distance2(mRestMm[seeds[i]], p));
-    struct Entry {
-        std::int32_t node;
-        float d2;
-    };
-    Entry stack[8 * 24];
-    int top = 0;
-    stack[top++] = {0, boxDistance2(p, mNodes[0].tightMinMm, mNodes[0].tightMaxMm)};
-    while (top > 0) {
-        const Entry e = stack[--top];
-        if (e.d2 > bound()) continue;
-        const Node& node = mNodes[std::size_t(e.node)];
-        if (node.leaf) {
-            for (std::uint32_t v = node.begin; v < node.end; ++v) {
-                const float d2 = distance2(mRestMm[v], p);
-                if (found == count && !(d2 < d2s[count - 1])) continue;
-                if (std::find(seeds, seeds + seedCount, v) != seeds + seedCount) continue;  // already in
-                insert(v, d2);
-            }
-            continue;
+    visitNearestFirst(p, bound, [&](const Node& leaf) {
+        for (std::uint32_t v = leaf.begin; v < leaf.end; ++v) {
+            const float d2 = distance2(mRestMm[v], p);
+            if (found == count && !(d2 < d2s[count - 1])) continue;
+            if (std::find(seeds, seeds + seedCount, v) != seeds + seedCount) continue;  // already in
+            insert(v, d2);
         }
-        Entry children[8];
-        int n = 0;
-        for (int i = 0; i < 8; ++i) {
-            const std::int32_t c = node.child[i];
-            if (c < 0) continue;
-            const Node& child = mNodes[std::size_t(c)];
-            const float d2 = boxDistance2(p, child.tightMinMm, child.tightMaxMm);
-            if (d2 > bound()) continue;
-            int k = n++;
-            while (k > 0 && children[k - 1].d2 < d2) {
-                children[k] = children[k - 1];
-                --k;
-            }
-            children[k] = {c, d2};
-        }
-        for (int i = 0; i < n; ++i) stack[top++] = children[i];
-    }
+    });
     return found;
 }
 

@@ -64,6 +64,12 @@ public:
 private:
     void build(std::uint32_t nodeIndex, const std::vector<std::uint64_t>& codes, int depth);
 
+    /// Depth-first, nearest child first, over tight boxes of rest positions: calls scanLeaf(node)
+    /// for every leaf whose box is within sqrt(bound()) of the point (bound() may shrink as leaves
+    /// are scanned). A fixed stack: each level pushes at most 8 entries and the depth is at most 21.
+    template <typename Bound, typename ScanLeaf>
+    void visitNearestFirst(const glm::vec3& pointMm, Bound bound, ScanLeaf scanLeaf) const;
+
     OctreeDef mDef;
     std::vector<Node> mNodes;
     std::vector<glm::vec3> mRestMm;  // copy: the tree must not depend on the mesh's lifetime
