@@ -167,10 +167,11 @@ PresetLoadResult parseTissuePreset(const std::string& textIn, const std::string&
     }
     if (j.contains("tissue")) {
         const Json& t = j.at("tissue");
-        if (r.object(t, "tissue", {"youngs_modulus_kpa", "poisson_ratio", "source"})) {
+        if (r.object(t, "tissue", {"youngs_modulus_kpa", "poisson_ratio", "tool_radius_mm", "source"})) {
             TissueProperties tissue;
             r.number(t, "tissue", "youngs_modulus_kpa", 1e-6, 1e9, [&](double v) { tissue.youngsModulusKPa = v; }, true);
             r.number(t, "tissue", "poisson_ratio", 0.0, 0.4999, [&](double v) { tissue.poissonRatio = v; }, true);
+            r.number(t, "tissue", "tool_radius_mm", 0.01, 1000, [&](double v) { tissue.toolRadiusMm = v; });
             r.text(t, "tissue", "source", tissue.source, true);
             preset.tissue = tissue;
         }
@@ -215,6 +216,7 @@ std::string tissuePresetToJson(const TissuePreset& preset) {
     if (preset.tissue)
         j["tissue"] = {{"youngs_modulus_kpa", preset.tissue->youngsModulusKPa},
                        {"poisson_ratio", preset.tissue->poissonRatio},
+                       {"tool_radius_mm", preset.tissue->toolRadiusMm},
                        {"source", preset.tissue->source}};
     return j.dump(2) + "\n";
 }

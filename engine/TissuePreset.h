@@ -15,10 +15,12 @@ namespace palpate {
 
 inline constexpr int kTissuePresetVersion = 1;
 
-/// Elastic properties the slopes were derived from, when known (calibration issue), with the source.
+/// Elastic properties the slopes were derived from, when known, with the source (DESIGN §3):
+/// the Parameters panel and the calibration turn them into slopes for the current mesh.
 struct TissueProperties {
     double youngsModulusKPa = 0.0;
     double poissonRatio = 0.0;
+    double toolRadiusMm = 5.0;  ///< radius of the probe the slopes are calibrated for
     std::string source;
 };
 

@@ -15,6 +15,10 @@ void usage(std::ostream& out) {
            "  palpate-cli demo [--mesh FILE] [--method previous|hybrid|proposed|palpate] [--json]\n"
            "  palpate-cli loop [--seconds S] [--rate HZ] [--observer-hz 60] [--device URI] [--mesh FILE]\n"
            "                   [--spin-fraction F] [--no-fifo] [--json] [--csv FILE]\n"
+           "  palpate-cli sweep [--json] [--csv FILE] [--png FILE] [--quick] [--shapes sphere,stomach] [--sizes N,..]\n"
+           "                    [--max-rings N] [--no-paper] [--repeats N] [TISSUE]\n"
+           "  palpate-cli calibrate [--mesh FILE] [--rings N] [--vertex V] [--json] [--out PRESET] [--name NAME] [TISSUE]\n"
+           "      TISSUE: [--preset FILE] [--youngs-kpa E] [--poisson NU] [--tool-radius MM]\n"
            "  palpate-cli --help | --version\n";
 }
 }  // namespace
@@ -40,6 +44,8 @@ int main(int argc, char** argv) {
         if (command == "bench") return palpate::cli::benchCommand(words);
         if (command == "demo") return palpate::cli::demoCommand(words);
         if (command == "loop") return palpate::cli::loopCommand(words);
+        if (command == "sweep") return palpate::cli::sweepCommand(words);
+        if (command == "calibrate") return palpate::cli::calibrateCommand(words);
     } catch (const std::exception& e) {
         std::cerr << "palpate-cli " << command << ": " << e.what() << "\n";
         return 1;

@@ -22,7 +22,7 @@ std::string validText() {
     p.octree.leafCapacity = 32;
     p.hapticRateHz = 2000;
     p.method = SlopeRingMethod::Proposed;
-    p.tissue = TissueProperties{5.0, 0.45, "a textbook"};
+    p.tissue = TissueProperties{5.0, 0.45, 4.0, "a textbook"};
     return tissuePresetToJson(p);
 }
 
@@ -90,6 +90,7 @@ TEST(TissuePreset, EveryBadKeyIsNamed) {
     expectErrorNaming(edited("0.7,", "\"x\","), "slope_ring.slopes_mm_per_n[0]", "number");
     expectErrorNaming(edited("\"max_depth\": 8", "\"max_depth\": 40"), "octree.max_depth", "out of range");
     expectErrorNaming(edited("\"poisson_ratio\": 0.45", "\"poisson_ratio\": 0.6"), "tissue.poisson_ratio", "out of range");
+    expectErrorNaming(edited("\"tool_radius_mm\": 4.0", "\"tool_radius_mm\": 0"), "tissue.tool_radius_mm", "out of range");
     expectErrorNaming(edited("\"model\": \"proposed\"", "\"model\": \"fem\""), "model", "unknown model");
     expectErrorNaming(edited("\"palpate-tissue-preset\"", "\"something-else\""), "format");
     expectErrorNaming(edited("\"version\": 1", "\"version\": 7"), "version", "not supported");

@@ -1,0 +1,119 @@
+// palpate-cli calibrate: slopes and spring stiffness for a mesh from E, nu and the tool radius
+// (flat-punch calibration, DESIGN §3), the error they leave against the punch, and optionally a
+// tissue preset written with them.
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "app/cli/DefaultScene.h"
+#include "app/cli/ToolContactOptions.h"
+#include "engine/Octree.h"
+#include "engine/SceneTarget.h"
+#include "engine/SlopeRingDeformer.h"
+#include "engine/TissuePreset.h"
+#include "engine/accuracy/ModelError.h"
+
+#include <nlohmann/json.hpp>
+
+#include <iomanip>
+#include <iostream>
+
+namespace palpate::cli {
+
+int calibrateCommand(const std::vector<std::string>& words) {
+    std::vector<std::string> options{"mesh", "rings", "vertex", "out", "name", "description", "source"};
+    for (const std::string& o : toolContactOptionNames()) options.push_back(o);
+    const Args args(words, {"json"}, options);
+    if (!args.ok()) {
+        std::cerr << "palpate-cli calibrate: " << args.error() << "\n";
+        return 2;
+    }
+    const ToolContactChoice choice = toolContactFromArgs(args);
+    if (!choice.error.empty()) {
+        std::cerr << "palpate-cli calibrate: " << choice.error << "\n";
+        return 2;
+    }
+    TissuePreset preset;
+    if (const auto path = args.option("preset")) preset = *loadTissuePreset(*path).preset;  // checked above
+    if (const auto rings = args.option("rings")) {
+        const auto n = parsePositiveInt(*rings);
+        if (!n || *n > kMaxRings) {
+            std::cerr << "palpate-cli calibrate: --rings: '" << *rings << "' is not in 1.." << kMaxRings << "\n";
+            return 2;
+        }
+        preset.params.ringCount = int(*n);
+    }
+    const std::string meshPath = args.option("mesh").value_or(findResource(kDefaultMesh));
+    auto loaded = TissueMesh::load(meshPath);
+    if (!loaded.mesh) {
+        std::cerr << "palpate-cli calibrate: " << loaded.error() << "\n";
+        return 1;
+    }
+    const TissueMesh& mesh = *loaded.mesh;
+    VertexId touched = defaultTargetVertex(mesh);
+    if (const auto vertex = args.option("vertex")) {
+        const auto n = parsePositiveInt(*vertex);
+        if (*vertex == "0") touched = 0;
+        else if (!n || std::size_t(*n) >= mesh.vertexCount()) {
+            std::cerr << "palpate-cli calibrate: --vertex: '" << *vertex << "' is not a vertex of " << meshPath << " (0.."
+                      << mesh.vertexCount() - 1 << ")\n";
+            return 2;
+        } else touched = VertexId(*n);
+    }
+
+    const SlopeCalibration calibration = calibrateSlopesFromPunch(mesh, touched, choice.contact, preset.params);
+    const Octree octree(mesh, preset.octree);
+    SlopeRingDeformer model(mesh, octree, calibration.params, SlopeRingMethod::Palpate);
+    const ModelError error = measureModelError(model, mesh, touched, choice.contact);
+
+    const SlopeRingParams& p = calibration.params;
+    if (args.flag("json")) {
+        nlohmann::ordered_json j;
+        j["mesh"] = meshPath;
+        j["vertex"] = touched;
+        j["youngs_modulus_kpa"] = choice.contact.material.youngsModulusNPerMm2 * 1000.0;
+        j["poisson_ratio"] = choice.contact.material.poissonRatio;
+        j["tool_radius_mm"] = choice.contact.toolRadiusMm;
+        j["ring_radii_mm"] = calibration.ringRadiiMm;
+        std::vector<double> slopes(p.slopeMagnitudeMmPerN.begin(), p.slopeMagnitudeMmPerN.begin() + p.ringCount + 1);
+        j["slopes_mm_per_n"] = slopes;
+        j["spring_stiffness_n_per_mm"] = p.springStiffnessNPerMm;
+        j["outside_paper_range"] = calibration.outsidePaperRange;
+        j["displacement_error"] = error.displacementError;
+        j["force_error"] = error.forceError;
+        j["notes"] = calibration.notes;
+        std::cout << j.dump(2) << "\n";
+    } else {
+        std::cout << "mesh " << meshPath << ", vertex " << touched << "; E = "
+                  << choice.contact.material.youngsModulusNPerMm2 * 1000.0 << " kPa, nu = "
+                  << choice.contact.material.poissonRatio << ", tool radius " << choice.contact.toolRadiusMm << " mm ("
+                  << choice.source << ")\n";
+        std::cout << "ring  radius mm  slope mm/N\n";
+        for (int r = 0; r <= p.ringCount; ++r)
+            std::cout << std::setw(4) << r << std::setw(11) << std::fixed << std::setprecision(2)
+                      << (r == 0 ? 0.0 : calibration.ringRadiiMm[std::size_t(r - 1)]) << std::setw(12)
+                      << std::setprecision(4) << p.slopeMagnitudeMmPerN[std::size_t(r)] << "\n";
+        std::cout << "spring k = " << p.springStiffnessNPerMm << " N/mm (= 1/|m1|: the rendered force equals the punch force)\n";
+        std::cout << "error against the flat punch: displacement " << std::setprecision(3) << error.displacementError
+                  << " (RMS/peak over r <= 5a, " << error.verticesCompared << " vertices), force " << error.forceError << "\n";
+        for (const std::string& note : calibration.notes) std::cout << "note: " << note << "\n";
+    }
+    if (const auto out = args.option("out")) {
+        preset.params = p;
+        preset.method = SlopeRingMethod::Palpate;
+        if (const auto name = args.option("name")) preset.name = *name;
+        if (const auto description = args.option("description")) preset.description = *description;
+        TissueProperties tissue;
+        tissue.youngsModulusKPa = choice.contact.material.youngsModulusNPerMm2 * 1000.0;
+        tissue.poissonRatio = choice.contact.material.poissonRatio;
+        tissue.toolRadiusMm = choice.contact.toolRadiusMm;
+        tissue.source = args.option("source").value_or(choice.source);
+        preset.tissue = tissue;
+        if (const std::string e = saveTissuePreset(preset, *out); !e.empty()) {
+            std::cerr << "palpate-cli calibrate: " << e << "\n";
+            return 1;
+        }
+        std::cerr << "wrote " << *out << "\n";
+    }
+    return 0;
+}
+
+}  // namespace palpate::cli

@@ -1,0 +1,66 @@
+#include "app/cli/ToolContactOptions.h"
+
+#include "engine/TissuePreset.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace palpate::cli {
+
+namespace {
+
+bool parseNumber(const std::string& text, double& out) {
+    char* end = nullptr;
+    out = std::strtod(text.c_str(), &end);
+    return end && *end == '\0' && end != text.c_str() && std::isfinite(out);
+}
+
+}  // namespace
+
+std::vector<std::string> toolContactOptionNames() { return {"preset", "youngs-kpa", "poisson", "tool-radius"}; }
+
+ToolContactChoice toolContactFromArgs(const Args& args) {
+    ToolContactChoice c;
+    // Gelatin phantom (the shipped phantom_gel preset): soft, nearly incompressible.
+    c.contact.material = {4.34e-3, 0.45};
+    c.contact.toolRadiusMm = 5.0;
+    c.source = "built-in default (phantom gel)";
+    if (const auto path = args.option("preset")) {
+        const PresetLoadResult loaded = loadTissuePreset(*path);
+        if (!loaded.preset) {
+            c.error = loaded.error();
+            return c;
+        }
+        if (!loaded.preset->tissue) {
+            c.error = *path + ": tissue: missing (the preset has no Young's modulus and Poisson's ratio)";
+            return c;
+        }
+        const TissueProperties& t = *loaded.preset->tissue;
+        c.contact.material = {t.youngsModulusKPa * 1e-3, t.poissonRatio};
+        c.contact.toolRadiusMm = t.toolRadiusMm;
+        c.source = t.source;
+    }
+    struct Override {
+        const char* name;
+        double* target;
+        double scale;
+    };
+    const Override overrides[] = {{"youngs-kpa", &c.contact.material.youngsModulusNPerMm2, 1e-3},
+                                  {"poisson", &c.contact.material.poissonRatio, 1.0},
+                                  {"tool-radius", &c.contact.toolRadiusMm, 1.0}};
+    for (const Override& o : overrides) {
+        if (const auto text = args.option(o.name)) {
+            double value = 0.0;
+            if (!parseNumber(*text, value)) {
+                c.error = std::string("--") + o.name + ": '" + *text + "' is not a number";
+                return c;
+            }
+            *o.target = value * o.scale;
+            c.source = "command line";
+        }
+    }
+    if (const std::string e = validateToolContact(c.contact); !e.empty()) c.error = e;
+    return c;
+}
+
+}  // namespace palpate::cli

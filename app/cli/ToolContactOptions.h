@@ -1,0 +1,25 @@
+#pragma once
+// The tissue and tool of the accuracy commands: --preset FILE (its "tissue" section) and/or
+// --youngs-kpa E --poisson NU --tool-radius MM (these override the preset's values).
+
+#include "app/cli/Args.h"
+#include "engine/accuracy/Calibration.h"
+
+#include <string>
+#include <vector>
+
+namespace palpate::cli {
+
+/// Option names the commands must accept (for Args).
+std::vector<std::string> toolContactOptionNames();
+
+struct ToolContactChoice {
+    ToolContact contact;
+    std::string source;  ///< where E and nu came from (the preset's source, or "command line")
+    std::string error;   ///< "" when usable; otherwise names the option or preset key
+};
+
+/// Defaults: the phantom-gel values when neither a preset nor values are given.
+ToolContactChoice toolContactFromArgs(const Args& args);
+
+}  // namespace palpate::cli

@@ -1,0 +1,61 @@
+#pragma once
+// Speed against accuracy for every model (issue 5): at each Table 1 resolution, each model gets a
+// tick cost (over the benchmark's press-and-stroke path) and an error against the flat punch
+// (ModelError). Slope-ring models use slopes calibrated from the same material and tool, so the
+// error measures the model's structure (rings, resolution), not a badly chosen parameter.
+
+#include "engine/MeshGenerator.h"
+#include "engine/SlopeRingMethod.h"
+#include "engine/accuracy/Calibration.h"
+#include "engine/accuracy/ModelError.h"
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace palpate {
+
+struct SweepDef {
+    ToolContact contact;                               ///< tissue and tool the slopes are calibrated for
+    std::vector<GeneratedShape> shapes{GeneratedShape::Sphere, GeneratedShape::Stomach};
+    std::vector<std::size_t> sizes{1442, 3970, 5762, 8664};
+    int maxRings = 8;                                  ///< slope-ring series for 1..maxRings rings
+    bool paperMethods = true;                          ///< also previous, hybrid and proposed (2 rings)
+    PressDef press;
+    int timingRepeats = 3;
+    double minMeasureMs = 10.0;
+    SlopeRingParams base;                              ///< damping, k_c, mass...; slopes and k are calibrated
+    /// Called after each point with the fraction done and a line saying what was measured.
+    std::function<void(double fraction, const std::string& line)> progress;
+    /// Set (from any thread) to stop early; the points measured so far are returned.
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+struct SweepPoint {
+    std::string series;   ///< chart series: "slope-ring 3 rings", "proposed (paper)", ...
+    std::string model;    ///< palpate, proposed, hybrid, previous
+    int rings = 0;
+    GeneratedShape shape = GeneratedShape::Sphere;
+    std::size_t vertices = 0;
+    double tickUs = 0.0;
+    ModelError error;
+    bool pareto = false;  ///< on the Pareto front of its shape (no point is both faster and more accurate)
+};
+
+struct SweepResult {
+    std::vector<SweepPoint> points;
+    bool cancelled = false;
+};
+
+/// Runs the sweep. Throws std::invalid_argument for a bad definition (naming the field).
+SweepResult runSweep(const SweepDef& def);
+
+/// Marks, per shape, the points no other point beats in both tick cost and displacement error.
+void markParetoFront(std::vector<SweepPoint>& points);
+
+/// The sweep as CSV (header line first) and as JSON {"points": [...]}.
+std::string sweepToCsv(const std::vector<SweepPoint>& points);
+std::string sweepToJson(const SweepResult& result, const SweepDef& def);
+
+}  // namespace palpate

@@ -1,0 +1,50 @@
+#pragma once
+// Slopes and spring stiffness from elasticity (DESIGN §3): the slope model is linear in the force,
+// like a flat rigid punch on a half-space, so the punch solution gives every ring's compliance:
+// |m1| = 1 / (2 a E*), |m_k| = |m1| (2/pi) asin(a / r_k), with r_k the mean distance of ring k from
+// the touched vertex; and k = 1 / |m1| makes the rendered spring force equal the punch force at the
+// same indentation. See docs/accuracy.md.
+
+#include "engine/SlopeRingParams.h"
+#include "engine/TissueMesh.h"
+#include "engine/accuracy/ClosedForms.h"
+
+#include <string>
+#include <vector>
+
+namespace palpate {
+
+/// The tissue and the tool that presses it.
+struct ToolContact {
+    ElasticMaterial material;
+    double toolRadiusMm = 5.0;  ///< a: radius of the probe's flat tip
+};
+
+/// "" when usable, else a message naming the field.
+std::string validateToolContact(const ToolContact& contact);
+
+/// Mean distance of each ring 1..ringCount from `touched`, measured in the touched vertex's tangent
+/// plane (the half-space's surface). Element 0 is ring 1.
+std::vector<double> ringMeanRadiiMm(const TissueMesh& mesh, VertexId touched, int ringCount);
+
+struct SlopeCalibration {
+    SlopeRingParams params;              ///< the base parameters with slopes, slope limit and spring k replaced
+    std::vector<double> ringRadiiMm;     ///< ring 1..N mean radius
+    std::vector<std::string> notes;      ///< what the user should know (rings inside the tool, paper's range)
+    bool outsidePaperRange = false;      ///< |m1| >= 1 mm/N
+};
+
+/// Calibrated slopes for `base.ringCount` rings around `touched` from the flat-punch solution.
+/// Throws std::invalid_argument (naming the field) for a bad contact or vertex.
+SlopeCalibration calibrateSlopesFromPunch(const TissueMesh& mesh, VertexId touched, const ToolContact& contact,
+                                          const SlopeRingParams& base);
+
+/// Least-squares slopes from per-vertex displacements of a reference solution (e.g. the FEM): for
+/// each ring, the slope that best fits u_v = |m_r| F over the ring's vertices (the mean normal
+/// displacement divided by F). `normalDisplacementMm[v]` is positive into the tissue. Strict
+/// decrease is enforced (noted) so the result passes validation.
+SlopeCalibration calibrateSlopesFromDisplacements(const TissueMesh& mesh, VertexId touched,
+                                                  const std::vector<double>& normalDisplacementMm, double forceN,
+                                                  const SlopeRingParams& base);
+
+}  // namespace palpate

@@ -1,0 +1,40 @@
+#pragma once
+// Closed-form contact solutions of linear elasticity on a half-space (DESIGN §3): the ground truth
+// that the reference FEM is validated against and that slopes are calibrated from.
+// Units: mm, N, moduli in N/mm^2 (= MPa; 1 kPa = 0.001 N/mm^2). The half-space is z <= 0.
+
+#include <glm/vec3.hpp>
+
+namespace palpate {
+
+/// Isotropic linear-elastic material.
+struct ElasticMaterial {
+    double youngsModulusNPerMm2 = 0.01;  ///< E (0.01 N/mm^2 = 10 kPa)
+    double poissonRatio = 0.45;          ///< nu, in (-1, 0.5)
+};
+
+/// "" when usable, else a message naming the field.
+const char* validateElasticMaterial(const ElasticMaterial& m);
+
+/// Plane-strain (contact) modulus E* = E / (1 - nu^2).
+double planeStrainModulusNPerMm2(const ElasticMaterial& m);
+
+/// Flat rigid frictionless punch of radius a pressed by delta: F = 2 a E* delta.
+double punchForceN(const ElasticMaterial& m, double punchRadiusMm, double indentationMm);
+/// Surface displacement (positive into the tissue): delta for r <= a, (2 delta / pi) asin(a / r) outside.
+double punchSurfaceDisplacementMm(double punchRadiusMm, double indentationMm, double radialDistanceMm);
+
+/// Hertz rigid sphere of radius R pressed by delta: contact radius a = sqrt(R delta).
+double hertzContactRadiusMm(double sphereRadiusMm, double indentationMm);
+/// F = (4/3) E* sqrt(R) delta^(3/2).
+double hertzForceN(const ElasticMaterial& m, double sphereRadiusMm, double indentationMm);
+/// Surface displacement (positive into the tissue): delta - r^2 / (2R) inside the contact,
+/// [(2a^2 - r^2) asin(a/r) + a sqrt(r^2 - a^2)] / (pi R) outside.
+double hertzSurfaceDisplacementMm(double sphereRadiusMm, double indentationMm, double radialDistanceMm);
+
+/// Boussinesq: a point load P (N) at the origin pushing into the half-space z <= 0 (load along -z).
+/// Displacement (mm) at a point with z <= 0 other than the origin; u_z < 0 under the load.
+/// The reference FEM imposes it on the far faces of its block.
+glm::dvec3 boussinesqDisplacementMm(const ElasticMaterial& m, double loadN, const glm::dvec3& pointMm);
+
+}  // namespace palpate
