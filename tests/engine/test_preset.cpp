@@ -109,12 +109,21 @@ TEST(TissuePreset, FilesystemProblemsAreNamed) {
 
 TEST(TissuePreset, ShippedPresetsLoad) {
     std::size_t count = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(PALPATE_SOURCE_DIR "/resources/presets")) {
+    std::size_t tissues = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(PALPATE_SOURCE_DIR "/resources/presets")) {
+        if (!entry.is_regular_file() || entry.path().extension() != ".json") continue;
         const auto r = loadTissuePreset(entry.path().string());
         EXPECT_TRUE(r.preset) << r.error();
         ++count;
+        // Tissue presets say where their elastic constants come from.
+        if (entry.path().parent_path().filename() == "tissues") {
+            ++tissues;
+            ASSERT_TRUE(r.preset && r.preset->tissue) << entry.path();
+            EXPECT_GT(r.preset->tissue->source.size(), 40u) << entry.path();
+        }
     }
-    EXPECT_GE(count, 1u);
+    EXPECT_GE(count, 7u);
+    EXPECT_EQ(tissues, 6u);  // liver, fat, muscle, skin, stomach wall, phantom gel
 }
 
 TEST(TissuePresetFuzz, MutationsNeverCrash) {
