@@ -9,7 +9,8 @@ namespace {
 bool sameTissue(const std::optional<TissueProperties>& a, const std::optional<TissueProperties>& b) {
     if (a.has_value() != b.has_value()) return false;
     if (!a) return true;
-    return a->youngsModulusKPa == b->youngsModulusKPa && a->poissonRatio == b->poissonRatio && a->source == b->source;
+    return a->youngsModulusKPa == b->youngsModulusKPa && a->poissonRatio == b->poissonRatio &&
+           a->toolRadiusMm == b->toolRadiusMm && a->source == b->source;
 }
 
 bool sameParams(const SlopeRingParams& a, const SlopeRingParams& b) {

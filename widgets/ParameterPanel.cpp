@@ -2,6 +2,11 @@
 
 #include "widgets/ParameterCommands.h"
 
+#include "engine/Octree.h"
+#include "engine/SceneTarget.h"
+#include "engine/SlopeRingDeformer.h"
+#include "engine/accuracy/ModelError.h"
+
 #include <QAction>
 #include <QComboBox>
 #include <QDir>
@@ -28,6 +33,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 
 namespace palpate {
 
@@ -71,6 +77,11 @@ QSpinBox* intSpin(QWidget* parent, const char* objectName, int lo, int hi) {
     spin->setRange(lo, hi);
     spin->setAlignment(Qt::AlignRight);
     return spin;
+}
+
+/// The value a spin box holds after setValue(value): QDoubleSpinBox rounds to its decimals so.
+double shownAs(const QDoubleSpinBox* spin, double value) {
+    return QString::number(std::clamp(value, spin->minimum(), spin->maximum()), 'f', spin->decimals()).toDouble();
 }
 
 void setRowLabel(QFormLayout* form, QWidget* field, const QString& text) {
@@ -135,12 +146,44 @@ void ParameterPanel::buildUi() {
     mRateSpin = doubleSpin(mModelGroup, "hapticRateSpin", 0.0, 100000.0, 1, 50.0);
     mModelForm->addRow(new QLabel(fields), mRateSpin);
 
+    // Tissue and tool: elasticity in, calibrated slopes out (into the slope group below).
+    newForm(mTissueGroup, mTissueForm, "tissueGroup");
+    mTissueCombo = new QComboBox(mTissueGroup);
+    mTissueCombo->setObjectName(QStringLiteral("tissuePresetCombo"));
+    mTissueCombo->addItem(QString());  // "Choose a tissue…": the placeholder, no file
+    mTissueCombo->setEnabled(false);   // until setTissuePresetDirectory finds presets
+    mTissueForm->addRow(new QLabel(fields), mTissueCombo);
+    mYoungsSpin = doubleSpin(mTissueGroup, "youngsModulusSpin", 0.0, kMaxYoungsModulusKPa, 4, 0.1);
+    mTissueForm->addRow(new QLabel(fields), mYoungsSpin);
+    mPoissonSpin = doubleSpin(mTissueGroup, "poissonRatioSpin", -1.0, 1.0, 4, 0.01);
+    mTissueForm->addRow(new QLabel(fields), mPoissonSpin);
+    mToolRadiusSpin = doubleSpin(mTissueGroup, "toolRadiusSpin", 0.0, kMaxToolRadiusMm, 3, 0.5);
+    mTissueForm->addRow(new QLabel(fields), mToolRadiusSpin);
+    // The button and its result in one nested widget: a spanning row, not a label column entry.
+    auto* calibrateBox = new QWidget(mTissueGroup);
+    auto* calibrateLayout = new QVBoxLayout(calibrateBox);
+    calibrateLayout->setContentsMargins(0, 0, 0, 0);
+    auto* calibrateRow = new QHBoxLayout;
+    mCalibrateButton = new QPushButton(calibrateBox);
+    mCalibrateButton->setObjectName(QStringLiteral("calibrateSlopesButton"));
+    calibrateRow->addWidget(mCalibrateButton);
+    calibrateRow->addStretch(1);
+    calibrateLayout->addLayout(calibrateRow);
+    mCalibrationLabel = new QLabel(calibrateBox);
+    mCalibrationLabel->setObjectName(QStringLiteral("calibrationLabel"));
+    mCalibrationLabel->setWordWrap(true);
+    mCalibrationLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    mCalibrationLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);  // wraps, never widens the dock
+    mCalibrationLabel->setVisible(false);
+    calibrateLayout->addWidget(mCalibrationLabel);
+    mTissueForm->addRow(calibrateBox);
+
     newForm(mSlopeGroup, mSlopeForm, "slopeGroup");
     mRingSpin = intSpin(mSlopeGroup, "ringCountSpin", 0, kMaxRings);
     mSlopeForm->addRow(new QLabel(fields), mRingSpin);
     for (int r = 0; r <= kMaxRings; ++r) {
         const QByteArray name = "slopeSpin" + QByteArray::number(r);
-        mSlopeSpins[std::size_t(r)] = doubleSpin(mSlopeGroup, name.constData(), 0.0, 100.0, 6, 0.01);
+        mSlopeSpins[std::size_t(r)] = doubleSpin(mSlopeGroup, name.constData(), 0.0, 1000.0, kSlopeDecimals, 0.01);
         mSlopeLabels[std::size_t(r)] = new QLabel(mSlopeGroup);
         mSlopeLabels[std::size_t(r)]->setObjectName(QString::fromLatin1("slopeLabel%1").arg(r));
         mSlopeLabels[std::size_t(r)]->setBuddy(mSlopeSpins[std::size_t(r)]);
@@ -150,7 +193,7 @@ void ParameterPanel::buildUi() {
     mSlopeForm->addRow(new QLabel(fields), mSlopeLimitSpin);
 
     newForm(mSpringGroup, mSpringForm, "springGroup");
-    mSpringSpin = doubleSpin(mSpringGroup, "springStiffnessSpin", 0.0, 1.0e6, 4, 0.1);
+    mSpringSpin = doubleSpin(mSpringGroup, "springStiffnessSpin", 0.0, 1.0e6, kSlopeDecimals, 0.1);
     mSpringForm->addRow(new QLabel(fields), mSpringSpin);
     mDampingSpin = doubleSpin(mSpringGroup, "dampingRatioSpin", 0.0, 1000.0, 3, 0.1);
     mSpringForm->addRow(new QLabel(fields), mDampingSpin);
@@ -255,6 +298,15 @@ void ParameterPanel::buildUi() {
         connect(mSlopeSpins[std::size_t(r)], &QDoubleSpinBox::valueChanged, this, [this, r] { onEdited(kSlope0 + r); });
     connect(mDepthSpin, &QSpinBox::valueChanged, this, [this] { onEdited(kOctreeDepth); });
     connect(mLeafSpin, &QSpinBox::valueChanged, this, [this] { onEdited(kLeafCapacity); });
+    connect(mYoungsSpin, &QDoubleSpinBox::valueChanged, this, [this] { onEdited(kYoungsModulus); });
+    connect(mPoissonSpin, &QDoubleSpinBox::valueChanged, this, [this] { onEdited(kPoissonRatio); });
+    connect(mToolRadiusSpin, &QDoubleSpinBox::valueChanged, this, [this] { onEdited(kToolRadius); });
+    connect(mTissueCombo, &QComboBox::activated, this, [this](int index) {
+        const QString path = mTissueCombo->itemData(index).toString();
+        if (!path.isEmpty()) loadPresetFile(path);
+        syncTissueCombo();  // a failed load shows the preset that is still in the fields
+    });
+    connect(mCalibrateButton, &QPushButton::clicked, this, [this] { calibrateSlopes(); });
 
     for (QAbstractSpinBox* spin : findChildren<QAbstractSpinBox*>()) watchEdits(spin);
 }
@@ -295,6 +347,9 @@ QString ParameterPanel::fieldName(int field) const {
     case kOctreeDepth: return tr("octree depth");
     case kLeafCapacity: return tr("leaf capacity");
     case kHapticRate: return tr("haptic rate");
+    case kYoungsModulus: return tr("Young's modulus");
+    case kPoissonRatio: return tr("Poisson's ratio");
+    case kToolRadius: return tr("tool radius");
     default: return slopeLabel(field - kSlope0);
     }
 }
@@ -304,6 +359,28 @@ void ParameterPanel::retranslateUi() {
     mSlopeGroup->setTitle(tr("Slopes (magnitudes, |m1| > |m2| > …)"));
     mSpringGroup->setTitle(tr("Springs and contact"));
     mOctreeGroup->setTitle(tr("Octree"));
+    mTissueGroup->setTitle(tr("Tissue and tool"));
+    mTissueGroup->setToolTip(tr("The tissue's elasticity and the probe's flat tip: Calibrate slopes turns them into "
+                                "slopes and a spring stiffness for the current mesh (flat punch on a half-space, "
+                                "docs/calibration.md)."));
+    setRowLabel(mTissueForm, mTissueCombo, tr("Tissue preset:"));
+    mTissueCombo->setItemText(0, tr("Choose a tissue…"));
+    mTissueCombo->setToolTip(tr("Load a shipped tissue preset: E, ν, the tool radius and slopes calibrated for the "
+                                "default stomach mesh (one undoable step). Each entry's tooltip names its source."));
+    setRowLabel(mTissueForm, mYoungsSpin, tr("Young's modulus E:"));
+    mYoungsSpin->setSuffix(tr(" kPa"));
+    mYoungsSpin->setToolTip(tr("Stiffness of the tissue, kPa (soft tissue: about 1 to 30 kPa)."));
+    setRowLabel(mTissueForm, mPoissonSpin, tr("Poisson's ratio ν:"));
+    mPoissonSpin->setToolTip(tr("How the tissue bulges sideways when pressed, 0..%1 (soft tissue is nearly "
+                                "incompressible: about 0.45 to 0.49).")
+                                 .arg(kMaxPoissonRatio));
+    setRowLabel(mTissueForm, mToolRadiusSpin, tr("Tool radius a:"));
+    mToolRadiusSpin->setSuffix(tr(" mm"));
+    mToolRadiusSpin->setToolTip(tr("Radius of the probe's flat tip, mm (%1..%2).").arg(kMinToolRadiusMm).arg(kMaxToolRadiusMm));
+    mCalibrateButton->setText(tr("Ca&librate slopes"));
+    mCalibrateButton->setToolTip(tr("Slopes for the ring count and spring k for the current mesh from E, ν and the tool "
+                                    "radius (flat punch: |m1| = 1 / (2 a E*), k = 1 / |m1|), then the error the "
+                                    "calibrated model leaves against the punch. One undoable step; Apply sends them."));
 
     setRowLabel(mModelForm, mModelCombo, tr("Deformation model:"));
     const QString methodTexts[] = {tr("Palpate (ours)"), tr("Proposed (paper)"), tr("Hybrid (paper)"),
@@ -394,13 +471,13 @@ void ParameterPanel::retranslateUi() {
     // One label column for all groups, as wide as the widest label (the groups line up) ...
     const QList<QLabel*> rowLabels = mScroll->widget()->findChildren<QLabel*>();
     int labelWidth = 0;
-    for (QFormLayout* form : {mModelForm, mSlopeForm, mSpringForm, mOctreeForm})
+    for (QFormLayout* form : {mModelForm, mTissueForm, mSlopeForm, mSpringForm, mOctreeForm})
         for (QLabel* label : rowLabels)
             if (form->indexOf(label) >= 0) {
                 label->setMinimumWidth(0);
                 labelWidth = std::max(labelWidth, label->sizeHint().width());
             }
-    for (QFormLayout* form : {mModelForm, mSlopeForm, mSpringForm, mOctreeForm})
+    for (QFormLayout* form : {mModelForm, mTissueForm, mSlopeForm, mSpringForm, mOctreeForm})
         for (QLabel* label : rowLabels)
             if (form->indexOf(label) >= 0) label->setMinimumWidth(labelWidth);
     // ... and the fields wide enough for their texts and a vertical scroll bar: nothing is cut off.
@@ -429,7 +506,175 @@ TissuePreset ParameterPanel::presetFromFields() const {
     p.vertexMassKg = mMassSpin->value();
     preset.octree.maxDepth = mDepthSpin->value();
     preset.octree.leafCapacity = mLeafSpin->value();
+    preset.tissue = tissueFromFields();
     return preset;
+}
+
+std::optional<TissueProperties> ParameterPanel::tissueFromFields() const {
+    const double youngs = mYoungsSpin->value(), poisson = mPoissonSpin->value(), radius = mToolRadiusSpin->value();
+    if (mShown.tissue) {
+        const TissueProperties& t = *mShown.tissue;
+        if (youngs == shownAs(mYoungsSpin, t.youngsModulusKPa) && poisson == shownAs(mPoissonSpin, t.poissonRatio) &&
+            radius == shownAs(mToolRadiusSpin, t.toolRadiusMm))
+            return TissueProperties{youngs, poisson, radius, t.source};  // as shown: its source still holds
+    } else if (youngs == shownAs(mYoungsSpin, kDefaultYoungsModulusKPa) &&
+               poisson == shownAs(mPoissonSpin, kDefaultPoissonRatio) &&
+               radius == shownAs(mToolRadiusSpin, kDefaultToolRadiusMm)) {
+        return std::nullopt;  // the defaults of a preset without a tissue: nothing to record
+    }
+    return TissueProperties{youngs, poisson, radius, tr("entered in the Parameters panel").toStdString()};
+}
+
+ToolContact ParameterPanel::toolContact() const {
+    ToolContact contact;
+    contact.material.youngsModulusNPerMm2 = mYoungsSpin->value() * 1e-3;  // 1 kPa = 0.001 N/mm^2
+    contact.material.poissonRatio = mPoissonSpin->value();
+    contact.toolRadiusMm = mToolRadiusSpin->value();
+    return contact;
+}
+
+ToolContact ParameterPanel::toolContactOf(const TissuePreset& preset) {
+    ToolContact contact;
+    contact.material.youngsModulusNPerMm2 = (preset.tissue ? preset.tissue->youngsModulusKPa : kDefaultYoungsModulusKPa) * 1e-3;
+    contact.material.poissonRatio = preset.tissue ? preset.tissue->poissonRatio : kDefaultPoissonRatio;
+    contact.toolRadiusMm = preset.tissue ? preset.tissue->toolRadiusMm : kDefaultToolRadiusMm;
+    return contact;
+}
+
+QStringList ParameterPanel::tissueProblems(QList<QWidget*>* invalid) const {
+    const QLocale locale = this->locale();
+    auto number = [&](double v) { return locale.toString(v, 'g', 6); };
+    QStringList problems;
+    const double youngs = mYoungsSpin->value(), poisson = mPoissonSpin->value(), radius = mToolRadiusSpin->value();
+    if (!(youngs > 0.0 && youngs <= kMaxYoungsModulusKPa)) {
+        problems << tr("Young's modulus E = %1 kPa must be a positive number (at most %2 kPa)")
+                        .arg(number(youngs), number(kMaxYoungsModulusKPa));
+        if (invalid) invalid->append(mYoungsSpin);
+    }
+    // The half-space solution allows (-1, 0.5); a preset file holds 0..0.4999 (nearly incompressible tissue).
+    if (!(poisson >= 0.0 && poisson <= kMaxPoissonRatio)) {
+        problems << tr("Poisson's ratio ν = %1 must be in 0..%2 (0.5 would be incompressible)")
+                        .arg(number(poisson), number(kMaxPoissonRatio));
+        if (invalid) invalid->append(mPoissonSpin);
+    }
+    if (!(radius >= kMinToolRadiusMm && radius <= kMaxToolRadiusMm)) {
+        problems << tr("tool radius a = %1 mm must be in %2..%3 mm").arg(number(radius), number(kMinToolRadiusMm),
+                                                                         number(kMaxToolRadiusMm));
+        if (invalid) invalid->append(mToolRadiusSpin);
+    }
+    return problems;
+}
+
+void ParameterPanel::setMeshProvider(MeshProvider provider) {
+    mMeshProvider = std::move(provider);
+    validate();
+}
+
+void ParameterPanel::setTissuePresetDirectory(const QString& directory) {
+    while (mTissueCombo->count() > 1) mTissueCombo->removeItem(1);
+    const QDir dir(directory);
+    const QStringList files = dir.entryList({QStringLiteral("*.json")}, QDir::Files | QDir::Readable, QDir::Name);
+    for (const QString& file : files) {
+        const QString path = dir.absoluteFilePath(file);
+        const PresetLoadResult loaded = loadTissuePreset(QDir::toNativeSeparators(path).toStdString());
+        if (!loaded.preset) continue;  // a broken file is reported when loaded by hand, not here
+        const TissuePreset& preset = *loaded.preset;
+        QString tip = QString::fromStdString(preset.description);
+        if (preset.tissue)
+            tip += QStringLiteral("\n\n") + tr("E = %1 kPa, ν = %2, tool radius %3 mm")
+                                              .arg(locale().toString(preset.tissue->youngsModulusKPa, 'g', 4),
+                                                   locale().toString(preset.tissue->poissonRatio, 'g', 4),
+                                                   locale().toString(preset.tissue->toolRadiusMm, 'g', 4)) +
+                   QStringLiteral("\n") + tr("Source: %1").arg(QString::fromStdString(preset.tissue->source));
+        mTissueCombo->addItem(QString::fromStdString(preset.name), path);
+        mTissueCombo->setItemData(mTissueCombo->count() - 1, tip, Qt::ToolTipRole);
+    }
+    mTissueCombo->setEnabled(mTissueCombo->count() > 1);
+    syncTissueCombo();
+}
+
+void ParameterPanel::syncTissueCombo() {
+    // The entry of the preset shown, by name; the placeholder once the fields are someone else's.
+    int index = 0;
+    for (int i = 1; i < mTissueCombo->count(); ++i)
+        if (mTissueCombo->itemText(i).toStdString() == mShown.name) index = i;
+    const QSignalBlocker block(mTissueCombo);
+    mTissueCombo->setCurrentIndex(index);
+}
+
+bool ParameterPanel::calibrateSlopes(QString* error) {
+    auto fail = [&](const QString& message) {
+        mCalibratedParams.reset();
+        mCalibrationText = message;
+        mCalibrationLabel->setProperty("problem", true);
+        updateCalibrationLabel();
+        if (error) *error = message;
+        return false;
+    };
+    const TissueMesh* mesh = mMeshProvider ? mMeshProvider() : nullptr;
+    if (!mesh || mesh->vertexCount() == 0) return fail(tr("Calibrate slopes needs a mesh: open one first."));
+    if (const QStringList problems = tissueProblems(); !problems.isEmpty())
+        return fail(tr("Not calibrated: %1").arg(problems.join(QStringLiteral("; "))));
+
+    const TissuePreset before = presetFromFields();
+    const ToolContact contact = toolContact();
+    const VertexId touched = defaultTargetVertex(*mesh);
+    SlopeCalibration calibration;
+    ModelError measured;
+    try {
+        calibration = calibrateSlopesFromPunch(*mesh, touched, contact, before.params);
+        // The error the calibrated model leaves: a private model of the same mesh, pressed and let
+        // settle (PressDef: 300 ticks), never the haptic loop's.
+        const OctreeDef octreeDef = validateOctreeDef(before.octree).empty() ? before.octree : OctreeDef{};
+        const Octree octree(*mesh, octreeDef);
+        SlopeRingDeformer model(*mesh, octree, calibration.params, before.method);
+        measured = measureModelError(model, *mesh, touched, contact);
+    } catch (const std::exception& e) {
+        return fail(tr("Not calibrated: %1").arg(QString::fromStdString(e.what())));
+    }
+
+    TissuePreset after = before;
+    after.params = calibration.params;
+    after.tissue = before.tissue.value_or(
+        TissueProperties{mYoungsSpin->value(), mPoissonSpin->value(), mToolRadiusSpin->value(),
+                         tr("Parameters panel default (gelatin phantom, as palpate-cli)").toStdString()});
+    if (!samePreset(before, after))
+        mUndoStack->push(new ParameterEditCommand(before, after, tr("Calibrate slopes"), ParameterEditCommand::kNoMerge,
+                                                  /*alreadyShown=*/false,
+                                                  [this](const TissuePreset& preset) { showPreset(preset); }));
+
+    const QLocale locale = this->locale();
+    QStringList lines;
+    lines << tr("displacement error %1 % (RMS/peak over r ≤ 5a), force error %2 %")
+                 .arg(locale.toString(measured.displacementError * 100.0, 'f', 1),
+                      locale.toString(measured.forceError * 100.0, 'f', 1));
+    const int rings = calibration.params.ringCount;
+    lines << (rings == 1 ? tr("1 ring") : tr("%1 rings").arg(rings)) + QLatin1Char(' ') +
+                 tr("at vertex %1 of %2 vertices, pressed %3 mm in; %4 vertices compared.")
+                 .arg(touched)
+                 .arg(mesh->vertexCount())
+                 .arg(locale.toString(measured.indentationMm, 'f', 2))
+                 .arg(measured.verticesCompared);
+    for (const std::string& note : calibration.notes) lines << tr("Note: %1").arg(QString::fromStdString(note));
+    mCalibratedParams = mShown.params;  // as the fields hold them
+    mCalibrationText = lines.join(QLatin1Char('\n'));
+    mCalibrationLabel->setProperty("problem", false);
+    updateCalibrationLabel();
+    if (error) error->clear();
+    return true;
+}
+
+void ParameterPanel::updateCalibrationLabel() {
+    QString text = mCalibrationText;
+    const bool stale = mCalibratedParams && !(presetFromFields().params.slopeMagnitudeMmPerN ==
+                                                  mCalibratedParams->slopeMagnitudeMmPerN &&
+                                              presetFromFields().params.ringCount == mCalibratedParams->ringCount);
+    if (stale) text += QLatin1Char('\n') + tr("(for the calibrated slopes; the slopes have changed since)");
+    mCalibrationLabel->setText(text);
+    mCalibrationLabel->setVisible(!text.isEmpty());
+    const bool problem = mCalibrationLabel->property("problem").toBool();
+    mCalibrationLabel->setStyleSheet(problem ? QStringLiteral("color: #c62828;") : stale ? QStringLiteral("color: #757575;")
+                                                                                          : QString());
 }
 
 TissuePreset ParameterPanel::preset() const { return presetFromFields(); }
@@ -456,6 +701,9 @@ void ParameterPanel::showPreset(const TissuePreset& preset) {
     mMassSpin->setValue(p.vertexMassKg);
     mDepthSpin->setValue(preset.octree.maxDepth);
     mLeafSpin->setValue(preset.octree.leafCapacity);
+    mYoungsSpin->setValue(preset.tissue ? preset.tissue->youngsModulusKPa : kDefaultYoungsModulusKPa);
+    mPoissonSpin->setValue(preset.tissue ? preset.tissue->poissonRatio : kDefaultPoissonRatio);
+    mToolRadiusSpin->setValue(preset.tissue ? preset.tissue->toolRadiusMm : kDefaultToolRadiusMm);
     mShowing = false;
 
     mShown = preset;
@@ -464,6 +712,7 @@ void ParameterPanel::showPreset(const TissuePreset& preset) {
     mFileNote.clear();
     mTitleLabel->setText(tr("Preset: %1").arg(QString::fromStdString(mShown.name)));
     mTitleLabel->setToolTip(QString::fromStdString(mShown.description));
+    syncTissueCombo();
     updateSlopeRows();
     validate();
 }
@@ -521,6 +770,11 @@ void ParameterPanel::validate() {
     };
     for (const std::string& message : validateSlopeRingParams(p.params)) take(message);
     if (const std::string message = validateOctreeDef(p.octree); !message.empty()) take(message);
+    {
+        QList<QWidget*> badTissue;
+        problems << tissueProblems(&badTissue);
+        for (QWidget* field : badTissue) invalid.insert(field);
+    }
     if (!(p.hapticRateHz >= kMinRateHz && p.hapticRateHz <= kMaxRateHz)) {
         problems << tr("haptic rate = %1 Hz must be in %2..%3 Hz")
                         .arg(number(p.hapticRateHz))
@@ -585,6 +839,7 @@ void ParameterPanel::validate() {
     mMessageLabel->setVisible(!shown.isEmpty());
     mNoteLabel->setText(notes.join(QLatin1Char('\n')));
     mNoteLabel->setVisible(!notes.isEmpty());
+    updateCalibrationLabel();
 
     mProblems = problems;
     const bool valid = problems.isEmpty();

@@ -4,15 +4,22 @@
 // validators, with the slope model's loop gain and stability margin, undo/redo through a
 // QUndoStack, and preset files. It only edits a TissuePreset: the main window decides what Apply
 // does (e.g. HapticLoop::setParams). A plain QWidget, meant for a QDockWidget.
+// The Tissue group turns elasticity into slopes (DESIGN §3): Young's modulus, Poisson's ratio and
+// the tool radius, the shipped tissue presets, and Calibrate slopes for the current mesh with the
+// error the calibrated model leaves against the flat punch.
 
 #include "engine/Rings.h"
+#include "engine/TissueMesh.h"
 #include "engine/TissuePreset.h"
+#include "engine/accuracy/Calibration.h"
 
 #include <QString>
 #include <QStringList>
 #include <QWidget>
 
 #include <array>
+#include <functional>
+#include <optional>
 
 class QAction;
 class QComboBox;
@@ -35,6 +42,21 @@ public:
     static constexpr double kMaxRateHz = 10000.0;
     /// The paper's slope range is (0, 1) mm/N; above it a slope needs a raised slope limit.
     static constexpr double kPaperSlopeMaxMmPerN = 1.0;
+    /// The tissue the fields show for a preset without one: the gelatin phantom (as palpate-cli).
+    static constexpr double kDefaultYoungsModulusKPa = 4.34;
+    static constexpr double kDefaultPoissonRatio = 0.45;
+    static constexpr double kDefaultToolRadiusMm = 5.0;
+    /// What a preset file may hold (TissuePreset's reader): the panel refuses anything it could not read back.
+    static constexpr double kMaxYoungsModulusKPa = 1.0e9;
+    static constexpr double kMaxPoissonRatio = 0.4999;
+    static constexpr double kMinToolRadiusMm = 0.01;
+    static constexpr double kMaxToolRadiusMm = 1000.0;
+    /// Decimals of the slope and spring fields: a calibrated value survives to 1e-9.
+    static constexpr int kSlopeDecimals = 9;
+
+    /// Returns the mesh Calibrate slopes works on, or null when there is none. Called for each
+    /// calibration; the panel never keeps the pointer.
+    using MeshProvider = std::function<const TissueMesh*()>;
 
     explicit ParameterPanel(QWidget* parent = nullptr);
     ~ParameterPanel() override;
@@ -66,6 +88,19 @@ public:
     /// Writes the fields' preset (refused while invalid: the file could not be read back). No dialog.
     bool savePresetFile(const QString& path, QString* error = nullptr);
 
+    void setMeshProvider(MeshProvider provider);
+    /// Fills the tissue preset combo from the *.json presets in `directory` (name, source as tooltip).
+    void setTissuePresetDirectory(const QString& directory);
+    /// The tissue and tool the fields show (E in N/mm^2 as the engine wants it).
+    ToolContact toolContact() const;
+    /// The tissue and tool of `preset`: its own, or the defaults the fields show for a preset without one.
+    static ToolContact toolContactOf(const TissuePreset& preset);
+    /// Calibrate slopes: slopes, slope limit and spring k for the ring count at the current mesh's
+    /// default target vertex (calibrateSlopesFromPunch) as one undoable step, and the error the
+    /// calibrated model leaves against the flat punch shown under the button. False (fields
+    /// unchanged, the reason shown and returned) without a mesh or with an invalid tissue.
+    bool calibrateSlopes(QString* error = nullptr);
+
 signals:
     /// The Apply button, with the fields' preset; only ever emitted with a valid preset.
     void applyRequested(const TissuePreset& preset);
@@ -96,6 +131,9 @@ private:
         kOctreeDepth,
         kLeafCapacity,
         kHapticRate,
+        kYoungsModulus,
+        kPoissonRatio,
+        kToolRadius,
         kSlope0,  // kSlope0 + r: the slope of ring r (r = 0: the touched vertex)
     };
 
@@ -111,6 +149,12 @@ private:
     void updateSlopeRows();
     void validate();
     void markField(QWidget* field, const char* property, bool on);
+    /// The tissue the fields hold, or the shown preset's when they still show it (its source kept).
+    std::optional<TissueProperties> tissueFromFields() const;
+    /// Problems of E, nu and the tool radius, each naming the field; the fields are added to `invalid`.
+    QStringList tissueProblems(QList<QWidget*>* invalid = nullptr) const;
+    void syncTissueCombo();
+    void updateCalibrationLabel();
 
     // Fields.
     QComboBox* mModelCombo = nullptr;
@@ -126,11 +170,19 @@ private:
     QDoubleSpinBox* mMassSpin = nullptr;
     QSpinBox* mDepthSpin = nullptr;
     QSpinBox* mLeafSpin = nullptr;
+    QComboBox* mTissueCombo = nullptr;
+    QDoubleSpinBox* mYoungsSpin = nullptr;
+    QDoubleSpinBox* mPoissonSpin = nullptr;
+    QDoubleSpinBox* mToolRadiusSpin = nullptr;
+    QPushButton* mCalibrateButton = nullptr;
+    QLabel* mCalibrationLabel = nullptr;
 
     // Layout pieces whose text is translated.
     QScrollArea* mScroll = nullptr;
     QLabel* mTitleLabel = nullptr;
     QGroupBox* mModelGroup = nullptr;
+    QGroupBox* mTissueGroup = nullptr;
+    QFormLayout* mTissueForm = nullptr;
     QGroupBox* mSlopeGroup = nullptr;
     QGroupBox* mSpringGroup = nullptr;
     QGroupBox* mOctreeGroup = nullptr;
@@ -161,6 +213,11 @@ private:
     QStringList mFileErrors;  ///< the last failed load/save; cleared by the next edit or file success
     QString mFileNote;        ///< the last successful load/save
     QString mLastDirectory;
+
+    MeshProvider mMeshProvider;
+    /// The last calibration: what it set, and its result text (error and notes).
+    std::optional<SlopeRingParams> mCalibratedParams;
+    QString mCalibrationText;
 };
 
 }  // namespace palpate

@@ -126,7 +126,7 @@ int sweepCommand(const std::vector<std::string>& words) {
 #ifdef PALPATE_HAVE_CHARTS
     if (const auto png = args.option("png")) {
         std::string error;
-        if (!renderSweepChartPng(result.points, *png, &error)) {
+        if (!renderSweepChartPng(result.points, def.contact, *png, &error)) {
             std::cerr << "palpate-cli sweep: " << *png << ": " << error << "\n";
             return 1;
         }

@@ -3,6 +3,8 @@
 #include "device/DeviceUri.h"
 #include "engine/HapticSnapshot.h"
 #include "engine/TissuePreset.h"
+#include "app/cli/DefaultScene.h"
+#include "widgets/ChartsPanel.h"
 #include "widgets/DevicePanel.h"
 #include "widgets/ParameterPanel.h"
 
@@ -110,6 +112,11 @@ void MainWindow::createDocks() {
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
     mParameterPanel = new ParameterPanel(this);
     mParameterPanel->setPreset(mSession->preset());
+    // Calibrate slopes works on the mesh being drawn; the panel asks for it each time, never keeps it.
+    mParameterPanel->setMeshProvider([this]() -> const TissueMesh* { return mSession->drawnMesh().get(); });
+    // The shipped tissues (resources/presets/tissues/*.json), found through one of them.
+    if (const std::string anchor = cli::findResource("presets/tissues/phantom_gel.json"); !anchor.empty())
+        mParameterPanel->setTissuePresetDirectory(QFileInfo(QString::fromStdString(anchor)).absolutePath());
     mParameterDock = new QDockWidget(tr("Parameters"), this);
     mParameterDock->setObjectName(QStringLiteral("parametersDock"));
     mParameterDock->setWidget(mParameterPanel);
@@ -145,11 +152,31 @@ void MainWindow::createDocks() {
     mStatusDock->setObjectName(QStringLiteral("statusDock"));
     mStatusDock->setWidget(mStatusDetails);
     addDockWidget(Qt::RightDockWidgetArea, mStatusDock);
+
+    mChartsPanel = new ChartsPanel(this);
+    mChartsDock = new QDockWidget(tr("Charts"), this);
+    mChartsDock->setObjectName(QStringLiteral("chartsDock"));
+    mChartsDock->setWidget(mChartsPanel);
+    addDockWidget(Qt::RightDockWidgetArea, mChartsDock);
+    tabifyDockWidget(mDeviceDock, mChartsDock);
+    mParameterDock->raise();
+    // The committed sweep (docs/ beside resources/), shown without measuring again when the dock is
+    // first shown; without it the chart says how to make one.
+    mChartsPanel->setDefaultCsv(QString::fromStdString(cli::findResource("../docs/bench/sweep.csv")));
+    updateChartsConfiguration();
     mPanelSnapshot = std::make_unique<HapticSnapshot>();
 }
 
 QString MainWindow::applyPreset(const TissuePreset& preset) {
-    return QString::fromStdString(mSession->applyPreset(preset));
+    const QString error = QString::fromStdString(mSession->applyPreset(preset));
+    if (error.isEmpty()) updateChartsConfiguration();
+    return error;
+}
+
+void MainWindow::updateChartsConfiguration() {
+    const TissuePreset& applied = mSession->preset();
+    const auto& mesh = mSession->drawnMesh();
+    mChartsPanel->setCurrentConfiguration(applied, ParameterPanel::toolContactOf(applied), mesh ? mesh->vertexCount() : 0);
 }
 
 QString MainWindow::loadPresetFile(const QString& path) {
@@ -309,6 +336,7 @@ void MainWindow::createMenus() {
     view->addAction(mParameterDock->toggleViewAction());
     view->addAction(mDeviceDock->toggleViewAction());
     view->addAction(mStatusDock->toggleViewAction());
+    view->addAction(mChartsDock->toggleViewAction());
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     mPlayAction = simulation->addAction(tr("&Pause"), QKeySequence(Qt::Key_Space), this,
@@ -456,6 +484,7 @@ void MainWindow::showDrawnMesh() {
     if (!mesh || mesh == mShownMesh) return;  // a restart keeps the mesh: keep the camera too
     mShownMesh = mesh;
     mViewport->setMesh(*mesh);
+    updateChartsConfiguration();  // the highlight follows the mesh size
     setWindowTitle(QStringLiteral("Palpate - %1").arg(QFileInfo(QString::fromStdString(mSession->drawnPath())).fileName()));
 }
 

@@ -24,6 +24,7 @@ class QMenu;
 
 namespace palpate {
 
+class ChartsPanel;
 class DevicePanel;
 class ParameterPanel;
 struct HapticSnapshot;
@@ -59,6 +60,8 @@ public:
     QString applyPreset(const TissuePreset& preset);
     ParameterPanel* parameterPanel() const { return mParameterPanel; }
     DevicePanel* devicePanel() const { return mDevicePanel; }
+    /// The Charts dock's content (speed against accuracy, the applied configuration highlighted).
+    ChartsPanel* chartsPanel() const { return mChartsPanel; }
     /// Recent mesh files, newest first (kept in QSettings).
     QStringList recentFiles() const;
     /// Play/Pause: resumes or pauses the loop (paused, the tissue relaxes and the force is zero).
@@ -109,6 +112,8 @@ private:
     void saveWindowState();
     void showAbout();
     void updateDocks();
+    /// Tells the Charts panel the applied preset and the drawn mesh's size (its highlight).
+    void updateChartsConfiguration();
     void createStatusBar();
     void present(HapticSession::Observation observation);
     void showDrawnMesh();
@@ -154,6 +159,8 @@ private:
     QDockWidget* mParameterDock = nullptr;
     QDockWidget* mDeviceDock = nullptr;
     QDockWidget* mStatusDock = nullptr;
+    ChartsPanel* mChartsPanel = nullptr;
+    QDockWidget* mChartsDock = nullptr;
     QMenu* mRecentMenu = nullptr;
     std::unique_ptr<HapticSnapshot> mPanelSnapshot;  // what the Device panel reads (large: on the heap)
 };

@@ -13,14 +13,12 @@
 
 namespace palpate {
 
-namespace {
-
-std::string seriesName(SlopeRingMethod method, int rings) {
-    if (method != SlopeRingMethod::Palpate) return std::string(methodName(method)) + " (paper)";
-    return "slope-ring " + std::to_string(rings) + (rings == 1 ? " ring" : " rings");
+std::string sweepSeriesName(SlopeRingMethod method, int rings) {
+    if (method == SlopeRingMethod::Palpate)
+        return rings < 1 ? std::string() : "slope-ring " + std::to_string(rings) + (rings == 1 ? " ring" : " rings");
+    // The paper's three methods are measured with the paper's 2 rings only.
+    return rings == 2 ? std::string(methodName(method)) + " (paper)" : std::string();
 }
-
-}  // namespace
 
 SweepResult runSweep(const SweepDef& def) {
     if (const std::string e = validateToolContact(def.contact); !e.empty()) throw std::invalid_argument("sweep: " + e);
@@ -59,7 +57,7 @@ SweepResult runSweep(const SweepDef& def) {
                 SlopeRingDeformer model(mesh, octree, calibration.params, config.method);
 
                 SweepPoint p;
-                p.series = seriesName(config.method, config.rings);
+                p.series = sweepSeriesName(config.method, config.rings);
                 p.model = std::string(methodName(config.method));
                 p.rings = config.rings;
                 p.shape = shape;

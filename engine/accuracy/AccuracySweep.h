@@ -48,6 +48,10 @@ struct SweepResult {
     bool cancelled = false;
 };
 
+/// The chart series a configuration belongs to: "slope-ring 3 rings", "proposed (paper)"; "" for
+/// a configuration the sweep does not measure (the paper's methods with other than 2 rings).
+std::string sweepSeriesName(SlopeRingMethod method, int rings);
+
 /// Runs the sweep. Throws std::invalid_argument for a bad definition (naming the field).
 SweepResult runSweep(const SweepDef& def);
 

@@ -1,0 +1,417 @@
+#include "widgets/ChartsPanel.h"
+
+#include "engine/accuracy/SweepCsv.h"
+#include "widgets/SpeedAccuracyChart.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QEvent>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QLocale>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QThread>
+#include <QVBoxLayout>
+
+#include <exception>
+
+namespace palpate {
+
+namespace {
+
+constexpr int kProgressSteps = 1000;
+
+/// FILE.json next to FILE.csv: the sweep's JSON (palpate-cli sweep --json), which names the tissue.
+QString sidecarJson(const QString& csvPath) {
+    const QFileInfo info(csvPath);
+    return info.dir().filePath(info.completeBaseName() + QStringLiteral(".json"));
+}
+
+std::optional<ToolContact> readSidecarContact(const QString& csvPath) {
+    QFile file(sidecarJson(csvPath));
+    if (!file.open(QIODevice::ReadOnly)) return std::nullopt;
+    const QJsonObject j = QJsonDocument::fromJson(file.readAll()).object();
+    const auto e = j.value(QStringLiteral("youngs_modulus_kpa")), nu = j.value(QStringLiteral("poisson_ratio")),
+               a = j.value(QStringLiteral("tool_radius_mm"));
+    if (!e.isDouble() || !nu.isDouble() || !a.isDouble()) return std::nullopt;
+    ToolContact contact;
+    contact.material = {e.toDouble() * 1e-3, nu.toDouble()};
+    contact.toolRadiusMm = a.toDouble();
+    if (!validateToolContact(contact).empty()) return std::nullopt;
+    return contact;
+}
+
+}  // namespace
+
+QString ChartsPanel::pointsText(int count) { return count == 1 ? tr("1 point") : tr("%1 points").arg(count); }
+
+ChartsPanel::ChartsPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("chartsPanel"));
+    mChart = new SpeedAccuracyChart(this);
+    mChart->setMinimumSize(360, 280);
+    mChart->setFrameShape(QFrame::NoFrame);
+    // The legend under the chart, wrapping: the chart's own legend would take the plot's width.
+    mChart->setLegendShown(false);
+    mLegendLabel = new QLabel(this);
+    mLegendLabel->setObjectName(QStringLiteral("chartLegendLabel"));
+    mLegendLabel->setWordWrap(true);
+    mLegendLabel->setTextFormat(Qt::RichText);
+    mLegendLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    connect(mChart, &SpeedAccuracyChart::rebuilt, this, [this] {
+        mLegendLabel->setText(mChart->legendHtml());
+        mLegendLabel->setVisible(!mChart->points().empty());
+    });
+    mLegendLabel->setVisible(false);
+
+    mRunButton = new QPushButton(this);
+    mRunButton->setObjectName(QStringLiteral("runSweepButton"));
+    connect(mRunButton, &QPushButton::clicked, this, &ChartsPanel::runSweep);
+    mQuickCheck = new QCheckBox(this);
+    mQuickCheck->setObjectName(QStringLiteral("quickSweepCheck"));
+    mQuickCheck->setChecked(true);
+    mCancelButton = new QPushButton(this);
+    mCancelButton->setObjectName(QStringLiteral("cancelSweepButton"));
+    connect(mCancelButton, &QPushButton::clicked, this, &ChartsPanel::cancelSweep);
+    mOpenButton = new QPushButton(this);
+    mOpenButton->setObjectName(QStringLiteral("openSweepCsvButton"));
+    connect(mOpenButton, &QPushButton::clicked, this, &ChartsPanel::openCsvDialog);
+    mSaveButton = new QPushButton(this);
+    mSaveButton->setObjectName(QStringLiteral("saveSweepCsvButton"));
+    connect(mSaveButton, &QPushButton::clicked, this, &ChartsPanel::saveCsvDialog);
+    mShapeLabel = new QLabel(this);
+    mShapeCombo = new QComboBox(this);
+    mShapeCombo->setObjectName(QStringLiteral("sweepShapeCombo"));
+    mShapeLabel->setBuddy(mShapeCombo);
+    connect(mShapeCombo, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (index < 0) return;
+        mChart->setShape(GeneratedShape(mShapeCombo->itemData(index).toInt()));
+    });
+
+    mProgress = new QProgressBar(this);
+    mProgress->setObjectName(QStringLiteral("sweepProgress"));
+    mProgress->setRange(0, kProgressSteps);
+    mProgress->setValue(0);
+    mStatusLabel = new QLabel(this);
+    mStatusLabel->setObjectName(QStringLiteral("sweepStatusLabel"));
+    mStatusLabel->setWordWrap(true);
+    mStatusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    mCurrentLabel = new QLabel(this);
+    mCurrentLabel->setObjectName(QStringLiteral("currentConfigurationLabel"));
+    mCurrentLabel->setWordWrap(true);
+
+    auto* runRow = new QHBoxLayout;
+    runRow->addWidget(mRunButton);
+    runRow->addWidget(mQuickCheck);
+    runRow->addWidget(mCancelButton);
+    runRow->addStretch(1);
+    runRow->addWidget(mShapeLabel);
+    runRow->addWidget(mShapeCombo);
+    auto* fileRow = new QHBoxLayout;
+    fileRow->addWidget(mOpenButton);
+    fileRow->addWidget(mSaveButton);
+    fileRow->addStretch(1);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(mChart, 1);
+    layout->addWidget(mLegendLabel);
+    layout->addWidget(mCurrentLabel);
+    layout->addLayout(runRow);
+    layout->addWidget(mProgress);
+    layout->addWidget(mStatusLabel);
+    layout->addLayout(fileRow);
+
+    retranslateUi();
+    updateShapeCombo();
+    updateButtons();
+}
+
+ChartsPanel::~ChartsPanel() {
+    if (mThread) {
+        mCancel.store(true);
+        mThread->wait();
+        delete mThread;
+    }
+}
+
+const std::vector<SweepPoint>& ChartsPanel::points() const { return mChart->points(); }
+
+void ChartsPanel::retranslateUi() {
+    mRunButton->setText(tr("&Run sweep"));
+    mRunButton->setToolTip(tr("Measure every model's tick cost and its displacement error against the flat punch "
+                              "(slopes calibrated for the tissue and tool in use). Runs in the background; the full "
+                              "sweep (both shapes, four sizes, 1 to 8 rings and the paper's methods) takes seconds."));
+    mQuickCheck->setText(tr("&Quick"));
+    mQuickCheck->setToolTip(tr("Sphere only, at 1442 and 3970 vertices, up to 4 rings: about a second."));
+    mCancelButton->setText(tr("&Cancel"));
+    mCancelButton->setToolTip(tr("Stop after the model being measured; the points measured so far are shown."));
+    mOpenButton->setText(tr("&Open CSV…"));
+    mOpenButton->setToolTip(tr("Show a sweep saved as CSV (palpate-cli sweep --csv, or Save CSV here)."));
+    mSaveButton->setText(tr("S&ave CSV…"));
+    mSaveButton->setToolTip(tr("Write the points shown as CSV (and the tissue as JSON next to it)."));
+    mShapeLabel->setText(tr("Sha&pe:"));
+    mShapeCombo->setToolTip(tr("The shape whose points are drawn (each shape has its own Pareto front)."));
+    mChart->setEmptyHint(tr("No sweep loaded: press Run sweep"));
+    mProgress->setFormat(tr("%p %"));
+    for (int i = 0; i < mShapeCombo->count(); ++i)
+        mShapeCombo->setItemText(i, SpeedAccuracyChart::shapeTitle(GeneratedShape(mShapeCombo->itemData(i).toInt())));
+    updateHighlight();
+}
+
+void ChartsPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+void ChartsPanel::showEvent(QShowEvent* event) {
+    QWidget::showEvent(event);
+    // In a dock, "shown" includes a tab behind another: wait until the dock says it can be seen.
+    if (auto* dock = qobject_cast<QDockWidget*>(parentWidget())) {
+        if (!mWatchingDock) {
+            mWatchingDock = true;
+            connect(dock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+                if (visible) loadDefaultCsvOnce();
+            });
+        }
+        return;
+    }
+    loadDefaultCsvOnce();
+}
+
+void ChartsPanel::loadDefaultCsvOnce() {
+    if (mDefaultTried) return;
+    mDefaultTried = true;
+    if (!mDefaultCsv.isEmpty() && points().empty() && !isRunning() && QFileInfo::exists(mDefaultCsv)) loadCsv(mDefaultCsv);
+}
+
+void ChartsPanel::setCurrentConfiguration(const TissuePreset& applied, const ToolContact& contact, std::size_t meshVertices) {
+    mApplied = applied;
+    mContact = contact;
+    mMeshVertices = meshVertices;
+    updateHighlight();
+}
+
+void ChartsPanel::updateHighlight() {
+    const std::string series = sweepSeriesName(mApplied.method, mApplied.params.ringCount);
+    mChart->setHighlight(series, mMeshVertices);
+    const QString name = series.empty() ? tr("%1 with %2 rings")
+                                              .arg(QString::fromLatin1(methodName(mApplied.method).data(),
+                                                                       qsizetype(methodName(mApplied.method).size())))
+                                              .arg(mApplied.params.ringCount)
+                                        : QString::fromStdString(series);
+    QString text;
+    if (mMeshVertices == 0)
+        text = tr("In use: %1 (no mesh loaded)").arg(name);
+    else if (mChart->highlightMarkCount() > 0)
+        text = tr("In use: %1 on %2 vertices (ringed in magenta)").arg(name).arg(mMeshVertices);
+    else if (points().empty())
+        text = tr("In use: %1 on %2 vertices").arg(name).arg(mMeshVertices);
+    else
+        text = tr("In use: %1 on %2 vertices (not measured in this sweep)").arg(name).arg(mMeshVertices);
+    mCurrentLabel->setText(text);
+}
+
+SweepDef ChartsPanel::sweepDefinition() const {
+    SweepDef def;
+    def.contact = mContact;
+    def.base = mApplied.params;
+    if (mQuickCheck->isChecked()) {
+        def.shapes = {GeneratedShape::Sphere};
+        def.sizes = {1442, 3970};
+        def.maxRings = 4;
+        def.timingRepeats = 1;
+        def.minMeasureMs = 2.0;
+    }
+    return def;
+}
+
+void ChartsPanel::runSweep() { startSweep(sweepDefinition()); }
+
+bool ChartsPanel::startSweep(const SweepDef& requested) {
+    if (mThread) return false;
+    mCancel.store(false);
+    mRunningDef = requested;
+    SweepDef def = requested;
+    def.cancel = &mCancel;
+    // Called on the worker thread: the text goes to the panel's thread as a queued call.
+    def.progress = [this](double fraction, const std::string& line) {
+        QMetaObject::invokeMethod(
+            this, [this, fraction, text = QString::fromStdString(line)] { onProgress(fraction, text); }, Qt::QueuedConnection);
+    };
+    mThread = QThread::create([this, def] {
+        SweepResult result;
+        QString error;
+        try {
+            result = palpate::runSweep(def);
+        } catch (const std::exception& e) {
+            error = QString::fromStdString(e.what());
+        }
+        QMetaObject::invokeMethod(
+            this, [this, result = std::move(result), error] { onFinished(result, error); }, Qt::QueuedConnection);
+    });
+    mThread->setObjectName(QStringLiteral("sweep"));
+    mRunClock.start();
+    mProgress->setValue(0);
+    setStatus(tr("Sweep started: building the first mesh…"));
+    mThread->start(QThread::LowPriority);  // the haptic thread and the GUI come first
+    updateButtons();
+    return true;
+}
+
+void ChartsPanel::cancelSweep() {
+    if (!mThread) return;
+    mCancel.store(true);
+    setStatus(tr("Cancelling: the model being measured finishes first…"));
+    mCancelButton->setEnabled(false);
+}
+
+void ChartsPanel::onProgress(double fraction, const QString& line) {
+    if (!mThread) return;
+    mProgress->setValue(int(fraction * kProgressSteps + 0.5));
+    if (!mCancel.load()) setStatus(line);
+}
+
+void ChartsPanel::onFinished(const SweepResult& result, const QString& error) {
+    if (mThread) {
+        mThread->wait();  // it posted this as its last act
+        delete mThread;
+        mThread = nullptr;
+    }
+    const double seconds = double(mRunClock.elapsed()) / 1000.0;
+    if (!error.isEmpty()) {
+        setStatus(tr("Sweep failed: %1").arg(error), true);
+        updateButtons();
+        emit sweepFailed(error);
+        return;
+    }
+    const int count = int(result.points.size());
+    if (count > 0) {
+        mShownFromRun = true;
+        showPoints(result.points, mRunningDef.contact);
+    }
+    mProgress->setValue(result.cancelled ? mProgress->value() : kProgressSteps);
+    if (result.cancelled)
+        setStatus(count > 0 ? tr("Cancelled after %1 (%2 s); the chart shows them.")
+                                  .arg(pointsText(count), QLocale().toString(seconds, 'f', 1))
+                            : tr("Cancelled before the first point; the chart is unchanged."));
+    else
+        setStatus(tr("Sweep done: %1 in %2 s.").arg(pointsText(count), QLocale().toString(seconds, 'f', 1)));
+    updateButtons();
+    emit sweepFinished(result.cancelled, count);
+}
+
+void ChartsPanel::showPoints(std::vector<SweepPoint> points, const std::optional<ToolContact>& contact) {
+    mShownContact = contact;
+    mChart->setToolContact(contact);
+    mChart->setPoints(std::move(points));
+    updateShapeCombo();
+    updateHighlight();
+    updateButtons();
+}
+
+void ChartsPanel::updateShapeCombo() {
+    const QSignalBlocker block(mShapeCombo);
+    mShapeCombo->clear();
+    for (GeneratedShape shape : mChart->shapesPresent())
+        mShapeCombo->addItem(SpeedAccuracyChart::shapeTitle(shape), int(shape));
+    const int shown = mShapeCombo->findData(int(mChart->shownShape()));
+    mShapeCombo->setCurrentIndex(shown);
+    mShapeCombo->setEnabled(mShapeCombo->count() > 1);
+}
+
+void ChartsPanel::updateButtons() {
+    const bool running = isRunning();
+    mRunButton->setEnabled(!running);
+    mQuickCheck->setEnabled(!running);
+    mCancelButton->setEnabled(running && !mCancel.load());
+    mOpenButton->setEnabled(!running);
+    mSaveButton->setEnabled(!running && !points().empty());
+    mProgress->setVisible(running || mProgress->value() > 0);
+}
+
+void ChartsPanel::setStatus(const QString& text, bool problem) {
+    mStatusLabel->setText(text);
+    mStatusLabel->setStyleSheet(problem ? QStringLiteral("color: #c62828;") : QString());
+}
+
+QString ChartsPanel::statusText() const { return mStatusLabel->text(); }
+
+bool ChartsPanel::loadCsv(const QString& path, QString* error) {
+    auto fail = [&](const QString& message) {
+        setStatus(message, true);
+        if (error) *error = message;
+        return false;
+    };
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return fail(tr("%1: cannot be read (%2)").arg(QDir::toNativeSeparators(path), file.errorString()));
+    std::string problem;
+    std::vector<SweepPoint> parsed = parseSweepCsv(file.readAll().toStdString(), &problem);
+    if (!problem.empty()) return fail(QStringLiteral("%1: %2").arg(QDir::toNativeSeparators(path), QString::fromStdString(problem)));
+    if (parsed.empty()) return fail(tr("%1: no points (only the header)").arg(QDir::toNativeSeparators(path)));
+    const int count = int(parsed.size());
+    mShownFromRun = false;
+    mProgress->setValue(0);
+    showPoints(std::move(parsed), readSidecarContact(path));
+    mLastDirectory = QFileInfo(path).absolutePath();
+    setStatus(tr("Loaded %1 (%2).").arg(QDir::toNativeSeparators(path), pointsText(count)));
+    if (error) error->clear();
+    return true;
+}
+
+bool ChartsPanel::saveCsv(const QString& path, QString* error) {
+    auto fail = [&](const QString& message) {
+        setStatus(message, true);
+        if (error) *error = message;
+        return false;
+    };
+    if (points().empty()) return fail(tr("%1: not saved, there are no points").arg(QDir::toNativeSeparators(path)));
+    auto write = [](const QString& target, const std::string& text, QString& why) {
+        QSaveFile out(target);  // atomic: a failed write leaves the old file
+        if (!out.open(QIODevice::WriteOnly) || out.write(text.data(), qint64(text.size())) != qint64(text.size()) ||
+            !out.commit()) {
+            why = out.errorString();
+            return false;
+        }
+        return true;
+    };
+    QString why;
+    if (!write(path, sweepToCsv(points()), why))
+        return fail(tr("%1: cannot be written (%2)").arg(QDir::toNativeSeparators(path), why));
+    if (mShownContact) {
+        SweepDef def = mShownFromRun ? mRunningDef : SweepDef{};
+        def.contact = *mShownContact;
+        SweepResult result;
+        result.points = points();
+        if (!write(sidecarJson(path), sweepToJson(result, def), why))
+            return fail(tr("%1: cannot be written (%2)").arg(QDir::toNativeSeparators(sidecarJson(path)), why));
+    }
+    mLastDirectory = QFileInfo(path).absolutePath();
+    setStatus(tr("Saved %1.").arg(QDir::toNativeSeparators(path)));
+    if (error) error->clear();
+    return true;
+}
+
+void ChartsPanel::openCsvDialog() {
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open sweep CSV"), mLastDirectory, tr("Sweep CSV (*.csv);;All files (*)"));
+    if (!path.isEmpty()) loadCsv(path);
+}
+
+void ChartsPanel::saveCsvDialog() {
+    const QString start = QDir(mLastDirectory.isEmpty() ? QDir::currentPath() : mLastDirectory).filePath(QStringLiteral("sweep.csv"));
+    QString path = QFileDialog::getSaveFileName(this, tr("Save sweep CSV"), start, tr("Sweep CSV (*.csv);;All files (*)"));
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".csv");
+    saveCsv(path);
+}
+
+}  // namespace palpate
