@@ -6,6 +6,7 @@
 #include <sched.h>
 #include <time.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -156,7 +157,19 @@ void HapticLoop::stepOnce() {
     mCounters.achievedRateHz = 1.0 / mPeriodS;
 }
 
+void HapticLoop::stepAt(double nowS, bool tickOverran) {
+    if (running()) return;
+    const bool threadFlag = mTickOverran;
+    mTickOverran = tickOverran;
+    tick(nowS, 0.0);
+    mTickOverran = threadFlag;
+    mComputeUs.record(0.0);
+    mElapsedS = double(mCounters.ticks) * mPeriodS;
+    mCounters.achievedRateHz = 1.0 / mPeriodS;
+}
+
 void HapticLoop::tick(double nowS, double lateUs) {
+    pickUpRecorder();  // before the commands, so that those applied at its first tick are recorded
     applyCommands();
     mJitterUs.record(lateUs);
     mCounters.lastJitterUs = lateUs;
@@ -165,11 +178,13 @@ void HapticLoop::tick(double nowS, double lateUs) {
 
     mDevice->setTimeS(nowS);
     DeviceSample sample;
-    if (mDevice->read(sample)) {
+    const bool readOk = mDevice->read(sample);
+    if (readOk) {
         mLastSample = sample;
         mHaveSample = true;
     }
-    const bool ready = mDevice->state() == DeviceState::Ready && mHaveSample;
+    const DeviceState deviceState = mDevice->state();  // read once: the recorder stores what was used
+    const bool ready = deviceState == DeviceState::Ready && mHaveSample;
 
     // Without a usable tool position the model gets a non-finite one: no contact, the tissue
     // relaxes, and the force is zero.
@@ -187,6 +202,20 @@ void HapticLoop::tick(double nowS, double lateUs) {
 
     hashBytes(mHash, &forceOut, sizeof(forceOut));
     hashBytes(mHash, &result.touched, sizeof(result.touched));
+    if (mRecorder) {  // everything this tick depended on, so that a replay gives the same force
+        RecordedTick r;
+        r.tick = mCounters.ticks;
+        r.nowS = nowS;
+        r.sample = sample;
+        r.forceN = forceOut;
+        r.touched = result.touched;
+        r.deviceState = deviceState;
+        r.readOk = readOk;
+        r.tickOverran = mTickOverran;
+        r.paused = mPaused;
+        r.contact = result.contact;
+        mRecorder->onTick(r);
+    }
     publish(result, forceOut);
 
     // Retry handing back anything the retire queue had no room for.
@@ -227,11 +256,14 @@ void HapticLoop::applyCommands() {
     while (mCommands.pop(c)) {
         switch (c.kind) {
             case Command::Kind::Params:
-                mScene->model().applySlopeRingParams(c.params);
+                // Only parameters the model took are recorded (a rejected set changes nothing).
+                if (mScene->model().applySlopeRingParams(c.params) && mRecorder)
+                    mRecorder->onCommand({mCounters.ticks + 1, RecordedCommand::Kind::Params, c.params, 0, nullptr});
                 break;
             case Command::Kind::Scene:
                 retire(mScene.release(), nullptr);
                 mScene.reset(c.scene);
+                if (mRecorder) mRecorder->onCommand({mCounters.ticks + 1, RecordedCommand::Kind::Scene, {}, mScene->id(), nullptr});
                 break;
             case Command::Kind::Device:
                 mDevice->writeForce(glm::vec3(0.0f));
@@ -239,10 +271,45 @@ void HapticLoop::applyCommands() {
                 mDevice.reset(c.device);
                 mHaveSample = false;
                 mSafety.rearm();
+                if (mRecorder) mRecorder->onCommand({mCounters.ticks + 1, RecordedCommand::Kind::Device, {}, 0, c.device});
                 break;
             case Command::Kind::Pause: mPaused = true; break;
             case Command::Kind::Resume: mPaused = false; break;
         }
+    }
+}
+
+void HapticLoop::pickUpRecorder() {
+    const std::uint64_t request = mRecorderRequest.load(std::memory_order_acquire);
+    if (request == mRecorderSeen) return;
+    mRecorderSeen = request;
+    RecorderSink* const wanted = mWantedRecorder.load(std::memory_order_relaxed);
+    if (wanted && wanted != mRecorder) {
+        // A recording replays from its header alone, so it starts from the state a fresh loop has:
+        // tissue at rest, safety filter re-armed (force held off, then ramped in), no sample yet.
+        // Once per recording; the reset is O(vertices) but allocates nothing.
+        mScene->model().reset();
+        mSafety.rearm();
+        mHaveSample = false;
+        mLastSample = DeviceSample{};
+    }
+    mRecorder = wanted;
+    mRecorderAck.store(request, std::memory_order_release);
+}
+
+void HapticLoop::attachRecorder(RecorderSink* sink) {
+    mWantedRecorder.store(sink, std::memory_order_relaxed);
+    mRecorderRequest.fetch_add(1, std::memory_order_release);
+}
+
+void HapticLoop::detachRecorder() {
+    mWantedRecorder.store(nullptr, std::memory_order_relaxed);
+    const std::uint64_t request = mRecorderRequest.fetch_add(1, std::memory_order_release) + 1;
+    while (running() && mRecorderAck.load(std::memory_order_acquire) < request)
+        std::this_thread::sleep_for(std::chrono::microseconds(100));
+    if (!running()) {  // no thread: nothing can call the sink; let go of it here
+        mRecorder = nullptr;
+        mRecorderSeen = request;
     }
 }
 

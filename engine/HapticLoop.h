@@ -12,6 +12,7 @@
 #include "engine/LatencyHistogram.h"
 #include "engine/SpscQueue.h"
 #include "engine/TripleBuffer.h"
+#include "engine/record/RecorderSink.h"
 
 #include <atomic>
 #include <memory>
@@ -63,6 +64,9 @@ public:
     // --- stepped mode: the same tick on a virtual clock, on the caller's thread ---
     /// One tick at virtual time tickCount * period. Not while the thread runs.
     void stepOnce();
+    /// One stepped tick on a given clock with a given overrun flag: a replay of a recorded
+    /// threaded run feeds back the clock and flag its ticks saw (engine/record/RecordingPlayer).
+    void stepAt(double nowS, bool tickOverran);
 
     // --- commands: validated here, applied by the haptic thread at a tick boundary ---
     /// "" when queued; otherwise why not (invalid parameters name each problem, or queue full).
@@ -73,6 +77,15 @@ public:
     void resume();
     /// Deletes scenes and devices the loop has let go of (closing devices). Controller thread.
     void collectRetired();
+
+    // --- session recorder (engine/record): each tick's inputs and outputs, for bit-exact replay ---
+    /// Attaches `sink` (replacing any other); the next tick picks it up. That tick restarts the
+    /// session state (tissue at rest, safety filter re-armed, last device sample forgotten) so that
+    /// the recording replays from its header alone. Controller thread.
+    void attachRecorder(RecorderSink* sink);
+    /// Detaches the recorder; returns once no tick can call it any more (at once when the thread is
+    /// not running, else after at most about one tick). Then the sink may be destroyed.
+    void detachRecorder();
 
     // --- the observer (one thread) ---
     const HapticSnapshot& newestSnapshot() { return mSnapshots.newest(); }
@@ -101,6 +114,7 @@ private:
     void tick(double nowS, double lateUs);
     void warmUp();
     void applyCommands();
+    void pickUpRecorder();
     void retire(HapticScene* scene, HapticDevice* device);
     /// Controller thread: deletes a retired scene and closes and deletes a retired device.
     static void destroyRetired(const Retired& retired);
@@ -122,6 +136,8 @@ private:
     LatencyHistogram mJitterUs{1.0, 2000};
     LatencyHistogram mComputeUs{0.01, 5000};
     std::uint64_t mPublishCount = 0;
+    RecorderSink* mRecorder = nullptr;  // haptic thread's copy of the attached recorder
+    std::uint64_t mRecorderSeen = 0;    // the last attach/detach request the tick acted on
     Retired mPendingRetire[16] = {};
     int mPendingRetireCount = 0;
 
@@ -132,6 +148,11 @@ private:
     std::thread mThread;
     std::atomic<bool> mRunning{false};
     std::atomic<bool> mStopRequested{false};
+    // Recorder hand-over: the controller sets the wanted sink and bumps the request count; the
+    // tick picks it up and acknowledges the request, so detachRecorder knows when it was let go.
+    std::atomic<RecorderSink*> mWantedRecorder{nullptr};
+    std::atomic<std::uint64_t> mRecorderRequest{0};
+    std::atomic<std::uint64_t> mRecorderAck{0};
     double mElapsedS = 0.0;
 };
 

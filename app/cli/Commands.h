@@ -9,6 +9,8 @@ int meshCommand(const std::vector<std::string>& words);
 int benchCommand(const std::vector<std::string>& words);
 int demoCommand(const std::vector<std::string>& words);
 int loopCommand(const std::vector<std::string>& words);
+int runCommand(const std::vector<std::string>& words);
+int recordCommand(const std::vector<std::string>& words);
 int sweepCommand(const std::vector<std::string>& words);
 int calibrateCommand(const std::vector<std::string>& words);
 

@@ -15,6 +15,11 @@ void usage(std::ostream& out) {
            "  palpate-cli demo [--mesh FILE] [--method previous|hybrid|proposed|palpate] [--json]\n"
            "  palpate-cli loop [--seconds S] [--rate HZ] [--observer-hz 60] [--device URI] [--mesh FILE]\n"
            "                   [--spin-fraction F] [--no-fifo] [--json] [--csv FILE]\n"
+           "  palpate-cli run [--mesh FILE] [--device URI] [--seconds S] [--record FILE] [--rate HZ]\n"
+           "                  [--method M] [--preset FILE] [--note TEXT] [--no-fifo] [--json]\n"
+           "  palpate-cli record info|verify FILE [--json]\n"
+           "  palpate-cli record export-csv FILE [--out CSV]\n"
+           "  palpate-cli record replay FILE [--mesh FILE] [--json]\n"
            "  palpate-cli sweep [--json] [--csv FILE] [--png FILE] [--quick] [--shapes sphere,stomach] [--sizes N,..]\n"
            "                    [--max-rings N] [--no-paper] [--repeats N] [TISSUE]\n"
            "  palpate-cli calibrate [--mesh FILE] [--rings N] [--vertex V] [--json] [--out PRESET] [--name NAME] [TISSUE]\n"
@@ -44,6 +49,8 @@ int main(int argc, char** argv) {
         if (command == "bench") return palpate::cli::benchCommand(words);
         if (command == "demo") return palpate::cli::demoCommand(words);
         if (command == "loop") return palpate::cli::loopCommand(words);
+        if (command == "run") return palpate::cli::runCommand(words);
+        if (command == "record") return palpate::cli::recordCommand(words);
         if (command == "sweep") return palpate::cli::sweepCommand(words);
         if (command == "calibrate") return palpate::cli::calibrateCommand(words);
     } catch (const std::exception& e) {

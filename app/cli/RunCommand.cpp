@@ -1,0 +1,193 @@
+// palpate-cli run: a headless session on the real-time threaded haptic loop (the GUI's loop without
+// the GUI), optionally recorded to a file for info/verify/export/replay (RecordCommand.cpp).
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "app/cli/DefaultScene.h"
+#include "device/DeviceUri.h"
+#include "engine/HapticLoop.h"
+#include "engine/SceneTarget.h"
+#include "engine/TissuePreset.h"
+#include "engine/record/RecordingSession.h"
+
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+namespace palpate::cli {
+
+namespace {
+
+std::atomic<bool> gInterrupted{false};
+extern "C" void onInterrupt(int) { gInterrupted.store(true); }
+
+std::optional<double> parseNumber(const std::string& text) {
+    try {
+        std::size_t used = 0;
+        const double v = std::stod(text, &used);
+        if (used != text.size() || !std::isfinite(v)) return std::nullopt;
+        return v;
+    } catch (...) {
+        return std::nullopt;
+    }
+}
+
+}  // namespace
+
+int runCommand(const std::vector<std::string>& words) {
+    Args args(words, {"json", "no-fifo"}, {"mesh", "device", "seconds", "record", "rate", "method", "preset", "note"});
+    if (!args.ok()) {
+        std::cerr << "run: " << args.error() << "\n";
+        return 2;
+    }
+    if (!args.positional().empty()) {
+        std::cerr << "run: unexpected argument '" << args.positional().front() << "'\n";
+        return 2;
+    }
+    const auto seconds = parseNumber(args.option("seconds").value_or("10"));
+    if (!seconds || *seconds <= 0.0 || *seconds > 86400.0) {
+        std::cerr << "run: --seconds must be a number in (0, 86400]\n";
+        return 2;
+    }
+    TissuePreset preset;
+    if (auto path = args.option("preset")) {
+        auto loaded = loadTissuePreset(*path);
+        if (!loaded.preset) {
+            for (const auto& e : loaded.errors) std::cerr << "run: " << e << "\n";
+            return 1;
+        }
+        preset = *loaded.preset;
+    }
+    if (auto name = args.option("method")) {
+        const auto method = parseMethod(*name);
+        if (!method) {
+            std::cerr << "run: unknown --method '" << *name << "' (use previous, hybrid, proposed or palpate)\n";
+            return 2;
+        }
+        preset.method = *method;
+    }
+    if (auto rate = args.option("rate")) {
+        const auto hz = parseNumber(*rate);
+        if (!hz) {
+            std::cerr << "run: --rate must be a number\n";
+            return 2;
+        }
+        preset.hapticRateHz = *hz;
+    }
+    HapticLoopDef def;
+    def.rateHz = preset.hapticRateHz;
+    def.trySchedFifo = !args.flag("no-fifo");
+    if (const std::string problem = validateHapticLoopDef(def); !problem.empty()) {
+        std::cerr << "run: " << problem << "\n";
+        return 2;
+    }
+
+    std::string meshPath = args.option("mesh").value_or(findResource(kDefaultMesh));
+    if (meshPath.empty()) {
+        std::cerr << "run: the default mesh " << kDefaultMesh << " was not found (set PALPATE_RESOURCES)\n";
+        return 1;
+    }
+    std::error_code ec;
+    if (const auto absolute = std::filesystem::absolute(meshPath, ec); !ec) meshPath = absolute.string();
+    auto loaded = TissueMesh::load(meshPath);
+    if (!loaded.mesh) {
+        std::cerr << loaded.report.text();
+        return 1;
+    }
+    const std::string uri = args.option("device").value_or("sim:sine");
+    std::string error;
+    auto device = openDeviceUri(uri, error);
+    if (!device) {
+        std::cerr << "run: " << error << "\n";
+        return 1;
+    }
+    aimAtDefaultTarget(*device, *loaded.mesh);
+    RecordingHeader header =
+        makeRecordingHeader(*loaded.mesh, meshPath, preset, uri, device->spec(), def.safety);
+    header.note = args.option("note").value_or("");
+
+    std::unique_ptr<HapticLoop> loop;
+    try {
+        loop = std::make_unique<HapticLoop>(
+            def, HapticScene::createSlopeRing(std::move(*loaded.mesh), preset.params, preset.method, preset.octree),
+            std::move(device));
+    } catch (const std::exception& e) {
+        std::cerr << "run: " << e.what() << "\n";
+        return 1;
+    }
+    std::unique_ptr<RecordingSession> session;
+    const auto recordPath = args.option("record");
+    if (recordPath) {
+        session = RecordingSession::start(*loop, *recordPath, header, error);
+        if (!session) {
+            std::cerr << "run: " << error << "\n";
+            return 1;
+        }
+    }
+
+    gInterrupted = false;
+    auto previousInt = std::signal(SIGINT, onInterrupt);
+    auto previousTerm = std::signal(SIGTERM, onInterrupt);
+    if (!loop->start(&error)) {
+        std::cerr << "run: " << error << "\n";
+        return 1;
+    }
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(*seconds);
+    while (!gInterrupted.load() && std::chrono::steady_clock::now() < end)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    loop->stop();
+    std::signal(SIGINT, previousInt);
+    std::signal(SIGTERM, previousTerm);
+    const LoopReport r = loop->report();
+    RecordingStats stats;
+    std::string recordError;
+    if (session) {
+        recordError = session->stop();
+        stats = session->stats();
+    }
+
+    if (args.flag("json")) {
+        nlohmann::json j{{"mesh", meshPath},
+                         {"device", uri},
+                         {"method", std::string(methodName(preset.method))},
+                         {"rate_hz", def.rateHz},
+                         {"seconds", r.elapsedS},
+                         {"ticks", r.counters.ticks},
+                         {"overruns", r.counters.overruns},
+                         {"missed", r.counters.missedDeadlines},
+                         {"sched_fifo", r.counters.schedFifo},
+                         {"determinism_hash", r.determinismHash},
+                         {"interrupted", gInterrupted.load()}};
+        if (session)
+            j["recording"] = {{"path", *recordPath},
+                              {"ticks", stats.ticks},
+                              {"bytes", stats.bytes},
+                              {"bytes_per_tick", stats.bytesPerTick()},
+                              {"chunks", stats.chunks},
+                              {"events", stats.events},
+                              {"dropped_ticks", stats.droppedTicks},
+                              {"gaps", stats.gaps},
+                              {"duration_s", stats.elapsedS},
+                              {"hash", stats.hash},
+                              {"error", recordError}};
+        std::cout << j.dump(2) << "\n";
+    } else {
+        std::cout << "session: " << r.counters.ticks << " ticks in " << r.elapsedS << " s at " << def.rateHz
+                  << " Hz (" << methodName(preset.method) << ", " << uri << "), overruns " << r.counters.overruns
+                  << ", missed deadlines " << r.counters.missedDeadlines << "\n";
+        if (session) {
+            std::cout << "recorded " << stats.ticks << " ticks (" << stats.elapsedS << " s) to " << *recordPath << ": "
+                      << stats.bytes << " bytes, " << stats.bytesPerTick() << " bytes/tick, " << stats.chunks
+                      << " chunks, " << stats.events << " events, " << stats.droppedTicks << " ticks dropped\n";
+            if (!recordError.empty()) std::cerr << "run: " << recordError << "\n";
+        }
+    }
+    return recordError.empty() ? 0 : 1;
+}
+
+}  // namespace palpate::cli

@@ -1,0 +1,134 @@
+#pragma once
+// The session recording file (docs/recording.md has the byte-by-byte layout):
+//
+//   preamble  "PALPREC" + format version (u8), header length (u32), header body, CRC-32 of the body
+//   chunks    "PCHK", type, payload length, first tick, count, hash, CRC-32 of those fields,
+//             payload, CRC-32 of the payload
+//
+// Append-only: a chunk is written whole with one write(2), so a crash loses at most the chunk being
+// filled. Every chunk decodes on its own (its delta coding restarts), so a damaged chunk costs only
+// itself: the reader resynchronises on the next chunk magic.
+
+#include "device/HapticDevice.h"
+#include "device/SafetyFilter.h"
+#include "engine/Octree.h"
+#include "engine/SlopeRingMethod.h"
+#include "engine/SlopeRingParams.h"
+#include "engine/record/ByteIo.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace palpate {
+
+inline constexpr char kRecordingMagic[7] = {'P', 'A', 'L', 'P', 'R', 'E', 'C'};
+inline constexpr std::uint8_t kRecordingFormatVersion = 1;
+inline constexpr std::uint8_t kChunkMagic[4] = {'P', 'C', 'H', 'K'};
+/// Magic (7) + version (1) + header length (4).
+inline constexpr std::size_t kPreambleBytes = 12;
+/// Magic, type, reserved, payload length, first tick, count, hash, header CRC.
+inline constexpr std::size_t kChunkHeaderBytes = 36;
+/// Chunk header + payload CRC: what a chunk costs besides its payload.
+inline constexpr std::size_t kChunkOverheadBytes = kChunkHeaderBytes + 4;
+
+// Limits a reader enforces, so that garbage never makes it allocate or loop without bound.
+inline constexpr std::uint32_t kMaxHeaderBytes = 1u << 20;
+inline constexpr std::uint32_t kMaxChunkPayloadBytes = 64u << 20;
+inline constexpr std::size_t kMaxPathBytes = 4096;
+inline constexpr std::size_t kMaxNameBytes = 256;
+inline constexpr std::size_t kMaxPresetJsonBytes = 256 * 1024;
+inline constexpr std::size_t kMaxEventTextBytes = 64 * 1024;
+
+enum class ChunkType : std::uint8_t {
+    Data = 1,  ///< `count` ticks from `firstTick` (delta coded), then the events of that stretch
+    Gap = 2,   ///< the ring buffer overflowed: `count` ticks from `firstTick` were never recorded
+    End = 3,   ///< written by a clean close: totals; a file without it did not close (crash, kill)
+};
+const char* chunkTypeName(ChunkType type);
+
+enum class EventKind : std::uint8_t {
+    ParamsApplied = 1,  ///< a whole parameter set, applied at the event's tick boundary
+    SceneChanged = 2,   ///< a new scene (mesh, model, parameters) switched in
+    DeviceChanged = 3,  ///< a new device switched in
+    DeviceState = 4,    ///< the device's state changed (seen by the tick)
+    Paused = 5,
+    Resumed = 6,
+    Mark = 7,           ///< a user's mark (text)
+    Exercise = 8,       ///< an exercise event (text, e.g. JSON)
+    CommandsLost = 9,   ///< the applied-command queue overflowed: replay cannot be exact
+};
+const char* eventKindName(EventKind kind);
+
+/// The scene a session runs: enough to rebuild it for replay and to check it is the same mesh.
+struct RecordedScene {
+    std::string meshPath;
+    std::uint64_t meshHash = 0;  ///< meshHash() of the loaded (renumbered) mesh
+    std::uint32_t vertexCount = 0;
+    std::uint32_t triangleCount = 0;
+    SlopeRingMethod method = SlopeRingMethod::Palpate;
+    SlopeRingParams params;      ///< binary, exact: what replay uses
+    OctreeDef octree;
+    std::string presetJson;      ///< the whole TissuePreset as JSON, for people and tools
+};
+
+struct RecordedDevice {
+    std::string uri;
+    DeviceSpec spec;
+};
+
+/// Everything a replay needs besides the ticks, and what a person wants to know about the session.
+struct RecordingHeader {
+    std::string engineVersion = recordingEngineVersion();
+    std::int64_t startUnixUs = 0;  ///< wall clock at the start (µs since 1970)
+    double rateHz = 1000.0;
+    RecordedScene scene;
+    RecordedDevice device;
+    SafetyFilterDef safety;
+    std::string note;              ///< free text: trainee, exercise, ...
+
+    /// The engine's version (PALPATE version) as stored in new recordings.
+    static std::string recordingEngineVersion();
+};
+
+/// Preamble, body and CRC, appended to `out`.
+void encodeRecordingHeader(const RecordingHeader& header, std::vector<std::uint8_t>& out);
+/// Parses the preamble and header from the start of `data`; sets `headerBytes` to where the first
+/// chunk may start. On failure returns false and `error` names the field ("header.meshPath: ...").
+bool decodeRecordingHeader(const std::uint8_t* data, std::size_t size, RecordingHeader& header,
+                           std::size_t& headerBytes, std::string& error);
+
+void encodeParams(ByteWriter& w, const SlopeRingParams& params);
+SlopeRingParams decodeParams(ByteReader& r, const std::string& field);
+void encodeScene(ByteWriter& w, const RecordedScene& scene);
+RecordedScene decodeScene(ByteReader& r, const std::string& field);
+void encodeDevice(ByteWriter& w, const RecordedDevice& device);
+RecordedDevice decodeDevice(ByteReader& r, const std::string& field);
+
+/// The fixed fields of a chunk.
+struct ChunkHeader {
+    ChunkType type = ChunkType::Data;
+    std::uint32_t payloadBytes = 0;
+    std::uint64_t firstTick = 0;
+    std::uint32_t count = 0;
+    std::uint64_t hash = 0;  ///< session determinism hash after the chunk's last tick
+};
+
+/// Appends a whole chunk (header, payload, CRCs) to `out`.
+void encodeChunk(const ChunkHeader& header, const std::uint8_t* payload, std::size_t payloadBytes,
+                 std::vector<std::uint8_t>& out);
+
+enum class ChunkStatus { Ok, NoMagic, Truncated, BadHeaderCrc, BadField, TruncatedPayload, BadPayloadCrc };
+const char* chunkStatusText(ChunkStatus status);
+
+/// Checks the chunk starting at `offset` (magic, CRCs, field ranges). On Ok, `header` and
+/// `payload` describe it and the chunk ends at offset + kChunkOverheadBytes + payloadBytes. On
+/// TruncatedPayload and BadPayloadCrc the header was intact and `header` is set (payload is not).
+ChunkStatus parseChunk(const std::uint8_t* data, std::size_t size, std::size_t offset, ChunkHeader& header,
+                       const std::uint8_t*& payload);
+
+/// Offset of the next chunk magic at or after `from`, or `size` when there is none.
+std::size_t findChunkMagic(const std::uint8_t* data, std::size_t size, std::size_t from);
+
+}  // namespace palpate

@@ -1,0 +1,403 @@
+#include "engine/record/RecordingReader.h"
+
+#include "engine/record/TickCodec.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+namespace palpate {
+
+namespace {
+
+/// Decodes the ticks of a data chunk into `out`; `after` is where its events start.
+bool decodeTicks(const ChunkHeader& h, const std::uint8_t* payload, std::vector<RecordedTick>& out,
+                 const std::uint8_t** after) {
+    out.clear();
+    // Every tick takes at least 6 bytes (flags, clock, force, touched): a count beyond the payload
+    // is garbage, and checking it first bounds the allocation by the chunk's size.
+    if (h.count > h.payloadBytes / 6) return false;
+    out.reserve(h.count);
+    const std::uint8_t* cursor = payload;
+    const std::uint8_t* end = payload + h.payloadBytes;
+    TickDecoder decoder;
+    for (std::uint32_t i = 0; i < h.count; ++i) {
+        RecordedTick t;
+        if (!decoder.decode(&cursor, end, h.firstTick + i, t)) return false;
+        out.push_back(t);
+    }
+    *after = cursor;
+    return true;
+}
+
+std::string describe(const RecordingEvent& e) {
+    switch (e.kind) {
+        case EventKind::ParamsApplied:
+            return "parameters applied (" + std::to_string(e.params.ringCount) + " rings, m1 " +
+                   std::to_string(e.params.slopeMagnitudeMmPerN[0]) + " mm/N, contact " +
+                   std::to_string(e.params.contactStiffnessNPerMm) + " N/mm, springs " +
+                   std::to_string(e.params.springStiffnessNPerMm) + " N/mm)";
+        case EventKind::SceneChanged: return e.scene ? "scene " + e.scene->meshPath : "scene (not described)";
+        case EventKind::DeviceChanged: return e.device ? "device " + e.device->uri : "device (not described)";
+        case EventKind::DeviceState: return std::string("device ") + deviceStateName(e.deviceState);
+        case EventKind::Paused: return "paused";
+        case EventKind::Resumed: return "resumed";
+        case EventKind::CommandsLost: return std::to_string(e.count) + " applied commands lost";
+        case EventKind::Mark:
+        case EventKind::Exercise: return e.text;
+    }
+    return {};
+}
+
+/// Parses a data chunk's event section. Unknown kinds are skipped (later format revisions).
+bool parseEvents(const std::uint8_t* cursor, const std::uint8_t* end, std::uint64_t firstTick,
+                 std::vector<RecordingEvent>& out, std::uint32_t& count, std::string& why) {
+    ByteReader r(cursor, std::size_t(end - cursor), "event.");
+    const std::uint64_t n = r.varint("count");
+    if (r.ok() && n > r.remaining() / 3) r.fail("count", std::to_string(n) + " events cannot fit in the chunk");
+    for (std::uint64_t i = 0; r.ok() && i < n; ++i) {
+        RecordingEvent e;
+        const std::uint64_t kind = r.varint("kind");
+        e.tick = firstTick + std::uint64_t(r.svarint("tick"));
+        const std::uint64_t length = r.varint("length");
+        if (!r.ok()) break;
+        if (length > r.remaining()) {
+            r.fail("length", "runs past the end of the chunk");
+            break;
+        }
+        ByteReader p(r.cursor(), std::size_t(length), std::string("event.") + eventKindName(EventKind(kind)) + ".");
+        bool known = true;
+        switch (kind) {
+            case std::uint8_t(EventKind::ParamsApplied): e.params = decodeParams(p, "params"); break;
+            case std::uint8_t(EventKind::SceneChanged):
+                e.sceneId = p.u64("sceneId");
+                if (p.u8("described") != 0) e.scene = decodeScene(p, "scene");
+                break;
+            case std::uint8_t(EventKind::DeviceChanged):
+                if (p.u8("described") != 0) e.device = decodeDevice(p, "device");
+                break;
+            case std::uint8_t(EventKind::DeviceState): {
+                const std::uint8_t state = p.u8("state");
+                if (p.ok() && state > std::uint8_t(DeviceState::Fault)) p.fail("state", "unknown device state");
+                e.deviceState = p.ok() ? DeviceState(state) : DeviceState::Disconnected;
+                break;
+            }
+            case std::uint8_t(EventKind::Paused):
+            case std::uint8_t(EventKind::Resumed): break;
+            case std::uint8_t(EventKind::Mark):
+            case std::uint8_t(EventKind::Exercise):
+                if (length > kMaxEventTextBytes) p.fail("text", "longer than the limit");
+                else e.text.assign(reinterpret_cast<const char*>(r.cursor()), std::size_t(length));
+                break;
+            case std::uint8_t(EventKind::CommandsLost): e.count = p.varint("count"); break;
+            default: known = false;
+        }
+        if (!p.ok()) {
+            why = p.error();
+            return false;
+        }
+        r.skip("payload", length);
+        if (!known) continue;
+        e.kind = EventKind(kind);
+        if (e.kind != EventKind::Mark && e.kind != EventKind::Exercise) e.text = describe(e);
+        out.push_back(std::move(e));
+        ++count;
+    }
+    if (!r.ok()) {
+        why = r.error();
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+RecordingReader RecordingReader::open(const std::string& path) {
+    RecordingReader reader;
+    reader.mName = path;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        reader.mFileError = path + ": cannot open: " + std::strerror(errno);
+        return reader;
+    }
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size < 0) {
+        reader.mFileError = path + ": cannot read (not a regular file?)";
+        return reader;
+    }
+    in.seekg(0, std::ios::beg);
+    reader.mBytes.resize(std::size_t(size));
+    if (size > 0 && !in.read(reinterpret_cast<char*>(reader.mBytes.data()), size)) {
+        reader.mFileError = path + ": read failed";
+        reader.mBytes.clear();
+        return reader;
+    }
+    reader.scan();
+    return reader;
+}
+
+RecordingReader RecordingReader::fromBytes(std::vector<std::uint8_t> bytes, const std::string& name) {
+    RecordingReader reader;
+    reader.mName = name;
+    reader.mBytes = std::move(bytes);
+    reader.scan();
+    return reader;
+}
+
+void RecordingReader::addDamage(std::uint64_t offset, std::uint64_t bytes, std::string reason,
+                                const ChunkHeader* header) {
+    if (bytes == 0) return;
+    mSummary.damagedBytes += bytes;
+    // Resynchronising through garbage can stop at false magics: one damaged stretch, one region.
+    if (!mDamage.empty() && mDamage.back().offset + mDamage.back().bytes == offset && !header &&
+        !mDamage.back().ticksKnown) {
+        mDamage.back().bytes += bytes;
+        return;
+    }
+    DamagedRegion d;
+    d.offset = offset;
+    d.bytes = bytes;
+    d.reason = std::move(reason);
+    if (header && header->type == ChunkType::Data) {
+        d.ticksKnown = true;
+        d.firstTick = header->firstTick;
+        d.count = header->count;
+        d.reason += " (ticks " + std::to_string(header->firstTick) + ".." +
+                    std::to_string(header->firstTick + header->count) + ")";
+    }
+    mDamage.push_back(std::move(d));
+}
+
+bool RecordingReader::scanData(const ChunkHeader& h, const std::uint8_t* payload, ChunkInfo& info,
+                               std::vector<RecordingEvent>& events, std::string& why) {
+    const std::uint8_t* after = nullptr;
+    if (!decodeTicks(h, payload, mScratch, &after)) {
+        why = "chunk ticks do not decode";
+        return false;
+    }
+    const std::size_t firstEvent = events.size();
+    std::uint32_t count = 0;
+    if (!parseEvents(after, payload + h.payloadBytes, h.firstTick, events, count, why)) {
+        events.resize(firstEvent);
+        return false;
+    }
+    info.events = count;
+    if (!mScratch.empty()) {
+        info.firstTimeS = mScratch.front().nowS;
+        info.lastTimeS = mScratch.back().nowS;
+    }
+    // Event times: the clock of their tick when it is in this chunk, else extrapolated.
+    for (std::size_t i = firstEvent; i < events.size(); ++i) {
+        RecordingEvent& e = events[i];
+        if (!mScratch.empty() && e.tick >= h.firstTick && e.tick - h.firstTick < mScratch.size()) {
+            e.timeS = mScratch[std::size_t(e.tick - h.firstTick)].nowS;
+        } else if (!mScratch.empty()) {
+            e.timeS = info.firstTimeS + (double(e.tick) - double(h.firstTick)) * periodS();
+        } else if (!mChunks.empty()) {
+            const ChunkInfo& last = mChunks.back();
+            const double lastTick = double(last.firstTick) + double(last.count) - 1.0;
+            e.timeS = last.lastTimeS + (double(e.tick) - lastTick) * periodS();
+        } else {
+            e.timeS = double(e.tick) * periodS();
+        }
+    }
+    return true;
+}
+
+void RecordingReader::scan() {
+    const std::uint8_t* data = mBytes.data();
+    const std::size_t size = mBytes.size();
+    mSummary = RecordingSummary{};
+    mSummary.fileBytes = size;
+
+    std::size_t offset = 0;
+    std::size_t headerBytes = 0;
+    if (decodeRecordingHeader(data, size, mHeader, headerBytes, mHeaderError)) {
+        mSummary.headerOk = true;
+        offset = headerBytes;
+    } else {
+        mHeader = RecordingHeader{};
+        offset = findChunkMagic(data, size, 0);
+        addDamage(0, offset, mHeaderError, nullptr);
+    }
+
+    std::uint64_t expectedTick = 0;
+    bool haveExpected = false;
+    std::uint64_t runningHash = kHashSeed;
+    bool hashKnown = mSummary.headerOk;  // the session hash starts from the seed at the first chunk
+    bool sawEnd = false;
+    std::uint64_t endTicks = 0;
+    std::vector<RecordingEvent> events;
+
+    while (offset < size) {
+        ChunkHeader h;
+        const std::uint8_t* payload = nullptr;
+        const ChunkStatus status = parseChunk(data, size, offset, h, payload);
+        if (status != ChunkStatus::Ok) {
+            const bool headerValid = status == ChunkStatus::TruncatedPayload || status == ChunkStatus::BadPayloadCrc;
+            std::size_t next = size;
+            if (status == ChunkStatus::BadPayloadCrc) {
+                // A flipped byte: the next chunk is where the length says, if it is intact there.
+                const std::size_t end = offset + kChunkOverheadBytes + h.payloadBytes;
+                ChunkHeader probe;
+                const std::uint8_t* probePayload = nullptr;
+                if (end < size && parseChunk(data, size, end, probe, probePayload) == ChunkStatus::Ok) next = end;
+                else next = findChunkMagic(data, size, offset + 1);
+            } else if (status != ChunkStatus::TruncatedPayload) {
+                next = findChunkMagic(data, size, offset + 1);
+            }
+            addDamage(offset, next - offset, chunkStatusText(status), headerValid ? &h : nullptr);
+            hashKnown = false;
+            offset = next;
+            continue;
+        }
+        const std::size_t chunkBytes = kChunkOverheadBytes + h.payloadBytes;
+        if (sawEnd) {
+            addDamage(offset, chunkBytes, "chunk after the end chunk", nullptr);
+            offset += chunkBytes;
+            continue;
+        }
+        ChunkInfo info;
+        info.offset = offset;
+        info.bytes = std::uint32_t(chunkBytes);
+        info.type = h.type;
+        info.firstTick = h.firstTick;
+        info.count = h.count;
+        info.hash = h.hash;
+
+        // Ticks only move forward: a data chunk with ticks, or a gap, that starts before the end
+        // of what came before is not part of this recording (spliced or forged).
+        if ((h.type == ChunkType::Data && h.count > 0) || h.type == ChunkType::Gap) {
+            if (haveExpected && h.firstTick < expectedTick) {
+                addDamage(offset, chunkBytes,
+                          "chunk out of order (ticks " + std::to_string(h.firstTick) + " after " +
+                              std::to_string(expectedTick) + ")",
+                          nullptr);
+                offset += chunkBytes;
+                continue;
+            }
+        }
+        if (h.type == ChunkType::Data) {
+            std::string why;
+            std::vector<RecordingEvent> chunkEvents;
+            if (!scanData(h, payload, info, chunkEvents, why)) {
+                addDamage(offset, chunkBytes, "chunk does not decode: " + why, &h);
+                hashKnown = false;
+                offset += chunkBytes;
+                continue;
+            }
+            if (h.count > 0) {
+                if (haveExpected && h.firstTick > expectedTick) {
+                    mSummary.lostTicks += h.firstTick - expectedTick;
+                    hashKnown = false;
+                }
+                if (hashKnown) {
+                    std::uint64_t hash = runningHash;
+                    for (const RecordedTick& t : mScratch) hashTick(hash, t.forceN, t.touched);
+                    info.hashChecked = hash == h.hash;
+                    if (!info.hashChecked) ++mSummary.hashMismatches;
+                }
+                mTickChunks.push_back(mChunks.size());
+                if (mSummary.ticks == 0) mSummary.firstTick = h.firstTick;
+                mSummary.lastTick = h.firstTick + h.count - 1;
+                mSummary.ticks += h.count;
+                expectedTick = h.firstTick + h.count;
+                haveExpected = true;
+                runningHash = h.hash;
+                hashKnown = true;
+            }
+            for (auto& e : chunkEvents) events.push_back(std::move(e));
+        } else if (h.type == ChunkType::Gap) {
+            if (haveExpected && h.firstTick > expectedTick) {
+                mSummary.lostTicks += h.firstTick - expectedTick;
+                hashKnown = false;
+            }
+            ++mSummary.gaps;
+            mSummary.droppedTicks += h.count;
+            expectedTick = h.firstTick + h.count;
+            haveExpected = true;
+            if (hashKnown && h.hash != runningHash) ++mSummary.hashMismatches;
+            runningHash = h.hash;
+            hashKnown = true;
+        } else {  // End
+            sawEnd = true;
+            endTicks = h.count;
+            if (hashKnown && h.hash != runningHash) ++mSummary.hashMismatches;
+        }
+        mChunks.push_back(info);
+        offset += chunkBytes;
+    }
+
+    std::stable_sort(events.begin(), events.end(),
+                     [](const RecordingEvent& a, const RecordingEvent& b) { return a.tick < b.tick; });
+    mEvents = std::move(events);
+    mScratch = {};
+
+    mSummary.chunks = mChunks.size();
+    mSummary.events = mEvents.size();
+    mSummary.damagedRegions = mDamage.size();
+    mSummary.closedCleanly = sawEnd;
+    // The end chunk knows how many ticks were written: any not recovered were lost.
+    if (sawEnd && endTicks > mSummary.ticks + mSummary.lostTicks && endTicks != 0xFFFFFFFFu)
+        mSummary.lostTicks = endTicks - mSummary.ticks;
+    double firstS = 0.0, lastS = 0.0;
+    bool any = false;
+    for (const ChunkInfo& c : mChunks) {
+        if (c.type != ChunkType::Data || c.count == 0) continue;
+        if (!any) firstS = c.firstTimeS;
+        lastS = c.lastTimeS;
+        any = true;
+    }
+    mSummary.durationS = any ? lastS - firstS + periodS() : 0.0;
+    mSummary.intact = mSummary.headerOk && mDamage.empty() && mSummary.hashMismatches == 0 && sawEnd &&
+                      mSummary.lostTicks == 0;
+}
+
+bool RecordingReader::decodeChunk(std::size_t index, std::vector<RecordedTick>& out) const {
+    out.clear();
+    if (index >= mChunks.size()) return false;
+    const ChunkInfo& c = mChunks[index];
+    if (c.type != ChunkType::Data) return true;
+    ChunkHeader h;
+    const std::uint8_t* payload = nullptr;
+    if (parseChunk(mBytes.data(), mBytes.size(), c.offset, h, payload) != ChunkStatus::Ok) return false;
+    const std::uint8_t* after = nullptr;
+    return decodeTicks(h, payload, out, &after);
+}
+
+void RecordingReader::forEachTick(const std::function<bool(const RecordedTick&)>& fn) const {
+    std::vector<RecordedTick> ticks;
+    for (std::size_t i = 0; i < mChunks.size(); ++i) {
+        if (mChunks[i].type != ChunkType::Data || mChunks[i].count == 0) continue;
+        if (!decodeChunk(i, ticks)) continue;
+        for (const RecordedTick& t : ticks)
+            if (!fn(t)) return;
+    }
+}
+
+std::vector<RecordedTick> RecordingReader::ticks() const {
+    std::vector<RecordedTick> all;
+    all.reserve(std::size_t(mSummary.ticks));
+    forEachTick([&](const RecordedTick& t) {
+        all.push_back(t);
+        return true;
+    });
+    return all;
+}
+
+std::optional<RecordedTick> RecordingReader::tickAt(std::uint64_t tick) const {
+    // Chunks with ticks are in tick order (the scan rejects chunks out of order).
+    auto it = std::upper_bound(mTickChunks.begin(), mTickChunks.end(), tick,
+                               [this](std::uint64_t t, std::size_t i) { return t < mChunks[i].firstTick; });
+    if (it == mTickChunks.begin()) return std::nullopt;
+    const std::size_t index = *(it - 1);
+    const ChunkInfo& c = mChunks[index];
+    if (tick - c.firstTick >= c.count) return std::nullopt;
+    std::vector<RecordedTick> ticks;
+    if (!decodeChunk(index, ticks) || ticks.size() != c.count) return std::nullopt;
+    return ticks[std::size_t(tick - c.firstTick)];
+}
+
+}  // namespace palpate

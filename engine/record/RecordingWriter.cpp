@@ -1,0 +1,419 @@
+#include "engine/record/RecordingWriter.h"
+
+#include <fcntl.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+namespace palpate {
+
+namespace {
+
+double monotonicS() {
+    timespec ts{};
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+/// write(2) until everything is written (or a real error).
+bool writeAll(int fd, const std::uint8_t* data, std::size_t size, std::string& error) {
+    while (size > 0) {
+        const ssize_t n = ::write(fd, data, size);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            error = std::strerror(errno);
+            return false;
+        }
+        data += n;
+        size -= std::size_t(n);
+    }
+    return true;
+}
+
+}  // namespace
+
+std::string validateRecordingWriterDef(const RecordingWriterDef& def) {
+    if (def.ringCapacityTicks < 2 || def.ringCapacityTicks > (1u << 24))
+        return "RecordingWriterDef.ringCapacityTicks must be in 2..16777216";
+    if (def.commandCapacity < 2 || def.commandCapacity > (1u << 16))
+        return "RecordingWriterDef.commandCapacity must be in 2..65536";
+    if (!(def.drainPeriodS >= 0.001 && def.drainPeriodS <= 0.1))
+        return "RecordingWriterDef.drainPeriodS must be in 0.001..0.1 s (a crash loses at most one period)";
+    if (!(def.syncPeriodS > 0.0) || !std::isfinite(def.syncPeriodS))
+        return "RecordingWriterDef.syncPeriodS must be finite and > 0";
+    if (def.ticksPerChunk > (1u << 20)) return "RecordingWriterDef.ticksPerChunk must be at most 1048576";
+    return "";
+}
+
+std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path, const RecordingHeader& header,
+                                                         std::string& error, const RecordingWriterDef& def) {
+    if (const std::string problem = validateRecordingWriterDef(def); !problem.empty()) {
+        error = problem;
+        return nullptr;
+    }
+    if (!(header.rateHz >= 10.0 && header.rateHz <= 10000.0)) {
+        error = "recording header: rateHz " + std::to_string(header.rateHz) + " is outside 10..10000";
+        return nullptr;
+    }
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        error = path + ": cannot create the recording: " + std::strerror(errno);
+        return nullptr;
+    }
+    std::vector<std::uint8_t> bytes;
+    encodeRecordingHeader(header, bytes);
+    std::string why;
+    if (!writeAll(fd, bytes.data(), bytes.size(), why)) {
+        ::close(fd);
+        error = path + ": cannot write the recording header: " + why;
+        return nullptr;
+    }
+    std::unique_ptr<RecordingWriter> writer(new RecordingWriter(path, header, def, fd));
+    writer->mWorking.bytes = bytes.size();
+    writer->mStats = writer->mWorking;
+    writer->mThread = std::thread([w = writer.get()] { w->threadMain(); });
+    return writer;
+}
+
+RecordingWriter::RecordingWriter(std::string path, const RecordingHeader& header, const RecordingWriterDef& def,
+                                 int fd)
+    : mPath(std::move(path)),
+      mHeader(header),
+      mDef(def),
+      mPeriodS(1.0 / header.rateHz),
+      mTicksPerChunk(def.ticksPerChunk > 0 ? def.ticksPerChunk
+                                           : std::max<std::size_t>(1, std::size_t(std::lround(def.drainPeriodS * header.rateHz)))),
+      mFd(fd),
+      mTicks(def.ringCapacityTicks),
+      mCommands(def.commandCapacity) {
+    mDrained.reserve(mTicks.capacity());
+    mPendingCommands.reserve(2 * mCommands.capacity());
+    mPayload.reserve(64 * 1024);
+    mEventBytes.reserve(4096);
+    mOut.reserve(256 * 1024);
+    mScratch.reserve(1024);
+    mWorking.hash = kHashSeed;
+    mLastSyncS = monotonicS();
+}
+
+RecordingWriter::~RecordingWriter() { close(); }
+
+// --- haptic thread ---
+
+void RecordingWriter::onTick(const RecordedTick& tick) noexcept {
+    const std::uint32_t drops = mPendingDrops.load(std::memory_order_relaxed);
+    if (mTicks.push(Item{tick, drops})) {
+        if (drops != 0) mPendingDrops.store(0, std::memory_order_relaxed);
+    } else {
+        mPendingDrops.store(drops + 1, std::memory_order_relaxed);
+        mDroppedTotal.fetch_add(1, std::memory_order_relaxed);
+    }
+    mCurrentTick.store(tick.tick, std::memory_order_relaxed);
+}
+
+void RecordingWriter::onCommand(const RecordedCommand& command) noexcept {
+    if (!mCommands.push(command)) mLostCommands.fetch_add(1, std::memory_order_relaxed);
+}
+
+// --- controller threads ---
+
+void RecordingWriter::controllerEvent(EventKind kind, const std::string& text) {
+    std::lock_guard lock(mMutex);
+    if (mClosed) return;
+    mControllerEvents.push_back(
+        {kind, mCurrentTick.load(std::memory_order_relaxed), text.substr(0, kMaxEventTextBytes)});
+}
+
+void RecordingWriter::mark(const std::string& text) { controllerEvent(EventKind::Mark, text); }
+void RecordingWriter::exerciseEvent(const std::string& text) { controllerEvent(EventKind::Exercise, text); }
+
+void RecordingWriter::describeScene(std::uint64_t sceneId, const RecordedScene& scene) {
+    std::lock_guard lock(mMutex);
+    mSceneDescriptions[sceneId] = scene;
+}
+
+void RecordingWriter::describeDevice(const void* device, const RecordedDevice& description) {
+    std::lock_guard lock(mMutex);
+    mDeviceDescriptions[device] = description;
+}
+
+RecordingStats RecordingWriter::stats() const {
+    std::lock_guard lock(mMutex);
+    RecordingStats s = mStats;
+    s.droppedTicks = mDroppedTotal.load(std::memory_order_relaxed);
+    s.lostCommands = mLostCommands.load(std::memory_order_relaxed);
+    return s;
+}
+
+std::string RecordingWriter::flush() {
+    std::unique_lock lock(mMutex);
+    if (mClosed) return mStats.error;
+    const std::uint64_t target = ++mFlushRequested;
+    mWake.notify_all();
+    mFlushed.wait(lock, [&] { return mFlushDone >= target || mClosed; });
+    return mStats.error;
+}
+
+std::string RecordingWriter::close() {
+    {
+        std::lock_guard lock(mMutex);
+        if (mClosed) return mStats.error;
+        mClosed = true;
+        mStop = true;
+    }
+    mWake.notify_all();
+    if (mThread.joinable()) mThread.join();
+    mFlushed.notify_all();
+    std::string error = mWorking.error;
+    if (mFd >= 0) {
+        if (::fsync(mFd) != 0 && error.empty()) error = mPath + ": fsync failed: " + std::strerror(errno);
+        if (::close(mFd) != 0 && error.empty()) error = mPath + ": close failed: " + std::strerror(errno);
+        mFd = -1;
+    }
+    std::lock_guard lock(mMutex);
+    mStats = mWorking;
+    mStats.error = error;
+    return error;
+}
+
+// --- writer thread ---
+
+void RecordingWriter::threadMain() {
+    std::unique_lock lock(mMutex);
+    for (;;) {
+        mWake.wait_for(lock, std::chrono::duration<double>(mDef.drainPeriodS),
+                       [&] { return mStop || mFlushRequested != mFlushDone; });
+        const bool stop = mStop;
+        const std::uint64_t flushTarget = mFlushRequested;
+        mEventsTaken.swap(mControllerEvents);  // both keep their capacity
+        lock.unlock();
+        drain(stop);
+        lock.lock();
+        mStats = mWorking;
+        mFlushDone = flushTarget;
+        mFlushed.notify_all();
+        if (stop) return;
+    }
+}
+
+void RecordingWriter::drain(bool final) {
+    mDrained.clear();
+    Item item;
+    while (mTicks.pop(item)) mDrained.push_back(item);
+    // Commands after ticks: a command is pushed before its tick, so every command of a drained
+    // tick is visible now. Those of later ticks wait for their tick's chunk.
+    RecordedCommand command;
+    while (mCommands.pop(command)) mPendingCommands.push_back(command);
+
+    std::size_t begin = 0;
+    for (std::size_t i = 0; i < mDrained.size(); ++i) {
+        const std::uint32_t dropped = mDrained[i].droppedBefore;
+        if (dropped == 0) continue;
+        emitTicks(begin, i);
+        ChunkHeader gap;
+        gap.type = ChunkType::Gap;
+        gap.firstTick = mDrained[i].tick.tick - dropped;
+        gap.count = dropped;
+        gap.hash = mWorking.hash;
+        mPayload.clear();
+        emitChunk(gap, mPayload);
+        ++mWorking.gaps;
+        mWorking.droppedTicks += dropped;
+        begin = i;
+    }
+    emitTicks(begin, mDrained.size());
+
+    const std::uint64_t nextTick = mHaveLastTick ? mLastTick.tick + 1 : 0;
+    if (final) {
+        // Ticks dropped at the very end have no later tick to carry their count.
+        if (const std::uint32_t dropped = mPendingDrops.exchange(0, std::memory_order_acq_rel); dropped > 0) {
+            ChunkHeader gap;
+            gap.type = ChunkType::Gap;
+            gap.firstTick = mCurrentTick.load(std::memory_order_relaxed) + 1 - dropped;
+            gap.count = dropped;
+            gap.hash = mWorking.hash;
+            mPayload.clear();
+            emitChunk(gap, mPayload);
+            ++mWorking.gaps;
+            mWorking.droppedTicks += dropped;
+        }
+    }
+    // Events no tick chunk took (controller events while the loop is stopped; at the end, also
+    // commands of ticks that never came).
+    const bool leftovers = !mEventsTaken.empty() || (final && !mPendingCommands.empty()) ||
+                           mLostCommands.load(std::memory_order_relaxed) != mLostCommandsReported;
+    if (leftovers) {
+        mPayload.clear();
+        mEventBytes.clear();
+        mEventCount = 0;
+        appendEventsUpTo(final ? ~std::uint64_t(0) : (nextTick == 0 ? 0 : nextTick - 1), nextTick);
+        if (mEventCount > 0) {
+            ByteWriter w(mPayload);
+            w.varint(mEventCount);
+            w.bytes(mEventBytes.data(), mEventBytes.size());
+            ChunkHeader data;
+            data.type = ChunkType::Data;
+            data.firstTick = nextTick;
+            data.count = 0;
+            data.hash = mWorking.hash;
+            emitChunk(data, mPayload);
+        }
+    }
+    if (final) {
+        mPayload.clear();
+        ByteWriter w(mPayload);
+        w.varint(mWorking.ticks);
+        w.varint(mWorking.droppedTicks);
+        w.varint(mWorking.events);
+        w.varint(mLostCommands.load(std::memory_order_relaxed));
+        w.varint(mWorking.chunks);
+        ChunkHeader end;
+        end.type = ChunkType::End;
+        end.firstTick = nextTick;
+        end.count = std::uint32_t(std::min<std::uint64_t>(mWorking.ticks, 0xFFFFFFFFu));
+        end.hash = mWorking.hash;
+        emitChunk(end, mPayload);
+    }
+    writeOut();
+}
+
+void RecordingWriter::emitTicks(std::size_t begin, std::size_t end) {
+    while (begin < end) {
+        // One chunk per drain period of loop time; a short remainder joins the last chunk.
+        std::size_t take = end - begin;
+        if (take >= 2 * mTicksPerChunk) take = mTicksPerChunk;
+        const std::uint64_t firstTick = mDrained[begin].tick.tick;
+        mPayload.clear();
+        mEventBytes.clear();
+        mEventCount = 0;
+        mEncoder.reset();
+        for (std::size_t i = begin; i < begin + take; ++i) {
+            const RecordedTick& t = mDrained[i].tick;
+            mEncoder.encode(t, mPayload);
+            hashTick(mWorking.hash, t.forceN, t.touched);
+            // Derived events for the timeline: device state and pause changes.
+            if (!mHaveLastTick || t.deviceState != mLastTick.deviceState) {
+                const auto state = std::uint8_t(t.deviceState);
+                addEvent(EventKind::DeviceState, t.tick, firstTick, &state, 1);
+            }
+            if (mHaveLastTick ? t.paused != mLastTick.paused : t.paused)
+                addEvent(t.paused ? EventKind::Paused : EventKind::Resumed, t.tick, firstTick, nullptr, 0);
+            if (!mHaveLastTick) {
+                mFirstNowS = t.nowS;
+                mWorking.firstTick = t.tick;
+            }
+            mLastTick = t;
+            mHaveLastTick = true;
+        }
+        const std::uint64_t lastTick = mDrained[begin + take - 1].tick.tick;
+        appendEventsUpTo(lastTick, firstTick);
+        ByteWriter w(mPayload);
+        w.varint(mEventCount);
+        w.bytes(mEventBytes.data(), mEventBytes.size());
+        ChunkHeader data;
+        data.type = ChunkType::Data;
+        data.firstTick = firstTick;
+        data.count = std::uint32_t(take);
+        data.hash = mWorking.hash;
+        emitChunk(data, mPayload);
+        mWorking.ticks += take;
+        mWorking.lastTick = lastTick;
+        mWorking.elapsedS = mLastTick.nowS - mFirstNowS + mPeriodS;
+        begin += take;
+    }
+}
+
+void RecordingWriter::appendEventsUpTo(std::uint64_t lastTick, std::uint64_t firstTick) {
+    // Applied commands of ticks up to lastTick, in the order the loop applied them.
+    std::size_t kept = 0;
+    bool needDescriptions = false;
+    for (const RecordedCommand& c : mPendingCommands)
+        if (c.tick <= lastTick && c.kind != RecordedCommand::Kind::Params) needDescriptions = true;
+    std::unique_lock lock(mMutex, std::defer_lock);
+    if (needDescriptions) lock.lock();
+    for (const RecordedCommand& c : mPendingCommands) {
+        if (c.tick > lastTick) {
+            mPendingCommands[kept++] = c;
+            continue;
+        }
+        mScratch.clear();
+        ByteWriter w(mScratch);
+        switch (c.kind) {
+            case RecordedCommand::Kind::Params:
+                encodeParams(w, c.params);
+                addEvent(EventKind::ParamsApplied, c.tick, firstTick, mScratch.data(), mScratch.size());
+                break;
+            case RecordedCommand::Kind::Scene: {
+                w.u64(c.sceneId);
+                const auto found = mSceneDescriptions.find(c.sceneId);
+                w.u8(found != mSceneDescriptions.end() ? 1 : 0);
+                if (found != mSceneDescriptions.end()) encodeScene(w, found->second);
+                addEvent(EventKind::SceneChanged, c.tick, firstTick, mScratch.data(), mScratch.size());
+                break;
+            }
+            case RecordedCommand::Kind::Device: {
+                const auto found = mDeviceDescriptions.find(c.device);
+                w.u8(found != mDeviceDescriptions.end() ? 1 : 0);
+                if (found != mDeviceDescriptions.end()) encodeDevice(w, found->second);
+                addEvent(EventKind::DeviceChanged, c.tick, firstTick, mScratch.data(), mScratch.size());
+                break;
+            }
+        }
+    }
+    mPendingCommands.resize(kept);
+    if (lock.owns_lock()) lock.unlock();
+
+    const std::uint64_t lost = mLostCommands.load(std::memory_order_relaxed);
+    if (lost != mLostCommandsReported) {
+        mScratch.clear();
+        ByteWriter w(mScratch);
+        w.varint(lost - mLostCommandsReported);
+        addEvent(EventKind::CommandsLost, mHaveLastTick ? mLastTick.tick : firstTick, firstTick, mScratch.data(),
+                 mScratch.size());
+        mLostCommandsReported = lost;
+    }
+    // Controller events (marks, exercise events) go into the first chunk written after they came.
+    for (const PendingEvent& e : mEventsTaken)
+        addEvent(e.kind, e.tick, firstTick, reinterpret_cast<const std::uint8_t*>(e.text.data()), e.text.size());
+    mEventsTaken.clear();
+}
+
+void RecordingWriter::addEvent(EventKind kind, std::uint64_t tick, std::uint64_t firstTick, const std::uint8_t* payload,
+                               std::size_t bytes) {
+    ByteWriter w(mEventBytes);
+    w.varint(std::uint8_t(kind));
+    w.svarint(std::int64_t(tick - firstTick));
+    w.varint(bytes);
+    if (bytes > 0) w.bytes(payload, bytes);
+    ++mEventCount;
+    ++mWorking.events;
+}
+
+void RecordingWriter::emitChunk(const ChunkHeader& header, const std::vector<std::uint8_t>& payload) {
+    encodeChunk(header, payload.data(), payload.size(), mOut);
+    ++mWorking.chunks;
+}
+
+void RecordingWriter::writeOut() {
+    if (mOut.empty()) return;
+    if (mWorking.error.empty()) {
+        std::string why;
+        if (writeAll(mFd, mOut.data(), mOut.size(), why))
+            mWorking.bytes += mOut.size();
+        else
+            mWorking.error = mPath + ": writing the recording failed: " + why;  // later chunks are dropped
+    }
+    mOut.clear();
+    const double nowS = monotonicS();
+    if (nowS - mLastSyncS >= mDef.syncPeriodS) {
+        ::fdatasync(mFd);
+        mLastSyncS = nowS;
+    }
+}
+
+}  // namespace palpate

@@ -1,0 +1,61 @@
+#pragma once
+// Shared pieces of the recorder tests: a temporary directory, a mesh file the replay can load, a
+// stepped or threaded loop on it with a simulated device, and running palpate-cli.
+
+#include "device/SimulatedDevice.h"
+#include "engine/HapticLoop.h"
+#include "engine/TissuePreset.h"
+#include "engine/record/RecordingFormat.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace palpate::test {
+
+class TempDir {
+public:
+    TempDir();
+    ~TempDir();
+    std::string file(const std::string& name) const { return (mPath / name).string(); }
+    const std::filesystem::path& path() const { return mPath; }
+
+private:
+    std::filesystem::path mPath;
+};
+
+/// A 1442-vertex sphere written once per process to an OFF file (the replay loads meshes by path).
+const std::string& sphereMeshPath();
+/// Another mesh (642 vertices), for scene switches and hash mismatches.
+const std::string& smallSphereMeshPath();
+
+struct RecordRig {
+    std::unique_ptr<HapticLoop> loop;
+    SimulatedDevice* device = nullptr;
+    RecordingHeader header;
+    TissuePreset preset;
+    std::string meshPath;
+};
+
+/// A loop on the sphere (loaded from sphereMeshPath) with a simulated device aimed at its side
+/// vertex, and the recording header describing it. No SCHED_FIFO (tests share the machine).
+RecordRig makeRecordRig(SimTrajectory trajectory, TissuePreset preset = {}, const std::string& meshPath = {});
+/// A simulated device aimed like the rig's (for device switches).
+std::unique_ptr<SimulatedDevice> aimedDevice(const TissueMesh& mesh, SimTrajectory trajectory);
+
+std::vector<std::uint8_t> readBytes(const std::string& path);
+void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes);
+
+struct CommandResult {
+    int exitCode = -1;  ///< >= 128 when killed by a signal
+    std::string output; ///< stdout and stderr
+};
+/// Runs a shell command line.
+CommandResult runShell(const std::string& commandLine);
+std::string shellQuote(const std::string& s);
+/// Runs palpate-cli with these arguments (already quoted where needed).
+CommandResult runCli(const std::string& args);
+
+}  // namespace palpate::test
