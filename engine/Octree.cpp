@@ -56,6 +56,35 @@ Octree::Octree(const TissueMesh& mesh, const OctreeDef& def) : mDef(def), mRestM
     mNodes.reserve(2 * mRestMm.size() / std::max(1, def.leafCapacity) + 16);
     mNodes.push_back(root);
     build(0, codes, 0);
+    buildSearchNodes();
+}
+
+void Octree::buildSearchNodes() {
+    mSearch.resize(mNodes.size());
+    for (std::size_t i = 0; i < mNodes.size(); ++i) {
+        const Node& node = mNodes[i];
+        SearchNode& s = mSearch[i];
+        s.tightMinMm = node.tightMinMm;
+        s.tightMaxMm = node.tightMaxMm;
+        // The searches stop at subtrees of at most kSearchLeafVertices vertices and scan them
+        // whole (one contiguous range): fewer nodes to visit on fine meshes, where the paper's
+        // leaves (def.leafCapacity) hold a handful of vertices each.
+        if (node.leaf || node.end - node.begin <= kSearchLeafVertices) {
+            s.a = node.begin;
+            s.b = node.end | kLeafBit;
+            continue;
+        }
+        // build() allocates a node's children side by side, in octant order.
+        std::int32_t first = -1, count = 0;
+        for (std::int32_t c : node.child) {
+            if (c < 0) continue;
+            if (first < 0) first = c;
+            if (c != first + count) throw std::logic_error("Octree: children are not contiguous");
+            ++count;
+        }
+        s.a = std::uint32_t(first);
+        s.b = std::uint32_t(count);
+    }
 }
 
 void Octree::build(std::uint32_t nodeIndex, const std::vector<std::uint64_t>& codes, int depth) {
@@ -139,28 +168,32 @@ VertexId Octree::searchNodeFaithful(const glm::vec3& p, std::span<const glm::vec
 template <typename Bound, typename ScanLeaf>
 void Octree::visitNearestFirst(const glm::vec3& p, Bound bound, ScanLeaf scanLeaf) const {
     struct Entry {
-        std::int32_t node;
+        std::uint32_t node;
         float d2;
     };
     Entry stack[8 * 24];
     int top = 0;
-    stack[top++] = {0, boxDistance2(p, mNodes[0].tightMinMm, mNodes[0].tightMaxMm)};
+    const SearchNode* nodes = mSearch.data();
+    stack[top++] = {0, boxDistance2(p, nodes[0].tightMinMm, nodes[0].tightMaxMm)};
     while (top > 0) {
         const Entry e = stack[--top];
         if (e.d2 > bound()) continue;
-        const Node& node = mNodes[std::size_t(e.node)];
-        if (node.leaf) {
-            scanLeaf(node);
+        const SearchNode& node = nodes[e.node];
+        if (node.b & kLeafBit) {
+            scanLeaf(node.a, node.b & ~kLeafBit);
             continue;
         }
         Entry children[8];
         int count = 0;
-        for (int i = 0; i < 8; ++i) {
-            const std::int32_t c = node.child[i];
-            if (c < 0) continue;
-            const Node& child = mNodes[std::size_t(c)];
-            const float d2 = boxDistance2(p, child.tightMinMm, child.tightMaxMm);
+        for (std::uint32_t c = node.a, end = node.a + node.b; c < end; ++c) {
+            const float d2 = boxDistance2(p, nodes[c].tightMinMm, nodes[c].tightMaxMm);
             if (d2 > bound()) continue;
+            // Start fetching what visiting it will read (its children, or its vertices), so that
+            // the cache misses of siblings overlap instead of queueing.
+            if (nodes[c].b & kLeafBit)
+                __builtin_prefetch(mRestMm.data() + nodes[c].a);
+            else
+                __builtin_prefetch(nodes + nodes[c].a);
             // insertion sort, farthest first, so the nearest is popped first
             int k = count++;
             while (k > 0 && children[k - 1].d2 < d2) {
@@ -188,8 +221,8 @@ VertexId Octree::nearestExact(const glm::vec3& p, std::span<const glm::vec3> pos
             best = v;
         }
     }
-    visitNearestFirst(p, [&] { return bestD2; }, [&](const Node& leaf) {
-        for (std::uint32_t v = leaf.begin; v < leaf.end; ++v) {
+    visitNearestFirst(p, [&] { return bestD2; }, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t v = begin; v < end; ++v) {
             const float d2 = distance2(positionsMm[v], p);
             if (closer(d2, v, bestD2, best)) {
                 bestD2 = d2;
@@ -200,7 +233,8 @@ VertexId Octree::nearestExact(const glm::vec3& p, std::span<const glm::vec3> pos
     return best;
 }
 
-int Octree::nearestRestK(const glm::vec3& p, int count, VertexId* ids, float* d2s, int seedCount) const {
+int Octree::nearestRestK(const glm::vec3& p, int count, VertexId* ids, float* d2s, int seedCount,
+                         glm::vec3* positionsMm) const {
     int found = 0;
     auto bound = [&] { return found < count ? std::numeric_limits<float>::infinity() : d2s[count - 1]; };
     auto insert = [&](VertexId v, float d2) {
@@ -218,14 +252,16 @@ int Octree::nearestRestK(const glm::vec3& p, int count, VertexId* ids, float* d2
     seedCount = std::clamp(seedCount, 0, std::min(count, 64));
     std::copy(ids, ids + seedCount, seeds);
     for (int i = 0; i < seedCount; ++i) insert(seeds[i], distance2(mRestMm[seeds[i]], p));
-    visitNearestFirst(p, bound, [&](const Node& leaf) {
-        for (std::uint32_t v = leaf.begin; v < leaf.end; ++v) {
+    visitNearestFirst(p, bound, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t v = begin; v < end; ++v) {
             const float d2 = distance2(mRestMm[v], p);
             if (found == count && !(d2 < d2s[count - 1])) continue;
             if (std::find(seeds, seeds + seedCount, v) != seeds + seedCount) continue;  // already in
             insert(v, d2);
         }
     });
+    if (positionsMm)
+        for (int i = 0; i < found; ++i) positionsMm[i] = mRestMm[ids[i]];
     return found;
 }
 

@@ -55,23 +55,40 @@ public:
                           std::span<const VertexId> displaced, VertexId warmStart = kNoVertex) const;
 
     /// The `count` rest positions nearest to the point, ascending: fills ids and squared distances
-    /// (both of length >= count) and returns how many were found (fewer on tiny meshes).
-    /// `seedCount` ids already in `ids` (e.g. last query's answer) seed the bound, which makes a
-    /// query near the previous one cheap. Allocation-free; for our touched-vertex search's cache.
+    /// (both of length >= count) and, if given, the positions; returns how many were found (fewer
+    /// on tiny meshes). `seedCount` ids already in `ids` (e.g. last query's answer) seed the
+    /// bound, which makes a query near the previous one cheap. Allocation-free; for our
+    /// touched-vertex search's cache.
     int nearestRestK(const glm::vec3& pointMm, int count, VertexId* ids, float* distance2Mm2,
-                     int seedCount = 0) const;
+                     int seedCount = 0, glm::vec3* positionsMm = nullptr) const;
+
+    /// The searches (nearestExact, nearestRestK) scan a subtree of at most this many vertices
+    /// whole instead of descending into it.
+    static constexpr std::uint32_t kSearchLeafVertices = 32;
 
 private:
     void build(std::uint32_t nodeIndex, const std::vector<std::uint64_t>& codes, int depth);
 
-    /// Depth-first, nearest child first, over tight boxes of rest positions: calls scanLeaf(node)
+    /// Depth-first, nearest child first, over tight boxes of rest positions: calls scanLeaf(begin, end)
     /// for every leaf whose box is within sqrt(bound()) of the point (bound() may shrink as leaves
     /// are scanned). A fixed stack: each level pushes at most 8 entries and the depth is at most 21.
     template <typename Bound, typename ScanLeaf>
     void visitNearestFirst(const glm::vec3& pointMm, Bound bound, ScanLeaf scanLeaf) const;
 
+    /// What the searches read of a node, packed (two per cache line, siblings side by side): its
+    /// tight box, and its children (first index, count) or, for a leaf, its vertex range.
+    struct SearchNode {
+        glm::vec3 tightMinMm;
+        glm::vec3 tightMaxMm;
+        std::uint32_t a;  ///< first child, or first vertex of a leaf
+        std::uint32_t b;  ///< child count, or end vertex of a leaf | kLeafBit
+    };
+    static constexpr std::uint32_t kLeafBit = 0x80000000u;
+    void buildSearchNodes();
+
     OctreeDef mDef;
     std::vector<Node> mNodes;
+    std::vector<SearchNode> mSearch;  // parallel to mNodes
     std::vector<glm::vec3> mRestMm;  // copy: the tree must not depend on the mesh's lifetime
     int mDepth = 0;
     std::size_t mLeafCount = 0;

@@ -14,6 +14,9 @@ constexpr std::uint32_t kNoSlot = 0xffffffffu;
 constexpr std::uint8_t kNotInRing = 0xff;
 // A relaxing vertex closer than this to rest, and slower than this per tick, snaps back and rests.
 constexpr float kRestEpsilonMm = 1e-4f;
+// Relative margin on the search's triangle-inequality bounds: float distances are within a few
+// ulps (~1e-7) of the true ones, so a bound shrunk by 1e-5 of its terms holds for the computed ones.
+constexpr float kRoundingMargin = 1e-5f;
 
 inline float dist2(const glm::vec3& a, const glm::vec3& b) {
     const glm::vec3 d = a - b;
@@ -186,6 +189,7 @@ void SlopeRingDeformer::reset() {
     }
     mPreviousRingVertices.clear();
     mCacheCount = 0;
+    mPreviousToolMm = glm::vec3(0.0f);
 }
 
 std::span<const glm::vec3> SlopeRingDeformer::positionsMm() const {
@@ -228,13 +232,39 @@ void SlopeRingDeformer::removeRelaxing(VertexId v) {
     mRelaxingSlot[v] = kNoSlot;
 }
 
-void SlopeRingDeformer::refreshCandidateCache(const glm::vec3& tool) const {
+void SlopeRingDeformer::refreshCandidateCache(const glm::vec3& tool, const glm::vec3& toolStepMm,
+                                              bool offsetCentre) const {
+    // Any centre gives a valid bound; this one makes it last (docs/method.md). Beyond the tool,
+    // on the line from the nearest cached vertex through it, then ahead along the tool's last step.
+    glm::vec3 centre = tool;
+    if (offsetCentre && mCacheCount > 0) {
+        float nearest2 = std::numeric_limits<float>::infinity();
+        glm::vec3 from = tool;
+        for (int i = 0; i < mCacheCount; ++i) {
+            const float d2 = dist2(mCacheRestMm[i], tool);
+            if (d2 < nearest2) {
+                nearest2 = d2;
+                from = mCacheRestMm[i];
+            }
+        }
+        const glm::vec3 away = tool - from;
+        const float distance = std::sqrt(nearest2);
+        const glm::vec3 axis = distance > 0.0f ? away / distance : glm::vec3(0.0f);
+        const float along = glm::dot(toolStepMm, axis);
+        glm::vec3 lead = kLeadTicks * (toolStepMm - along * axis) + (kAxialLeadTicks * along) * axis;
+        const float leadMax = 0.5f * distance, leadLength = glm::length(lead);
+        if (!std::isfinite(leadLength))
+            lead = glm::vec3(0.0f);
+        else if (leadLength > leadMax)
+            lead *= leadMax / leadLength;
+        centre = tool + kCentreOffset * away + lead;
+    }
     float d2[kCacheSize];
-    mCacheCount = mOctree.nearestRestK(tool, kCacheSize, mCacheIds, d2, mCacheCount);
+    mCacheCount = mOctree.nearestRestK(centre, kCacheSize, mCacheIds, d2, mCacheCount, mCacheRestMm);
     for (int i = 0; i < mCacheCount; ++i) mCacheDistanceMm[i] = std::sqrt(d2[i]);
     mCacheRadiusMm = mCacheCount < kCacheSize ? std::numeric_limits<float>::infinity()
                                               : mCacheDistanceMm[kCacheSize - 1];
-    mCacheCentreMm = tool;
+    mCacheCentreMm = centre;
     ++mCacheRefreshes;
 }
 
@@ -297,7 +327,9 @@ VertexId SlopeRingDeformer::searchPalpate(const glm::vec3& tool) const {
     // the active rings from their rest copy shifted by each ring's displacement (contiguous, so the
     // compiler vectorises it), the relaxing ones directly; (2) the cached rest vertices that could
     // still beat the best so far; (3) a proof that no other vertex at rest can: those are at least
-    // mCacheRadiusMm from the cache centre.
+    // mCacheRadiusMm from the cache centre (docs/method.md).
+    const glm::vec3 previousTool = mPreviousToolMm;
+    mPreviousToolMm = tool;
     VertexId best = kNoVertex;
     float best2 = std::numeric_limits<float>::infinity();
     auto consider = [&](VertexId v, float d2) {
@@ -309,19 +341,24 @@ VertexId SlopeRingDeformer::searchPalpate(const glm::vec3& tool) const {
     const bool activeInContact = mActiveCentre != kNoVertex && mActiveContact;
     if (activeInContact) searchActive(tool, best, best2);
     for (std::size_t i = 0; i < mRelaxingCount; ++i) consider(mRelaxing[i], dist2(mPositions[mRelaxing[i]], tool));
-    for (int attempt = 0; attempt < 2; ++attempt) {
-        if (attempt == 1 || mCacheCount == 0) refreshCandidateCache(tool);
-        const float shift = glm::length(tool - mCacheCentreMm);
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        // 0: the cache as it is; 1: retaken around a centre beyond the tool (lasts longer);
+        // 2: around the tool itself (the tightest bound here). A first cache is centred on the tool.
+        if (attempt > 0 || mCacheCount == 0) refreshCandidateCache(tool, tool - previousTool, attempt == 1);
+        // Lower bounds by the triangle inequality, shrunk by a relative margin that covers the
+        // rounding of the float distances they are computed from.
+        const float shift = glm::length(tool - mCacheCentreMm) * (1.0f + kRoundingMargin);
         for (int i = 0; i < mCacheCount; ++i) {
-            const float lower = mCacheDistanceMm[i] - shift;  // |tool - rest| >= this
+            const float lower = mCacheDistanceMm[i] * (1.0f - kRoundingMargin) - shift;  // |tool - rest| >= this
             if (lower > 0.0f && lower * lower > best2) break;  // sorted: no later entry can win
             const VertexId v = mCacheIds[i];
             if ((activeInContact && mActiveStamp[v] == mActiveGeneration) || mRelaxingSlot[v] != kNoSlot)
                 continue;  // counted above at its current position
-            consider(v, dist2(mPositions[v], tool));
+            consider(v, dist2(mCacheRestMm[i], tool));  // at rest: its position is its rest position
         }
-        const float clearance = mCacheRadiusMm - shift;
-        if (clearance > 0.0f && best2 <= clearance * clearance) return best;
+        // Every rest vertex not cached is at least this far from the tool.
+        const float clearance = mCacheRadiusMm * (1.0f - kRoundingMargin) - shift;
+        if (clearance > 0.0f && best2 < clearance * clearance) return best;
     }
     ++mFullSearches;
     writeActivePositions();
@@ -428,7 +465,7 @@ void SlopeRingDeformer::changeActiveSet(VertexId touched, bool contact) {
         for (std::size_t i = 0, n = mNextActive.size(); i < n; ++i) {
             const VertexId v = mNextActive.vertices[i];
             mActiveStamp[v] = mActiveGeneration;
-            mVelocitiesMmPerS[v] = glm::vec3(0.0f);
+            // Its velocity is not read while it is active, and is zeroed when it leaves (below).
             removeRelaxing(v);
             mActiveRestX[i] = rest[v].x;
             mActiveRestY[i] = rest[v].y;

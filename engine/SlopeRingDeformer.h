@@ -62,7 +62,7 @@ private:
     void precomputeRingLists();
     VertexId searchPalpate(const glm::vec3& tool) const;
     void searchActive(const glm::vec3& tool, VertexId& best, float& best2) const;
-    void refreshCandidateCache(const glm::vec3& tool) const;
+    void refreshCandidateCache(const glm::vec3& tool, const glm::vec3& toolStepMm, bool offsetCentre) const;
     void writeActivePositions() const;
     void changeActiveSet(VertexId touched, bool contact);
     void releaseActiveSet();
@@ -125,11 +125,19 @@ private:
     mutable int mActiveScanBestRing = 0;
     mutable float mActiveScanSecondMm = 0.0f;      // runner-up distance at the scan
 
-    // Palpate's touched-vertex search: the K rest vertices nearest to where the cache was taken.
-    // Any other vertex at rest is at least mCacheRadiusMm - |tool - centre| from the tool, which
-    // certifies the answer without touching the octree on most ticks (docs/method.md).
+    // Palpate's touched-vertex search: the K rest vertices nearest to a centre. Any other vertex
+    // at rest is at least mCacheRadiusMm - |tool - centre| from the tool, which certifies the
+    // answer without touching the octree on most ticks (docs/method.md). The centre is placed
+    // beyond the tool, away from the surface (kCentreOffset times the tool's distance to it), and
+    // ahead along the tool's motion (kLeadTicks ticks sideways, kAxialLeadTicks along the offset
+    // direction, at most half the distance): the bound then decays slowly as the tool moves.
     static constexpr int kCacheSize = 16;
+    static constexpr float kCentreOffset = 0.5f;
+    static constexpr float kLeadTicks = 10.0f;
+    static constexpr float kAxialLeadTicks = 60.0f;
     mutable glm::vec3 mCacheCentreMm{0.0f};
+    mutable glm::vec3 mCacheRestMm[kCacheSize] = {};  // rest positions of the cached vertices
+    mutable glm::vec3 mPreviousToolMm{0.0f};         // the tool at the previous search
     mutable int mCacheCount = 0;
     mutable float mCacheRadiusMm = 0.0f;  // distance of the K-th cached vertex (infinite if all cached)
     mutable VertexId mCacheIds[kCacheSize] = {};

@@ -108,6 +108,10 @@ BENCHMARK(BM_Step)
                    {int(SlopeRingMethod::Previous), int(SlopeRingMethod::Hybrid), int(SlopeRingMethod::Proposed),
                     int(SlopeRingMethod::Palpate)}})
     ->ArgNames({"vertices", "method"});
+// Ours on fine meshes, where the touched-vertex search's certificate is hardest.
+BENCHMARK(BM_Step)
+    ->ArgsProduct({{100000, 1000000}, {int(SlopeRingMethod::Palpate)}})
+    ->ArgNames({"vertices", "method"});
 
 }  // namespace
 }  // namespace palpate

@@ -10,7 +10,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <random>
+#include <set>
 #include <stdexcept>
 
 namespace palpate {
@@ -213,6 +215,69 @@ TEST(Octree, SingleVertexWorldAndTinyMeshes) {
         const auto& rest = loaded.mesh->restPositionsMm();
         for (int q = 0; q < 50; ++q) expectSameNearest(tree, rest, {}, randomQuery(rng, tree, rest, q), rng, "tet");
     }
+}
+
+TEST(Octree, NearestRestKEqualsSortedBruteForce) {
+    // Our touched-vertex search's cache: the K nearest rest vertices, ascending, whatever the
+    // seeds (none, the answer itself, a stale answer from elsewhere, random vertices).
+    std::mt19937 rng(99);
+    constexpr int kK = 16;
+    for (const TissueMesh* mesh : {&sphere1442(), &stomach642()}) {
+        const auto& rest = mesh->restPositionsMm();
+        for (const OctreeDef& def : kDefs) {
+            const Octree tree(*mesh, def);
+            VertexId stale[kK];
+            int staleCount = 0;
+            for (int q = 0; q < 120; ++q) {
+                const glm::vec3 point = randomQuery(rng, tree, rest, q);
+                std::vector<float> all(rest.size());
+                for (VertexId v = 0; v < rest.size(); ++v) all[v] = dist2(rest[v], point);
+                std::vector<float> sorted = all;
+                std::sort(sorted.begin(), sorted.end());
+                for (int seeding = 0; seeding < 4; ++seeding) {
+                    VertexId ids[kK];
+                    float d2[kK];
+                    glm::vec3 positions[kK];
+                    int seeds = 0;
+                    if (seeding == 1) {  // the answer itself
+                        seeds = tree.nearestRestK(point, kK, ids, d2);
+                    } else if (seeding == 2) {  // last query's answer
+                        std::copy(stale, stale + staleCount, ids);
+                        seeds = staleCount;
+                    } else if (seeding == 3) {  // random distinct vertices
+                        seeds = 5;
+                        for (int i = 0; i < seeds; ++i) ids[i] = VertexId((rng() % (rest.size() / 5)) * 5 + VertexId(i));
+                    }
+                    const int found = tree.nearestRestK(point, kK, ids, d2, seeds, positions);
+                    ASSERT_EQ(found, kK) << "seeding " << seeding;
+                    std::set<VertexId> distinct(ids, ids + found);
+                    EXPECT_EQ(distinct.size(), std::size_t(found)) << "seeding " << seeding;
+                    for (int i = 0; i < found; ++i) {
+                        ASSERT_EQ(d2[i], sorted[std::size_t(i)]) << "rank " << i << " seeding " << seeding;
+                        ASSERT_EQ(d2[i], all[ids[i]]) << "rank " << i << " seeding " << seeding;
+                        ASSERT_EQ(positions[i], rest[ids[i]]) << "rank " << i;
+                    }
+                    if (seeding == 0) {
+                        std::copy(ids, ids + found, stale);
+                        staleCount = found;
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST(Octree, NearestRestKOnAMeshSmallerThanK) {
+    test::RawMesh tet;
+    tet.positions = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {0, 0, 10}};
+    tet.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    auto loaded = tet.build("tetrahedron");
+    ASSERT_TRUE(loaded.mesh) << loaded.error();
+    const Octree tree(*loaded.mesh, OctreeDef{});
+    VertexId ids[16];
+    float d2[16];
+    EXPECT_EQ(tree.nearestRestK(glm::vec3(3, 3, 3), 16, ids, d2), 4);
+    EXPECT_TRUE(std::is_sorted(d2, d2 + 4));
 }
 
 // --- The paper's searchNode, kept as written: its blind spots. ---

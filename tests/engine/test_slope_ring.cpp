@@ -443,6 +443,67 @@ TEST(SlopeRingEquilibrium, AcceptedOvershootingRelaxationStillConverges) {
     expectEquilibrium(p, 1.0f, 2000, "g = 1.8, forceRelaxation 0.7");
 }
 
+TEST(SlopeRingSearch, PalpateIsExactOnADenseMeshAndRarelyRetakesItsCache) {
+    // A fine sphere (0.5 mm edges under a 3 mm press): many rest vertices lie within a hair of the
+    // same distance from the tool, which is where the cache's certificate is hardest. Every tick,
+    // before stepping, the touched vertex must be the true nearest of the current positions:
+    // along the bench's press-and-stroke path, and along a jerky path (zig-zags, sudden jumps,
+    // going in and out of the surface).
+    const TissueMesh& mesh = sphere(20000);
+    const Octree tree(mesh, OctreeDef{});
+    const auto& rest = mesh.restPositionsMm();
+    const auto& normals = mesh.restNormals();
+    ToolPathDef def;
+    def.strokeTicks = 1500;
+    const auto smooth = makePressAndStrokePath(mesh, def);
+    std::vector<glm::vec3> jerky;
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+    for (std::size_t t = 0; t < smooth.size(); ++t) {
+        glm::vec3 p = smooth[t];
+        p.x += 0.8f * std::sin(0.05f * float(t));  // sideways zig-zag, up to ~0.04 mm per tick
+        p.z += 0.5f * std::cos(0.11f * float(t));
+        if (t % 400 == 399) {  // a jump to somewhere else on the surface, in or out by up to 3 mm
+            const VertexId w = VertexId(rng() % rest.size());
+            p = rest[w] + normals[w] * (5.0f * u01(rng) - 3.0f);
+        }
+        jerky.push_back(p);
+    }
+    // Hovering 0.2..2 mm above the surface, never touching: the nearest vertex is always a vertex
+    // at rest, so the cache alone decides, and it changes every few ticks.
+    std::vector<glm::vec3> hover;
+    for (std::size_t t = 0; t < smooth.size(); ++t) {
+        const glm::vec3 p = smooth[t] + glm::vec3(0.6f * std::sin(0.03f * float(t)), 0.0f, 0.4f * std::cos(0.07f * float(t)));
+        const VertexId near = nearestLinear(p, rest);
+        hover.push_back(rest[near] + normals[near] * (1.1f + 0.9f * std::sin(0.02f * float(t))) +
+                        0.3f * (p - rest[near] - glm::dot(p - rest[near], normals[near]) * normals[near]));
+    }
+    const std::vector<glm::vec3>* paths[] = {&smooth, &jerky, &hover};
+    for (const std::vector<glm::vec3>* path : paths) {
+        SCOPED_TRACE(path == &smooth ? "press and stroke" : path == &jerky ? "jerky" : "hover");
+        SlopeRingDeformer model(mesh, tree, SlopeRingParams{}, SlopeRingMethod::Palpate);
+        int contacts = 0;
+        for (std::size_t t = 0; t < path->size(); ++t) {
+            const glm::vec3 tool = (*path)[t];
+            const auto positions = model.positionsMm();
+            const VertexId truth = nearestLinear(tool, positions);
+            const VertexId found = model.findTouched(tool);
+            ASSERT_NE(found, kNoVertex) << "tick " << t;
+            ASSERT_EQ(dist2(positions[found], tool), dist2(positions[truth], tool))
+                << "tick " << t << ": touched " << found << " but nearest is " << truth;
+            contacts += model.step(tool, 1e-3).contact ? 1 : 0;
+        }
+        if (path == &hover) EXPECT_EQ(contacts, 0);
+        else EXPECT_GT(contacts, 1000);
+        if (path == &smooth) {
+            // The certificate holds on most ticks: the cache is retaken a few times per touched-
+            // vertex change, never on every tick (this path has 2700 ticks).
+            EXPECT_LT(model.cacheRefreshes(), 100u);
+            EXPECT_LT(model.fullSearches(), 10u);
+        }
+    }
+}
+
 TEST(SlopeRingMethods, PreviousAndPalpateAgreeOverPressAndStroke) {
     // Both use an exact search and share every formula: same touched vertex and force each tick,
     // positions equal up to Palpate's rest snapping (1e-4 mm).
