@@ -7,11 +7,14 @@ namespace palpate::cli {
 
 int meshCommand(const std::vector<std::string>& words);
 int benchCommand(const std::vector<std::string>& words);
+/// bench models: every deformation model's tick at the Table 1 sizes and 100k (BenchModelsCommand.cpp).
+int benchModelsCommand(const std::vector<std::string>& words);
 int demoCommand(const std::vector<std::string>& words);
 int loopCommand(const std::vector<std::string>& words);
 int runCommand(const std::vector<std::string>& words);
 int recordCommand(const std::vector<std::string>& words);
 int sweepCommand(const std::vector<std::string>& words);
 int calibrateCommand(const std::vector<std::string>& words);
+int accuracyCommand(const std::vector<std::string>& words);
 
 }  // namespace palpate::cli

@@ -12,6 +12,7 @@ void usage(std::ostream& out) {
            "  palpate-cli mesh generate --shape sphere|stomach --vertices N --out FILE\n"
            "  palpate-cli mesh check FILE\n"
            "  palpate-cli bench table1 [--json] [--csv FILE] [--quick] [--repeats N]\n"
+           "  palpate-cli bench models [--json] [--quick] [--sizes N,..] [--models NAME,..] [--repeats N] [--budget-s S]\n"
            "  palpate-cli demo [--mesh FILE] [--method previous|hybrid|proposed|palpate] [--json]\n"
            "  palpate-cli loop [--seconds S] [--rate HZ] [--observer-hz 60] [--device URI] [--mesh FILE]\n"
            "                   [--spin-fraction F] [--no-fifo] [--json] [--csv FILE]\n"
@@ -22,6 +23,7 @@ void usage(std::ostream& out) {
            "  palpate-cli record replay FILE [--mesh FILE] [--json]\n"
            "  palpate-cli sweep [--json] [--csv FILE] [--png FILE] [--quick] [--shapes sphere,stomach] [--sizes N,..]\n"
            "                    [--max-rings N] [--no-paper] [--repeats N] [TISSUE]\n"
+           "  palpate-cli accuracy --reference punch|hertz [--json] [--quick] [--nu LIST] [--levels LIST]\n"
            "  palpate-cli calibrate [--mesh FILE] [--rings N] [--vertex V] [--json] [--out PRESET] [--name NAME] [TISSUE]\n"
            "      TISSUE: [--preset FILE] [--youngs-kpa E] [--poisson NU] [--tool-radius MM]\n"
            "  palpate-cli --help | --version\n";
@@ -53,6 +55,7 @@ int main(int argc, char** argv) {
         if (command == "record") return palpate::cli::recordCommand(words);
         if (command == "sweep") return palpate::cli::sweepCommand(words);
         if (command == "calibrate") return palpate::cli::calibrateCommand(words);
+        if (command == "accuracy") return palpate::cli::accuracyCommand(words);
     } catch (const std::exception& e) {
         std::cerr << "palpate-cli " << command << ": " << e.what() << "\n";
         return 1;

@@ -1,0 +1,66 @@
+#pragma once
+// Every deformation model by a stable name, and one function that builds any of them, so that
+// scenes, presets, the GUI's selector, the sweep and the stability maps can offer them all without
+// knowing each class. Names: mass-spring-symplectic, mass-spring-rk4, mass-spring-implicit,
+// mass-spring-local, radius-of-influence, ffd, volumetric-rings, and the slope-ring methods by
+// their SlopeRingMethod names (palpate, proposed, hybrid, previous). See docs/models.md.
+
+#include "engine/DeformationModel.h"
+#include "engine/Octree.h"
+#include "engine/SlopeRingMethod.h"
+#include "engine/SlopeRingParams.h"
+#include "engine/TissueMesh.h"
+#include "engine/accuracy/TetMesh.h"
+#include "engine/models/FfdParams.h"
+#include "engine/models/MassSpringParams.h"
+#include "engine/models/RadiusOfInfluenceParams.h"
+#include "engine/models/VolumetricRingsParams.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace palpate {
+
+enum class ModelKind {
+    SlopeRing,             ///< SlopeRingDeformer, the method in ModelDef::slopeRingMethod
+    MassSpringSymplectic,  ///< whole model, symplectic Euler
+    MassSpringRk4,         ///< whole model, RK4
+    MassSpringImplicit,    ///< whole model, backward Euler (conjugate gradients)
+    MassSpringLocal,       ///< the touched vertex's rings only, MassSpringParams::localIntegrator
+    RadiusOfInfluence,
+    Ffd,
+    VolumetricRings,
+};
+
+/// Which model, and every model's parameters (only the kind's are used).
+struct ModelDef {
+    ModelKind kind = ModelKind::SlopeRing;
+    SlopeRingMethod slopeRingMethod = SlopeRingMethod::Palpate;
+    SlopeRingParams slopeRing;
+    MassSpringParams massSpring;
+    RadiusOfInfluenceParams radiusOfInfluence;
+    FfdParams ffd;
+    VolumetricRingsParams volumetricRings;
+};
+
+/// The stable names, in the order a selector lists them.
+std::vector<std::string> modelNames();
+/// The definition with default parameters for a name; nullopt for an unknown one.
+std::optional<ModelDef> modelDefForName(std::string_view name);
+/// The stable name of a definition (the model's name() says the same).
+std::string modelName(const ModelDef& def);
+/// Every problem of the kind's parameters, each naming the field; empty when valid.
+std::vector<std::string> validateModelDef(const ModelDef& def);
+
+/// Builds the model. `mesh` and `octree` must outlive it. volumetric-rings fills the surface with
+/// tetrahedra first (not real-time). Throws std::invalid_argument naming the problem (invalid
+/// parameters, or a surface that cannot be filled).
+std::unique_ptr<DeformationModel> makeModel(const ModelDef& def, const TissueMesh& mesh, const Octree& octree);
+/// As above, with the tet mesh for volumetric-rings given (its first nodes the surface's vertices).
+std::unique_ptr<DeformationModel> makeModel(const ModelDef& def, const TissueMesh& mesh, const Octree& octree,
+                                            const TetMesh& tets);
+
+}  // namespace palpate
