@@ -29,13 +29,27 @@ constexpr qreal kHighlightRingSize = 26.0;
 const QColor kParetoColor(0x21, 0x21, 0x21);
 const QColor kHighlightColor(0xe4, 0x00, 0x7c);  // magenta: no series uses it
 
-/// Legend order: slope-ring by ring count, then the paper's methods (proposed, hybrid, previous).
+/// The other models (engine/models), in legend order, with their colours.
+struct OtherModelStyle {
+    const char* name;
+    QRgb color;
+};
+constexpr OtherModelStyle kOtherModels[] = {
+    {"mass-spring-local", 0x1f77b4},    {"mass-spring-symplectic", 0x17becf}, {"mass-spring-rk4", 0x9467bd},
+    {"mass-spring-implicit", 0xe377c2}, {"radius-of-influence", 0xbcbd22},    {"ffd", 0x7f7f7f},
+    {"volumetric-rings", 0x2ca02c},
+};
+
+/// Legend order: slope-ring by ring count, then the paper's methods (proposed, hybrid, previous),
+/// then the other models (200 and up).
 int seriesRank(const SweepPoint& p) {
     if (p.model == "palpate") return p.rings;
     if (p.model == "proposed") return 100;
     if (p.model == "hybrid") return 101;
     if (p.model == "previous") return 102;
-    return 200;
+    for (int i = 0; i < int(std::size(kOtherModels)); ++i)
+        if (p.model == kOtherModels[i].name) return 200 + i;
+    return 300;
 }
 
 /// The largest of 1, 2, 5 x 10^k at or below `v` (round = false) or the smallest at or above it.
@@ -156,21 +170,26 @@ QString SpeedAccuracyChart::legendHtml() const {
         return QStringLiteral("<span style=\"color:%1\">%2</span>&nbsp;%3")
             .arg(color.name(), marker, text.toHtmlEscaped().replace(QLatin1Char(' '), QStringLiteral("&nbsp;")));
     };
-    QStringList rings, paper;
+    QStringList rings, paper, others;
     for (QAbstractSeries* s : chart()->series()) {
         if (!s->property("modelSeries").toBool()) continue;
         const QString name = s->name();
         const QColor color = seriesColor(name.toStdString());
         if (name.startsWith(QLatin1String("slope-ring ")))
             rings << mark(color, QStringLiteral("●"), name.mid(11).section(QLatin1Char(' '), 0, 0));
+        else if (name.endsWith(QLatin1String(" (paper)")))
+            paper << mark(color, QStringLiteral("◆"), name.chopped(8));
         else
-            paper << mark(color, QStringLiteral("◆"), name.endsWith(QLatin1String(" (paper)")) ? name.chopped(8) : name);
+            others << mark(color, QStringLiteral("▲"), name);
     }
     QStringList groups;
     if (!rings.isEmpty()) groups << tr("Slope&#8209;ring, rings:") + QStringLiteral("&nbsp;") + rings.join(QLatin1Char(' '));
     if (!paper.isEmpty())
         groups << tr("Paper (2 rings):").replace(QLatin1Char(' '), QStringLiteral("&nbsp;")) + QStringLiteral("&nbsp;") +
                       paper.join(QLatin1Char(' '));
+    if (!others.isEmpty())
+        groups << tr("Other models:").replace(QLatin1Char(' '), QStringLiteral("&nbsp;")) + QStringLiteral("&nbsp;") +
+                      others.join(QLatin1Char(' '));
     if (mParetoMarks > 0) groups << mark(kParetoColor, QStringLiteral("◯"), tr("Pareto front (dashed)"));
     if (mHighlightMarks > 0) groups << mark(kHighlightColor, QStringLiteral("◯"), tr("in use"));
     return groups.join(QStringLiteral(" &nbsp;&nbsp; "));
@@ -191,6 +210,8 @@ QColor SpeedAccuracyChart::seriesColor(const std::string& series) {
     if (series.rfind("proposed", 0) == 0) return QColor(0xd6, 0x27, 0x28);  // red
     if (series.rfind("hybrid", 0) == 0) return QColor(0xff, 0x7f, 0x0e);    // orange
     if (series.rfind("previous", 0) == 0) return QColor(0x8c, 0x56, 0x4b);  // brown
+    for (const OtherModelStyle& other : kOtherModels)
+        if (series == other.name) return QColor(other.color);
     return QColor(0x7f, 0x7f, 0x7f);
 }
 
@@ -330,9 +351,12 @@ void SpeedAccuracyChart::rebuild() {
         auto* scatter = new QScatterSeries;
         scatter->setName(QString::fromStdString(key.second));
         scatter->setProperty("modelSeries", true);
-        const bool paper = key.first >= 100;
-        scatter->setMarkerShape(paper ? QScatterSeries::MarkerShapeRotatedRectangle : QScatterSeries::MarkerShapeCircle);
-        scatter->setMarkerSize(paper ? kMarkerSize + 3.0 : kMarkerSize);
+        const bool paper = key.first >= 100 && key.first < 200;
+        const bool other = key.first >= 200;
+        scatter->setMarkerShape(paper   ? QScatterSeries::MarkerShapeRotatedRectangle
+                                : other ? QScatterSeries::MarkerShapeTriangle
+                                        : QScatterSeries::MarkerShapeCircle);
+        scatter->setMarkerSize(paper || other ? kMarkerSize + 3.0 : kMarkerSize);
         const QColor color = seriesColor(key.second);
         scatter->setColor(color);
         scatter->setBorderColor(color.darker(140));

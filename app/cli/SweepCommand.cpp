@@ -42,7 +42,7 @@ void printTable(std::ostream& out, const SweepResult& result) {
 int sweepCommand(const std::vector<std::string>& words) {
     std::vector<std::string> options{"csv", "png", "shapes", "sizes", "max-rings", "repeats"};
     for (const std::string& o : toolContactOptionNames()) options.push_back(o);
-    const Args args(words, {"json", "quick", "no-paper"}, options);
+    const Args args(words, {"json", "quick", "no-paper", "no-others"}, options);
     if (!args.ok()) {
         std::cerr << "palpate-cli sweep: " << args.error() << "\n";
         return 2;
@@ -55,6 +55,7 @@ int sweepCommand(const std::vector<std::string>& words) {
     SweepDef def;
     def.contact = choice.contact;
     def.paperMethods = !args.flag("no-paper");
+    def.otherModels = !args.flag("no-others");
     if (args.flag("quick")) {
         def.shapes = {GeneratedShape::Sphere};
         def.sizes = {1442, 3970};

@@ -22,7 +22,7 @@ void usage(std::ostream& out) {
            "  palpate-cli record export-csv FILE [--out CSV]\n"
            "  palpate-cli record replay FILE [--mesh FILE] [--json]\n"
            "  palpate-cli sweep [--json] [--csv FILE] [--png FILE] [--quick] [--shapes sphere,stomach] [--sizes N,..]\n"
-           "                    [--max-rings N] [--no-paper] [--repeats N] [TISSUE]\n"
+           "                    [--max-rings N] [--no-paper] [--no-others] [--repeats N] [TISSUE]\n"
            "  palpate-cli accuracy --reference punch|hertz [--json] [--quick] [--nu LIST] [--levels LIST]\n"
            "  palpate-cli calibrate [--mesh FILE] [--rings N] [--vertex V] [--json] [--out PRESET] [--name NAME] [TISSUE]\n"
            "      TISSUE: [--preset FILE] [--youngs-kpa E] [--poisson NU] [--tool-radius MM]\n"

@@ -2,9 +2,9 @@
 
 #include "engine/Octree.h"
 #include "engine/SceneTarget.h"
-#include "engine/SlopeRingDeformer.h"
 #include "engine/TickTimer.h"
 #include "engine/ToolPath.h"
+#include "engine/models/ModelRegistry.h"
 
 #include <nlohmann/json.hpp>
 
@@ -27,13 +27,21 @@ SweepResult runSweep(const SweepDef& def) {
     if (def.sizes.empty() || def.shapes.empty()) throw std::invalid_argument("sweep: no shapes or sizes to measure");
 
     struct Config {
+        ModelKind kind;
         SlopeRingMethod method;
         int rings;
     };
     std::vector<Config> configs;
-    for (int r = 1; r <= def.maxRings; ++r) configs.push_back({SlopeRingMethod::Palpate, r});
+    for (int r = 1; r <= def.maxRings; ++r) configs.push_back({ModelKind::SlopeRing, SlopeRingMethod::Palpate, r});
     if (def.paperMethods)
-        for (auto m : {SlopeRingMethod::Proposed, SlopeRingMethod::Hybrid, SlopeRingMethod::Previous}) configs.push_back({m, 2});
+        for (auto m : {SlopeRingMethod::Proposed, SlopeRingMethod::Hybrid, SlopeRingMethod::Previous})
+            configs.push_back({ModelKind::SlopeRing, m, 2});
+    if (def.otherModels)
+        for (auto k : {ModelKind::MassSpringLocal, ModelKind::MassSpringSymplectic, ModelKind::MassSpringRk4,
+                       ModelKind::MassSpringImplicit, ModelKind::RadiusOfInfluence, ModelKind::Ffd,
+                       ModelKind::VolumetricRings})
+            configs.push_back({k, SlopeRingMethod::Palpate, 2});
+    const double punchStiffnessNPerMm = 2.0 * def.contact.toolRadiusMm * planeStrainModulusNPerMm2(def.contact.material);
 
     SweepResult result;
     const double total = double(def.shapes.size() * def.sizes.size() * configs.size());
@@ -44,6 +52,14 @@ SweepResult runSweep(const SweepDef& def) {
             const TissueMesh& mesh = *generated.mesh;
             const Octree octree(mesh, OctreeDef{});
             const auto path = makePressAndStrokePath(mesh);
+            ToolPathDef shortDef;
+            shortDef.approachTicks /= 10;
+            shortDef.pressTicks /= 10;
+            shortDef.holdTicks /= 10;
+            shortDef.strokeTicks /= 10;
+            shortDef.releaseTicks /= 10;
+            shortDef.strokeLengthMm /= 10.0;
+            const auto shortPath = makePressAndStrokePath(mesh, shortDef);
             const VertexId touched = defaultTargetVertex(mesh);
             for (const Config& config : configs) {
                 if (def.cancel && def.cancel->load(std::memory_order_relaxed)) {
@@ -54,16 +70,28 @@ SweepResult runSweep(const SweepDef& def) {
                 SlopeRingParams base = def.base;
                 base.ringCount = config.rings;
                 const SlopeCalibration calibration = calibrateSlopesFromPunch(mesh, touched, def.contact, base);
-                SlopeRingDeformer model(mesh, octree, calibration.params, config.method);
+                ModelDef modelDef;
+                modelDef.kind = config.kind;
+                modelDef.slopeRingMethod = config.method;
+                modelDef.slopeRing = calibration.params;
+                modelDef.volumetricRings.slopeRing = calibration.params;
+                modelDef.radiusOfInfluence.radiusMm = def.press.regionInRadii * def.contact.toolRadiusMm;
+                modelDef.radiusOfInfluence.stiffnessNPerMm = punchStiffnessNPerMm;
+                modelDef.ffd.stiffnessNPerMm = punchStiffnessNPerMm;
+                const std::unique_ptr<DeformationModel> model = makeModel(modelDef, mesh, octree);
 
                 SweepPoint p;
-                p.series = sweepSeriesName(config.method, config.rings);
-                p.model = std::string(methodName(config.method));
-                p.rings = config.rings;
+                p.model = modelName(modelDef);
+                p.series = config.kind == ModelKind::SlopeRing ? sweepSeriesName(config.method, config.rings) : p.model;
+                p.rings = config.kind == ModelKind::SlopeRing || config.kind == ModelKind::VolumetricRings ? config.rings : 0;
                 p.shape = shape;
                 p.vertices = mesh.vertexCount();
-                p.error = measureModelError(model, mesh, touched, def.contact, def.press);
-                p.tickUs = medianTickUs(model, path, {def.timingRepeats, def.minMeasureMs});
+                p.error = measureModelError(*model, mesh, touched, def.contact, def.press);
+                // A probe over the path's first ticks says whether the full path would take too long.
+                const std::vector<glm::vec3> probe(path.begin(), path.begin() + std::min<std::size_t>(path.size(), 50));
+                const double probeUs = medianTickUs(*model, probe, {1, 0.0});
+                const bool shorten = probeUs * double(path.size()) > def.maxPathSeconds * 1e6;
+                p.tickUs = medianTickUs(*model, shorten ? shortPath : path, {def.timingRepeats, def.minMeasureMs});
                 result.points.push_back(p);
                 if (def.progress) {
                     std::ostringstream line;

@@ -22,6 +22,13 @@ struct SweepDef {
     std::vector<std::size_t> sizes{1442, 3970, 5762, 8664};
     int maxRings = 8;                                  ///< slope-ring series for 1..maxRings rings
     bool paperMethods = true;                          ///< also previous, hybrid and proposed (2 rings)
+    /// Also the other models (engine/models: mass-spring, radius of influence, FFD, volumetric
+    /// rings). Where a model has a stiffness with a punch counterpart it is set to 2 a E* (and the
+    /// radius of influence to 5a); mass-spring has no closed-form calibration and keeps its defaults.
+    bool otherModels = true;
+    /// A model whose tick would make the timed path last longer than this is timed on a path ten
+    /// times shorter (same stroke speed), so the sweep stays minutes, not hours.
+    double maxPathSeconds = 0.5;
     PressDef press;
     int timingRepeats = 3;
     double minMeasureMs = 10.0;
@@ -34,7 +41,7 @@ struct SweepDef {
 
 struct SweepPoint {
     std::string series;   ///< chart series: "slope-ring 3 rings", "proposed (paper)", ...
-    std::string model;    ///< palpate, proposed, hybrid, previous
+    std::string model;    ///< the registry name: palpate, proposed, hybrid, previous, mass-spring-rk4, ffd, ...
     int rings = 0;
     GeneratedShape shape = GeneratedShape::Sphere;
     std::size_t vertices = 0;

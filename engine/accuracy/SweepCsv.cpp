@@ -1,6 +1,7 @@
 #include "engine/accuracy/SweepCsv.h"
 
 #include "engine/Rings.h"
+#include "engine/models/ModelRegistry.h"
 
 #include <charconv>
 #include <cmath>
@@ -97,7 +98,7 @@ const std::vector<Column>& columns() {
          }},
         {"model",
          [](const std::string& t, SweepPoint& p) -> std::string {
-             if (!parseMethod(t)) return "'" + t + "' is not a model (palpate, proposed, hybrid, previous)";
+             if (!modelDefForName(t)) return "'" + t + "' is not a model (see palpate-cli bench models)";
              p.model = t;
              return {};
          }},

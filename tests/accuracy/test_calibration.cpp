@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <numbers>
 
 using namespace palpate;
@@ -217,6 +218,7 @@ TEST(Sweep, MeasuresEveryConfigurationAndMarksTheParetoFront) {
     def.sizes = {1442};
     def.maxRings = 3;
     def.paperMethods = true;
+    def.otherModels = false;
     def.timingRepeats = 1;
     def.minMeasureMs = 1.0;
     int progressCalls = 0;
@@ -266,6 +268,7 @@ TEST(Sweep, CancelReturnsWhatWasMeasured) {
     def.sizes = {1442};
     def.maxRings = 8;
     def.paperMethods = false;
+    def.otherModels = false;
     def.timingRepeats = 1;
     def.minMeasureMs = 1.0;
     std::atomic<bool> cancel{false};
@@ -276,4 +279,31 @@ TEST(Sweep, CancelReturnsWhatWasMeasured) {
     EXPECT_EQ(result.points.size(), 1u);
     def.maxRings = 0;
     EXPECT_THROW(runSweep(def), std::invalid_argument);
+}
+
+TEST(Sweep, OtherModelsGetAPointEachWithTheirForceCalibratedWherePossible) {
+    SweepDef def;
+    def.contact = liverLike();
+    def.shapes = {GeneratedShape::Sphere};
+    def.sizes = {1442};
+    def.maxRings = 1;
+    def.paperMethods = false;
+    def.otherModels = true;
+    def.timingRepeats = 1;
+    def.minMeasureMs = 0.0;
+    const SweepResult result = runSweep(def);
+    ASSERT_EQ(result.points.size(), 8u);  // slope-ring 1 ring + 7 other models
+    std::set<std::string> names;
+    for (const SweepPoint& p : result.points) {
+        names.insert(p.model);
+        EXPECT_EQ(p.series.empty(), false);
+        EXPECT_GT(p.tickUs, 0.0) << p.model;
+        EXPECT_TRUE(std::isfinite(p.error.displacementError)) << p.model;
+        EXPECT_GT(p.error.indentationMm, 0.0) << p.model;
+        // Radius of influence and FFD render k_s = 2 a E* times their indentation: the punch force.
+        if (p.model == "radius-of-influence" || p.model == "ffd") EXPECT_LT(p.error.forceError, 0.01) << p.model;
+    }
+    for (const char* name : {"mass-spring-local", "mass-spring-symplectic", "mass-spring-rk4", "mass-spring-implicit",
+                             "radius-of-influence", "ffd", "volumetric-rings", "palpate"})
+        EXPECT_EQ(names.count(name), 1u) << name;
 }

@@ -162,6 +162,7 @@ SweepDef tinySweep() {
     def.sizes = {1442};
     def.maxRings = 2;
     def.paperMethods = false;
+    def.otherModels = false;
     def.timingRepeats = 1;
     def.minMeasureMs = 1.0;
     return def;

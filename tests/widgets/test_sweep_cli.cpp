@@ -23,7 +23,7 @@ TEST(SweepCli, QuickSweepWritesAPngAndACsv) {
     env.remove(QStringLiteral("WAYLAND_DISPLAY"));
     cli.setProcessEnvironment(env);
     cli.start(QStringLiteral(PALPATE_CLI_PATH),
-              {QStringLiteral("sweep"), QStringLiteral("--quick"), QStringLiteral("--no-paper"), QStringLiteral("--max-rings"),
+              {QStringLiteral("sweep"), QStringLiteral("--quick"), QStringLiteral("--no-paper"), QStringLiteral("--no-others"), QStringLiteral("--max-rings"),
                QStringLiteral("2"), QStringLiteral("--sizes"), QStringLiteral("1442"), QStringLiteral("--png"), png,
                QStringLiteral("--csv"), csv});
     ASSERT_TRUE(cli.waitForFinished(120000));

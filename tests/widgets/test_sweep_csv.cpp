@@ -12,11 +12,13 @@ std::vector<SweepPoint> points() {
     std::vector<SweepPoint> out;
     int i = 0;
     for (GeneratedShape shape : {GeneratedShape::Sphere, GeneratedShape::Stomach})
-        for (const char* model : {"palpate", "proposed"}) {
+        for (const char* model : {"palpate", "proposed", "mass-spring-rk4"}) {
             SweepPoint p;
             p.model = model;
             p.rings = 2 + i % 3;
-            p.series = p.model == "palpate" ? "slope-ring " + std::to_string(p.rings) + " rings" : "proposed (paper)";
+            p.series = p.model == "palpate"    ? "slope-ring " + std::to_string(p.rings) + " rings"
+                       : p.model == "proposed" ? "proposed (paper)"
+                                               : p.model;
             p.shape = shape;
             p.vertices = 1442 + 1000 * std::size_t(i);
             p.tickUs = 0.0251234 * (i + 1);
@@ -80,13 +82,13 @@ TEST(SweepCsv, RejectsAMalformedLineNamingTheLineAndColumn) {
     EXPECT_EQ(error.rfind("line 3, column 6 (tick_us): 'fast' is not a number", 0), 0u) << error;
 
     EXPECT_TRUE(parseSweepCsv(csv + "sphere,1442,x\n", &error).empty());
-    EXPECT_NE(error.find("line 6: 3 fields, the header has 13"), std::string::npos) << error;
+    EXPECT_NE(error.find("line 8: 3 fields, the header has 13"), std::string::npos) << error;
 
     EXPECT_TRUE(parseSweepCsv(csv + "cube,1442,s,palpate,1,0.1,0.1,0,0,0,0,0,1\n", &error).empty());
-    EXPECT_NE(error.find("line 6, column 1 (shape)"), std::string::npos) << error;
+    EXPECT_NE(error.find("line 8, column 1 (shape)"), std::string::npos) << error;
 
     EXPECT_TRUE(parseSweepCsv(csv + "sphere,1442,s,palpate,1,0.1,0.1,0,0,0,0,0,yes\n", &error).empty());
-    EXPECT_NE(error.find("line 6, column 13 (pareto): 'yes' is not 0 or 1"), std::string::npos) << error;
+    EXPECT_NE(error.find("line 8, column 13 (pareto): 'yes' is not 0 or 1"), std::string::npos) << error;
 
     EXPECT_TRUE(parseSweepCsv("shape,vertices,speed\n", &error).empty());
     EXPECT_NE(error.find("line 1, column 3 (speed): unknown column"), std::string::npos) << error;
