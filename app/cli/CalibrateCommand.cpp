@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
@@ -21,7 +22,7 @@ namespace palpate::cli {
 int calibrateCommand(const std::vector<std::string>& words) {
     std::vector<std::string> options{"mesh", "rings", "vertex", "out", "name", "description", "source"};
     for (const std::string& o : toolContactOptionNames()) options.push_back(o);
-    const Args args(words, {"json"}, options);
+    const Args args(words, {"json", "fem"}, options);
     if (!args.ok()) {
         std::cerr << "palpate-cli calibrate: " << args.error() << "\n";
         return 2;
@@ -59,10 +60,20 @@ int calibrateCommand(const std::vector<std::string>& words) {
         } else touched = VertexId(*n);
     }
 
-    const SlopeCalibration calibration = calibrateSlopesFromPunch(mesh, touched, choice.contact, preset.params);
+    // --fem: least squares against the reference FEM of this mesh (filled with tetrahedra);
+    // otherwise the flat-punch formula at the rings' mean radii.
+    const bool fem = args.flag("fem");
+    std::vector<double> femField;
+    const SlopeCalibration calibration =
+        fem ? calibrateSlopesFromFem(mesh, touched, choice.contact, preset.params, 1.0, &femField)
+            : calibrateSlopesFromPunch(mesh, touched, choice.contact, preset.params);
     const Octree octree(mesh, preset.octree);
     SlopeRingDeformer model(mesh, octree, calibration.params, SlopeRingMethod::Palpate);
     const ModelError error = measureModelError(model, mesh, touched, choice.contact);
+    const double femError =
+        fem ? displacementErrorAgainstField(mesh, touched, normalDisplacementsMm(model, mesh, touched), femField,
+                                            choice.contact.toolRadiusMm)
+            : NAN;
 
     const SlopeRingParams& p = calibration.params;
     if (args.flag("json")) {
@@ -77,7 +88,9 @@ int calibrateCommand(const std::vector<std::string>& words) {
         j["slopes_mm_per_n"] = slopes;
         j["spring_stiffness_n_per_mm"] = p.springStiffnessNPerMm;
         j["outside_paper_range"] = calibration.outsidePaperRange;
+        j["reference"] = fem ? "fem" : "punch";
         j["displacement_error"] = error.displacementError;
+        if (fem) j["displacement_error_vs_fem"] = femError;
         j["force_error"] = error.forceError;
         j["notes"] = calibration.notes;
         std::cout << j.dump(2) << "\n";
@@ -91,9 +104,11 @@ int calibrateCommand(const std::vector<std::string>& words) {
             std::cout << std::setw(4) << r << std::setw(11) << std::fixed << std::setprecision(2)
                       << (r == 0 ? 0.0 : calibration.ringRadiiMm[std::size_t(r - 1)]) << std::setw(12)
                       << std::setprecision(4) << p.slopeMagnitudeMmPerN[std::size_t(r)] << "\n";
-        std::cout << "spring k = " << p.springStiffnessNPerMm << " N/mm (= 1/|m1|: the rendered force equals the punch force)\n";
+        std::cout << "spring k = " << p.springStiffnessNPerMm << " N/mm (= 1/|m1|: the rendered force equals the reference force at the same indentation)\n";
         std::cout << "error against the flat punch: displacement " << std::setprecision(3) << error.displacementError
                   << " (RMS/peak over r <= 5a, " << error.verticesCompared << " vertices), force " << error.forceError << "\n";
+        if (fem)
+            std::cout << "error against this mesh's FEM (shape at equal indentation): displacement " << femError << "\n";
         for (const std::string& note : calibration.notes) std::cout << "note: " << note << "\n";
     }
     if (const auto out = args.option("out")) {

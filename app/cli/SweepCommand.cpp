@@ -127,7 +127,7 @@ int sweepCommand(const std::vector<std::string>& words) {
 #ifdef PALPATE_HAVE_CHARTS
     if (const auto png = args.option("png")) {
         std::string error;
-        if (!renderSweepChartPng(result.points, def.contact, *png, &error)) {
+        if (!renderSweepChartPng(result.points, def.contact, *png, &error, 1400, 1500)) {
             std::cerr << "palpate-cli sweep: " << *png << ": " << error << "\n";
             return 1;
         }

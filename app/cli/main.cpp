@@ -24,7 +24,7 @@ void usage(std::ostream& out) {
            "  palpate-cli sweep [--json] [--csv FILE] [--png FILE] [--quick] [--shapes sphere,stomach] [--sizes N,..]\n"
            "                    [--max-rings N] [--no-paper] [--no-others] [--repeats N] [TISSUE]\n"
            "  palpate-cli accuracy --reference punch|hertz [--json] [--quick] [--nu LIST] [--levels LIST]\n"
-           "  palpate-cli calibrate [--mesh FILE] [--rings N] [--vertex V] [--json] [--out PRESET] [--name NAME] [TISSUE]\n"
+           "  palpate-cli calibrate [--mesh FILE] [--rings N] [--vertex V] [--fem] [--json] [--out PRESET] [--name NAME] [TISSUE]\n"
            "      TISSUE: [--preset FILE] [--youngs-kpa E] [--poisson NU] [--tool-radius MM]\n"
            "  palpate-cli --help | --version\n";
 }

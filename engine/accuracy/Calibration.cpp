@@ -1,6 +1,7 @@
 #include "engine/accuracy/Calibration.h"
 
 #include "engine/Rings.h"
+#include "engine/accuracy/SurfaceFill.h"
 
 #include <glm/geometric.hpp>
 
@@ -117,6 +118,25 @@ SlopeCalibration calibrateSlopesFromDisplacements(const TissueMesh& mesh, Vertex
     if (!(m[0] > 0.0)) throw std::invalid_argument("reference displacement of the touched vertex is not into the tissue");
     enforceDecrease(c, "moves as far as the ring inside it in the reference");
     finish(c);
+    return c;
+}
+
+SlopeCalibration calibrateSlopesFromFem(const TissueMesh& mesh, VertexId touched, const ToolContact& contact,
+                                        const SlopeRingParams& base, double indentationMm,
+                                        std::vector<double>* referenceNormalDisplacementMm) {
+    if (const std::string e = validateToolContact(contact); !e.empty()) throw std::invalid_argument(e);
+    if (touched >= mesh.vertexCount()) throw std::invalid_argument("touched vertex " + std::to_string(touched) + " is not in the mesh");
+    const SurfaceIndentation fem = indentSurface(mesh, touched, contact.toolRadiusMm, indentationMm, contact.material);
+    const glm::dvec3 n(mesh.restNormals()[touched]);
+    std::vector<double> normal(mesh.vertexCount());
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) normal[v] = -glm::dot(fem.displacementMm[v], n);
+    SlopeCalibration c = calibrateSlopesFromDisplacements(mesh, touched, normal, fem.reactionForceN, base);
+    std::ostringstream s;
+    s << "FEM reference: " << fem.nodes << " nodes, " << fem.tets << " tets, tissue " << fem.thicknessMm
+      << " mm thick over a rigid core, " << fem.prescribedVertexCount << " vertices under the tool, reaction "
+      << fem.reactionForceN << " N at " << indentationMm << " mm";
+    c.notes.insert(c.notes.begin(), s.str());
+    if (referenceNormalDisplacementMm) *referenceNormalDisplacementMm = std::move(normal);
     return c;
 }
 

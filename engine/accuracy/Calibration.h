@@ -47,4 +47,12 @@ SlopeCalibration calibrateSlopesFromDisplacements(const TissueMesh& mesh, Vertex
                                                   const std::vector<double>& normalDisplacementMm, double forceN,
                                                   const SlopeRingParams& base);
 
+/// Per mesh from the reference FEM (DESIGN §3): the mesh filled with tetrahedra
+/// (engine/accuracy/SurfaceFill.h: tissue over a rigid core), the tool's footprint pressed by
+/// `indentationMm` at `touched`, then calibrateSlopesFromDisplacements on the FEM's surface.
+/// `referenceNormalDisplacementMm` (optional) receives the FEM field for error measurement.
+SlopeCalibration calibrateSlopesFromFem(const TissueMesh& mesh, VertexId touched, const ToolContact& contact,
+                                        const SlopeRingParams& base, double indentationMm = 1.0,
+                                        std::vector<double>* referenceNormalDisplacementMm = nullptr);
+
 }  // namespace palpate

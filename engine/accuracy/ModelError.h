@@ -35,4 +35,14 @@ ModelError measureModelError(DeformationModel& model, const TissueMesh& mesh, Ve
 double displacementErrorAgainstPunch(const TissueMesh& mesh, VertexId touched, const std::vector<double>& normalDisplacementMm,
                                      double toolRadiusMm, double regionInRadii = 5.0, int* verticesCompared = nullptr);
 
+/// The displacement error of `normalDisplacementMm` against any reference field (e.g. the FEM's),
+/// over the same region as displacementErrorAgainstPunch; the peak is the reference's at `touched`.
+double displacementErrorAgainstField(const TissueMesh& mesh, VertexId touched, const std::vector<double>& normalDisplacementMm,
+                                     const std::vector<double>& referenceNormalDisplacementMm, double toolRadiusMm,
+                                     double regionInRadii = 5.0, int* verticesCompared = nullptr);
+
+/// The normal displacement (positive into the tissue, along the touched vertex's rest normal) of a
+/// model's current surface.
+std::vector<double> normalDisplacementsMm(const DeformationModel& model, const TissueMesh& mesh, VertexId touched);
+
 }  // namespace palpate

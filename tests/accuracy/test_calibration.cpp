@@ -307,3 +307,35 @@ TEST(Sweep, OtherModelsGetAPointEachWithTheirForceCalibratedWherePossible) {
                              "radius-of-influence", "ffd", "volumetric-rings", "palpate"})
         EXPECT_EQ(names.count(name), 1u) << name;
 }
+
+TEST(Calibration, FromTheFemFitsTheFemBetterThanThePunchFormulaDoes) {
+    static const auto generated = generateMesh(GeneratedShape::Sphere, 1442);
+    const TissueMesh& mesh = *generated.mesh;
+    const VertexId t = defaultTargetVertex(mesh);
+    ToolContact contact;
+    contact.material = {4.34e-3, 0.45};
+    contact.toolRadiusMm = 5.0;
+    SlopeRingParams base;
+    base.ringCount = 4;
+    std::vector<double> femField;
+    const SlopeCalibration fem = calibrateSlopesFromFem(mesh, t, contact, base, 1.0, &femField);
+    const SlopeCalibration punch = calibrateSlopesFromPunch(mesh, t, contact, base);
+    ASSERT_EQ(femField.size(), mesh.vertexCount());
+    EXPECT_NEAR(femField[t], 1.0, 1e-6);  // the touched vertex is under the tool: prescribed
+    EXPECT_TRUE(validateSlopeRingParams(fem.params).empty());
+    // Same order of compliance as the half-space (the FEM layer sits on a rigid core: stiffer).
+    const double ratio = fem.params.slopeMagnitudeMmPerN[0] / punch.params.slopeMagnitudeMmPerN[0];
+    EXPECT_GT(ratio, 0.5);
+    EXPECT_LT(ratio, 1.2);
+
+    const Octree octree(mesh, OctreeDef{});
+    auto errorAgainstFem = [&](const SlopeRingParams& params) {
+        SlopeRingDeformer model(mesh, octree, params, SlopeRingMethod::Palpate);
+        measureModelError(model, mesh, t, contact);  // presses and settles
+        return displacementErrorAgainstField(mesh, t, normalDisplacementsMm(model, mesh, t), femField, contact.toolRadiusMm);
+    };
+    const double femFit = errorAgainstFem(fem.params);
+    const double punchFit = errorAgainstFem(punch.params);
+    EXPECT_LT(femFit, punchFit);
+    EXPECT_LT(femFit, 0.15);
+}
