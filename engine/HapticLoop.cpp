@@ -189,7 +189,20 @@ void HapticLoop::tick(double nowS, double lateUs) {
     // Without a usable tool position the model gets a non-finite one: no contact, the tissue
     // relaxes, and the force is zero.
     const glm::vec3 tool = ready && !mPaused ? mLastSample.positionMm : glm::vec3(NAN);
-    const TickResult result = mScene->model().step(tool, mPeriodS);
+    TickResult result = mScene->model().step(tool, mPeriodS);
+    // Divergence guard (issue 8, docs/stability.md): a model that left its stable range (NaN,
+    // energy growth, force flipping every tick, an inverted triangle at the tool) renders no force
+    // this tick and goes back to rest; counted and published so the GUI can say what to change.
+    // Allocation-free; positionsMm() writes at most the active rings (slope-ring palpate).
+    if (const DivergenceVerdict verdict = mGuard.check(mScene->mesh(), mScene->model().positionsMm(), result)) {
+        result.forceN = glm::vec3(0.0f);
+        result.contact = false;
+        mScene->model().reset();
+        mGuard.reset();
+        ++mCounters.divergences;
+        mCounters.lastDivergence = verdict.kind;
+        mCounters.lastDivergenceTick = mCounters.ticks;
+    }
 
     SafetyInput in;
     in.nowS = nowS;
@@ -263,6 +276,7 @@ void HapticLoop::applyCommands() {
             case Command::Kind::Scene:
                 retire(mScene.release(), nullptr);
                 mScene.reset(c.scene);
+                mGuard.reset();  // its history was the old scene's
                 if (mRecorder) mRecorder->onCommand({mCounters.ticks + 1, RecordedCommand::Kind::Scene, {}, mScene->id(), nullptr});
                 break;
             case Command::Kind::Device:
@@ -289,6 +303,7 @@ void HapticLoop::pickUpRecorder() {
         // tissue at rest, safety filter re-armed (force held off, then ramped in), no sample yet.
         // Once per recording; the reset is O(vertices) but allocates nothing.
         mScene->model().reset();
+        mGuard.reset();  // a replay starts with a fresh guard too
         mSafety.rearm();
         mHaveSample = false;
         mLastSample = DeviceSample{};

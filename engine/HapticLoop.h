@@ -13,6 +13,7 @@
 #include "engine/SpscQueue.h"
 #include "engine/TripleBuffer.h"
 #include "engine/record/RecorderSink.h"
+#include "engine/stability/DivergenceGuard.h"
 
 #include <atomic>
 #include <memory>
@@ -125,6 +126,7 @@ private:
     std::unique_ptr<HapticScene> mScene;
     std::unique_ptr<HapticDevice> mDevice;
     SafetyFilter mSafety;
+    DivergenceGuard mGuard;  // issue 8: watches each tick's model output (docs/stability.md)
 
     // Haptic-thread state.
     DeviceSample mLastSample;

@@ -1,6 +1,7 @@
 #include "engine/HapticScene.h"
 
 #include "engine/SlopeRingDeformer.h"
+#include "engine/TissuePreset.h"
 
 #include <atomic>
 
@@ -18,6 +19,16 @@ std::unique_ptr<HapticScene> HapticScene::createSlopeRing(TissueMesh mesh, const
     std::unique_ptr<HapticScene> scene(new HapticScene(std::move(mesh), octree));
     scene->mModel = std::make_unique<SlopeRingDeformer>(scene->mMesh, scene->mOctree, params, method);
     return scene;
+}
+
+std::unique_ptr<HapticScene> HapticScene::create(TissueMesh mesh, const ModelDef& model, const OctreeDef& octree) {
+    std::unique_ptr<HapticScene> scene(new HapticScene(std::move(mesh), octree));
+    scene->mModel = makeModel(model, scene->mMesh, scene->mOctree);
+    return scene;
+}
+
+std::unique_ptr<HapticScene> HapticScene::create(TissueMesh mesh, const TissuePreset& preset) {
+    return create(std::move(mesh), presetModelDef(preset), preset.octree);
 }
 
 }  // namespace palpate

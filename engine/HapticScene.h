@@ -7,11 +7,14 @@
 #include "engine/SlopeRingMethod.h"
 #include "engine/SlopeRingParams.h"
 #include "engine/TissueMesh.h"
+#include "engine/models/ModelRegistry.h"
 
 #include <cstdint>
 #include <memory>
 
 namespace palpate {
+
+struct TissuePreset;
 
 class HapticScene {
 public:
@@ -19,6 +22,12 @@ public:
     static std::unique_ptr<HapticScene> createSlopeRing(TissueMesh mesh, const SlopeRingParams& params,
                                                         SlopeRingMethod method = SlopeRingMethod::Palpate,
                                                         const OctreeDef& octree = {});
+    /// A scene of any registry model (docs/models.md); volumetric-rings fills the surface with
+    /// tetrahedra here. Not real-time: call it off the haptic thread. Throws std::invalid_argument
+    /// naming the problem (parameters, octree, a surface the filler refuses).
+    static std::unique_ptr<HapticScene> create(TissueMesh mesh, const ModelDef& model, const OctreeDef& octree = {});
+    /// The preset's model (presetModelDef), parameters and octree.
+    static std::unique_ptr<HapticScene> create(TissueMesh mesh, const TissuePreset& preset);
 
     const TissueMesh& mesh() const { return mMesh; }
     const Octree& octree() const { return mOctree; }

@@ -6,6 +6,7 @@
 #include "device/HapticDevice.h"
 #include "device/SafetyFilter.h"
 #include "engine/TissueMesh.h"
+#include "engine/stability/DivergenceGuard.h"
 
 #include <glm/vec3.hpp>
 
@@ -25,6 +26,11 @@ struct LoopCounters {
     double maxJitterUs = 0.0;
     double achievedRateHz = 0.0;
     bool schedFifo = false;             ///< the thread runs SCHED_FIFO (else it fell back quietly)
+    /// Divergence guard (issue 8): ticks on which the model left its stable range (force zeroed,
+    /// tissue reset), the last one's kind and tick; divergenceAdvice(kind) says what to change.
+    std::uint64_t divergences = 0;
+    DivergenceKind lastDivergence = DivergenceKind::None;
+    std::uint64_t lastDivergenceTick = 0;
 };
 
 struct HapticSnapshot {

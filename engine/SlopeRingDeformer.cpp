@@ -69,6 +69,22 @@ void SlopeRingDeformer::setParams(const SlopeRingParams& params) {
     if (mMethod == SlopeRingMethod::Palpate) releaseActiveSet();
 }
 
+void SlopeRingDeformer::setCompliance(std::vector<float> factors) {
+    if (!factors.empty()) {
+        if (mMethod != SlopeRingMethod::Palpate)
+            throw std::invalid_argument("compliance factors need the palpate method (the paper's methods stay as published)");
+        if (factors.size() != mMesh.vertexCount())
+            throw std::invalid_argument("compliance: " + std::to_string(factors.size()) + " factors for " +
+                                        std::to_string(mMesh.vertexCount()) + " vertices");
+        for (std::size_t v = 0; v < factors.size(); ++v)
+            if (!(factors[v] > 0.0f && factors[v] <= 1.0f))  // also refuses NaN
+                throw std::invalid_argument("compliance[" + std::to_string(v) + "]: " + std::to_string(factors[v]) +
+                                            " is outside (0, 1] (only stiffer inclusions keep the loop-gain bound)");
+    }
+    mCompliance = std::move(factors);
+    if (mMethod == SlopeRingMethod::Palpate) releaseActiveSet();
+}
+
 bool SlopeRingDeformer::applySlopeRingParams(const SlopeRingParams& params) {
     if (mMethod != SlopeRingMethod::Palpate && params.ringCount != mParams.ringCount) return false;
     mParams = params;
@@ -403,15 +419,21 @@ TickResult SlopeRingDeformer::step(const glm::vec3& tool, double dtS) {
     // Contact and the contact force (docs/method.md): d = depth of the tip below the touched
     // vertex's rest position along its rest normal; the model displaces that vertex by |m1| F, so
     // the tip is e = d - |m1| F below it. F <- max(0, (1 - alpha) F + alpha k_c e); contact while F > 0.
+    // A stiffer inclusion scales the touched vertex's slopes by c in (0, 1] (setCompliance): the
+    // tip is d - c |m1| F below it, and the exact solve uses the gain c |m1| k_c (c = 1: unchanged).
+    const float compliance = mCompliance.empty() || touched == kNoVertex ? 1.0f : mCompliance[touched];
     float penetration = 0.0f;
     if (toolValid && touched != kNoVertex) {
         const float depth = glm::dot(mMesh.restPositionsMm()[touched] - tool, mMesh.restNormals()[touched]);
-        penetration = depth + mSignedSlope[0] * mForceN;
+        penetration = depth + mSignedSlope[0] * (compliance * mForceN);
     }
+    const float alpha = compliance == 1.0f || mParams.forceRelaxation > 0.0
+                            ? mAlpha
+                            : float(1.0 / (1.0 + mParams.loopGain() * double(compliance)));
     // Projected onto F >= 0 (the tissue only pushes): a non-expansive step, so the iteration
     // converges wherever its linear part does, alpha (1 + gain) < 2, overshoot or not.
     if (toolValid && touched != kNoVertex)
-        mForceN = std::max(0.0f, (1.0f - mAlpha) * mForceN + mAlpha * (mContactStiffness * penetration));
+        mForceN = std::max(0.0f, (1.0f - alpha) * mForceN + alpha * (mContactStiffness * penetration));
     else
         mForceN = 0.0f;
     const bool contact = mForceN > 0.0f;
@@ -495,7 +517,9 @@ void SlopeRingDeformer::stepPalpate(VertexId touched, bool contact) {
     // contact changes; its positions are a function of the force, written when read (or every
     // tick with eagerPositions); only the relaxing vertices are integrated.
     if (touched != mActiveCentre || contact != mActiveContact) changeActiveSet(touched, contact);
-    mActiveForceN = mForceN;
+    // The rings follow c F (c: the touched vertex's compliance factor); the rendered force stays
+    // k_s |m1| F, the touched spring being stiffer by 1 / c.
+    mActiveForceN = mCompliance.empty() || touched == kNoVertex ? mForceN : mCompliance[touched] * mForceN;
     mActiveDirty = contact;
     if (mEagerPositions) writeActivePositions();
 

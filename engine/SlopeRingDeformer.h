@@ -52,6 +52,13 @@ public:
     /// Palpate: every vertex that may be away from rest (the active rings and those relaxing).
     /// Other methods: empty. Not real-time.
     std::span<const VertexId> displacedVertices() const;
+    /// A stiffer inclusion (engine/scoring's find-the-lump exercises): one factor per vertex in
+    /// (0, 1] that scales every ring slope while that vertex is the touched one, with the return
+    /// spring of the touched vertex stiffened by its inverse, so the rendered force for a given
+    /// depth grows (docs/scoring.md). Empty clears it. Palpate only (the paper's methods stay as
+    /// published). Not real-time; throws std::invalid_argument naming the problem.
+    void setCompliance(std::vector<float> factors);
+    std::span<const float> compliance() const { return mCompliance; }
     /// Palpate search statistics: how often the candidate cache was retaken, and how often the
     /// full octree search was needed.
     std::size_t cacheRefreshes() const { return mCacheRefreshes; }
@@ -89,6 +96,8 @@ private:
     float mTwoZetaOmega = 0.0f;  // 2 zeta omega, 1/s
     double mRelaxDtS = -1.0;     // dt for which the two factors below hold
     float mRelaxDenominatorInv = 1.0f, mRelaxDt = 0.0f;
+
+    std::vector<float> mCompliance;  // per-vertex slope factor (setCompliance); empty: all 1, skipped
 
     mutable std::vector<glm::vec3> mPositions;  // mutable: Palpate writes active rings on demand
     std::vector<glm::vec3> mVelocitiesMmPerS;

@@ -77,7 +77,204 @@ private:
 
 bool isWhole(double x) { return std::floor(x) == x; }
 
+/// A JSON key of a model's section and the params field its validator names.
+struct KeyField {
+    const char* key;
+    const char* field;
+};
+constexpr KeyField kMassSpringKeys[] = {
+    {"vertex_mass_kg", "vertexMassKg"},
+    {"anchor_stiffness_n_per_mm", "anchorStiffnessNPerMm"},
+    {"edge_stiffness_n_per_mm", "edgeStiffnessNPerMm"},
+    {"contact_stiffness_n_per_mm", "contactStiffnessNPerMm"},
+    {"damping_ratio", "dampingRatio"},
+    {"substeps", "substeps"},
+    {"max_substeps", "maxSubsteps"},
+    {"cg_max_iterations", "cgMaxIterations"},
+    {"cg_tolerance", "cgTolerance"},
+    {"local_ring_count", "localRingCount"},
+    {"local_integrator", "localIntegrator"},
+    {"rest_epsilon_mm", "restEpsilonMm"},
+};
+constexpr KeyField kRadiusOfInfluenceKeys[] = {
+    {"radius_mm", "radiusMm"},
+    {"degree", "degree"},
+    {"coefficients", "coefficients"},
+    {"stiffness_n_per_mm", "stiffnessNPerMm"},
+};
+constexpr KeyField kFfdKeys[] = {
+    {"control_points_per_axis", "controlPointsPerAxis"},
+    {"moved_per_axis", "movedPerAxis"},
+    {"margin_fraction", "marginFraction"},
+    {"stiffness_n_per_mm", "stiffnessNPerMm"},
+};
+
+template <std::size_t N>
+std::vector<std::string> keysOf(const KeyField (&table)[N]) {
+    std::vector<std::string> keys;
+    for (const KeyField& k : table) keys.emplace_back(k.key);
+    return keys;
+}
+
+/// Reports a validator's messages at the key of the field each names ("radiusMm = ..." under
+/// "radius_of_influence.radius_mm").
+template <std::size_t N>
+void reportValidation(Reader& r, const std::string& section, const KeyField (&table)[N],
+                      const std::vector<std::string>& problems) {
+    for (const std::string& problem : problems) {
+        std::string path = section;
+        const std::size_t end = problem.find_first_of(" [:");
+        const std::string field = problem.substr(0, end);
+        for (const KeyField& k : table)
+            if (field == k.field) path = section + "." + k.key;
+        r.error(path, problem);
+    }
+}
+
+/// A whole number in [lo, hi] into `out`.
+void wholeNumber(Reader& r, const Json& parent, const std::string& path, const char* key, double lo, double hi, int& out) {
+    r.number(parent, path, key, lo, hi, [&](double v) {
+        if (!isWhole(v)) r.error(Reader::join(path, key), "must be a whole number");
+        else out = int(v);
+    });
+}
+
+void readMassSpring(Reader& r, const Json& s, MassSpringParams& p) {
+    const std::string path = "mass_spring";
+    if (!r.object(s, path, keysOf(kMassSpringKeys))) return;
+    const double big = 1e12;
+    r.number(s, path, "vertex_mass_kg", -big, big, [&](double v) { p.vertexMassKg = v; });
+    r.number(s, path, "anchor_stiffness_n_per_mm", -big, big, [&](double v) { p.anchorStiffnessNPerMm = v; });
+    r.number(s, path, "edge_stiffness_n_per_mm", -big, big, [&](double v) { p.edgeStiffnessNPerMm = v; });
+    r.number(s, path, "contact_stiffness_n_per_mm", -big, big, [&](double v) { p.contactStiffnessNPerMm = v; });
+    r.number(s, path, "damping_ratio", -big, big, [&](double v) { p.dampingRatio = v; });
+    wholeNumber(r, s, path, "substeps", -1e9, 1e9, p.substeps);
+    wholeNumber(r, s, path, "max_substeps", -1e9, 1e9, p.maxSubsteps);
+    wholeNumber(r, s, path, "cg_max_iterations", -1e9, 1e9, p.cgMaxIterations);
+    r.number(s, path, "cg_tolerance", -big, big, [&](double v) { p.cgTolerance = v; });
+    wholeNumber(r, s, path, "local_ring_count", -1e9, 1e9, p.localRingCount);
+    r.number(s, path, "rest_epsilon_mm", -big, big, [&](double v) { p.restEpsilonMm = v; });
+    if (s.contains("local_integrator")) {
+        std::string name;
+        r.text(s, path, "local_integrator", name);
+        if (const auto integrator = parseIntegrator(name)) p.localIntegrator = *integrator;
+        else if (s.at("local_integrator").is_string())
+            r.error(path + ".local_integrator", "unknown integrator '" + name + "' (use symplectic, rk4 or implicit)");
+    }
+}
+
+void readRadiusOfInfluence(Reader& r, const Json& s, RadiusOfInfluenceParams& p) {
+    const std::string path = "radius_of_influence";
+    if (!r.object(s, path, keysOf(kRadiusOfInfluenceKeys))) return;
+    const double big = 1e12;
+    r.number(s, path, "radius_mm", -big, big, [&](double v) { p.radiusMm = v; });
+    r.number(s, path, "stiffness_n_per_mm", -big, big, [&](double v) { p.stiffnessNPerMm = v; });
+    const bool haveDegree = s.contains("degree");
+    wholeNumber(r, s, path, "degree", 2, kMaxProfileDegree, p.degree);
+    if (!s.contains("coefficients")) {
+        // Without coefficients, (1 - rho)^degree.
+        if (haveDegree) p.coefficients = powerProfileCoefficients(p.degree);
+        return;
+    }
+    const Json& a = s.at("coefficients");
+    const std::string key = path + ".coefficients";
+    if (!a.is_array()) {
+        r.error(key, "must be an array of numbers");
+        return;
+    }
+    if (a.size() != std::size_t(p.degree + 1)) {
+        r.error(key, "has " + std::to_string(a.size()) + " values; degree " + std::to_string(p.degree) + " needs " +
+                         std::to_string(p.degree + 1));
+        return;
+    }
+    p.coefficients.fill(0.0);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (!a[i].is_number()) {
+            r.error(key + "[" + std::to_string(i) + "]", "must be a number");
+            continue;
+        }
+        p.coefficients[i] = a[i].get<double>();
+    }
+}
+
+void readFfd(Reader& r, const Json& s, FfdParams& p) {
+    const std::string path = "ffd";
+    if (!r.object(s, path, keysOf(kFfdKeys))) return;
+    wholeNumber(r, s, path, "control_points_per_axis", -1e9, 1e9, p.controlPointsPerAxis);
+    wholeNumber(r, s, path, "moved_per_axis", -1e9, 1e9, p.movedPerAxis);
+    r.number(s, path, "margin_fraction", -1e12, 1e12, [&](double v) { p.marginFraction = v; });
+    r.number(s, path, "stiffness_n_per_mm", -1e12, 1e12, [&](double v) { p.stiffnessNPerMm = v; });
+}
+
+Json massSpringJson(const MassSpringParams& p) {
+    return {{"vertex_mass_kg", p.vertexMassKg},
+            {"anchor_stiffness_n_per_mm", p.anchorStiffnessNPerMm},
+            {"edge_stiffness_n_per_mm", p.edgeStiffnessNPerMm},
+            {"contact_stiffness_n_per_mm", p.contactStiffnessNPerMm},
+            {"damping_ratio", p.dampingRatio},
+            {"substeps", p.substeps},
+            {"max_substeps", p.maxSubsteps},
+            {"cg_max_iterations", p.cgMaxIterations},
+            {"cg_tolerance", p.cgTolerance},
+            {"local_ring_count", p.localRingCount},
+            {"local_integrator", std::string(integratorName(p.localIntegrator))},
+            {"rest_epsilon_mm", p.restEpsilonMm}};
+}
+
+Json radiusOfInfluenceJson(const RadiusOfInfluenceParams& p) {
+    Json coefficients = Json::array();
+    for (int k = 0; k <= std::clamp(p.degree, 0, kMaxProfileDegree); ++k) coefficients.push_back(p.coefficients[std::size_t(k)]);
+    return {{"radius_mm", p.radiusMm},
+            {"degree", p.degree},
+            {"coefficients", coefficients},
+            {"stiffness_n_per_mm", p.stiffnessNPerMm}};
+}
+
+Json ffdJson(const FfdParams& p) {
+    return {{"control_points_per_axis", p.controlPointsPerAxis},
+            {"moved_per_axis", p.movedPerAxis},
+            {"margin_fraction", p.marginFraction},
+            {"stiffness_n_per_mm", p.stiffnessNPerMm}};
+}
+
+bool isMassSpring(ModelKind kind) {
+    return kind == ModelKind::MassSpringSymplectic || kind == ModelKind::MassSpringRk4 ||
+           kind == ModelKind::MassSpringImplicit || kind == ModelKind::MassSpringLocal;
+}
+
 }  // namespace
+
+ModelDef presetModelDef(const TissuePreset& preset) {
+    ModelDef def;
+    def.kind = preset.modelKind;
+    def.slopeRingMethod = preset.method;
+    def.slopeRing = preset.params;
+    def.massSpring = preset.massSpring;
+    def.radiusOfInfluence = preset.radiusOfInfluence;
+    def.ffd = preset.ffd;
+    def.volumetricRings.slopeRing = preset.params;
+    return def;
+}
+
+std::string presetModelName(const TissuePreset& preset) { return modelName(presetModelDef(preset)); }
+
+void setPresetModel(TissuePreset& preset, const ModelDef& def) {
+    preset.modelKind = def.kind;
+    switch (def.kind) {
+        case ModelKind::SlopeRing:
+            preset.method = def.slopeRingMethod;
+            preset.params = def.slopeRing;
+            break;
+        case ModelKind::VolumetricRings: preset.params = def.volumetricRings.slopeRing; break;
+        case ModelKind::RadiusOfInfluence: preset.radiusOfInfluence = def.radiusOfInfluence; break;
+        case ModelKind::Ffd: preset.ffd = def.ffd; break;
+        default: preset.massSpring = def.massSpring; break;
+    }
+}
+
+bool presetUsesSlopeRingParams(const TissuePreset& preset) {
+    return preset.modelKind == ModelKind::SlopeRing || preset.modelKind == ModelKind::VolumetricRings;
+}
 
 PresetLoadResult parseTissuePreset(const std::string& textIn, const std::string& source) {
     PresetLoadResult result;
@@ -90,8 +287,8 @@ PresetLoadResult parseTissuePreset(const std::string& textIn, const std::string&
                                 std::string(e.what()).substr(std::string(e.what()).find(']') + 2));
         return result;
     }
-    if (!r.object(j, "", {"format", "version", "name", "description", "model", "slope_ring", "octree",
-                          "haptic_rate_hz", "tissue"}))
+    if (!r.object(j, "", {"format", "version", "name", "description", "model", "slope_ring", "mass_spring",
+                          "radius_of_influence", "ffd", "octree", "haptic_rate_hz", "tissue"}))
         return result;
 
     std::string format;
@@ -109,8 +306,14 @@ PresetLoadResult parseTissuePreset(const std::string& textIn, const std::string&
     if (j.contains("model")) {
         std::string model;
         r.text(j, "", "model", model);
-        if (const auto m = parseMethod(model)) preset.method = *m;
-        else if (j.at("model").is_string()) r.error("model", "unknown model '" + model + "' (use palpate, proposed, hybrid or previous)");
+        if (const auto def = modelDefForName(model)) {
+            preset.modelKind = def->kind;
+            if (def->kind == ModelKind::SlopeRing) preset.method = def->slopeRingMethod;
+        } else if (j.at("model").is_string()) {
+            std::string names;
+            for (const std::string& n : modelNames()) names += (names.empty() ? "" : ", ") + n;
+            r.error("model", "unknown model '" + model + "' (use one of " + names + ")");
+        }
     }
     r.number(j, "", "haptic_rate_hz", 10, 10000, [&](double v) { preset.hapticRateHz = v; });
 
@@ -151,6 +354,26 @@ PresetLoadResult parseTissuePreset(const std::string& textIn, const std::string&
             if (result.errors.empty())
                 for (const std::string& e : validateSlopeRingParams(p)) r.error("slope_ring", e);
         }
+    }
+    // Each registry model's own section, read whatever the model (a hand-written preset may keep
+    // several) and checked by the model's validator, each message at the key it names.
+    if (j.contains("mass_spring")) {
+        const std::size_t before = result.errors.size();
+        readMassSpring(r, j.at("mass_spring"), preset.massSpring);
+        if (result.errors.size() == before)
+            reportValidation(r, "mass_spring", kMassSpringKeys, validateMassSpringParams(preset.massSpring));
+    }
+    if (j.contains("radius_of_influence")) {
+        const std::size_t before = result.errors.size();
+        readRadiusOfInfluence(r, j.at("radius_of_influence"), preset.radiusOfInfluence);
+        if (result.errors.size() == before)
+            reportValidation(r, "radius_of_influence", kRadiusOfInfluenceKeys,
+                             validateRadiusOfInfluenceParams(preset.radiusOfInfluence));
+    }
+    if (j.contains("ffd")) {
+        const std::size_t before = result.errors.size();
+        readFfd(r, j.at("ffd"), preset.ffd);
+        if (result.errors.size() == before) reportValidation(r, "ffd", kFfdKeys, validateFfdParams(preset.ffd));
     }
     if (j.contains("octree")) {
         const Json& o = j.at("octree");
@@ -198,10 +421,10 @@ std::string tissuePresetToJson(const TissuePreset& preset) {
     Json slopes = Json::array();
     for (int r = 0; r <= p.ringCount; ++r) slopes.push_back(p.slopeMagnitudeMmPerN[std::size_t(r)]);
     Json j{{"format", kFormat},
-           {"version", kTissuePresetVersion},
+           {"version", preset.modelKind == ModelKind::SlopeRing ? 1 : kTissuePresetVersion},
            {"name", preset.name},
            {"description", preset.description},
-           {"model", std::string(methodName(preset.method))},
+           {"model", presetModelName(preset)},
            {"haptic_rate_hz", preset.hapticRateHz},
            {"slope_ring",
             {{"ring_count", p.ringCount},
@@ -213,6 +436,11 @@ std::string tissuePresetToJson(const TissuePreset& preset) {
              {"damping_ratio", p.dampingRatio},
              {"vertex_mass_kg", p.vertexMassKg}}},
            {"octree", {{"max_depth", preset.octree.maxDepth}, {"leaf_capacity", preset.octree.leafCapacity}}}};
+    // Only the section of the model in use (slope_ring always: the slope-ring methods and
+    // volumetric-rings run on it, and the GUI keeps it for a switch back).
+    if (isMassSpring(preset.modelKind)) j["mass_spring"] = massSpringJson(preset.massSpring);
+    if (preset.modelKind == ModelKind::RadiusOfInfluence) j["radius_of_influence"] = radiusOfInfluenceJson(preset.radiusOfInfluence);
+    if (preset.modelKind == ModelKind::Ffd) j["ffd"] = ffdJson(preset.ffd);
     if (preset.tissue)
         j["tissue"] = {{"youngs_modulus_kpa", preset.tissue->youngsModulusKPa},
                        {"poisson_ratio", preset.tissue->poissonRatio},

@@ -1,11 +1,14 @@
 #pragma once
 // Tissue presets: a named, versioned JSON file with everything an instructor tunes (model, slopes,
 // springs, octree, haptic rate). Unknown keys, wrong types and out-of-range values are errors that
-// name the key, so a typo never silently falls back to a default.
+// name the key, so a typo never silently falls back to a default. "model" is any registry name
+// (engine/models/ModelRegistry.h); the registry models' own parameters are in sections named like
+// them ("mass_spring", "radius_of_influence", "ffd"); volumetric-rings takes "slope_ring".
 
 #include "engine/Octree.h"
 #include "engine/SlopeRingMethod.h"
 #include "engine/SlopeRingParams.h"
+#include "engine/models/ModelRegistry.h"
 
 #include <optional>
 #include <string>
@@ -13,7 +16,8 @@
 
 namespace palpate {
 
-inline constexpr int kTissuePresetVersion = 1;
+/// Version 2 adds the registry models; a preset of a slope-ring method is still written as version 1.
+inline constexpr int kTissuePresetVersion = 2;
 
 /// Elastic properties the slopes were derived from, when known, with the source (DESIGN §3):
 /// the Parameters panel and the calibration turn them into slopes for the current mesh.
@@ -27,8 +31,16 @@ struct TissueProperties {
 struct TissuePreset {
     std::string name = "default";
     std::string description;
+    /// Which model runs. ModelKind::SlopeRing: the slope-ring method `method`; any other kind is a
+    /// registry model (ModelDef's kinds), with its parameters below.
+    ModelKind modelKind = ModelKind::SlopeRing;
+    /// The slope-ring method (used when modelKind is SlopeRing).
     SlopeRingMethod method = SlopeRingMethod::Palpate;
+    /// Slope-ring parameters: of the slope-ring methods and of volumetric-rings.
     SlopeRingParams params;
+    MassSpringParams massSpring;            ///< the four mass-spring kinds
+    RadiusOfInfluenceParams radiusOfInfluence;
+    FfdParams ffd;
     OctreeDef octree;
     double hapticRateHz = 1000.0;
     std::optional<TissueProperties> tissue;
@@ -39,6 +51,15 @@ struct PresetLoadResult {
     std::vector<std::string> errors;  ///< each names the source and the key
     std::string error() const { return errors.empty() ? std::string() : errors.front(); }
 };
+
+/// The registry definition of the preset's model (method and slope-ring parameters included).
+ModelDef presetModelDef(const TissuePreset& preset);
+/// The preset's model name (modelNames()'s spelling).
+std::string presetModelName(const TissuePreset& preset);
+/// Sets the preset's model and that model's parameters from `def` (the other models' are kept).
+void setPresetModel(TissuePreset& preset, const ModelDef& def);
+/// Whether the preset's model runs on `params` (slope-ring methods and volumetric-rings).
+bool presetUsesSlopeRingParams(const TissuePreset& preset);
 
 /// Parses preset JSON text; `sourceName` (a path) prefixes every message.
 PresetLoadResult parseTissuePreset(const std::string& text, const std::string& sourceName);

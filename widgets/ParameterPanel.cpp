@@ -42,6 +42,163 @@ namespace {
 constexpr SlopeRingMethod kMethods[] = {SlopeRingMethod::Palpate, SlopeRingMethod::Proposed, SlopeRingMethod::Hybrid,
                                         SlopeRingMethod::Previous};
 
+/// The registry models after the slope-ring methods in the combo, with what each is and its cost class.
+struct RegistryModelText {
+    const char* name;  // modelNames()'s spelling
+    const char* text;
+    const char* tip;
+};
+constexpr RegistryModelText kRegistryModels[] = {
+    {"mass-spring-symplectic", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Mass-spring, symplectic Euler"),
+     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
+                       "Masses on the vertices, edge and anchor springs, penalty contact; explicit symplectic Euler "
+                       "with automatic sub-steps. Cost: every vertex per sub-step, O(n).")},
+    {"mass-spring-rk4", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Mass-spring, RK4"),
+     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
+                       "The mass-spring model with classic Runge-Kutta 4 (four stages per sub-step). Cost: every "
+                       "vertex, four times per sub-step, O(n): over 1 ms from a few thousand vertices.")},
+    {"mass-spring-implicit", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Mass-spring, backward Euler"),
+     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
+                       "The mass-spring model with the implicit backward Euler step (conjugate gradients): "
+                       "unconditionally stable, dissipative. Cost: every vertex per CG iteration, O(n).")},
+    {"mass-spring-local", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Mass-spring, local rings"),
+     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
+                       "The mass-spring model on the touched vertex's rings only (and what still moves); the rest "
+                       "is pinned at rest. Cost: the rings, about the same at every mesh size.")},
+    {"radius-of-influence", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Radius of influence (Basdogan)"),
+     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
+                       "Geometric: every vertex within a radius follows the tool by a polynomial profile of its "
+                       "distance; force k_s × depth. Cost: the vertices within the radius.")},
+    {"ffd", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Free-form deformation (FFD)"),
+     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
+                       "Geometric: the mesh embedded in a Bernstein lattice whose control points near the contact "
+                       "move; force k_s × depth. Cost: every vertex per tick, O(n).")},
+    {"volumetric-rings", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Volumetric slope-rings"),
+     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
+                       "The slope-ring update on rings of a tetrahedral fill of the surface (the paper's future "
+                       "work); uses the slopes and springs below. Cost: the rings of the tet graph.")},
+};
+
+/// The registry models' own parameters, one row each (docs/models.md has their meaning).
+enum class FieldType { Double, Int, Integrator };
+enum FieldFamily : unsigned { kWholeMassSpring = 1, kLocalMassSpring = 2, kRadius = 4, kFfd = 8 };
+struct ModelFieldDef {
+    unsigned families;
+    const char* field;  // the params struct's field, as its validator names it
+    const char* objectName;
+    const char* label;
+    const char* suffix;
+    const char* tip;
+    FieldType type;
+    double lo, hi;
+    int decimals;
+    double step;
+    double (*get)(const TissuePreset&);
+    void (*set)(TissuePreset&, double);
+};
+constexpr unsigned kMassSpring = kWholeMassSpring | kLocalMassSpring;
+#define PALPATE_TR(text) QT_TRANSLATE_NOOP("palpate::ParameterPanel", text)
+const ModelFieldDef kModelFields[] = {
+    {kMassSpring, "vertexMassKg", "massSpringVertexMassSpin", PALPATE_TR("Vertex mass m:"), " kg",
+     PALPATE_TR("Lumped mass per vertex, kg."), FieldType::Double, 0.0, 1.0e3, 7, 0.0005,
+     [](const TissuePreset& p) { return p.massSpring.vertexMassKg; }, [](TissuePreset& p, double v) { p.massSpring.vertexMassKg = v; }},
+    {kMassSpring, "anchorStiffnessNPerMm", "massSpringAnchorSpin", PALPATE_TR("Anchor stiffness k_a:"), " N/mm",
+     PALPATE_TR("Spring from each vertex to its rest position, N/mm: what holds the shape."), FieldType::Double, 0.0, 1.0e6,
+     6, 0.01, [](const TissuePreset& p) { return p.massSpring.anchorStiffnessNPerMm; },
+     [](TissuePreset& p, double v) { p.massSpring.anchorStiffnessNPerMm = v; }},
+    {kMassSpring, "edgeStiffnessNPerMm", "massSpringEdgeSpin", PALPATE_TR("Edge stiffness k_e:"), " N/mm",
+     PALPATE_TR("Spring along each mesh edge, N/mm: spreads the dent to the neighbours."), FieldType::Double, 0.0, 1.0e6, 6,
+     0.05, [](const TissuePreset& p) { return p.massSpring.edgeStiffnessNPerMm; },
+     [](TissuePreset& p, double v) { p.massSpring.edgeStiffnessNPerMm = v; }},
+    {kMassSpring, "contactStiffnessNPerMm", "massSpringContactSpin", PALPATE_TR("Contact stiffness k_c:"), " N/mm",
+     PALPATE_TR("Penalty stiffness between the tool tip and the touched vertex, N/mm."), FieldType::Double, 0.0, 1.0e6, 6,
+     0.1, [](const TissuePreset& p) { return p.massSpring.contactStiffnessNPerMm; },
+     [](TissuePreset& p, double v) { p.massSpring.contactStiffnessNPerMm = v; }},
+    {kMassSpring, "dampingRatio", "massSpringDampingSpin", PALPATE_TR("Damping ratio ζ:"), "",
+     PALPATE_TR("Velocity damping as a fraction of the anchor spring's critical damping (0..100)."), FieldType::Double,
+     0.0, 1000.0, 3, 0.1, [](const TissuePreset& p) { return p.massSpring.dampingRatio; },
+     [](TissuePreset& p, double v) { p.massSpring.dampingRatio = v; }},
+    {kMassSpring, "substeps", "massSpringSubstepsSpin", PALPATE_TR("Sub-steps:"), "",
+     PALPATE_TR("Explicit integrators: sub-steps per tick; 0 = automatic (inside the stability bound)."), FieldType::Int,
+     0, 1.0e6, 0, 1, [](const TissuePreset& p) { return double(p.massSpring.substeps); },
+     [](TissuePreset& p, double v) { p.massSpring.substeps = int(v); }},
+    {kMassSpring, "maxSubsteps", "massSpringMaxSubstepsSpin", PALPATE_TR("Max sub-steps:"), "",
+     PALPATE_TR("Cap on automatic sub-steps (bounded work per tick)."), FieldType::Int, 0, 1.0e6, 0, 1,
+     [](const TissuePreset& p) { return double(p.massSpring.maxSubsteps); },
+     [](TissuePreset& p, double v) { p.massSpring.maxSubsteps = int(v); }},
+    {kMassSpring, "cgMaxIterations", "massSpringCgIterationsSpin", PALPATE_TR("CG iterations (max):"), "",
+     PALPATE_TR("Backward Euler: conjugate-gradient iteration cap."), FieldType::Int, 0, 1.0e6, 0, 1,
+     [](const TissuePreset& p) { return double(p.massSpring.cgMaxIterations); },
+     [](TissuePreset& p, double v) { p.massSpring.cgMaxIterations = int(v); }},
+    {kMassSpring, "cgTolerance", "massSpringCgToleranceSpin", PALPATE_TR("CG tolerance:"), "",
+     PALPATE_TR("Backward Euler: relative residual at which conjugate gradients stop, in (0, 1)."), FieldType::Double, 0.0,
+     1.0, 12, 1e-6, [](const TissuePreset& p) { return p.massSpring.cgTolerance; },
+     [](TissuePreset& p, double v) { p.massSpring.cgTolerance = v; }},
+    {kLocalMassSpring, "localRingCount", "massSpringLocalRingsSpin", PALPATE_TR("Simulated rings:"), "",
+     PALPATE_TR("Rings of the touched vertex that are simulated; everything else is pinned at rest."), FieldType::Int, 0,
+     1000, 0, 1, [](const TissuePreset& p) { return double(p.massSpring.localRingCount); },
+     [](TissuePreset& p, double v) { p.massSpring.localRingCount = int(v); }},
+    {kLocalMassSpring, "localIntegrator", "massSpringLocalIntegratorCombo", PALPATE_TR("Integrator:"), "",
+     PALPATE_TR("The local variant's integrator: symplectic Euler, RK4 or backward Euler."), FieldType::Integrator, 0, 2,
+     0, 1, [](const TissuePreset& p) { return double(int(p.massSpring.localIntegrator)); },
+     [](TissuePreset& p, double v) { p.massSpring.localIntegrator = MassSpringIntegrator(int(v)); }},
+    {kLocalMassSpring, "restEpsilonMm", "massSpringRestEpsilonSpin", PALPATE_TR("Rest tolerance:"), " mm",
+     PALPATE_TR("A vertex outside the rings this close to rest and moving less than this per tick stops being "
+                "simulated, mm."),
+     FieldType::Double, 0.0, 1000.0, 9, 1e-4, [](const TissuePreset& p) { return p.massSpring.restEpsilonMm; },
+     [](TissuePreset& p, double v) { p.massSpring.restEpsilonMm = v; }},
+    {kRadius, "radiusMm", "radiusOfInfluenceRadiusSpin", PALPATE_TR("Radius R:"), " mm",
+     PALPATE_TR("Every vertex within this distance of the touched vertex (in 3D, whatever the edges) moves, mm."),
+     FieldType::Double, 0.0, 1.0e6, 4, 1.0, [](const TissuePreset& p) { return p.radiusOfInfluence.radiusMm; },
+     [](TissuePreset& p, double v) { p.radiusOfInfluence.radiusMm = v; }},
+    {kRadius, "degree", "radiusOfInfluenceDegreeSpin", PALPATE_TR("Profile degree:"), "",
+     PALPATE_TR("The profile is (1 − r/R)^degree (2..8); a preset file's own coefficients are kept until the degree "
+                "changes."),
+     FieldType::Int, 0, 100, 0, 1, [](const TissuePreset& p) { return double(p.radiusOfInfluence.degree); },
+     [](TissuePreset& p, double v) {
+         if (int(v) == p.radiusOfInfluence.degree) return;
+         p.radiusOfInfluence.degree = int(v);
+         p.radiusOfInfluence.coefficients = powerProfileCoefficients(int(v));
+     }},
+    {kRadius, "stiffnessNPerMm", "radiusOfInfluenceStiffnessSpin", PALPATE_TR("Stiffness k_s:"), " N/mm",
+     PALPATE_TR("The rendered force is k_s times the touched vertex's displacement, N/mm."), FieldType::Double, 0.0,
+     1.0e6, 6, 0.01, [](const TissuePreset& p) { return p.radiusOfInfluence.stiffnessNPerMm; },
+     [](TissuePreset& p, double v) { p.radiusOfInfluence.stiffnessNPerMm = v; }},
+    {kFfd, "controlPointsPerAxis", "ffdControlPointsSpin", PALPATE_TR("Control points per axis:"), "",
+     PALPATE_TR("Lattice resolution: control points per axis, Bernstein degree + 1 (2..16)."), FieldType::Int, 0, 1000, 0,
+     1, [](const TissuePreset& p) { return double(p.ffd.controlPointsPerAxis); },
+     [](TissuePreset& p, double v) { p.ffd.controlPointsPerAxis = int(v); }},
+    {kFfd, "movedPerAxis", "ffdMovedSpin", PALPATE_TR("Moved per axis:"), "",
+     PALPATE_TR("Control points moved per axis: the block nearest the contact (1..control points)."), FieldType::Int, 0,
+     1000, 0, 1, [](const TissuePreset& p) { return double(p.ffd.movedPerAxis); },
+     [](TissuePreset& p, double v) { p.ffd.movedPerAxis = int(v); }},
+    {kFfd, "marginFraction", "ffdMarginSpin", PALPATE_TR("Lattice margin:"), "",
+     PALPATE_TR("The lattice is the mesh's bounding box grown by this fraction of its diagonal, in (0, 1]."),
+     FieldType::Double, 0.0, 10.0, 4, 0.01, [](const TissuePreset& p) { return p.ffd.marginFraction; },
+     [](TissuePreset& p, double v) { p.ffd.marginFraction = v; }},
+    {kFfd, "stiffnessNPerMm", "ffdStiffnessSpin", PALPATE_TR("Stiffness k_s:"), " N/mm",
+     PALPATE_TR("The rendered force is k_s times the touched vertex's displacement, N/mm."), FieldType::Double, 0.0,
+     1.0e6, 6, 0.01, [](const TissuePreset& p) { return p.ffd.stiffnessNPerMm; },
+     [](TissuePreset& p, double v) { p.ffd.stiffnessNPerMm = v; }},
+};
+#undef PALPATE_TR
+constexpr int kModelFieldCount = int(std::size(kModelFields));
+
+/// The field families a model shows (0: the slope rows instead).
+unsigned familiesOf(ModelKind kind) {
+    switch (kind) {
+        case ModelKind::MassSpringSymplectic:
+        case ModelKind::MassSpringRk4:
+        case ModelKind::MassSpringImplicit: return kWholeMassSpring;
+        case ModelKind::MassSpringLocal: return kLocalMassSpring;
+        case ModelKind::RadiusOfInfluence: return kRadius;
+        case ModelKind::Ffd: return kFfd;
+        default: return 0;
+    }
+}
+
+QString modelData(std::string_view name) { return QString::fromLatin1(name.data(), qsizetype(name.size())); }
+
 /// A double spin box that shows as many decimals as the value needs ("0.6", "0.0025", "1000"),
 /// so that small slopes and masses keep their precision without a wall of zeros.
 class CompactDoubleSpinBox final : public QDoubleSpinBox {
@@ -140,8 +297,10 @@ void ParameterPanel::buildUi() {
     newForm(mModelGroup, mModelForm, "modelGroup");
     mModelCombo = new QComboBox(mModelGroup);
     mModelCombo->setObjectName(QStringLiteral("modelCombo"));
-    for (SlopeRingMethod method : kMethods)
-        mModelCombo->addItem(QString(), QString::fromLatin1(methodName(method).data(), qsizetype(methodName(method).size())));
+    for (SlopeRingMethod method : kMethods) mModelCombo->addItem(QString(), modelData(methodName(method)));
+    // Then the other registry models, after a separator (the slope-ring methods first).
+    mModelCombo->insertSeparator(mModelCombo->count());
+    for (const RegistryModelText& m : kRegistryModels) mModelCombo->addItem(QString(), modelData(m.name));
     mModelForm->addRow(new QLabel(fields), mModelCombo);
     mRateSpin = doubleSpin(mModelGroup, "hapticRateSpin", 0.0, 100000.0, 1, 50.0);
     mModelForm->addRow(new QLabel(fields), mRateSpin);
@@ -177,6 +336,24 @@ void ParameterPanel::buildUi() {
     mCalibrationLabel->setVisible(false);
     calibrateLayout->addWidget(mCalibrationLabel);
     mTissueForm->addRow(calibrateBox);
+
+    newForm(mModelParamsGroup, mModelParamsForm, "modelParamsGroup");
+    for (const ModelFieldDef& f : kModelFields) {
+        QWidget* field = nullptr;
+        if (f.type == FieldType::Integrator) {
+            auto* combo = new QComboBox(mModelParamsGroup);
+            for (auto i : {MassSpringIntegrator::SymplecticEuler, MassSpringIntegrator::Rk4, MassSpringIntegrator::BackwardEuler})
+                combo->addItem(QString(), int(i));
+            field = combo;
+        } else if (f.type == FieldType::Int) {
+            field = intSpin(mModelParamsGroup, f.objectName, int(f.lo), int(f.hi));
+        } else {
+            field = doubleSpin(mModelParamsGroup, f.objectName, f.lo, f.hi, f.decimals, f.step);
+        }
+        field->setObjectName(QLatin1String(f.objectName));
+        mModelParamsForm->addRow(new QLabel(fields), field);
+        mModelFields.push_back(field);
+    }
 
     newForm(mSlopeGroup, mSlopeForm, "slopeGroup");
     mRingSpin = intSpin(mSlopeGroup, "ringCountSpin", 0, kMaxRings);
@@ -296,6 +473,15 @@ void ParameterPanel::buildUi() {
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, field = field] { onEdited(field); });
     for (int r = 0; r <= kMaxRings; ++r)
         connect(mSlopeSpins[std::size_t(r)], &QDoubleSpinBox::valueChanged, this, [this, r] { onEdited(kSlope0 + r); });
+    for (int i = 0; i < kModelFieldCount; ++i) {
+        QWidget* field = mModelFields[std::size_t(i)];
+        if (auto* spin = qobject_cast<QDoubleSpinBox*>(field))
+            connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i] { onEdited(kModelField0 + i); });
+        else if (auto* ints = qobject_cast<QSpinBox*>(field))
+            connect(ints, &QSpinBox::valueChanged, this, [this, i] { onEdited(kModelField0 + i); });
+        else if (auto* combo = qobject_cast<QComboBox*>(field))
+            connect(combo, &QComboBox::currentIndexChanged, this, [this, i] { onEdited(kModelField0 + i); });
+    }
     connect(mDepthSpin, &QSpinBox::valueChanged, this, [this] { onEdited(kOctreeDepth); });
     connect(mLeafSpin, &QSpinBox::valueChanged, this, [this] { onEdited(kLeafCapacity); });
     connect(mYoungsSpin, &QDoubleSpinBox::valueChanged, this, [this] { onEdited(kYoungsModulus); });
@@ -350,7 +536,13 @@ QString ParameterPanel::fieldName(int field) const {
     case kYoungsModulus: return tr("Young's modulus");
     case kPoissonRatio: return tr("Poisson's ratio");
     case kToolRadius: return tr("tool radius");
-    default: return slopeLabel(field - kSlope0);
+    default:
+        if (field >= kModelField0 && field < kModelField0 + kModelFieldCount) {
+            QString label = tr(kModelFields[field - kModelField0].label);
+            if (label.endsWith(QLatin1Char(':'))) label.chop(1);
+            return label;
+        }
+        return slopeLabel(field - kSlope0);
     }
 }
 
@@ -391,11 +583,34 @@ void ParameterPanel::retranslateUi() {
         tr("The paper's hybrid: its octree searchNode, and the whole model processed every tick."),
         tr("The paper's baseline: linear nearest-vertex search, and the whole model processed every tick.")};
     for (int i = 0; i < mModelCombo->count(); ++i) {
-        mModelCombo->setItemText(i, methodTexts[i]);
-        mModelCombo->setItemData(i, methodTips[i], Qt::ToolTipRole);
+        const QString name = mModelCombo->itemData(i).toString();
+        for (int m = 0; m < int(std::size(kMethods)); ++m)
+            if (name == modelData(methodName(kMethods[m]))) {
+                mModelCombo->setItemText(i, methodTexts[m]);
+                const QString cost = m < 2 ? tr("Cost: the rings of the touched vertex.")
+                                           : tr("Cost: every vertex per tick, O(n).");
+                mModelCombo->setItemData(i, methodTips[m] + QLatin1Char(' ') + cost, Qt::ToolTipRole);
+            }
+        for (const RegistryModelText& m : kRegistryModels)
+            if (name == QLatin1String(m.name)) {
+                mModelCombo->setItemText(i, tr(m.text));
+                mModelCombo->setItemData(i, tr(m.tip), Qt::ToolTipRole);
+            }
     }
-    mModelCombo->setToolTip(tr("Which configuration deforms the tissue: ours, or one of the paper's three "
-                               "(kept side by side for measurement)."));
+    mModelCombo->setToolTip(tr("Which model deforms the tissue: the slope-ring methods (ours and the paper's three), "
+                               "then the literature's other models (docs/models.md)."));
+    for (int i = 0; i < kModelFieldCount; ++i) {
+        const ModelFieldDef& f = kModelFields[i];
+        QWidget* field = mModelFields[std::size_t(i)];
+        setRowLabel(mModelParamsForm, field, tr(f.label));
+        field->setToolTip(tr(f.tip));
+        if (auto* spin = qobject_cast<QDoubleSpinBox*>(field); spin && *f.suffix) spin->setSuffix(tr(f.suffix));
+        if (auto* combo = qobject_cast<QComboBox*>(field)) {
+            combo->setItemText(0, tr("Symplectic Euler"));
+            combo->setItemText(1, tr("RK4"));
+            combo->setItemText(2, tr("Backward Euler (implicit)"));
+        }
+    }
     setRowLabel(mModelForm, mRateSpin, tr("Haptic rate:"));
     mRateSpin->setSuffix(tr(" Hz"));
     mRateSpin->setToolTip(tr("Ticks per second of the haptic loop, %1..%2 Hz (haptics usually runs at 1000 Hz).")
@@ -471,15 +686,16 @@ void ParameterPanel::retranslateUi() {
     // One label column for all groups, as wide as the widest label (the groups line up) ...
     const QList<QLabel*> rowLabels = mScroll->widget()->findChildren<QLabel*>();
     int labelWidth = 0;
-    for (QFormLayout* form : {mModelForm, mTissueForm, mSlopeForm, mSpringForm, mOctreeForm})
+    for (QFormLayout* form : {mModelForm, mModelParamsForm, mTissueForm, mSlopeForm, mSpringForm, mOctreeForm})
         for (QLabel* label : rowLabels)
             if (form->indexOf(label) >= 0) {
                 label->setMinimumWidth(0);
                 labelWidth = std::max(labelWidth, label->sizeHint().width());
             }
-    for (QFormLayout* form : {mModelForm, mTissueForm, mSlopeForm, mSpringForm, mOctreeForm})
+    for (QFormLayout* form : {mModelForm, mModelParamsForm, mTissueForm, mSlopeForm, mSpringForm, mOctreeForm})
         for (QLabel* label : rowLabels)
             if (form->indexOf(label) >= 0) label->setMinimumWidth(labelWidth);
+    updateModelRows();  // the model group's title
     // ... and the fields wide enough for their texts and a vertical scroll bar: nothing is cut off.
     mScroll->setMinimumWidth(mScroll->widget()->sizeHint().width() + style()->pixelMetric(QStyle::PM_ScrollBarExtent) +
                              2 * mScroll->frameWidth() + 4);
@@ -493,7 +709,16 @@ void ParameterPanel::changeEvent(QEvent* event) {
 
 TissuePreset ParameterPanel::presetFromFields() const {
     TissuePreset preset = mShown;  // name, description and tissue properties are not fields
-    if (const auto method = parseMethod(mModelCombo->currentData().toString().toStdString())) preset.method = *method;
+    if (const auto model = modelDefForName(mModelCombo->currentData().toString().toStdString())) {
+        preset.modelKind = model->kind;
+        if (model->kind == ModelKind::SlopeRing) preset.method = model->slopeRingMethod;
+    }
+    for (int i = 0; i < kModelFieldCount; ++i) {
+        QWidget* field = mModelFields[std::size_t(i)];
+        if (auto* spin = qobject_cast<QDoubleSpinBox*>(field)) kModelFields[i].set(preset, spin->value());
+        else if (auto* ints = qobject_cast<QSpinBox*>(field)) kModelFields[i].set(preset, ints->value());
+        else if (auto* combo = qobject_cast<QComboBox*>(field)) kModelFields[i].set(preset, combo->currentData().toInt());
+    }
     preset.hapticRateHz = mRateSpin->value();
     SlopeRingParams& p = preset.params;
     p.ringCount = mRingSpin->value();
@@ -687,8 +912,16 @@ void ParameterPanel::setPreset(const TissuePreset& preset) {
 
 void ParameterPanel::showPreset(const TissuePreset& preset) {
     mShowing = true;
+    const QString model = QString::fromStdString(presetModelName(preset));
     for (int i = 0; i < mModelCombo->count(); ++i)
-        if (parseMethod(mModelCombo->itemData(i).toString().toStdString()) == preset.method) mModelCombo->setCurrentIndex(i);
+        if (mModelCombo->itemData(i).toString() == model) mModelCombo->setCurrentIndex(i);
+    for (int i = 0; i < kModelFieldCount; ++i) {
+        QWidget* field = mModelFields[std::size_t(i)];
+        const double value = kModelFields[i].get(preset);
+        if (auto* spin = qobject_cast<QDoubleSpinBox*>(field)) spin->setValue(value);
+        else if (auto* ints = qobject_cast<QSpinBox*>(field)) ints->setValue(int(value));
+        else if (auto* combo = qobject_cast<QComboBox*>(field)) combo->setCurrentIndex(combo->findData(int(value)));
+    }
     mRateSpin->setValue(preset.hapticRateHz);
     const SlopeRingParams& p = preset.params;
     mRingSpin->setValue(p.ringCount);
@@ -714,12 +947,14 @@ void ParameterPanel::showPreset(const TissuePreset& preset) {
     mTitleLabel->setToolTip(QString::fromStdString(mShown.description));
     syncTissueCombo();
     updateSlopeRows();
+    updateModelRows();
     validate();
 }
 
 void ParameterPanel::onEdited(int field) {
     if (mShowing) return;
     if (field == kRingCount) updateSlopeRows();
+    if (field == kModel) updateModelRows();
     mFileErrors.clear();
     mFileNote.clear();
     const TissuePreset after = presetFromFields();
@@ -738,6 +973,21 @@ void ParameterPanel::onEdited(int field) {
 void ParameterPanel::updateSlopeRows() {
     const int rings = mRingSpin->value();
     for (int r = 0; r <= kMaxRings; ++r) mSlopeForm->setRowVisible(mSlopeSpins[std::size_t(r)], r <= rings);
+}
+
+void ParameterPanel::updateModelRows() {
+    const auto model = modelDefForName(mModelCombo->currentData().toString().toStdString());
+    const ModelKind kind = model ? model->kind : ModelKind::SlopeRing;
+    const unsigned families = familiesOf(kind);
+    for (int i = 0; i < kModelFieldCount; ++i)
+        mModelParamsForm->setRowVisible(mModelFields[std::size_t(i)], (kModelFields[i].families & families) != 0);
+    mModelParamsGroup->setVisible(families != 0);
+    // The slope rows stay for the slope-ring methods and volumetric-rings, which run on them.
+    const bool slopeRing = kind == ModelKind::SlopeRing || kind == ModelKind::VolumetricRings;
+    mSlopeGroup->setVisible(slopeRing);
+    mSpringGroup->setVisible(slopeRing);
+    mStabilityLabel->setVisible(slopeRing);
+    if (model) mModelParamsGroup->setTitle(tr("%1 parameters").arg(mModelCombo->currentText()));
 }
 
 void ParameterPanel::markField(QWidget* field, const char* property, bool on) {
@@ -769,6 +1019,19 @@ void ParameterPanel::validate() {
         problems << QString::fromStdString(message);
     };
     for (const std::string& message : validateSlopeRingParams(p.params)) take(message);
+    // The chosen registry model's own validator; its messages name the params field, which names the row.
+    if (const unsigned families = familiesOf(p.modelKind); families != 0)
+        for (const std::string& message : validateModelDef(presetModelDef(p))) {
+            const std::string field = message.substr(0, message.find_first_of(" [:"));
+            QString label;
+            for (int i = 0; i < kModelFieldCount; ++i)
+                if ((kModelFields[i].families & families) && field == kModelFields[i].field) {
+                    invalid.insert(mModelFields[std::size_t(i)]);
+                    label = fieldName(kModelField0 + i);
+                }
+            problems << (label.isEmpty() ? QString::fromStdString(message)
+                                         : tr("%1: %2").arg(label, QString::fromStdString(message)));
+        }
     if (const std::string message = validateOctreeDef(p.octree); !message.empty()) take(message);
     {
         QList<QWidget*> badTissue;

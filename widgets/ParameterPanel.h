@@ -20,6 +20,7 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <vector>
 
 class QAction;
 class QComboBox;
@@ -135,6 +136,7 @@ private:
         kPoissonRatio,
         kToolRadius,
         kSlope0,  // kSlope0 + r: the slope of ring r (r = 0: the touched vertex)
+        kModelField0 = kSlope0 + kMaxRings + 1,  // kModelField0 + i: the registry models' field i (ParameterPanel.cpp)
     };
 
     void buildUi();
@@ -147,6 +149,8 @@ private:
     void showPreset(const TissuePreset& preset);
     TissuePreset presetFromFields() const;
     void updateSlopeRows();
+    /// Shows the slope rows or the chosen registry model's own fields, by the combo's model.
+    void updateModelRows();
     void validate();
     void markField(QWidget* field, const char* property, bool on);
     /// The tissue the fields hold, or the shown preset's when they still show it (its source kept).
@@ -176,6 +180,11 @@ private:
     QDoubleSpinBox* mToolRadiusSpin = nullptr;
     QPushButton* mCalibrateButton = nullptr;
     QLabel* mCalibrationLabel = nullptr;
+    /// The registry models' own parameters (mass-spring, radius of influence, FFD): one form whose
+    /// rows are those of the chosen model; mModelFields[i] edits field i of the table in the .cpp.
+    QGroupBox* mModelParamsGroup = nullptr;
+    QFormLayout* mModelParamsForm = nullptr;
+    std::vector<QWidget*> mModelFields;
 
     // Layout pieces whose text is translated.
     QScrollArea* mScroll = nullptr;

@@ -13,8 +13,12 @@ int demoCommand(const std::vector<std::string>& words);
 int loopCommand(const std::vector<std::string>& words);
 int runCommand(const std::vector<std::string>& words);
 int recordCommand(const std::vector<std::string>& words);
+/// score: a recorded exercise session's score and breakdown (ScoreCommand.cpp, docs/scoring.md).
+int scoreCommand(const std::vector<std::string>& words);
 int sweepCommand(const std::vector<std::string>& words);
 int calibrateCommand(const std::vector<std::string>& words);
 int accuracyCommand(const std::vector<std::string>& words);
+/// stability: maps of where each model fails, derived against measured (StabilityCommand.cpp, issue 8).
+int stabilityCommand(const std::vector<std::string>& words);
 
 }  // namespace palpate::cli

@@ -8,6 +8,7 @@
 #include "device/SimulatedDevice.h"
 #include "engine/HapticLoop.h"
 #include "engine/SceneTarget.h"
+#include "engine/models/ModelRegistry.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -19,7 +20,7 @@
 namespace palpate::cli {
 
 int demoCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"mesh", "method", "device"});
+    Args args(words, {"json"}, {"mesh", "method", "model", "device"});
     if (!args.ok()) {
         std::cerr << "demo: " << args.error() << "\n";
         return 2;
@@ -33,6 +34,23 @@ int demoCommand(const std::vector<std::string>& words) {
     if (!method) {
         std::cerr << "demo: unknown --method (use previous, hybrid, proposed or palpate)\n";
         return 2;
+    }
+    // --model NAME: any registry model (docs/models.md); --method stays for the slope-ring methods.
+    ModelDef model;
+    model.slopeRingMethod = *method;
+    if (auto name = args.option("model")) {
+        const auto def = modelDefForName(*name);
+        if (!def) {
+            std::string names;
+            for (const std::string& n : modelNames()) names += (names.empty() ? "" : ", ") + n;
+            std::cerr << "demo: unknown --model '" << *name << "' (use one of " << names << ")\n";
+            return 2;
+        }
+        if (args.option("method") && def->kind == ModelKind::SlopeRing && def->slopeRingMethod != *method) {
+            std::cerr << "demo: --model " << *name << " and --method " << methodName(*method) << " disagree\n";
+            return 2;
+        }
+        model = *def;
     }
     auto loaded = TissueMesh::load(meshPath);
     if (!loaded.mesh) {
@@ -57,8 +75,14 @@ int demoCommand(const std::vector<std::string>& words) {
     aimAtDefaultTarget(*device, *loaded.mesh);
 
     HapticLoopDef def;
-    HapticLoop loop(def, HapticScene::createSlopeRing(std::move(*loaded.mesh), SlopeRingParams{}, *method),
-                    std::move(device));
+    std::unique_ptr<HapticScene> scene;
+    try {
+        scene = HapticScene::create(std::move(*loaded.mesh), model);
+    } catch (const std::exception& e) {
+        std::cerr << "demo: " << e.what() << "\n";
+        return 1;
+    }
+    HapticLoop loop(def, std::move(scene), std::move(device));
     const auto ticksToRun = std::uint64_t(std::ceil(durationS / loop.periodS())) + 300;  // then relax
     std::uint64_t contactTicks = 0, touchedChanges = 0;
     double peakForceN = 0.0, peakDisplacementMm = 0.0;
@@ -87,6 +111,7 @@ int demoCommand(const std::vector<std::string>& words) {
                          {"vertices", vertices},
                          {"triangles", triangles},
                          {"method", std::string(methodName(*method))},
+                         {"model", modelName(model)},
                          {"device", uri},
                          {"ticks", report.counters.ticks},
                          {"contact_ticks", contactTicks},
@@ -102,7 +127,7 @@ int demoCommand(const std::vector<std::string>& words) {
                   << "  scene: " << meshPath << " (" << vertices << " vertices, " << triangles << " triangles)\n"
                   << "  device: " << uri << ", " << report.counters.ticks << " ticks at "
                   << 1.0 / loop.periodS() << " Hz of loop time\n"
-                  << "  method: " << methodName(*method) << "\n"
+                  << "  model: " << modelName(model) << "\n"
                   << "  contact on " << contactTicks << " ticks; touched vertex changed " << touchedChanges
                   << " times\n"
                   << "  peak force sent to the device " << peakForceN << " N (after the safety filter), peak "

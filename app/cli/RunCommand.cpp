@@ -3,6 +3,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/DefaultScene.h"
+#include "app/cli/ExerciseRun.h"
 #include "device/DeviceUri.h"
 #include "engine/HapticLoop.h"
 #include "engine/SceneTarget.h"
@@ -40,7 +41,8 @@ std::optional<double> parseNumber(const std::string& text) {
 }  // namespace
 
 int runCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json", "no-fifo"}, {"mesh", "device", "seconds", "record", "rate", "method", "preset", "note"});
+    Args args(words, {"json", "no-fifo"}, {"mesh", "device", "seconds", "record", "rate", "method", "model", "preset", "note",
+                                                   "exercise", "mark-at"});
     if (!args.ok()) {
         std::cerr << "run: " << args.error() << "\n";
         return 2;
@@ -49,12 +51,32 @@ int runCommand(const std::vector<std::string>& words) {
         std::cerr << "run: unexpected argument '" << args.positional().front() << "'\n";
         return 2;
     }
-    const auto seconds = parseNumber(args.option("seconds").value_or("10"));
+    // --exercise FILE: a session of a graded exercise on its mesh, preset and physics, recorded with
+    // the exercise in the note and scored live (ExerciseRun.h, docs/scoring.md).
+    std::unique_ptr<ExerciseRun> exerciseRun;
+    if (auto path = args.option("exercise")) {
+        if (args.option("mesh") || args.option("preset")) {
+            std::cerr << "run: --exercise sets the mesh and the tissue preset; drop --mesh and --preset\n";
+            return 2;
+        }
+        std::string problem;
+        exerciseRun = ExerciseRun::load(*path, args.option("mark-at").value_or(""), problem);
+        if (!exerciseRun) {
+            std::cerr << "run: " << problem << "\n";
+            return 1;
+        }
+    } else if (args.option("mark-at")) {
+        std::cerr << "run: --mark-at needs --exercise\n";
+        return 2;
+    }
+    const auto seconds = parseNumber(args.option("seconds").value_or(
+        exerciseRun ? std::to_string(exerciseRun->exercise().timeLimitS + 1.0) : std::string("10")));
     if (!seconds || *seconds <= 0.0 || *seconds > 86400.0) {
         std::cerr << "run: --seconds must be a number in (0, 86400]\n";
         return 2;
     }
     TissuePreset preset;
+    if (exerciseRun) preset = exerciseRun->preset();
     if (auto path = args.option("preset")) {
         auto loaded = loadTissuePreset(*path);
         if (!loaded.preset) {
@@ -70,6 +92,23 @@ int runCommand(const std::vector<std::string>& words) {
             return 2;
         }
         preset.method = *method;
+        preset.modelKind = ModelKind::SlopeRing;
+    }
+    // --model NAME: any registry model (docs/models.md), with the preset's parameters for it.
+    if (auto name = args.option("model")) {
+        const auto model = modelDefForName(*name);
+        if (!model) {
+            std::string names;
+            for (const std::string& n : modelNames()) names += (names.empty() ? "" : ", ") + n;
+            std::cerr << "run: unknown --model '" << *name << "' (use one of " << names << ")\n";
+            return 2;
+        }
+        if (args.option("method") && (model->kind != ModelKind::SlopeRing || model->slopeRingMethod != preset.method)) {
+            std::cerr << "run: --model " << *name << " and --method " << *args.option("method") << " disagree\n";
+            return 2;
+        }
+        preset.modelKind = model->kind;
+        if (model->kind == ModelKind::SlopeRing) preset.method = model->slopeRingMethod;
     }
     if (auto rate = args.option("rate")) {
         const auto hz = parseNumber(*rate);
@@ -87,7 +126,7 @@ int runCommand(const std::vector<std::string>& words) {
         return 2;
     }
 
-    std::string meshPath = args.option("mesh").value_or(findResource(kDefaultMesh));
+    std::string meshPath = args.option("mesh").value_or(exerciseRun ? exerciseRun->meshPath() : findResource(kDefaultMesh));
     if (meshPath.empty()) {
         std::cerr << "run: the default mesh " << kDefaultMesh << " was not found (set PALPATE_RESOURCES)\n";
         return 1;
@@ -110,15 +149,27 @@ int runCommand(const std::vector<std::string>& words) {
     RecordingHeader header =
         makeRecordingHeader(*loaded.mesh, meshPath, preset, uri, device->spec(), def.safety);
     header.note = args.option("note").value_or("");
+    if (exerciseRun) {
+        header.note = exerciseRun->note(header.note, error);
+        if (!error.empty()) {
+            std::cerr << "run: " << error << "\n";
+            return 1;
+        }
+    }
 
     std::unique_ptr<HapticLoop> loop;
     try {
         loop = std::make_unique<HapticLoop>(
-            def, HapticScene::createSlopeRing(std::move(*loaded.mesh), preset.params, preset.method, preset.octree),
-            std::move(device));
+            def, HapticScene::create(std::move(*loaded.mesh), preset), std::move(device));
     } catch (const std::exception& e) {
         std::cerr << "run: " << e.what() << "\n";
         return 1;
+    }
+    if (exerciseRun) {
+        if (const std::string problem = exerciseRun->applyTo(loop->scene()); !problem.empty()) {
+            std::cerr << "run: " << problem << "\n";
+            return 1;
+        }
     }
     std::unique_ptr<RecordingSession> session;
     const auto recordPath = args.option("record");
@@ -138,8 +189,14 @@ int runCommand(const std::vector<std::string>& words) {
         return 1;
     }
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(*seconds);
-    while (!gInterrupted.load() && std::chrono::steady_clock::now() < end)
+    if (exerciseRun && session) exerciseRun->follow(*recordPath);
+    while (!gInterrupted.load() && std::chrono::steady_clock::now() < end) {
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        if (exerciseRun) {
+            exerciseRun->poll(*loop, session.get());
+            if (exerciseRun->over()) break;  // completed or out of time
+        }
+    }
     loop->stop();
     std::signal(SIGINT, previousInt);
     std::signal(SIGTERM, previousTerm);
@@ -150,11 +207,15 @@ int runCommand(const std::vector<std::string>& words) {
         recordError = session->stop();
         stats = session->stats();
     }
+    std::optional<ScoreReport> score;
+    std::string scoreError;
+    if (exerciseRun) score = exerciseRun->finish(scoreError);
 
     if (args.flag("json")) {
         nlohmann::json j{{"mesh", meshPath},
                          {"device", uri},
                          {"method", std::string(methodName(preset.method))},
+                         {"model", presetModelName(preset)},
                          {"rate_hz", def.rateHz},
                          {"seconds", r.elapsedS},
                          {"ticks", r.counters.ticks},
@@ -175,10 +236,12 @@ int runCommand(const std::vector<std::string>& words) {
                               {"duration_s", stats.elapsedS},
                               {"hash", stats.hash},
                               {"error", recordError}};
+        if (score) j["score"] = nlohmann::json::parse(scoreReportToJson(*score));
+        else if (exerciseRun) j["score_error"] = scoreError;
         std::cout << j.dump(2) << "\n";
     } else {
         std::cout << "session: " << r.counters.ticks << " ticks in " << r.elapsedS << " s at " << def.rateHz
-                  << " Hz (" << methodName(preset.method) << ", " << uri << "), overruns " << r.counters.overruns
+                  << " Hz (" << presetModelName(preset) << ", " << uri << "), overruns " << r.counters.overruns
                   << ", missed deadlines " << r.counters.missedDeadlines << "\n";
         if (session) {
             std::cout << "recorded " << stats.ticks << " ticks (" << stats.elapsedS << " s) to " << *recordPath << ": "
@@ -186,6 +249,8 @@ int runCommand(const std::vector<std::string>& words) {
                       << " chunks, " << stats.events << " events, " << stats.droppedTicks << " ticks dropped\n";
             if (!recordError.empty()) std::cerr << "run: " << recordError << "\n";
         }
+        if (score) std::cout << scoreReportToText(*score);
+        else if (exerciseRun) std::cerr << "run: no score: " << scoreError << "\n";
     }
     return recordError.empty() ? 0 : 1;
 }

@@ -18,14 +18,17 @@ void usage(std::ostream& out) {
            "                   [--spin-fraction F] [--no-fifo] [--json] [--csv FILE]\n"
            "  palpate-cli run [--mesh FILE] [--device URI] [--seconds S] [--record FILE] [--rate HZ]\n"
            "                  [--method M] [--preset FILE] [--note TEXT] [--no-fifo] [--json]\n"
+           "                  [--exercise FILE [--mark-at S,..]]\n"
            "  palpate-cli record info|verify FILE [--json]\n"
            "  palpate-cli record export-csv FILE [--out CSV]\n"
            "  palpate-cli record replay FILE [--mesh FILE] [--json]\n"
+           "  palpate-cli score --recording FILE [--exercise FILE] [--mesh FILE] [--json]\n"
            "  palpate-cli sweep [--json] [--csv FILE] [--png FILE] [--quick] [--shapes sphere,stomach] [--sizes N,..]\n"
            "                    [--max-rings N] [--no-paper] [--no-others] [--repeats N] [TISSUE]\n"
            "  palpate-cli accuracy --reference punch|hertz [--json] [--quick] [--nu LIST] [--levels LIST]\n"
            "  palpate-cli calibrate [--mesh FILE] [--rings N] [--vertex V] [--fem] [--json] [--out PRESET] [--name NAME] [TISSUE]\n"
            "      TISSUE: [--preset FILE] [--youngs-kpa E] [--poisson NU] [--tool-radius MM]\n"
+           "  palpate-cli stability --list | --model NAME [--json] [--csv FILE] [--png FILE] [--quick]\n"
            "  palpate-cli --help | --version\n";
 }
 }  // namespace
@@ -53,7 +56,9 @@ int main(int argc, char** argv) {
         if (command == "loop") return palpate::cli::loopCommand(words);
         if (command == "run") return palpate::cli::runCommand(words);
         if (command == "record") return palpate::cli::recordCommand(words);
+        if (command == "score") return palpate::cli::scoreCommand(words);
         if (command == "sweep") return palpate::cli::sweepCommand(words);
+        if (command == "stability") return palpate::cli::stabilityCommand(words);
         if (command == "calibrate") return palpate::cli::calibrateCommand(words);
         if (command == "accuracy") return palpate::cli::accuracyCommand(words);
     } catch (const std::exception& e) {

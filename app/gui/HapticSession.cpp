@@ -7,9 +7,24 @@
 #include "engine/SceneTarget.h"
 
 #include <exception>
+#include <filesystem>
 #include <limits>
 
 namespace palpate {
+
+namespace {
+
+/// Stepped runs hand the recorder's ring (8192 ticks) this many ticks at most between flushes.
+constexpr int kRecordingFlushTicks = 4096;
+
+/// A recording names its mesh by an absolute path, so that a replay finds it from anywhere.
+std::string absolutePath(const std::string& path) {
+    std::error_code ec;
+    const auto absolute = std::filesystem::absolute(path, ec);
+    return ec ? path : absolute.lexically_normal().string();
+}
+
+}  // namespace
 
 HapticSession::HapticSession(LoopMode mode, const HapticLoopDef& def) : mMode(mode), mDef(def) {}
 
@@ -47,7 +62,7 @@ std::string HapticSession::loadMesh(const std::string& path) {
 
 std::unique_ptr<HapticScene> HapticSession::makeScene(const TissueMesh& mesh, std::string& error) const {
     try {
-        return HapticScene::createSlopeRing(TissueMesh(mesh), mPreset.params, mPreset.method, mPreset.octree);
+        return HapticScene::create(TissueMesh(mesh), mPreset);  // any registry model (docs/models.md)
     } catch (const std::exception& e) {
         error = e.what();
         return nullptr;
@@ -65,6 +80,11 @@ std::string HapticSession::applyPreset(const TissuePreset& preset) {
         // The period is fixed for a loop's life: stop this one and start a new one on the same mesh.
         const SceneRecord base = latest();
         mDef.rateHz = preset.hapticRateHz;
+        if (mRecording) {
+            const std::string problem = stopRecording();
+            mRecordingEndedReason = "the haptic rate changed, which needs a new loop: the recording was stopped" +
+                                    (problem.empty() ? std::string() : " (" + problem + ")");
+        }
         stop();
         mMouse = nullptr;  // deleted with the loop
         mLoop.reset();
@@ -73,14 +93,17 @@ std::string HapticSession::applyPreset(const TissuePreset& preset) {
     }
     const bool needsScene = preset.method != before.method || preset.octree.maxDepth != before.octree.maxDepth ||
                             preset.octree.leafCapacity != before.octree.leafCapacity ||
-                            (preset.method != SlopeRingMethod::Palpate && preset.params.ringCount != before.params.ringCount);
+                            (preset.method != SlopeRingMethod::Palpate && preset.params.ringCount != before.params.ringCount) ||
+                            preset.modelKind != before.modelKind ||
+                            // The registry models other than volumetric-rings take no parameters at a tick boundary.
+                            (!presetUsesSlopeRingParams(preset) && tissuePresetToJson(preset) != tissuePresetToJson(before));
     if (!needsScene) return mLoop->setParams(preset.params);
     const SceneRecord base = latest();
     std::string error;
     auto scene = makeScene(*base.mesh, error);
     if (!scene) return base.path + ": " + error;
     const std::uint64_t sceneId = scene->id();
-    if (std::string problem = mLoop->swapScene(std::move(scene)); !problem.empty()) return problem;
+    if (std::string problem = swapSceneInLoop(std::move(scene), base); !problem.empty()) return problem;
     mPending = SceneRecord{base.mesh, base.path, sceneId};  // drawn from its first snapshot
     return {};
 }
@@ -89,7 +112,7 @@ std::string HapticSession::disconnectDevice() {
     if (!mLoop) return {};
     mMouse = nullptr;  // the loop retires it with this swap
     // A simulated device that was never opened: Disconnected, it reads nothing and renders nothing.
-    return mLoop->swapDevice(std::make_unique<SimulatedDevice>(SimTrajectory::PressHold));
+    return swapDeviceInLoop(std::make_unique<SimulatedDevice>(SimTrajectory::PressHold), "(disconnected)");
 }
 
 std::string HapticSession::setDevice(const std::string& uri) {
@@ -103,7 +126,7 @@ std::string HapticSession::setDevice(const std::string& uri) {
     auto device = openDeviceFor(uri, *latest().mesh, error);
     if (!device) return error;
     auto* mouse = dynamic_cast<MouseDevice*>(device.get());
-    if (std::string problem = mLoop->swapDevice(std::move(device)); !problem.empty()) return problem;
+    if (std::string problem = swapDeviceInLoop(std::move(device), uri); !problem.empty()) return problem;
     mMouse = mouse;
     mHaveTouchTarget = false;
     mDeviceUri = uri;
@@ -174,6 +197,7 @@ std::string HapticSession::handOver(SceneRecord record, std::unique_ptr<HapticSc
     mHaveTouchTarget = false;
     if (!mLoop) {
         mMouse = nullptr;
+        mLoopDevice = RecordedDevice{mDeviceUri, device->spec()};
         try {
             mLoop = std::make_unique<HapticLoop>(mDef, std::move(scene), std::move(device));
         } catch (const std::exception& e) {
@@ -190,9 +214,9 @@ std::string HapticSession::handOver(SceneRecord record, std::unique_ptr<HapticSc
     }
     // The device first: switching it re-arms the safety filter, so whatever the new scene would
     // make of the old device's last position for a tick never reaches a hand.
-    if (std::string problem = mLoop->swapDevice(std::move(device)); !problem.empty()) return problem;
+    if (std::string problem = swapDeviceInLoop(std::move(device), mDeviceUri); !problem.empty()) return problem;
     mMouse = mouse;
-    if (std::string problem = mLoop->swapScene(std::move(scene)); !problem.empty()) return problem;
+    if (std::string problem = swapSceneInLoop(std::move(scene), record); !problem.empty()) return problem;
     // Drawn from the first snapshot that carries this scene's id (observe()).
     mPending = std::move(record);
     return {};
@@ -209,7 +233,14 @@ void HapticSession::setPaused(bool paused) {
 
 void HapticSession::step(int ticks) {
     if (!mLoop || mLoop->running()) return;
-    for (int i = 0; i < ticks; ++i) mLoop->stepOnce();
+    for (int i = 0; i < ticks; ++i) {
+        mLoop->stepOnce();
+        // The writer drains the ring only every 25 ms: stepping runs faster, so hand it over now and then.
+        if (mRecording && ++mStepsSinceFlush >= kRecordingFlushTicks) {
+            mRecording->flush();
+            mStepsSinceFlush = 0;
+        }
+    }
 }
 
 HapticSession::Observation HapticSession::observe() {
@@ -249,14 +280,58 @@ HapticSession::Observation HapticSession::observe() {
     return result;
 }
 
+std::string HapticSession::loopModelName() const {
+    if (!mLoop || mLoop->running()) return {};
+    return mLoop->scene().model().name();
+}
+
 void HapticSession::collectRetired() {
     if (mLoop) mLoop->collectRetired();
 }
 
 void HapticSession::stop() {
+    stopRecording();  // before the loop stops: the file gets its end chunk while the loop still exists
     if (!mLoop) return;
     mLoop->stop();
     mLoop->collectRetired();
+}
+
+std::string HapticSession::startRecording(const std::string& path, const std::string& note) {
+    if (mRecording) return "already recording to " + mRecording->path();
+    if (!mLoop) return "no mesh is loaded: there is no session to record";
+    // The header must describe the scene the loop runs when the recorder attaches; a switch still
+    // on its way could land on either side of that tick.
+    if (mPending.mesh) return "a new scene is still on its way to the haptic loop; try again in a moment";
+    RecordingHeader header = makeRecordingHeader(*mDrawn.mesh, absolutePath(mDrawn.path), mPreset, mLoopDevice.uri,
+                                                 mLoopDevice.spec, mDef.safety);
+    header.note = note;
+    std::string error;
+    mRecording = RecordingSession::start(*mLoop, path, header, error);
+    if (!mRecording) return error.empty() ? path + ": the recording could not be started" : error;
+    mRecordingEndedReason.clear();
+    mStepsSinceFlush = 0;
+    return {};
+}
+
+std::string HapticSession::stopRecording() {
+    if (!mRecording) return {};
+    std::string problem = mRecording->stop();
+    mLastRecordingStats = mRecording->stats();
+    mRecording.reset();
+    return problem;
+}
+
+std::string HapticSession::swapSceneInLoop(std::unique_ptr<HapticScene> scene, const SceneRecord& record) {
+    if (!mRecording) return mLoop->swapScene(std::move(scene));
+    return mRecording->swapScene(std::move(scene), describeScene(*record.mesh, absolutePath(record.path), mPreset));
+}
+
+std::string HapticSession::swapDeviceInLoop(std::unique_ptr<HapticDevice> device, const std::string& uri) {
+    RecordedDevice description{uri, device->spec()};
+    std::string problem = mRecording ? mRecording->swapDevice(std::move(device), description)
+                                     : mLoop->swapDevice(std::move(device));
+    if (problem.empty()) mLoopDevice = std::move(description);
+    return problem;
 }
 
 }  // namespace palpate

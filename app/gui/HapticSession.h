@@ -9,12 +9,14 @@
 #include "engine/HapticLoop.h"
 #include "engine/TissuePreset.h"
 #include "engine/TissueMesh.h"
+#include "engine/record/RecordingSession.h"
 
 #include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace palpate {
 
@@ -75,7 +77,8 @@ public:
     /// the URI is only checked and remembered. "" or an error naming the URI; the old device stays.
     std::string setDevice(const std::string& uri);
     /// Makes `preset` (already validated) the parameters of every scene from now on. The running
-    /// scene gets them at a tick boundary when the model can take them as they are; a new model,
+    /// scene gets them at a tick boundary when the model can take them as they are; a new model (or
+    /// new parameters of a registry model that takes no slope-ring parameters),
     /// ring count of the paper's methods or octree means a new scene of the same mesh; a new
     /// haptic rate means a new loop. "" or why not.
     std::string applyPreset(const TissuePreset& preset);
@@ -109,8 +112,26 @@ public:
     Observation observe();
     /// Deletes the scenes and devices the loop has let go of (call periodically).
     void collectRetired();
-    /// Stops and joins the haptic thread (window close). Idempotent.
+    /// Stops the recording (if any) and joins the haptic thread (window close). Idempotent.
     void stop();
+
+    // --- session recording (docs/recording.md): the GUI's Recorder dock ---
+    /// Records the loop into `path` (created). The recorder attaches at the next tick, which
+    /// restarts the session state (tissue at rest, safety filter re-armed: the force ramps in
+    /// again) so that the file replays from its header alone. From here on scene and device swaps
+    /// go through the recording so that the file describes them. "" or why not (no mesh, a scene
+    /// switch still on its way to the loop, the file cannot be created: the message names it).
+    std::string startRecording(const std::string& path, const std::string& note = {});
+    /// Detaches, writes the end chunk, syncs and closes. "" or the first write error. Idempotent.
+    std::string stopRecording();
+    bool recording() const { return mRecording != nullptr; }
+    /// The running recording (mark, stats, path); null when none.
+    RecordingSession* recordingSession() const { return mRecording.get(); }
+    /// Figures of the last recording as it was closed (the dock shows them after Stop).
+    const RecordingStats& lastRecordingStats() const { return mLastRecordingStats; }
+    /// Why the last recording ended without stopRecording ("" if it did not): a new haptic rate
+    /// needs a new loop, which a recording cannot follow. Cleared by the call.
+    std::string takeRecordingEndedReason() { return std::exchange(mRecordingEndedReason, {}); }
 
     LoopMode mode() const { return mMode; }
     bool hasLoop() const { return mLoop != nullptr; }
@@ -129,6 +150,9 @@ public:
     /// Snapshots applied so far (new publishCount seen).
     std::uint64_t snapshotsObserved() const { return mSnapshotsObserved; }
     double periodS() const { return 1.0 / mDef.rateHz; }
+    /// The name of the model the loop runs now (DeformationModel::name()); "" before the first mesh
+    /// or while the thread runs (the scene is the haptic thread's then). For stepped runs and tests.
+    std::string loopModelName() const;
 
 private:
     TissuePreset mPreset;
@@ -147,6 +171,10 @@ private:
     glm::vec3 awayPointMm(const TissueMesh& mesh, const glm::vec3* nearMm) const;
     std::unique_ptr<HapticDevice> openDeviceFor(const std::string& uri, const TissueMesh& mesh, std::string& error);
     std::string handOver(SceneRecord record, std::unique_ptr<HapticScene> scene, std::unique_ptr<HapticDevice> device);
+    /// mLoop->swapScene, through the recording while one runs (the file must describe the scene).
+    std::string swapSceneInLoop(std::unique_ptr<HapticScene> scene, const SceneRecord& record);
+    /// mLoop->swapDevice, through the recording while one runs; remembers what the loop got.
+    std::string swapDeviceInLoop(std::unique_ptr<HapticDevice> device, const std::string& uri);
 
     LoopMode mMode;
     HapticLoopDef mDef;
@@ -163,6 +191,12 @@ private:
     SnapshotObserver mObserver;
     ObservedLoop mObserved;
     std::uint64_t mSnapshotsObserved = 0;
+    /// The device the loop got last (URI and spec): a recording's header starts with it.
+    RecordedDevice mLoopDevice;
+    std::unique_ptr<RecordingSession> mRecording;  // stopped before the loop goes (stop(), applyPreset)
+    RecordingStats mLastRecordingStats;
+    std::string mRecordingEndedReason;
+    int mStepsSinceFlush = 0;  // stepped ticks the recorder's writer has not been asked to take yet
 };
 
 }  // namespace palpate

@@ -7,11 +7,14 @@
 #include "widgets/ChartsPanel.h"
 #include "widgets/DevicePanel.h"
 #include "widgets/ParameterPanel.h"
+#include "widgets/RecorderPanel.h"
+#include "widgets/RecordingTimeline.h"
 
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -25,6 +28,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QStatusBar>
+#include <QThread>
 
 #include <glm/geometric.hpp>
 
@@ -99,6 +103,7 @@ MainWindow::~MainWindow() { shutDown(); }
 void MainWindow::shutDown() {
     mFrameTimer.stop();
     mStatusTimer.stop();
+    if (mSession->recording()) stopRecording();  // the file gets its end chunk and is closed cleanly
     mSession->stop();  // joins the haptic thread: from here on nothing runs behind our back
 }
 
@@ -164,6 +169,7 @@ void MainWindow::createDocks() {
     // first shown; without it the chart says how to make one.
     mChartsPanel->setDefaultCsv(QString::fromStdString(cli::findResource("../docs/bench/sweep.csv")));
     updateChartsConfiguration();
+    createRecorderDock();
     mPanelSnapshot = std::make_unique<HapticSnapshot>();
 }
 
@@ -300,6 +306,8 @@ void MainWindow::createMenus() {
     open->setShortcut(QKeySequence::Open);
     mRecentMenu = file->addMenu(tr("Open &Recent"));
     rebuildRecentMenu();
+    file->addAction(tr("Open Recor&ding…"), this, &MainWindow::openRecordingDialog)
+        ->setStatusTip(tr("Play a session recording back (the live session pauses meanwhile)"));
     file->addSeparator();
     QAction* openPreset = mParameterPanel->openPresetAction();
     openPreset->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
@@ -337,6 +345,7 @@ void MainWindow::createMenus() {
     view->addAction(mDeviceDock->toggleViewAction());
     view->addAction(mStatusDock->toggleViewAction());
     view->addAction(mChartsDock->toggleViewAction());
+    view->addAction(mRecorderDock->toggleViewAction());
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     mPlayAction = simulation->addAction(tr("&Pause"), QKeySequence(Qt::Key_Space), this,
@@ -355,6 +364,19 @@ void MainWindow::createMenus() {
                                   "depth; right-drag orbits, middle-drag pans, Shift+wheel zooms"));
     mTouchAction->setChecked(isMouseUri(mSession->deviceUri()));
     mViewport->setTouchMode(mTouchAction->isChecked());
+
+    simulation->addSeparator();
+    mRecordAction = simulation->addAction(tr("Re&cord"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R), this,
+                                          [this](bool on) {
+                                              if (on) startRecording();
+                                              else stopRecording();
+                                          });
+    mRecordAction->setCheckable(true);
+    mRecordAction->setStatusTip(tr("Record the live session to a new file (again: stop). Starting resets the tissue "
+                                   "to rest and the force ramps in again"));
+    mMarkAction = simulation->addAction(tr("Add &Mark"), QKeySequence(Qt::Key_M), this, [this] { addRecordingMark(); });
+    mMarkAction->setStatusTip(tr("Mark the current moment of the recording (the Recorder dock's text, if any)"));
+    mMarkAction->setEnabled(false);
 
     QMenu* devices = simulation->addMenu(tr("&Device"));
     mDeviceGroup = new QActionGroup(this);
@@ -397,6 +419,8 @@ void MainWindow::createStatusBar() {
     mDeviceLabel = addStatusField(bar, "deviceStatus", tr("The device URI and its state"));
     mContactLabel = addStatusField(bar, "contactStatus", tr("The tool is pressing the tissue"));
     mForceLabel = addStatusField(bar, "forceStatus", tr("Force sent to the device (after the safety filter)"));
+    mRecordingLabel = addStatusField(bar, "recordingStatusField", tr("The session is being recorded, or a recording is played back"));
+    mRecordingLabel->hide();
 }
 
 void MainWindow::checkCurrentDevice() {
@@ -475,11 +499,13 @@ void MainWindow::observeFrame() { present(mSession->observe()); }
 
 void MainWindow::present(HapticSession::Observation observation) {
     if (observation == HapticSession::Observation::Nothing) return;
+    if (mPlayback) return;  // the viewport shows the recording; backToLive() draws the live state again
     if (observation == HapticSession::Observation::SceneSwitched) showDrawnMesh();
     mViewport->setSnapshot(mSession->view());  // schedules the repaint
 }
 
 void MainWindow::showDrawnMesh() {
+    if (mPlayback) return;  // the viewport shows the recording; backToLive() comes back here
     const auto& mesh = mSession->drawnMesh();
     if (!mesh || mesh == mShownMesh) return;  // a restart keeps the mesh: keep the camera too
     mShownMesh = mesh;
@@ -510,6 +536,7 @@ void MainWindow::measureRates() {
 
 void MainWindow::showStatus() {
     updateDocks();
+    updateRecorder();
     const QString renderer = rendererName(mViewport->kind());
     const auto& mesh = mSession->drawnMesh();
     if (!mesh) {
@@ -562,6 +589,186 @@ void MainWindow::openMeshDialog() {
     const QString error = loadMesh(path);
     // The error names the file and every problem found.
     if (!error.isEmpty()) QMessageBox::warning(this, tr("Cannot open mesh"), error);
+}
+
+void MainWindow::createRecorderDock() {
+    mRecorderPanel = new RecorderPanel(this);
+    mRecorderDock = new QDockWidget(tr("Recorder"), this);
+    mRecorderDock->setObjectName(QStringLiteral("recorderDock"));
+    mRecorderDock->setWidget(mRecorderPanel);
+    // Under the viewport, room for the timeline; the right column keeps its whole height.
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    addDockWidget(Qt::BottomDockWidgetArea, mRecorderDock);
+    connect(mRecorderPanel, &RecorderPanel::recordRequested, this, [this] { startRecording(); });
+    connect(mRecorderPanel, &RecorderPanel::stopRequested, this, [this] { stopRecording(); });
+    connect(mRecorderPanel, &RecorderPanel::markRequested, this, [this](const QString& text) { addRecordingMark(text); });
+    connect(mRecorderPanel, &RecorderPanel::playbackStarted, this, &MainWindow::enterPlayback);
+    connect(mRecorderPanel, &RecorderPanel::playbackMeshChanged, this, [this](const TissueMesh& mesh) {
+        if (mPlayback) mViewport->setMesh(mesh);
+    });
+    connect(mRecorderPanel, &RecorderPanel::playbackFrame, this, [this](const SceneSnapshot& frame) {
+        if (mPlayback) mViewport->setSnapshot(frame);
+    });
+    connect(mRecorderPanel, &RecorderPanel::backToLiveRequested, this, &MainWindow::backToLive);
+    connect(mRecorderPanel, &RecorderPanel::openFailed, this, [this](const QString& error) {
+        mRecorderDock->show();
+        mRecorderDock->raise();
+        statusBar()->showMessage(error, 15000);
+    });
+}
+
+QString MainWindow::startRecording() {
+    QString error;
+    if (mSession->recording()) return {};
+    if (mPlayback) {
+        error = tr("Go back to the live session before recording");
+    } else if (!mSession->hasLoop()) {
+        error = tr("Load a mesh before recording: there is no session to record");
+    } else {
+        const QString path = mRecorderPanel->newRecordingPath(&error);
+        if (!path.isEmpty()) {
+            // A scene just handed to the running loop shows up within a tick or two: wait for it
+            // (bounded), so that the header describes the scene the recorder starts on.
+            QElapsedTimer waited;
+            waited.start();
+            while (mSession->threadRunning() && mSession->sceneSwitchPending() && waited.elapsed() < 250) {
+                present(mSession->observe());
+                QThread::msleep(2);
+            }
+            error = QString::fromStdString(mSession->startRecording(path.toStdString()));
+            if (error.isEmpty()) {
+                mRecorderPanel->setRecordingStarted(path);
+                statusBar()->showMessage(tr("Recording to %1").arg(QDir::toNativeSeparators(path)), 5000);
+            }
+        }
+    }
+    if (!error.isEmpty()) showRecordingError(tr("Cannot record: %1").arg(error));
+    updateRecorder();
+    return error;
+}
+
+QString MainWindow::stopRecording() {
+    if (!mSession->recording()) {
+        if (mRecordAction) mRecordAction->setChecked(false);
+        return {};
+    }
+    const QString path = QString::fromStdString(mSession->recordingSession()->path());
+    const QString error = QString::fromStdString(mSession->stopRecording());
+    mRecorderPanel->setRecordingStopped(error.isEmpty() ? QString() : tr("The recording failed: %1").arg(error));
+    mRecorderPanel->showRecordingStats(mSession->lastRecordingStats());
+    if (error.isEmpty())
+        statusBar()->showMessage(tr("Recording saved: %1").arg(QDir::toNativeSeparators(path)), 8000);
+    else
+        statusBar()->showMessage(tr("The recording failed: %1").arg(error), 15000);
+    updateRecorder();
+    return error;
+}
+
+bool MainWindow::addRecordingMark(const QString& text) {
+    RecordingSession* recording = mSession->recordingSession();
+    if (!recording) return false;
+    const QString mark = text.isEmpty() ? mRecorderPanel->nextMarkText() : text;
+    recording->mark(mark.toStdString());
+    mRecorderPanel->noteMarkAdded(mark);
+    statusBar()->showMessage(tr("Mark added: %1").arg(mark), 3000);
+    return true;
+}
+
+void MainWindow::showRecordingError(const QString& message) {
+    mRecorderPanel->showRecordingError(message);
+    mRecorderDock->show();
+    mRecorderDock->raise();
+    statusBar()->showMessage(message, 15000);
+}
+
+void MainWindow::updateRecorder() {
+    if (!mRecorderPanel) return;
+    if (mRecorderPanel->isRecording() && !mSession->recording()) {
+        // It ended without Stop: a new haptic rate made a new loop.
+        const QString why = QString::fromStdString(mSession->takeRecordingEndedReason());
+        mRecorderPanel->setRecordingStopped(QString());
+        if (!why.isEmpty()) showRecordingError(why);
+        mRecorderPanel->showRecordingStats(mSession->lastRecordingStats());
+    }
+    if (RecordingSession* recording = mSession->recordingSession()) {
+        const RecordingStats stats = recording->stats();
+        mRecorderPanel->showRecordingStats(stats);
+        if (!stats.error.empty()) {
+            // A write error (disk full, removed drive): stop safely, keep what was written.
+            const QString path = QString::fromStdString(recording->path());
+            const QString error = QString::fromStdString(stats.error);
+            mSession->stopRecording();
+            mRecorderPanel->setRecordingStopped(QString());
+            showRecordingError(tr("Recording stopped: %1 (%2 keeps what was written before)").arg(error, path));
+            mRecorderPanel->showRecordingStats(mSession->lastRecordingStats());
+        }
+    }
+    const bool recording = mSession->recording();
+    if (mRecordAction) {
+        mRecordAction->setChecked(recording);
+        mRecordAction->setEnabled(!mPlayback);
+    }
+    if (mMarkAction) mMarkAction->setEnabled(recording);
+    mRecorderPanel->setRecordingAllowed(!mPlayback);
+    if (recording) {
+        mRecordingLabel->setText(
+            tr("● REC %1").arg(RecordingTimeline::formatTime(mSession->recordingSession()->stats().elapsedS)));
+        mRecordingLabel->setStyleSheet(QStringLiteral("color: #c62828; font-weight: bold;"));
+        mRecordingLabel->show();
+    } else if (mPlayback) {
+        mRecordingLabel->setText(tr("▶ playback"));
+        mRecordingLabel->setStyleSheet(QString());
+        mRecordingLabel->show();
+    } else {
+        mRecordingLabel->hide();
+    }
+}
+
+void MainWindow::openRecordingDialog() {
+    mRecorderDock->show();
+    mRecorderDock->raise();
+    mRecorderPanel->chooseRecording();
+}
+
+void MainWindow::openRecording(const QString& path) {
+    mRecorderDock->show();
+    mRecorderDock->raise();
+    if (!mRecorderPanel->openRecording(path))
+        statusBar()->showMessage(tr("A recording is still being opened; try again when it is done"), 5000);
+}
+
+void MainWindow::enterPlayback(const QString& path) {
+    if (!mPlayback) {
+        if (mSession->recording()) {
+            stopRecording();
+            statusBar()->showMessage(tr("Recording stopped to play %1 back").arg(QFileInfo(path).fileName()), 8000);
+        }
+        mPlayingBeforePlayback = isPlaying();
+        mTouchBeforePlayback = touchMode();
+        setPlaying(false);  // the live session waits: the tissue relaxes and the force is zero
+        setTouchMode(false);
+        mPlayback = true;
+    }
+    mPlayAction->setEnabled(false);  // Space belongs to the recording now (on the dock's timeline)
+    mTouchAction->setEnabled(false);
+    mShownMesh.reset();  // backToLive() draws the live mesh again
+    setWindowTitle(tr("Palpate - playing %1").arg(QFileInfo(path).fileName()));
+    updateRecorder();
+}
+
+void MainWindow::backToLive() {
+    if (!mPlayback) return;
+    mRecorderPanel->closePlayback();
+    mPlayback = false;
+    mPlayAction->setEnabled(true);
+    mTouchAction->setEnabled(true);
+    setPlaying(mPlayingBeforePlayback);
+    setTouchMode(mTouchBeforePlayback && mSession->touchAvailable());
+    showDrawnMesh();
+    mViewport->setSnapshot(mSession->view());
+    if (!mSession->drawnMesh()) mViewport->clearMesh();
+    updateRecorder();
+    showStatus();
 }
 
 }  // namespace palpate

@@ -27,6 +27,7 @@ namespace palpate {
 class ChartsPanel;
 class DevicePanel;
 class ParameterPanel;
+class RecorderPanel;
 struct HapticSnapshot;
 struct TissuePreset;
 
@@ -62,6 +63,23 @@ public:
     DevicePanel* devicePanel() const { return mDevicePanel; }
     /// The Charts dock's content (speed against accuracy, the applied configuration highlighted).
     ChartsPanel* chartsPanel() const { return mChartsPanel; }
+    /// The Recorder dock's content: recording the live session, playing recordings back.
+    RecorderPanel* recorderPanel() const { return mRecorderPanel; }
+    /// Records the live session into a new timestamped file in the recorder's folder (the dock's
+    /// Record, Simulation > Record). "" or why not, also shown in the dock and the status bar.
+    QString startRecording();
+    /// Stops recording and closes the file cleanly. "" or the write error (shown as above).
+    QString stopRecording();
+    bool isRecording() const { return mSession->recording(); }
+    /// Adds a mark (the dock's text, else "Mark N") at the recording's current tick; false when not recording.
+    bool addRecordingMark(const QString& text = {});
+    /// Opens a recording for playback (checked off the GUI thread). Once it opened, the live
+    /// session pauses and the viewport shows the replay; garbage leaves the live session alone.
+    void openRecording(const QString& path);
+    /// Playing a recording back (the viewport shows it; the live session is paused).
+    bool inPlayback() const { return mPlayback; }
+    /// Leaves playback: the viewport shows the live session again, which runs as before.
+    void backToLive();
     /// Recent mesh files, newest first (kept in QSettings).
     QStringList recentFiles() const;
     /// Play/Pause: resumes or pauses the loop (paused, the tissue relaxes and the force is zero).
@@ -100,6 +118,7 @@ protected:
 
 private slots:
     void openMeshDialog();
+    void openRecordingDialog();
     void observeFrame();
     void measureRates();
 
@@ -120,6 +139,11 @@ private:
     void showStatus();
     void checkCurrentDevice();
     void shutDown();
+    void createRecorderDock();
+    /// The recording's figures to the dock and the status bar; stops it on a write error.
+    void updateRecorder();
+    void showRecordingError(const QString& message);
+    void enterPlayback(const QString& path);
 
     Viewport* mViewport = nullptr;  // owned by Qt as the central widget
     QString mRendererReason;
@@ -162,6 +186,14 @@ private:
     ChartsPanel* mChartsPanel = nullptr;
     QDockWidget* mChartsDock = nullptr;
     QMenu* mRecentMenu = nullptr;
+    RecorderPanel* mRecorderPanel = nullptr;
+    QDockWidget* mRecorderDock = nullptr;
+    QAction* mRecordAction = nullptr;
+    QAction* mMarkAction = nullptr;
+    QLabel* mRecordingLabel = nullptr;   // status bar: REC and its time, or the recording played back
+    bool mPlayback = false;
+    bool mPlayingBeforePlayback = true;  // the live session's state to go back to
+    bool mTouchBeforePlayback = false;
     std::unique_ptr<HapticSnapshot> mPanelSnapshot;  // what the Device panel reads (large: on the heap)
 };
 

@@ -4,6 +4,7 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/ViewportBenchmark.h"
 #include "device/DeviceUri.h"
+#include "widgets/RecorderPanel.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -105,6 +106,12 @@ int main(int argc, char** argv) {
                                            QStringLiteral("Length of --benchmark-viewport (default 5)."),
                                            QStringLiteral("S"), QStringLiteral("5"));
     parser.addOptions({benchmarkOption, secondsOption});
+    // Hidden, for screenshots of the Recorder dock: opens FILE in the dock and plays it at 1x.
+    QCommandLineOption openRecordingOption(QStringLiteral("open-recording"),
+                                           QStringLiteral("Open a session recording in the Recorder dock and play it."),
+                                           QStringLiteral("FILE"));
+    openRecordingOption.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(openRecordingOption);
     parser.process(app);  // exits with 0 on --help/--version and with 1 on unknown options
     if (parser.isSet(benchmarkOption))
         return palpate::runViewportBenchmark(parser.value(secondsOption), parser.isSet(softwareOption));
@@ -224,6 +231,11 @@ int main(int argc, char** argv) {
 
     window.resize(kWindowWidthPx, kWindowHeightPx);
     window.show();
+    if (parser.isSet(openRecordingOption)) {
+        palpate::RecorderPanel* panel = window.recorderPanel();
+        QObject::connect(panel, &palpate::RecorderPanel::playbackStarted, panel, [panel] { panel->setPlaying(true); });
+        window.openRecording(parser.value(openRecordingOption));
+    }
     if (grab || timedShot) {
         int exitCode = 1;
         QTimer::singleShot(grabAfterMs, &window, [&] {

@@ -1,7 +1,10 @@
 #include "engine/record/RecordingPlayer.h"
 
+#include "engine/TissuePreset.h"
 #include "engine/record/MeshHash.h"
+#include "engine/scoring/RecordedExercise.h"
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <sstream>
@@ -38,16 +41,28 @@ std::unique_ptr<RecordingPlayer> RecordingPlayer::open(const RecordingReader& re
         return nullptr;
     }
     std::unique_ptr<RecordingPlayer> player(new RecordingPlayer(reader, options));
+    if (!options.prepareScene && options.applyRecordedExercise)
+        player->mOptions.prepareScene = recordedExercisePhysics(reader.header());
+    if (!player->findReplayableRange(error)) return nullptr;
+    if (!player->restart(error)) return nullptr;
+    return player;
+}
+
+bool RecordingPlayer::findReplayableRange(std::string& error) {
+    const RecordingReader& reader = mReader;
+    mRangeChunks = reader.chunks().size();
+    mRangeDamage = reader.damage().size();
     // The replayable stretch: from the first tick while chunks follow each other without damage,
     // gap or missing tick between them.
     const auto& chunks = reader.chunks();
     bool started = false;
     std::uint64_t expected = 0;
+    std::string stopReason;
     for (std::size_t i = 0; i < chunks.size(); ++i) {
         const ChunkInfo& c = chunks[i];
         const bool contiguousBytes = i == 0 || chunks[i - 1].offset + chunks[i - 1].bytes == c.offset;
         if (started && !contiguousBytes) {
-            player->mStatus.stopReason = "damaged bytes at offset " + std::to_string(chunks[i - 1].offset + chunks[i - 1].bytes);
+            stopReason = "damaged bytes at offset " + std::to_string(chunks[i - 1].offset + chunks[i - 1].bytes);
             break;
         }
         if (c.type == ChunkType::End) break;
@@ -56,9 +71,9 @@ std::unique_ptr<RecordingPlayer> RecordingPlayer::open(const RecordingReader& re
                                     std::to_string(c.firstTick) + " (the ring overflowed while recording)";
             if (!started) {
                 error = reader.name() + ": cannot replay: the recording begins with a " + gap;
-                return nullptr;
+                return false;
             }
-            player->mStatus.stopReason = gap;
+            stopReason = gap;
             break;
         }
         if (c.count == 0) continue;
@@ -66,23 +81,41 @@ std::unique_ptr<RecordingPlayer> RecordingPlayer::open(const RecordingReader& re
             // The state at this chunk's first tick depends on ticks that are lost.
             error = reader.name() + ": cannot replay: the start of the recording is damaged (" +
                     reader.damage().front().reason + ")";
-            return nullptr;
+            return false;
         }
         if (started && c.firstTick != expected) {
-            player->mStatus.stopReason = "ticks " + std::to_string(expected) + ".." + std::to_string(c.firstTick) + " are missing";
+            stopReason = "ticks " + std::to_string(expected) + ".." + std::to_string(c.firstTick) + " are missing";
             break;
         }
-        if (!started) player->mFirstTick = c.firstTick;
+        if (!started) mFirstTick = c.firstTick;
         started = true;
         expected = c.firstTick + c.count;
-        player->mLastReplayableTick = expected - 1;
+        mLastReplayableTick = expected - 1;
     }
     if (!started) {
         error = reader.name() + ": no ticks to replay";
-        return nullptr;
+        return false;
     }
-    if (!player->restart(error)) return nullptr;
-    return player;
+    mStatus.stopReason = stopReason;
+    return true;
+}
+
+bool RecordingPlayer::refresh() {
+    if (mReader.chunks().size() == mRangeChunks && mReader.damage().size() == mRangeDamage) return false;
+    const std::uint64_t before = mLastReplayableTick;
+    const std::string stopReason = mStatus.stopReason;
+    std::string error;
+    if (!findReplayableRange(error)) {
+        mStatus.stopReason = stopReason;
+        return false;
+    }
+    if (mStopped) mStatus.stopReason = stopReason;  // the stop's own reason stays
+    if (mLastReplayableTick == before) return false;
+    if (!mStopped && (!mHaveCurrent || mCurrentTick < mLastReplayableTick)) {
+        mEnded = false;
+        mStatus.complete = false;
+    }
+    return true;
 }
 
 std::unique_ptr<HapticScene> RecordingPlayer::buildScene(const RecordedScene& scene, const std::string& pathOverride,
@@ -104,12 +137,32 @@ std::unique_ptr<HapticScene> RecordingPlayer::buildScene(const RecordedScene& sc
         error = s.str();
         return nullptr;
     }
+    std::unique_ptr<HapticScene> built;
     try {
-        return HapticScene::createSlopeRing(found->second, scene.params, scene.method, scene.octree);
+        // A registry model other than the slope-ring methods is named by the stored preset JSON
+        // only; its binary slope-ring parameters, method and octree stay the exact ones.
+        const PresetLoadResult stored = parseTissuePreset(scene.presetJson, "presetJson");
+        if (stored.preset && stored.preset->modelKind != ModelKind::SlopeRing) {
+            TissuePreset preset = *stored.preset;
+            preset.params = scene.params;
+            preset.method = scene.method;
+            preset.octree = scene.octree;
+            built = HapticScene::create(found->second, preset);
+        } else {
+            built = HapticScene::createSlopeRing(found->second, scene.params, scene.method, scene.octree);
+        }
     } catch (const std::exception& e) {
         error = std::string("the recorded scene cannot be rebuilt: ") + e.what();
         return nullptr;
     }
+    if (mOptions.prepareScene) {
+        const std::string problem = mOptions.prepareScene(*built);
+        if (!problem.empty()) {
+            error = "the recorded scene cannot be prepared: " + problem;
+            return nullptr;
+        }
+    }
+    return built;
 }
 
 bool RecordingPlayer::restart(std::string& error) {
@@ -133,16 +186,21 @@ bool RecordingPlayer::restart(std::string& error) {
     mCurrentTick = mFirstTick - 1;
     mHaveCurrent = false;
     mEnded = false;
+    mStopped = false;
     mPaused = false;
     mChunk = 0;
     mChunkTicks.clear();
     mChunkPos = 0;
     mNextEvent = 0;
+    mEventsSeen = mReader.events().size();
+    mEventsApplied = false;
+    mEventsThroughTick = 0;
     return true;
 }
 
 void RecordingPlayer::stop(const std::string& reason) {
     mEnded = true;
+    mStopped = true;
     mStatus.stopReason = reason;
     mStatus.complete = false;
 }
@@ -162,6 +220,19 @@ bool RecordingPlayer::nextRecord(RecordedTick& out) {
 
 bool RecordingPlayer::applyEvents(std::uint64_t tick) {
     const auto& events = mReader.events();
+    if (events.size() != mEventsSeen) {
+        // A live reader added events, possibly before the cursor (a mark the writer put in a later
+        // chunk than its tick): go on after the last tick whose events were applied.
+        mNextEvent = !mEventsApplied ? 0
+                                     : std::size_t(std::upper_bound(events.begin(), events.end(), mEventsThroughTick,
+                                                                    [](std::uint64_t t, const RecordingEvent& e) {
+                                                                        return t < e.tick;
+                                                                    }) -
+                                                   events.begin());
+        mEventsSeen = events.size();
+    }
+    mEventsApplied = true;
+    mEventsThroughTick = tick;
     for (; mNextEvent < events.size() && events[mNextEvent].tick <= tick; ++mNextEvent) {
         const RecordingEvent& e = events[mNextEvent];
         std::string error;

@@ -14,6 +14,7 @@
 #include "engine/record/RecordingReader.h"
 #include "engine/record/ReplayDevice.h"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <span>
@@ -27,6 +28,14 @@ struct ReplayOptions {
     std::string meshPath;
     /// Refuse a mesh whose hash differs from the recorded one (ids and forces would not reproduce).
     bool requireMeshHash = true;
+    /// Called on every scene the player builds (the header's and each recorded switch), before the
+    /// loop uses it: what the recording session did to its scenes beyond the header. Returns ""
+    /// or why the scene cannot be used (the player then fails to open, or stops at the switch).
+    /// Unset: the physics of the exercise the header's note carries, if any (a find-the-lump
+    /// inclusion, engine/scoring/RecordedExercise.h), as the session had it.
+    std::function<std::string(HapticScene& scene)> prepareScene;
+    /// Off: replay the bare recorded scenes even when the note carries an exercise.
+    bool applyRecordedExercise = true;
 };
 
 /// How a replay went, so far.
@@ -60,6 +69,11 @@ public:
     std::uint64_t currentTick() const { return mCurrentTick; }
     bool atEnd() const { return mEnded; }
 
+    /// For a reader that follows a file being written (RecordingReader::openLive): after its
+    /// refresh(), takes in the chunks it added, so that step() can go on past the old end. Returns
+    /// true when lastTick() moved.
+    bool refresh();
+
     /// Replays up to n ticks; returns how many ran (fewer at the end or when it must stop).
     std::uint64_t step(std::uint64_t n = 1);
     /// Replays until currentTick() == tick (restarting from the first tick to go back). False
@@ -78,6 +92,7 @@ public:
 private:
     RecordingPlayer(const RecordingReader& reader, const ReplayOptions& options);
     bool restart(std::string& error);
+    bool findReplayableRange(std::string& error);
     std::unique_ptr<HapticScene> buildScene(const RecordedScene& scene, const std::string& pathOverride,
                                             std::string& error);
     bool nextRecord(RecordedTick& out);
@@ -100,6 +115,11 @@ private:
     std::size_t mChunkPos = 0;
     std::size_t mChunkOfTicks = 0;         // index of that chunk in reader.chunks()
     std::size_t mNextEvent = 0;
+    std::size_t mEventsSeen = 0;            // reader.events().size() when mNextEvent was set
+    bool mEventsApplied = false;            // events up to mEventsThroughTick were applied
+    std::uint64_t mEventsThroughTick = 0;
+    std::size_t mRangeChunks = 0, mRangeDamage = 0;  // reader sizes findReplayableRange saw
+    bool mStopped = false;                  // stop() ended the replay (not the end of the ticks)
     RecordedTick mCurrent;
     bool mHaveCurrent = false;
     ReplayStatus mStatus;

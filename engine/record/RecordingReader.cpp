@@ -206,36 +206,127 @@ bool RecordingReader::scanData(const ChunkHeader& h, const std::uint8_t* payload
     return true;
 }
 
+namespace {
+
+/// Live: the header is not whole yet (the file ends inside it, and what is there agrees so far).
+bool headerCutShort(const std::vector<std::uint8_t>& bytes) {
+    const std::size_t size = bytes.size();
+    if (std::memcmp(bytes.data(), kRecordingMagic, std::min(size, sizeof(kRecordingMagic))) != 0) return false;
+    if (size < kPreambleBytes) return true;
+    const std::uint32_t length = std::uint32_t(bytes[8]) | std::uint32_t(bytes[9]) << 8 |
+                                 std::uint32_t(bytes[10]) << 16 | std::uint32_t(bytes[11]) << 24;
+    return length <= kMaxHeaderBytes && size < kPreambleBytes + std::size_t(length) + 4;
+}
+
+}  // namespace
+
+RecordingReader RecordingReader::openLive(const std::string& path) {
+    RecordingReader reader;
+    reader.mName = path;
+    reader.mLive = true;
+    reader.refresh();
+    return reader;
+}
+
+bool RecordingReader::refresh() {
+    if (!mLive) return false;
+    std::ifstream in(mName, std::ios::binary);
+    if (!in) {
+        mFileError = mName + ": cannot open: " + std::strerror(errno);
+        return false;
+    }
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size < 0) {
+        mFileError = mName + ": cannot read (not a regular file?)";
+        return false;
+    }
+    if (std::size_t(size) < mBytes.size()) {
+        mFileError = mName + ": the file shrank while it was being read live";
+        return false;
+    }
+    mFileError.clear();
+    if (std::size_t(size) == mBytes.size()) return false;
+    const std::size_t old = mBytes.size();
+    mBytes.resize(std::size_t(size));
+    in.seekg(std::streamoff(old), std::ios::beg);
+    if (!in.read(reinterpret_cast<char*>(mBytes.data() + old), size - std::streamoff(old))) {
+        mBytes.resize(old);
+        mFileError = mName + ": read failed";
+        return false;
+    }
+    if (old == 0 || mScan.headerPending) {
+        scan();  // nothing was scanned yet
+    } else {
+        std::vector<RecordingEvent> events;
+        std::swap(events, mEvents);  // the old ones; scanChunks appends the new ones to mEvents
+        scanChunks();
+        finishScan(events);
+    }
+    return true;
+}
+
+void RecordingReader::finishLive() {
+    if (!mLive) return;
+    mLive = false;
+    if (mScan.headerPending) {
+        scan();
+        return;
+    }
+    std::vector<RecordingEvent> events;
+    std::swap(events, mEvents);
+    scanChunks();
+    finishScan(events);
+}
+
 void RecordingReader::scan() {
     const std::uint8_t* data = mBytes.data();
     const std::size_t size = mBytes.size();
     mSummary = RecordingSummary{};
     mSummary.fileBytes = size;
+    mChunks.clear();
+    mTickChunks.clear();
+    mDamage.clear();
+    mEvents.clear();
+    mHeaderError.clear();
+    mScan = ScanState{};
+    mScan.runningHash = kHashSeed;
 
-    std::size_t offset = 0;
     std::size_t headerBytes = 0;
     if (decodeRecordingHeader(data, size, mHeader, headerBytes, mHeaderError)) {
         mSummary.headerOk = true;
-        offset = headerBytes;
+        mScan.offset = headerBytes;
+    } else if (mLive && headerCutShort(mBytes)) {
+        mHeader = RecordingHeader{};
+        mScan.headerPending = true;  // refresh() tries again when more has been written
+        mScan.offset = 0;
+        return;
     } else {
         mHeader = RecordingHeader{};
-        offset = findChunkMagic(data, size, 0);
-        addDamage(0, offset, mHeaderError, nullptr);
+        mScan.offset = findChunkMagic(data, size, 0);
+        addDamage(0, mScan.offset, mHeaderError, nullptr);
     }
+    mScan.hashKnown = mSummary.headerOk;  // the session hash starts from the seed at the first chunk
 
-    std::uint64_t expectedTick = 0;
-    bool haveExpected = false;
-    std::uint64_t runningHash = kHashSeed;
-    bool hashKnown = mSummary.headerOk;  // the session hash starts from the seed at the first chunk
-    bool sawEnd = false;
-    std::uint64_t endTicks = 0;
-    std::vector<RecordingEvent> events;
+    std::vector<RecordingEvent> none;
+    scanChunks();  // appends to mEvents
+    finishScan(none);
+}
 
-    while (offset < size) {
+void RecordingReader::scanChunks() {
+    const std::uint8_t* data = mBytes.data();
+    const std::size_t size = mBytes.size();
+    ScanState& st = mScan;
+    std::vector<RecordingEvent>& events = mEvents;  // the new ones (the caller moved the old ones out)
+
+    while (st.offset < size) {
+        const std::size_t offset = st.offset;
         ChunkHeader h;
         const std::uint8_t* payload = nullptr;
         const ChunkStatus status = parseChunk(data, size, offset, h, payload);
         if (status != ChunkStatus::Ok) {
+            // Live: a chunk cut short at the end is being written; it is read when it is whole.
+            if (mLive && (status == ChunkStatus::Truncated || status == ChunkStatus::TruncatedPayload)) break;
             const bool headerValid = status == ChunkStatus::TruncatedPayload || status == ChunkStatus::BadPayloadCrc;
             std::size_t next = size;
             if (status == ChunkStatus::BadPayloadCrc) {
@@ -249,14 +340,14 @@ void RecordingReader::scan() {
                 next = findChunkMagic(data, size, offset + 1);
             }
             addDamage(offset, next - offset, chunkStatusText(status), headerValid ? &h : nullptr);
-            hashKnown = false;
-            offset = next;
+            st.hashKnown = false;
+            st.offset = next;
             continue;
         }
         const std::size_t chunkBytes = kChunkOverheadBytes + h.payloadBytes;
-        if (sawEnd) {
+        st.offset = offset + chunkBytes;
+        if (st.sawEnd) {
             addDamage(offset, chunkBytes, "chunk after the end chunk", nullptr);
-            offset += chunkBytes;
             continue;
         }
         ChunkInfo info;
@@ -270,12 +361,11 @@ void RecordingReader::scan() {
         // Ticks only move forward: a data chunk with ticks, or a gap, that starts before the end
         // of what came before is not part of this recording (spliced or forged).
         if ((h.type == ChunkType::Data && h.count > 0) || h.type == ChunkType::Gap) {
-            if (haveExpected && h.firstTick < expectedTick) {
+            if (st.haveExpected && h.firstTick < st.expectedTick) {
                 addDamage(offset, chunkBytes,
                           "chunk out of order (ticks " + std::to_string(h.firstTick) + " after " +
-                              std::to_string(expectedTick) + ")",
+                              std::to_string(st.expectedTick) + ")",
                           nullptr);
-                offset += chunkBytes;
                 continue;
             }
         }
@@ -284,17 +374,16 @@ void RecordingReader::scan() {
             std::vector<RecordingEvent> chunkEvents;
             if (!scanData(h, payload, info, chunkEvents, why)) {
                 addDamage(offset, chunkBytes, "chunk does not decode: " + why, &h);
-                hashKnown = false;
-                offset += chunkBytes;
+                st.hashKnown = false;
                 continue;
             }
             if (h.count > 0) {
-                if (haveExpected && h.firstTick > expectedTick) {
-                    mSummary.lostTicks += h.firstTick - expectedTick;
-                    hashKnown = false;
+                if (st.haveExpected && h.firstTick > st.expectedTick) {
+                    mSummary.lostTicks += h.firstTick - st.expectedTick;
+                    st.hashKnown = false;
                 }
-                if (hashKnown) {
-                    std::uint64_t hash = runningHash;
+                if (st.hashKnown) {
+                    std::uint64_t hash = st.runningHash;
                     for (const RecordedTick& t : mScratch) hashTick(hash, t.forceN, t.touched);
                     info.hashChecked = hash == h.hash;
                     if (!info.hashChecked) ++mSummary.hashMismatches;
@@ -303,55 +392,59 @@ void RecordingReader::scan() {
                 if (mSummary.ticks == 0) mSummary.firstTick = h.firstTick;
                 mSummary.lastTick = h.firstTick + h.count - 1;
                 mSummary.ticks += h.count;
-                expectedTick = h.firstTick + h.count;
-                haveExpected = true;
-                runningHash = h.hash;
-                hashKnown = true;
+                st.expectedTick = h.firstTick + h.count;
+                st.haveExpected = true;
+                st.runningHash = h.hash;
+                st.hashKnown = true;
+                if (!st.haveTime) st.firstTimeS = info.firstTimeS;
+                st.lastTimeS = info.lastTimeS;
+                st.haveTime = true;
             }
             for (auto& e : chunkEvents) events.push_back(std::move(e));
         } else if (h.type == ChunkType::Gap) {
-            if (haveExpected && h.firstTick > expectedTick) {
-                mSummary.lostTicks += h.firstTick - expectedTick;
-                hashKnown = false;
+            if (st.haveExpected && h.firstTick > st.expectedTick) {
+                mSummary.lostTicks += h.firstTick - st.expectedTick;
+                st.hashKnown = false;
             }
             ++mSummary.gaps;
             mSummary.droppedTicks += h.count;
-            expectedTick = h.firstTick + h.count;
-            haveExpected = true;
-            if (hashKnown && h.hash != runningHash) ++mSummary.hashMismatches;
-            runningHash = h.hash;
-            hashKnown = true;
+            st.expectedTick = h.firstTick + h.count;
+            st.haveExpected = true;
+            if (st.hashKnown && h.hash != st.runningHash) ++mSummary.hashMismatches;
+            st.runningHash = h.hash;
+            st.hashKnown = true;
         } else {  // End
-            sawEnd = true;
-            endTicks = h.count;
-            if (hashKnown && h.hash != runningHash) ++mSummary.hashMismatches;
+            st.sawEnd = true;
+            st.endTicks = h.count;
+            if (st.hashKnown && h.hash != st.runningHash) ++mSummary.hashMismatches;
         }
         mChunks.push_back(info);
-        offset += chunkBytes;
     }
-
-    std::stable_sort(events.begin(), events.end(),
-                     [](const RecordingEvent& a, const RecordingEvent& b) { return a.tick < b.tick; });
-    mEvents = std::move(events);
     mScratch = {};
+}
 
+void RecordingReader::finishScan(std::vector<RecordingEvent>& events) {
+    // `events`: those read before (already ordered), then mEvents: the new ones in file order. A
+    // stable sort of the two keeps file order among events of one tick, as a single scan would.
+    if (!mEvents.empty()) {
+        const std::size_t before = events.size();
+        for (auto& e : mEvents) events.push_back(std::move(e));
+        auto byTick = [](const RecordingEvent& a, const RecordingEvent& b) { return a.tick < b.tick; };
+        std::stable_sort(events.begin() + std::ptrdiff_t(before), events.end(), byTick);
+        std::inplace_merge(events.begin(), events.begin() + std::ptrdiff_t(before), events.end(), byTick);
+    }
+    mEvents = std::move(events);
+
+    mSummary.fileBytes = mBytes.size();
     mSummary.chunks = mChunks.size();
     mSummary.events = mEvents.size();
     mSummary.damagedRegions = mDamage.size();
-    mSummary.closedCleanly = sawEnd;
+    mSummary.closedCleanly = mScan.sawEnd;
     // The end chunk knows how many ticks were written: any not recovered were lost.
-    if (sawEnd && endTicks > mSummary.ticks + mSummary.lostTicks && endTicks != 0xFFFFFFFFu)
-        mSummary.lostTicks = endTicks - mSummary.ticks;
-    double firstS = 0.0, lastS = 0.0;
-    bool any = false;
-    for (const ChunkInfo& c : mChunks) {
-        if (c.type != ChunkType::Data || c.count == 0) continue;
-        if (!any) firstS = c.firstTimeS;
-        lastS = c.lastTimeS;
-        any = true;
-    }
-    mSummary.durationS = any ? lastS - firstS + periodS() : 0.0;
-    mSummary.intact = mSummary.headerOk && mDamage.empty() && mSummary.hashMismatches == 0 && sawEnd &&
+    if (mScan.sawEnd && mScan.endTicks > mSummary.ticks + mSummary.lostTicks && mScan.endTicks != 0xFFFFFFFFu)
+        mSummary.lostTicks = mScan.endTicks - mSummary.ticks;
+    mSummary.durationS = mScan.haveTime ? mScan.lastTimeS - mScan.firstTimeS + periodS() : 0.0;
+    mSummary.intact = mSummary.headerOk && mDamage.empty() && mSummary.hashMismatches == 0 && mScan.sawEnd &&
                       mSummary.lostTicks == 0;
 }
 

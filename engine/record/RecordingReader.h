@@ -12,6 +12,7 @@
 #include "engine/record/RecorderSink.h"
 #include "engine/record/RecordingFormat.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -82,6 +83,23 @@ public:
     static RecordingReader open(const std::string& path);
     /// Scans bytes already in memory (tests, the fuzzer).
     static RecordingReader fromBytes(std::vector<std::uint8_t> bytes, const std::string& name = "<memory>");
+    /// Opens a recording that is still being written (engine/scoring's LiveScorer follows the
+    /// session's own file): a chunk or header cut short at the end is taken as not written yet
+    /// rather than as damage, and refresh() reads what the writer appends.
+    static RecordingReader openLive(const std::string& path);
+
+    /// Live readers: reads the bytes appended since the last look and scans the chunks they
+    /// complete. Chunks, damage and summary only grow; events stay ordered by tick (an event the
+    /// writer placed in a later chunk than its tick is inserted where it belongs). Returns true
+    /// when the file grew; false when it did not or the reader is not live (fileError() says if
+    /// the file could not be read).
+    bool refresh();
+    /// Live readers: the writer is gone, so whatever is still cut short at the end is damage from
+    /// now on (what open() would report). The reader is no longer live.
+    void finishLive();
+    bool live() const { return mLive; }
+    /// Live readers: bytes at the end that do not make a whole chunk (or header) yet.
+    std::uint64_t pendingBytes() const { return mBytes.size() - std::min<std::size_t>(mScan.offset, mBytes.size()); }
 
     const std::string& name() const { return mName; }
     const std::string& fileError() const { return mFileError; }
@@ -107,7 +125,23 @@ public:
     std::optional<RecordedTick> tickAt(std::uint64_t tick) const;
 
 private:
+    /// Where the scan stands, so that a live reader can go on from there.
+    struct ScanState {
+        std::size_t offset = 0;           // the next chunk starts here
+        bool headerPending = false;       // live: the header is not whole yet
+        std::uint64_t expectedTick = 0;
+        bool haveExpected = false;
+        std::uint64_t runningHash = 0;
+        bool hashKnown = false;
+        bool sawEnd = false;
+        std::uint64_t endTicks = 0;
+        bool haveTime = false;
+        double firstTimeS = 0.0, lastTimeS = 0.0;
+    };
+
     void scan();
+    void scanChunks();
+    void finishScan(std::vector<RecordingEvent>& newEvents);
     bool scanData(const ChunkHeader& header, const std::uint8_t* payload, ChunkInfo& info,
                   std::vector<RecordingEvent>& events, std::string& why);
     void addDamage(std::uint64_t offset, std::uint64_t bytes, std::string reason, const ChunkHeader* header);
@@ -123,6 +157,8 @@ private:
     std::vector<DamagedRegion> mDamage;
     std::vector<RecordingEvent> mEvents;
     std::vector<RecordedTick> mScratch;
+    ScanState mScan;
+    bool mLive = false;
 };
 
 }  // namespace palpate

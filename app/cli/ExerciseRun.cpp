@@ -1,0 +1,80 @@
+#include "app/cli/ExerciseRun.h"
+
+#include "app/cli/DefaultScene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace palpate::cli {
+
+std::unique_ptr<ExerciseRun> ExerciseRun::load(const std::string& exercisePath, const std::string& markAt,
+                                               std::string& error) {
+    auto loaded = loadExercise(exercisePath);
+    if (!loaded.exercise) {
+        for (const auto& e : loaded.errors) error += (error.empty() ? "" : "\n") + e;
+        return nullptr;
+    }
+    std::unique_ptr<ExerciseRun> run(new ExerciseRun());
+    std::vector<std::string> errors;
+    auto assets = loadExerciseAssets(*loaded.exercise, findResource, errors);
+    if (!assets) {
+        for (const auto& e : errors) error += (error.empty() ? "" : "\n") + e;
+        return nullptr;
+    }
+    run->mAssets = std::move(*assets);
+    std::stringstream list(markAt);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+        if (item.empty()) continue;
+        try {
+            std::size_t used = 0;
+            const double s = std::stod(item, &used);
+            if (used != item.size() || !std::isfinite(s) || s < 0.0) throw std::invalid_argument(item);
+            run->mMarksS.push_back(s);
+        } catch (...) {
+            error = "--mark-at: '" + item + "' is not a time in seconds";
+            return nullptr;
+        }
+    }
+    std::sort(run->mMarksS.begin(), run->mMarksS.end());
+    return run;
+}
+
+std::string ExerciseRun::applyTo(HapticScene& scene) const { return applyExercisePhysics(*mAssets.geometry, scene); }
+
+std::string ExerciseRun::note(const std::string& text, std::string& error) const {
+    Exercise carried = mAssets.exercise;
+    carried.meshPath = mAssets.meshPath;
+    carried.tissuePresetPath = mAssets.presetPath;
+    return exerciseRecordingNote(carried, text, error);
+}
+
+void ExerciseRun::follow(const std::string& recordingPath) {
+    LiveScorerDef def;
+    def.options.findResource = findResource;
+    mLive = std::make_unique<LiveScorer>(recordingPath, mAssets.exercise, def);
+}
+
+void ExerciseRun::poll(HapticLoop& loop, RecordingSession* session) {
+    if (session && mNextMark < mMarksS.size()) {
+        const double nowS = loop.newestSnapshot().timeS;
+        for (; mNextMark < mMarksS.size() && nowS >= mMarksS[mNextMark]; ++mNextMark) session->mark("mark (--mark-at)");
+    }
+    if (mLive) mLive->poll();
+}
+
+std::optional<ScoreReport> ExerciseRun::finish(std::string& error) {
+    if (!mLive) {
+        error = "the session was not recorded (--record FILE): nothing to score";
+        return std::nullopt;
+    }
+    ScoreReport report = mLive->finish();
+    if (!mLive->error().empty()) {
+        error = mLive->error();
+        return std::nullopt;
+    }
+    return report;
+}
+
+}  // namespace palpate::cli

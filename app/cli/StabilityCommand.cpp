@@ -1,0 +1,139 @@
+// palpate-cli stability: where each model fails (issue 8, docs/stability.md). --list names the
+// maps; --model NAME runs one: the grid of cells, the measured boundary by bisection, the derived
+// boundary, their gap; as a table, JSON, CSV and (in builds with Qt) the map as a PNG.
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "engine/stability/StabilityModels.h"
+
+#ifdef PALPATE_HAVE_CHARTS
+#include "widgets/StabilityMapImage.h"
+#endif
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace palpate::cli {
+
+namespace {
+
+/// JSON has no infinity: an unbounded boundary is null.
+nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json axisJson(const StabilityAxis& a) {
+    return {{"name", a.name}, {"unit", a.unit}, {"min", a.minValue}, {"max", a.maxValue}, {"log", a.logScale}};
+}
+
+nlohmann::json toJson(const StabilityMap& map) {
+    nlohmann::json derived = nlohmann::json::array(), measured = nlohmann::json::array(),
+                   cells = nlohmann::json::array(), gaps = nlohmann::json::array();
+    for (const auto& b : map.boundary) {
+        derived.push_back({{"x", b.x}, {"y", number(b.derivedY)}});
+        measured.push_back({{"x", b.x}, {"y", number(b.measuredY)}});
+        gaps.push_back(number(b.relativeGap));
+    }
+    for (const auto& c : map.cells)
+        cells.push_back({{"x", c.x}, {"y", c.y}, {"bounded", c.bounded}, {"growth", number(c.growth)}});
+    return {{"model", map.model},
+            {"description", map.description},
+            {"criterion", map.criterion},
+            {"derived_formula", map.derivedFormula},
+            {"x_axis", axisJson(map.x)},
+            {"y_axis", axisJson(map.y)},
+            {"has_derived_boundary", map.hasDerivedBoundary},
+            {"derived_boundary", derived},
+            {"measured_boundary", measured},
+            {"relative_gaps", gaps},
+            {"relative_gap", number(map.relativeGap)},
+            {"cells", cells}};
+}
+
+std::string csvText(const StabilityMap& map) {
+    std::ostringstream out;
+    out << std::setprecision(9) << "kind," << map.x.name << "," << map.y.name << ",bounded,growth,derived_y\n";
+    for (const auto& c : map.cells) out << "cell," << c.x << "," << c.y << "," << (c.bounded ? 1 : 0) << "," << c.growth << ",\n";
+    for (const auto& b : map.boundary)
+        out << "boundary," << b.x << "," << b.measuredY << ",,"
+            << b.relativeGap << "," << b.derivedY << "\n";
+    return out.str();
+}
+
+void printTable(std::ostream& out, const StabilityMap& map) {
+    out << map.model << ": " << map.description << "\n  derived: " << map.derivedFormula
+        << "\n  criterion: " << map.criterion << "\n";
+    out << std::setw(12) << map.x.name << std::setw(14) << ("derived " + map.y.name) << std::setw(14)
+        << ("measured " + map.y.name) << std::setw(9) << "gap\n";
+    for (const auto& b : map.boundary)
+        out << std::setw(12) << std::setprecision(4) << b.x << std::setw(14) << b.derivedY << std::setw(14)
+            << b.measuredY << std::setw(8) << std::fixed << std::setprecision(2) << 100.0 * b.relativeGap << "%\n"
+            << std::defaultfloat;
+    out << "  largest gap: " << std::setprecision(3) << 100.0 * map.relativeGap << " %\n";
+}
+
+}  // namespace
+
+int stabilityCommand(const std::vector<std::string>& words) {
+    const Args args(words, {"list", "json", "quick"}, {"model", "csv", "png"});
+    if (!args.ok()) {
+        std::cerr << "palpate-cli stability: " << args.error() << "\n";
+        return 2;
+    }
+    if (args.flag("list")) {
+        for (const auto& name : stabilityModelNames()) std::cout << name << "\n";
+        return 0;
+    }
+    const auto name = args.option("model");
+    if (!name) {
+        std::cerr << "palpate-cli stability: give --list or --model NAME\n";
+        return 2;
+    }
+    StabilitySceneDef scene;
+    StabilityMapDef def;
+    if (args.flag("quick")) {
+        scene.slopeRingTicks = 1500;
+        scene.massSpringTicks = 800;
+        scene.implicitTicks = 150;
+        def.columns = 6;
+        def.rows = 6;
+        def.bisections = 10;
+    }
+    const auto spec = stabilityMapSpec(*name, scene);
+    if (!spec) {
+        std::cerr << "palpate-cli stability: unknown model '" << *name << "' (see --list)\n";
+        return 2;
+    }
+    const auto png = args.option("png");
+#ifndef PALPATE_HAVE_CHARTS
+    if (png) {
+        std::cerr << "palpate-cli stability: --png needs a build with the GUI (Qt); this one has none\n";
+        return 2;
+    }
+#endif
+    const StabilityMap map = runStabilityMap(*spec, def);
+    if (const auto csv = args.option("csv")) {
+        std::ofstream out(*csv);
+        out << csvText(map);
+        if (!out) {
+            std::cerr << "palpate-cli stability: " << *csv << ": cannot be written\n";
+            return 1;
+        }
+    }
+#ifdef PALPATE_HAVE_CHARTS
+    if (png) {
+        std::string error;
+        if (!renderStabilityMapPng(map, *png, &error)) {
+            std::cerr << "palpate-cli stability: " << *png << ": " << error << "\n";
+            return 1;
+        }
+    }
+#endif
+    if (args.flag("json")) std::cout << toJson(map).dump(2) << "\n";
+    else printTable(std::cout, map);
+    return 0;
+}
+
+}  // namespace palpate::cli

@@ -1,0 +1,101 @@
+#pragma once
+// Scores an exercise session tick by tick: feed it every tick's ScoreSample in order (and marks),
+// ask for report() or guidance() at any time. The one scoring path: live sessions (LiveScorer)
+// and recordings (ReplayScorer) both come here with the same samples, so they give the same
+// score bit for bit. docs/scoring.md defines every metric in terms of what is done here.
+//
+// Not thread-safe; no allocation per sample (the GUI's 60 Hz polling may call report(), which
+// allocates its result).
+
+#include "engine/scoring/ExerciseGeometry.h"
+#include "engine/scoring/ScoreReport.h"
+#include "engine/scoring/ScoreSample.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace palpate {
+
+class Scorer {
+public:
+    /// `periodS`: the loop period (the first tick's length; later ticks use the clock).
+    Scorer(std::shared_ptr<const ExerciseGeometry> geometry, double periodS);
+
+    /// A user's mark (a Mark event) at `tick`. Give a tick's marks before its sample; a mark for a
+    /// tick already scored is taken at the next sample (LiveScorer prevents that case).
+    void addMark(std::uint64_t tick);
+    /// The next tick. Ticks must come in order.
+    void addSample(const ScoreSample& sample);
+    /// Ticks after the end of the exercise (completion or time limit) that were not looked at.
+    void skipTicksAfterEnd(std::uint64_t count) { mTicksAfterEnd += count; }
+    /// A warning for the report (gaps, replay differences), kept once.
+    void addWarning(const std::string& warning);
+
+    /// Completed or out of time: later samples are counted, not scored.
+    bool over() const { return mGuidance.over(); }
+    bool started() const { return mStarted; }
+    std::uint64_t lastTick() const { return mLastTick; }
+    const ScoreGuidance& guidance() const { return mGuidance; }
+    const ExerciseGeometry& geometry() const { return *mGeometry; }
+    /// The score so far (the final one once over() or the session ended).
+    ScoreReport report() const;
+
+private:
+    void scorePressTargets(const ScoreSample& s, double dt, double forceN, bool haveContactPoint);
+    void scoreFindLump(bool markNow, bool haveContactPoint);
+    void scoreTrace(const ScoreSample& s, double dt, double forceN, bool haveContactPoint);
+    void complete();
+
+    std::shared_ptr<const ExerciseGeometry> mGeometry;
+    const Exercise& mExercise;
+    double mPeriodS;
+
+    // Stream state.
+    bool mStarted = false;
+    std::uint64_t mFirstTick = 0, mLastTick = 0;
+    double mPreviousNowS = 0.0;
+    bool mHaveTool = false, mHavePreviousTool = false;
+    glm::vec3 mToolMm{0.0f}, mPreviousToolMm{0.0f}, mStartToolMm{0.0f};
+    glm::vec3 mContactPointMm{0.0f};
+    bool mHaveButtons = false;
+    std::uint32_t mButtons = 0;
+    std::vector<std::uint64_t> mPendingMarks;  // ticks, not yet reached
+    std::uint64_t mMarks = 0;
+    bool mAboveExcessive = false;
+    std::uint64_t mTicksScored = 0, mTicksAfterEnd = 0;
+    std::vector<std::string> mWarnings;
+
+    // Sums.
+    double mElapsedS = 0.0;
+    double mCompletionTimeS = 0.0;
+    double mPeakForceN = 0.0, mImpulseNs = 0.0;
+    double mContactS = 0.0, mContactForceNs = 0.0;
+    std::uint64_t mExcessiveEvents = 0;
+    double mExcessiveS = 0.0;
+    double mDamageS = 0.0, mDamageAreaMm2 = 0.0, mMaxDisplacementMm = 0.0;
+    double mPathLengthMm = 0.0;
+
+    // Press targets.
+    std::size_t mTarget = 0;
+    double mHoldS = 0.0;
+    bool mHoldStarted = false;  // the force was inside the current target's window on it
+    bool mCarriedPress = false; // the press that achieved the previous target goes on
+    std::vector<TargetResult> mTargets;
+    std::vector<double> mTargetErrorSumMmS, mTargetErrorS;
+
+    // Find the lump.
+    bool mMarked = false, mMarkMeasured = false;
+    double mLumpErrorMm = 0.0;
+
+    // Trace.
+    bool mTracing = false;
+    double mTracingS = 0.0, mTraceContactS = 0.0, mBandS = 0.0, mPathDistanceSumMmS = 0.0;
+    std::vector<std::uint8_t> mCovered;
+    std::size_t mCoveredCount = 0;
+
+    ScoreGuidance mGuidance;
+};
+
+}  // namespace palpate

@@ -1,0 +1,139 @@
+#include "engine/stability/DivergenceGuard.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace palpate {
+
+const char* divergenceKindName(DivergenceKind kind) {
+    switch (kind) {
+        case DivergenceKind::None: return "none";
+        case DivergenceKind::NonFinite: return "non-finite";
+        case DivergenceKind::EnergyGrowth: return "energy growth";
+        case DivergenceKind::Oscillation: return "force oscillation";
+        case DivergenceKind::Inversion: return "triangle inversion";
+    }
+    return "unknown";
+}
+
+const char* divergenceAdvice(DivergenceKind kind) {
+    switch (kind) {
+        case DivergenceKind::None: return "";
+        case DivergenceKind::NonFinite:
+            return "the model produced a non-finite force or position; force zeroed and tissue reset. Lower the "
+                   "stiffnesses (k, contactStiffness) or the time step: raise the loop rate or the mass-spring "
+                   "substeps, or use backward Euler";
+        case DivergenceKind::EnergyGrowth:
+            return "the tissue's energy grew without bound (the integrator is beyond dt < 2 / omega_max); force "
+                   "zeroed and tissue reset. Raise substeps, lower the stiffnesses (k, contactStiffness) or raise "
+                   "vertexMass, or use backward Euler";
+        case DivergenceKind::Oscillation:
+            return "the contact force flips every tick (the slope model beyond alpha (1 + |m1| k_c) < 2); force "
+                   "zeroed and tissue reset. Lower forceRelaxation (0 = automatic), |m1| or contactStiffness";
+        case DivergenceKind::Inversion:
+            return "a triangle at the tool turned inside out (|m1 - m2| |F_t| beyond the vertex's height over the "
+                   "opposite edge); force zeroed and tissue reset. Lower |m1| - |m2| or contactStiffness";
+    }
+    return "";
+}
+
+void DivergenceGuard::reset() {
+    mWindowTick = 0;
+    mWindowPeak = 0.0;
+    mPreviousPeak = -1.0;
+    mGrowingWindows = 0;
+    mLastForce = glm::vec3(0.0f);
+    mLastDelta = glm::vec3(0.0f);
+    mAlternatingTicks = 0;
+    mFirstSwing = 0.0f;
+    mLastTouched = kNoVertex;
+}
+
+namespace {
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+}  // namespace
+
+bool DivergenceGuard::fanInverted(const TissueMesh& mesh, std::span<const glm::vec3> positions, VertexId v) {
+    if (v >= mesh.vertexCount() || positions.size() != mesh.vertexCount()) return false;
+    const auto& start = mesh.neighbourStart();
+    const auto& nb = mesh.neighbours();
+    const auto& rest = mesh.restPositionsMm();
+    const auto adjacent = [&](VertexId a, VertexId b) {
+        return std::binary_search(nb.begin() + start[a], nb.begin() + start[a + 1], b);  // sorted per vertex
+    };
+    for (std::uint32_t i = start[v]; i < start[v + 1]; ++i)
+        for (std::uint32_t k = i + 1; k < start[v + 1]; ++k) {
+            const VertexId a = nb[i], b = nb[k];
+            if (!adjacent(a, b)) continue;  // (v, a, b) is a triangle of v's fan
+            const glm::vec3 restNormal = glm::cross(rest[a] - rest[v], rest[b] - rest[v]);
+            const glm::vec3 nowNormal = glm::cross(positions[a] - positions[v], positions[b] - positions[v]);
+            if (glm::dot(restNormal, nowNormal) <= 0.0f) return true;
+        }
+    return false;
+}
+
+DivergenceVerdict DivergenceGuard::check(const TissueMesh& mesh, std::span<const glm::vec3> positions,
+                                         const TickResult& result) {
+    const glm::vec3 force = result.forceN;
+    if (!finite(force)) return {DivergenceKind::NonFinite};
+
+    // The touched vertex's fan: finite positions, its displacement for the activity.
+    double displacement2 = 0.0;
+    // Round robin over the mesh: a non-finite vertex anywhere (a mode blowing up far from the tool
+    // stops the search from finding any vertex, so the fan alone would never see it).
+    const std::size_t n = std::min(positions.size(), mesh.vertexCount());
+    for (int k = 0; k < mDef.sampledVerticesPerTick && n > 0; ++k) {
+        if (mSampleCursor >= n) mSampleCursor = 0;
+        if (!finite(positions[mSampleCursor++])) return {DivergenceKind::NonFinite};
+    }
+    if (result.touched != kNoVertex) mLastTouched = result.touched;
+    const VertexId t = mLastTouched;
+    const bool fan = t != kNoVertex && t < mesh.vertexCount() && positions.size() == mesh.vertexCount();
+    if (fan) {
+        const auto& start = mesh.neighbourStart();
+        const auto& nb = mesh.neighbours();
+        const auto& rest = mesh.restPositionsMm();
+        auto visit = [&](VertexId v) {
+            if (!finite(positions[v])) return false;
+            const glm::vec3 u = positions[v] - rest[v];
+            displacement2 = std::max(displacement2, double(glm::dot(u, u)));
+            return true;
+        };
+        if (!visit(t)) return {DivergenceKind::NonFinite};
+        for (std::uint32_t i = start[t]; i < start[t + 1]; ++i)
+            if (!visit(nb[i])) return {DivergenceKind::NonFinite};
+    }
+
+    // Energy growth: the peak activity of each window against the previous window's.
+    const double activity = double(glm::dot(force, force)) + displacement2;
+    mWindowPeak = std::max(mWindowPeak, activity);
+    if (++mWindowTick >= mDef.windowTicks) {
+        if (mPreviousPeak >= 0.0 && mWindowPeak > mDef.activityFloor &&
+            mWindowPeak > mDef.energyGrowthPerWindow * std::max(mPreviousPeak, mDef.activityFloor))
+            ++mGrowingWindows;
+        else
+            mGrowingWindows = 0;
+        mPreviousPeak = mWindowPeak;
+        mWindowPeak = 0.0;
+        mWindowTick = 0;
+        if (mGrowingWindows >= mDef.growthWindows) return {DivergenceKind::EnergyGrowth};
+    }
+
+    // Oscillation: the force's change reverses every tick with a swing that is not noise.
+    const glm::vec3 delta = force - mLastForce;
+    const float size = std::max(glm::length(force), glm::length(mLastForce));
+    const bool swing = glm::length(delta) > float(mDef.oscillationFraction) * size && size > 1e-4f;
+    mAlternatingTicks = swing && glm::dot(delta, mLastDelta) < 0.0f ? mAlternatingTicks + 1 : 0;
+    if (mAlternatingTicks == 1) mFirstSwing = glm::length(delta);
+    mLastForce = force;
+    mLastDelta = delta;
+    if (mAlternatingTicks >= mDef.oscillationTicks && glm::length(delta) >= 0.5f * mFirstSwing)
+        return {DivergenceKind::Oscillation};
+
+    if (mDef.checkInversion && fan && fanInverted(mesh, positions, t)) return {DivergenceKind::Inversion};
+    return {};
+}
+
+}  // namespace palpate

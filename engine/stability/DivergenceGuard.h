@@ -1,0 +1,91 @@
+#pragma once
+// The run-time divergence detector (docs/stability.md, "Guards"): run once per tick after the
+// model's step, before the force is sent. It looks at what any DeformationModel exposes (the force
+// and the positions of the touched vertex's fan) and says whether the model has left its stable
+// range: a non-finite force or position, activity (force^2 + fan displacement^2) growing by orders
+// of magnitude window after window, a contact force that alternates every tick (the slope model
+// beyond alpha (1 + g) = 2), or a triangle of the touched vertex's fan inverted against its rest
+// orientation; and a few vertices per tick, round robin, for NaN anywhere. Real-time safe: no
+// allocation, O(valence^2 + sampled) work, messages are static strings.
+
+#include "engine/DeformationModel.h"
+#include "engine/TissueMesh.h"
+
+#include <cstdint>
+#include <span>
+
+namespace palpate {
+
+enum class DivergenceKind : std::uint8_t {
+    None = 0,
+    NonFinite,    ///< NaN or infinity in the force or the fan's positions
+    EnergyGrowth, ///< activity grew by energyGrowthPerWindow for growthWindows windows in a row
+    Oscillation,  ///< the contact force changed direction every tick for oscillationTicks ticks
+    Inversion,    ///< a triangle of the touched vertex's fan flipped against its rest normal
+};
+
+/// A short name for logs and the snapshot ("non-finite", "energy growth", ...).
+const char* divergenceKindName(DivergenceKind kind);
+/// What happened and which parameter to change, for the user (static text).
+const char* divergenceAdvice(DivergenceKind kind);
+
+struct DivergenceGuardDef {
+    /// Ticks per energy window.
+    int windowTicks = 16;
+    /// Factor by which a window's peak activity must exceed the previous window's...
+    double energyGrowthPerWindow = 100.0;
+    /// ...in this many consecutive windows (with the defaults: x10^6 in 48 ticks, far beyond any
+    /// hand: a press from 0.01 N to 10 N in 48 ms).
+    int growthWindows = 3;
+    /// Activity below this (N^2 + mm^2) is noise, not growth.
+    double activityFloor = 1e-6;
+    /// Consecutive ticks of a force whose tick-to-tick change flips sign with a swing above
+    /// oscillationFraction of its size, and has not decayed to half its first swing over them
+    /// (a stable slope-ring set near its bound rings down; |lambda|^64 > 0.5 flags within 0.5 %).
+    int oscillationTicks = 64;
+    double oscillationFraction = 0.05;
+    /// Vertices checked for NaN per tick, round robin over the mesh (a mode that blows up away
+    /// from the tool is seen within vertexCount / this ticks of overflowing).
+    int sampledVerticesPerTick = 32;
+    bool checkInversion = true;
+};
+
+struct DivergenceVerdict {
+    DivergenceKind kind = DivergenceKind::None;
+    explicit operator bool() const { return kind != DivergenceKind::None; }
+    const char* name() const { return divergenceKindName(kind); }
+    const char* advice() const { return divergenceAdvice(kind); }
+};
+
+class DivergenceGuard {
+public:
+    explicit DivergenceGuard(const DivergenceGuardDef& def = {}) : mDef(def) {}
+
+    /// One tick: `result` from the model's step, `positionsMm` its current positions (only the
+    /// touched vertex's fan is read). Real-time safe.
+    DivergenceVerdict check(const TissueMesh& mesh, std::span<const glm::vec3> positionsMm, const TickResult& result);
+    /// Forgets the history (after the model was reset, or a scene change).
+    void reset();
+
+    /// True when a triangle (t, j, k) of v's fan has turned over: its normal from the current
+    /// positions points against the one from the rest positions (orientation-free: the same vertex
+    /// order on both sides). The fan is found from the adjacency alone. Real-time safe.
+    static bool fanInverted(const TissueMesh& mesh, std::span<const glm::vec3> positionsMm, VertexId v);
+
+    const DivergenceGuardDef& def() const { return mDef; }
+
+private:
+    DivergenceGuardDef mDef;
+    int mWindowTick = 0;
+    double mWindowPeak = 0.0;
+    double mPreviousPeak = -1.0;  // < 0: no completed window yet
+    int mGrowingWindows = 0;
+    glm::vec3 mLastForce{0.0f};
+    glm::vec3 mLastDelta{0.0f};
+    float mFirstSwing = 0.0f;
+    int mAlternatingTicks = 0;
+    VertexId mLastTouched = kNoVertex;  // the fan watched while the search finds no vertex
+    std::size_t mSampleCursor = 0;
+};
+
+}  // namespace palpate

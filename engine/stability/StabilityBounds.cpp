@@ -1,0 +1,125 @@
+#include "engine/stability/StabilityBounds.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace palpate {
+
+double slopeRingMaxGain(double alpha) { return alpha > 0.0 ? 2.0 / alpha - 1.0 : kNoBound; }
+
+double slopeRingMaxRelaxation(double gain) { return 2.0 / (1.0 + gain); }
+
+double slopeRingMargin(double alpha, double gain) { return 1.0 - alpha * (1.0 + gain) / 2.0; }
+
+double symplecticEulerMaxStepS(double omega, double gamma) {
+    // The step matrix of (u, w) has trace 1 + c - c h^2 omega^2 and determinant c = 1 / (1 + h gamma);
+    // Jury's conditions leave 1 + trace + det > 0, i.e. h^2 omega^2 < 4 + 2 h gamma. Solved for h.
+    if (!(omega > 0.0)) return kNoBound;
+    return (gamma + std::sqrt(gamma * gamma + 4.0 * omega * omega)) / (omega * omega);
+}
+
+double rk4MaxStepS(double omega) { return omega > 0.0 ? 2.0 * std::sqrt(2.0) / omega : kNoBound; }
+
+double forwardEulerMaxStepS(double omega, double gamma) {
+    if (!(omega > 0.0)) return gamma > 0.0 ? 2.0 / gamma : kNoBound;
+    const double disc = gamma * gamma / 4.0 - omega * omega;
+    if (disc <= 0.0) return gamma / (omega * omega);  // complex pair: |lambda|^2 = omega^2
+    // Two real negative eigenvalues: the faster one limits, h < 2 / |lambda_fast|.
+    return 2.0 / (gamma / 2.0 + std::sqrt(disc));
+}
+
+double massSpringOmegaMaxRadPerS(const TissueMesh& mesh, const MassSpringParams& p, VertexId touched) {
+    // The stiffness is isotropic except the contact's k_c n n^T on the touched vertex, so the top
+    // eigenvalue is that of the scalar n x n matrix k_a I + k_e L + k_c e_t e_t^T (L the graph
+    // Laplacian). Power iteration; the Rayleigh quotient converges with the square of the vector.
+    const std::size_t n = mesh.vertexCount();
+    const auto& start = mesh.neighbourStart();
+    const auto& nb = mesh.neighbours();
+    std::vector<double> x(n), y(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] = ((i * 2654435761u) % 1000) / 1000.0 - 0.5 + (i % 2 ? 0.3 : -0.3);
+    double lambda = 0.0;
+    for (int iteration = 0; iteration < 20000; ++iteration) {
+        double norm = 0.0;
+        for (std::size_t i = 0; i < n; ++i) norm += x[i] * x[i];
+        norm = std::sqrt(norm);
+        for (double& v : x) v /= norm;
+        double rayleigh = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            double s = p.anchorStiffnessNPerMm * x[i];
+            for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) s += p.edgeStiffnessNPerMm * (x[i] - x[nb[k]]);
+            if (i == touched) s += p.contactStiffnessNPerMm * x[i];
+            y[i] = s;
+            rayleigh += s * x[i];
+        }
+        std::swap(x, y);
+        if (iteration > 50 && std::abs(rayleigh - lambda) <= 1e-13 * rayleigh) {
+            lambda = rayleigh;
+            break;
+        }
+        lambda = rayleigh;
+    }
+    return std::sqrt(1000.0 * lambda / p.vertexMassKg);
+}
+
+double massSpringOmegaGershgorinRadPerS(const TissueMesh& mesh, const MassSpringParams& p) {
+    const auto& start = mesh.neighbourStart();
+    double row = 0.0;
+    for (std::size_t i = 0; i + 1 < start.size(); ++i)
+        row = std::max(row, p.anchorStiffnessNPerMm + 2.0 * p.edgeStiffnessNPerMm * double(start[i + 1] - start[i]) +
+                                p.contactStiffnessNPerMm);
+    return std::sqrt(1000.0 * row / p.vertexMassKg);
+}
+
+double passiveMaxStiffnessNPerMm(double b, double periodS, double virtualDamping) {
+    const double slack = b - std::abs(virtualDamping);
+    return slack > 0.0 && periodS > 0.0 ? 2.0 * slack / periodS : 0.0;
+}
+
+double inversionMaxTangentialForceN(double m1, double m2, double height) {
+    const double relative = std::abs(std::abs(m1) - std::abs(m2));
+    return relative > 0.0 ? height / relative : kNoBound;
+}
+
+double inversionMaxForceAlongNormalN(const TissueMesh& mesh, VertexId v, double m1, double m2) {
+    const double relative = std::abs(m1) - std::abs(m2);
+    if (!(relative > 0.0)) return kNoBound;
+    const auto& start = mesh.neighbourStart();
+    const auto& nb = mesh.neighbours();
+    const auto& rest = mesh.restPositionsMm();
+    const glm::dvec3 n(mesh.restNormals()[v]), t(rest[v]);
+    double best = kNoBound;
+    for (std::uint32_t i = start[v]; i < start[v + 1]; ++i)
+        for (std::uint32_t k = i + 1; k < start[v + 1]; ++k) {
+            const VertexId a = nb[i], b = nb[k];
+            if (!std::binary_search(nb.begin() + start[a], nb.begin() + start[a + 1], b)) continue;
+            const glm::dvec3 pa(rest[a]), pb(rest[b]);
+            const glm::dvec3 normal = glm::cross(pa - t, pb - t);
+            // v moves by delta n with delta = -relative F: the normal becomes N - delta n x (b - a).
+            const double denominator = glm::dot(normal, glm::cross(n, pb - pa));
+            if (denominator == 0.0) continue;
+            const double delta = glm::dot(normal, normal) / denominator;
+            const double force = -delta / relative;
+            if (force > 0.0) best = std::min(best, force);
+        }
+    return best;
+}
+
+double minHeightOverOppositeEdgeMm(const TissueMesh& mesh, VertexId v) {
+    const auto& rest = mesh.restPositionsMm();
+    double best = kNoBound;
+    for (const auto& t : mesh.triangles()) {
+        int k = t[0] == v ? 0 : t[1] == v ? 1 : t[2] == v ? 2 : -1;
+        if (k < 0) continue;
+        const glm::dvec3 p(rest[v]), a(rest[t[(k + 1) % 3]]), b(rest[t[(k + 2) % 3]]);
+        const glm::dvec3 edge = b - a;
+        const double len = glm::length(edge);
+        if (len <= 0.0) continue;
+        best = std::min(best, glm::length(glm::cross(p - a, edge)) / len);
+    }
+    return best;
+}
+
+}  // namespace palpate

@@ -1,0 +1,17 @@
+#pragma once
+// A stability map as a PNG, for palpate-cli stability --png (a process with no QApplication): the
+// cells coloured bounded/divergent, the derived boundary drawn over them as a line and the measured
+// one as markers, log axes where the map's axes are log.
+
+#include "engine/stability/StabilityMap.h"
+
+#include <string>
+
+namespace palpate {
+
+/// Renders `map` into a widthPx x heightPx PNG at `path`. Creates an offscreen QGuiApplication if
+/// the process has no Qt application. Returns false and sets `error` when it cannot.
+bool renderStabilityMapPng(const StabilityMap& map, const std::string& path, std::string* error,
+                           int widthPx = 1000, int heightPx = 800);
+
+}  // namespace palpate
