@@ -200,7 +200,10 @@ void ChartsPanel::setCurrentConfiguration(const TissuePreset& applied, const Too
 }
 
 void ChartsPanel::updateHighlight() {
-    const std::string series = sweepSeriesName(mApplied.method, mApplied.params.ringCount);
+    // Slope-ring methods are charted per ring count; every other model is one series by its name.
+    const std::string series = mApplied.modelKind == ModelKind::SlopeRing
+                                   ? sweepSeriesName(mApplied.method, mApplied.params.ringCount)
+                                   : presetModelName(mApplied);
     mChart->setHighlight(series, mMeshVertices);
     const QString name = series.empty() ? tr("%1 with %2 rings")
                                               .arg(QString::fromLatin1(methodName(mApplied.method).data(),

@@ -554,6 +554,20 @@ void MainWindow::showStatus() {
     const ObservedLoop& o = mSession->observed();
     const LoopCounters& c = o.counters;
     const bool observed = o.publishCount > 0;
+    // The loop's divergence guard zeroed the force and reset the tissue (docs/stability.md): say
+    // what happened and what to change, and put it in the recording.
+    if (c.divergences < mSeenDivergences) mSeenDivergences = 0;  // a new loop counts from zero
+    if (c.divergences > mSeenDivergences) {
+        mSeenDivergences = c.divergences;
+        const QString what = tr("The tissue model diverged (%1) at tick %2: the force was zeroed and the tissue reset. %3")
+                                 .arg(QString::fromUtf8(divergenceKindName(c.lastDivergence)))
+                                 .arg(c.lastDivergenceTick)
+                                 .arg(QString::fromUtf8(divergenceAdvice(c.lastDivergence)));
+        statusBar()->showMessage(what, 20000);
+        if (RecordingSession* recording = mSession->recordingSession())
+            recording->mark(std::string("divergence: ") + divergenceKindName(c.lastDivergence) + ": " +
+                            divergenceAdvice(c.lastDivergence));
+    }
     if (!observed)
         mRateLabel->setText(tr("haptic -"));
     else if (mSession->mode() == LoopMode::Stepped)

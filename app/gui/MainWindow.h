@@ -159,6 +159,7 @@ private:
     std::chrono::steady_clock::time_point mRateBaselineReadAt{};
     QElapsedTimer mFrameClock;
     std::uint64_t mRateBaselineFrames = 0;
+    std::uint64_t mSeenDivergences = 0;  ///< divergence-guard events already reported to the user
     double mHapticRateHz = 0.0;
     double mFrameRateFps = 0.0;
 

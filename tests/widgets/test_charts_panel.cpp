@@ -205,6 +205,21 @@ TEST(ChartsPanel, RunsATinySweepOffTheGuiThreadToCompletion) {
     EXPECT_TRUE(panel.findChild<QPushButton*>(QStringLiteral("saveSweepCsvButton"))->isEnabled());
 }
 
+TEST(ChartsPanel, HighlightsAModelOtherThanSlopeRingByItsName) {
+    ChartsPanel panel;
+    SweepDef def = tinySweep();
+    def.maxRings = 1;
+    def.otherModels = true;  // 1 slope-ring point and one per other model
+    QSignalSpy finished(&panel, &ChartsPanel::sweepFinished);
+    ASSERT_TRUE(panel.startSweep(def));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 120000);
+    TissuePreset applied;
+    setPresetModel(applied, *modelDefForName("radius-of-influence"));
+    panel.setCurrentConfiguration(applied, ParameterPanel::toolContactOf(applied), 1442);
+    EXPECT_EQ(panel.chart()->highlightMarkCount(), 1);
+    EXPECT_TRUE(panel.chart()->seriesNames().contains(QStringLiteral("radius-of-influence")));
+}
+
 TEST(ChartsPanel, CancelRightAfterStartFinishesCancelledWithFewerPoints) {
     ChartsPanel panel;
     QSignalSpy finished(&panel, &ChartsPanel::sweepFinished);
