@@ -36,9 +36,9 @@ std::optional<ExerciseAssets> loadExerciseAssets(const Exercise& exercise, const
         errors.push_back(source + ": " + error);
         return std::nullopt;
     }
-    if (exercise.type == ExerciseType::FindLump && a.preset.method != SlopeRingMethod::Palpate) {
-        errors.push_back(source + ": tissue_preset: " + a.presetPath + " uses the " +
-                         std::string(methodName(a.preset.method)) +
+    if (exercise.type == ExerciseType::FindLump &&
+        (a.preset.modelKind != ModelKind::SlopeRing || a.preset.method != SlopeRingMethod::Palpate)) {
+        errors.push_back(source + ": tissue_preset: " + a.presetPath + " uses the " + presetModelName(a.preset) +
                          " model; the find-the-lump inclusion needs the palpate model");
         return std::nullopt;
     }
@@ -48,7 +48,7 @@ std::optional<ExerciseAssets> loadExerciseAssets(const Exercise& exercise, const
 std::unique_ptr<HapticScene> createExerciseScene(const ExerciseAssets& a, std::string& error) {
     std::unique_ptr<HapticScene> scene;
     try {
-        scene = HapticScene::createSlopeRing(*a.mesh, a.preset.params, a.preset.method, a.preset.octree);
+        scene = HapticScene::create(*a.mesh, a.preset);
     } catch (const std::exception& e) {
         error = a.exercise.name + ": the scene cannot be built: " + e.what();
         return nullptr;

@@ -38,8 +38,8 @@ struct ExerciseAssets {
 std::optional<ExerciseAssets> loadExerciseAssets(const Exercise& exercise, const ResourceFinder& findResource,
                                                  std::vector<std::string>& errors);
 
-/// A scene on the exercise's mesh with its preset's model, parameters and octree, and the
-/// exercise's physics applied. Null with `error` on failure.
+/// A scene on the exercise's mesh with its preset's model (any registry model for press targets
+/// and trace), parameters and octree, and the exercise's physics applied. Null with `error`.
 std::unique_ptr<HapticScene> createExerciseScene(const ExerciseAssets& assets, std::string& error);
 
 /// makeRecordingHeader for the exercise's scene, with a note that carries the exercise (its paths

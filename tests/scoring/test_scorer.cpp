@@ -2,6 +2,7 @@
 // SyntheticTicks.h: a flat 10 mm grid, ticks of exactly 2^-10 s).
 #include "engine/scoring/Scorer.h"
 #include "tests/scoring/SyntheticTicks.h"
+#include "tests/support/AllocationCounter.h"
 
 #include <gtest/gtest.h>
 
@@ -230,6 +231,21 @@ TEST(Scorer, TimeLimitAndPauseAndLateMark) {
         later.addSample(sampleAt(t, {20, 20, 1}, 12, false, 0.0f));
     }
     EXPECT_FALSE(later.guidance().marked);
+}
+
+TEST(Scorer, SamplesAllocateNothing) {
+    Exercise e = test::gridExercise(ExerciseType::Trace);
+    e.trace.path.resize(2);
+    e.trace.path[0].vertex = 10;
+    e.trace.path[1].vertex = 14;
+    Scorer scorer(place(e), kTickS);
+    std::vector<ScoreSample> samples;
+    for (std::uint64_t t = 1; t <= 2000; ++t)
+        samples.push_back(sampleAt(t, {float(t % 400) * 0.1f, 21.0f, -1.0f}, 12, t % 7 != 0, 1.0f, t > 1000 ? 1u : 0u));
+    scorer.addMark(1500);
+    test::AllocationCounter counter;
+    for (const ScoreSample& s : samples) scorer.addSample(s);
+    EXPECT_EQ(counter.count(), 0u);
 }
 
 }  // namespace
