@@ -1,5 +1,7 @@
 #include "engine/TissuePreset.h"
 
+#include "engine/AtomicFile.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -450,21 +452,7 @@ std::string tissuePresetToJson(const TissuePreset& preset) {
 }
 
 std::string saveTissuePreset(const TissuePreset& preset, const std::string& path) {
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) return path + ": cannot be written";
-        out << tissuePresetToJson(preset);
-        out.flush();
-        if (!out) return path + ": writing failed";
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    if (ec) {
-        std::filesystem::remove(temporary, ec);
-        return path + ": cannot be replaced: " + ec.message();
-    }
-    return {};
+    return writeFileAtomically(path, tissuePresetToJson(preset));
 }
 
 }  // namespace palpate

@@ -25,5 +25,7 @@ private:
 
 /// Parses a positive integer, or returns nullopt.
 std::optional<long long> parsePositiveInt(const std::string& text);
+/// Parses a whole finite number ("1.5", "2e3"), or returns nullopt.
+std::optional<double> parseNumber(const std::string& text);
 
 }  // namespace palpate::cli

@@ -18,19 +18,6 @@
 
 namespace palpate::cli {
 
-namespace {
-std::optional<double> parseNumber(const std::string& text) {
-    try {
-        std::size_t used = 0;
-        const double v = std::stod(text, &used);
-        if (used != text.size() || !std::isfinite(v)) return std::nullopt;
-        return v;
-    } catch (...) {
-        return std::nullopt;
-    }
-}
-}  // namespace
-
 int loopCommand(const std::vector<std::string>& words) {
     Args args(words, {"json", "no-fifo"}, {"seconds", "rate", "observer-hz", "device", "mesh", "spin-fraction", "csv"});
     if (!args.ok()) {

@@ -7,16 +7,6 @@
 
 namespace palpate::cli {
 
-namespace {
-
-bool parseNumber(const std::string& text, double& out) {
-    char* end = nullptr;
-    out = std::strtod(text.c_str(), &end);
-    return end && *end == '\0' && end != text.c_str() && std::isfinite(out);
-}
-
-}  // namespace
-
 std::vector<std::string> toolContactOptionNames() { return {"preset", "youngs-kpa", "poisson", "tool-radius"}; }
 
 ToolContactChoice toolContactFromArgs(const Args& args) {
@@ -50,12 +40,12 @@ ToolContactChoice toolContactFromArgs(const Args& args) {
                                   {"tool-radius", &c.contact.toolRadiusMm, 1.0}};
     for (const Override& o : overrides) {
         if (const auto text = args.option(o.name)) {
-            double value = 0.0;
-            if (!parseNumber(*text, value)) {
+            const auto value = parseNumber(*text);
+            if (!value) {
                 c.error = std::string("--") + o.name + ": '" + *text + "' is not a number";
                 return c;
             }
-            *o.target = value * o.scale;
+            *o.target = *value * o.scale;
             c.source = "command line";
         }
     }

@@ -1,5 +1,6 @@
 #include "engine/scoring/ExerciseFile.h"
 
+#include "engine/AtomicFile.h"
 #include "engine/record/RecordingFormat.h"
 
 #include <nlohmann/json.hpp>
@@ -338,21 +339,7 @@ std::string saveExercise(const Exercise& exercise, const std::string& path) {
         for (const auto& p : problems) text += "\n  " + p;
         return text;
     }
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) return path + ": cannot be written";
-        out << exerciseToJson(exercise);
-        out.flush();
-        if (!out) return path + ": writing failed";
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    if (ec) {
-        std::filesystem::remove(temporary, ec);
-        return path + ": cannot be replaced: " + ec.message();
-    }
-    return {};
+    return writeFileAtomically(path, exerciseToJson(exercise));
 }
 
 std::string resolveExercisePath(const Exercise& exercise, const std::string& path, const ResourceFinder& findResource) {
