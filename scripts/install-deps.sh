@@ -10,7 +10,7 @@ packages=(
   libopenmesh-dev libglm-dev nlohmann-json3-dev libeigen3-dev
   libhidapi-dev libusb-1.0-0-dev umockdev libumockdev-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth
+  xvfb xauth poppler-utils
 )
 
 missing=()

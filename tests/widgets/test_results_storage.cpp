@@ -1,0 +1,286 @@
+// The results database and the score report PDF under QT_QPA_PLATFORM=offscreen: a database closed
+// and reopened gives back what was stored; a version-1 file is migrated to version 2 with its rows
+// kept; a newer schema, a file that is not a database and a folder that does not exist are refused
+// with a message naming the file; the PDF is written and pdftotext reads the score and the trainee.
+#include "widgets/ResultsDatabase.h"
+#include "widgets/ScoreReportPdf.h"
+
+#include <QApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLocale>
+#include <QProcess>
+#include <QSqlDatabase>
+#include <QSqlQuery>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace palpate;
+
+namespace {
+
+ScoreReport sampleReport(double score) {
+    ScoreReport r;
+    r.exerciseName = "Press two targets";
+    r.type = ExerciseType::PressTargets;
+    r.score = score;
+    auto add = [&](Metric m, double value, double sub, double weight, double contribution) {
+        MetricResult line;
+        line.metric = m;
+        line.value = value;
+        line.subScore = sub;
+        line.weight = weight;
+        line.contribution = contribution;
+        r.metrics.push_back(line);
+    };
+    add(Metric::Completion, 1.0, 1.0, 3.0, 50.0);
+    add(Metric::TimeS, 12.5, 0.6, 1.0, 10.0);
+    add(Metric::PeakForceN, 2.4, 0.4, 2.0, 12.5);
+    r.guidance.completed = true;
+    r.guidance.forceMinN = 1.0;
+    r.guidance.forceMaxN = 2.0;
+    return r;
+}
+
+/// Runs SQL on a file with a connection of the test's own (to build or damage files by hand).
+void execOn(const QString& path, const QStringList& statements) {
+    const QString name = QStringLiteral("test-%1").arg(qHash(path));
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), name);
+        db.setDatabaseName(path);
+        ASSERT_TRUE(db.open());
+        QSqlQuery q(db);
+        for (const QString& s : statements) ASSERT_TRUE(q.exec(s)) << s.toStdString();
+        q.finish();
+        db.close();
+    }
+    QSqlDatabase::removeDatabase(name);
+}
+
+}  // namespace
+
+TEST(ResultsDatabase, SurvivesCloseAndReopen) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("results.sqlite"));
+    const QDateTime t1 = QDateTime(QDate(2026, 3, 1), QTime(10, 0, 0, 250), Qt::UTC);
+    const QDateTime t2 = t1.addSecs(3600);
+    qint64 alice = -1, bob = -1;
+    std::vector<ResultRecord> before;
+    {
+        ResultsDatabase db;
+        QString error;
+        ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
+        EXPECT_EQ(db.schemaVersion(), ResultsDatabase::kSchemaVersion);
+        alice = db.addTrainee(QStringLiteral("Alice"), &error);
+        bob = db.addTrainee(QStringLiteral("Bob"), &error);
+        ASSERT_GE(alice, 0) << error.toStdString();
+        ASSERT_GE(bob, 0);
+        EXPECT_NE(alice, bob);
+        EXPECT_EQ(db.addTrainee(QStringLiteral("Alice")), alice);  // an existing name gives its id
+        // Stored out of order: results() gives them oldest first.
+        ASSERT_GE(db.addResult(alice, sampleReport(81.5), QStringLiteral("Press"), QStringLiteral("/ex/press.json"),
+                               t2, 14.0, QStringLiteral("/rec/b.palprec"), &error), 0)
+            << error.toStdString();
+        ASSERT_GE(db.addResult(alice, sampleReport(64.25), QStringLiteral("Press"), QStringLiteral("/ex/press.json"),
+                               t1, 20.5, QString(), &error), 0)
+            << error.toStdString();
+        ASSERT_GE(db.addResult(bob, sampleReport(40.0), QStringLiteral("Trace"), QStringLiteral("/ex/trace.json"),
+                               t1, 30.0, QString(), &error), 0);
+        EXPECT_LT(db.addResult(9999, sampleReport(1.0), QStringLiteral("X"), QString(), t1, 1.0, QString(), &error), 0);
+        EXPECT_TRUE(error.contains(QStringLiteral("9999"))) << error.toStdString();
+        before = db.results(alice);
+        ASSERT_EQ(before.size(), 2u);
+        EXPECT_EQ(before[0].startedUtc, t1);
+        EXPECT_EQ(before[1].startedUtc, t2);
+        EXPECT_DOUBLE_EQ(before[0].score, 64.25);
+        EXPECT_EQ(before[1].recordingPath, QStringLiteral("/rec/b.palprec"));
+        const QJsonObject metrics = QJsonDocument::fromJson(before[1].metricsJson.toUtf8()).object();
+        EXPECT_DOUBLE_EQ(metrics.value(QStringLiteral("peak_force_n")).toDouble(), 2.4);
+        const QJsonObject rubric = QJsonDocument::fromJson(before[1].rubricJson.toUtf8()).object();
+        EXPECT_DOUBLE_EQ(rubric.value(QStringLiteral("completion")).toObject().value(QStringLiteral("contribution")).toDouble(),
+                         50.0);
+    }
+    ResultsDatabase db;
+    QString error;
+    ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
+    const std::vector<TraineeRecord> trainees = db.trainees();
+    ASSERT_EQ(trainees.size(), 2u);
+    EXPECT_EQ(trainees[0].name, QStringLiteral("Alice"));
+    EXPECT_EQ(trainees[0].id, alice);
+    EXPECT_EQ(trainees[1].name, QStringLiteral("Bob"));
+    EXPECT_TRUE(trainees[0].created.isValid());
+    const std::vector<ResultRecord> after = db.results(alice);
+    ASSERT_EQ(after.size(), before.size());
+    for (std::size_t i = 0; i < after.size(); ++i) {
+        EXPECT_EQ(after[i].id, before[i].id);
+        EXPECT_EQ(after[i].traineeId, alice);
+        EXPECT_EQ(after[i].exerciseName, before[i].exerciseName);
+        EXPECT_EQ(after[i].exercisePath, before[i].exercisePath);
+        EXPECT_EQ(after[i].startedUtc, before[i].startedUtc);
+        EXPECT_EQ(after[i].durationS, before[i].durationS);
+        EXPECT_EQ(after[i].score, before[i].score);
+        EXPECT_EQ(after[i].metricsJson, before[i].metricsJson);
+        EXPECT_EQ(after[i].rubricJson, before[i].rubricJson);
+        EXPECT_EQ(after[i].recordingPath, before[i].recordingPath);
+    }
+    EXPECT_EQ(db.results(bob).size(), 1u);
+}
+
+TEST(ResultsDatabase, TwoInstancesAtOnce) {
+    QTemporaryDir dir;
+    ResultsDatabase a, b;
+    QString error;
+    ASSERT_TRUE(a.open(dir.filePath(QStringLiteral("a.sqlite")), &error)) << error.toStdString();
+    ASSERT_TRUE(b.open(dir.filePath(QStringLiteral("b.sqlite")), &error)) << error.toStdString();
+    EXPECT_GE(a.addTrainee(QStringLiteral("Only in a")), 0);
+    EXPECT_EQ(a.trainees().size(), 1u);
+    EXPECT_EQ(b.trainees().size(), 0u);
+}
+
+TEST(ResultsDatabase, MigratesVersion1KeepingRows) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("v1.sqlite"));
+    QString error;
+    ASSERT_TRUE(ResultsDatabase::createVersion1(path, &error)) << error.toStdString();
+    execOn(path, {QStringLiteral("INSERT INTO trainees (name, created) VALUES ('Carol', '2025-01-02T03:04:05.000Z')"),
+                  QStringLiteral("INSERT INTO results (trainee_id, exercise_name, exercise_path, started_utc,"
+                                 " duration_s, score, metrics_json, rubric_json) VALUES (1, 'Lump', '/ex/lump.json',"
+                                 " '2025-01-02T04:00:00.000Z', 42.5, 77.5, '{\"completion\":1}', '{}')")});
+    ResultsDatabase db;
+    ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
+    EXPECT_EQ(db.schemaVersion(), 2);
+    const std::vector<TraineeRecord> trainees = db.trainees();
+    ASSERT_EQ(trainees.size(), 1u);
+    EXPECT_EQ(trainees[0].name, QStringLiteral("Carol"));
+    std::vector<ResultRecord> rows = db.results(trainees[0].id);
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0].exerciseName, QStringLiteral("Lump"));
+    EXPECT_DOUBLE_EQ(rows[0].score, 77.5);
+    EXPECT_DOUBLE_EQ(rows[0].durationS, 42.5);
+    EXPECT_EQ(rows[0].metricsJson, QStringLiteral("{\"completion\":1}"));
+    EXPECT_EQ(rows[0].recordingPath, QString());
+    EXPECT_EQ(rows[0].startedUtc, QDateTime(QDate(2025, 1, 2), QTime(4, 0), Qt::UTC));
+    // The new column is usable.
+    ASSERT_GE(db.addResult(trainees[0].id, sampleReport(90.0), QStringLiteral("Lump"), QStringLiteral("/ex/lump.json"),
+                           QDateTime(QDate(2025, 2, 1), QTime(9, 0), Qt::UTC), 10.0, QStringLiteral("/r.palprec"),
+                           &error), 0)
+        << error.toStdString();
+    db.close();
+    ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
+    rows = db.results(trainees[0].id);
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows[1].recordingPath, QStringLiteral("/r.palprec"));
+}
+
+TEST(ResultsDatabase, RefusesNewerSchema) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("future.sqlite"));
+    {
+        ResultsDatabase db;
+        ASSERT_TRUE(db.open(path));
+        ASSERT_GE(db.addTrainee(QStringLiteral("Dan")), 0);
+    }
+    execOn(path, {QStringLiteral("PRAGMA user_version = 3")});
+    ResultsDatabase db;
+    QString error;
+    EXPECT_FALSE(db.open(path, &error));
+    EXPECT_FALSE(db.isOpen());
+    EXPECT_TRUE(error.contains(path)) << error.toStdString();
+    EXPECT_TRUE(error.contains(QStringLiteral("newer"))) << error.toStdString();
+    EXPECT_TRUE(error.contains(QStringLiteral("3"))) << error.toStdString();
+    EXPECT_EQ(db.lastError(), error);
+}
+
+TEST(ResultsDatabase, RefusesGarbageAndForeignFiles) {
+    QTemporaryDir dir;
+    const QString garbage = dir.filePath(QStringLiteral("garbage.sqlite"));
+    {
+        QFile f(garbage);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(QByteArray(4096, 'x'));
+    }
+    ResultsDatabase db;
+    QString error;
+    EXPECT_FALSE(db.open(garbage, &error));
+    EXPECT_TRUE(error.contains(garbage)) << error.toStdString();
+    EXPECT_TRUE(error.contains(QStringLiteral("not a"))) << error.toStdString();
+    // The garbage is left as it was.
+    EXPECT_EQ(QFileInfo(garbage).size(), 4096);
+
+    const QString foreign = dir.filePath(QStringLiteral("other.sqlite"));
+    execOn(foreign, {QStringLiteral("CREATE TABLE something (x INTEGER)")});
+    EXPECT_FALSE(db.open(foreign, &error));
+    EXPECT_TRUE(error.contains(foreign)) << error.toStdString();
+
+    const QString nowhere = dir.filePath(QStringLiteral("no/such/folder/results.sqlite"));
+    EXPECT_FALSE(db.open(nowhere, &error));
+    EXPECT_TRUE(error.contains(nowhere)) << error.toStdString();
+    EXPECT_TRUE(error.contains(QStringLiteral("does not exist"))) << error.toStdString();
+    EXPECT_FALSE(QFileInfo::exists(nowhere));
+
+    // Still usable after the failures.
+    EXPECT_TRUE(db.open(dir.filePath(QStringLiteral("good.sqlite")), &error)) << error.toStdString();
+}
+
+TEST(ScoreReportPdf, WritesReadableText) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("report.pdf"));
+    std::vector<std::pair<double, double>> series;
+    for (int i = 0; i <= 400; ++i) {
+        const double t = i * 0.05;
+        series.emplace_back(t, 1.5 + std::sin(t) * 0.8);
+    }
+    const ScoreReport report = sampleReport(72.5);
+    QString error;
+    ASSERT_TRUE(writeScoreReportPdf(path, QStringLiteral("Erika Mustermann"), QStringLiteral("Press two targets"),
+                                    report, series, &error))
+        << error.toStdString();
+    ASSERT_TRUE(QFileInfo::exists(path));
+    EXPECT_GT(QFileInfo(path).size(), 1000);
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(f.read(5).startsWith("%PDF-"));
+
+    // Without a series the plot is left out; still a valid file.
+    const QString noPlot = dir.filePath(QStringLiteral("noplot.pdf"));
+    ASSERT_TRUE(writeScoreReportPdf(noPlot, QStringLiteral("X"), QStringLiteral("Y"), ScoreReport{}, {}, &error))
+        << error.toStdString();
+    EXPECT_GT(QFileInfo(noPlot).size(), 0);
+
+    const QString nowhere = dir.filePath(QStringLiteral("no/such/report.pdf"));
+    EXPECT_FALSE(writeScoreReportPdf(nowhere, QStringLiteral("X"), QStringLiteral("Y"), report, series, &error));
+    EXPECT_TRUE(error.contains(nowhere)) << error.toStdString();
+
+    const QString pdftotext = QStandardPaths::findExecutable(QStringLiteral("pdftotext"));
+    if (pdftotext.isEmpty()) GTEST_SKIP() << "pdftotext not installed (poppler-utils): the PDF's text is not checked";
+    QProcess proc;
+    proc.start(pdftotext, {path, QStringLiteral("-")});
+    ASSERT_TRUE(proc.waitForFinished(30000));
+    ASSERT_EQ(proc.exitCode(), 0) << proc.readAllStandardError().toStdString();
+    // pdftotext guesses lines and columns: compare with runs of white space collapsed, and the
+    // exercise name word by word (its reading order beside the date line is pdftotext's choice).
+    const QString text = QString::fromUtf8(proc.readAllStandardOutput()).simplified();
+    EXPECT_TRUE(text.contains(QStringLiteral("Erika Mustermann"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Score: %1 / 100").arg(QLocale().toString(72.5, 'f', 1))))
+        << text.toStdString();
+    for (const char* word : {"Press", "two", "targets"}) EXPECT_TRUE(text.contains(QLatin1String(word))) << word;
+    EXPECT_TRUE(text.contains(QStringLiteral("peak_force_n"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Contribution"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Time (s)"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("force window"))) << text.toStdString();
+}
+
+int main(int argc, char** argv) {
+    // Before QApplication: the platform is chosen in its constructor. No GPU, no display needed.
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
