@@ -277,6 +277,7 @@ void MeshViewport::paintGL() {
     QOpenGLPaintDevice device(QSize(qRound(width() * dpr), qRound(height() * dpr)));
     device.setDevicePixelRatio(dpr);
     QPainter painter(&device);
+    paintExerciseMarkers(painter, mExerciseMarkers, mCamera, size());
     paintSceneOverlay(painter, mScene, mCamera, size(), mShowRestGhost);
     countFrame();
 }

@@ -135,6 +135,7 @@ void SoftwareViewport::paintScene(QPainter& painter, QSize sizePx) {
         corners[2] = {mProjected[c].xPx, mProjected[c].yPx};
         painter.drawConvexPolygon(corners, 3);
     }
+    paintExerciseMarkers(painter, mExerciseMarkers, mCamera, sizePx);
     paintSceneOverlay(painter, mScene, mCamera, sizePx, mShowRestGhost);
 }
 

@@ -83,16 +83,37 @@ void Viewport::touchAt(QPointF pointPx) {
     if (vertex && mTouchHandlers.moved) mTouchHandlers.moved(*vertex, pointPx);
 }
 
+void Viewport::setExerciseMarkers(ExerciseMarkers markers) {
+    mExerciseMarkers = std::move(markers);
+    sceneChanged(false);
+}
+
 bool Viewport::handleMousePress(const QMouseEvent& event) {
     mLastDragPx = event.position();
+    mPressPx = event.position();
+    mClickCandidate = false;
     if (mTouchMode && event.button() == Qt::LeftButton) {
         mTouching = true;
         touchAt(event.position());
+    } else if (mPickHandler && event.button() == Qt::LeftButton) {
+        mClickCandidate = true;
     }
     return false;
 }
 
 bool Viewport::handleMouseRelease(const QMouseEvent& event) {
+    if (mClickCandidate && event.button() == Qt::LeftButton) {
+        mClickCandidate = false;
+        const QPointF d = event.position() - mPressPx;
+        if (std::hypot(d.x(), d.y()) < kClickSlopPx && mPickHandler) {
+            if (const auto vertex = pickVertexAt(event.position(), widget()->size())) {
+                // Copy first: the handler may replace itself (e.g. leave placing mode).
+                const auto handler = mPickHandler;
+                handler(*vertex);
+            }
+        }
+        return false;
+    }
     if (!mTouching || event.button() != Qt::LeftButton) return false;
     mTouching = false;
     if (mTouchHandlers.released) mTouchHandlers.released();

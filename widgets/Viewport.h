@@ -3,6 +3,7 @@
 // SoftwareViewport): where there is no OpenGL (Qt's offscreen platform, tests) the same scene,
 // camera and markers are drawn in software. The scene, camera and mouse handling live here, shared.
 
+#include "widgets/ExerciseMarkers.h"
 #include "widgets/OrbitCamera.h"
 #include "widgets/RenderScene.h"
 
@@ -81,6 +82,17 @@ public:
     void setTouchDepthMm(double depthMm);
     double touchDepthMm() const { return mTouchDepthMm; }
 
+    /// An exercise's markers (targets, path, inclusion, the trainee's mark) drawn over the mesh.
+    void setExerciseMarkers(ExerciseMarkers markers);
+    const ExerciseMarkers& exerciseMarkers() const { return mExerciseMarkers; }
+
+    /// Click-to-place (the instructor's exercise editor): while a handler is set, a left click
+    /// that does not drag (less than kClickSlopPx) picks the vertex under it and calls the handler
+    /// with it; a drag still orbits. Touch mode takes precedence. An empty function turns it off.
+    static constexpr double kClickSlopPx = 4.0;
+    void setPickHandler(std::function<void(VertexId)> handler) { mPickHandler = std::move(handler); }
+    bool pickHandlerSet() const { return bool(mPickHandler); }
+
     const OrbitCamera& camera() const { return mCamera; }
     const RenderScene& scene() const { return mScene; }
     /// Frames painted so far (on screen or grabbed): the window divides it by time for its fps.
@@ -104,12 +116,16 @@ protected:
     OrbitCamera mCamera;
     bool mWireframe = true;
     bool mShowRestGhost = false;
+    ExerciseMarkers mExerciseMarkers;
 
 private:
     void touchAt(QPointF pointPx);
 
     QPointF mLastDragPx;
     TouchHandlers mTouchHandlers;
+    std::function<void(VertexId)> mPickHandler;
+    QPointF mPressPx;
+    bool mClickCandidate = false;  // a left press with a pick handler that has not dragged yet
     bool mTouchMode = false;
     bool mTouching = false;
     double mTouchDepthMm = kDefaultTouchDepthMm;

@@ -51,8 +51,9 @@ std::string HapticSession::loadMesh(const std::string& path) {
     auto loaded = loadTissueMesh(path, error);
     if (!loaded) return error;
     auto mesh = std::make_shared<const TissueMesh>(std::move(*loaded));
+    if (path != mExercisePath) clearExercisePhysics();  // another mesh: the exercise's inclusion is not on it
     // The loop gets its own copy; ours stays for drawing (the loop may free its scene any time after a swap).
-    auto scene = makeScene(*mesh, error);
+    auto scene = makeScene(*mesh, path, error);
     if (!scene) return path + ": " + error;
     auto device = openDeviceFor(mDeviceUri, *mesh, error);
     if (!device) return error;
@@ -60,13 +61,58 @@ std::string HapticSession::loadMesh(const std::string& path) {
     return handOver(std::move(record), std::move(scene), std::move(device));
 }
 
-std::unique_ptr<HapticScene> HapticSession::makeScene(const TissueMesh& mesh, std::string& error) const {
+std::unique_ptr<HapticScene> HapticSession::makeScene(const TissueMesh& mesh, const std::string& path,
+                                                      std::string& error) const {
     try {
-        return HapticScene::create(TissueMesh(mesh), mPreset);  // any registry model (docs/models.md)
+        auto scene = HapticScene::create(TissueMesh(mesh), mPreset);  // any registry model (docs/models.md)
+        if (mExercisePhysics && path == mExercisePath) {
+            error = applyExercisePhysics(*mExercisePhysics, *scene);
+            if (!error.empty()) return nullptr;
+        }
+        return scene;
     } catch (const std::exception& e) {
         error = e.what();
         return nullptr;
     }
+}
+
+std::string HapticSession::loadExercise(const ExerciseAssets& assets) {
+    if (!assets.mesh || !assets.geometry) return assets.exercise.sourcePath + ": the exercise's mesh is not loaded";
+    // loadExerciseAssets validated the preset (its errors name the file and the key).
+    auto mesh = std::make_shared<const TissueMesh>(*assets.mesh);
+    const TissuePreset previousPreset = mPreset;
+    auto previousPhysics = mExercisePhysics;
+    const std::string previousPath = mExercisePath;
+    mPreset = assets.preset;
+    mExercisePhysics = assets.geometry;
+    mExercisePath = assets.meshPath;
+    std::string error;
+    auto scene = makeScene(*mesh, assets.meshPath, error);
+    std::unique_ptr<HapticDevice> device;
+    if (scene) device = openDeviceFor(mDeviceUri, *mesh, error);
+    if (!scene || !device) {
+        // Nothing changed in the loop: keep what ran before.
+        mPreset = previousPreset;
+        mExercisePhysics = std::move(previousPhysics);
+        mExercisePath = previousPath;
+        return assets.meshPath + ": " + error;
+    }
+    if (mLoop && preset().hapticRateHz != mDef.rateHz) {
+        // A new rate needs a new loop (as applyPreset does).
+        if (mRecording) stopRecording();
+        stop();
+        mMouse = nullptr;
+        mLoop.reset();
+        mPending = SceneRecord{};
+    }
+    mDef.rateHz = mPreset.hapticRateHz;
+    SceneRecord record{mesh, assets.meshPath, scene->id()};
+    return handOver(std::move(record), std::move(scene), std::move(device));
+}
+
+void HapticSession::clearExercisePhysics() {
+    mExercisePhysics.reset();
+    mExercisePath.clear();
 }
 
 std::string HapticSession::applyPreset(const TissuePreset& preset) {
@@ -100,7 +146,7 @@ std::string HapticSession::applyPreset(const TissuePreset& preset) {
     if (!needsScene) return mLoop->setParams(preset.params);
     const SceneRecord base = latest();
     std::string error;
-    auto scene = makeScene(*base.mesh, error);
+    auto scene = makeScene(*base.mesh, base.path, error);
     if (!scene) return base.path + ": " + error;
     const std::uint64_t sceneId = scene->id();
     if (std::string problem = swapSceneInLoop(std::move(scene), base); !problem.empty()) return problem;
@@ -140,7 +186,7 @@ std::string HapticSession::restart() {
 
 std::string HapticSession::handOverFresh(const SceneRecord& base) {
     std::string error;
-    auto scene = makeScene(*base.mesh, error);
+    auto scene = makeScene(*base.mesh, base.path, error);
     if (!scene) return base.path + ": " + error;
     auto device = openDeviceFor(mDeviceUri, *base.mesh, error);
     if (!device) return error;
@@ -240,6 +286,12 @@ void HapticSession::step(int ticks) {
             mRecording->flush();
             mStepsSinceFlush = 0;
         }
+    }
+    // Whoever follows the file (the exercise's live score) sees every stepped tick at once, as the
+    // writer's 25 ms drain gives it in real time.
+    if (mRecording && ticks > 0) {
+        mRecording->flush();
+        mStepsSinceFlush = 0;
     }
 }
 

@@ -10,6 +10,7 @@
 #include "engine/TissuePreset.h"
 #include "engine/TissueMesh.h"
 #include "engine/record/RecordingSession.h"
+#include "engine/scoring/ExerciseSession.h"
 
 #include <chrono>
 #include <cstdint>
@@ -73,6 +74,14 @@ public:
     /// at once; later ones are drawn from the first snapshot that shows them. On failure the current
     /// scene stays and the error (naming the file) is returned; "" on success.
     std::string loadMesh(const std::string& path);
+    /// Makes an exercise's mesh, tissue preset and physics (find the lump's inclusion) the loop's
+    /// scene, with a fresh device aimed at it. The physics stays with every later scene of that
+    /// mesh (restart, a new preset) until another mesh is loaded or clearExercisePhysics(). The
+    /// preset becomes this session's (a recording's header carries it). "" or why not.
+    std::string loadExercise(const ExerciseAssets& assets);
+    void clearExercisePhysics();
+    /// The exercise whose physics the scenes carry (null: none).
+    const std::shared_ptr<const ExerciseGeometry>& exercisePhysics() const { return mExercisePhysics; }
     /// Opens a device for `uri`, aims it at the current mesh and swaps it in. Before the first mesh
     /// the URI is only checked and remembered. "" or an error naming the URI; the old device stays.
     std::string setDevice(const std::string& uri);
@@ -156,7 +165,12 @@ public:
 
 private:
     TissuePreset mPreset;
-    std::unique_ptr<HapticScene> makeScene(const TissueMesh& mesh, std::string& error) const;
+    /// The exercise physics every scene of mExercisePath's mesh gets (makeScene).
+    std::shared_ptr<const ExerciseGeometry> mExercisePhysics;
+    std::string mExercisePath;
+    /// A scene of `mesh` (file `path`) with the session's preset, and the exercise's physics when
+    /// `path` is the exercise's mesh.
+    std::unique_ptr<HapticScene> makeScene(const TissueMesh& mesh, const std::string& path, std::string& error) const;
     struct SceneRecord {
         std::shared_ptr<const TissueMesh> mesh;  // our copy: what is drawn for this scene
         std::string path;

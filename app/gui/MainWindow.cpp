@@ -4,7 +4,11 @@
 #include "engine/HapticSnapshot.h"
 #include "engine/TissuePreset.h"
 #include "app/cli/DefaultScene.h"
+#include "app/gui/ExerciseController.h"
 #include "widgets/ChartsPanel.h"
+#include "widgets/HistoryPanel.h"
+#include "widgets/ScoreCard.h"
+#include "widgets/TraineePanel.h"
 #include "widgets/DevicePanel.h"
 #include "widgets/ParameterPanel.h"
 #include "widgets/RecorderPanel.h"
@@ -23,7 +27,9 @@
 #include <QUndoStack>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QKeySequence>
+#include <QScrollArea>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -170,6 +176,7 @@ void MainWindow::createDocks() {
     mChartsPanel->setDefaultCsv(QString::fromStdString(cli::findResource("../docs/bench/sweep.csv")));
     updateChartsConfiguration();
     createRecorderDock();
+    createExerciseDocks();
     mPanelSnapshot = std::make_unique<HapticSnapshot>();
 }
 
@@ -223,10 +230,12 @@ void MainWindow::restoreWindowState() {
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
+    setMode(settings.value("window/mode").toString() == QLatin1String("trainee") ? Mode::Trainee : Mode::Instructor);
 }
 
 void MainWindow::saveWindowState() {
     QSettings settings;
+    settings.setValue("window/mode", mMode == Mode::Trainee ? QStringLiteral("trainee") : QStringLiteral("instructor"));
     settings.setValue("window/geometry", saveGeometry());
     settings.setValue("window/state", saveState());
 }
@@ -304,6 +313,7 @@ void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QAction* open = file->addAction(tr("&Open Mesh…"), this, &MainWindow::openMeshDialog);
     open->setShortcut(QKeySequence::Open);
+    mOpenMeshAction = open;
     mRecentMenu = file->addMenu(tr("Open &Recent"));
     rebuildRecentMenu();
     file->addAction(tr("Open Recor&ding…"), this, &MainWindow::openRecordingDialog)
@@ -346,13 +356,15 @@ void MainWindow::createMenus() {
     view->addAction(mStatusDock->toggleViewAction());
     view->addAction(mChartsDock->toggleViewAction());
     view->addAction(mRecorderDock->toggleViewAction());
+    view->addAction(mExerciseDock->toggleViewAction());
+    view->addAction(mHistoryDock->toggleViewAction());
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     mPlayAction = simulation->addAction(tr("&Pause"), QKeySequence(Qt::Key_Space), this,
                                         [this](bool on) { setPlaying(on); });
     mPlayAction->setCheckable(true);
     mPlayAction->setChecked(isPlaying());
-    simulation->addAction(tr("&Restart"), QKeySequence(Qt::CTRL | Qt::Key_R), this, [this] {
+    mRestartAction = simulation->addAction(tr("&Restart"), QKeySequence(Qt::CTRL | Qt::Key_R), this, [this] {
         if (const QString error = restartSimulation(); !error.isEmpty())
             QMessageBox::warning(this, tr("Cannot restart"), error);
     });
@@ -398,6 +410,8 @@ void MainWindow::createMenus() {
         });
     }
     checkCurrentDevice();
+
+    createExerciseMenu();
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About Palpate"), this, &MainWindow::showAbout);
@@ -483,8 +497,17 @@ void MainWindow::releaseTouch() {
 }
 
 void MainWindow::advanceTicks(int ticks) {
+    // An exercise starts its recording once the loop runs its scene: step to that tick first, so
+    // that the ticks asked for are all recorded and scored.
+    if (mExercises->phase() == ExerciseController::Phase::Starting && ticks > 0) {
+        mSession->step(1);
+        present(mSession->observe());
+        mExercises->poll();
+        --ticks;
+    }
     mSession->step(ticks);
     present(mSession->observe());
+    mExercises->poll();
     mSession->collectRetired();
     showStatus();
 }
@@ -495,12 +518,16 @@ void MainWindow::setPlaying(bool playing) {
     mPlayAction->setText(playing ? tr("&Pause") : tr("&Play"));
 }
 
-void MainWindow::observeFrame() { present(mSession->observe()); }
+void MainWindow::observeFrame() {
+    present(mSession->observe());
+    mExercises->poll();
+}
 
 void MainWindow::present(HapticSession::Observation observation) {
     if (observation == HapticSession::Observation::Nothing) return;
     if (mPlayback) return;  // the viewport shows the recording; backToLive() draws the live state again
-    if (observation == HapticSession::Observation::SceneSwitched) showDrawnMesh();
+    // A switch, or the first scene of a loop that an exercise (not loadMesh) created.
+    if (observation == HapticSession::Observation::SceneSwitched || mSession->drawnMesh() != mShownMesh) showDrawnMesh();
     mViewport->setSnapshot(mSession->view());  // schedules the repaint
 }
 
@@ -681,6 +708,12 @@ QString MainWindow::stopRecording() {
 bool MainWindow::addRecordingMark(const QString& text) {
     RecordingSession* recording = mSession->recordingSession();
     if (!recording) return false;
+    // During an exercise, M is the trainee's mark (find the lump): the scorer reads it from the file.
+    if (mExercises->phase() == ExerciseController::Phase::Running && text.isEmpty()) {
+        mExercises->mark();
+        mRecorderPanel->noteMarkAdded(tr("mark (trainee)"));
+        return true;
+    }
     const QString mark = text.isEmpty() ? mRecorderPanel->nextMarkText() : text;
     recording->mark(mark.toStdString());
     mRecorderPanel->noteMarkAdded(mark);
@@ -783,6 +816,174 @@ void MainWindow::backToLive() {
     if (!mSession->drawnMesh()) mViewport->clearMesh();
     updateRecorder();
     showStatus();
+}
+
+void MainWindow::createExerciseDocks() {
+    mTraineePanel = new TraineePanel(this);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(mTraineePanel);
+    mExerciseDock = new QDockWidget(tr("Exercise"), this);
+    mExerciseDock->setObjectName(QStringLiteral("exerciseDock"));
+    mExerciseDock->setWidget(scroll);
+    addDockWidget(Qt::LeftDockWidgetArea, mExerciseDock);
+
+    mHistoryPanel = new HistoryPanel(this);
+    mHistoryDock = new QDockWidget(tr("History"), this);
+    mHistoryDock->setObjectName(QStringLiteral("historyDock"));
+    mHistoryDock->setWidget(mHistoryPanel);
+    addDockWidget(Qt::LeftDockWidgetArea, mHistoryDock);
+    tabifyDockWidget(mExerciseDock, mHistoryDock);
+    mExerciseDock->raise();
+
+    mExercises = new ExerciseController(*mSession, *mViewport, *mTraineePanel, *mHistoryPanel,
+                                        [this] { return mRecorderPanel->recordingFolder(); }, this);
+    connect(mExercises, &ExerciseController::runningChanged, this, &MainWindow::setExerciseRunning);
+    connect(mExercises, &ExerciseController::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
+    connect(mExercises, &ExerciseController::finished, this, [this] {
+        mExerciseDock->show();
+        mExerciseDock->raise();
+    });
+    connect(mExercises, &ExerciseController::recordingStateChanged, this, [this](bool recording, const QString& path) {
+        if (recording) {
+            mRecorderPanel->setRecordingStarted(path);
+        } else {
+            mRecorderPanel->setRecordingStopped(QString());
+            mRecorderPanel->showRecordingStats(mSession->lastRecordingStats());
+        }
+        updateRecorder();
+    });
+    connect(mTraineePanel, &TraineePanel::newTraineeRequested, this, &MainWindow::newTraineeDialog);
+    connect(mTraineePanel, &TraineePanel::openExerciseRequested, this, &MainWindow::openExerciseDialog);
+    connect(mTraineePanel->scoreCard(), &ScoreCard::exportPdfRequested, this, &MainWindow::exportScorePdfDialog);
+    connect(mTraineePanel->scoreCard(), &ScoreCard::historyRequested, this, [this] {
+        mHistoryDock->show();
+        mHistoryDock->raise();
+    });
+    connect(mHistoryPanel, &HistoryPanel::reportRequested, this, &MainWindow::exportResultPdfDialog);
+    connect(mHistoryPanel, &HistoryPanel::replayRequested, this, [this](const QString& path) { openRecording(path); });
+
+    mExercises->listExampleExercises();
+    // The results database in the data folder; a failure is shown in the dock and nothing else
+    // breaks (exercises still run and score; results are not kept).
+    mExercises->openDatabase(ExerciseController::defaultDatabasePath());
+}
+
+void MainWindow::createExerciseMenu() {
+    QMenu* menu = menuBar()->addMenu(tr("E&xercise"));
+    menu->addAction(tr("&Start"), QKeySequence(Qt::Key_F6), this, [this] {
+        if (const QString error = mExercises->start(); !error.isEmpty()) {
+            mTraineePanel->setMessage(error);
+            statusBar()->showMessage(error, 8000);
+        }
+    });
+    menu->addAction(tr("S&top"), QKeySequence(Qt::SHIFT | Qt::Key_F6), this, [this] { mExercises->stop(); });
+    menu->addSeparator();
+    menu->addAction(tr("&Open Exercise…"), this, &MainWindow::openExerciseDialog);
+    menu->addAction(tr("&New Trainee…"), this, &MainWindow::newTraineeDialog);
+    menu->addAction(tr("&Export Score Report (PDF)…"), this, &MainWindow::exportScorePdfDialog);
+    menu->addAction(tr("&History"), QKeySequence(Qt::CTRL | Qt::Key_H), this, [this] {
+        mHistoryDock->show();
+        mHistoryDock->raise();
+    });
+    menu->addSeparator();
+    mModeGroup = new QActionGroup(this);
+    mInstructorAction = menu->addAction(tr("&Instructor Mode"), QKeySequence(Qt::CTRL | Qt::Key_1), this,
+                                        [this] { setMode(Mode::Instructor); });
+    mTraineeAction = menu->addAction(tr("&Trainee Mode"), QKeySequence(Qt::CTRL | Qt::Key_2), this,
+                                     [this] { setMode(Mode::Trainee); });
+    for (QAction* a : {mInstructorAction, mTraineeAction}) {
+        a->setCheckable(true);
+        mModeGroup->addAction(a);
+    }
+    mInstructorAction->setChecked(mMode == Mode::Instructor);
+    mTraineeAction->setChecked(mMode == Mode::Trainee);
+}
+
+void MainWindow::setMode(Mode mode) {
+    mMode = mode;
+    const bool instructor = mode == Mode::Instructor;
+    // Trainees get the exercise and their history; the tissue's parameters and the charts are the
+    // instructor's (a trainee must not make the task easier).
+    mParameterDock->setVisible(instructor);
+    mChartsDock->setVisible(instructor);
+    mExerciseDock->setVisible(true);
+    mHistoryDock->setVisible(true);
+    if (!instructor) mExerciseDock->raise();
+    if (mInstructorAction) mInstructorAction->setChecked(instructor);
+    if (mTraineeAction) mTraineeAction->setChecked(!instructor);
+}
+
+void MainWindow::setExerciseRunning(bool running) {
+    mParameterPanel->setEnabled(!running);
+    mDevicePanel->setEnabled(!running);
+    if (mOpenMeshAction) mOpenMeshAction->setEnabled(!running);
+    if (mRestartAction) mRestartAction->setEnabled(!running);
+    if (mDeviceGroup) mDeviceGroup->setEnabled(!running);
+    if (running) {
+        // The panel shows the exercise's tissue (it cannot be changed until the end).
+        mParameterPanel->setPreset(mSession->preset());
+        updateChartsConfiguration();
+    }
+    updateRecorder();
+}
+
+void MainWindow::newTraineeDialog() {
+    bool ok = false;
+    const QString name = QInputDialog::getText(this, tr("New Trainee"), tr("Name:"), QLineEdit::Normal, QString(), &ok);
+    if (!ok || name.trimmed().isEmpty()) return;
+    if (const QString error = mExercises->addTrainee(name); !error.isEmpty())
+        QMessageBox::warning(this, tr("Trainee not added"), error);
+}
+
+void MainWindow::openExerciseDialog() {
+    const QString start = QFileInfo(QString::fromStdString(cli::findResource("exercises/press_targets.json"))).absolutePath();
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Exercise"), start, tr("Exercises (*.json)"));
+    if (path.isEmpty()) return;
+    if (const QString error = mExercises->addExerciseFile(path); !error.isEmpty())
+        QMessageBox::warning(this, tr("Not an exercise"), error);
+}
+
+void MainWindow::exportScorePdfDialog() {
+    if (!mExercises->lastReport()) {
+        statusBar()->showMessage(tr("There is no score to export yet: run an exercise first."), 5000);
+        return;
+    }
+    const QString suggested = QDir(mRecorderPanel->recordingFolder())
+                                  .filePath(QFileInfo(mExercises->lastRecordingPath()).completeBaseName() + QStringLiteral(".pdf"));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Score Report"), suggested, tr("PDF (*.pdf)"));
+    if (path.isEmpty()) return;
+    if (const QString error = mExercises->exportLastReportPdf(path); !error.isEmpty())
+        QMessageBox::warning(this, tr("Report not written"), error);
+    else
+        statusBar()->showMessage(tr("Report written: %1").arg(QDir::toNativeSeparators(path)), 8000);
+}
+
+void MainWindow::exportResultPdfDialog(const ResultRecord& result) {
+    const QString suggested = QFileInfo(result.recordingPath).absoluteDir().filePath(
+        QFileInfo(result.recordingPath).completeBaseName() + QStringLiteral(".pdf"));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Score Report"), suggested, tr("PDF (*.pdf)"));
+    if (path.isEmpty()) return;
+    if (const QString error = mExercises->exportResultPdf(result, path); !error.isEmpty())
+        QMessageBox::warning(this, tr("Report not written"), error);
+    else
+        statusBar()->showMessage(tr("Report written: %1").arg(QDir::toNativeSeparators(path)), 8000);
+}
+
+QString MainWindow::runExercise(const QString& path, const QString& trainee) {
+    if (!trainee.trimmed().isEmpty()) {
+        if (QString error = mExercises->addExerciseFile(path); !error.isEmpty()) return error;
+        if (QString error = mExercises->addTrainee(trainee); !error.isEmpty()) return error;
+        return mExercises->start();
+    }
+    const auto loaded = loadExercise(path.toStdString());
+    if (!loaded.exercise) {
+        QStringList errors;
+        for (const auto& e : loaded.errors) errors << QString::fromStdString(e);
+        return errors.join(QLatin1Char('\n'));
+    }
+    return mExercises->startPreview(*loaded.exercise);
 }
 
 }  // namespace palpate

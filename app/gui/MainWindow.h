@@ -5,6 +5,7 @@
 // snapshots (DESIGN §2) and sends it commands. Docks (parameters, device, recorder...) come later.
 
 #include "app/gui/HapticSession.h"
+#include "widgets/ResultsDatabase.h"
 #include "widgets/ViewportFactory.h"
 
 #include <QElapsedTimer>
@@ -26,6 +27,9 @@ namespace palpate {
 
 class ChartsPanel;
 class DevicePanel;
+class ExerciseController;
+class HistoryPanel;
+class TraineePanel;
 class ParameterPanel;
 class RecorderPanel;
 struct HapticSnapshot;
@@ -80,6 +84,20 @@ public:
     bool inPlayback() const { return mPlayback; }
     /// Leaves playback: the viewport shows the live session again, which runs as before.
     void backToLive();
+    /// Trainee mode: the Exercise dock's content, the History dock's, and what runs exercises and
+    /// keeps results (ExerciseController).
+    TraineePanel* traineePanel() const { return mTraineePanel; }
+    HistoryPanel* historyPanel() const { return mHistoryPanel; }
+    ExerciseController& exercises() { return *mExercises; }
+    /// Instructor mode shows the tools that shape the tissue and the exercises (parameters,
+    /// charts, the exercise editor); trainee mode the Exercise and History docks. Kept in QSettings.
+    enum class Mode { Instructor, Trainee };
+    void setMode(Mode mode);
+    Mode mode() const { return mMode; }
+    /// Starts the exercise in `path` for `trainee` (created if new); an empty trainee runs it as a
+    /// preview (nothing stored). What --exercise does. "" or why not.
+    QString runExercise(const QString& path, const QString& trainee);
+
     /// Recent mesh files, newest first (kept in QSettings).
     QStringList recentFiles() const;
     /// Play/Pause: resumes or pauses the loop (paused, the tissue relaxes and the force is zero).
@@ -144,6 +162,14 @@ private:
     void updateRecorder();
     void showRecordingError(const QString& message);
     void enterPlayback(const QString& path);
+    void createExerciseDocks();
+    void createExerciseMenu();
+    /// During an exercise the tissue, mesh and device stay as the exercise set them.
+    void setExerciseRunning(bool running);
+    void newTraineeDialog();
+    void openExerciseDialog();
+    void exportScorePdfDialog();
+    void exportResultPdfDialog(const ResultRecord& result);
 
     Viewport* mViewport = nullptr;  // owned by Qt as the central widget
     QString mRendererReason;
@@ -195,7 +221,18 @@ private:
     bool mPlayback = false;
     bool mPlayingBeforePlayback = true;  // the live session's state to go back to
     bool mTouchBeforePlayback = false;
-    std::unique_ptr<HapticSnapshot> mPanelSnapshot;  // what the Device panel reads (large: on the heap)
+    std::unique_ptr<HapticSnapshot> mPanelSnapshot;
+    TraineePanel* mTraineePanel = nullptr;
+    HistoryPanel* mHistoryPanel = nullptr;
+    QDockWidget* mExerciseDock = nullptr;
+    QDockWidget* mHistoryDock = nullptr;
+    ExerciseController* mExercises = nullptr;  // owned by Qt (child of this window)
+    Mode mMode = Mode::Instructor;
+    QActionGroup* mModeGroup = nullptr;
+    QAction* mInstructorAction = nullptr;
+    QAction* mTraineeAction = nullptr;
+    QAction* mOpenMeshAction = nullptr;
+    QAction* mRestartAction = nullptr;  // what the Device panel reads (large: on the heap)
 };
 
 }  // namespace palpate

@@ -97,6 +97,17 @@ int main(int argc, char** argv) {
     grabOption.setFlags(QCommandLineOption::HiddenFromHelp);
     parser.addOptions({meshOption, deviceOption, presetOption, softwareOption, screenshotOption, afterMsOption, ticksOption,
                        headlessOption, grabOption});
+    const QCommandLineOption exerciseOption(QStringLiteral("exercise"),
+                                            QStringLiteral("Start this exercise (JSON) at once: for --trainee, else as a preview."),
+                                            QStringLiteral("FILE"));
+    const QCommandLineOption traineeOption(QStringLiteral("trainee"),
+                                           QStringLiteral("The trainee --exercise runs for (added if new); the result is stored."),
+                                           QStringLiteral("NAME"));
+    const QCommandLineOption modeOption(QStringLiteral("mode"), QStringLiteral("instructor or trainee (the window's docks)."),
+                                        QStringLiteral("MODE"));
+    const QCommandLineOption wholeWindowOption(QStringLiteral("whole-window"),
+                                               QStringLiteral("--screenshot saves the whole window, not only the viewport."));
+    parser.addOptions({exerciseOption, traineeOption, modeOption, wholeWindowOption});
     // --benchmark-viewport [--seconds S]: frame times while deforming a 100k-vertex sphere (ViewportBenchmark.h).
     const QCommandLineOption benchmarkOption(
         QStringLiteral("benchmark-viewport"),
@@ -202,6 +213,17 @@ int main(int argc, char** argv) {
     if (const QString error = window.loadMesh(meshPath); !error.isEmpty()) return fail(error);
     if (parser.isSet(presetOption))
         if (const QString error = window.loadPresetFile(parser.value(presetOption)); !error.isEmpty()) return fail(error);
+    if (parser.isSet(modeOption)) {
+        const QString modeName = parser.value(modeOption);
+        if (modeName != QLatin1String("instructor") && modeName != QLatin1String("trainee"))
+            return fail(QStringLiteral("--mode: '%1' is neither instructor nor trainee").arg(modeName));
+        window.setMode(modeName == QLatin1String("trainee") ? palpate::MainWindow::Mode::Trainee
+                                                              : palpate::MainWindow::Mode::Instructor);
+    }
+    if (parser.isSet(exerciseOption))
+        if (const QString error = window.runExercise(parser.value(exerciseOption), parser.value(traineeOption));
+            !error.isEmpty())
+            return fail(parser.value(exerciseOption) + QStringLiteral(": ") + error);
     std::printf("palpate: %s renderer (%s), device %s, haptic loop %s\n",
                 qPrintable(palpate::rendererName(window.viewport()->kind())), qPrintable(window.rendererReason()),
                 qPrintable(deviceUri), mode == palpate::LoopMode::Stepped ? "stepped" : "threaded");
@@ -215,7 +237,8 @@ int main(int argc, char** argv) {
         int exitCode = 1;
         // Grab once the window is shown and laid out, from inside the event loop.
         QTimer::singleShot(200, &window, [&] {
-            const QImage image = window.viewport()->grabImage();
+            const QImage image =
+                parser.isSet(wholeWindowOption) ? window.grab().toImage() : window.viewport()->grabImage();
             if (image.isNull() || !image.save(file, "PNG")) {
                 std::fprintf(stderr, "palpate: the screenshot could not be written to %s\n", qPrintable(file));
             } else {

@@ -99,7 +99,10 @@ std::shared_ptr<const ExerciseGeometry> ExerciseGeometry::build(const Exercise& 
         case ExerciseType::Trace: {
             for (std::size_t i = 0; i < exercise.trace.path.size(); ++i) {
                 const VertexId v = place(exercise.trace.path[i], "trace.path[" + std::to_string(i) + "]");
-                if (v != kNoVertex) g->mPathMm.push_back(g->mRestMm[v]);
+                if (v != kNoVertex) {
+                    g->mPathMm.push_back(g->mRestMm[v]);
+                    g->mPathVertices.push_back(v);
+                }
             }
             if (!error.empty()) break;
             for (std::size_t i = 1; i < g->mPathMm.size(); ++i) {

@@ -49,6 +49,8 @@ public:
     /// Trace: the polyline (snapped points), its length, and the points coverage is counted on
     /// (spaced at most 1 mm along it).
     const std::vector<glm::vec3>& pathMm() const { return mPathMm; }
+    /// The vertex (engine numbering) of each polyline point.
+    const std::vector<VertexId>& pathVertices() const { return mPathVertices; }
     double pathLengthMm() const { return mPathLengthMm; }
     const std::vector<glm::vec3>& coverageSamplesMm() const { return mCoverageMm; }
     /// Distance from p to the polyline.
@@ -70,6 +72,7 @@ private:
     std::vector<float> mCompliance;
     std::size_t mInclusionVertices = 0;
     std::vector<glm::vec3> mPathMm, mCoverageMm;
+    std::vector<VertexId> mPathVertices;
     double mPathLengthMm = 0.0;
 };
 

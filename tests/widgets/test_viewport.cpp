@@ -13,6 +13,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QStandardPaths>
 #include <QFile>
 #include <QImage>
 #include <QLabel>
@@ -358,6 +359,7 @@ TEST(MainWindow, InteractiveRunsTheLoopThreadAndOnlyObservesIt) {
 int main(int argc, char** argv) {
     // Before QApplication: the platform is chosen in its constructor. No GPU, no display needed.
     qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true);  // the windows' results databases are not the user's
     QApplication app(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();

@@ -14,6 +14,7 @@
 #include "widgets/SoftwareViewport.h"
 
 #include <QApplication>
+#include <QStandardPaths>
 #include <QImage>
 #include <QMouseEvent>
 #include <QTest>
@@ -447,6 +448,7 @@ TEST(MainWindowRings, TheViewportGetsTheRingsOfEachSnapshot) {
 int main(int argc, char** argv) {
     // Before QApplication: the platform is chosen in its constructor. No GPU, no display needed.
     qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true);  // the windows' results databases are not the user's
     QApplication app(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();

@@ -1,0 +1,371 @@
+#include "app/gui/ExerciseController.h"
+
+#include "app/cli/DefaultScene.h"
+#include "engine/record/RecordingReader.h"
+#include "engine/scoring/ReplayScorer.h"
+#include "widgets/HistoryPanel.h"
+#include "widgets/ScoreCard.h"
+#include "widgets/ScoreReportPdf.h"
+#include "widgets/TraineePanel.h"
+#include "widgets/Viewport.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QStandardPaths>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace palpate {
+
+namespace {
+
+QString joined(const std::vector<std::string>& lines) {
+    QStringList out;
+    for (const auto& l : lines) out << QString::fromStdString(l);
+    return out.join(QLatin1Char('\n'));
+}
+
+/// A file-name-safe form of an exercise's name ("Press three targets" -> "press-three-targets").
+QString slug(const std::string& name) {
+    QString s = QString::fromStdString(name).toLower();
+    s.replace(QRegularExpression(QStringLiteral("[^a-z0-9]+")), QStringLiteral("-"));
+    s = s.left(40);
+    while (s.startsWith(QLatin1Char('-'))) s.remove(0, 1);
+    while (s.endsWith(QLatin1Char('-'))) s.chop(1);
+    return s.isEmpty() ? QStringLiteral("exercise") : s;
+}
+
+}  // namespace
+
+ExerciseController::ExerciseController(HapticSession& session, Viewport& viewport, TraineePanel& panel,
+                                       HistoryPanel& history, std::function<QString()> recordingFolder, QObject* parent)
+    : QObject(parent), mSession(session), mViewport(viewport), mPanel(panel), mHistory(history),
+      mRecordingFolder(std::move(recordingFolder)) {
+    connect(&mPanel, &TraineePanel::startRequested, this, [this] {
+        if (const QString error = start(); !error.isEmpty()) mPanel.setMessage(error);
+    });
+    connect(&mPanel, &TraineePanel::stopRequested, this, [this] { stop(); });
+    connect(&mPanel, &TraineePanel::markRequested, this, [this] { mark(); });
+    connect(&mPanel, &TraineePanel::exerciseChanged, this, [this](const QString& path) { showExerciseDescription(path); });
+    connect(&mPanel, &TraineePanel::traineeChanged, this, [this](qint64 id) {
+        if (id >= 0) mHistory.setTrainee(id);
+    });
+    connect(mPanel.scoreCard(), &ScoreCard::historyRequested, this, [this] { mHistory.setTrainee(mPanel.traineeId()); });
+}
+
+ExerciseController::~ExerciseController() = default;
+
+QString ExerciseController::defaultDatabasePath() {
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath(QStringLiteral("results.sqlite"));
+}
+
+QString ExerciseController::openDatabase(const QString& path) {
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    QString error;
+    if (!mDatabase.open(path, &error)) {
+        mPanel.setMessage(error);
+        return error;
+    }
+    refreshTrainees(-1);
+    mHistory.setDatabase(&mDatabase);
+    return {};
+}
+
+void ExerciseController::refreshTrainees(qint64 select) {
+    QList<QPair<QString, qint64>> list;
+    if (mDatabase.isOpen())
+        for (const TraineeRecord& t : mDatabase.trainees()) list.append({t.name, t.id});
+    mPanel.setTrainees(list, select);
+    mHistory.refresh();
+    if (mPanel.traineeId() >= 0) mHistory.setTrainee(mPanel.traineeId());
+}
+
+QString ExerciseController::addTrainee(const QString& name) {
+    if (!mDatabase.isOpen()) return tr("The results database is not open: trainees cannot be stored.");
+    QString error;
+    const qint64 id = mDatabase.addTrainee(name.trimmed(), &error);
+    if (id < 0) return error;
+    refreshTrainees(id);
+    return {};
+}
+
+void ExerciseController::listExampleExercises() {
+    QList<QPair<QString, QString>> list;
+    const std::string anchor = cli::findResource("exercises/press_targets.json");
+    if (!anchor.empty()) {
+        const QDir dir = QFileInfo(QString::fromStdString(anchor)).absoluteDir();
+        for (const QFileInfo& file : dir.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+            const auto loaded = loadExercise(file.absoluteFilePath().toStdString());
+            if (loaded.exercise) list.append({QString::fromStdString(loaded.exercise->name), file.absoluteFilePath()});
+        }
+    }
+    mPanel.setExercises(list);
+}
+
+QString ExerciseController::addExerciseFile(const QString& path) {
+    const auto loaded = loadExercise(path.toStdString());
+    if (!loaded.exercise) return joined(loaded.errors);
+    mPanel.addExercise(QString::fromStdString(loaded.exercise->name), QFileInfo(path).absoluteFilePath());
+    return {};
+}
+
+void ExerciseController::showExerciseDescription(const QString& path) {
+    if (path.isEmpty()) {
+        mPanel.setExerciseDescription({});
+        return;
+    }
+    const auto loaded = loadExercise(path.toStdString());
+    mPanel.setExerciseDescription(loaded.exercise ? QString::fromStdString(loaded.exercise->description)
+                                                  : joined(loaded.errors));
+    if (!running()) mPanel.setState(TraineePanel::State::Idle);
+}
+
+QString ExerciseController::start() {
+    if (mPanel.traineeId() < 0) return tr("Choose a trainee, or add one with New…, before starting.");
+    const QString path = mPanel.exercisePath();
+    if (path.isEmpty()) return tr("Choose an exercise first.");
+    const auto loaded = loadExercise(path.toStdString());
+    if (!loaded.exercise) return joined(loaded.errors);
+    return begin(*loaded.exercise, false);
+}
+
+QString ExerciseController::startPreview(const Exercise& exercise) { return begin(exercise, true); }
+
+QString ExerciseController::begin(const Exercise& exercise, bool preview) {
+    if (running()) return tr("An exercise is already running: stop it first.");
+    std::vector<std::string> errors = validateExercise(exercise);
+    if (!errors.empty()) return joined(errors);
+    auto assets = loadExerciseAssets(exercise, cli::findResource, errors);
+    if (!assets) return joined(errors);
+    if (const std::string error = mSession.loadExercise(*assets); !error.empty()) return QString::fromStdString(error);
+    mAssets = std::move(assets);
+    mPreview = preview;
+    mTraineeId = preview ? -1 : mPanel.traineeId();
+    mTraineeName = preview ? tr("Preview") : mPanel.traineeName();
+    mLive.reset();
+    mRecordingPath.clear();
+    mLastReport.reset();
+    mLastResultId = -1;
+    mLastMarkers = -1;
+    mPhase = Phase::Starting;
+    mPanel.scoreCard()->clear();
+    mPanel.setState(TraineePanel::State::Starting);
+    mPanel.setMessage(preview ? tr("Preview of \"%1\": not stored.").arg(QString::fromStdString(exercise.name)) : QString());
+    mPanel.setExerciseDescription(QString::fromStdString(exercise.description));
+    updateMarkers();
+    emit runningChanged(true);
+    poll();  // the first scene of a new loop is the loop's at once
+    return {};
+}
+
+void ExerciseController::startRecording() {
+    const QString folder = mRecordingFolder ? mRecordingFolder() : QString();
+    if (folder.isEmpty() || !QDir().mkpath(folder)) {
+        fail(tr("The recordings folder %1 cannot be created: the exercise cannot be recorded and scored.").arg(folder));
+        return;
+    }
+    const QString stamp = QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss-zzz"));
+    const QString path = QDir(folder).filePath(QStringLiteral("exercise-%1-%2.palprec").arg(slug(mAssets->exercise.name), stamp));
+    // The note carries the exercise with its paths resolved, so the recording scores on its own.
+    Exercise carried = mAssets->exercise;
+    carried.meshPath = mAssets->meshPath;
+    carried.tissuePresetPath = mAssets->presetPath;
+    std::string error;
+    const std::string note = exerciseRecordingNote(
+        carried, (mPreview ? std::string("preview") : "trainee: " + mTraineeName.toStdString()), error);
+    if (note.empty()) {
+        fail(QString::fromStdString(error));
+        return;
+    }
+    if (const std::string problem = mSession.startRecording(path.toStdString(), note); !problem.empty()) {
+        fail(QString::fromStdString(problem));
+        return;
+    }
+    LiveScorerDef def;
+    def.options.findResource = cli::findResource;
+    mLive = std::make_unique<LiveScorer>(path.toStdString(), mAssets->exercise, def);
+    mRecordingPath = path;
+    emit recordingStateChanged(true, path);
+    mStartedUtc = QDateTime::currentDateTimeUtc();
+    mPhase = Phase::Running;
+    mPanel.setState(TraineePanel::State::Running);
+    emit message(tr("Exercise \"%1\" started; recording to %2").arg(QString::fromStdString(mAssets->exercise.name), path));
+}
+
+void ExerciseController::poll() {
+    switch (mPhase) {
+        case Phase::Idle:
+        case Phase::Finished:
+            // Another mesh was loaded: the exercise's markers are not on it.
+            if (!mViewport.exerciseMarkers().empty() && mAssets && mSession.exercisePhysics() != mAssets->geometry)
+                mViewport.setExerciseMarkers({});
+            return;
+        case Phase::Starting:
+            if (!mSession.sceneSwitchPending() && mSession.hasLoop()) startRecording();
+            return;
+        case Phase::Running: break;
+    }
+    if (!mSession.recording()) {
+        // Stopped from the Recorder dock, or a new haptic rate ended it: score what was recorded.
+        finish(tr("the recording was stopped"));
+        return;
+    }
+    mLive->poll();
+    if (!mLive->error().empty()) {
+        fail(QString::fromStdString(mLive->error()));
+        return;
+    }
+    if (mLive->started()) {
+        mPanel.showGuidance(mAssets->exercise, mLive->guidance(), mLive->report().score);
+        updateMarkers();
+    }
+    if (mLive->exerciseOver()) finish({});
+}
+
+void ExerciseController::updateMarkers() {
+    if (!mAssets || !mAssets->geometry) return;
+    const ScoreGuidance* guidance = mLive && mLive->started() ? &mLive->guidance() : nullptr;
+    // Rebuilt only when what they show changes (a target done, the mark): not every frame.
+    const int key = guidance ? (guidance->completed ? 1000 : guidance->targetIndex) + (guidance->marked ? 2000 : 0) : -3;
+    if (key == mLastMarkers) return;
+    mLastMarkers = key;
+    ExerciseMarkers markers = exerciseMarkers(*mAssets->geometry,
+                                              mPreview ? MarkerAudience::Instructor : MarkerAudience::Trainee, guidance);
+    mViewport.setExerciseMarkers(std::move(markers));
+}
+
+bool ExerciseController::mark() {
+    if (mPhase != Phase::Running || !mSession.recordingSession()) return false;
+    mSession.recordingSession()->mark("mark (trainee)");
+    // Show where it was: the touched vertex, as the scorer takes it.
+    const VertexId touched = mSession.observed().touched;
+    const auto& mesh = mSession.drawnMesh();
+    if (mesh && touched != kNoVertex && touched < mesh->restPositionsMm().size()) {
+        ExerciseMarkers markers = mViewport.exerciseMarkers();
+        ExerciseMarker m;
+        m.kind = ExerciseMarker::Kind::Mark;
+        m.positionMm = mesh->restPositionsMm()[touched];
+        m.normal = mesh->restNormals()[touched];
+        markers.markers.push_back(m);
+        mViewport.setExerciseMarkers(std::move(markers));
+    }
+    emit message(tr("Marked"));
+    return true;
+}
+
+void ExerciseController::stop() {
+    if (mPhase == Phase::Starting) {
+        mPhase = Phase::Idle;
+        mPanel.setState(TraineePanel::State::Idle);
+        mPanel.setMessage(tr("Stopped before the session began: nothing recorded."));
+        emit runningChanged(false);
+        return;
+    }
+    if (mPhase == Phase::Running) finish(tr("stopped"));
+}
+
+void ExerciseController::fail(const QString& why) {
+    if (mSession.recording()) {
+        mSession.stopRecording();
+        emit recordingStateChanged(false, mRecordingPath);
+    }
+    mLive.reset();
+    mPhase = Phase::Idle;
+    mPanel.setState(TraineePanel::State::Idle);
+    mPanel.setMessage(tr("The exercise could not go on: %1").arg(why));
+    emit message(tr("Exercise ended: %1").arg(why));
+    emit runningChanged(false);
+}
+
+void ExerciseController::finish(const QString& why) {
+    const bool wasRecording = mSession.recording();
+    const std::string problem = mSession.stopRecording();
+    if (wasRecording) emit recordingStateChanged(false, mRecordingPath);
+    ScoreReport report = mLive->finish();
+    if (!mLive->error().empty()) {
+        fail(QString::fromStdString(mLive->error()));
+        return;
+    }
+    if (!problem.empty()) report.warnings.push_back("recording: " + problem);
+    mLastReport = report;
+    mPhase = Phase::Finished;
+    mPanel.scoreCard()->setReport(report, mTraineeName);
+    mPanel.setState(TraineePanel::State::Finished);
+    QString stored;
+    if (!mPreview) {
+        QString error;
+        mLastResultId = mDatabase.isOpen()
+                            ? mDatabase.addResult(mTraineeId, report, QString::fromStdString(mAssets->exercise.name),
+                                                  QString::fromStdString(mAssets->exercise.sourcePath), mStartedUtc,
+                                                  report.guidance.exerciseTimeS, mRecordingPath, &error)
+                            : -1;
+        if (mLastResultId < 0)
+            stored = tr("The result was NOT stored: %1").arg(error.isEmpty() ? tr("the results database is not open") : error);
+        else
+            stored = tr("Result stored for %1.").arg(mTraineeName);
+        mHistory.refresh();
+        mHistory.setTrainee(mTraineeId);
+    }
+    mPanel.setMessage((why.isEmpty() ? QString() : tr("Ended: %1. ").arg(why)) + stored);
+    emit message(tr("Exercise \"%1\": score %2").arg(QString::fromStdString(report.exerciseName)).arg(report.score, 0, 'f', 0));
+    updateMarkers();
+    emit runningChanged(false);
+    emit finished();
+}
+
+std::vector<std::pair<double, double>> ExerciseController::forceTimeSeries(const QString& recordingPath, std::size_t maxPoints) {
+    std::vector<std::pair<double, double>> all;
+    const RecordingReader reader = RecordingReader::open(recordingPath.toStdString());
+    if (!reader.headerOk()) return all;
+    double firstS = -1.0;
+    reader.forEachTick([&](const RecordedTick& t) {
+        if (firstS < 0.0) firstS = t.nowS;
+        all.emplace_back(t.nowS - firstS, double(glm::length(t.forceN)));
+        return true;
+    });
+    if (maxPoints < 2 || all.size() <= maxPoints) return all;
+    // Thin by buckets, keeping each bucket's largest force: peaks are what a plot must not lose.
+    std::vector<std::pair<double, double>> thin;
+    const std::size_t bucket = (all.size() + maxPoints - 1) / maxPoints;
+    for (std::size_t i = 0; i < all.size(); i += bucket) {
+        auto best = all[i];
+        for (std::size_t j = i; j < std::min(all.size(), i + bucket); ++j)
+            if (all[j].second > best.second) best = all[j];
+        thin.push_back(best);
+    }
+    return thin;
+}
+
+QString ExerciseController::exportLastReportPdf(const QString& path) {
+    if (!mLastReport) return tr("There is no score to export yet.");
+    QString error;
+    if (!writeScoreReportPdf(path, mTraineeName, QString::fromStdString(mLastReport->exerciseName), *mLastReport,
+                             forceTimeSeries(mRecordingPath), &error))
+        return error;
+    return {};
+}
+
+QString ExerciseController::exportResultPdf(const ResultRecord& result, const QString& path) {
+    if (result.recordingPath.isEmpty()) return tr("This result has no recording to report from.");
+    const RecordingReader reader = RecordingReader::open(result.recordingPath.toStdString());
+    if (!reader.headerOk())
+        return tr("%1: %2").arg(result.recordingPath, QString::fromStdString(reader.headerError()));
+    std::string error;
+    ReplayScorerOptions options;
+    options.findResource = cli::findResource;
+    const ScoreReport report = scoreRecording(reader, nullptr, error, options);
+    if (!error.empty()) return QString::fromStdString(error);
+    QString trainee;
+    for (const TraineeRecord& t : mDatabase.trainees())
+        if (t.id == result.traineeId) trainee = t.name;
+    QString writeError;
+    if (!writeScoreReportPdf(path, trainee, result.exerciseName, report, forceTimeSeries(result.recordingPath), &writeError))
+        return writeError;
+    return {};
+}
+
+}  // namespace palpate

@@ -1,0 +1,123 @@
+#pragma once
+// Trainee mode's engine room: runs a graded exercise in the window's haptic session and keeps the
+// results. Start loads the exercise's mesh, tissue and physics into the session, waits for the
+// loop to run that scene, records the session (the recording's note carries the exercise) and
+// follows the file with a LiveScorer, so the score shown live is the score a replay gives. Each
+// frame it updates the guidance (Exercise dock, the viewport's target markers); when the exercise
+// is over, or on Stop, it closes the recording, shows the score card and stores the result
+// (trainee, exercise, time, metrics, score, recording path) in the results database.
+//
+// The same path serves the instructor's preview ("Try it" in the exercise editor): no trainee,
+// nothing stored.
+
+#include "app/gui/HapticSession.h"
+#include "engine/scoring/ExerciseSession.h"
+#include "engine/scoring/LiveScorer.h"
+#include "widgets/ResultsDatabase.h"
+
+#include <QDateTime>
+#include <QObject>
+#include <QString>
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace palpate {
+
+class HistoryPanel;
+class TraineePanel;
+class Viewport;
+
+class ExerciseController final : public QObject {
+    Q_OBJECT
+public:
+    enum class Phase { Idle, Starting, Running, Finished };
+
+    /// `recordingFolder` gives the folder new recordings go to (the Recorder dock's).
+    ExerciseController(HapticSession& session, Viewport& viewport, TraineePanel& panel, HistoryPanel& history,
+                       std::function<QString()> recordingFolder, QObject* parent = nullptr);
+    ~ExerciseController() override;
+
+    /// Opens (creating, migrating) the results database. "" or the error (naming the file).
+    QString openDatabase(const QString& path);
+    ResultsDatabase& database() { return mDatabase; }
+    /// The default: results.sqlite in the application's data folder.
+    static QString defaultDatabasePath();
+
+    /// Adds a trainee (or finds one of that name) and selects it. "" or the error.
+    QString addTrainee(const QString& name);
+    /// Lists the shipped examples (resources/exercises) and selects the first.
+    void listExampleExercises();
+    /// Adds an exercise file to the dock's list and selects it. "" or the errors naming the keys.
+    QString addExerciseFile(const QString& path);
+
+    /// Starts the exercise selected in the dock for the selected trainee. "" or why not.
+    QString start();
+    /// Starts `exercise` as the instructor's preview (unsaved; nothing stored). "" or why not.
+    QString startPreview(const Exercise& exercise);
+    /// Ends the exercise now and scores it (also what happens when it is over by itself).
+    void stop();
+    /// The trainee's mark (find the lump: "the lump is where I press now"). False when not running.
+    bool mark();
+    /// Follows the session: call every frame (and after stepped ticks). Starts the recording once
+    /// the loop runs the exercise's scene, updates guidance and markers, finishes when over.
+    void poll();
+
+    Phase phase() const { return mPhase; }
+    bool running() const { return mPhase == Phase::Starting || mPhase == Phase::Running; }
+    bool preview() const { return mPreview; }
+    /// The exercise being run (or last run).
+    const std::optional<ExerciseAssets>& assets() const { return mAssets; }
+    /// The last finished session's score, recording and database row (-1: not stored).
+    const std::optional<ScoreReport>& lastReport() const { return mLastReport; }
+    const QString& lastRecordingPath() const { return mRecordingPath; }
+    qint64 lastResultId() const { return mLastResultId; }
+
+    /// The PDF of the last report (score, breakdown, force-time plot). "" or the error.
+    QString exportLastReportPdf(const QString& path);
+    /// Re-scores a stored result's recording and writes its PDF. "" or the error.
+    QString exportResultPdf(const ResultRecord& result, const QString& path);
+    /// (time s, |F| N) of a recording, thinned to at most `maxPoints`, for the PDF's plot.
+    static std::vector<std::pair<double, double>> forceTimeSeries(const QString& recordingPath, std::size_t maxPoints = 4000);
+
+signals:
+    /// The window disables what must not change during a run (parameters, mesh) and back.
+    void runningChanged(bool running);
+    /// Something for the status bar.
+    void message(const QString& text);
+    /// A finished session's score card is showing (the window raises the dock).
+    void finished();
+    /// The exercise's recording started or ended (the Recorder dock shows it like its own).
+    void recordingStateChanged(bool recording, const QString& path);
+
+private:
+    QString begin(const Exercise& exercise, bool preview);
+    void startRecording();
+    void finish(const QString& why);
+    void fail(const QString& why);
+    void refreshTrainees(qint64 select);
+    void showExerciseDescription(const QString& path);
+    void updateMarkers();
+
+    HapticSession& mSession;
+    Viewport& mViewport;
+    TraineePanel& mPanel;
+    HistoryPanel& mHistory;
+    std::function<QString()> mRecordingFolder;
+    ResultsDatabase mDatabase;
+
+    Phase mPhase = Phase::Idle;
+    bool mPreview = false;
+    std::optional<ExerciseAssets> mAssets;
+    std::unique_ptr<LiveScorer> mLive;
+    QString mRecordingPath;
+    QDateTime mStartedUtc;
+    qint64 mTraineeId = -1;
+    QString mTraineeName;
+    std::optional<ScoreReport> mLastReport;
+    qint64 mLastResultId = -1;
+    int mLastMarkers = -1;  // guidance state the markers were built for (target index; -2: finished)
+};
+
+}  // namespace palpate

@@ -1,0 +1,315 @@
+// Trainee mode under QT_QPA_PLATFORM=offscreen, end to end in a stepped main window: a trainee runs
+// the shipped exercises with the scripted good and bad paths as the device; the guidance follows
+// the task (target markers, force window on the gauge, hold progress); the score shown at the end
+// equals the score of replaying the recording the session left; the result (trainee, exercise,
+// score, metrics, recording) is in the database, which survives reopening; the History view plots
+// it; the score report PDF holds the score; errors are reported, not crashed on.
+#include "app/cli/DefaultScene.h"
+#include "app/gui/ExerciseController.h"
+#include "app/gui/MainWindow.h"
+#include "engine/record/RecordingReader.h"
+#include "engine/scoring/ReplayScorer.h"
+#include "widgets/ForceGauge.h"
+#include "widgets/HistoryPanel.h"
+#include "widgets/ParameterPanel.h"
+#include "widgets/RecorderPanel.h"
+#include "widgets/ScoreCard.h"
+#include "widgets/TraineePanel.h"
+#include "widgets/Viewport.h"
+
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QComboBox>
+#include <QFileInfo>
+#include <QFile>
+#include <QImage>
+#include <QLocale>
+#include <QProcess>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
+
+#include <algorithm>
+
+using namespace palpate;
+
+namespace {
+
+QString resource(const char* relative) { return QString::fromStdString(cli::findResource(relative)); }
+
+/// A stepped window whose device plays `script` (resources/exercises/...path), with the results
+/// database and the recordings in `dir`.
+std::unique_ptr<MainWindow> traineeWindow(const QTemporaryDir& dir, const char* script) {
+    auto window = std::make_unique<MainWindow>(RendererChoice::Software, LoopMode::Stepped);
+    window->recorderPanel()->setRecordingFolder(dir.filePath(QStringLiteral("recordings")));
+    EXPECT_EQ(window->exercises().openDatabase(dir.filePath(QStringLiteral("results.sqlite"))), QString());
+    EXPECT_EQ(window->setDeviceUri(QStringLiteral("sim:path:") + resource(script)), QString());
+    window->resize(1200, 800);
+    window->show();  // laid out: the viewport has its real size
+    return window;
+}
+
+/// Steps until the exercise is over (or `maxTicks`), 100 ticks a frame as the window would poll.
+void runToEnd(MainWindow& window, int maxTicks) {
+    for (int done = 0; done < maxTicks && window.exercises().running(); done += 100) window.advanceTicks(100);
+}
+
+int countMarkers(const ExerciseMarkers& markers, ExerciseMarker::Kind kind) {
+    return int(std::count_if(markers.markers.begin(), markers.markers.end(),
+                             [kind](const ExerciseMarker& m) { return m.kind == kind; }));
+}
+
+ScoreReport replayScore(const QString& recordingPath) {
+    const RecordingReader reader = RecordingReader::open(recordingPath.toStdString());
+    std::string error;
+    ReplayScorerOptions options;
+    options.findResource = cli::findResource;
+    ScoreReport report = scoreRecording(reader, nullptr, error, options);
+    EXPECT_EQ(error, "");
+    return report;
+}
+
+}  // namespace
+
+TEST(TraineeMode, PressTargetsRunsGuidesScoresAndStores) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+    window->setMode(MainWindow::Mode::Trainee);
+    ASSERT_EQ(window->exercises().addTrainee(QStringLiteral("Ada")), QString());
+    ASSERT_EQ(window->exercises().addExerciseFile(resource("exercises/press_targets.json")), QString());
+    TraineePanel* panel = window->traineePanel();
+    EXPECT_EQ(panel->traineeName(), QStringLiteral("Ada"));
+    ASSERT_EQ(window->exercises().start(), QString());
+    EXPECT_TRUE(window->exercises().running());
+    // The tissue belongs to the exercise while it runs.
+    EXPECT_FALSE(window->parameterPanel()->isEnabled());
+
+    // Early on: the first target is the current one, the gauge shows its window, nothing is done.
+    window->advanceTicks(1500);
+    EXPECT_EQ(window->exercises().phase(), ExerciseController::Phase::Running);
+    EXPECT_TRUE(panel->instructionText().contains(QStringLiteral("Target 1 of 3"))) << panel->instructionText().toStdString();
+    EXPECT_DOUBLE_EQ(panel->forceGauge()->windowMinN(), 1.0);
+    EXPECT_DOUBLE_EQ(panel->forceGauge()->windowMaxN(), 2.0);
+    const ExerciseMarkers& early = window->viewport()->exerciseMarkers();
+    EXPECT_EQ(countMarkers(early, ExerciseMarker::Kind::CurrentTarget), 1);
+    EXPECT_EQ(countMarkers(early, ExerciseMarker::Kind::Target), 2);
+    EXPECT_EQ(countMarkers(early, ExerciseMarker::Kind::DoneTarget), 0);
+    // The markers are drawn: the current target's colour is in the viewport's picture.
+    const QImage image = window->viewport()->grabImage();
+    const QColor current = exerciseMarkerColour(ExerciseMarker::Kind::CurrentTarget);
+    bool seen = false;
+    for (int y = 0; y < image.height() && !seen; ++y)
+        for (int x = 0; x < image.width() && !seen; ++x) seen = image.pixelColor(x, y) == current;
+    EXPECT_TRUE(seen) << "no pixel of the current target's colour";
+
+    runToEnd(*window, 45000);
+    ASSERT_EQ(window->exercises().phase(), ExerciseController::Phase::Finished);
+    EXPECT_TRUE(window->parameterPanel()->isEnabled());
+    ASSERT_TRUE(window->exercises().lastReport().has_value());
+    const ScoreReport& live = *window->exercises().lastReport();
+    EXPECT_TRUE(live.guidance.completed);
+    EXPECT_EQ(countMarkers(window->viewport()->exerciseMarkers(), ExerciseMarker::Kind::DoneTarget), 3);
+    // The good path does the task: a high score; and the same score when the recording is replayed.
+    EXPECT_GT(live.score, 80.0);
+    const ScoreReport replayed = replayScore(window->exercises().lastRecordingPath());
+    EXPECT_EQ(replayed.score, live.score);
+    ASSERT_EQ(replayed.metrics.size(), live.metrics.size());
+    for (std::size_t i = 0; i < live.metrics.size(); ++i) EXPECT_EQ(replayed.metrics[i].value, live.metrics[i].value);
+
+    // The score card shows it.
+    EXPECT_TRUE(panel->scoreCard()->hasReport());
+    EXPECT_TRUE(panel->scoreCard()->scoreText().contains(QString::number(live.score, 'f', 0)));
+    EXPECT_EQ(panel->scoreCard()->breakdownTable()->rowCount(), int(live.metrics.size()));
+
+    // Stored, with the recording; the History view plots it.
+    const qint64 trainee = panel->traineeId();
+    const auto results = window->exercises().database().results(trainee);
+    ASSERT_EQ(results.size(), 1u);
+    EXPECT_EQ(results[0].score, live.score);
+    EXPECT_EQ(results[0].exerciseName, QStringLiteral("Press three targets"));
+    EXPECT_EQ(results[0].recordingPath, window->exercises().lastRecordingPath());
+    EXPECT_TRUE(QFile::exists(results[0].recordingPath));
+    EXPECT_TRUE(results[0].metricsJson.contains(QStringLiteral("target_error_mm")));
+    EXPECT_EQ(window->historyPanel()->results().size(), 1u);
+    EXPECT_EQ(window->historyPanel()->plottedPointCount(), 1);
+}
+
+TEST(TraineeMode, ResultsSurviveReopeningAndTheHistoryChartsEachSession) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    double firstScore = 0.0, secondScore = 0.0;
+    {
+        auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+        ASSERT_EQ(window->exercises().addTrainee(QStringLiteral("Ben")), QString());
+        ASSERT_EQ(window->exercises().addExerciseFile(resource("exercises/press_targets.json")), QString());
+        ASSERT_EQ(window->exercises().start(), QString());
+        runToEnd(*window, 45000);
+        ASSERT_TRUE(window->exercises().lastReport());
+        firstScore = window->exercises().lastReport()->score;
+        // A second session of the bad path, stopped early: scored and stored too.
+        ASSERT_EQ(window->setDeviceUri(QStringLiteral("sim:path:") + resource("exercises/press_targets.bad.path")), QString());
+        ASSERT_EQ(window->exercises().start(), QString());
+        window->advanceTicks(5000);
+        window->exercises().stop();
+        ASSERT_EQ(window->exercises().phase(), ExerciseController::Phase::Finished);
+        secondScore = window->exercises().lastReport()->score;
+        EXPECT_FALSE(window->exercises().lastReport()->guidance.completed);
+        EXPECT_LT(secondScore, firstScore);
+    }
+    // A new window on the same database: both results, oldest first, charted.
+    auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+    HistoryPanel* history = window->historyPanel();
+    ASSERT_EQ(history->traineeBox()->count(), 1);
+    EXPECT_EQ(history->traineeBox()->currentText(), QStringLiteral("Ben"));
+    ASSERT_EQ(history->results().size(), 2u);
+    EXPECT_EQ(history->results()[0].score, firstScore);
+    EXPECT_EQ(history->results()[1].score, secondScore);
+    EXPECT_EQ(history->plottedPointCount(), 2);
+    EXPECT_EQ(history->table()->rowCount(), 2);
+
+    // The stored result's report: its recording is re-scored (the same score) into a PDF.
+    history->selectRow(0);  // newest first in the table: the stopped session
+    const auto selected = history->selectedResult();
+    ASSERT_TRUE(selected);
+    EXPECT_EQ(selected->score, secondScore);
+    const QString pdf = dir.filePath(QStringLiteral("history.pdf"));
+    ASSERT_EQ(window->exercises().exportResultPdf(*selected, pdf), QString());
+    EXPECT_GT(QFileInfo(pdf).size(), 1000);
+}
+
+TEST(TraineeMode, FindTheLumpHidesTheInclusionFromTheTraineeAndScoresTheMark) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/find_lump.good.path");
+    ASSERT_EQ(window->exercises().addTrainee(QStringLiteral("Cy")), QString());
+    ASSERT_EQ(window->exercises().addExerciseFile(resource("exercises/find_lump.json")), QString());
+    ASSERT_EQ(window->exercises().start(), QString());
+    window->advanceTicks(100);
+    EXPECT_EQ(countMarkers(window->viewport()->exerciseMarkers(), ExerciseMarker::Kind::Inclusion), 0);
+    // The good path presses the lump at 18.6 s of its script (the script starts with the exercise).
+    window->advanceTicks(18600 - 100 - 1);
+    ASSERT_TRUE(window->exercises().mark());
+    EXPECT_EQ(countMarkers(window->viewport()->exerciseMarkers(), ExerciseMarker::Kind::Mark), 1);
+    window->advanceTicks(500);
+    window->exercises().stop();
+    ASSERT_TRUE(window->exercises().lastReport());
+    const ScoreReport& live = *window->exercises().lastReport();
+    const MetricResult* lump = live.find(Metric::LumpErrorMm);
+    ASSERT_NE(lump, nullptr);
+    ASSERT_TRUE(lump->measured);
+    EXPECT_LT(lump->value, 10.0);  // within the inclusion's radius
+    EXPECT_EQ(replayScore(window->exercises().lastRecordingPath()).score, live.score);
+
+    // The instructor's preview of the same exercise shows the inclusion, and stores nothing.
+    const std::size_t stored = window->exercises().database().results(window->traineePanel()->traineeId()).size();
+    const auto loaded = loadExercise(resource("exercises/find_lump.json").toStdString());
+    ASSERT_TRUE(loaded.exercise);
+    ASSERT_EQ(window->exercises().startPreview(*loaded.exercise), QString());
+    window->advanceTicks(100);
+    EXPECT_EQ(countMarkers(window->viewport()->exerciseMarkers(), ExerciseMarker::Kind::Inclusion), 1);
+    window->exercises().stop();
+    EXPECT_TRUE(window->exercises().preview());
+    EXPECT_EQ(window->exercises().database().results(window->traineePanel()->traineeId()).size(), stored);
+}
+
+TEST(TraineeMode, ScoreReportPdfHoldsTheScore) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/trace.good.path");
+    ASSERT_EQ(window->runExercise(resource("exercises/trace.json"), QStringLiteral("Dee")), QString());
+    EXPECT_EQ(window->traineePanel()->traineeName(), QStringLiteral("Dee"));
+    runToEnd(*window, 45000);
+    ASSERT_TRUE(window->exercises().lastReport());
+    const double score = window->exercises().lastReport()->score;
+    // The force-time series comes from the recording: one point per tick up to the thinning.
+    const auto series = ExerciseController::forceTimeSeries(window->exercises().lastRecordingPath(), 100000);
+    EXPECT_GT(series.size(), 1000u);
+    EXPECT_GT(std::max_element(series.begin(), series.end(), [](auto a, auto b) { return a.second < b.second; })->second, 0.5);
+    const auto thin = ExerciseController::forceTimeSeries(window->exercises().lastRecordingPath(), 500);
+    EXPECT_LE(thin.size(), 500u);
+
+    const QString pdf = dir.filePath(QStringLiteral("score.pdf"));
+    ASSERT_EQ(window->exercises().exportLastReportPdf(pdf), QString());
+    ASSERT_TRUE(QFile::exists(pdf));
+    const QString pdftotext = QStandardPaths::findExecutable(QStringLiteral("pdftotext"));
+    if (pdftotext.isEmpty()) GTEST_SKIP() << "pdftotext not installed (poppler-utils): the PDF's text is not checked";
+    QProcess proc;
+    proc.start(pdftotext, {pdf, QStringLiteral("-")});
+    ASSERT_TRUE(proc.waitForFinished(30000));
+    const QString text = QString::fromUtf8(proc.readAllStandardOutput()).simplified();
+    EXPECT_TRUE(text.contains(QStringLiteral("Dee"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Score: %1 / 100").arg(QLocale().toString(score, 'f', 1)))) << text.toStdString();
+}
+
+TEST(TraineeMode, ErrorsAreReportedNotCrashedOn) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+    // No trainee yet.
+    window->traineePanel()->setTrainees({});
+    EXPECT_TRUE(window->exercises().start().contains(QStringLiteral("trainee")));
+    EXPECT_FALSE(window->exercises().running());
+    // A malformed exercise: the error names the file and the key; the list is unchanged.
+    const QString bad = dir.filePath(QStringLiteral("bad.json"));
+    QFile file(bad);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "palpate-exercise", "version": 1, "name": "x", "type": "press_targets",
+                  "mesh": "meshes/sphere_1442.off", "tissue_preset": "presets/tissues/liver.json",
+                  "time_limit_s": -3, "press_targets": {"targets": [{"vertex": 1}]}})");
+    file.close();
+    const QString error = window->exercises().addExerciseFile(bad);
+    EXPECT_TRUE(error.contains(QStringLiteral("time_limit_s"))) << error.toStdString();
+    EXPECT_TRUE(error.contains(bad)) << error.toStdString();
+    // An exercise whose target is not on its mesh: refused at start, the session untouched.
+    ASSERT_EQ(window->exercises().addTrainee(QStringLiteral("Eve")), QString());
+    const QString offMesh = dir.filePath(QStringLiteral("offmesh.json"));
+    QFile f2(offMesh);
+    ASSERT_TRUE(f2.open(QIODevice::WriteOnly));
+    f2.write(R"({"format": "palpate-exercise", "version": 1, "name": "off", "type": "press_targets",
+                 "mesh": "meshes/sphere_1442.off", "tissue_preset": "presets/tissues/liver.json",
+                 "time_limit_s": 30, "press_targets": {"targets": [{"vertex": 999999}]}})");
+    f2.close();
+    ASSERT_EQ(window->exercises().addExerciseFile(offMesh), QString());
+    const QString startError = window->exercises().start();
+    EXPECT_TRUE(startError.contains(QStringLiteral("press_targets.targets[0]"))) << startError.toStdString();
+    EXPECT_FALSE(window->exercises().running());
+    // Stop and mark with nothing running do nothing.
+    window->exercises().stop();
+    EXPECT_FALSE(window->exercises().mark());
+}
+
+TEST(ForceGauge, ZonesFollowTheWindowAndTheExcessiveForce) {
+    ForceGauge gauge;
+    gauge.resize(300, 44);
+    gauge.setWindow(1.0, 2.0);
+    gauge.setExcessiveN(3.0);
+    gauge.setForceN(0.5);
+    EXPECT_EQ(gauge.zone(), -1);
+    gauge.setForceN(1.5);
+    EXPECT_EQ(gauge.zone(), 0);
+    gauge.setForceN(2.5);
+    EXPECT_EQ(gauge.zone(), 1);
+    gauge.setForceN(3.0);
+    EXPECT_EQ(gauge.zone(), 2);
+    gauge.setForceN(std::numeric_limits<double>::quiet_NaN());
+    EXPECT_EQ(gauge.forceN(), 0.0);
+    // Inside the window the bar is drawn in the inside colour, and that colour is in the picture.
+    gauge.setForceN(1.5);
+    const QImage image = gauge.grab().toImage();
+    const QColor inside = gauge.barColour();
+    int hits = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) hits += image.pixelColor(x, y) == inside;
+    EXPECT_GT(hits, 50);
+}
+
+int main(int argc, char** argv) {
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true);  // QSettings and data folders of these tests are not the user's
+    QApplication app(argc, argv);
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

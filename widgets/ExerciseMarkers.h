@@ -1,0 +1,57 @@
+#pragma once
+// What the viewport draws of an exercise over the mesh: press targets (numbered, the current one
+// highlighted, done ones ticked), the trace path, and the inclusion of find-the-lump (shown to the
+// instructor who places it, hidden from the trainee who must find it), plus the trainee's mark.
+// Both renderers paint them with QPainter over the scene, like the tool marker (SceneOverlay).
+
+#include "engine/scoring/ExerciseGeometry.h"
+#include "engine/scoring/ScoreReport.h"
+
+#include <QColor>
+#include <QSize>
+#include <QString>
+
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <vector>
+
+class QPainter;
+
+namespace palpate {
+
+class OrbitCamera;
+
+struct ExerciseMarker {
+    enum class Kind { Target, CurrentTarget, DoneTarget, PathPoint, Inclusion, Mark };
+    Kind kind = Kind::Target;
+    glm::vec3 positionMm{0.0f};
+    glm::vec3 normal{0.0f};  ///< outward rest normal (zero: unknown); markers facing away are faded
+    QString label;           ///< drawn beside it ("1", "2", ...); may be empty
+    double radiusMm = 0.0;   ///< > 0: a circle of this radius on the surface (tolerance, inclusion)
+    bool selected = false;   ///< the one the instructor is editing: drawn larger
+};
+
+struct ExerciseMarkers {
+    std::vector<ExerciseMarker> markers;
+    std::vector<glm::vec3> pathMm;  ///< the trace polyline (empty: none)
+    bool empty() const { return markers.empty() && pathMm.empty(); }
+};
+
+/// Who looks at the exercise: the instructor sees everything, the trainee not the inclusion.
+enum class MarkerAudience { Instructor, Trainee };
+
+/// The markers of an exercise placed on a mesh. `guidance` (a running session) marks the current
+/// and the achieved targets; `selectedIndex` (instructor) is the target or path point being edited.
+ExerciseMarkers exerciseMarkers(const ExerciseGeometry& geometry, MarkerAudience audience,
+                                const ScoreGuidance* guidance = nullptr, int selectedIndex = -1);
+
+/// The colour a marker of this kind is drawn in (tests look for it).
+QColor exerciseMarkerColour(ExerciseMarker::Kind kind);
+
+/// Paints the markers for a viewport of `sizePx` seen through `camera` (no depth test: markers on
+/// the far side are drawn faded, so the instructor sees every target).
+void paintExerciseMarkers(QPainter& painter, const ExerciseMarkers& markers, const OrbitCamera& camera,
+                          QSize sizePx);
+
+}  // namespace palpate

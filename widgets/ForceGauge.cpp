@@ -1,0 +1,99 @@
+#include "widgets/ForceGauge.h"
+
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+
+namespace palpate {
+
+ForceGauge::ForceGauge(QWidget* parent) : QWidget(parent) {
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    setAccessibleName(tr("Force gauge"));
+}
+
+void ForceGauge::setWindow(double minN, double maxN) {
+    mWindowMinN = std::isfinite(minN) ? minN : 0.0;
+    mWindowMaxN = std::isfinite(maxN) ? maxN : 0.0;
+    update();
+}
+
+void ForceGauge::setExcessiveN(double excessiveN) {
+    mExcessiveN = std::isfinite(excessiveN) ? excessiveN : 0.0;
+    update();
+}
+
+void ForceGauge::setFullScaleN(double fullScaleN) {
+    if (std::isfinite(fullScaleN) && fullScaleN > 0.0) mFullScaleN = fullScaleN;
+    update();
+}
+
+void ForceGauge::setForceN(double forceN) {
+    mForceN = std::isfinite(forceN) ? std::max(0.0, forceN) : 0.0;
+    update();
+}
+
+int ForceGauge::zone() const {
+    if (mExcessiveN > 0.0 && mForceN >= mExcessiveN) return 2;
+    if (mWindowMaxN <= mWindowMinN) return 0;
+    if (mForceN < mWindowMinN) return -1;
+    if (mForceN > mWindowMaxN) return 1;
+    return 0;
+}
+
+QColor ForceGauge::barColour() const {
+    switch (zone()) {
+        case -1: return QColor(240, 170, 40);
+        case 0: return QColor(60, 190, 80);
+        case 1: return QColor(240, 120, 40);
+        default: return QColor(220, 40, 40);
+    }
+}
+
+void ForceGauge::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    const double scaleN = std::max({mFullScaleN, mExcessiveN * 1.15, mWindowMaxN * 1.25, 0.1});
+    const QRectF track(4.0, 4.0, width() - 8.0, height() - 22.0);
+    const auto xOf = [&](double forceN) { return track.left() + track.width() * std::clamp(forceN / scaleN, 0.0, 1.0); };
+
+    p.setPen(Qt::NoPen);
+    p.setBrush(palette().color(QPalette::Base).darker(115));
+    p.drawRoundedRect(track, 3, 3);
+    if (mWindowMaxN > mWindowMinN) {
+        p.setBrush(QColor(60, 190, 80, 90));
+        p.drawRect(QRectF(QPointF(xOf(mWindowMinN), track.top()), QPointF(xOf(mWindowMaxN), track.bottom())));
+    }
+    if (mExcessiveN > 0.0) {
+        p.setBrush(QColor(220, 40, 40, 70));
+        p.drawRect(QRectF(QPointF(xOf(mExcessiveN), track.top()), QPointF(track.right(), track.bottom())));
+    }
+    // The bar: inset, so that the window's shading stays visible around it.
+    const QRectF bar(QPointF(track.left(), track.top() + track.height() * 0.25),
+                     QPointF(xOf(mForceN), track.bottom() - track.height() * 0.25));
+    p.setBrush(barColour());
+    p.drawRect(bar);
+
+    p.setPen(palette().color(QPalette::WindowText));
+    QFont font = p.font();
+    font.setPixelSize(10);
+    p.setFont(font);
+    const double labelY = track.bottom() + 14.0;
+    const auto label = [&](double forceN, const QString& text) {
+        const double x = xOf(forceN);
+        p.drawLine(QPointF(x, track.bottom()), QPointF(x, track.bottom() + 3.0));
+        p.drawText(QRectF(x - 30.0, track.bottom() + 3.0, 60.0, 14.0), Qt::AlignHCenter | Qt::AlignTop, text);
+    };
+    if (mWindowMaxN > mWindowMinN) {
+        label(mWindowMinN, QString::number(mWindowMinN, 'g', 3));
+        label(mWindowMaxN, QString::number(mWindowMaxN, 'g', 3));
+    }
+    if (mExcessiveN > 0.0) label(mExcessiveN, QString::number(mExcessiveN, 'g', 3));
+    // The reading, right-aligned under the track's end, clear of the window's labels.
+    font.setBold(true);
+    p.setFont(font);
+    p.drawText(QRectF(track.right() - 60.0, labelY - 11.0, 60.0, 14.0), Qt::AlignRight | Qt::AlignTop,
+               tr("%1 N").arg(mForceN, 0, 'f', 2));
+}
+
+}  // namespace palpate

@@ -1,0 +1,64 @@
+#pragma once
+// A trainee's history: their scores over time, one line per exercise (Qt Charts), and the results
+// as a table below. A result with a recording can be exported as a PDF report or replayed: the
+// window re-scores the recording (the same score bit for bit) or opens it in the Recorder.
+
+#include "widgets/ResultsDatabase.h"
+
+#include <QWidget>
+
+#include <optional>
+
+class QChart;
+class QChartView;
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QTableWidget;
+
+namespace palpate {
+
+class HistoryPanel final : public QWidget {
+    Q_OBJECT
+public:
+    explicit HistoryPanel(QWidget* parent = nullptr);
+
+    /// Not owned; null shows nothing. Reads the trainees and the selected one's results.
+    void setDatabase(ResultsDatabase* database);
+    /// Shows this trainee (by id); -1 shows the first one.
+    void setTrainee(qint64 traineeId);
+    qint64 traineeId() const;
+    /// Reads the database again (after a new result).
+    void refresh();
+
+    /// The results shown, oldest first.
+    const std::vector<ResultRecord>& results() const { return mResults; }
+    /// The chart's series (one per exercise) and their point counts, for tests.
+    QChart* chart() const { return mChart; }
+    int plottedPointCount() const;
+    QTableWidget* table() const { return mTable; }
+    QComboBox* traineeBox() const { return mTrainees; }
+    /// The result selected in the table (nullopt: none).
+    std::optional<ResultRecord> selectedResult() const;
+    void selectRow(int row);
+
+signals:
+    void reportRequested(const palpate::ResultRecord& result);
+    void replayRequested(const QString& recordingPath);
+
+private:
+    void rebuild();
+    void updateButtons();
+
+    ResultsDatabase* mDatabase = nullptr;
+    std::vector<ResultRecord> mResults;
+    QComboBox* mTrainees = nullptr;
+    QChart* mChart = nullptr;
+    QChartView* mChartView = nullptr;
+    QTableWidget* mTable = nullptr;
+    QLabel* mSummary = nullptr;
+    QPushButton* mReport = nullptr;
+    QPushButton* mReplay = nullptr;
+};
+
+}  // namespace palpate

@@ -1,0 +1,126 @@
+#include "widgets/ScoreCard.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace palpate {
+
+QString formatMetricValue(const MetricResult& line) {
+    if (!line.measured) return QStringLiteral("-");
+    const QString unit = QString::fromUtf8(metricUnit(line.metric).data(), int(metricUnit(line.metric).size()));
+    double value = line.value;
+    QString text;
+    if (line.metric == Metric::Completion || line.metric == Metric::HoldInWindowFraction ||
+        line.metric == Metric::ExcessiveForceFraction || line.metric == Metric::ContactFraction ||
+        line.metric == Metric::BandFraction || line.metric == Metric::Economy) {
+        text = QStringLiteral("%1 %").arg(100.0 * value, 0, 'f', 0);
+    } else if (line.metric == Metric::ExcessiveForceEvents) {
+        text = QString::number(std::llround(value));
+    } else {
+        text = QString::number(value, 'f', std::abs(value) >= 100.0 ? 0 : 2);
+        if (!unit.isEmpty()) text += QLatin1Char(' ') + unit;
+    }
+    return text;
+}
+
+QString metricLabel(Metric metric) {
+    // The rubric key without its unit suffix (the value column carries the unit), in words.
+    QString key = QString::fromUtf8(metricName(metric).data(), int(metricName(metric).size()));
+    for (const char* suffix : {"_mm2", "_mm", "_ns", "_n", "_s"})
+        if (key.endsWith(QLatin1String(suffix))) {
+            key.chop(int(qstrlen(suffix)));
+            break;
+        }
+    key.replace(QLatin1Char('_'), QLatin1Char(' '));
+    return key;
+}
+
+ScoreCard::ScoreCard(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    mTitle = new QLabel(this);
+    mTitle->setWordWrap(true);
+    mScore = new QLabel(this);
+    QFont big = mScore->font();
+    big.setPointSizeF(big.pointSizeF() * 2.6);
+    big.setBold(true);
+    mScore->setFont(big);
+    mScore->setAlignment(Qt::AlignCenter);
+    mScore->setAccessibleName(tr("Score"));
+    mTable = new QTableWidget(0, 4, this);
+    mTable->setHorizontalHeaderLabels({tr("Metric"), tr("Value"), tr("Sub-score"), tr("Points")});
+    mTable->verticalHeader()->hide();
+    mTable->verticalHeader()->setDefaultSectionSize(mTable->fontMetrics().height() + 6);
+    mTable->setMinimumHeight(8 * (mTable->fontMetrics().height() + 6));
+    mTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    mTable->setSelectionMode(QAbstractItemView::NoSelection);
+    mTable->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    for (int c = 1; c < 4; ++c) mTable->horizontalHeader()->setSectionResizeMode(c, QHeaderView::ResizeToContents);
+    mWarnings = new QLabel(this);
+    mWarnings->setWordWrap(true);
+    mWarnings->setStyleSheet(QStringLiteral("color: #c07000"));
+    auto* buttons = new QHBoxLayout();
+    mExportPdf = new QPushButton(tr("Export PDF…"), this);
+    mHistory = new QPushButton(tr("History…"), this);
+    buttons->addWidget(mExportPdf);
+    buttons->addWidget(mHistory);
+    buttons->addStretch();
+    layout->addWidget(mTitle);
+    layout->addWidget(mScore);
+    layout->addWidget(mTable, 1);
+    layout->addWidget(mWarnings);
+    layout->addLayout(buttons);
+    connect(mExportPdf, &QPushButton::clicked, this, &ScoreCard::exportPdfRequested);
+    connect(mHistory, &QPushButton::clicked, this, &ScoreCard::historyRequested);
+    clear();
+}
+
+void ScoreCard::clear() {
+    mHasReport = false;
+    mReport = ScoreReport{};
+    mTitle->setText(tr("No score yet: run an exercise."));
+    mScore->setText(QStringLiteral("–"));
+    mTable->setRowCount(0);
+    mWarnings->clear();
+    mWarnings->hide();
+    mExportPdf->setEnabled(false);
+}
+
+QString ScoreCard::scoreText() const { return mScore->text(); }
+
+void ScoreCard::setReport(const ScoreReport& report, const QString& traineeName) {
+    mReport = report;
+    mHasReport = true;
+    const QString exercise = QString::fromStdString(report.exerciseName);
+    QString state = report.guidance.completed ? tr("completed")
+                    : report.guidance.timeUp  ? tr("time up")
+                                              : tr("stopped");
+    mTitle->setText(traineeName.isEmpty() ? tr("%1 (%2)").arg(exercise, state)
+                                          : tr("%1: %2 (%3)").arg(traineeName, exercise, state));
+    mScore->setText(tr("%1 / 100").arg(report.score, 0, 'f', 0));
+    mTable->setRowCount(int(report.metrics.size()));
+    for (int row = 0; row < int(report.metrics.size()); ++row) {
+        const MetricResult& line = report.metrics[std::size_t(row)];
+        auto* name = new QTableWidgetItem(metricLabel(line.metric));
+        name->setToolTip(QString::fromUtf8(metricDescription(line.metric).data(), int(metricDescription(line.metric).size())));
+        mTable->setItem(row, 0, name);
+        mTable->setItem(row, 1, new QTableWidgetItem(formatMetricValue(line)));
+        mTable->setItem(row, 2, new QTableWidgetItem(line.weight > 0.0 ? QStringLiteral("%1 %").arg(100.0 * line.subScore, 0, 'f', 0)
+                                                                       : tr("not scored")));
+        mTable->setItem(row, 3, new QTableWidgetItem(QString::number(line.contribution, 'f', 1)));
+        for (int c = 1; c < 4; ++c) mTable->item(row, c)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    }
+    QStringList warnings;
+    for (const auto& w : report.warnings) warnings << QString::fromStdString(w);
+    mWarnings->setText(warnings.join(QLatin1Char('\n')));
+    mWarnings->setVisible(!warnings.isEmpty());
+    mExportPdf->setEnabled(true);
+}
+
+}  // namespace palpate

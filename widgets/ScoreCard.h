@@ -1,0 +1,53 @@
+#pragma once
+// The score card a trainee sees when an exercise ends: the score out of 100, who and what, the
+// breakdown (each metric's value, sub-score, weight and points) and any warnings. It only shows;
+// the buttons ask the window to export the PDF report or to open the trainee's history.
+
+#include "engine/scoring/ScoreReport.h"
+
+#include <QString>
+#include <QWidget>
+
+class QLabel;
+class QPushButton;
+class QTableWidget;
+
+namespace palpate {
+
+class ScoreCard final : public QWidget {
+    Q_OBJECT
+public:
+    explicit ScoreCard(QWidget* parent = nullptr);
+
+    void setReport(const ScoreReport& report, const QString& traineeName);
+    void clear();
+    bool hasReport() const { return mHasReport; }
+    const ScoreReport& report() const { return mReport; }
+
+    /// The texts shown, for tests and the accessibility tree.
+    QString scoreText() const;
+    QTableWidget* breakdownTable() const { return mTable; }
+    QPushButton* exportPdfButton() const { return mExportPdf; }
+    QPushButton* historyButton() const { return mHistory; }
+
+signals:
+    void exportPdfRequested();
+    void historyRequested();
+
+private:
+    ScoreReport mReport;
+    bool mHasReport = false;
+    QLabel* mScore = nullptr;
+    QLabel* mTitle = nullptr;
+    QLabel* mWarnings = nullptr;
+    QTableWidget* mTable = nullptr;
+    QPushButton* mExportPdf = nullptr;
+    QPushButton* mHistory = nullptr;
+};
+
+/// A metric as the card names it: its rubric key in words, without the unit ("target error").
+QString metricLabel(Metric metric);
+/// A metric's value as the card and the PDF show it: with its unit, "-" when not measured.
+QString formatMetricValue(const MetricResult& line);
+
+}  // namespace palpate

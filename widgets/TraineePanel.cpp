@@ -1,0 +1,222 @@
+#include "widgets/TraineePanel.h"
+
+#include "widgets/ForceGauge.h"
+#include "widgets/ScoreCard.h"
+
+#include <QComboBox>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QStackedWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace palpate {
+
+namespace {
+
+QString forceRange(double minN, double maxN) {
+    return QObject::tr("%1–%2 N").arg(minN, 0, 'g', 3).arg(maxN, 0, 'g', 3);
+}
+
+}  // namespace
+
+TraineePanel::TraineePanel(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+
+    auto* who = new QFormLayout();
+    auto* traineeRow = new QHBoxLayout();
+    mTrainees = new QComboBox(this);
+    mTrainees->setAccessibleName(tr("Trainee"));
+    mTrainees->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    auto* newTrainee = new QPushButton(tr("New…"), this);
+    newTrainee->setToolTip(tr("Add a trainee"));
+    traineeRow->addWidget(mTrainees, 1);
+    traineeRow->addWidget(newTrainee);
+    who->addRow(tr("Trainee:"), traineeRow);
+    auto* exerciseRow = new QHBoxLayout();
+    mExercises = new QComboBox(this);
+    mExercises->setAccessibleName(tr("Exercise"));
+    mExercises->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    auto* openExercise = new QPushButton(tr("Open…"), this);
+    openExercise->setToolTip(tr("Choose an exercise file"));
+    exerciseRow->addWidget(mExercises, 1);
+    exerciseRow->addWidget(openExercise);
+    who->addRow(tr("Exercise:"), exerciseRow);
+    layout->addLayout(who);
+    mDescription = new QLabel(this);
+    mDescription->setWordWrap(true);
+    layout->addWidget(mDescription);
+
+    auto* buttons = new QHBoxLayout();
+    mStart = new QPushButton(tr("Start"), this);
+    mStart->setToolTip(tr("Start the exercise (F6)"));
+    mStop = new QPushButton(tr("Stop"), this);
+    mStop->setToolTip(tr("End the exercise now and score it (Shift+F6)"));
+    mMark = new QPushButton(tr("Mark"), this);
+    mMark->setToolTip(tr("Mark the lump where the tool presses now (M)"));
+    buttons->addWidget(mStart);
+    buttons->addWidget(mStop);
+    buttons->addWidget(mMark);
+    layout->addLayout(buttons);
+    mMessage = new QLabel(this);
+    mMessage->setWordWrap(true);
+    layout->addWidget(mMessage);
+
+    mPages = new QStackedWidget(this);
+    auto* guidance = new QWidget(mPages);
+    auto* g = new QVBoxLayout(guidance);
+    g->setContentsMargins(0, 0, 0, 0);
+    mInstruction = new QLabel(guidance);
+    mInstruction->setWordWrap(true);
+    QFont bold = mInstruction->font();
+    bold.setBold(true);
+    bold.setPointSizeF(bold.pointSizeF() * 1.15);
+    mInstruction->setFont(bold);
+    mDetail = new QLabel(guidance);
+    mDetail->setWordWrap(true);
+    mGauge = new ForceGauge(guidance);
+    mProgress = new QProgressBar(guidance);
+    mProgress->setRange(0, 100);
+    mTime = new QLabel(guidance);
+    g->addWidget(mInstruction);
+    g->addWidget(mDetail);
+    g->addWidget(mGauge);
+    g->addWidget(mProgress);
+    g->addWidget(mTime);
+    g->addStretch();
+    mCard = new ScoreCard(mPages);
+    mPages->addWidget(guidance);
+    mPages->addWidget(mCard);
+    layout->addWidget(mPages, 1);
+
+    connect(newTrainee, &QPushButton::clicked, this, &TraineePanel::newTraineeRequested);
+    connect(openExercise, &QPushButton::clicked, this, &TraineePanel::openExerciseRequested);
+    connect(mStart, &QPushButton::clicked, this, &TraineePanel::startRequested);
+    connect(mStop, &QPushButton::clicked, this, &TraineePanel::stopRequested);
+    connect(mMark, &QPushButton::clicked, this, &TraineePanel::markRequested);
+    connect(mTrainees, &QComboBox::currentIndexChanged, this, [this] { emit traineeChanged(traineeId()); });
+    connect(mExercises, &QComboBox::currentIndexChanged, this, [this] { emit exerciseChanged(exercisePath()); });
+    setState(State::Idle);
+}
+
+void TraineePanel::setTrainees(const QList<QPair<QString, qint64>>& trainees, qint64 selectId) {
+    const QSignalBlocker block(mTrainees);
+    const qint64 keep = selectId >= 0 ? selectId : traineeId();
+    mTrainees->clear();
+    for (const auto& [name, id] : trainees) mTrainees->addItem(name, id);
+    const int index = mTrainees->findData(keep);
+    mTrainees->setCurrentIndex(index >= 0 ? index : (mTrainees->count() ? 0 : -1));
+    emit traineeChanged(traineeId());
+}
+
+qint64 TraineePanel::traineeId() const { return mTrainees->currentIndex() < 0 ? -1 : mTrainees->currentData().toLongLong(); }
+QString TraineePanel::traineeName() const { return mTrainees->currentIndex() < 0 ? QString() : mTrainees->currentText(); }
+
+void TraineePanel::setExercises(const QList<QPair<QString, QString>>& exercises, const QString& select) {
+    {
+        const QSignalBlocker block(mExercises);
+        mExercises->clear();
+        for (const auto& [title, path] : exercises) {
+            mExercises->addItem(title, path);
+            mExercises->setItemData(mExercises->count() - 1, path, Qt::ToolTipRole);
+        }
+        const int index = mExercises->findData(select);
+        mExercises->setCurrentIndex(index >= 0 ? index : (mExercises->count() ? 0 : -1));
+    }
+    emit exerciseChanged(exercisePath());
+}
+
+void TraineePanel::addExercise(const QString& title, const QString& path) {
+    int index = mExercises->findData(path);
+    if (index < 0) {
+        const QSignalBlocker block(mExercises);
+        mExercises->addItem(title, path);
+        index = mExercises->count() - 1;
+        mExercises->setItemData(index, path, Qt::ToolTipRole);
+    }
+    if (index == mExercises->currentIndex()) emit exerciseChanged(path);
+    else mExercises->setCurrentIndex(index);
+}
+
+QString TraineePanel::exercisePath() const { return mExercises->currentIndex() < 0 ? QString() : mExercises->currentData().toString(); }
+
+void TraineePanel::setExerciseDescription(const QString& text) { mDescription->setText(text); }
+
+void TraineePanel::setMessage(const QString& text) { mMessage->setText(text); }
+
+void TraineePanel::setState(State state) {
+    mState = state;
+    const bool running = state == State::Starting || state == State::Running;
+    mStart->setEnabled(!running && mExercises->count() > 0);
+    mStop->setEnabled(running);
+    mMark->setEnabled(state == State::Running);
+    mTrainees->setEnabled(!running);
+    mExercises->setEnabled(!running);
+    mPages->setCurrentIndex(state == State::Finished ? 1 : 0);
+    if (state == State::Idle) {
+        mInstruction->setText(tr("Choose a trainee and an exercise, then Start (F6)."));
+        mDetail->clear();
+        mTime->clear();
+        mProgress->setValue(0);
+        mGauge->setForceN(0.0);
+    } else if (state == State::Starting) {
+        mInstruction->setText(tr("Starting…"));
+    }
+}
+
+QString TraineePanel::instructionText() const { return mInstruction->text(); }
+
+void TraineePanel::showGuidance(const Exercise& exercise, const ScoreGuidance& guidance, double scoreSoFar) {
+    mGauge->setExcessiveN(exercise.excessiveForceN);
+    mGauge->setFullScaleN(std::max(4.0, exercise.excessiveForceN * 1.2));
+    mGauge->setForceN(guidance.forceN);
+    QString instruction, detail;
+    int progressPercent = 0;
+    switch (exercise.type) {
+        case ExerciseType::PressTargets:
+            mGauge->setWindow(guidance.forceMinN, guidance.forceMaxN);
+            if (guidance.targetIndex >= 0) {
+                instruction = tr("Target %1 of %2: press with %3 and hold")
+                                  .arg(guidance.targetIndex + 1)
+                                  .arg(guidance.targetCount)
+                                  .arg(forceRange(guidance.forceMinN, guidance.forceMaxN));
+                detail = guidance.onTarget ? tr("On target")
+                                           : tr("Move to the blue marker (%1 mm away)").arg(guidance.distanceToTargetMm, 0, 'f', 0);
+                progressPercent = int(std::lround(100.0 * guidance.holdProgress));
+                mProgress->setFormat(tr("hold %p%"));
+            } else {
+                instruction = guidance.completed ? tr("All targets done") : tr("No target left");
+                progressPercent = 100;
+            }
+            break;
+        case ExerciseType::FindLump:
+            mGauge->setWindow(0.0, 0.0);
+            instruction = guidance.marked ? tr("Marked. Mark again to correct, or Stop to finish.")
+                                          : tr("Palpate gently; press Mark (M) while you press on the lump");
+            detail = guidance.contact ? tr("In contact") : tr("Not in contact");
+            progressPercent = guidance.marked ? 100 : 0;
+            mProgress->setFormat(guidance.marked ? tr("marked") : tr("not marked yet"));
+            break;
+        case ExerciseType::Trace:
+            mGauge->setWindow(guidance.forceMinN, guidance.forceMaxN);
+            instruction = tr("Follow the line with %1").arg(forceRange(guidance.forceMinN, guidance.forceMaxN));
+            detail = guidance.contact ? tr("%1 mm from the line").arg(guidance.distanceToPathMm, 0, 'f', 1)
+                                      : tr("Not in contact");
+            progressPercent = int(std::lround(100.0 * guidance.pathCovered));
+            mProgress->setFormat(tr("covered %p%"));
+            break;
+    }
+    mInstruction->setText(instruction);
+    mDetail->setText(detail);
+    mProgress->setValue(std::clamp(progressPercent, 0, 100));
+    mTime->setText(tr("Time left %1 s · score so far %2").arg(std::max(0.0, guidance.timeLeftS), 0, 'f', 0).arg(scoreSoFar, 0, 'f', 0));
+}
+
+}  // namespace palpate

@@ -1,0 +1,87 @@
+#pragma once
+// The trainee's Exercise dock: who (pick or create a trainee), what (an exercise: the shipped
+// examples or a file), Start / Stop / Mark, and while it runs the guidance: what to do now, a
+// force gauge with the window, the hold progress, the path covered, the time left. When it ends
+// the score card takes the guidance's place. The panel only shows and asks; the window's
+// ExerciseController runs the session.
+
+#include "engine/scoring/Exercise.h"
+#include "engine/scoring/ScoreReport.h"
+
+#include <QPair>
+#include <QString>
+#include <QWidget>
+
+class QComboBox;
+class QGroupBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QStackedWidget;
+
+namespace palpate {
+
+class ForceGauge;
+class ScoreCard;
+
+class TraineePanel final : public QWidget {
+    Q_OBJECT
+public:
+    enum class State { Idle, Starting, Running, Finished };
+
+    explicit TraineePanel(QWidget* parent = nullptr);
+
+    /// The trainees to choose from (name, id), selecting `selectId` if present.
+    void setTrainees(const QList<QPair<QString, qint64>>& trainees, qint64 selectId = -1);
+    qint64 traineeId() const;
+    QString traineeName() const;
+    /// The exercises to choose from (title, path); `select` is selected if present.
+    void setExercises(const QList<QPair<QString, QString>>& exercises, const QString& select = {});
+    /// Adds (or selects, if listed) one exercise file.
+    void addExercise(const QString& title, const QString& path);
+    QString exercisePath() const;
+    void setExerciseDescription(const QString& text);
+
+    void setState(State state);
+    State state() const { return mState; }
+    /// The running session's guidance and score so far.
+    void showGuidance(const Exercise& exercise, const ScoreGuidance& guidance, double scoreSoFar);
+    /// What the trainee is told (the guidance's first line).
+    QString instructionText() const;
+    void setMessage(const QString& text);
+
+    ForceGauge* forceGauge() const { return mGauge; }
+    ScoreCard* scoreCard() const { return mCard; }
+    QPushButton* startButton() const { return mStart; }
+    QPushButton* stopButton() const { return mStop; }
+    QPushButton* markButton() const { return mMark; }
+    QProgressBar* progressBar() const { return mProgress; }
+
+signals:
+    void newTraineeRequested();
+    void openExerciseRequested();
+    void startRequested();
+    void stopRequested();
+    void markRequested();
+    void traineeChanged(qint64 traineeId);
+    void exerciseChanged(const QString& path);
+
+private:
+    State mState = State::Idle;
+    QComboBox* mTrainees = nullptr;
+    QComboBox* mExercises = nullptr;
+    QLabel* mDescription = nullptr;
+    QPushButton* mStart = nullptr;
+    QPushButton* mStop = nullptr;
+    QPushButton* mMark = nullptr;
+    QStackedWidget* mPages = nullptr;
+    QLabel* mInstruction = nullptr;
+    QLabel* mDetail = nullptr;
+    ForceGauge* mGauge = nullptr;
+    QProgressBar* mProgress = nullptr;
+    QLabel* mTime = nullptr;
+    QLabel* mMessage = nullptr;
+    ScoreCard* mCard = nullptr;
+};
+
+}  // namespace palpate
