@@ -160,6 +160,9 @@ void TraineePanel::setState(State state) {
     mTrainees->setEnabled(!running);
     mExercises->setEnabled(!running);
     mPages->setCurrentIndex(state == State::Finished ? 1 : 0);
+    // The gauge and the progress mean something only while an exercise runs.
+    mGauge->setVisible(running);
+    mProgress->setVisible(running);
     if (state == State::Idle) {
         mInstruction->setText(tr("Choose a trainee and an exercise, then Start (F6)."));
         mDetail->clear();

@@ -199,11 +199,7 @@ void ExerciseController::startRecording() {
 void ExerciseController::poll() {
     switch (mPhase) {
         case Phase::Idle:
-        case Phase::Finished:
-            // Another mesh was loaded: the exercise's markers are not on it.
-            if (!mViewport.exerciseMarkers().empty() && mAssets && mSession.exercisePhysics() != mAssets->geometry)
-                mViewport.setExerciseMarkers({});
-            return;
+        case Phase::Finished: return;  // the window clears the markers when another mesh is drawn
         case Phase::Starting:
             if (!mSession.sceneSwitchPending() && mSession.hasLoop()) startRecording();
             return;

@@ -6,6 +6,7 @@
 #include "app/cli/DefaultScene.h"
 #include "app/gui/ExerciseController.h"
 #include "widgets/ChartsPanel.h"
+#include "widgets/ExerciseEditorPanel.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/ScoreCard.h"
 #include "widgets/TraineePanel.h"
@@ -24,6 +25,7 @@
 #include <QDropEvent>
 #include <QMimeData>
 #include <QSettings>
+#include <QUndoGroup>
 #include <QUndoStack>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -177,6 +179,7 @@ void MainWindow::createDocks() {
     updateChartsConfiguration();
     createRecorderDock();
     createExerciseDocks();
+    createEditorDock();
     mPanelSnapshot = std::make_unique<HapticSnapshot>();
 }
 
@@ -330,10 +333,12 @@ void MainWindow::createMenus() {
     quit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));  // QKeySequence::Quit is empty on some platforms
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = mParameterPanel->undoAction();
-    QAction* redo = mParameterPanel->redoAction();
-    undo->setShortcutContext(Qt::WindowShortcut);
-    redo->setShortcutContext(Qt::WindowShortcut);
+    // One Undo/Redo for the window, on the stack of the panel last worked in: two actions with the
+    // same shortcut would be ambiguous, and Qt would run neither.
+    QAction* undo = mUndoGroup->createUndoAction(this, tr("&Undo"));
+    QAction* redo = mUndoGroup->createRedoAction(this, tr("&Redo"));
+    undo->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
+    redo->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z));
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addAction(tr("&Apply Parameters"), QKeySequence(Qt::CTRL | Qt::Key_Return), mParameterPanel,
@@ -356,6 +361,7 @@ void MainWindow::createMenus() {
     view->addAction(mStatusDock->toggleViewAction());
     view->addAction(mChartsDock->toggleViewAction());
     view->addAction(mRecorderDock->toggleViewAction());
+    view->addAction(mEditorDock->toggleViewAction());
     view->addAction(mExerciseDock->toggleViewAction());
     view->addAction(mHistoryDock->toggleViewAction());
 
@@ -537,6 +543,12 @@ void MainWindow::showDrawnMesh() {
     if (!mesh || mesh == mShownMesh) return;  // a restart keeps the mesh: keep the camera too
     mShownMesh = mesh;
     mViewport->setMesh(*mesh);
+    if (mEditor) mEditor->setDrawnMesh(mesh, QString::fromStdString(mSession->drawnPath()));
+    // Markers of another mesh mean nothing here: a running exercise sets its own again.
+    if (!mExercises->running()) {
+        mViewport->setExerciseMarkers({});
+        showEditorMarkers();
+    }
     updateChartsConfiguration();  // the highlight follows the mesh size
     setWindowTitle(QStringLiteral("Palpate - %1").arg(QFileInfo(QString::fromStdString(mSession->drawnPath())).fileName()));
 }
@@ -870,6 +882,77 @@ void MainWindow::createExerciseDocks() {
     mExercises->openDatabase(ExerciseController::defaultDatabasePath());
 }
 
+void MainWindow::createEditorDock() {
+    mEditor = new ExerciseEditorPanel(cli::findResource, this);
+    mEditorDock = new QDockWidget(tr("Exercise Editor"), this);
+    mEditorDock->setObjectName(QStringLiteral("exerciseEditorDock"));
+    mEditorDock->setWidget(mEditor);
+    addDockWidget(Qt::RightDockWidgetArea, mEditorDock);
+    tabifyDockWidget(mChartsDock, mEditorDock);
+    mParameterDock->raise();
+    if (mSession->drawnMesh()) mEditor->setDrawnMesh(mSession->drawnMesh(), QString::fromStdString(mSession->drawnPath()));
+
+    // The window's File menu owns Ctrl+O / Ctrl+S and Edit owns Ctrl+Z: the editor's own copies
+    // would make those keys ambiguous. Its actions are in the Exercise menu instead.
+    for (QAction* a : {mEditor->openAction(), mEditor->saveAction(), mEditor->saveAsAction(), mEditor->undoAction(),
+                       mEditor->redoAction()})
+        a->setShortcuts({});
+    mEditor->saveAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_S));
+    mEditor->saveAction()->setShortcutContext(Qt::WindowShortcut);
+
+    mUndoGroup = new QUndoGroup(this);
+    mUndoGroup->addStack(mParameterPanel->undoStack());
+    mUndoGroup->addStack(mEditor->undoStack());
+    mUndoGroup->setActiveStack(mParameterPanel->undoStack());
+    mParameterPanel->undoAction()->setShortcuts({});
+    mParameterPanel->redoAction()->setShortcuts({});
+    // The stack of the panel the user works in is the one Edit > Undo acts on.
+    connect(qApp, &QApplication::focusChanged, this, [this](QWidget*, QWidget* now) {
+        for (QWidget* w = now; w; w = w->parentWidget()) {
+            if (w == mEditor) return mUndoGroup->setActiveStack(mEditor->undoStack());
+            if (w == mParameterPanel) return mUndoGroup->setActiveStack(mParameterPanel->undoStack());
+        }
+    });
+    connect(mEditorDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible) mUndoGroup->setActiveStack(mEditor->undoStack());
+        showEditorMarkers();
+    });
+
+    connect(mEditor, &ExerciseEditorPanel::placingChanged, this, [this](bool clickToPlace) {
+        if (clickToPlace) {
+            mViewport->setPickHandler([this](VertexId v) { mEditor->vertexPicked(v); });
+            statusBar()->showMessage(tr("Click the mesh to place; drag still orbits; Esc stops placing"), 6000);
+        } else {
+            mViewport->setPickHandler({});
+        }
+    });
+    connect(mEditor, &ExerciseEditorPanel::markersChanged, this, [this](const ExerciseMarkers&) { showEditorMarkers(); });
+    connect(mEditor, &ExerciseEditorPanel::meshRequested, this, [this](const QString& path) {
+        if (mExercises->running()) {
+            statusBar()->showMessage(tr("An exercise is running: the mesh cannot change now."), 6000);
+            return;
+        }
+        if (const QString error = loadMesh(path); !error.isEmpty()) QMessageBox::warning(this, tr("Cannot open mesh"), error);
+    });
+    connect(mEditor, &ExerciseEditorPanel::previewRequested, this, [this](const Exercise& exercise) {
+        if (const QString error = mExercises->startPreview(exercise); !error.isEmpty()) {
+            QMessageBox::warning(this, tr("Cannot try the exercise"), error);
+            return;
+        }
+        mExerciseDock->show();
+        mExerciseDock->raise();
+    });
+}
+
+void MainWindow::showEditorMarkers() {
+    // A running exercise (or its score) owns the markers; otherwise the editor's, while it shows.
+    if (!mEditor || mExercises->running()) return;
+    if (mEditorDock->isVisible())
+        mViewport->setExerciseMarkers(mEditor->markers());
+    else if (mExercises->phase() != ExerciseController::Phase::Finished)
+        mViewport->setExerciseMarkers({});  // a finished exercise's markers stay beside its score card
+}
+
 void MainWindow::createExerciseMenu() {
     QMenu* menu = menuBar()->addMenu(tr("E&xercise"));
     menu->addAction(tr("&Start"), QKeySequence(Qt::Key_F6), this, [this] {
@@ -887,6 +970,9 @@ void MainWindow::createExerciseMenu() {
         mHistoryDock->show();
         mHistoryDock->raise();
     });
+    menu->addSeparator();
+    QMenu* author = menu->addMenu(tr("&Author"));
+    author->addActions(mEditor->editorActions());
     menu->addSeparator();
     mModeGroup = new QActionGroup(this);
     mInstructorAction = menu->addAction(tr("&Instructor Mode"), QKeySequence(Qt::CTRL | Qt::Key_1), this,
@@ -908,6 +994,7 @@ void MainWindow::setMode(Mode mode) {
     // instructor's (a trainee must not make the task easier).
     mParameterDock->setVisible(instructor);
     mChartsDock->setVisible(instructor);
+    mEditorDock->setVisible(instructor);
     mExerciseDock->setVisible(true);
     mHistoryDock->setVisible(true);
     if (!instructor) mExerciseDock->raise();

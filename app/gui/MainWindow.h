@@ -22,12 +22,14 @@ class QActionGroup;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QUndoGroup;
 
 namespace palpate {
 
 class ChartsPanel;
 class DevicePanel;
 class ExerciseController;
+class ExerciseEditorPanel;
 class HistoryPanel;
 class TraineePanel;
 class ParameterPanel;
@@ -87,6 +89,10 @@ public:
     /// Trainee mode: the Exercise dock's content, the History dock's, and what runs exercises and
     /// keeps results (ExerciseController).
     TraineePanel* traineePanel() const { return mTraineePanel; }
+    /// Instructor mode's exercise editor (click the mesh to place targets, path, inclusion).
+    ExerciseEditorPanel* exerciseEditor() const { return mEditor; }
+    /// Edit > Undo/Redo act on the stack of the panel last focused (parameters or exercise editor).
+    QUndoGroup* undoGroup() const { return mUndoGroup; }
     HistoryPanel* historyPanel() const { return mHistoryPanel; }
     ExerciseController& exercises() { return *mExercises; }
     /// Instructor mode shows the tools that shape the tissue and the exercises (parameters,
@@ -163,6 +169,9 @@ private:
     void showRecordingError(const QString& message);
     void enterPlayback(const QString& path);
     void createExerciseDocks();
+    void createEditorDock();
+    /// The editor's markers on the viewport (instructor mode, no exercise running).
+    void showEditorMarkers();
     void createExerciseMenu();
     /// During an exercise the tissue, mesh and device stay as the exercise set them.
     void setExerciseRunning(bool running);
@@ -223,6 +232,9 @@ private:
     bool mTouchBeforePlayback = false;
     std::unique_ptr<HapticSnapshot> mPanelSnapshot;
     TraineePanel* mTraineePanel = nullptr;
+    ExerciseEditorPanel* mEditor = nullptr;
+    QDockWidget* mEditorDock = nullptr;
+    QUndoGroup* mUndoGroup = nullptr;
     HistoryPanel* mHistoryPanel = nullptr;
     QDockWidget* mExerciseDock = nullptr;
     QDockWidget* mHistoryDock = nullptr;

@@ -9,6 +9,7 @@
 #include "app/gui/MainWindow.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
+#include "widgets/ExerciseEditorPanel.h"
 #include "widgets/ForceGauge.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/ParameterPanel.h"
@@ -21,6 +22,7 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QFileInfo>
 #include <QFile>
 #include <QImage>
@@ -30,6 +32,9 @@
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTest>
+#include <QUndoGroup>
+#include <QUndoStack>
 
 #include <algorithm>
 
@@ -279,6 +284,55 @@ TEST(TraineeMode, ErrorsAreReportedNotCrashedOn) {
     // Stop and mark with nothing running do nothing.
     window->exercises().stop();
     EXPECT_FALSE(window->exercises().mark());
+}
+
+TEST(InstructorMode, ClickingTheMeshPlacesTargetsTheViewportShowsAndUndoRemoves) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+    ASSERT_EQ(window->loadMesh(resource("meshes/sphere_1442.off")), QString());
+    window->advanceTicks(10);
+    window->setMode(MainWindow::Mode::Instructor);
+    ExerciseEditorPanel* editor = window->exerciseEditor();
+    ASSERT_NE(editor, nullptr);
+    editor->newExercise(ExerciseType::PressTargets);
+    // The window's Undo acts on the editor once it is worked in.
+    window->undoGroup()->setActiveStack(editor->undoStack());
+    editor->setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    ASSERT_TRUE(window->viewport()->pickHandlerSet());
+
+    // A click (no drag) at the viewport's centre places a target on the vertex under it.
+    QWidget* view = window->viewport()->widget();
+    const QPoint centre(view->width() / 2, view->height() / 2);
+    const auto expected = window->viewport()->pickVertexAt(QPointF(centre), view->size());
+    ASSERT_TRUE(expected);
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, centre);
+    ASSERT_EQ(editor->exercise().pressTargets.targets.size(), 1u);
+    const auto& mesh = *window->session().drawnMesh();
+    EXPECT_EQ(editor->exercise().pressTargets.targets[0].at.vertex, mesh.originalIndex()[*expected]);
+    const ExerciseMarkers& shown = window->viewport()->exerciseMarkers();
+    ASSERT_EQ(countMarkers(shown, ExerciseMarker::Kind::Target), 1);
+    EXPECT_EQ(shown.markers[0].positionMm, mesh.restPositionsMm()[*expected]);
+    // A drag orbits and places nothing.
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, centre);
+    QMouseEvent move(QEvent::MouseMove, QPointF(centre + QPoint(40, 10)), view->mapToGlobal(QPointF(centre + QPoint(40, 10))),
+                     Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(view, &move);
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(40, 10));
+    EXPECT_EQ(editor->exercise().pressTargets.targets.size(), 1u);
+    if (const QByteArray shots = qgetenv("PALPATE_SHOT_DIR"); !shots.isEmpty()) {
+        if (auto* dock = qobject_cast<QDockWidget*>(editor->parentWidget())) dock->raise();
+        QApplication::processEvents();
+        window->grab().save(QString::fromLocal8Bit(shots) + QStringLiteral("/instructor.png"));
+    }
+
+    // Edit > Undo (the window's group) takes the target back, and the viewport follows.
+    window->undoGroup()->undo();
+    EXPECT_EQ(editor->exercise().pressTargets.targets.size(), 0u);
+    EXPECT_EQ(countMarkers(window->viewport()->exerciseMarkers(), ExerciseMarker::Kind::Target), 0);
+    // Leaving placing mode gives the left button back to the camera.
+    editor->setPlacing(ExerciseEditorPanel::Placing::None);
+    EXPECT_FALSE(window->viewport()->pickHandlerSet());
 }
 
 TEST(ForceGauge, ZonesFollowTheWindowAndTheExcessiveForce) {

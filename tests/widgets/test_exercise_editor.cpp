@@ -1,0 +1,725 @@
+// The instructor's exercise editor under QT_QPA_PLATFORM=offscreen (main() is in test_viewport.cpp):
+// shipped examples open as the engine reads them; targets, the lump and path points placed by
+// clicks (stored in the mesh file's numbering, drawn at the engine vertex's rest position); undo
+// and redo; problems naming the key; save writes resources-relative paths that load back the
+// same; the rubric; a mesh mismatch; Try it; malformed files; the modified flag and the discard
+// question.
+#include "widgets/ExerciseEditCommands.h"
+#include "widgets/ExerciseEditorPanel.h"
+
+#include "engine/TissueMesh.h"
+#include "engine/scoring/ExerciseFile.h"
+#include "engine/scoring/ExerciseGeometry.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+using namespace palpate;
+
+namespace {
+
+const std::string kResources = std::string(PALPATE_SOURCE_DIR) + "/resources/";
+
+/// The source tree's resources/, as the app's findResource finds them.
+std::string findInSource(const std::string& relative) {
+    std::error_code ec;
+    const std::filesystem::path p = std::filesystem::path(kResources) / relative;
+    return std::filesystem::is_regular_file(p, ec) ? std::filesystem::weakly_canonical(p, ec).string() : std::string();
+}
+
+std::string json(const Exercise& e) { return exerciseToJson(e, -1); }
+
+struct DrawnMesh {
+    std::shared_ptr<const TissueMesh> mesh;
+    QString path;
+};
+
+DrawnMesh loadMesh(const char* relative) {
+    const std::string path = findInSource(relative);
+    auto loaded = TissueMesh::load(path);
+    EXPECT_TRUE(loaded.mesh) << loaded.error();
+    return {loaded.mesh ? std::make_shared<const TissueMesh>(std::move(*loaded.mesh)) : nullptr, QString::fromStdString(path)};
+}
+
+/// `count` engine vertices spread over the mesh.
+std::vector<VertexId> spreadVertices(const TissueMesh& mesh, std::size_t count) {
+    std::vector<VertexId> out;
+    for (std::size_t i = 0; i < count; ++i) out.push_back(VertexId(7 + i * (mesh.vertexCount() - 8) / count));
+    return out;
+}
+
+/// The shipped meshes are stored in the engine's order already (originalIndex is the identity):
+/// a copy with its vertices written in reverse tells the file's numbering from the engine's.
+QString writeReversedOff(const std::string& sourceOff, const QString& target) {
+    std::ifstream in(sourceOff);
+    std::string header;
+    std::size_t nv = 0, nf = 0, ne = 0;
+    in >> header >> nv >> nf >> ne;
+    std::vector<std::array<double, 3>> vertices(nv);
+    for (auto& v : vertices) in >> v[0] >> v[1] >> v[2];
+    std::ofstream out(target.toStdString());
+    out << "OFF\n" << nv << ' ' << nf << " 0\n";
+    out.precision(9);
+    for (std::size_t i = nv; i-- > 0;) out << vertices[i][0] << ' ' << vertices[i][1] << ' ' << vertices[i][2] << '\n';
+    for (std::size_t f = 0; f < nf; ++f) {
+        std::size_t k = 0, a = 0, b = 0, c = 0;
+        in >> k >> a >> b >> c;
+        out << "3 " << nv - 1 - a << ' ' << nv - 1 - b << ' ' << nv - 1 - c << '\n';
+    }
+    return out ? target : QString();
+}
+
+/// The panel with the markers it last sent.
+struct Editor {
+    ExerciseEditorPanel panel{findInSource};
+    ExerciseMarkers lastMarkers;
+    int markerSignals = 0;
+    Editor() {
+        QObject::connect(&panel, &ExerciseEditorPanel::markersChanged, [this](const ExerciseMarkers& m) {
+            lastMarkers = m;
+            ++markerSignals;
+        });
+    }
+};
+
+template <typename T>
+T* child(QWidget& parent, const char* name) {
+    T* w = parent.findChild<T*>(QLatin1String(name));
+    EXPECT_NE(w, nullptr) << name;
+    return w;
+}
+
+int rubricRow(ExerciseEditorPanel& panel, const char* metric) {
+    auto* table = child<QTableWidget>(panel, "rubricTable");
+    for (int r = 0; r < table->rowCount(); ++r)
+        if (table->item(r, 0)->text() == QLatin1String(metric)) return r;
+    return -1;
+}
+
+bool hasProblemStartingWith(const QStringList& problems, const QString& key) {
+    for (const QString& p : problems)
+        if (p.startsWith(key)) return true;
+    return false;
+}
+
+}  // namespace
+
+TEST(ExerciseEditor, OpensEachShippedExampleAsTheEngineReadsIt) {
+    Editor editor;
+    for (const char* name : {"exercises/press_targets.json", "exercises/find_lump.json", "exercises/trace.json"}) {
+        const std::string path = findInSource(name);
+        ASSERT_FALSE(path.empty()) << name;
+        const auto loaded = loadExercise(path);
+        ASSERT_TRUE(loaded.exercise) << loaded.error();
+        EXPECT_EQ(editor.panel.openExercise(QString::fromStdString(path)), QString()) << name;
+        EXPECT_EQ(json(editor.panel.exercise()), json(*loaded.exercise)) << name;
+        EXPECT_EQ(editor.panel.exercise().sourcePath, loaded.exercise->sourcePath);
+        EXPECT_EQ(editor.panel.currentPath(), QString::fromStdString(path));
+        EXPECT_FALSE(editor.panel.isModified());
+        EXPECT_EQ(editor.panel.undoStack()->count(), 0);
+        // A shipped exercise is valid; only the mesh the viewport shows (none here) is noted.
+        for (const QString& p : editor.panel.problems())
+            EXPECT_TRUE(p.startsWith(QStringLiteral("mesh: the viewport shows"))) << p.toStdString();
+        // The form shows it: the type's page and its name.
+        EXPECT_EQ(child<QLineEdit>(editor.panel, "exerciseNameEdit")->text().toStdString(), loaded.exercise->name);
+    }
+}
+
+TEST(ExerciseEditor, TargetsAddedByClickingAreStoredInFileNumberingAndUndoable) {
+    const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
+    ASSERT_TRUE(drawn.mesh);
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    editor.panel.newExercise(ExerciseType::PressTargets);
+    EXPECT_EQ(editor.panel.exercise().meshPath, "meshes/sphere_1442.off");  // the drawn mesh, resources-relative
+    EXPECT_TRUE(editor.panel.drawnMeshMatches());
+    EXPECT_TRUE(editor.panel.exercise().pressTargets.targets.empty());
+
+    QSignalSpy placing(&editor.panel, &ExerciseEditorPanel::placingChanged);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    ASSERT_EQ(placing.count(), 1);
+    EXPECT_TRUE(placing.at(0).at(0).toBool());
+    EXPECT_TRUE(child<QToolButton>(editor.panel, "targetAddButton")->isChecked());
+
+    const std::vector<VertexId> picks = spreadVertices(*drawn.mesh, 3);
+    ASSERT_EQ(picks.size(), 3u);
+    for (VertexId v : picks) editor.panel.vertexPicked(v);
+
+    const auto& targets = editor.panel.exercise().pressTargets.targets;
+    ASSERT_EQ(targets.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        ASSERT_TRUE(targets[i].at.vertex);
+        EXPECT_EQ(*targets[i].at.vertex, drawn.mesh->originalIndex()[picks[i]]);
+    }
+    EXPECT_EQ(targets[0].forceMinN, PressTarget{}.forceMinN);  // the defaults
+    EXPECT_EQ(targets[0].toleranceMm, PressTarget{}.toleranceMm);
+    EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::AddTarget);  // stays on for more
+    EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
+
+    auto expectTargetMarkers = [&](std::size_t count) {
+        ASSERT_EQ(editor.lastMarkers.markers.size(), count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const ExerciseMarker& m = editor.lastMarkers.markers[i];
+            EXPECT_EQ(m.kind, ExerciseMarker::Kind::Target);
+            EXPECT_EQ(m.positionMm, drawn.mesh->restPositionsMm()[picks[i]]) << i;
+            EXPECT_EQ(m.label, QString::number(i + 1));
+        }
+    };
+    expectTargetMarkers(3);
+    EXPECT_TRUE(editor.lastMarkers.markers[2].selected);  // the one just added
+    EXPECT_EQ(child<QTableWidget>(editor.panel, "targetTable")->rowCount(), 3);
+
+    EXPECT_EQ(editor.panel.undoStack()->count(), 3);  // one step per click
+    editor.panel.undoStack()->undo();
+    EXPECT_EQ(editor.panel.exercise().pressTargets.targets.size(), 2u);
+    expectTargetMarkers(2);
+    EXPECT_EQ(child<QTableWidget>(editor.panel, "targetTable")->rowCount(), 2);
+    editor.panel.undoStack()->redo();
+    EXPECT_EQ(editor.panel.exercise().pressTargets.targets.size(), 3u);
+    expectTargetMarkers(3);
+
+    // Selecting a row selects its marker.
+    child<QTableWidget>(editor.panel, "targetTable")->selectRow(0);
+    EXPECT_EQ(editor.panel.selectedIndex(), 0);
+    EXPECT_TRUE(editor.lastMarkers.markers[0].selected);
+    EXPECT_FALSE(editor.lastMarkers.markers[2].selected);
+
+    // Esc stops placing (the panel's action), and the window hears it.
+    editor.panel.findChild<QAction*>(QStringLiteral("stopPlacingAction"))->trigger();
+    EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::None);
+    ASSERT_EQ(placing.count(), 2);
+    EXPECT_FALSE(placing.at(1).at(0).toBool());
+    editor.panel.vertexPicked(picks[0]);  // not placing: a click changes nothing
+    EXPECT_EQ(editor.panel.exercise().pressTargets.targets.size(), 3u);
+
+    // Move: the selected target goes to the next click, in one step, and placing ends.
+    const int steps = editor.panel.undoStack()->count();
+    child<QToolButton>(editor.panel, "targetMoveButton")->click();
+    EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::MoveSelected);
+    editor.panel.vertexPicked(1000);
+    EXPECT_EQ(editor.panel.exercise().pressTargets.targets[0].at.vertex.value_or(~0u), drawn.mesh->originalIndex()[1000]);
+    EXPECT_EQ(editor.lastMarkers.markers[0].positionMm, drawn.mesh->restPositionsMm()[1000]);
+    EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::None);
+    EXPECT_EQ(editor.panel.undoStack()->count(), steps + 1);
+
+    // Remove (Delete in the table) removes the selected target; undo brings it back.
+    editor.panel.setSelectedIndex(1);
+    child<QToolButton>(editor.panel, "targetRemoveButton")->click();
+    ASSERT_EQ(editor.panel.exercise().pressTargets.targets.size(), 2u);
+    EXPECT_EQ(editor.panel.exercise().pressTargets.targets[1].at.vertex.value_or(~0u), drawn.mesh->originalIndex()[picks[2]]);
+    editor.panel.undoStack()->undo();
+    EXPECT_EQ(editor.panel.exercise().pressTargets.targets.size(), 3u);
+}
+
+TEST(ExerciseEditor, ClicksOnARenumberedMeshAreStoredInTheFilesNumbering) {
+    QTemporaryDir dir;
+    const QString meshFile = writeReversedOff(findInSource("meshes/sphere_1442.off"), dir.filePath(QStringLiteral("reversed.off")));
+    ASSERT_FALSE(meshFile.isEmpty());
+    auto loaded = TissueMesh::load(meshFile.toStdString());
+    ASSERT_TRUE(loaded.mesh) << loaded.error();
+    const auto mesh = std::make_shared<const TissueMesh>(std::move(*loaded.mesh));
+    Editor editor;
+    editor.panel.setDrawnMesh(mesh, meshFile);
+    editor.panel.newExercise(ExerciseType::PressTargets);
+    EXPECT_EQ(QString::fromStdString(editor.panel.exercise().meshPath), QFileInfo(meshFile).canonicalFilePath());  // not under resources/
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    const std::vector<VertexId> picks = spreadVertices(*mesh, 3);
+    for (VertexId v : picks) editor.panel.vertexPicked(v);
+    ASSERT_EQ(editor.panel.exercise().pressTargets.targets.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const std::uint32_t stored = editor.panel.exercise().pressTargets.targets[i].at.vertex.value_or(~0u);
+        EXPECT_EQ(stored, mesh->originalIndex()[picks[i]]);
+        EXPECT_NE(stored, picks[i]);  // the file's numbering, not the engine's
+        EXPECT_EQ(editor.lastMarkers.markers.at(i).positionMm, mesh->restPositionsMm()[picks[i]]);
+    }
+    // Saved beside its mesh: the mesh path is written relative to the exercise, and the targets
+    // come back on the vertices that were clicked.
+    const QString file = dir.filePath(QStringLiteral("reversed.json"));
+    ASSERT_EQ(editor.panel.saveExercise(file), QString());
+    const auto exercise = loadExercise(file.toStdString());
+    ASSERT_TRUE(exercise.exercise) << exercise.error();
+    EXPECT_EQ(exercise.exercise->meshPath, "reversed.off");
+    std::string error;
+    const auto geometry = ExerciseGeometry::build(*exercise.exercise, *mesh, error);
+    ASSERT_TRUE(geometry) << error;
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(geometry->targets()[i].vertex, picks[i]);
+}
+
+TEST(ExerciseEditor, ATargetWindowUpsideDownIsNamedByItsKey) {
+    const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    editor.panel.newExercise(ExerciseType::PressTargets);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.vertexPicked(100);
+    ASSERT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
+
+    auto* table = child<QTableWidget>(editor.panel, "targetTable");
+    table->item(0, 3)->setData(Qt::EditRole, 0.5);  // Fmax 0.5 N below Fmin 1 N, as typed in the cell
+    EXPECT_EQ(editor.panel.exercise().pressTargets.targets[0].forceMaxN, 0.5);
+    EXPECT_TRUE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("press_targets.targets[0].force_max_n")))
+        << editor.panel.problems().join('\n').toStdString();
+    EXPECT_TRUE(table->item(0, 3)->data(Qt::BackgroundRole).isValid());  // the cell is marked
+    EXPECT_FALSE(table->item(0, 2)->data(Qt::BackgroundRole).isValid());
+    auto* problemsLabel = child<QLabel>(editor.panel, "problemsLabel");
+    EXPECT_TRUE(problemsLabel->text().contains(QStringLiteral("press_targets.targets[0].force_max_n")));
+
+    // Neither saved nor tried while it is wrong.
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("bad.json"));
+    EXPECT_TRUE(editor.panel.saveExercise(file).contains(QStringLiteral("force_max_n")));
+    EXPECT_FALSE(QFile::exists(file));
+    int previews = 0;
+    QObject::connect(&editor.panel, &ExerciseEditorPanel::previewRequested, [&] { ++previews; });
+    EXPECT_FALSE(editor.panel.preview());
+    EXPECT_EQ(previews, 0);
+
+    editor.panel.undoStack()->undo();
+    EXPECT_TRUE(editor.panel.problems().isEmpty());
+    EXPECT_EQ(table->item(0, 3)->data(Qt::EditRole).toDouble(), 2.0);  // the form shows the undone value
+}
+
+TEST(ExerciseEditor, SaveWritesResourceRelativePathsThatLoadBackTheSame) {
+    const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    editor.panel.newExercise(ExerciseType::PressTargets);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.vertexPicked(10);
+    editor.panel.vertexPicked(700);
+    // The preset given as an absolute path (Browse… outside the list does so): written relative.
+    auto* preset = child<QComboBox>(editor.panel, "tissuePresetCombo");
+    preset->lineEdit()->setText(QString::fromStdString(findInSource("presets/tissues/liver.json")));
+    emit preset->lineEdit()->editingFinished();
+    EXPECT_EQ(editor.panel.exercise().tissuePresetPath, findInSource("presets/tissues/liver.json"));
+    EXPECT_TRUE(editor.panel.isModified());
+
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("two_targets.json"));
+    QSignalSpy modified(&editor.panel, &ExerciseEditorPanel::modifiedChanged);
+    ASSERT_EQ(editor.panel.saveExercise(file), QString());
+    EXPECT_FALSE(editor.panel.isModified());
+    ASSERT_EQ(modified.count(), 1);
+    EXPECT_FALSE(modified.at(0).at(0).toBool());
+    EXPECT_EQ(editor.panel.currentPath(), QFileInfo(file).absoluteFilePath());
+
+    const auto loaded = loadExercise(file.toStdString());
+    ASSERT_TRUE(loaded.exercise) << loaded.error();
+    EXPECT_EQ(json(*loaded.exercise), json(editor.panel.exercise()));
+    EXPECT_EQ(loaded.exercise->sourcePath, editor.panel.exercise().sourcePath);
+    EXPECT_EQ(loaded.exercise->meshPath, "meshes/sphere_1442.off");
+    EXPECT_EQ(loaded.exercise->tissuePresetPath, "presets/tissues/liver.json");
+    EXPECT_EQ(resolveExercisePath(*loaded.exercise, loaded.exercise->meshPath, findInSource),
+              findInSource("meshes/sphere_1442.off"));
+    EXPECT_EQ(resolveExercisePath(*loaded.exercise, loaded.exercise->tissuePresetPath, findInSource),
+              findInSource("presets/tissues/liver.json"));
+    ASSERT_EQ(loaded.exercise->pressTargets.targets.size(), 2u);
+    EXPECT_EQ(*loaded.exercise->pressTargets.targets[1].at.vertex, drawn.mesh->originalIndex()[700]);
+
+    // Open it again: the same exercise.
+    Editor again;
+    ASSERT_EQ(again.panel.openExercise(file), QString());
+    EXPECT_EQ(json(again.panel.exercise()), json(*loaded.exercise));
+
+    // An edit after the save is unsaved again; undoing it is back at the saved state.
+    editor.panel.vertexPicked(20);
+    EXPECT_TRUE(editor.panel.isModified());
+    editor.panel.undoStack()->undo();
+    EXPECT_FALSE(editor.panel.isModified());
+}
+
+TEST(ExerciseEditor, PlacingTheLumpByClickingSetsItsCentre) {
+    const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    editor.panel.newExercise(ExerciseType::FindLump);
+    EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
+    const auto before = editor.panel.exercise().findLump.inclusion.centre.vertex;
+    ASSERT_TRUE(before);
+
+    child<QPushButton>(editor.panel, "placeLumpButton")->click();
+    EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::PlaceInclusion);
+    const VertexId v = 700;
+    ASSERT_NE(*before, drawn.mesh->originalIndex()[v]);  // the click moves it
+    editor.panel.vertexPicked(v);
+    ASSERT_TRUE(editor.panel.exercise().findLump.inclusion.centre.vertex);
+    EXPECT_EQ(*editor.panel.exercise().findLump.inclusion.centre.vertex, drawn.mesh->originalIndex()[v]);
+    EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::None);  // one click places it
+    EXPECT_FALSE(child<QPushButton>(editor.panel, "placeLumpButton")->isChecked());
+
+    ASSERT_EQ(editor.lastMarkers.markers.size(), 1u);
+    const ExerciseMarker& m = editor.lastMarkers.markers[0];
+    EXPECT_EQ(m.kind, ExerciseMarker::Kind::Inclusion);  // the instructor sees it
+    EXPECT_EQ(m.positionMm, drawn.mesh->restPositionsMm()[v]);
+    EXPECT_EQ(m.radiusMm, editor.panel.exercise().findLump.inclusion.radiusMm);
+
+    // The radius is a field: the circle follows; undo puts the centre back.
+    child<QDoubleSpinBox>(editor.panel, "lumpRadiusSpin")->setValue(15.0);
+    EXPECT_EQ(editor.lastMarkers.markers.at(0).radiusMm, 15.0);
+    editor.panel.undoStack()->undo();
+    editor.panel.undoStack()->undo();
+    EXPECT_EQ(editor.panel.exercise().findLump.inclusion.centre.vertex, before);
+    EXPECT_EQ(child<QLabel>(editor.panel, "lumpCentreLabel")->text(), QStringLiteral("vertex %1").arg(*before));
+}
+
+TEST(ExerciseEditor, TracePointsAreAddedByClickingAndReordered) {
+    const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    editor.panel.newExercise(ExerciseType::Trace);
+    EXPECT_TRUE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("trace.path")));
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddPathPoint);
+    const std::vector<VertexId> picks = spreadVertices(*drawn.mesh, 3);
+    ASSERT_EQ(picks.size(), 3u);
+
+    editor.panel.vertexPicked(picks[0]);
+    // A path of one point has no geometry yet, but its point is drawn.
+    ASSERT_EQ(editor.lastMarkers.markers.size(), 1u);
+    EXPECT_EQ(editor.lastMarkers.markers[0].positionMm, drawn.mesh->restPositionsMm()[picks[0]]);
+    editor.panel.vertexPicked(picks[1]);
+    editor.panel.vertexPicked(picks[2]);
+    EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
+    auto fileVertex = [&](VertexId v) { return drawn.mesh->originalIndex()[v]; };
+    auto pathVertices = [&] {
+        std::vector<std::uint32_t> out;
+        for (const SurfacePoint& p : editor.panel.exercise().trace.path) out.push_back(p.vertex.value_or(~0u));
+        return out;
+    };
+    EXPECT_EQ(pathVertices(), (std::vector<std::uint32_t>{fileVertex(picks[0]), fileVertex(picks[1]), fileVertex(picks[2])}));
+    EXPECT_EQ(child<QListWidget>(editor.panel, "pathList")->count(), 3);
+    ASSERT_EQ(editor.lastMarkers.pathMm.size(), 3u);
+
+    editor.panel.setSelectedIndex(2);
+    child<QToolButton>(editor.panel, "pathPointUpButton")->click();
+    EXPECT_EQ(pathVertices(), (std::vector<std::uint32_t>{fileVertex(picks[0]), fileVertex(picks[2]), fileVertex(picks[1])}));
+    EXPECT_EQ(editor.panel.selectedIndex(), 1);  // the selection moves with the point
+    ASSERT_EQ(editor.lastMarkers.pathMm.size(), 3u);
+    EXPECT_EQ(editor.lastMarkers.pathMm[1], drawn.mesh->restPositionsMm()[picks[2]]);
+    EXPECT_TRUE(editor.lastMarkers.markers[1].selected);
+
+    editor.panel.undoStack()->undo();
+    EXPECT_EQ(pathVertices(), (std::vector<std::uint32_t>{fileVertex(picks[0]), fileVertex(picks[1]), fileVertex(picks[2])}));
+
+    // Remove the first point: the second becomes the start.
+    editor.panel.setSelectedIndex(0);
+    child<QToolButton>(editor.panel, "pathPointRemoveButton")->click();
+    EXPECT_EQ(pathVertices(), (std::vector<std::uint32_t>{fileVertex(picks[1]), fileVertex(picks[2])}));
+}
+
+TEST(ExerciseEditor, RubricEditsAreStoredAndSurviveSaveAndLoad) {
+    Editor editor;
+    const std::string example = findInSource("exercises/press_targets.json");
+    ASSERT_EQ(editor.panel.openExercise(QString::fromStdString(example)), QString());
+    auto* table = child<QTableWidget>(editor.panel, "rubricTable");
+    // The metrics of the type, and only those.
+    int applying = 0;
+    for (std::size_t i = 0; i < kMetricCount; ++i) applying += metricApplies(Metric(i), ExerciseType::PressTargets);
+    EXPECT_EQ(table->rowCount(), applying);
+    EXPECT_EQ(rubricRow(editor.panel, "lump_error_mm"), -1);
+
+    const int row = rubricRow(editor.panel, "completion");
+    ASSERT_GE(row, 0);
+    const Exercise& e = editor.panel.exercise();
+    EXPECT_FALSE(e.rubric[std::size_t(Metric::Completion)]);
+    EXPECT_EQ(table->item(row, 2)->data(Qt::EditRole).toDouble(), defaultRubricItem(e, Metric::Completion).weight);
+    EXPECT_TRUE(table->item(row, 2)->font().italic());  // a default
+
+    table->item(row, 2)->setData(Qt::EditRole, 55.0);
+    ASSERT_TRUE(editor.panel.exercise().rubric[std::size_t(Metric::Completion)]);
+    const RubricItem line = *editor.panel.exercise().rubric[std::size_t(Metric::Completion)];
+    EXPECT_EQ(line.weight, 55.0);
+    EXPECT_EQ(line.fullMarks, defaultRubricItem(e, Metric::Completion).fullMarks);
+    EXPECT_EQ(effectiveRubric(editor.panel.exercise())[std::size_t(Metric::Completion)].weight, 55.0);
+    EXPECT_FALSE(table->item(row, 2)->font().italic());  // set by the exercise now
+
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("weighted.json"));
+    ASSERT_EQ(editor.panel.saveExercise(file), QString());
+    const auto loaded = loadExercise(file.toStdString());
+    ASSERT_TRUE(loaded.exercise) << loaded.error();
+    ASSERT_TRUE(loaded.exercise->rubric[std::size_t(Metric::Completion)]);
+    EXPECT_EQ(loaded.exercise->rubric[std::size_t(Metric::Completion)]->weight, 55.0);
+    EXPECT_EQ(loaded.exercise->meshPath, "meshes/stomach_3970.off");
+
+    child<QPushButton>(editor.panel, "resetRubricButton")->click();
+    EXPECT_FALSE(editor.panel.exercise().rubric[std::size_t(Metric::Completion)]);
+    EXPECT_TRUE(table->item(row, 2)->font().italic());
+    editor.panel.undoStack()->undo();
+    EXPECT_EQ(editor.panel.exercise().rubric[std::size_t(Metric::Completion)]->weight, 55.0);
+}
+
+TEST(ExerciseEditor, TypeChangeIsOneStepAndDropsRubricLinesTheNewTypeDoesNotMeasure) {
+    Editor editor;
+    ASSERT_EQ(editor.panel.openExercise(QString::fromStdString(findInSource("exercises/press_targets.json"))), QString());
+    auto* table = child<QTableWidget>(editor.panel, "rubricTable");
+    table->item(rubricRow(editor.panel, "target_error_mm"), 2)->setData(Qt::EditRole, 20.0);
+    ASSERT_TRUE(editor.panel.exercise().rubric[std::size_t(Metric::TargetErrorMm)]);
+    const int steps = editor.panel.undoStack()->count();
+
+    auto* type = child<QComboBox>(editor.panel, "exerciseTypeCombo");
+    type->setCurrentIndex(2);
+    emit type->activated(2);  // as a user's choice
+    EXPECT_EQ(editor.panel.exercise().type, ExerciseType::Trace);
+    EXPECT_FALSE(editor.panel.exercise().rubric[std::size_t(Metric::TargetErrorMm)]);
+    EXPECT_EQ(editor.panel.undoStack()->count(), steps + 1);
+    EXPECT_GE(rubricRow(editor.panel, "band_fraction"), 0);
+
+    editor.panel.undoStack()->undo();
+    EXPECT_EQ(editor.panel.exercise().type, ExerciseType::PressTargets);
+    EXPECT_EQ(type->currentIndex(), 0);
+    EXPECT_EQ(editor.panel.exercise().pressTargets.targets.size(), 3u);  // kept across the switch
+    EXPECT_TRUE(editor.panel.exercise().rubric[std::size_t(Metric::TargetErrorMm)]);
+}
+
+TEST(ExerciseEditor, AMeshOtherThanTheDrawnOneIsReportedAndNotPlacedOn) {
+    const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    const std::string example = findInSource("exercises/press_targets.json");  // on stomach_3970.off
+    ASSERT_EQ(editor.panel.openExercise(QString::fromStdString(example)), QString());
+    EXPECT_FALSE(editor.panel.drawnMeshMatches());
+    ASSERT_EQ(editor.panel.problems().size(), 1);
+    EXPECT_TRUE(editor.panel.problems()[0].startsWith(QStringLiteral("mesh:")));
+    EXPECT_TRUE(editor.panel.problems()[0].contains(QStringLiteral("sphere_1442.off")));
+    EXPECT_TRUE(editor.panel.problems()[0].contains(QStringLiteral("stomach_3970.off")));
+    EXPECT_TRUE(editor.lastMarkers.empty());  // its vertices mean nothing on the drawn mesh
+
+    // A click on the other mesh places nothing.
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.vertexPicked(5);
+    EXPECT_EQ(editor.panel.exercise().pressTargets.targets.size(), 3u);
+    EXPECT_FALSE(editor.panel.isModified());
+
+    // Show this mesh asks for the exercise's mesh; once it is drawn, its markers come.
+    QSignalSpy requested(&editor.panel, &ExerciseEditorPanel::meshRequested);
+    child<QPushButton>(editor.panel, "showMeshButton")->click();
+    ASSERT_EQ(requested.count(), 1);
+    EXPECT_EQ(requested.at(0).at(0).toString().toStdString(), findInSource("meshes/stomach_3970.off"));
+    const DrawnMesh stomach = loadMesh("meshes/stomach_3970.off");
+    editor.panel.setDrawnMesh(stomach.mesh, requested.at(0).at(0).toString());
+    EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
+    EXPECT_EQ(editor.lastMarkers.markers.size(), 3u);
+
+    // A vertex that the exercise's mesh does not have is a problem even when another mesh is drawn.
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    auto* table = child<QTableWidget>(editor.panel, "targetTable");
+    table->item(0, 1)->setData(Qt::EditRole, 99999);
+    EXPECT_TRUE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("press_targets.targets[0]")))
+        << editor.panel.problems().join('\n').toStdString();
+}
+
+TEST(ExerciseEditor, TryItCarriesTheUnsavedExerciseWithResolvablePaths) {
+    const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    editor.panel.newExercise(ExerciseType::PressTargets);
+    std::vector<Exercise> sentExercises;
+    QObject::connect(&editor.panel, &ExerciseEditorPanel::previewRequested,
+                     [&](const Exercise& e) { sentExercises.push_back(e); });
+    EXPECT_FALSE(editor.panel.preview());  // no target yet
+    EXPECT_TRUE(sentExercises.empty());
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.vertexPicked(42);
+
+    editor.panel.previewAction()->trigger();  // F5
+    ASSERT_EQ(sentExercises.size(), 1u);
+    const Exercise& sent = sentExercises[0];
+    EXPECT_EQ(json(sent), json(editor.panel.exercise()));
+    EXPECT_TRUE(sent.sourcePath.empty());  // never saved
+    EXPECT_EQ(resolveExercisePath(sent, sent.meshPath, findInSource), findInSource("meshes/sphere_1442.off"));
+    EXPECT_FALSE(resolveExercisePath(sent, sent.tissuePresetPath, findInSource).empty());
+    EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::None);  // the viewport is the trainee's now
+    EXPECT_TRUE(editor.panel.isModified());  // nothing saved
+}
+
+TEST(ExerciseEditor, AMalformedFileIsRefusedNamingTheKeyAndChangesNothing) {
+    Editor editor;
+    const std::string example = findInSource("exercises/trace.json");
+    ASSERT_EQ(editor.panel.openExercise(QString::fromStdString(example)), QString());
+    child<QDoubleSpinBox>(editor.panel, "timeLimitSpin")->setValue(50.0);  // an unsaved edit
+    const std::string before = json(editor.panel.exercise());
+    const int steps = editor.panel.undoStack()->count();
+
+    QTemporaryDir dir;
+    auto write = [&](const char* name, const std::string& text) {
+        const QString path = dir.filePath(QLatin1String(name));
+        std::ofstream(path.toStdString()) << text;
+        return path;
+    };
+    std::ifstream in(findInSource("exercises/press_targets.json"));
+    nlohmann::json j = nlohmann::json::parse(in);
+    j["time_limit_s"] = "sixty";
+    j["press_targets"]["targets"][1]["force_mx_n"] = 2.0;
+    const QString bad = write("bad.json", j.dump(2));
+    const QString error = editor.panel.openExercise(bad);
+    EXPECT_TRUE(error.contains(QStringLiteral("time_limit_s"))) << error.toStdString();
+    EXPECT_TRUE(error.contains(QStringLiteral("press_targets.targets[1].force_mx_n"))) << error.toStdString();
+    EXPECT_EQ(json(editor.panel.exercise()), before);
+    EXPECT_EQ(editor.panel.currentPath().toStdString(), example);
+    EXPECT_EQ(editor.panel.undoStack()->count(), steps);
+    EXPECT_TRUE(editor.panel.isModified());
+    EXPECT_TRUE(child<QLabel>(editor.panel, "messageLabel")->text().contains(QStringLiteral("time_limit_s")));
+
+    EXPECT_FALSE(editor.panel.openExercise(write("broken.json", "{\"format\": ")).isEmpty());
+    EXPECT_FALSE(editor.panel.openExercise(dir.filePath(QStringLiteral("missing.json"))).isEmpty());
+    EXPECT_EQ(json(editor.panel.exercise()), before);
+}
+
+TEST(ExerciseEditor, TypingIntoAFieldIsOneStepAndUndoRestoresTheForm) {
+    Editor editor;
+    editor.panel.newExercise(ExerciseType::PressTargets);
+    auto* name = child<QLineEdit>(editor.panel, "exerciseNameEdit");
+    name->clear();  // by code: not an edit
+    EXPECT_EQ(editor.panel.undoStack()->count(), 0);
+    name->setFocus();
+    QTest::keyClicks(name, QStringLiteral("Palpate"));
+    EXPECT_EQ(editor.panel.exercise().name, "Palpate");
+    EXPECT_EQ(editor.panel.undoStack()->count(), 1);
+
+    auto* time = child<QDoubleSpinBox>(editor.panel, "timeLimitSpin");
+    time->setValue(1.0);
+    time->setValue(1.5);  // as typing "1.5" does
+    EXPECT_EQ(editor.panel.undoStack()->count(), 2);
+    EXPECT_EQ(editor.panel.exercise().timeLimitS, 1.5);
+    emit time->editingFinished();  // leaving the field ends the step
+    time->setValue(20.0);
+    EXPECT_EQ(editor.panel.undoStack()->count(), 3);
+
+    editor.panel.undoAction()->trigger();
+    EXPECT_EQ(time->value(), 1.5);
+    editor.panel.undoAction()->trigger();
+    EXPECT_EQ(time->value(), Exercise{}.timeLimitS);
+    EXPECT_EQ(editor.panel.exercise().timeLimitS, Exercise{}.timeLimitS);
+    editor.panel.undoAction()->trigger();
+    EXPECT_EQ(name->text(), QString::fromStdString(editor.panel.exercise().name));
+    EXPECT_NE(editor.panel.exercise().name, "Palpate");
+    EXPECT_FALSE(editor.panel.isModified());
+    editor.panel.redoAction()->trigger();
+    EXPECT_EQ(name->text(), QStringLiteral("Palpate"));
+
+    // An empty name is named by its key and marks the field.
+    name->selectAll();
+    QTest::keyClick(name, Qt::Key_Backspace);
+    EXPECT_TRUE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("name:")));
+    EXPECT_TRUE(name->property("invalid").toBool());
+}
+
+TEST(ExerciseEditor, UnsavedChangesAreNotDiscardedWithoutAsking) {
+    const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    editor.panel.newExercise(ExerciseType::PressTargets);
+    int asked = 0;
+    ExerciseEditorPanel::DiscardAnswer answer = ExerciseEditorPanel::DiscardAnswer::Cancel;
+    editor.panel.setDiscardQuestion([&](const QString&) {
+        ++asked;
+        return answer;
+    });
+
+    // Nothing to lose: no question.
+    editor.panel.newTraceAction()->trigger();
+    EXPECT_EQ(asked, 0);
+    EXPECT_EQ(editor.panel.exercise().type, ExerciseType::Trace);
+
+    QSignalSpy modified(&editor.panel, &ExerciseEditorPanel::modifiedChanged);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddPathPoint);
+    editor.panel.vertexPicked(3);
+    editor.panel.vertexPicked(300);
+    EXPECT_TRUE(editor.panel.isModified());
+    ASSERT_EQ(modified.count(), 1);
+    EXPECT_TRUE(modified.at(0).at(0).toBool());
+    const std::string work = json(editor.panel.exercise());
+
+    answer = ExerciseEditorPanel::DiscardAnswer::Cancel;
+    editor.panel.newPressTargetsAction()->trigger();
+    EXPECT_EQ(asked, 1);
+    EXPECT_EQ(json(editor.panel.exercise()), work);  // kept
+    EXPECT_TRUE(editor.panel.isModified());
+    EXPECT_FALSE(editor.panel.confirmDiscard());
+    EXPECT_EQ(asked, 2);
+
+    // Save: an exercise with a file is saved there, then replaced.
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("path.json"));
+    ASSERT_EQ(editor.panel.saveExercise(file), QString());
+    editor.panel.vertexPicked(600);
+    answer = ExerciseEditorPanel::DiscardAnswer::Save;
+    editor.panel.newFindLumpAction()->trigger();
+    EXPECT_EQ(asked, 3);
+    EXPECT_EQ(editor.panel.exercise().type, ExerciseType::FindLump);
+    const auto saved = loadExercise(file.toStdString());
+    ASSERT_TRUE(saved.exercise) << saved.error();
+    EXPECT_EQ(saved.exercise->trace.path.size(), 3u);  // the last point was saved first
+
+    // Discard: replaced without saving.
+    child<QDoubleSpinBox>(editor.panel, "lumpStiffnessSpin")->setValue(0.5);
+    answer = ExerciseEditorPanel::DiscardAnswer::Discard;
+    editor.panel.newPressTargetsAction()->trigger();
+    EXPECT_EQ(asked, 4);
+    EXPECT_EQ(editor.panel.exercise().type, ExerciseType::PressTargets);
+    EXPECT_FALSE(editor.panel.isModified());
+}
+
+TEST(ExerciseEditor, FitsANarrowDock) {
+    const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    const QString out = qEnvironmentVariable("PALPATE_EDITOR_PNG_DIR");
+    const std::pair<ExerciseType, const char*> types[] = {
+        {ExerciseType::PressTargets, "press_targets"}, {ExerciseType::FindLump, "find_lump"}, {ExerciseType::Trace, "trace"}};
+    for (const auto& [type, name] : types) {
+        editor.panel.newExercise(type);
+        if (type == ExerciseType::PressTargets) {
+            editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+            for (VertexId v : {10u, 400u, 800u}) editor.panel.vertexPicked(v);
+        } else if (type == ExerciseType::Trace) {
+            editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddPathPoint);
+            editor.panel.vertexPicked(10);
+        }
+        editor.panel.resize(380, 900);
+        editor.panel.show();
+        QApplication::processEvents();
+        // Nothing forces the dock wider than 380 px: the form scrolls vertically only.
+        EXPECT_LE(editor.panel.minimumSizeHint().width(), 380) << name;
+        auto* scroll = child<QScrollArea>(editor.panel, "exerciseEditorScroll");
+        EXPECT_LE(scroll->widget()->minimumSizeHint().width(), scroll->viewport()->width()) << name;
+        const QImage image = editor.panel.grab().toImage();
+        EXPECT_EQ(image.width(), 380);
+        if (!out.isEmpty()) {
+            image.save(out + QStringLiteral("/exercise_editor_%1.png").arg(QLatin1String(name)));
+            // The whole form, as if the dock were tall enough not to scroll.
+            QWidget* form = scroll->widget();
+            scroll->takeWidget();
+            form->resize(scroll->viewport()->width(), form->sizeHint().height());
+            form->grab().save(out + QStringLiteral("/exercise_editor_%1_form.png").arg(QLatin1String(name)));
+            scroll->setWidget(form);
+        }
+    }
+}

@@ -1,0 +1,304 @@
+#pragma once
+// The instructor's exercise editor (issue 7): authors a graded exercise (Exercise.h) in the GUI.
+// Common fields (name, description, mesh, tissue preset, limits), one page per type (press
+// targets: a table of targets; find the lump: the inclusion; trace: the path points), the rubric
+// of the metrics that apply to the type, and the problems of the exercise, live. Points are placed
+// by clicking the drawn mesh: the window forwards the viewport's picks to vertexPicked() while
+// placingChanged(true) says the panel wants them. Every edit is one step on a QUndoStack (typing
+// into one field merges). Files are the engine's exercise JSON (ExerciseFile.h); saving writes
+// mesh and preset paths relative to resources/ when they are under it, as the shipped examples do.
+// A plain QWidget, meant for a QDockWidget (about 380 px wide: the form scrolls).
+
+#include "engine/TissueMesh.h"
+#include "engine/scoring/Exercise.h"
+#include "engine/scoring/ExerciseFile.h"
+#include "widgets/ExerciseMarkers.h"
+
+#include <QList>
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
+
+class QAction;
+class QComboBox;
+class QDoubleSpinBox;
+class QGroupBox;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPlainTextEdit;
+class QPushButton;
+class QStackedWidget;
+class QTableWidget;
+class QToolButton;
+class QUndoStack;
+
+namespace palpate {
+
+class ExerciseEditorPanel final : public QWidget {
+    Q_OBJECT
+public:
+    /// What a click on the drawn mesh does.
+    enum class Placing {
+        None,            ///< nothing: the viewport keeps its clicks
+        AddTarget,       ///< press targets: append a target at the vertex (stays on for more)
+        PlaceInclusion,  ///< find the lump: the vertex becomes the centre (one click)
+        AddPathPoint,    ///< trace: append a path point (stays on for more)
+        MoveSelected,    ///< the selected target or path point (the lump: its centre) moves there (one click)
+    };
+    /// The answer to "discard the unsaved changes?".
+    enum class DiscardAnswer { Save, Discard, Cancel };
+    /// Asks the user; gets the exercise's name. Tests set one that answers without a dialog.
+    using DiscardQuestion = std::function<DiscardAnswer(const QString& exerciseName)>;
+
+    /// `findResource` finds files under resources/ (the app's cli::findResource); the mesh and
+    /// preset lists come from the resources/ it finds.
+    explicit ExerciseEditorPanel(ResourceFinder findResource, QWidget* parent = nullptr);
+    ~ExerciseEditorPanel() override;
+
+    /// The mesh the viewport draws (engine numbering) and its file: picks refer to it. Markers
+    /// and placement are only given while it is the exercise's mesh (resolved paths equal);
+    /// problems() says so when it is not.
+    void setDrawnMesh(std::shared_ptr<const TissueMesh> mesh, const QString& path);
+    /// True when the drawn mesh is the exercise's mesh.
+    bool drawnMeshMatches() const;
+
+    /// A new exercise of `type` with sensible defaults on the drawn mesh (else the default
+    /// stomach) and a tissue preset; no file, a fresh undo history. Does not ask about unsaved
+    /// changes: call confirmDiscard() first (the New actions do).
+    void newExercise(ExerciseType type);
+    /// Opens an exercise file: "" or the errors, each naming the file and the key (the current
+    /// exercise is left untouched then). A fresh undo history. Does not ask (confirmDiscard()).
+    QString openExercise(const QString& path);
+    /// Saves to `path` (and makes it the current file): "" or why not. Refused while the exercise
+    /// has problems a trainee session would fail on; a mesh other than the drawn one is fine.
+    QString saveExercise(const QString& path);
+    /// Saves to the current file, or asks for one (Save As) when there is none: "" or why not.
+    QString save();
+
+    /// The exercise being edited; its sourcePath is where its relative paths resolve from (the
+    /// file it was opened from or last saved to, empty for a new one).
+    const Exercise& exercise() const { return mExercise; }
+    /// The file Save writes ("" for a new exercise).
+    QString currentPath() const { return mPath; }
+    /// Unsaved changes (the undo stack is not at its clean state).
+    bool isModified() const;
+    QUndoStack* undoStack() const { return mUndoStack; }
+
+    void setPlacing(Placing placing);
+    Placing placing() const { return mPlacing; }
+    /// The target (press targets) or path point (trace) being edited, -1 for none. Selecting
+    /// one highlights its marker.
+    int selectedIndex() const { return mSelected; }
+    void setSelectedIndex(int index);
+
+    /// Problems of the current exercise (validateExercise, files that cannot be found, placement
+    /// on the drawn mesh, a drawn mesh that is not the exercise's); empty: valid.
+    QStringList problems() const { return mProblems; }
+    /// The markers the viewport should draw (what markersChanged last sent).
+    const ExerciseMarkers& markers() const { return mMarkers; }
+
+    /// Replaces the question asked before unsaved changes are discarded (default: a message box).
+    void setDiscardQuestion(DiscardQuestion question);
+    /// True when nothing unsaved would be lost, or the user said Discard, or said Save and the
+    /// save succeeded. For New/Open and for the window's close.
+    bool confirmDiscard();
+
+    /// Actions for the window's menus and toolbars (each also a button of the panel; shortcuts
+    /// active while the focus is in the panel: the window may widen their context).
+    QAction* newPressTargetsAction() const { return mNewActions[0]; }
+    QAction* newFindLumpAction() const { return mNewActions[1]; }
+    QAction* newTraceAction() const { return mNewActions[2]; }
+    QAction* openAction() const { return mOpenAction; }      ///< Ctrl+O: asks, then a file dialog
+    QAction* saveAction() const { return mSaveAction; }      ///< Ctrl+S
+    QAction* saveAsAction() const { return mSaveAsAction; }  ///< Ctrl+Shift+S
+    QAction* undoAction() const { return mUndoAction; }      ///< Ctrl+Z
+    QAction* redoAction() const { return mRedoAction; }      ///< Ctrl+Shift+Z
+    QAction* previewAction() const { return mPreviewAction; }  ///< F5: "Try it"
+    /// All of the above, in menu order (the New ones first).
+    QList<QAction*> editorActions() const;
+
+public slots:
+    /// A click on the drawn mesh (engine numbering), acted on by the placing mode.
+    void vertexPicked(VertexId engineVertex);
+    /// "Try it": emits previewRequested with the current exercise if it has no problems a session
+    /// would fail on; returns whether it did (otherwise the reason is shown).
+    bool preview();
+    /// File dialogs (then openExercise / saveExercise).
+    void openDialog();
+    bool saveAsDialog();
+
+signals:
+    /// The instructor's markers, after every change (edits, undo, selection, the drawn mesh).
+    void markersChanged(const palpate::ExerciseMarkers& markers);
+    /// The window sets (true) or clears (false) the viewport's pick handler.
+    void placingChanged(bool clickToPlace);
+    /// The exercise's mesh should be drawn ("Show this mesh"): its resolved, absolute path.
+    void meshRequested(const QString& path);
+    /// "Try it": run this exercise as a trainee would, unsaved. Its mesh and preset paths resolve
+    /// with resolveExercisePath (its sourcePath, else resources/, else absolute).
+    void previewRequested(const palpate::Exercise& exercise);
+    void modifiedChanged(bool modified);
+
+protected:
+    void changeEvent(QEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    /// Fields whose consecutive edits merge into one undo step.
+    enum Field : int {
+        kName,
+        kDescription,
+        kTimeLimit,
+        kDisplacementLimit,
+        kExcessiveForce,
+        kLumpRadius,
+        kLumpStiffness,
+        kTraceForceMin,
+        kTraceForceMax,
+        kTraceTolerance,
+        kFieldCount
+    };
+
+    void buildUi();
+    void retranslateUi();
+    void buildTypePages();
+    /// Sets every widget from `exercise` without recording a step (undo/redo, open, new).
+    void showExercise(const Exercise& exercise);
+    /// Records `after` as one undo step named `text` (merging with the last when `field` >= 0
+    /// and the user is still in that field) and shows it.
+    void pushEdit(const Exercise& after, const QString& text, int field = -1);
+    void onFieldEdited(int field);
+    void onTargetCellChanged(int row, int column);
+    void onRubricCellChanged(int row, int column);
+    void commitPath(bool mesh, const QString& text);
+    void browsePath(bool mesh);
+    void changeType(ExerciseType type);
+    void removeSelected();
+    void moveSelected(int delta);
+    void resetRubric();
+    /// Recomputes the problems and the markers and shows them (and the title, the buttons).
+    void refresh();
+    void updateTitle();
+    void updatePlacingUi();
+    void showMessage(const QString& text, bool error);
+    void fillResourceCombos();
+    /// The path to write for a file: relative to resources/ when findResource finds it there
+    /// (and nothing beside `exercise`'s file shadows it), else absolute.
+    QString storablePath(const Exercise& exercise, const QString& absolutePath) const;
+    /// The absolute path of the exercise's mesh or preset, "" when it cannot be found.
+    QString resolved(const Exercise& exercise, const std::string& path) const;
+    /// Problems a session would fail on (everything in problems() but a different drawn mesh).
+    QStringList blockingProblems() const;
+    /// The drawn mesh's vertex (file numbering) for a pick, or nullopt with the reason shown.
+    std::optional<std::uint32_t> fileVertex(VertexId engineVertex);
+    QString typeText(ExerciseType type) const;
+    /// The mesh the exercise's points are checked on: the drawn one when it is the exercise's,
+    /// else the exercise's file (loaded once per path); null when there is none.
+    const TissueMesh* checkMesh(const QString& meshPath);
+    /// A label registered for retranslation.
+    QLabel* rowLabel(const char* text);
+
+    /// Translatable row labels (QT_TR_NOOP texts), set again on a language change.
+    std::vector<std::pair<QLabel*, const char*>> mRowLabels;
+    /// The exercise's mesh when the viewport draws another one: its vertices are still checked.
+    std::shared_ptr<const TissueMesh> mCheckMesh;
+    QString mCheckMeshPath;
+    QString mCheckMeshError;
+
+    ResourceFinder mFindResource;
+    QString mResourceRoot;  ///< resources/ as found through mFindResource ("" if not)
+
+    Exercise mExercise;
+    QString mPath;
+    std::shared_ptr<const TissueMesh> mDrawnMesh;
+    QString mDrawnMeshPath;
+    Placing mPlacing = Placing::None;
+    int mSelected = -1;
+    QStringList mProblems;
+    QStringList mBlocking;
+    ExerciseMarkers mMarkers;
+    bool mShowing = false;  ///< widgets being set by showExercise: their signals are not edits
+    int mMergeEpoch = 0;    ///< bumped when a field loses focus: the next edit is a new step
+    DiscardQuestion mDiscardQuestion;
+    QString mLastDirectory;
+
+    QUndoStack* mUndoStack = nullptr;
+    QAction* mNewActions[3] = {nullptr, nullptr, nullptr};
+    QAction* mOpenAction = nullptr;
+    QAction* mSaveAction = nullptr;
+    QAction* mSaveAsAction = nullptr;
+    QAction* mUndoAction = nullptr;
+    QAction* mRedoAction = nullptr;
+    QAction* mPreviewAction = nullptr;
+    QAction* mRemoveAction = nullptr;
+    QAction* mMoveUpAction = nullptr;
+    QAction* mMoveDownAction = nullptr;
+    QAction* mStopPlacingAction = nullptr;
+
+    // Widgets.
+    QLabel* mTitleLabel = nullptr;
+    QToolButton* mNewButton = nullptr;
+    QToolButton* mOpenButton = nullptr;
+    QToolButton* mSaveButton = nullptr;
+    QToolButton* mSaveAsButton = nullptr;
+    QToolButton* mUndoButton = nullptr;
+    QToolButton* mRedoButton = nullptr;
+    QPushButton* mPreviewButton = nullptr;
+    QGroupBox* mExerciseGroup = nullptr;
+    QGroupBox* mSceneGroup = nullptr;
+    QGroupBox* mLimitsGroup = nullptr;
+    QGroupBox* mTypeGroup = nullptr;
+    QGroupBox* mRubricGroup = nullptr;
+    QComboBox* mTypeCombo = nullptr;
+    QLineEdit* mNameEdit = nullptr;
+    QPlainTextEdit* mDescriptionEdit = nullptr;
+    QComboBox* mMeshCombo = nullptr;
+    QPushButton* mMeshBrowseButton = nullptr;
+    QPushButton* mShowMeshButton = nullptr;
+    QLabel* mMeshStateLabel = nullptr;
+    QComboBox* mPresetCombo = nullptr;
+    QPushButton* mPresetBrowseButton = nullptr;
+    QDoubleSpinBox* mTimeLimitSpin = nullptr;
+    QDoubleSpinBox* mDisplacementSpin = nullptr;
+    QDoubleSpinBox* mExcessiveSpin = nullptr;
+    QStackedWidget* mTypePages = nullptr;
+    // Press targets.
+    QTableWidget* mTargetTable = nullptr;
+    QToolButton* mAddTargetButton = nullptr;
+    QToolButton* mMoveTargetButton = nullptr;
+    QToolButton* mRemoveTargetButton = nullptr;
+    QToolButton* mTargetUpButton = nullptr;
+    QToolButton* mTargetDownButton = nullptr;
+    // Find the lump.
+    QPushButton* mPlaceLumpButton = nullptr;
+    QLabel* mLumpCentreLabel = nullptr;
+    QDoubleSpinBox* mLumpRadiusSpin = nullptr;
+    QDoubleSpinBox* mLumpStiffnessSpin = nullptr;
+    // Trace.
+    QListWidget* mPathList = nullptr;
+    QToolButton* mAddPointButton = nullptr;
+    QToolButton* mMovePointButton = nullptr;
+    QToolButton* mRemovePointButton = nullptr;
+    QToolButton* mPointUpButton = nullptr;
+    QToolButton* mPointDownButton = nullptr;
+    QDoubleSpinBox* mTraceMinSpin = nullptr;
+    QDoubleSpinBox* mTraceMaxSpin = nullptr;
+    QDoubleSpinBox* mTraceToleranceSpin = nullptr;
+    // Rubric.
+    QTableWidget* mRubricTable = nullptr;
+    QPushButton* mResetRubricButton = nullptr;
+    QLabel* mRubricTotalLabel = nullptr;
+    // Feedback.
+    QLabel* mPlacingLabel = nullptr;
+    QLabel* mProblemsLabel = nullptr;
+    QLabel* mMessageLabel = nullptr;
+};
+
+}  // namespace palpate
