@@ -47,6 +47,10 @@ public:
     /// Zero force at once and stay safe until reopened.
     virtual void emergencyStop() = 0;
 
+    /// Why the device is not Ready (open failed, unplugged, faulted), naming the device and the
+    /// problem; "" when there is nothing to tell. Not for the haptic thread (it copies a string).
+    virtual std::string lastError() const { return {}; }
+
     /// The haptic loop's clock, in seconds since the loop started, given once per tick before
     /// read(). Simulated devices are driven by it (so a stepped loop is deterministic) and stamp
     /// their samples with it; hardware backends keep their own clock and ignore it. Haptic thread

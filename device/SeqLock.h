@@ -61,7 +61,9 @@ public:
             for (std::size_t i = 0; i < kWordCount; ++i) words[i] = mWords[i].load(std::memory_order_acquire);
             const std::uint64_t after = mSequence.load(std::memory_order_relaxed);
             if (before == after) {
-                std::memcpy(&out, words.data(), sizeof(T));
+                // void*: T is trivially copyable (asserted above) even when its default member
+                // initialisers make it non-trivial, which -Wclass-memaccess would flag.
+                std::memcpy(static_cast<void*>(&out), words.data(), sizeof(T));
                 return true;
             }
         }

@@ -194,7 +194,8 @@ void HapticLoop::tick(double nowS, double lateUs) {
     // energy growth, force flipping every tick, an inverted triangle at the tool) renders no force
     // this tick and goes back to rest; counted and published so the GUI can say what to change.
     // Allocation-free; positionsMm() writes at most the active rings (slope-ring palpate).
-    if (const DivergenceVerdict verdict = mGuard.check(mScene->mesh(), mScene->model().positionsMm(), result)) {
+    const DivergenceVerdict verdict = mGuard.check(mScene->mesh(), mScene->model().positionsMm(), result);
+    if (verdict) {
         result.forceN = glm::vec3(0.0f);
         result.contact = false;
         mScene->model().reset();
@@ -227,6 +228,7 @@ void HapticLoop::tick(double nowS, double lateUs) {
         r.tickOverran = mTickOverran;
         r.paused = mPaused;
         r.contact = result.contact;
+        r.divergence = std::uint8_t(verdict.kind);  // the writer makes it a Divergence event
         mRecorder->onTick(r);
     }
     publish(result, forceOut);

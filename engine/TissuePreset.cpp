@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace palpate {
@@ -290,7 +291,8 @@ PresetLoadResult parseTissuePreset(const std::string& textIn, const std::string&
         return result;
     }
     if (!r.object(j, "", {"format", "version", "name", "description", "model", "slope_ring", "mass_spring",
-                          "radius_of_influence", "ffd", "octree", "haptic_rate_hz", "tissue"}))
+                          "radius_of_influence", "ffd", "octree", "haptic_rate_hz", "tissue", "needs",
+                          "stability_margin"}))
         return result;
 
     std::string format;
@@ -401,6 +403,30 @@ PresetLoadResult parseTissuePreset(const std::string& textIn, const std::string&
             preset.tissue = tissue;
         }
     }
+    if (j.contains("needs") && r.object(j.at("needs"), "needs", {"max_error", "budget_us"})) {
+        // Read any finite number here; validateLodNeeds says what is out of range, by key.
+        const double inf = std::numeric_limits<double>::infinity();
+        LodNeeds needs;
+        bool complete = true;
+        for (const char* key : {"max_error", "budget_us"})
+            if (!j.at("needs").contains(key)) complete = false;
+        r.number(j.at("needs"), "needs", "max_error", -inf, inf, [&](double v) { needs.maxErrorFraction = v; }, true);
+        r.number(j.at("needs"), "needs", "budget_us", -inf, inf, [&](double v) { needs.budgetUs = v; }, true);
+        if (complete) {
+            for (const std::string& problem : validateLodNeeds(needs)) result.errors.push_back(source + ": " + problem);
+            preset.needs = needs;
+        }
+    }
+    // Informational (the panel writes it on save): checked for type and range, never enforced.
+    if (j.contains("stability_margin") && r.object(j.at("stability_margin"), "stability_margin", {"margin", "dt_s"})) {
+        PresetStabilityMargin margin;
+        const std::size_t before = result.errors.size();
+        // Any finite margin up to 1 (far beyond a bound it is a large negative number).
+        r.number(j.at("stability_margin"), "stability_margin", "margin", -std::numeric_limits<double>::max(), 1.0,
+                 [&](double v) { margin.margin = v; }, true);
+        r.number(j.at("stability_margin"), "stability_margin", "dt_s", 1e-6, 1.0, [&](double v) { margin.dtS = v; }, true);
+        if (result.errors.size() == before) preset.stabilityMargin = margin;
+    }
     if (result.errors.empty()) result.preset = preset;
     return result;
 }
@@ -448,10 +474,16 @@ std::string tissuePresetToJson(const TissuePreset& preset) {
                        {"poisson_ratio", preset.tissue->poissonRatio},
                        {"tool_radius_mm", preset.tissue->toolRadiusMm},
                        {"source", preset.tissue->source}};
+    if (preset.needs) j["needs"] = {{"max_error", preset.needs->maxErrorFraction}, {"budget_us", preset.needs->budgetUs}};
+    if (preset.stabilityMargin && std::isfinite(preset.stabilityMargin->margin) && std::isfinite(preset.stabilityMargin->dtS))
+        j["stability_margin"] = {{"margin", preset.stabilityMargin->margin}, {"dt_s", preset.stabilityMargin->dtS}};
     return j.dump(2) + "\n";
 }
 
 std::string saveTissuePreset(const TissuePreset& preset, const std::string& path) {
+    if (preset.needs)
+        if (const auto problems = validateLodNeeds(*preset.needs); !problems.empty())
+            return path + ": not saved: " + problems.front();
     return writeFileAtomically(path, tissuePresetToJson(preset));
 }
 

@@ -8,6 +8,7 @@
 #include "engine/Octree.h"
 #include "engine/SlopeRingMethod.h"
 #include "engine/SlopeRingParams.h"
+#include "engine/lod/LodNeeds.h"
 #include "engine/models/ModelRegistry.h"
 
 #include <optional>
@@ -28,6 +29,14 @@ struct TissueProperties {
     std::string source;
 };
 
+/// The stability margin of a preset's parameter set when it was saved (stabilityMargin in
+/// engine/stability/StabilityMargin.h: > 0 inside the derived bound, <= 0 beyond) and the loop
+/// period it was computed for. Informational: a load does not recompute or enforce it.
+struct PresetStabilityMargin {
+    double margin = 1.0;
+    double dtS = 1e-3;
+};
+
 struct TissuePreset {
     std::string name = "default";
     std::string description;
@@ -44,6 +53,12 @@ struct TissuePreset {
     OctreeDef octree;
     double hapticRateHz = 1000.0;
     std::optional<TissueProperties> tissue;
+    /// "needs": the accuracy target and haptic budget a session on this preset must meet
+    /// (docs/lod.md); absent means the preset states none.
+    std::optional<LodNeeds> needs;
+    /// "stability_margin": written by the parameter panel on save (docs/stability.md section 7);
+    /// absent in older presets, which stay valid.
+    std::optional<PresetStabilityMargin> stabilityMargin;
 };
 
 struct PresetLoadResult {

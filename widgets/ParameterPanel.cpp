@@ -21,6 +21,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -667,9 +668,7 @@ void ParameterPanel::retranslateUi() {
     mLeafSpin->setSuffix(tr(" vertices"));
     mLeafSpin->setToolTip(tr("A node with at most this many vertices is not split (1..100000)."));
 
-    mStabilityLabel->setToolTip(tr("The contact force iteration converges while α·(1 + gain) < 2, with the loop gain "
-                                   "|m1| × k_c (docs/method.md). The margin is how far below 2 it stays: "
-                                   "1 − α·(1 + gain) / 2."));
+    // mStabilityLabel's tooltip depends on the model: validate() sets it.
     // The slope group's title states the ordering rule; its tooltip says why.
     mSlopeGroup->setToolTip(slopeTip);
     mOpenAction->setText(tr("Open preset…"));
@@ -975,6 +974,15 @@ void ParameterPanel::updateSlopeRows() {
     for (int r = 0; r <= kMaxRings; ++r) mSlopeForm->setRowVisible(mSlopeSpins[std::size_t(r)], r <= rings);
 }
 
+void ParameterPanel::setConfirmFunction(ConfirmFunction confirm) { mConfirm = std::move(confirm); }
+
+std::optional<StabilityMargin> ParameterPanel::stabilityMargin() const {
+    const TissuePreset p = presetFromFields();
+    const double dtS = p.hapticRateHz > 0.0 ? 1.0 / p.hapticRateHz : 1e-3;
+    const TissueMesh* mesh = mMeshProvider ? mMeshProvider() : nullptr;
+    return stabilityMarginIfKnown(presetModelDef(p), mesh, dtS);
+}
+
 void ParameterPanel::updateModelRows() {
     const auto model = modelDefForName(mModelCombo->currentData().toString().toStdString());
     const ModelKind kind = model ? model->kind : ModelKind::SlopeRing;
@@ -986,7 +994,7 @@ void ParameterPanel::updateModelRows() {
     const bool slopeRing = kind == ModelKind::SlopeRing || kind == ModelKind::VolumetricRings;
     mSlopeGroup->setVisible(slopeRing);
     mSpringGroup->setVisible(slopeRing);
-    mStabilityLabel->setVisible(slopeRing);
+    mStabilityLabel->setVisible(true);  // every model has a margin (docs/stability.md section 7)
     if (model) mModelParamsGroup->setTitle(tr("%1 parameters").arg(mModelCombo->currentText()));
 }
 
@@ -1067,6 +1075,33 @@ void ParameterPanel::validate() {
     }
     mStabilityLabel->setText(stability);
     markField(mStabilityLabel, "unstable", unstable);
+    // The other models: their own margin (step bound, or the rendered stiffness against the
+    // device). Beyond it the set is not refused (the validators allow it): Apply asks first.
+    if (!presetUsesSlopeRingParams(p)) {
+        const std::optional<StabilityMargin> margin = stabilityMargin();
+        QString text;
+        bool beyond = false;
+        if (!margin) {
+            text = tr("Stability margin: needs the mesh (the mass-spring step bound depends on its springs)");
+        } else {
+            beyond = !(margin->margin > 0.0);
+            text = (beyond ? tr("Beyond the stability margin (%1 %): Apply asks for confirmation")
+                           : tr("Stability margin %1 %"))
+                       .arg(locale.toString(100.0 * margin->margin, 'f', 0)) +
+                   QLatin1Char('\n') + QString::fromStdString(margin->text);
+        }
+        mStabilityLabel->setText(text);
+        mStabilityLabel->setToolTip(
+            tr("How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the "
+               "explicit mass-spring integrators' step bound h·ω_max < 2 (RK4 2.78), ω_max from Gershgorin's bound "
+               "and the sub-steps the model takes; for radius of influence and FFD the rendered stiffness k_s "
+               "against the device's passive stiffness (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has none."));
+        markField(mStabilityLabel, "unstable", beyond);
+    } else {
+        mStabilityLabel->setToolTip(tr("The contact force iteration converges while α·(1 + gain) < 2, with the loop "
+                                       "gain |m1| × k_c (docs/method.md). The margin is how far below 2 it stays: "
+                                       "1 − α·(1 + gain) / 2."));
+    }
 
     // Allowed, but not the paper's: slopes above 1 mm/N under a raised limit.
     QStringList notes;
@@ -1115,7 +1150,25 @@ void ParameterPanel::validate() {
 
 void ParameterPanel::apply() {
     validate();
-    if (mValid) emit applyRequested(preset());
+    if (!mValid) return;
+    const TissuePreset p = preset();
+    // Beyond the margin the slope-ring set is invalid (above); the others ask (docs/stability.md section 7).
+    if (!presetUsesSlopeRingParams(p))
+        if (const auto margin = stabilityMargin(); margin && !(margin->margin > 0.0)) {
+            const QString title = tr("Beyond the stability margin");
+            const QString text =
+                tr("This parameter set is beyond its stability margin:\n%1\n\nThe model may diverge (or the device "
+                   "buzz); the divergence guard would then zero the force and reset the tissue. Apply anyway?")
+                    .arg(QString::fromStdString(margin->text));
+            const bool go = mConfirm ? mConfirm(title, text) : [&] {
+                QMessageBox box(QMessageBox::Warning, title, text, QMessageBox::Yes | QMessageBox::No, this);
+                box.setObjectName(QStringLiteral("stabilityConfirmBox"));
+                box.setDefaultButton(QMessageBox::No);
+                return box.exec() == QMessageBox::Yes;
+            }();
+            if (!go) return;
+        }
+    emit applyRequested(p);
 }
 
 bool ParameterPanel::loadPresetFile(const QString& path, QString* error) {
@@ -1140,6 +1193,10 @@ bool ParameterPanel::loadPresetFile(const QString& path, QString* error) {
     mLastDirectory = QFileInfo(path).absolutePath();
     mFileErrors.clear();
     mFileNote = tr("Loaded %1").arg(QDir::toNativeSeparators(path));
+    if (const auto& stored = result.preset->stabilityMargin)
+        mFileNote += QLatin1Char(' ') + tr("(saved with a stability margin of %1 % at %2 Hz)")
+                                            .arg(locale().toString(100.0 * stored->margin, 'f', 0))
+                                            .arg(locale().toString(1.0 / stored->dtS, 'g', 6));
     validate();
     if (error) error->clear();
     return true;
@@ -1151,7 +1208,13 @@ bool ParameterPanel::savePresetFile(const QString& path, QString* error) {
         problem = tr("%1: not saved, the parameters are not valid (see above); the file could not be read back")
                       .arg(QDir::toNativeSeparators(path));
     } else {
-        problem = QString::fromStdString(saveTissuePreset(preset(), QDir::toNativeSeparators(path).toStdString()));
+        // The margin of the set at its haptic rate goes with it (informational on load); without
+        // the mesh a mass-spring margin is unknown and none is written.
+        TissuePreset toSave = preset();
+        toSave.stabilityMargin.reset();
+        if (const auto margin = stabilityMargin())
+            toSave.stabilityMargin = PresetStabilityMargin{margin->margin, 1.0 / toSave.hapticRateHz};
+        problem = QString::fromStdString(saveTissuePreset(toSave, QDir::toNativeSeparators(path).toStdString()));
     }
     if (!problem.isEmpty()) {
         mFileErrors = QStringList{problem};

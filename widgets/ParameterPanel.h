@@ -12,6 +12,7 @@
 #include "engine/TissueMesh.h"
 #include "engine/TissuePreset.h"
 #include "engine/accuracy/Calibration.h"
+#include "engine/stability/StabilityMargin.h"
 
 #include <QString>
 #include <QStringList>
@@ -56,8 +57,11 @@ public:
     static constexpr int kSlopeDecimals = 9;
 
     /// Returns the mesh Calibrate slopes works on, or null when there is none. Called for each
-    /// calibration; the panel never keeps the pointer.
+    /// calibration and each stability margin; the panel never keeps the pointer.
     using MeshProvider = std::function<const TissueMesh*()>;
+    /// Asks the user to confirm (title, text); true to go ahead. The default is a modal
+    /// QMessageBox (Yes / No, No the default); tests may answer that box or replace the function.
+    using ConfirmFunction = std::function<bool(const QString& title, const QString& text)>;
 
     explicit ParameterPanel(QWidget* parent = nullptr);
     ~ParameterPanel() override;
@@ -90,6 +94,15 @@ public:
     bool savePresetFile(const QString& path, QString* error = nullptr);
 
     void setMeshProvider(MeshProvider provider);
+    /// Replaces how Apply asks for confirmation of a set beyond its stability margin (null: the default box).
+    void setConfirmFunction(ConfirmFunction confirm);
+    /// The stability margin of the fields' set at the fields' haptic rate (engine/stability/
+    /// StabilityMargin.h), for every model; nullopt when it needs the mesh (mass-spring) and the
+    /// mesh provider gives none. The slope-ring methods and volumetric-rings: 1 - alpha (1 + g) / 2.
+    std::optional<StabilityMargin> stabilityMargin() const;
+    /// Recomputes the shown margin (call when the mesh provider's mesh changed: a mass-spring
+    /// margin depends on it). Records no undo step.
+    void refreshStabilityMargin() { validate(); }
     /// Fills the tissue preset combo from the *.json presets in `directory` (name, source as tooltip).
     void setTissuePresetDirectory(const QString& directory);
     /// The tissue and tool the fields show (E in N/mm^2 as the engine wants it).
@@ -103,13 +116,15 @@ public:
     bool calibrateSlopes(QString* error = nullptr);
 
 signals:
-    /// The Apply button, with the fields' preset; only ever emitted with a valid preset.
+    /// The Apply button, with the fields' preset; only ever emitted with a valid preset, and for a
+    /// set beyond its stability margin only after the user confirmed it.
     void applyRequested(const TissuePreset& preset);
     /// The fields went from valid to invalid or back.
     void validityChanged(bool valid);
 
 public slots:
-    /// Emits applyRequested if the fields are valid.
+    /// Emits applyRequested if the fields are valid and, beyond the stability margin (a model whose
+    /// validator allows it: mass-spring, radius of influence, FFD), the user confirms.
     void apply();
     void openPresetDialog();
     void savePresetDialog();
@@ -224,6 +239,7 @@ private:
     QString mLastDirectory;
 
     MeshProvider mMeshProvider;
+    ConfirmFunction mConfirm;
     /// The last calibration: what it set, and its result text (error and notes).
     std::optional<SlopeRingParams> mCalibratedParams;
     QString mCalibrationText;

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -36,6 +37,7 @@ struct ModelRow {
     std::string note;    ///< how it was timed, when not over the full path
     std::string reason;  ///< why there is no time
     std::optional<ModelError> error;
+    int repeats = 0;     ///< passes over the path the median is of (0: not timed)
 };
 
 std::vector<std::string> splitList(const std::string& text) {
@@ -74,7 +76,7 @@ void printTable(const std::vector<ModelRow>& rows, std::ostream& out) {
 }  // namespace
 
 int benchModelsCommand(const std::vector<std::string>& words) {
-    const Args args(words, {"json", "quick"}, {"sizes", "models", "repeats", "budget-s"});
+    const Args args(words, {"json", "quick"}, {"sizes", "models", "repeats", "budget-s", "csv"});
     if (!args.ok()) {
         std::cerr << "bench models: " << args.error() << "\n";
         return 2;
@@ -170,8 +172,10 @@ int benchModelsCommand(const std::vector<std::string>& words) {
             const double perTickS = secondsSince(probe) / double(shortPath.size());
             if (perTickS * double(path.size()) * repeats <= budgetS) {
                 row.tickUs = medianTickUs(*model, path, {repeats, 10.0});
+                row.repeats = repeats;
             } else if (perTickS * double(shortPath.size()) <= budgetS) {
                 row.tickUs = medianTickUs(*model, shortPath, {1, 0.0});
+                row.repeats = 1;
                 row.note = "path shortened 10x (the full path would take ~" + fixed(perTickS * double(path.size()), 0) + " s)";
             } else if (perTickS * 5.0 <= budgetS) {
                 // Still timed: ticks of a held press at the path's full depth (contact on every
@@ -181,6 +185,7 @@ int benchModelsCommand(const std::vector<std::string>& words) {
                 const glm::vec3 tool = mesh.restPositionsMm()[target] - float(ToolPathDef{}.depthMm) * mesh.restNormals()[target];
                 const std::vector<glm::vec3> press(std::size_t(ticks), tool);
                 row.tickUs = medianTickUs(*model, press, {1, 0.0});
+                row.repeats = 1;
                 row.note = "held press, " + std::to_string(ticks) + " ticks (one pass of the shortened path would take ~" +
                            fixed(perTickS * double(shortPath.size()), 0) + " s)";
             } else {
@@ -199,6 +204,28 @@ int benchModelsCommand(const std::vector<std::string>& words) {
         }
     }
 
+    if (const auto csvPath = args.option("csv")) {
+        // One row per model and size; empty cells where a figure was not measured. Text quoted.
+        auto quoted = [](const std::string& s) {
+            std::string q = "\"";
+            for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+            return q + "\"";
+        };
+        std::ofstream csv(*csvPath);
+        csv << std::setprecision(9) << "model,vertices,tick_us,displacement_error,force_error,repeats,note,reason\n";
+        for (const ModelRow& r : rows) {
+            csv << r.model << "," << r.vertices << ",";
+            if (r.tickUs) csv << *r.tickUs;
+            csv << ",";
+            if (r.error) csv << r.error->displacementError << "," << r.error->forceError;
+            else csv << ",";
+            csv << "," << r.repeats << "," << quoted(r.note) << "," << quoted(r.reason) << "\n";
+        }
+        if (!csv) {
+            std::cerr << "bench models: " << *csvPath << ": cannot be written\n";
+            return 1;
+        }
+    }
     if (args.flag("json")) {
         nlohmann::ordered_json j{{"rows", nlohmann::ordered_json::array()}};
         for (const ModelRow& r : rows) {

@@ -36,7 +36,12 @@ std::string isoTime(std::int64_t unixUs) {
 nlohmann::json summaryJson(const RecordingReader& reader) {
     const RecordingSummary& s = reader.summary();
     std::map<std::string, std::uint64_t> kinds;
-    for (const auto& e : reader.events()) ++kinds[eventKindName(e.kind)];
+    nlohmann::json divergences = nlohmann::json::array();  // the guard's events (format 2)
+    for (const auto& e : reader.events()) {
+        ++kinds[eventKindName(e.kind)];
+        if (e.kind == EventKind::Divergence)
+            divergences.push_back({{"tick", e.tick}, {"time_s", e.timeS}, {"kind", divergenceKindName(e.divergence)}});
+    }
     nlohmann::json damage = nlohmann::json::array();
     for (const auto& d : reader.damage())
         damage.push_back({{"offset", d.offset}, {"bytes", d.bytes}, {"reason", d.reason}});
@@ -59,10 +64,12 @@ nlohmann::json summaryJson(const RecordingReader& reader) {
                      {"closed_cleanly", s.closedCleanly},
                      {"header_ok", s.headerOk},
                      {"event_kinds", kinds},
+                     {"divergences", divergences},
                      {"damage", damage}};
     if (s.headerOk) {
         const RecordingHeader& h = reader.header();
         j["engine_version"] = h.engineVersion;
+        j["format_version"] = h.formatVersion;
         j["start_utc"] = isoTime(h.startUnixUs);
         j["rate_hz"] = h.rateHz;
         j["mesh"] = h.scene.meshPath;
@@ -108,7 +115,7 @@ int info(const RecordingReader& reader, bool json) {
     printDamage(reader, std::cout);
     for (const auto& e : reader.events())
         if (e.kind == EventKind::Mark || e.kind == EventKind::Exercise || e.kind == EventKind::ParamsApplied ||
-            e.kind == EventKind::SceneChanged || e.kind == EventKind::DeviceChanged)
+            e.kind == EventKind::SceneChanged || e.kind == EventKind::DeviceChanged || e.kind == EventKind::Divergence)
             std::cout << "  t=" << e.timeS << " s (tick " << e.tick << ") " << eventKindName(e.kind) << ": " << e.text
                       << "\n";
     return 0;
@@ -151,17 +158,24 @@ int exportCsv(const RecordingReader& reader, const std::optional<std::string>& o
     }
     std::ostream& out = outPath ? static_cast<std::ostream&>(file) : std::cout;
     out << "tick,time_s,read_ok,sequence,sample_time_s,x_mm,y_mm,z_mm,buttons,device_state,paused,overran,"
-           "force_x_n,force_y_n,force_z_n,touched,contact\n";
+           "force_x_n,force_y_n,force_z_n,touched,contact,divergence\n";
     char line[512];
+    // The divergence column: the guard's event at that tick (events are in tick order), else empty.
+    const auto& events = reader.events();
+    std::size_t nextEvent = 0;
     reader.forEachTick([&](const RecordedTick& t) {
+        while (nextEvent < events.size() && events[nextEvent].tick < t.tick) ++nextEvent;
+        const char* divergence = "";
+        for (std::size_t i = nextEvent; i < events.size() && events[i].tick == t.tick; ++i)
+            if (events[i].kind == EventKind::Divergence) divergence = divergenceKindName(events[i].divergence);
         // %.17g and %.9g print doubles and floats exactly (they read back to the same bits).
-        std::snprintf(line, sizeof(line), "%llu,%.17g,%d,%llu,%.17g,%.9g,%.9g,%.9g,%u,%s,%d,%d,%.9g,%.9g,%.9g,%lld,%d\n",
+        std::snprintf(line, sizeof(line), "%llu,%.17g,%d,%llu,%.17g,%.9g,%.9g,%.9g,%u,%s,%d,%d,%.9g,%.9g,%.9g,%lld,%d,%s\n",
                       static_cast<unsigned long long>(t.tick), t.nowS, t.readOk ? 1 : 0,
                       static_cast<unsigned long long>(t.sample.sequence), t.sample.timeS, double(t.sample.positionMm.x),
                       double(t.sample.positionMm.y), double(t.sample.positionMm.z), t.sample.buttons,
                       deviceStateName(t.deviceState), t.paused ? 1 : 0, t.tickOverran ? 1 : 0, double(t.forceN.x),
                       double(t.forceN.y), double(t.forceN.z),
-                      t.touched == kNoVertex ? -1LL : static_cast<long long>(t.touched), t.contact ? 1 : 0);
+                      t.touched == kNoVertex ? -1LL : static_cast<long long>(t.touched), t.contact ? 1 : 0, divergence);
         out << line;
         return bool(out);
     });

@@ -39,6 +39,7 @@ nlohmann::json toJson(const StabilityMap& map) {
     for (const auto& c : map.cells)
         cells.push_back({{"x", c.x}, {"y", c.y}, {"bounded", c.bounded}, {"growth", number(c.growth)}});
     return {{"model", map.model},
+            {"registry_models", stabilityMapModels(map.model)},
             {"description", map.description},
             {"criterion", map.criterion},
             {"derived_formula", map.derivedFormula},
@@ -97,6 +98,7 @@ int stabilityCommand(const std::vector<std::string>& words) {
         scene.slopeRingTicks = 1500;
         scene.massSpringTicks = 800;
         scene.implicitTicks = 150;
+        scene.deviceTicks = 3000;
         def.columns = 6;
         def.rows = 6;
         def.bisections = 10;

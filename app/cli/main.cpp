@@ -12,7 +12,7 @@ void usage(std::ostream& out) {
            "  palpate-cli mesh generate --shape sphere|stomach --vertices N --out FILE\n"
            "  palpate-cli mesh check FILE\n"
            "  palpate-cli bench table1 [--json] [--csv FILE] [--quick] [--repeats N]\n"
-           "  palpate-cli bench models [--json] [--quick] [--sizes N,..] [--models NAME,..] [--repeats N] [--budget-s S]\n"
+           "  palpate-cli bench models [--json] [--csv FILE] [--quick] [--sizes N,..] [--models NAME,..] [--repeats N] [--budget-s S]\n"
            "  palpate-cli demo [--mesh FILE] [--method previous|hybrid|proposed|palpate] [--json]\n"
            "  palpate-cli loop [--seconds S] [--rate HZ] [--observer-hz 60] [--device URI] [--mesh FILE]\n"
            "                   [--spin-fraction F] [--no-fifo] [--json] [--csv FILE]\n"
@@ -29,6 +29,10 @@ void usage(std::ostream& out) {
            "  palpate-cli calibrate [--mesh FILE] [--rings N] [--vertex V] [--fem] [--json] [--out PRESET] [--name NAME] [TISSUE]\n"
            "      TISSUE: [--preset FILE] [--youngs-kpa E] [--poisson NU] [--tool-radius MM]\n"
            "  palpate-cli stability --list | --model NAME [--json] [--csv FILE] [--png FILE] [--quick]\n"
+           "  palpate-cli devices [--json]\n"
+           "  palpate-cli lod levels --mesh FILE [--json] [--no-cache] [--min-vertices N] [--max-levels N]\n"
+           "  palpate-cli lod plan (--mesh FILE | --exercise FILE) --error E --budget-us T [--json] [--quick]\n"
+           "                       [--rings N,..] [--repeats N] [--no-cache] [TISSUE]\n"
            "  palpate-cli --help | --version\n";
 }
 }  // namespace
@@ -61,6 +65,8 @@ int main(int argc, char** argv) {
         if (command == "stability") return palpate::cli::stabilityCommand(words);
         if (command == "calibrate") return palpate::cli::calibrateCommand(words);
         if (command == "accuracy") return palpate::cli::accuracyCommand(words);
+        if (command == "devices") return palpate::cli::devicesCommand(words);
+        if (command == "lod") return palpate::cli::lodCommand(words);
     } catch (const std::exception& e) {
         std::cerr << "palpate-cli " << command << ": " << e.what() << "\n";
         return 1;

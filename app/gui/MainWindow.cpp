@@ -544,6 +544,7 @@ void MainWindow::showDrawnMesh() {
     mShownMesh = mesh;
     mViewport->setMesh(*mesh);
     if (mEditor) mEditor->setDrawnMesh(mesh, QString::fromStdString(mSession->drawnPath()));
+    mParameterPanel->refreshStabilityMargin();  // a mass-spring margin depends on the mesh
     // Markers of another mesh mean nothing here: a running exercise sets its own again.
     if (!mExercises->running()) {
         mViewport->setExerciseMarkers({});
@@ -594,7 +595,7 @@ void MainWindow::showStatus() {
     const LoopCounters& c = o.counters;
     const bool observed = o.publishCount > 0;
     // The loop's divergence guard zeroed the force and reset the tissue (docs/stability.md): say
-    // what happened and what to change, and put it in the recording.
+    // what happened and what to change (the recording gets the event from the tick itself).
     if (c.divergences < mSeenDivergences) mSeenDivergences = 0;  // a new loop counts from zero
     if (c.divergences > mSeenDivergences) {
         mSeenDivergences = c.divergences;
@@ -603,9 +604,6 @@ void MainWindow::showStatus() {
                                  .arg(c.lastDivergenceTick)
                                  .arg(QString::fromUtf8(divergenceAdvice(c.lastDivergence)));
         statusBar()->showMessage(what, 20000);
-        if (RecordingSession* recording = mSession->recordingSession())
-            recording->mark(std::string("divergence: ") + divergenceKindName(c.lastDivergence) + ": " +
-                            divergenceAdvice(c.lastDivergence));
     }
     if (!observed)
         mRateLabel->setText(tr("haptic -"));

@@ -27,6 +27,10 @@ struct RecordedTick {
     bool tickOverran = false;    ///< the previous tick overran (the safety filter zeroes this one)
     bool paused = false;
     bool contact = false;
+    /// The divergence guard fired in this tick (docs/stability.md): the DivergenceKind as a number,
+    /// 0 when it did not. The force above is then zero and the model was reset to rest. Not in the
+    /// tick codec: the writer turns it into a Divergence event.
+    std::uint8_t divergence = 0;
 };
 
 /// A command the loop applied at the boundary of tick `tick` (before that tick's device read).

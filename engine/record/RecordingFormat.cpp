@@ -43,6 +43,7 @@ const char* eventKindName(EventKind kind) {
         case EventKind::Mark: return "mark";
         case EventKind::Exercise: return "exercise";
         case EventKind::CommandsLost: return "commands-lost";
+        case EventKind::Divergence: return "divergence";
     }
     return "unknown";
 }
@@ -179,9 +180,9 @@ bool decodeRecordingHeader(const std::uint8_t* data, std::size_t size, Recording
         return false;
     }
     const std::uint8_t version = data[7];
-    if (version != kRecordingFormatVersion) {
+    if (version < kOldestRecordingFormatVersion || version > kRecordingFormatVersion) {
         error = "header.formatVersion: " + std::to_string(version) + " is not supported (this build reads " +
-                std::to_string(kRecordingFormatVersion) + ")";
+                std::to_string(kOldestRecordingFormatVersion) + " to " + std::to_string(kRecordingFormatVersion) + ")";
         return false;
     }
     const std::uint32_t length = readU32(data + 8);
@@ -220,6 +221,7 @@ bool decodeRecordingHeader(const std::uint8_t* data, std::size_t size, Recording
         error = r.error();
         return false;
     }
+    h.formatVersion = version;  // 1 and 2 share every layout; 2 adds an event kind
     header = std::move(h);
     headerBytes = kPreambleBytes + length + 4;
     return true;

@@ -24,7 +24,9 @@
 namespace palpate {
 
 inline constexpr char kRecordingMagic[7] = {'P', 'A', 'L', 'P', 'R', 'E', 'C'};
-inline constexpr std::uint8_t kRecordingFormatVersion = 1;
+/// 2: adds the Divergence event (kind 10). Version 1 files read unchanged (they have none).
+inline constexpr std::uint8_t kRecordingFormatVersion = 2;
+inline constexpr std::uint8_t kOldestRecordingFormatVersion = 1;
 inline constexpr std::uint8_t kChunkMagic[4] = {'P', 'C', 'H', 'K'};
 /// Magic (7) + version (1) + header length (4).
 inline constexpr std::size_t kPreambleBytes = 12;
@@ -58,6 +60,7 @@ enum class EventKind : std::uint8_t {
     Mark = 7,           ///< a user's mark (text)
     Exercise = 8,       ///< an exercise event (text, e.g. JSON)
     CommandsLost = 9,   ///< the applied-command queue overflowed: replay cannot be exact
+    Divergence = 10,    ///< (format 2) the divergence guard fired in that tick: 1 byte, the DivergenceKind
 };
 const char* eventKindName(EventKind kind);
 
@@ -87,6 +90,8 @@ struct RecordingHeader {
     RecordedDevice device;
     SafetyFilterDef safety;
     std::string note;              ///< free text: trainee, exercise, ...
+    /// The file's format version (decode sets it; encode always writes kRecordingFormatVersion).
+    std::uint8_t formatVersion = kRecordingFormatVersion;
 
     /// The engine's version (PALPATE version) as stored in new recordings.
     static std::string recordingEngineVersion();

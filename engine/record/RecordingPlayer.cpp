@@ -253,6 +253,11 @@ bool RecordingPlayer::applyEvents(std::uint64_t tick) {
                 error = mLoop->swapDevice(
                     std::make_unique<ReplayDevice>(mFeed, e.device ? e.device->spec : mReader.header().device.spec));
                 break;
+            case EventKind::Divergence:  // nothing to apply: the replayed tick's guard must fire by itself
+                ++mStatus.divergencesRecorded;
+                mExpectedDivergence = e.divergence;
+                mExpectedDivergenceTick = e.tick;
+                break;
             default: break;  // marks, states, pauses: nothing to re-apply (pause follows each tick's flag)
         }
         if (!error.empty()) {
@@ -291,15 +296,25 @@ bool RecordingPlayer::stepOne() {
 
     const HapticSnapshot& s = mLoop->newestSnapshot();
     const bool forceSame = std::memcmp(&s.forceN, &rec.forceN, sizeof(glm::vec3)) == 0;
-    if (!forceSame || s.touched != rec.touched || s.contact != rec.contact) {
+    const bool diverged = s.counters.divergences > 0 && s.counters.lastDivergenceTick == s.tick;
+    if (diverged) ++mStatus.divergencesReplayed;
+    const DivergenceKind replayedDivergence = diverged ? s.counters.lastDivergence : DivergenceKind::None;
+    const DivergenceKind recordedDivergence =
+        mExpectedDivergenceTick == rec.tick ? mExpectedDivergence : DivergenceKind::None;
+    const bool divergenceSame = mReader.header().formatVersion < 2 || replayedDivergence == recordedDivergence;
+    if (!divergenceSame || !forceSame || s.touched != rec.touched || s.contact != rec.contact) {
         ++mStatus.mismatches;
         if (!mStatus.mismatch) {
             mStatus.mismatch = true;
             mStatus.firstMismatchTick = rec.tick;
-            mStatus.firstMismatch = "tick " + std::to_string(rec.tick) + ": force " + vecText(s.forceN) +
-                                    " N, recorded " + vecText(rec.forceN) + " N; touched " + touchedText(s.touched) +
-                                    ", recorded " + touchedText(rec.touched) + "; contact " +
-                                    (s.contact ? "yes" : "no") + ", recorded " + (rec.contact ? "yes" : "no");
+            mStatus.firstMismatch =
+                !divergenceSame
+                    ? "tick " + std::to_string(rec.tick) + ": divergence " + divergenceKindName(replayedDivergence) +
+                          ", recorded " + divergenceKindName(recordedDivergence)
+                    : "tick " + std::to_string(rec.tick) + ": force " + vecText(s.forceN) + " N, recorded " +
+                          vecText(rec.forceN) + " N; touched " + touchedText(s.touched) + ", recorded " +
+                          touchedText(rec.touched) + "; contact " + (s.contact ? "yes" : "no") + ", recorded " +
+                          (rec.contact ? "yes" : "no");
         }
     }
     mStatus.finalHash = s.determinismHash;

@@ -48,6 +48,10 @@ struct ReplayStatus {
     std::uint64_t hashChecks = 0;         ///< chunk hashes compared
     std::uint64_t hashMismatches = 0;
     std::uint64_t finalHash = 0;          ///< the replay's determinism hash after its last tick
+    /// Divergence events (format 2) met, and ticks in which the replayed guard fired. A tick whose
+    /// recorded and replayed divergence differ counts as a mismatch (format 1 files: not compared).
+    std::uint64_t divergencesRecorded = 0;
+    std::uint64_t divergencesReplayed = 0;
     bool complete = false;                ///< replayed every recovered tick
     std::string stopReason;               ///< why it stopped early (gap, damage, undescribed scene)
     bool ok() const { return complete && !mismatch && hashMismatches == 0; }
@@ -122,6 +126,8 @@ private:
     bool mStopped = false;                  // stop() ended the replay (not the end of the ticks)
     RecordedTick mCurrent;
     bool mHaveCurrent = false;
+    DivergenceKind mExpectedDivergence = DivergenceKind::None;  // the recorded event for mExpectedDivergenceTick
+    std::uint64_t mExpectedDivergenceTick = 0;
     ReplayStatus mStatus;
 };
 

@@ -46,6 +46,8 @@ std::string describe(const RecordingEvent& e) {
         case EventKind::CommandsLost: return std::to_string(e.count) + " applied commands lost";
         case EventKind::Mark:
         case EventKind::Exercise: return e.text;
+        case EventKind::Divergence:
+            return std::string(divergenceKindName(e.divergence)) + ": " + divergenceAdvice(e.divergence);
     }
     return {};
 }
@@ -91,6 +93,13 @@ bool parseEvents(const std::uint8_t* cursor, const std::uint8_t* end, std::uint6
                 else e.text.assign(reinterpret_cast<const char*>(r.cursor()), std::size_t(length));
                 break;
             case std::uint8_t(EventKind::CommandsLost): e.count = p.varint("count"); break;
+            case std::uint8_t(EventKind::Divergence): {
+                const std::uint8_t kind = p.u8("kind");
+                if (p.ok() && (kind == 0 || kind > std::uint8_t(DivergenceKind::Inversion)))
+                    p.fail("kind", "unknown divergence kind " + std::to_string(kind));
+                e.divergence = p.ok() ? DivergenceKind(kind) : DivergenceKind::None;
+                break;
+            }
             default: known = false;
         }
         if (!p.ok()) {

@@ -11,6 +11,7 @@
 
 #include "engine/record/RecorderSink.h"
 #include "engine/record/RecordingFormat.h"
+#include "engine/stability/DivergenceKind.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -55,6 +56,7 @@ struct RecordingEvent {
     std::optional<RecordedDevice> device;  ///< DeviceChanged, when the recorder was told
     DeviceState deviceState = DeviceState::Disconnected;  ///< DeviceState
     std::uint64_t count = 0;      ///< CommandsLost
+    DivergenceKind divergence = DivergenceKind::None;  ///< Divergence: what the guard saw
 };
 
 struct RecordingSummary {

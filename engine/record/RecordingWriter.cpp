@@ -303,6 +303,8 @@ void RecordingWriter::emitTicks(std::size_t begin, std::size_t end) {
             }
             if (mHaveLastTick ? t.paused != mLastTick.paused : t.paused)
                 addEvent(t.paused ? EventKind::Paused : EventKind::Resumed, t.tick, firstTick, nullptr, 0);
+            // The divergence guard fired in this tick (format 2): its kind.
+            if (t.divergence != 0) addEvent(EventKind::Divergence, t.tick, firstTick, &t.divergence, 1);
             if (!mHaveLastTick) {
                 mFirstNowS = t.nowS;
                 mWorking.firstTick = t.tick;

@@ -5,6 +5,7 @@
 // and the force in a band. Stored as versioned JSON (ExerciseFile.h); every key is in
 // docs/scoring.md.
 
+#include "engine/lod/LodNeeds.h"
 #include "engine/scoring/Metric.h"
 #include "engine/scoring/Rubric.h"
 
@@ -74,6 +75,9 @@ struct Exercise {
     TraceDef trace;                 ///< type Trace
     /// The rubric lines the exercise sets; metrics without one use defaultRubricItem().
     std::array<std::optional<RubricItem>, kMetricCount> rubric{};
+    /// "needs": the accuracy target and haptic budget the model must meet (docs/lod.md); absent
+    /// means the exercise states none. Checked by parseExercise and saveExercise (validateLodNeeds).
+    std::optional<LodNeeds> needs;
     /// The file it was read from (relative paths resolve from its folder); not saved.
     std::string sourcePath;
 };

@@ -116,7 +116,7 @@ ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& s
         return result;
     }
     if (!r.object(j, "", {"format", "version", "name", "description", "type", "mesh", "tissue_preset", "time_limit_s",
-                          "rubric", "press_targets", "find_lump", "trace", "damage", "force"}))
+                          "rubric", "press_targets", "find_lump", "trace", "damage", "force", "needs"}))
         return result;
 
     std::string format;
@@ -229,6 +229,12 @@ ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& s
             }
         }
     }
+    if (j.contains("needs") && r.object(j.at("needs"), "needs", {"max_error", "budget_us"})) {
+        LodNeeds needs;
+        const bool hasError = r.number(j.at("needs"), "needs", "max_error", needs.maxErrorFraction, true);
+        const bool hasBudget = r.number(j.at("needs"), "needs", "budget_us", needs.budgetUs, true);
+        if (hasError && hasBudget) e.needs = needs;
+    }
     if (j.contains("rubric")) {
         const Json& s = j.at("rubric");
         if (s.is_object()) {
@@ -263,6 +269,8 @@ ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& s
         if (std::isnan(line.zeroMarks)) line.zeroMarks = d.zeroMarks;
     }
     for (const std::string& problem : validateExercise(e)) result.errors.push_back(source + ": " + problem);
+    if (e.needs)
+        for (const std::string& problem : validateLodNeeds(*e.needs)) result.errors.push_back(source + ": " + problem);
     if (result.errors.empty()) result.exercise = std::move(e);
     return result;
 }
@@ -329,11 +337,14 @@ std::string exerciseToJson(const Exercise& e, int indent) {
             rubric[std::string(metricName(Metric(i)))] = {
                 {"weight", e.rubric[i]->weight}, {"full", e.rubric[i]->fullMarks}, {"zero", e.rubric[i]->zeroMarks}};
     if (!rubric.empty()) j["rubric"] = rubric;
+    if (e.needs) j["needs"] = {{"max_error", e.needs->maxErrorFraction}, {"budget_us", e.needs->budgetUs}};
     return indent < 0 ? j.dump() : j.dump(indent) + "\n";
 }
 
 std::string saveExercise(const Exercise& exercise, const std::string& path) {
-    const auto problems = validateExercise(exercise);
+    auto problems = validateExercise(exercise);
+    if (exercise.needs)
+        for (const std::string& problem : validateLodNeeds(*exercise.needs)) problems.push_back(problem);
     if (!problems.empty()) {
         std::string text = path + ": not saved, the exercise is invalid:";
         for (const auto& p : problems) text += "\n  " + p;

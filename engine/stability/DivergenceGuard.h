@@ -10,24 +10,12 @@
 
 #include "engine/DeformationModel.h"
 #include "engine/TissueMesh.h"
+#include "engine/stability/DivergenceKind.h"
 
 #include <cstdint>
 #include <span>
 
 namespace palpate {
-
-enum class DivergenceKind : std::uint8_t {
-    None = 0,
-    NonFinite,    ///< NaN or infinity in the force or the fan's positions
-    EnergyGrowth, ///< activity grew by energyGrowthPerWindow for growthWindows windows in a row
-    Oscillation,  ///< the contact force changed direction every tick for oscillationTicks ticks
-    Inversion,    ///< a triangle of the touched vertex's fan flipped against its rest normal
-};
-
-/// A short name for logs and the snapshot ("non-finite", "energy growth", ...).
-const char* divergenceKindName(DivergenceKind kind);
-/// What happened and which parameter to change, for the user (static text).
-const char* divergenceAdvice(DivergenceKind kind);
 
 struct DivergenceGuardDef {
     /// Ticks per energy window.

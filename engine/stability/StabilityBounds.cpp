@@ -32,6 +32,11 @@ double forwardEulerMaxStepS(double omega, double gamma) {
 }
 
 double massSpringOmegaMaxRadPerS(const TissueMesh& mesh, const MassSpringParams& p, VertexId touched) {
+    return massSpringOmegaMaxRadPerS(mesh, p, touched, std::vector<std::uint8_t>(mesh.vertexCount(), 1));
+}
+
+double massSpringOmegaMaxRadPerS(const TissueMesh& mesh, const MassSpringParams& p, VertexId touched,
+                                 const std::vector<std::uint8_t>& simulated) {
     // The stiffness is isotropic except the contact's k_c n n^T on the touched vertex, so the top
     // eigenvalue is that of the scalar n x n matrix k_a I + k_e L + k_c e_t e_t^T (L the graph
     // Laplacian). Power iteration; the Rayleigh quotient converges with the square of the vector.
@@ -39,7 +44,10 @@ double massSpringOmegaMaxRadPerS(const TissueMesh& mesh, const MassSpringParams&
     const auto& start = mesh.neighbourStart();
     const auto& nb = mesh.neighbours();
     std::vector<double> x(n), y(n);
-    for (std::size_t i = 0; i < n; ++i) x[i] = ((i * 2654435761u) % 1000) / 1000.0 - 0.5 + (i % 2 ? 0.3 : -0.3);
+    // Pinned vertices (simulated[i] == 0) stay at zero: the iteration runs on the simulated block,
+    // whose rows keep every edge (a pinned neighbour's spring still pulls).
+    for (std::size_t i = 0; i < n; ++i)
+        x[i] = simulated[i] ? ((i * 2654435761u) % 1000) / 1000.0 - 0.5 + (i % 2 ? 0.3 : -0.3) : 0.0;
     double lambda = 0.0;
     for (int iteration = 0; iteration < 20000; ++iteration) {
         double norm = 0.0;
@@ -48,6 +56,10 @@ double massSpringOmegaMaxRadPerS(const TissueMesh& mesh, const MassSpringParams&
         for (double& v : x) v /= norm;
         double rayleigh = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
+            if (!simulated[i]) {
+                y[i] = 0.0;
+                continue;
+            }
             double s = p.anchorStiffnessNPerMm * x[i];
             for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) s += p.edgeStiffnessNPerMm * (x[i] - x[nb[k]]);
             if (i == touched) s += p.contactStiffnessNPerMm * x[i];
@@ -76,6 +88,21 @@ double massSpringOmegaGershgorinRadPerS(const TissueMesh& mesh, const MassSpring
 double passiveMaxStiffnessNPerMm(double b, double periodS, double virtualDamping) {
     const double slack = b - std::abs(virtualDamping);
     return slack > 0.0 && periodS > 0.0 ? 2.0 * slack / periodS : 0.0;
+}
+
+double sampledWallMaxStiffnessNPerMm(double m, double b, double T) {
+    if (!(m > 0.0) || !(b > 0.0) || !(T > 0.0)) return 0.0;
+    const double tau = m / b;
+    const double oneMinusDelta = -std::expm1(-T / tau);  // 1 - delta without cancellation
+    const double delta = 1.0 - oneMinusDelta;
+    // tau (1 - delta) - delta T = T^2 / (2 tau) - T^3 / (3 tau^2) + ...: series when T / tau is small.
+    const double e = T / tau;
+    const double determinantDenominator =
+        e < 1e-3 ? T * (e / 2.0 - e * e / 3.0 + e * e * e / 8.0) : tau * oneMinusDelta - delta * T;
+    const double fromDeterminant = b * oneMinusDelta / determinantDenominator;
+    const double massDenominator = T * (1.0 + delta) - 2.0 * tau * oneMinusDelta;
+    const double fromMass = massDenominator > 0.0 ? 2.0 * b * (1.0 + delta) / massDenominator : kNoBound;
+    return std::min(fromDeterminant, fromMass) / 1000.0;  // N/m -> N/mm
 }
 
 double inversionMaxTangentialForceN(double m1, double m2, double height) {

@@ -6,7 +6,9 @@
 #include "engine/TissueMesh.h"
 #include "engine/models/MassSpringParams.h"
 
+#include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace palpate {
 
@@ -43,6 +45,22 @@ double massSpringOmegaGershgorinRadPerS(const TissueMesh& mesh, const MassSpring
 /// period T (s) by a device with physical damping b (N s/mm) is passive iff b > K T / 2 + |B|.
 /// Largest passive K for the given b, B and T (0 when |B| >= b).
 double passiveMaxStiffnessNPerMm(double deviceDampingNsPerMm, double periodS, double virtualDampingNsPerMm = 0.0);
+
+/// The exact stability limit of the loop Colgate and Brown analyse, without a hand: a 1-DOF device
+/// of mass m (kg) and physical damping b (N s/m) rendering a sampled spring K through a zero-order
+/// hold at period T (force from the position sampled at the start of the period, held over it).
+/// Exact discretisation of m x'' + b x' = F, tau = m / b, delta = exp(-T / tau); Jury's test on
+/// the 2 x 2 step matrix leaves two limits, K < b (1 - delta) / (tau (1 - delta) - delta T) (the
+/// determinant, = (2 b / T)(1 + b T / 6 m + ...), Colgate's 2 b / T as b T / m -> 0) and
+/// K < 2 b (1 + delta) / (T (1 + delta) - 2 tau (1 - delta)) (~ 24 m^2 / (b T^3), far above
+/// while b T / m is small). The smaller one, in N/mm (inputs SI).
+double sampledWallMaxStiffnessNPerMm(double deviceMassKg, double deviceDampingNsPerM, double periodS);
+
+/// As massSpringOmegaMaxRadPerS, for the local variant: only the vertices with simulated[v] != 0
+/// move, every other vertex is pinned at rest (its edge springs still pull: the row keeps the
+/// vertex's full degree). Not real-time.
+double massSpringOmegaMaxRadPerS(const TissueMesh& mesh, const MassSpringParams& params, VertexId touched,
+                                 const std::vector<std::uint8_t>& simulated);
 
 /// Triangle inversion under a tangential force: the touched vertex moves |m1| F_t sideways and
 /// its ring-1 neighbours |m2| F_t, so the relative shift is |m1 - m2| |F_t|; a fan triangle flips

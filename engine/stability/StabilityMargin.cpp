@@ -48,22 +48,43 @@ StabilityMargin massSpring(const MassSpringParams& p, MassSpringIntegrator integ
 
 }  // namespace
 
-StabilityMargin stabilityMargin(const ModelDef& def, const TissueMesh& mesh, double dtS) {
+bool stabilityMarginNeedsMesh(ModelKind kind) {
+    return kind == ModelKind::MassSpringSymplectic || kind == ModelKind::MassSpringRk4 ||
+           kind == ModelKind::MassSpringImplicit || kind == ModelKind::MassSpringLocal;
+}
+
+StabilityMargin renderedStiffnessMargin(double stiffness, double dtS, double passiveAt1kHz) {
+    // b = K_1kHz x 1 ms / 2, so K_passive(T) = 2 b / T = K_1kHz (1 ms / T).
+    const double passive = passiveMaxStiffnessNPerMm(passiveAt1kHz * 1e-3 / 2.0, dtS);
+    StabilityMargin m;
+    m.margin = passive > 0.0 ? 1.0 - stiffness / passive : -kNoBound;
+    m.text = format("k_s = %.3g N/mm of the device's passive %.3g N/mm", stiffness, passive) +
+             format(" at %.0f Hz (Colgate and Brown): margin %.0f %%", 1.0 / dtS, 100.0 * m.margin);
+    if (m.margin <= 0.0) m.text += "; lower stiffness (k_s) or raise the haptic rate";
+    return m;
+}
+
+StabilityMargin stabilityMargin(const ModelDef& def, const TissueMesh& mesh, double dtS, double passiveAt1kHz) {
+    return *stabilityMarginIfKnown(def, &mesh, dtS, passiveAt1kHz);
+}
+
+std::optional<StabilityMargin> stabilityMarginIfKnown(const ModelDef& def, const TissueMesh* meshOrNull, double dtS,
+                                                      double passiveAt1kHz) {
+    if (stabilityMarginNeedsMesh(def.kind) && !meshOrNull) return std::nullopt;
     switch (def.kind) {
         case ModelKind::SlopeRing: return slopeRing(def.slopeRing);
         case ModelKind::VolumetricRings: return slopeRing(def.volumetricRings.slopeRing);
         case ModelKind::MassSpringSymplectic:
-            return massSpring(def.massSpring, MassSpringIntegrator::SymplecticEuler, mesh, dtS);
-        case ModelKind::MassSpringRk4: return massSpring(def.massSpring, MassSpringIntegrator::Rk4, mesh, dtS);
+            return massSpring(def.massSpring, MassSpringIntegrator::SymplecticEuler, *meshOrNull, dtS);
+        case ModelKind::MassSpringRk4: return massSpring(def.massSpring, MassSpringIntegrator::Rk4, *meshOrNull, dtS);
         case ModelKind::MassSpringImplicit:
-            return massSpring(def.massSpring, MassSpringIntegrator::BackwardEuler, mesh, dtS);
-        case ModelKind::MassSpringLocal: return massSpring(def.massSpring, def.massSpring.localIntegrator, mesh, dtS);
+            return massSpring(def.massSpring, MassSpringIntegrator::BackwardEuler, *meshOrNull, dtS);
+        case ModelKind::MassSpringLocal: return massSpring(def.massSpring, def.massSpring.localIntegrator, *meshOrNull, dtS);
         case ModelKind::RadiusOfInfluence:
-        case ModelKind::Ffd: break;
+            return renderedStiffnessMargin(def.radiusOfInfluence.stiffnessNPerMm, dtS, passiveAt1kHz);
+        case ModelKind::Ffd: return renderedStiffnessMargin(def.ffd.stiffnessNPerMm, dtS, passiveAt1kHz);
     }
-    StabilityMargin m;
-    m.text = "geometric model: nothing integrates, no step bound";
-    return m;
+    return StabilityMargin{};
 }
 
 }  // namespace palpate

@@ -6,6 +6,7 @@
 #include "engine/TissueMesh.h"
 #include "engine/models/ModelRegistry.h"
 
+#include <optional>
 #include <string>
 
 namespace palpate {
@@ -17,9 +18,26 @@ struct StabilityMargin {
     std::string text;  ///< e.g. "alpha (1 + g) = 0.80 of 2: margin 60 %"; names the parameter
 };
 
+/// The passive stiffness of the device at 1 kHz the margins assume when none is given: DeviceSpec's
+/// default (1 N/mm), i.e. physical damping b = 0.5 N s/m (docs/stability.md section 3).
+inline constexpr double kDefaultPassiveStiffnessAt1kHzNPerMm = 1.0;
+
 /// The margin of `def` on `mesh` at period `dtS`. Mass-spring uses Gershgorin's omega_max (the
 /// model's own, on the safe side; the exact one is massSpringOmegaMaxRadPerS) and the sub-steps
-/// the model would take.
-StabilityMargin stabilityMargin(const ModelDef& def, const TissueMesh& mesh, double dtS);
+/// the model would take. The geometric models (radius of influence, FFD), which have no step or
+/// loop-gain bound, get the haptic one: 1 - k_s / K_passive, K_passive = Colgate and Brown's 2 b / T
+/// for a device passive up to `passiveStiffnessAt1kHzNPerMm` at 1 kHz.
+StabilityMargin stabilityMargin(const ModelDef& def, const TissueMesh& mesh, double dtS,
+                                double passiveStiffnessAt1kHzNPerMm = kDefaultPassiveStiffnessAt1kHzNPerMm);
+/// As above with the mesh optional: nullopt when the kind needs one (stabilityMarginNeedsMesh) and
+/// `mesh` is null.
+std::optional<StabilityMargin> stabilityMarginIfKnown(const ModelDef& def, const TissueMesh* mesh, double dtS,
+                                                      double passiveStiffnessAt1kHzNPerMm = kDefaultPassiveStiffnessAt1kHzNPerMm);
+/// True when the margin of `kind` depends on the mesh (the mass-spring kinds): without a mesh the
+/// caller cannot compute it.
+bool stabilityMarginNeedsMesh(ModelKind kind);
+/// The geometric models' margin alone (no mesh needed).
+StabilityMargin renderedStiffnessMargin(double stiffnessNPerMm, double dtS,
+                                        double passiveStiffnessAt1kHzNPerMm = kDefaultPassiveStiffnessAt1kHzNPerMm);
 
 }  // namespace palpate

@@ -19,10 +19,28 @@ struct StabilitySceneDef {
     int slopeRingTicks = 3000;         ///< ticks per slope-ring cell
     int massSpringTicks = 2000;        ///< ticks per explicit mass-spring cell
     int implicitTicks = 200;           ///< ticks per backward-Euler cell (no boundary to resolve)
+    int deviceTicks = 10000;           ///< ticks per haptic-device cell (radius-of-influence, ffd)
+    int localRingCount = 2;            ///< mass-spring-local: simulated rings (the rest pinned)
 };
 
+/// The simulated device of the geometric models' maps (docs/stability.md section 3): one degree of
+/// freedom along the touched vertex's normal, mass m and physical damping b, pushed by a hand force
+/// that holds it `equilibriumMm` deep at equilibrium, started `perturbation` x that deeper, at rest.
+/// b = 0.5 N s/m: the DeviceSpec default's 1 N/mm at 1 kHz is its Colgate-Brown limit, 2 b / T.
+struct StabilityDeviceDef {
+    double massKg = 0.05;
+    double dampingNsPerM = 0.5;
+    double equilibriumMm = 0.5;
+    double perturbation = 0.2;
+};
+
+/// The registry models (ModelRegistry.h modelNames()) each map runs; a model is on the list when
+/// some map runs it. Empty for an unknown map.
+std::vector<std::string> stabilityMapModels(std::string_view mapName);
+
 /// slope-ring-gain, slope-ring-relaxation, mass-spring-symplectic, mass-spring-symplectic-vertex,
-/// mass-spring-rk4, mass-spring-implicit.
+/// mass-spring-rk4, mass-spring-implicit, mass-spring-local, palpate, proposed, hybrid, previous
+/// (the gain map on each slope-ring method), volumetric-rings, radius-of-influence, ffd.
 std::vector<std::string> stabilityModelNames();
 /// The map's definition for a name; nullopt for an unknown one. Builds the scene (not real-time).
 std::optional<StabilityMapSpec> stabilityMapSpec(std::string_view name, const StabilitySceneDef& scene = {});

@@ -148,3 +148,82 @@ TEST(TissuePresetFuzz, MutationsNeverCrash) {
     }
     EXPECT_LT(accepted, 2000);
 }
+
+// "needs" (issue 10, docs/lod.md): optional; round-trips; absurd values name the key.
+TEST(TissuePreset, NeedsAreOptionalRoundTripAndNamedWhenBad) {
+    const auto without = parseTissuePreset(validText(), "my.json");
+    ASSERT_TRUE(without.preset) << without.error();
+    EXPECT_FALSE(without.preset->needs);
+    EXPECT_EQ(validText().find("needs"), std::string::npos);  // a preset without needs is written without
+
+    TissuePreset p = *without.preset;
+    p.needs = LodNeeds{0.12, 250.0};
+    const std::string text = tissuePresetToJson(p);
+    const auto back = parseTissuePreset(text, "my.json");
+    ASSERT_TRUE(back.preset) << back.error();
+    ASSERT_TRUE(back.preset->needs);
+    EXPECT_EQ(back.preset->needs->maxErrorFraction, 0.12);
+    EXPECT_EQ(back.preset->needs->budgetUs, 250.0);
+    EXPECT_EQ(tissuePresetToJson(*back.preset), text);
+
+    auto withNeeds = [&](const std::string& needs) {
+        std::string t = text;
+        const auto at = t.find("\"needs\"");
+        const auto end = t.find('}', at);
+        t.replace(at, end - at + 1, "\"needs\": " + needs);
+        return t;
+    };
+    expectErrorNaming(withNeeds(R"({"max_error": -0.1, "budget_us": 100})"), "needs.max_error", "above 0");
+    expectErrorNaming(withNeeds(R"({"max_error": 0.1, "budget_us": 0})"), "needs.budget_us", "above 0");
+    expectErrorNaming(withNeeds(R"({"max_error": 0.1, "budget_us": 1e12})"), "needs.budget_us", "absurd");
+    expectErrorNaming(withNeeds(R"({"max_error": 0.1})"), "needs.budget_us", "missing");
+    expectErrorNaming(withNeeds(R"({"max_error": "small", "budget_us": 100})"), "needs.max_error", "number");
+    expectErrorNaming(withNeeds(R"({"max_error": 0.1, "budget_us": 100, "rings": 2})"), "needs.rings", "unknown key");
+    expectErrorNaming(withNeeds("[0.1, 100]"), "needs", "must be an object");
+
+    // An absurd target is not saved.
+    p.needs = LodNeeds{0.1, -5.0};
+    const auto path = (std::filesystem::temp_directory_path() / "palpate_preset_needs_test.json").string();
+    const std::string problem = saveTissuePreset(p, path);
+    EXPECT_NE(problem.find("needs.budget_us"), std::string::npos) << problem;
+    EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+// "stability_margin" (issue 8, docs/stability.md section 7): written on save by the parameter panel
+// with the period it was computed for; informational on load (type and range checked, by key);
+// presets without it stay valid.
+TEST(TissuePreset, StabilityMarginIsOptionalRoundTripsAndIsNamedWhenBad) {
+    const auto without = parseTissuePreset(validText(), "my.json");
+    ASSERT_TRUE(without.preset) << without.error();
+    EXPECT_FALSE(without.preset->stabilityMargin);
+    EXPECT_EQ(validText().find("stability_margin"), std::string::npos);
+
+    TissuePreset p = *without.preset;
+    p.stabilityMargin = PresetStabilityMargin{0.42, 5e-4};
+    const std::string text = tissuePresetToJson(p);
+    const auto back = parseTissuePreset(text, "my.json");
+    ASSERT_TRUE(back.preset) << back.error();
+    ASSERT_TRUE(back.preset->stabilityMargin);
+    EXPECT_EQ(back.preset->stabilityMargin->margin, 0.42);
+    EXPECT_EQ(back.preset->stabilityMargin->dtS, 5e-4);
+    EXPECT_EQ(tissuePresetToJson(*back.preset), text);
+    // A set beyond its bound has a negative margin: stored as it is (informational).
+    p.stabilityMargin = PresetStabilityMargin{-0.3, 1e-3};
+    const auto beyond = parseTissuePreset(tissuePresetToJson(p), "my.json");
+    ASSERT_TRUE(beyond.preset) << beyond.error();
+    EXPECT_EQ(beyond.preset->stabilityMargin->margin, -0.3);
+
+    auto withMargin = [&](const std::string& margin) {
+        std::string t = text;
+        const auto at = t.find("\"stability_margin\"");
+        const auto end = t.find('}', at);
+        t.replace(at, end - at + 1, "\"stability_margin\": " + margin);
+        return t;
+    };
+    expectErrorNaming(withMargin(R"({"margin": 1.5, "dt_s": 0.001})"), "stability_margin.margin", "out of range");
+    expectErrorNaming(withMargin(R"({"margin": "ok", "dt_s": 0.001})"), "stability_margin.margin", "number");
+    expectErrorNaming(withMargin(R"({"margin": 0.5, "dt_s": 0})"), "stability_margin.dt_s", "out of range");
+    expectErrorNaming(withMargin(R"({"margin": 0.5})"), "stability_margin.dt_s", "missing");
+    expectErrorNaming(withMargin(R"({"margin": 0.5, "dt_s": 0.001, "model": 1})"), "stability_margin.model", "unknown key");
+    expectErrorNaming(withMargin("0.5"), "stability_margin", "must be an object");
+}

@@ -39,9 +39,11 @@ TEST(RecordCliThreads, RunRecordsAndInfoDescribesIt) {
     for (const char* key : {"ticks", "duration_s", "chunks", "bytes", "events", "intact"})
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_TRUE(j["intact"].get<bool>());
-    EXPECT_GT(j["ticks"].get<std::uint64_t>(), 500u);
-    // Loop time: a second, give or take the start; a loaded machine skips deadlines (fewer ticks).
-    EXPECT_NEAR(j["duration_s"].get<double>(), 1.0, 0.2);
+    // Loop time: about a second; a loaded machine skips deadlines (fewer ticks) and starts late, so
+    // only what no load can change is checked tightly (duration covers the ticks, below).
+    EXPECT_GT(j["ticks"].get<std::uint64_t>(), 100u);
+    EXPECT_GT(j["duration_s"].get<double>(), 0.5);
+    EXPECT_LT(j["duration_s"].get<double>(), 2.0);
     EXPECT_GE(j["duration_s"].get<double>(), double(j["ticks"].get<std::uint64_t>()) * 0.001 - 1e-9);
     EXPECT_EQ(j["bytes"].get<std::uint64_t>(), readBytes(path).size());
     EXPECT_LE(j["bytes_per_tick"].get<double>(), 40.0);

@@ -257,7 +257,13 @@ TEST(RecorderThreads, StartAndStopWhileTheLoopRuns) {
         const std::string path = dir.file("churn" + std::to_string(round) + ".palprec");
         auto session = RecordingSession::start(*rig.loop, path, rig.header, error);
         ASSERT_TRUE(session) << error;
-        std::this_thread::sleep_for(std::chrono::milliseconds(60 + 20 * round));
+        // Until the writer has some ticks (a loaded machine may take longer than a few ms): waiting
+        // for a count, not for a time, so the check below never depends on the machine's speed.
+        const std::uint64_t wantTicks = 21 + 10 * std::uint64_t(round);
+        for (int waited = 0; waited < 10000 && session->stats().ticks < wantTicks; waited += 5) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            session->flush();
+        }
         session->mark("round " + std::to_string(round));
         ASSERT_EQ(session->stop(), "");
         const RecordingReader reader = RecordingReader::open(path);

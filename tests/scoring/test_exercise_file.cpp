@@ -202,3 +202,51 @@ TEST(ExerciseFile, RecordingNoteCarriesTheExercise) {
 
 }  // namespace
 }  // namespace palpate
+
+namespace palpate {
+namespace {
+
+// "needs" (issue 10, docs/lod.md): optional; round-trips; absurd values are errors naming the key.
+TEST(ExerciseFile, NeedsAreOptionalRoundTripAndNamedWhenBad) {
+    const auto plain = parseExercise(pressJson().dump(), "ex.json");
+    ASSERT_TRUE(plain.exercise) << plain.error();
+    EXPECT_FALSE(plain.exercise->needs);
+    EXPECT_EQ(exerciseToJson(*plain.exercise).find("needs"), std::string::npos);
+
+    Json j = pressJson();
+    j["needs"] = {{"max_error", 0.08}, {"budget_us", 150}};
+    const auto read = parseExercise(j.dump(), "ex.json");
+    ASSERT_TRUE(read.exercise) << read.error();
+    ASSERT_TRUE(read.exercise->needs);
+    EXPECT_EQ(read.exercise->needs->maxErrorFraction, 0.08);
+    EXPECT_EQ(read.exercise->needs->budgetUs, 150.0);
+    const auto again = parseExercise(exerciseToJson(*read.exercise), "ex.json");
+    ASSERT_TRUE(again.exercise) << again.error();
+    ASSERT_TRUE(again.exercise->needs);
+    EXPECT_EQ(exerciseToJson(*again.exercise), exerciseToJson(*read.exercise));
+
+    auto with = [&](const Json& needs) {
+        Json k = pressJson();
+        k["needs"] = needs;
+        return k;
+    };
+    expectError(with({{"max_error", -1}, {"budget_us", 100}}), "needs.max_error", "must be above 0");
+    expectError(with({{"max_error", 0}, {"budget_us", 100}}), "needs.max_error", "must be above 0");
+    expectError(with({{"max_error", 0.1}, {"budget_us", 0}}), "needs.budget_us", "must be above 0");
+    expectError(with({{"max_error", 50}, {"budget_us", 100}}), "needs.max_error", "50 is absurd");
+    expectError(with({{"max_error", 0.1}}), "needs.budget_us", "missing");
+    expectError(with({{"max_error", 0.1}, {"budget_us", "fast"}}), "needs.budget_us", "must be a number");
+    expectError(with({{"max_error", 0.1}, {"budget_us", 100}, {"level", 2}}), "needs.level", "unknown key");
+    expectError(with(Json::array({0.1, 100})), "needs", "must be an object");
+
+    // An exercise with an absurd target is not saved.
+    test::TempDir dir;
+    Exercise bad = *read.exercise;
+    bad.needs->budgetUs = -3;
+    const std::string problem = saveExercise(bad, dir.file("bad.json"));
+    EXPECT_NE(problem.find("needs.budget_us"), std::string::npos) << problem;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("bad.json")));
+}
+
+}  // namespace
+}  // namespace palpate

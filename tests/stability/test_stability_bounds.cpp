@@ -195,5 +195,16 @@ TEST(StabilityMargin, NamesTheLimitingParameterOnBothSides) {
     EXPECT_LT(explicitBeyond.margin, 0.0);
     EXPECT_NE(explicitBeyond.text.find("substeps"), std::string::npos);
     EXPECT_EQ(stabilityMargin(*modelDefForName("mass-spring-implicit"), *mesh.mesh, 1.0).margin, 1.0);
-    EXPECT_EQ(stabilityMargin(*modelDefForName("ffd"), *mesh.mesh, 1e-3).margin, 1.0);
+    // The geometric models: the rendered stiffness against the device's passive one (Colgate and
+    // Brown; 1 N/mm at 1 kHz by default): k_s = 0.125 N/mm leaves 87.5 %, and twice the rate doubles it.
+    EXPECT_NEAR(stabilityMargin(*modelDefForName("ffd"), *mesh.mesh, 1e-3).margin, 0.875, 1e-12);
+    EXPECT_NEAR(stabilityMargin(*modelDefForName("radius-of-influence"), *mesh.mesh, 5e-4).margin, 0.9375, 1e-12);
+    ModelDef roi = *modelDefForName("radius-of-influence");
+    roi.radiusOfInfluence.stiffnessNPerMm = 1.5;
+    const StabilityMargin roiBeyond = stabilityMargin(roi, *mesh.mesh, 1e-3);
+    EXPECT_NEAR(roiBeyond.margin, -0.5, 1e-12);
+    EXPECT_NE(roiBeyond.text.find("stiffness"), std::string::npos);
+    EXPECT_NEAR(stabilityMargin(roi, *mesh.mesh, 1e-3, 3.0).margin, 0.5, 1e-12);  // a stiffer device
+    EXPECT_FALSE(stabilityMarginNeedsMesh(ModelKind::Ffd));
+    EXPECT_TRUE(stabilityMarginNeedsMesh(ModelKind::MassSpringLocal));
 }

@@ -61,3 +61,32 @@ TEST(StabilityCli, UnknownModelAndMissingChoiceAreUsageErrors) {
     EXPECT_EQ(run("stability --model nope").status, 2);
     EXPECT_EQ(run("stability").status, 2);
 }
+
+TEST(StabilityCli, EveryNewMapRunsQuicklyFromTheCli) {
+    for (const char* name : {"radius-of-influence", "volumetric-rings", "mass-spring-local"}) {
+        const CliRun r = run(std::string("stability --model ") + name + " --quick --json");
+        ASSERT_EQ(r.status, 0) << name;
+        const auto json = nlohmann::json::parse(r.out);
+        EXPECT_EQ(json["model"], name);
+        EXPECT_EQ(json["cells"].size(), 36u) << name;
+        EXPECT_LT(json["relative_gap"].get<double>(), 0.05) << name;
+    }
+}
+
+// Issue 9's bench: bench models --csv writes one row per model and size (here a small sphere).
+TEST(BenchModelsCli, CsvHasOneRowPerModelAndSize) {
+    const std::string csv = ::testing::TempDir() + "bench_models.csv";
+    const CliRun r = run("bench models --sizes 242 --models radius-of-influence,ffd --repeats 1 --budget-s 2 --csv " + csv);
+    ASSERT_EQ(r.status, 0);
+    std::ifstream in(csv);
+    std::string header, line;
+    std::getline(in, header);
+    EXPECT_EQ(header, "model,vertices,tick_us,displacement_error,force_error,repeats,note,reason");
+    int rows = 0;
+    while (std::getline(in, line)) {
+        ++rows;
+        EXPECT_TRUE(line.rfind("radius-of-influence,242,", 0) == 0 || line.rfind("ffd,242,", 0) == 0) << line;
+        EXPECT_NE(line.find(",1,\""), std::string::npos) << line;  // repeats, then the quoted note
+    }
+    EXPECT_EQ(rows, 2);
+}

@@ -5,6 +5,8 @@
 #include "widgets/ParameterCommands.h"
 #include "widgets/ParameterPanel.h"
 
+#include "engine/MeshGenerator.h"
+
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -12,6 +14,7 @@
 #include <QFile>
 #include <QImage>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPixmap>
 #include <QPushButton>
 #include <QScrollArea>
@@ -19,6 +22,7 @@
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <gtest/gtest.h>
@@ -440,4 +444,185 @@ TEST(ParameterPanel, RendersEveryFieldInsideThePanel) {
         }
     EXPECT_GT(red, 20);
     if (const QByteArray out = qgetenv("PALPATE_PARAMETER_PANEL_PNG"); !out.isEmpty()) shot.save(QString::fromLocal8Bit(out));
+}
+
+// Issue 8, guards for every model (docs/stability.md section 7): the panel shows each model's
+// stability margin; a set beyond it is not refused by the validators (mass-spring, radius of
+// influence, FFD), so Apply asks for confirmation (the real QMessageBox, answered here, or the
+// replaceable confirm function); a saved preset stores the margin with its period.
+namespace {
+
+ParameterPanel* choose(ParameterPanel& panel, const char* model) {
+    auto* combo = panel.findChild<QComboBox*>(QStringLiteral("modelCombo"));
+    combo->setCurrentIndex(combo->findData(QLatin1String(model)));
+    return &panel;
+}
+
+/// Answers the next modal QMessageBox (the stability confirmation) with `button`, recording its text.
+void answerNextBox(QMessageBox::StandardButton button, QString* text, bool* seen) {
+    QTimer::singleShot(0, [=] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box) return;
+        *seen = true;
+        *text = box->text();
+        box->button(button)->click();
+    });
+}
+
+const TissueMesh& sphere242() {
+    static const TissueMesh mesh = std::move(*generateMesh(GeneratedShape::Sphere, 242).mesh);
+    return mesh;
+}
+
+}  // namespace
+
+TEST(ParameterPanelStability, EveryModelShowsItsMargin) {
+    ParameterPanel panel;
+    panel.setMeshProvider([] { return &sphere242(); });
+    QLabel* stability = label(panel, "stabilityLabel");
+    for (const std::string& name : modelNames()) {
+        choose(panel, name.c_str());
+        EXPECT_TRUE(visibleIn(stability, panel)) << name;
+        const auto margin = panel.stabilityMargin();
+        ASSERT_TRUE(margin) << name;
+        EXPECT_GT(margin->margin, 0.0) << name << ": the defaults are inside their bounds";
+        EXPECT_TRUE(stability->text().contains(QStringLiteral("margin"))) << name << ": " << stability->text().toStdString();
+        EXPECT_FALSE(stability->property("unstable").toBool()) << name;
+    }
+    // The radius of influence's k_s = 0.125 N/mm of the device's passive 1 N/mm at 1 kHz.
+    choose(panel, "radius-of-influence");
+    EXPECT_NEAR(panel.stabilityMargin()->margin, 0.875, 1e-9);
+    EXPECT_TRUE(stability->text().contains(QStringLiteral("88"))) << stability->text().toStdString();
+    // Without a mesh a mass-spring margin is unknown, and says so.
+    ParameterPanel meshless;
+    choose(meshless, "mass-spring-symplectic");
+    EXPECT_FALSE(meshless.stabilityMargin());
+    EXPECT_TRUE(label(meshless, "stabilityLabel")->text().contains(QStringLiteral("mesh")));
+    EXPECT_TRUE(meshless.isValid());
+}
+
+TEST(ParameterPanelStability, BeyondTheMarginApplyAsksAndNoKeepsTheSetBack) {
+    ParameterPanel panel;
+    panel.setMeshProvider([] { return &sphere242(); });
+    std::vector<TissuePreset> applied;
+    QObject::connect(&panel, &ParameterPanel::applyRequested, [&](const TissuePreset& p) { applied.push_back(p); });
+    choose(panel, "mass-spring-symplectic");
+    intField(panel, "massSpringSubstepsSpin")->setValue(1);
+    doubleField(panel, "massSpringEdgeSpin")->setValue(5.0);  // h omega_max far above 2 at 1 kHz
+    ASSERT_TRUE(panel.isValid()) << "the validators allow the set: " << panel.problems().join(QLatin1Char('\n')).toStdString();
+    const auto margin = panel.stabilityMargin();
+    ASSERT_TRUE(margin);
+    EXPECT_LT(margin->margin, 0.0);
+    QLabel* stability = label(panel, "stabilityLabel");
+    EXPECT_TRUE(stability->property("unstable").toBool());
+    EXPECT_TRUE(stability->text().contains(QStringLiteral("substeps"))) << stability->text().toStdString();
+
+    // The real box: No (the default) keeps the set back, Yes applies it.
+    QString text;
+    bool seen = false;
+    answerNextBox(QMessageBox::No, &text, &seen);
+    QTest::mouseClick(applyButton(panel), Qt::LeftButton);
+    EXPECT_TRUE(seen);
+    EXPECT_TRUE(text.contains(QStringLiteral("substeps"))) << text.toStdString();
+    EXPECT_EQ(int(applied.size()), 0);
+    seen = false;
+    answerNextBox(QMessageBox::Yes, &text, &seen);
+    QTest::mouseClick(applyButton(panel), Qt::LeftButton);
+    EXPECT_TRUE(seen);
+    ASSERT_EQ(int(applied.size()), 1);
+    EXPECT_EQ(applied[0].massSpring.substeps, 1);
+
+    // Back inside (automatic sub-steps): no question.
+    int asked = 0;
+    panel.setConfirmFunction([&](const QString&, const QString&) { ++asked; return false; });
+    intField(panel, "massSpringSubstepsSpin")->setValue(0);
+    EXPECT_GT(panel.stabilityMargin()->margin, 0.0);
+    EXPECT_FALSE(stability->property("unstable").toBool());
+    panel.apply();
+    EXPECT_EQ(asked, 0);
+    EXPECT_EQ(int(applied.size()), 2);
+}
+
+TEST(ParameterPanelStability, GeometricModelsAskBeyondThePassiveStiffness) {
+    ParameterPanel panel;  // no mesh needed for these
+    std::vector<TissuePreset> applied;
+    QObject::connect(&panel, &ParameterPanel::applyRequested, [&](const TissuePreset& p) { applied.push_back(p); });
+    int asked = 0;
+    QString question;
+    panel.setConfirmFunction([&](const QString&, const QString& text) {
+        ++asked;
+        question = text;
+        return false;
+    });
+    for (const char* model : {"radius-of-influence", "ffd"}) {
+        choose(panel, model);
+        const char* spin = std::string(model) == "ffd" ? "ffdStiffnessSpin" : "radiusOfInfluenceStiffnessSpin";
+        doubleField(panel, spin)->setValue(1.1);  // above 1 N/mm at 1 kHz
+        EXPECT_LT(panel.stabilityMargin()->margin, 0.0) << model;
+        panel.apply();
+        EXPECT_EQ(int(applied.size()), 0) << model;
+        EXPECT_TRUE(question.contains(QStringLiteral("k_s"))) << question.toStdString();
+        doubleField(panel, "hapticRateSpin")->setValue(2000.0);  // twice the rate: passive up to 2 N/mm
+        EXPECT_GT(panel.stabilityMargin()->margin, 0.0) << model;
+        panel.apply();
+        EXPECT_EQ(int(applied.size()), 1) << model;
+        applied.clear();
+        doubleField(panel, "hapticRateSpin")->setValue(1000.0);
+    }
+    EXPECT_EQ(asked, 2);
+}
+
+TEST(ParameterPanelStability, SlopeRingBeyondItsBoundIsStillRefusedNotAsked) {
+    ParameterPanel panel;
+    int asked = 0;
+    panel.setConfirmFunction([&](const QString&, const QString&) { ++asked; return true; });
+    std::vector<TissuePreset> applied;
+    QObject::connect(&panel, &ParameterPanel::applyRequested, [&](const TissuePreset& p) { applied.push_back(p); });
+    doubleField(panel, "forceRelaxationSpin")->setValue(1.0);
+    slopeSpin(panel, 0)->setValue(0.9);
+    doubleField(panel, "contactStiffnessSpin")->setValue(2.0);
+    EXPECT_LT(panel.stabilityMargin()->margin, 0.0);
+    panel.apply();
+    EXPECT_EQ(int(applied.size()), 0);
+    EXPECT_EQ(asked, 0);
+}
+
+TEST(ParameterPanelStability, SavedPresetsStoreTheMarginAndItsPeriod) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    ParameterPanel panel;
+    panel.setMeshProvider([] { return &sphere242(); });
+    doubleField(panel, "hapticRateSpin")->setValue(2000.0);
+    const QString slope = dir.filePath(QStringLiteral("slope.json"));
+    QString error;
+    ASSERT_TRUE(panel.savePresetFile(slope, &error)) << error.toStdString();
+    auto loaded = loadTissuePreset(slope.toStdString());
+    ASSERT_TRUE(loaded.preset) << loaded.error();
+    ASSERT_TRUE(loaded.preset->stabilityMargin);
+    EXPECT_NEAR(loaded.preset->stabilityMargin->margin, 0.5, 1e-9);  // automatic alpha
+    EXPECT_NEAR(loaded.preset->stabilityMargin->dtS, 5e-4, 1e-15);
+
+    choose(panel, "mass-spring-symplectic");
+    intField(panel, "massSpringSubstepsSpin")->setValue(1);
+    doubleField(panel, "massSpringEdgeSpin")->setValue(5.0);
+    const double beyond = panel.stabilityMargin()->margin;
+    ASSERT_LT(beyond, 0.0);
+    const QString ms = dir.filePath(QStringLiteral("ms.json"));
+    ASSERT_TRUE(panel.savePresetFile(ms, &error)) << error.toStdString();  // stored as it is
+    loaded = loadTissuePreset(ms.toStdString());
+    ASSERT_TRUE(loaded.preset && loaded.preset->stabilityMargin) << loaded.error();
+    EXPECT_NEAR(loaded.preset->stabilityMargin->margin, beyond, 1e-12);
+    // Loading says what the file was saved with (informational).
+    ASSERT_TRUE(panel.loadPresetFile(slope, &error)) << error.toStdString();
+    EXPECT_TRUE(label(panel, "noteLabel")->text().contains(QStringLiteral("stability margin of 50")))
+        << label(panel, "noteLabel")->text().toStdString();
+
+    // Without the mesh a mass-spring margin is unknown: none is written, the file stays valid.
+    ParameterPanel meshless;
+    choose(meshless, "mass-spring-rk4");
+    const QString unknown = dir.filePath(QStringLiteral("unknown.json"));
+    ASSERT_TRUE(meshless.savePresetFile(unknown, &error)) << error.toStdString();
+    loaded = loadTissuePreset(unknown.toStdString());
+    ASSERT_TRUE(loaded.preset) << loaded.error();
+    EXPECT_FALSE(loaded.preset->stabilityMargin);
 }

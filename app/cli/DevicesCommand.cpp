@@ -1,0 +1,65 @@
+// palpate-cli devices: which device backends this build has, and which devices are connected now
+// (with the URI to pass as --device, and the udev rule to install when a node is not accessible).
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "device/DeviceDiscovery.h"
+#include "device/DeviceUri.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+namespace palpate::cli {
+
+int devicesCommand(const std::vector<std::string>& words) {
+    Args args(words, {"json"}, {});
+    if (!args.ok()) {
+        std::cerr << "devices: " << args.error() << "\n";
+        return 2;
+    }
+    if (!args.positional().empty()) {
+        std::cerr << "devices: unexpected argument '" << args.positional().front() << "'\n";
+        return 2;
+    }
+    const std::vector<BackendInfo> backends = listDeviceBackends();
+    const std::vector<ConnectedDevice> devices = discoverDevices();
+    const std::vector<DeviceSchemeInfo> schemes = listDeviceSchemes();
+
+    if (args.flag("json")) {
+        nlohmann::json j;
+        j["backends"] = nlohmann::json::array();
+        for (const BackendInfo& b : backends)
+            j["backends"].push_back({{"name", b.name}, {"library", b.library}, {"compiled_in", b.compiledIn},
+                                     {"experimental", b.experimental}});
+        j["devices"] = nlohmann::json::array();
+        for (const ConnectedDevice& d : devices) {
+            char vidpid[16];
+            std::snprintf(vidpid, sizeof vidpid, "%04x:%04x", unsigned(d.vendorId), unsigned(d.productId));
+            j["devices"].push_back({{"backend", d.backend}, {"uri", d.uri}, {"description", d.description},
+                                    {"node", d.node}, {"vid_pid", vidpid}, {"serial", d.serial},
+                                    {"accessible", d.accessible}, {"problem", d.problem}});
+        }
+        j["schemes"] = nlohmann::json::array();
+        for (const DeviceSchemeInfo& s : schemes) j["schemes"].push_back({{"uri", s.uri}, {"description", s.description}});
+        std::cout << j.dump(2) << "\n";
+        return 0;
+    }
+
+    std::cout << "Backends:\n";
+    for (const BackendInfo& b : backends)
+        std::cout << "  " << b.name << (b.experimental ? " (experimental)" : "") << ": "
+                  << (b.compiledIn ? "compiled in" : "NOT compiled in") << " - " << b.library << "\n";
+    std::cout << "\nConnected devices:\n";
+    if (devices.empty()) std::cout << "  none found (SpaceMouse, HID PID joystick, Novint Falcon)\n";
+    for (const ConnectedDevice& d : devices) {
+        std::cout << "  " << d.uri << "  " << d.description << "  [" << d.node << "]"
+                  << (d.serial.empty() ? "" : "  serial " + d.serial) << "\n";
+        if (!d.accessible) std::cout << "      " << d.problem << "\n";
+    }
+    std::cout << "\nURI forms (also: hid:VID:PID[:SERIAL], replay:FILE):\n";
+    for (const DeviceSchemeInfo& s : schemes) std::cout << "  " << s.uri << "  " << s.description << "\n";
+    return 0;
+}
+
+}  // namespace palpate::cli

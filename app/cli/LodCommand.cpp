@@ -1,0 +1,374 @@
+// palpate-cli lod: levels of detail (issue 10, docs/lod.md). "lod levels" makes (or reads from the
+// cache beside the mesh) the decimated levels and checks them; "lod plan" measures every level and
+// ring count on this machine and picks the cheapest that meets an accuracy target and a tick budget.
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "app/cli/DefaultScene.h"
+#include "app/cli/ToolContactOptions.h"
+#include "engine/TissuePreset.h"
+#include "engine/lod/LevelCache.h"
+#include "engine/lod/LodMeasure.h"
+#include "engine/lod/LodPlanner.h"
+#include "engine/scoring/ExerciseFile.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace palpate::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+void lodUsage(std::ostream& out) {
+    out << "usage:\n"
+           "  palpate-cli lod levels --mesh FILE [--json] [--no-cache] [--min-vertices N] [--max-levels N] [--ratio R]\n"
+           "  palpate-cli lod plan (--mesh FILE | --exercise FILE) [--error E] [--budget-us T] [--json] [--quick]\n"
+           "                       [--rings N,..] [--repeats N] [--min-vertices N] [--max-levels N] [--ratio R]\n"
+           "                       [--no-cache] [TISSUE]\n"
+           "      E: displacement error allowed (RMS / peak, 0.1 = 10 %); T: tick budget in microseconds.\n"
+           "      Without --error/--budget-us the exercise's, then the preset's, \"needs\" are used.\n";
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    std::stringstream s(text);
+    for (std::string item; std::getline(s, item, ',');)
+        if (!item.empty()) items.push_back(item);
+    return items;
+}
+
+/// --min-vertices, --max-levels, --ratio into `options`; "" or the problem naming the option.
+std::string levelOptionsFromArgs(const Args& args, LevelOptions& options) {
+    if (const auto text = args.option("min-vertices")) {
+        const auto n = parsePositiveInt(*text);
+        if (!n || *n < 8 || *n > 50'000'000) return "--min-vertices: '" + *text + "' is not a vertex count of 8 or more";
+        options.minVertices = std::size_t(*n);
+    }
+    if (const auto text = args.option("max-levels")) {
+        const auto n = parsePositiveInt(*text);
+        if (*text == "0") options.maxCoarseLevels = 0;
+        else if (!n || *n > 20) return "--max-levels: '" + *text + "' is not in 0..20";
+        else options.maxCoarseLevels = int(*n);
+    }
+    if (const auto text = args.option("ratio")) {
+        const auto r = parseNumber(*text);
+        if (!r) return "--ratio: '" + *text + "' is not a number";
+        options.vertexRatio = *r;
+    }
+    if (const std::string e = validateLevelOptions(options); !e.empty()) return e;
+    return {};
+}
+
+void progressLine(double fraction, const std::string& stage) {
+    std::cerr << "[" << std::setw(3) << int(fraction * 100.0 + 0.5) << "%] " << stage << "\n";
+}
+
+/// Loads the mesh and its levels (cache or generation), printing where they came from on stderr.
+/// Returns an exit code (0: go on).
+int loadLevels(const std::string& command, const std::string& meshPath, const LevelOptions& options, bool useCache,
+               std::optional<TissueMesh>& mesh, LevelCacheResult& levels) {
+    auto loaded = TissueMesh::load(meshPath);
+    if (!loaded.mesh) {
+        std::cerr << "palpate-cli lod " << command << ": " << loaded.error() << "\n";
+        return 1;
+    }
+    mesh = std::move(loaded.mesh);
+    std::string lastStage;
+    int lastTenth = -1;
+    levels = loadOrGenerateLevels(meshPath, *mesh, options, [&](double f, const std::string& stage) {
+        // One line per stage and per tenth, so a log stays readable.
+        const int tenth = int(f * 10.0);
+        if (stage != lastStage || tenth != lastTenth) progressLine(f, stage);
+        lastStage = stage;
+        lastTenth = tenth;
+    }, nullptr, useCache);
+    std::cerr << "levels: " << levels.cacheStatus << "\n";
+    if (!levels.writeError.empty()) std::cerr << "levels: cache not written: " << levels.writeError << "\n";
+    for (const std::string& note : levels.levels.notes) std::cerr << "levels: " << note << "\n";
+    return 0;
+}
+
+Json candidateJson(const LodCandidate& c, const LodNeeds& needs) {
+    Json j{{"level", c.level},
+           {"vertices", c.vertices},
+           {"triangles", c.triangles},
+           {"rings", c.rings},
+           {"model", c.model},
+           {"error", c.errorFraction},
+           {"level_error", c.levelErrorFraction},
+           {"force_error", c.forceErrorFraction},
+           {"tick_us", c.tickUs},
+           {"vertices_compared", c.verticesCompared},
+           {"meets_error", meetsError(c, needs)},
+           {"meets_budget", meetsBudget(c, needs)}};
+    if (!c.note.empty()) j["note"] = c.note;
+    return j;
+}
+
+int levelsCommand(const Args& args) {
+    const auto meshPath = args.option("mesh");
+    if (!meshPath) {
+        std::cerr << "palpate-cli lod levels: --mesh FILE is required\n";
+        return 2;
+    }
+    LevelOptions options;
+    if (const std::string e = levelOptionsFromArgs(args, options); !e.empty()) {
+        std::cerr << "palpate-cli lod levels: " << e << "\n";
+        return 2;
+    }
+    std::optional<TissueMesh> mesh;
+    LevelCacheResult result;
+    if (const int rc = loadLevels("levels", *meshPath, options, !args.flag("no-cache"), mesh, result)) return rc;
+    const MeshLevels& levels = result.levels;
+
+    bool allGood = true;
+    Json rows = Json::array();
+    for (std::size_t k = 0; k < levels.levels.size(); ++k) {
+        const MeshLevel& l = levels.levels[k];
+        const MeshReport& r = l.mesh.report();
+        const bool closed = r.boundaryEdgeCount == 0;
+        const bool manifold = r.nonManifoldEdgeCount == 0 && r.nonManifoldVertexCount == 0;
+        const std::string problem = k == 0 ? std::string() : levelTopologyProblem(levels.levels.front().mesh, l.mesh);
+        if (!problem.empty()) allGood = false;
+        rows.push_back({{"level", k},
+                        {"target_vertices", l.targetVertices},
+                        {"vertices", l.mesh.vertexCount()},
+                        {"triangles", l.mesh.triangleCount()},
+                        {"seconds", l.seconds},
+                        {"closed", closed},
+                        {"manifold", manifold},
+                        {"problem", problem}});
+    }
+    if (args.flag("json")) {
+        Json j{{"mesh", *meshPath},
+               {"source_hash", [&] {
+                    std::ostringstream s;
+                    s << std::hex << std::setw(16) << std::setfill('0') << levels.sourceHash;
+                    return s.str();
+                }()},
+               {"from_cache", result.fromCache},
+               {"cache", result.cacheStatus},
+               {"cache_dir", levelCacheDir(*meshPath)},
+               {"notes", levels.notes},
+               {"levels", rows}};
+        std::cout << j.dump(2) << "\n";
+    } else {
+        std::cout << std::left << std::setw(7) << "level" << std::right << std::setw(10) << "target" << std::setw(10)
+                  << "vertices" << std::setw(11) << "triangles" << std::setw(10) << "seconds" << "  check\n";
+        for (const Json& row : rows)
+            std::cout << std::left << std::setw(7) << row["level"].get<std::size_t>() << std::right << std::setw(10)
+                      << row["target_vertices"].get<std::size_t>() << std::setw(10) << row["vertices"].get<std::size_t>()
+                      << std::setw(11) << row["triangles"].get<std::size_t>() << std::setw(10) << std::fixed
+                      << std::setprecision(3) << row["seconds"].get<double>() << "  "
+                      << (row["problem"].get<std::string>().empty()
+                              ? std::string(row["closed"].get<bool>() ? "closed" : "open") + ", " +
+                                    (row["manifold"].get<bool>() ? "manifold" : "NON-MANIFOLD")
+                              : row["problem"].get<std::string>())
+                      << "\n";
+    }
+    return allGood ? 0 : 1;
+}
+
+int planCommand(const Args& args) {
+    const char* me = "palpate-cli lod plan: ";
+    const ToolContactChoice choice = toolContactFromArgs(args);
+    if (!choice.error.empty()) {
+        std::cerr << me << choice.error << "\n";
+        return 2;
+    }
+    // The needs: the exercise's, else the preset's; --error and --budget-us override either.
+    std::optional<LodNeeds> needs;
+    std::string needsSource;
+    std::optional<std::string> meshPath = args.option("mesh");
+    if (const auto path = args.option("exercise")) {
+        const ExerciseLoadResult ex = loadExercise(*path);
+        if (!ex.exercise) {
+            std::cerr << me << ex.error() << "\n";
+            return 2;
+        }
+        if (ex.exercise->needs) {
+            needs = ex.exercise->needs;
+            needsSource = *path;
+        }
+        if (!meshPath) {
+            const std::string resolved = resolveExercisePath(*ex.exercise, ex.exercise->meshPath, findResource);
+            if (resolved.empty()) {
+                std::cerr << me << *path << ": mesh: '" << ex.exercise->meshPath << "' not found\n";
+                return 2;
+            }
+            meshPath = resolved;
+        }
+    }
+    if (const auto path = args.option("preset"); path && !needs) {
+        const PresetLoadResult preset = loadTissuePreset(*path);  // already loaded once by toolContactFromArgs
+        if (preset.preset && preset.preset->needs) {
+            needs = preset.preset->needs;
+            needsSource = *path;
+        }
+    }
+    for (const char* key : {"error", "budget-us"}) {
+        const auto text = args.option(key);
+        if (!text) continue;
+        const auto value = parseNumber(*text);
+        if (!value) {
+            std::cerr << me << "--" << key << ": '" << *text << "' is not a number\n";
+            return 2;
+        }
+        if (!needs) needs = LodNeeds{};
+        (std::string(key) == "error" ? needs->maxErrorFraction : needs->budgetUs) = *value;
+        if (needsSource.empty()) needsSource = "command line";
+        else if (needsSource.find("command line") == std::string::npos) needsSource += " and command line";
+    }
+    if (!needs || (needsSource == "command line" && (!args.option("error") || !args.option("budget-us")))) {
+        std::cerr << me << "give --error E and --budget-us T (or an --exercise or --preset with \"needs\")\n";
+        return 2;
+    }
+    // Name the options the user typed, not the file keys, when the values came from the command line.
+    const std::vector<std::string> needsProblems = validateLodNeeds(*needs, "");
+    for (std::string problem : needsProblems) {
+        if (args.option("error") && problem.rfind("max_error", 0) == 0) problem = "--error" + problem.substr(9);
+        if (args.option("budget-us") && problem.rfind("budget_us", 0) == 0) problem = "--budget-us" + problem.substr(9);
+        std::cerr << me << problem << " (" << needsSource << ")\n";
+    }
+    if (!needsProblems.empty()) return 2;
+    if (!meshPath) {
+        std::cerr << me << "--mesh FILE (or --exercise FILE) is required\n";
+        return 2;
+    }
+
+    const bool quick = args.flag("quick");
+    LevelOptions levelOptions;
+    if (quick) levelOptions.maxCoarseLevels = 3;
+    if (const std::string e = levelOptionsFromArgs(args, levelOptions); !e.empty()) {
+        std::cerr << me << e << "\n";
+        return 2;
+    }
+    LodMeasureDef def;
+    def.contact = choice.contact;
+    if (quick) {
+        def.ringCounts = {1, 2, 3};
+        def.timing = {1, 1.0};
+        def.path.approachTicks /= 10;
+        def.path.pressTicks /= 10;
+        def.path.holdTicks /= 10;
+        def.path.strokeTicks /= 10;
+        def.path.releaseTicks /= 10;
+        def.path.strokeLengthMm /= 10.0;
+    }
+    if (const auto text = args.option("rings")) {
+        def.ringCounts.clear();
+        for (const std::string& item : splitList(*text)) {
+            const auto n = parsePositiveInt(item);
+            if (!n || *n > kMaxRings) {
+                std::cerr << me << "--rings: '" << item << "' is not in 1.." << kMaxRings << "\n";
+                return 2;
+            }
+            def.ringCounts.push_back(int(*n));
+        }
+    }
+    if (const auto text = args.option("repeats")) {
+        const auto n = parsePositiveInt(*text);
+        if (!n || *n > 100) {
+            std::cerr << me << "--repeats: '" << *text << "' is not in 1..100\n";
+            return 2;
+        }
+        def.timing.repeats = int(*n);
+    }
+    if (const std::string e = validateLodMeasureDef(def); !e.empty()) {
+        std::cerr << me << e << "\n";
+        return 2;
+    }
+
+    std::optional<TissueMesh> mesh;
+    LevelCacheResult levels;
+    if (const int rc = loadLevels("plan", *meshPath, levelOptions, !args.flag("no-cache"), mesh, levels)) return rc;
+    std::cerr << "plan: E = " << def.contact.material.youngsModulusNPerMm2 * 1000.0 << " kPa, nu = "
+              << def.contact.material.poissonRatio << ", tool radius " << def.contact.toolRadiusMm << " mm ("
+              << choice.source << "); needs from " << needsSource << "\n";
+    const LodMeasurement measured = measureLodCandidates(levels.levels, def, progressLine);
+    const LodPlan plan = planLod(measured.candidates, *needs);
+    if (!plan.error.empty()) {
+        std::cerr << me << plan.error << "\n";
+        return 1;
+    }
+
+    if (args.flag("json")) {
+        Json j{{"mesh", *meshPath},
+               {"needs", {{"max_error", needs->maxErrorFraction}, {"budget_us", needs->budgetUs}, {"source", needsSource}}},
+               {"feasible", plan.feasible},
+               {"chosen", plan.chosen ? candidateJson(measured.candidates[*plan.chosen], *needs) : Json(nullptr)},
+               {"closest", plan.closest ? candidateJson(measured.candidates[*plan.closest], *needs) : Json(nullptr)},
+               {"reason", plan.reason},
+               {"levels_from_cache", levels.fromCache},
+               {"candidates", Json::array()}};
+        for (const LodCandidate& c : measured.candidates) j["candidates"].push_back(candidateJson(c, *needs));
+        std::cout << j.dump(2) << "\n";
+    } else {
+        std::cout << std::left << std::setw(7) << "level" << std::right << std::setw(10) << "vertices" << std::setw(7)
+                  << "rings" << std::setw(10) << "error" << std::setw(12) << "level err" << std::setw(11) << "tick us"
+                  << "  verdict\n";
+        for (std::size_t i = 0; i < measured.candidates.size(); ++i) {
+            const LodCandidate& c = measured.candidates[i];
+            std::string verdict = plan.chosen == i    ? "CHOSEN"
+                                  : plan.closest == i ? "closest"
+                                                      : "";
+            if (verdict.empty()) {
+                const bool e = meetsError(c, *needs), t = meetsBudget(c, *needs);
+                verdict = !c.note.empty() ? "not measured: " + c.note
+                          : e && t        ? "meets both"
+                          : e             ? "over budget"
+                          : t             ? "error too high"
+                                          : "error too high, over budget";
+            }
+            std::cout << std::left << std::setw(7) << c.level << std::right << std::setw(10) << c.vertices << std::setw(7)
+                      << c.rings << std::fixed << std::setprecision(4) << std::setw(10) << c.errorFraction << std::setw(12)
+                      << c.levelErrorFraction << std::setprecision(3) << std::setw(11) << c.tickUs << "  " << verdict << "\n";
+        }
+        std::cout << plan.reason << "\n";
+    }
+    if (!plan.feasible) {
+        std::cerr << me << "nothing fits: " << plan.reason << "\n";
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int lodCommand(const std::vector<std::string>& words) {
+    if (words.empty() || words.front() == "--help") {
+        lodUsage(words.empty() ? std::cerr : std::cout);
+        return words.empty() ? 2 : 0;
+    }
+    const std::string sub = words.front();
+    const std::vector<std::string> rest(words.begin() + 1, words.end());
+    if (sub == "levels") {
+        const Args args(rest, {"json", "no-cache"}, {"mesh", "min-vertices", "max-levels", "ratio"});
+        if (!args.ok()) {
+            std::cerr << "palpate-cli lod levels: " << args.error() << "\n";
+            return 2;
+        }
+        return levelsCommand(args);
+    }
+    if (sub == "plan") {
+        std::vector<std::string> options{"mesh", "exercise", "error", "budget-us", "rings", "repeats",
+                                         "min-vertices", "max-levels", "ratio"};
+        for (const std::string& o : toolContactOptionNames()) options.push_back(o);
+        const Args args(rest, {"json", "quick", "no-cache"}, options);
+        if (!args.ok()) {
+            std::cerr << "palpate-cli lod plan: " << args.error() << "\n";
+            return 2;
+        }
+        return planCommand(args);
+    }
+    std::cerr << "palpate-cli lod: unknown subcommand '" << sub << "'\n";
+    lodUsage(std::cerr);
+    return 2;
+}
+
+}  // namespace palpate::cli
