@@ -1,5 +1,6 @@
 // palpate-cli: headless Palpate. Exit codes: 0 success, 1 failure of the task, 2 bad usage.
 #include "app/cli/Commands.h"
+#include "engine/record/RecordedToolDevice.h"
 
 #include <iostream>
 #include <string>
@@ -38,6 +39,7 @@ void usage(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    palpate::registerReplayDeviceScheme();  // replay:FILE, like every other device URI
     std::vector<std::string> words(argv + 1, argv + argc);
     if (words.empty()) {
         usage(std::cerr);

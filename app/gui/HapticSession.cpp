@@ -5,6 +5,7 @@
 #include "device/SimulatedDevice.h"
 #include "engine/HapticScene.h"
 #include "engine/SceneTarget.h"
+#include "engine/record/RecordedToolDevice.h"
 
 #include <exception>
 #include <filesystem>
@@ -26,7 +27,9 @@ std::string absolutePath(const std::string& path) {
 
 }  // namespace
 
-HapticSession::HapticSession(LoopMode mode, const HapticLoopDef& def) : mMode(mode), mDef(def) {}
+HapticSession::HapticSession(LoopMode mode, const HapticLoopDef& def) : mMode(mode), mDef(def) {
+    registerReplayDeviceScheme();  // replay:FILE in the Device panel and menus, like the CLI
+}
 
 HapticSession::~HapticSession() { stop(); }
 
