@@ -8,6 +8,7 @@
 #include "widgets/ChartsPanel.h"
 #include "widgets/ExerciseEditorPanel.h"
 #include "widgets/HistoryPanel.h"
+#include "widgets/LodPanel.h"
 #include "widgets/ScoreCard.h"
 #include "widgets/TraineePanel.h"
 #include "widgets/DevicePanel.h"
@@ -180,12 +181,14 @@ void MainWindow::createDocks() {
     createRecorderDock();
     createExerciseDocks();
     createEditorDock();
+    createLodDock();
     mPanelSnapshot = std::make_unique<HapticSnapshot>();
 }
 
 QString MainWindow::applyPreset(const TissuePreset& preset) {
     const QString error = QString::fromStdString(mSession->applyPreset(preset));
     if (error.isEmpty()) updateChartsConfiguration();
+    if (error.isEmpty() && mLodPanel) updateLodScene();
     return error;
 }
 
@@ -362,6 +365,7 @@ void MainWindow::createMenus() {
     view->addAction(mChartsDock->toggleViewAction());
     view->addAction(mRecorderDock->toggleViewAction());
     view->addAction(mEditorDock->toggleViewAction());
+    view->addAction(mLodDock->toggleViewAction());
     view->addAction(mExerciseDock->toggleViewAction());
     view->addAction(mHistoryDock->toggleViewAction());
 
@@ -545,6 +549,7 @@ void MainWindow::showDrawnMesh() {
     mViewport->setMesh(*mesh);
     if (mEditor) mEditor->setDrawnMesh(mesh, QString::fromStdString(mSession->drawnPath()));
     mParameterPanel->refreshStabilityMargin();  // a mass-spring margin depends on the mesh
+    updateLodScene();
     // Markers of another mesh mean nothing here: a running exercise sets its own again.
     if (!mExercises->running()) {
         mViewport->setExerciseMarkers({});
@@ -951,6 +956,70 @@ void MainWindow::showEditorMarkers() {
         mViewport->setExerciseMarkers({});  // a finished exercise's markers stay beside its score card
 }
 
+void MainWindow::createLodDock() {
+    mLodPanel = new LodPanel(this);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(mLodPanel);
+    mLodDock = new QDockWidget(tr("Level of Detail"), this);
+    mLodDock->setObjectName(QStringLiteral("levelOfDetailDock"));
+    mLodDock->setWidget(scroll);
+    addDockWidget(Qt::RightDockWidgetArea, mLodDock);
+    tabifyDockWidget(mChartsDock, mLodDock);
+    mParameterDock->raise();
+    connect(mLodPanel, &LodPanel::useRequested, this, [this](const QString& levelPath, int rings, bool overridden) {
+        if (mExercises->running()) {
+            statusBar()->showMessage(tr("An exercise is running: the model cannot change now."), 6000);
+            return;
+        }
+        // The level's mesh (or the source again) and the ring count, as one new scene.
+        const QString meshPath = levelPath.isEmpty() ? mLodPanel->meshPath() : levelPath;
+        if (QString::fromStdString(mSession->drawnPath()) != meshPath)
+            if (const QString error = loadMesh(meshPath); !error.isEmpty()) {
+                QMessageBox::warning(this, tr("Cannot use this level"), error);
+                return;
+            }
+        TissuePreset preset = mParameterPanel->preset();
+        preset.params.ringCount = rings;
+        mParameterPanel->setPreset(preset);
+        if (const QString error = applyPreset(preset); !error.isEmpty()) {
+            QMessageBox::warning(this, tr("Cannot use this level"), error);
+            return;
+        }
+        statusBar()->showMessage(overridden ? tr("Using your choice: %1, %2 rings (overrides the plan)")
+                                                   .arg(QFileInfo(meshPath).fileName()).arg(rings)
+                                            : tr("Using the plan's choice: %1, %2 rings").arg(QFileInfo(meshPath).fileName()).arg(rings),
+                                 8000);
+    });
+    connect(mLodPanel, &LodPanel::storeNeedsRequested, this, [this](const LodNeeds& needs) {
+        TissuePreset preset = mParameterPanel->preset();
+        preset.needs = needs;
+        mParameterPanel->setPreset(preset);
+        statusBar()->showMessage(tr("Targets stored in the preset: save it (File > Save Preset) to keep them"), 8000);
+    });
+    updateLodScene();
+}
+
+void MainWindow::updateLodScene() {
+    if (!mLodPanel) return;
+    const auto& mesh = mSession->drawnMesh();
+    const QString path = QString::fromStdString(mSession->drawnPath());
+    // A level the panel made (in "<source>.levels/") is a choice within the panel's scene, not a new scene.
+    const bool ownLevel = !mLodPanel->meshPath().isEmpty() &&
+                          path.startsWith(mLodPanel->meshPath() + QStringLiteral(".levels/"));
+    std::optional<LodNeeds> needs = mSession->preset().needs;
+    QString source = needs ? tr("the tissue preset") : QString();
+    const ExerciseAssets* exercise = mExercises && mExercises->assets() ? &*mExercises->assets() : nullptr;
+    if (exercise && exercise->exercise.needs && mSession->exercisePhysics() == exercise->geometry) {
+        needs = exercise->exercise.needs;
+        source = tr("exercise '%1'").arg(QString::fromStdString(exercise->exercise.name));
+    }
+    mLodPanel->setToolContact(ParameterPanel::toolContactOf(mSession->preset()));
+    if (!ownLevel && mesh) mLodSceneMesh = mesh;  // the source the levels are made from
+    mLodPanel->setScene(ownLevel || !mesh ? mLodPanel->meshPath() : path, mLodSceneMesh, needs, source);
+}
+
 void MainWindow::createExerciseMenu() {
     QMenu* menu = menuBar()->addMenu(tr("E&xercise"));
     menu->addAction(tr("&Start"), QKeySequence(Qt::Key_F6), this, [this] {
@@ -993,6 +1062,7 @@ void MainWindow::setMode(Mode mode) {
     mParameterDock->setVisible(instructor);
     mChartsDock->setVisible(instructor);
     mEditorDock->setVisible(instructor);
+    mLodDock->setVisible(instructor);
     mExerciseDock->setVisible(true);
     mHistoryDock->setVisible(true);
     if (!instructor) mExerciseDock->raise();

@@ -31,6 +31,7 @@ class DevicePanel;
 class ExerciseController;
 class ExerciseEditorPanel;
 class HistoryPanel;
+class LodPanel;
 class TraineePanel;
 class ParameterPanel;
 class RecorderPanel;
@@ -91,6 +92,8 @@ public:
     TraineePanel* traineePanel() const { return mTraineePanel; }
     /// Instructor mode's exercise editor (click the mesh to place targets, path, inclusion).
     ExerciseEditorPanel* exerciseEditor() const { return mEditor; }
+    /// The Level of Detail dock: which mesh level and ring count meet the scene's needs.
+    LodPanel* lodPanel() const { return mLodPanel; }
     /// Edit > Undo/Redo act on the stack of the panel last focused (parameters or exercise editor).
     QUndoGroup* undoGroup() const { return mUndoGroup; }
     HistoryPanel* historyPanel() const { return mHistoryPanel; }
@@ -170,6 +173,10 @@ private:
     void enterPlayback(const QString& path);
     void createExerciseDocks();
     void createEditorDock();
+    void createLodDock();
+    /// The Level of Detail panel's scene: the drawn mesh (unless it is one of its own levels) and
+    /// the needs of the running exercise or the preset.
+    void updateLodScene();
     /// The editor's markers on the viewport (instructor mode, no exercise running).
     void showEditorMarkers();
     void createExerciseMenu();
@@ -235,6 +242,9 @@ private:
     ExerciseEditorPanel* mEditor = nullptr;
     QDockWidget* mEditorDock = nullptr;
     QUndoGroup* mUndoGroup = nullptr;
+    LodPanel* mLodPanel = nullptr;
+    QDockWidget* mLodDock = nullptr;
+    std::shared_ptr<const TissueMesh> mLodSceneMesh;  // the Level of Detail panel's source mesh
     HistoryPanel* mHistoryPanel = nullptr;
     QDockWidget* mExerciseDock = nullptr;
     QDockWidget* mHistoryDock = nullptr;

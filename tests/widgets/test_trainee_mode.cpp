@@ -12,6 +12,7 @@
 #include "widgets/ExerciseEditorPanel.h"
 #include "widgets/ForceGauge.h"
 #include "widgets/HistoryPanel.h"
+#include "widgets/LodPanel.h"
 #include "widgets/ParameterPanel.h"
 #include "widgets/RecorderPanel.h"
 #include "widgets/ScoreCard.h"
@@ -333,6 +334,37 @@ TEST(InstructorMode, ClickingTheMeshPlacesTargetsTheViewportShowsAndUndoRemoves)
     // Leaving placing mode gives the left button back to the camera.
     editor->setPlacing(ExerciseEditorPanel::Placing::None);
     EXPECT_FALSE(window->viewport()->pickHandlerSet());
+}
+
+TEST(InstructorMode, LevelOfDetailUseLoadsTheChosenLevelAndRingCount) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    // A copy: the level cache is written beside the mesh, never into resources/.
+    const QString mesh = dir.filePath(QStringLiteral("sphere.off"));
+    ASSERT_TRUE(QFile::copy(resource("meshes/sphere_1442.off"), mesh));
+    auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+    ASSERT_EQ(window->loadMesh(mesh), QString());
+    window->advanceTicks(10);
+    LodPanel* lod = window->lodPanel();
+    ASSERT_NE(lod, nullptr);
+    EXPECT_EQ(lod->meshPath(), mesh);
+    ASSERT_TRUE(lod->plan());
+    ASSERT_TRUE(QTest::qWaitFor([lod] { return !lod->busy(); }, 120000));
+    ASSERT_FALSE(lod->candidates().empty());
+    const auto chosen = lod->currentPlan().chosen;
+    ASSERT_TRUE(chosen) << lod->currentPlan().reason;
+    const LodCandidate c = lod->candidates()[*chosen];
+    const std::size_t measured = lod->candidates().size();
+    lod->useChosen();
+    window->advanceTicks(10);
+    // The loop now runs the chosen level with the chosen rings; the panel keeps the source.
+    const QString expectedMesh = c.level == 0 ? mesh : lod->levelMeshPath(*chosen);
+    EXPECT_EQ(QString::fromStdString(window->session().drawnPath()), expectedMesh);
+    EXPECT_EQ(window->session().drawnMesh()->vertexCount(), c.vertices);
+    EXPECT_EQ(window->session().preset().params.ringCount, c.rings);
+    EXPECT_EQ(lod->meshPath(), mesh);
+    EXPECT_EQ(lod->candidates().size(), measured);  // the level is a choice within the scene: the table stays
+    EXPECT_TRUE(lod->currentPlan().chosen);
 }
 
 TEST(ForceGauge, ZonesFollowTheWindowAndTheExcessiveForce) {
