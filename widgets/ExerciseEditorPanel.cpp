@@ -5,6 +5,7 @@
 #include "engine/scoring/ExerciseGeometry.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -383,6 +384,19 @@ void ExerciseEditorPanel::buildUi() {
     limitsForm->addRow(rowLabel(QT_TR_NOOP("Damage beyond:")), mDisplacementSpin);
     mExcessiveSpin = doubleSpin(mLimitsGroup, "excessiveForceSpin", 0.0, 1000.0, 2, 0.1);
     limitsForm->addRow(rowLabel(QT_TR_NOOP("Excessive force:")), mExcessiveSpin);
+    // Level-of-detail targets (docs/lod.md): optional; the Level of Detail dock plans against them.
+    mNeedsCheck = new QCheckBox(tr("State level-of-detail targets"), mLimitsGroup);
+    mNeedsCheck->setObjectName(QStringLiteral("needsCheck"));
+    mNeedsCheck->setToolTip(tr("The accuracy and haptic time the model for this exercise must meet (needs)"));
+    limitsForm->addRow(mNeedsCheck);
+    mNeedsErrorSpin = doubleSpin(mLimitsGroup, "needsErrorSpin", 0.1, 1000.0, 1, 1.0);
+    mNeedsErrorSpin->setSuffix(QStringLiteral(" %"));
+    mNeedsErrorSpin->setToolTip(tr("Largest displacement error against the reference (needs.max_error)"));
+    limitsForm->addRow(rowLabel(QT_TR_NOOP("Max error:")), mNeedsErrorSpin);
+    mNeedsBudgetSpin = doubleSpin(mLimitsGroup, "needsBudgetSpin", 0.001, 1e6, 3, 10.0);
+    mNeedsBudgetSpin->setSuffix(QStringLiteral(" µs"));
+    mNeedsBudgetSpin->setToolTip(tr("Longest haptic tick the model may take (needs.budget_us)"));
+    limitsForm->addRow(rowLabel(QT_TR_NOOP("Tick budget:")), mNeedsBudgetSpin);
 
     mTypeGroup = new QGroupBox(fields);
     mTypeGroup->setObjectName(QStringLiteral("typeGroup"));
@@ -483,13 +497,21 @@ void ExerciseEditorPanel::buildUi() {
     const std::pair<QDoubleSpinBox*, Field> spins[] = {
         {mTimeLimitSpin, kTimeLimit},         {mDisplacementSpin, kDisplacementLimit}, {mExcessiveSpin, kExcessiveForce},
         {mLumpRadiusSpin, kLumpRadius},       {mLumpStiffnessSpin, kLumpStiffness},    {mTraceMinSpin, kTraceForceMin},
-        {mTraceMaxSpin, kTraceForceMax},      {mTraceToleranceSpin, kTraceTolerance}};
+        {mTraceMaxSpin, kTraceForceMax},      {mTraceToleranceSpin, kTraceTolerance},  {mNeedsErrorSpin, kNeedsError},
+        {mNeedsBudgetSpin, kNeedsBudget}};
     for (const auto& [spin, field] : spins) {
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, field = field] { onFieldEdited(field); });
         // Leaving the field ends its step: a later edit of it is a step of its own.
         connect(spin, &QDoubleSpinBox::editingFinished, this, [this] { ++mMergeEpoch; });
     }
     connect(mNameEdit, &QLineEdit::editingFinished, this, [this] { ++mMergeEpoch; });
+    connect(mNeedsCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (mShowing) return;
+        Exercise e = mExercise;
+        if (on) e.needs = LodNeeds{mNeedsErrorSpin->value() / 100.0, mNeedsBudgetSpin->value()};
+        else e.needs.reset();
+        pushEdit(e, on ? tr("State targets") : tr("Remove targets"), -1);
+    });
     for (const bool mesh : {true, false}) {
         QComboBox* combo = mesh ? mMeshCombo : mPresetCombo;
         connect(combo, &QComboBox::activated, this, [this, combo, mesh](int index) { commitPath(mesh, combo->itemText(index)); });
@@ -1020,6 +1042,12 @@ void ExerciseEditorPanel::showExercise(const Exercise& exercise) {
         setSpin(mTimeLimitSpin, e.timeLimitS);
         setSpin(mDisplacementSpin, e.displacementLimitMm);
         setSpin(mExcessiveSpin, e.excessiveForceN);
+        const LodNeeds shownNeeds = e.needs.value_or(LodNeeds{});
+        mNeedsCheck->setChecked(e.needs.has_value());
+        setSpin(mNeedsErrorSpin, 100.0 * shownNeeds.maxErrorFraction);
+        setSpin(mNeedsBudgetSpin, shownNeeds.budgetUs);
+        mNeedsErrorSpin->setEnabled(e.needs.has_value());
+        mNeedsBudgetSpin->setEnabled(e.needs.has_value());
 
         // Press targets.
         const auto& targets = e.pressTargets.targets;
@@ -1143,6 +1171,16 @@ void ExerciseEditorPanel::onFieldEdited(int field) {
         case kTraceForceMin: e.trace.forceMinN = mTraceMinSpin->value(); what = tr("band's lower force"); break;
         case kTraceForceMax: e.trace.forceMaxN = mTraceMaxSpin->value(); what = tr("band's upper force"); break;
         case kTraceTolerance: e.trace.toleranceMm = mTraceToleranceSpin->value(); what = tr("trace tolerance"); break;
+        case kNeedsError:
+            if (!e.needs) return;
+            e.needs->maxErrorFraction = mNeedsErrorSpin->value() / 100.0;
+            what = tr("max error");
+            break;
+        case kNeedsBudget:
+            if (!e.needs) return;
+            e.needs->budgetUs = mNeedsBudgetSpin->value();
+            what = tr("tick budget");
+            break;
         case kFieldCount: return;
     }
     pushEdit(e, tr("Change %1").arg(what), field);
@@ -1369,6 +1407,8 @@ void ExerciseEditorPanel::refresh() {
     const Exercise& e = mExercise;
     QStringList blocking;
     for (const std::string& problem : validateExercise(e)) blocking << qs(problem);
+    if (e.needs)
+        for (const std::string& problem : validateLodNeeds(*e.needs)) blocking << qs(problem);
     const QString meshFile = resolved(e, e.meshPath);
     if (!e.meshPath.empty() && meshFile.isEmpty())
         blocking << tr("mesh: '%1' is not found beside the exercise file or under resources/").arg(qs(e.meshPath));
@@ -1441,7 +1481,9 @@ void ExerciseEditorPanel::refresh() {
             {mLumpStiffnessSpin, "find_lump.inclusion.stiffness_factor"},
             {mTraceMinSpin, "trace.force_min_n"},
             {mTraceMaxSpin, "trace.force_max_n"},
-            {mTraceToleranceSpin, "trace.tolerance_mm"}};
+            {mTraceToleranceSpin, "trace.tolerance_mm"},
+            {mNeedsErrorSpin, "needs.max_error"},
+            {mNeedsBudgetSpin, "needs.budget_us"}};
         for (const auto& [widget, key] : fields) {
             const bool invalid = keys.contains(QLatin1String(key));
             if (widget->property("invalid").toBool() != invalid) {

@@ -26,6 +26,7 @@
 #include <vector>
 
 class QAction;
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QGroupBox;
@@ -163,6 +164,8 @@ private:
         kTraceForceMin,
         kTraceForceMax,
         kTraceTolerance,
+        kNeedsError,
+        kNeedsBudget,
         kFieldCount
     };
 
@@ -268,6 +271,10 @@ private:
     QDoubleSpinBox* mTimeLimitSpin = nullptr;
     QDoubleSpinBox* mDisplacementSpin = nullptr;
     QDoubleSpinBox* mExcessiveSpin = nullptr;
+    /// "needs" (docs/lod.md): whether the exercise states level-of-detail targets, and them.
+    QCheckBox* mNeedsCheck = nullptr;
+    QDoubleSpinBox* mNeedsErrorSpin = nullptr;
+    QDoubleSpinBox* mNeedsBudgetSpin = nullptr;
     QStackedWidget* mTypePages = nullptr;
     // Press targets.
     QTableWidget* mTargetTable = nullptr;

@@ -15,6 +15,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
+#include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
@@ -722,4 +723,41 @@ TEST(ExerciseEditor, FitsANarrowDock) {
             scroll->setWidget(form);
         }
     }
+}
+
+TEST(ExerciseEditor, LevelOfDetailTargetsAreOptionalUndoableAndSaved) {
+    const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    editor.panel.newExercise(ExerciseType::PressTargets);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.vertexPicked(10);
+    auto* check = child<QCheckBox>(editor.panel, "needsCheck");
+    auto* error = child<QDoubleSpinBox>(editor.panel, "needsErrorSpin");
+    auto* budget = child<QDoubleSpinBox>(editor.panel, "needsBudgetSpin");
+    EXPECT_FALSE(editor.panel.exercise().needs);
+    EXPECT_FALSE(error->isEnabled());
+
+    check->setChecked(true);
+    ASSERT_TRUE(editor.panel.exercise().needs);
+    EXPECT_TRUE(error->isEnabled());
+    error->setValue(12.5);  // percent in the field, a fraction in the file
+    budget->setValue(40.0);
+    EXPECT_DOUBLE_EQ(editor.panel.exercise().needs->maxErrorFraction, 0.125);
+    EXPECT_DOUBLE_EQ(editor.panel.exercise().needs->budgetUs, 40.0);
+
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("with_needs.json"));
+    ASSERT_EQ(editor.panel.saveExercise(file), QString());
+    const auto loaded = loadExercise(file.toStdString());
+    ASSERT_TRUE(loaded.exercise) << loaded.error();
+    ASSERT_TRUE(loaded.exercise->needs);
+    EXPECT_DOUBLE_EQ(loaded.exercise->needs->maxErrorFraction, 0.125);
+    EXPECT_DOUBLE_EQ(loaded.exercise->needs->budgetUs, 40.0);
+
+    // Undo back to no targets: the fields are off again and the file would carry none.
+    while (editor.panel.exercise().needs && editor.panel.undoStack()->canUndo()) editor.panel.undoStack()->undo();
+    EXPECT_FALSE(editor.panel.exercise().needs);
+    EXPECT_FALSE(check->isChecked());
+    EXPECT_FALSE(error->isEnabled());
 }
