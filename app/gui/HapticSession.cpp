@@ -201,15 +201,43 @@ std::unique_ptr<HapticDevice> HapticSession::openDeviceFor(const std::string& ur
                                                             std::string& error) {
     auto device = openDeviceUri(uri, error);
     if (!device) return nullptr;
+    prepareDevice(*device, mesh);
+    return device;
+}
+
+void HapticSession::prepareDevice(HapticDevice& deviceRef, const TissueMesh& mesh) {
+    HapticDevice* device = &deviceRef;
     // Finite scripts (press, stroke, scan) repeat after a short rest so the window keeps
     // showing palpation; a waypoint file plays once.
-    if (auto* simulated = dynamic_cast<SimulatedDevice*>(device.get()))
+    if (auto* simulated = dynamic_cast<SimulatedDevice*>(device))
         if (simulated->trajectory() != SimTrajectory::Waypoints) simulated->setRepeat(1.0);
     aimAtDefaultTarget(*device, mesh);  // scripted devices press the side of the mesh
     // The mouse tool starts off the surface (its default target, the origin, may lie inside the
     // tissue): no contact and zero force until the first touch, so the safety filter arms at once.
-    if (auto* mouse = dynamic_cast<MouseDevice*>(device.get())) mouse->setTargetMm(awayPointMm(mesh, nullptr));
-    return device;
+    if (auto* mouse = dynamic_cast<MouseDevice*>(device)) mouse->setTargetMm(awayPointMm(mesh, nullptr));
+}
+
+bool HapticSession::opensSlowly(const std::string& uri) {
+    DeviceUri parsed;
+    std::string ignored;
+    if (!parseDeviceUri(uri, parsed, ignored)) return false;
+    return parsed.kind == DeviceKind::Falcon || parsed.kind == DeviceKind::SpaceMouse || parsed.kind == DeviceKind::Hid ||
+           parsed.kind == DeviceKind::HidPid;
+}
+
+std::string HapticSession::setOpenedDevice(const std::string& uri, std::unique_ptr<HapticDevice> device) {
+    if (!device) return uri + ": no device";
+    if (!mLoop) {
+        mDeviceUri = uri;  // opened again with the first mesh
+        return {};
+    }
+    prepareDevice(*device, *latest().mesh);
+    auto* mouse = dynamic_cast<MouseDevice*>(device.get());
+    if (std::string problem = swapDeviceInLoop(std::move(device), uri); !problem.empty()) return problem;
+    mMouse = mouse;
+    mHaveTouchTarget = false;
+    mDeviceUri = uri;
+    return {};
 }
 
 glm::vec3 HapticSession::awayPointMm(const TissueMesh& mesh, const glm::vec3* nearMm) const {

@@ -92,6 +92,12 @@ public:
     /// haptic rate means a new loop. "" or why not.
     std::string applyPreset(const TissuePreset& preset);
     const TissuePreset& preset() const { return mPreset; }
+    /// Swaps in a device already opened elsewhere (a hardware device opened on a worker thread: a
+    /// Falcon's firmware upload takes seconds). It is aimed at the current mesh like setDevice's.
+    /// Before the first mesh only the URI is remembered. "" or why not; the old device stays then.
+    std::string setOpenedDevice(const std::string& uri, std::unique_ptr<HapticDevice> device);
+    /// Whether opening `uri` may block (real hardware), so that the GUI opens it off its thread.
+    static bool opensSlowly(const std::string& uri);
     /// Swaps in a device that is not connected (zero force, state Disconnected) until setDevice.
     std::string disconnectDevice();
     /// A fresh device of the same URI and a fresh scene of the same mesh ("" or why not).
@@ -184,6 +190,8 @@ private:
     /// `nearMm` (or from the aim vertex when null).
     glm::vec3 awayPointMm(const TissueMesh& mesh, const glm::vec3* nearMm) const;
     std::unique_ptr<HapticDevice> openDeviceFor(const std::string& uri, const TissueMesh& mesh, std::string& error);
+    /// What every fresh device gets before the loop does: a repeat for scripts, an aim, the mouse away.
+    void prepareDevice(HapticDevice& device, const TissueMesh& mesh);
     std::string handOver(SceneRecord record, std::unique_ptr<HapticScene> scene, std::unique_ptr<HapticDevice> device);
     /// mLoop->swapScene, through the recording while one runs (the file must describe the scene).
     std::string swapSceneInLoop(std::unique_ptr<HapticScene> scene, const SceneRecord& record);

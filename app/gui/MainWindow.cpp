@@ -110,6 +110,7 @@ MainWindow::MainWindow(RendererChoice renderer, LoopMode mode, QWidget* parent)
 MainWindow::~MainWindow() { shutDown(); }
 
 void MainWindow::shutDown() {
+    if (mOpenThread) mOpenThread->wait();  // a device being opened: it is closed with the job
     mFrameTimer.stop();
     mStatusTimer.stop();
     if (mSession->recording()) stopRecording();  // the file gets its end chunk and is closed cleanly
@@ -470,7 +471,13 @@ QString MainWindow::loadMesh(const QString& path) {
 }
 
 QString MainWindow::setDeviceUri(const QString& uri) {
+    if (HapticSession::opensSlowly(uri.toStdString()) && mSession->threadRunning()) return openDeviceInBackground(uri);
     const std::string error = mSession->setDevice(uri.toStdString());
+    deviceSwitched(uri, error);
+    return QString::fromStdString(error);
+}
+
+void MainWindow::deviceSwitched(const QString& uri, const std::string& error) {
     checkCurrentDevice();
     if (error.empty()) {
         mTouchVertex = kNoVertex;  // a fresh device: nothing is pressed
@@ -480,7 +487,40 @@ QString MainWindow::setDeviceUri(const QString& uri) {
         mDevicePanel->setConnected(uri, device ? device->spec() : DeviceSpec{});
     }
     showStatus();
-    return QString::fromStdString(error);
+}
+
+QString MainWindow::openDeviceInBackground(const QString& uri) {
+    if (mOpenThread) return tr("%1 is still being opened: wait for it first").arg(mOpeningUri);
+    // Real hardware can take seconds to open (a Falcon's firmware upload, homing checks): on a
+    // worker thread, so the window and the running session go on meanwhile. The old device stays
+    // in the loop until the new one is open.
+    struct Job {
+        std::string uri;
+        std::unique_ptr<HapticDevice> device;
+        std::string error;
+    };
+    auto job = std::make_shared<Job>();
+    job->uri = uri.toStdString();
+    mOpeningUri = uri;
+    mOpenThread = QThread::create([job] { job->device = openDeviceUri(job->uri, job->error); });
+    connect(mOpenThread, &QThread::finished, this, [this, job] {
+        mOpenThread->deleteLater();
+        mOpenThread = nullptr;
+        mDevicePanel->setEnabled(!mExercises->running());
+        std::string error = job->error;
+        if (job->device) error = mSession->setOpenedDevice(job->uri, std::move(job->device));
+        deviceSwitched(QString::fromStdString(job->uri), error);
+        if (!error.empty()) {
+            mDevicePanel->showError(QString::fromStdString(error));
+            statusBar()->showMessage(tr("Cannot open %1: %2").arg(mOpeningUri, QString::fromStdString(error)), 15000);
+        } else {
+            statusBar()->showMessage(tr("%1 is connected").arg(mOpeningUri), 5000);
+        }
+    });
+    mDevicePanel->setEnabled(false);
+    statusBar()->showMessage(tr("Opening %1…").arg(uri));
+    mOpenThread->start();
+    return {};
 }
 
 QString MainWindow::restartSimulation() {

@@ -22,6 +22,7 @@ class QActionGroup;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QThread;
 class QUndoGroup;
 
 namespace palpate {
@@ -57,7 +58,11 @@ public:
     /// success. Shows no dialog. The first mesh is drawn at once, later ones once the loop runs them.
     QString loadMesh(const QString& path);
     /// Switches the device (a URI, see device/DeviceUri.h). "" or an error naming the URI; no dialog.
+    /// Real hardware (HapticSession::opensSlowly) is opened on a worker thread while the loop runs:
+    /// then "" means "opening"; the device arrives later (deviceOpening() until then) and an error
+    /// is shown in the Device dock and the status bar.
     QString setDeviceUri(const QString& uri);
+    bool deviceOpening() const { return mOpenThread != nullptr; }
     /// A fresh device of the same URI and a fresh scene of the same mesh. "" or why not.
     QString restartSimulation();
     /// Stepped mode: runs `ticks` haptic ticks now, then shows the newest snapshot (what --ticks does).
@@ -174,6 +179,9 @@ private:
     void createExerciseDocks();
     void createEditorDock();
     void createLodDock();
+    QString openDeviceInBackground(const QString& uri);
+    /// After a device switch (or its failure): menus, touch mode, the Device dock, the status bar.
+    void deviceSwitched(const QString& uri, const std::string& error);
     /// The Level of Detail panel's scene: the drawn mesh (unless it is one of its own levels) and
     /// the needs of the running exercise or the preset.
     void updateLodScene();
@@ -244,7 +252,9 @@ private:
     QUndoGroup* mUndoGroup = nullptr;
     LodPanel* mLodPanel = nullptr;
     QDockWidget* mLodDock = nullptr;
-    std::shared_ptr<const TissueMesh> mLodSceneMesh;  // the Level of Detail panel's source mesh
+    std::shared_ptr<const TissueMesh> mLodSceneMesh;
+    QThread* mOpenThread = nullptr;  // a hardware device being opened (openDeviceInBackground)
+    QString mOpeningUri;  // the Level of Detail panel's source mesh
     HistoryPanel* mHistoryPanel = nullptr;
     QDockWidget* mExerciseDock = nullptr;
     QDockWidget* mHistoryDock = nullptr;

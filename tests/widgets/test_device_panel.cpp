@@ -3,6 +3,8 @@
 // file for sim:path:FILE, emits connect requests without owning the loop, shows the spec and the
 // live state, and raises a red banner when the connected device is lost until it is Ready and armed.
 // Set PALPATE_DEVICE_PANEL_PNG_DIR to keep the rendered panels as PNGs.
+#include "app/cli/DefaultScene.h"
+#include "app/gui/MainWindow.h"
 #include "device/DeviceUri.h"
 #include "device/SafetyFilter.h"
 #include "engine/HapticSnapshot.h"
@@ -20,7 +22,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <memory>
+#include <thread>
 
 using namespace palpate;
 
@@ -339,4 +344,82 @@ TEST_F(DevicePanelTest, ShowErrorKeepsTheConnectionAndConnectClearsIt) {
     const QImage connected = render(QStringLiteral("device_panel_connected"));
     EXPECT_FALSE(connected.isNull());
     EXPECT_FALSE(panel->warningShown());
+}
+
+// Real hardware opens on a worker thread (a Falcon's firmware upload takes seconds): the window
+// answers at once, the running session keeps its device until the new one is open, and a failed
+// open is shown in the Device dock. A registered factory stands in for the hardware.
+namespace {
+
+class SlowDevice final : public HapticDevice {
+public:
+    SlowDevice(std::shared_ptr<std::atomic<bool>> release, bool succeed) : mRelease(std::move(release)), mSucceed(succeed) {}
+    bool open() override {
+        for (int waitedMs = 0; waitedMs < 10000 && !mRelease->load(); ++waitedMs)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        mState = mSucceed ? DeviceState::Ready : DeviceState::Fault;
+        return mSucceed;
+    }
+    void close() override { mState = DeviceState::Disconnected; }
+    bool calibrate() override { return true; }
+    DeviceState state() const override { return mState; }
+    const DeviceSpec& spec() const override { return mSpec; }
+    bool read(DeviceSample&) override { return false; }
+    void writeForce(const glm::vec3&) override {}
+    void emergencyStop() override {}
+    std::string lastError() const override { return mSucceed ? std::string() : "falcon:0: firmware file missing (test)"; }
+
+private:
+    std::shared_ptr<std::atomic<bool>> mRelease;
+    bool mSucceed;
+    DeviceState mState = DeviceState::Disconnected;
+    DeviceSpec mSpec;
+};
+
+}  // namespace
+
+TEST(DevicePanelWindow, HardwareOpensOffTheGuiThreadAndFailuresAreShown) {
+    auto release = std::make_shared<std::atomic<bool>>(false);
+    bool succeed = true;
+    registerDeviceFactory(DeviceKind::Falcon, [release, &succeed](const DeviceUri&, std::string&) {
+        return std::unique_ptr<HapticDevice>(new SlowDevice(release, succeed));
+    });
+    {
+        MainWindow window(RendererChoice::Software, LoopMode::Threaded);
+        ASSERT_EQ(window.setDeviceUri(QStringLiteral("sim:stroke")), QString());
+        ASSERT_EQ(window.loadMesh(QString::fromStdString(cli::findResource(cli::kDefaultMesh))), QString());
+        ASSERT_TRUE(window.session().threadRunning());
+
+        // Returns while the device is still opening; the loop keeps the old device meanwhile.
+        EXPECT_EQ(window.setDeviceUri(QStringLiteral("falcon:0")), QString());
+        EXPECT_TRUE(window.deviceOpening());
+        EXPECT_EQ(window.session().deviceUri(), "sim:stroke");
+        EXPECT_FALSE(window.devicePanel()->isEnabled());
+        // A second request while one opens is refused with the reason.
+        EXPECT_FALSE(window.setDeviceUri(QStringLiteral("falcon:1")).isEmpty());
+        release->store(true);
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !window.deviceOpening(); }, 15000));
+        EXPECT_EQ(window.session().deviceUri(), "falcon:0");
+        EXPECT_TRUE(window.devicePanel()->isEnabled());
+
+        // A failing open: the error reaches the Device dock; the session keeps its device.
+        succeed = false;
+        EXPECT_EQ(window.setDeviceUri(QStringLiteral("falcon:2")), QString());
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !window.deviceOpening(); }, 15000));
+        EXPECT_EQ(window.session().deviceUri(), "falcon:0");
+        EXPECT_TRUE(window.devicePanel()->errorText().contains(QStringLiteral("firmware file missing")))
+            << window.devicePanel()->errorText().toStdString();
+
+        // Closing the window while a device opens waits for it, then goes.
+        release->store(false);
+        succeed = true;
+        EXPECT_EQ(window.setDeviceUri(QStringLiteral("falcon:3")), QString());
+        std::thread releaser([release] {
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));
+            release->store(true);
+        });
+        window.close();
+        releaser.join();
+    }
+    unregisterDeviceFactory(DeviceKind::Falcon);
 }
