@@ -11,6 +11,7 @@ packages=(
   libhidapi-dev libusb-1.0-0-dev umockdev libumockdev-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth poppler-utils
+  desktop-file-utils appstream dpkg-dev librsvg2-bin qt6-translations-l10n
 )
 
 missing=()

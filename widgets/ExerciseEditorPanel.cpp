@@ -209,7 +209,11 @@ ExerciseEditorPanel::ExerciseEditorPanel(ResourceFinder findResource, QWidget* p
     newExercise(ExerciseType::PressTargets);
 }
 
-ExerciseEditorPanel::~ExerciseEditorPanel() = default;
+ExerciseEditorPanel::~ExerciseEditorPanel() {
+    // The stack is a child: it is deleted after this body and emits cleanChanged on its way out,
+    // when the members the slot touches are already gone.
+    mUndoStack->disconnect(this);
+}
 
 QLabel* ExerciseEditorPanel::rowLabel(const char* text) {
     auto* label = new QLabel(this);

@@ -4,6 +4,7 @@
 #include "widgets/RenderScene.h"
 #include "widgets/SceneStyle.h"
 
+#include <QCoreApplication>
 #include <QFont>
 #include <QFontMetricsF>
 #include <QGuiApplication>
@@ -77,7 +78,7 @@ LegendLayout legendLayout(const RenderScene& scene, QSize sizePx, bool showRestG
     layout.rowPx = std::max<double>(style::kLegendSwatchPx + 3, metrics.height());
     double labelPx = 0.0;
     for (int r = 0; r < layout.rings; ++r) labelPx = std::max(labelPx, metrics.horizontalAdvance(ringLegendLabel(r)));
-    if (layout.ghost) labelPx = std::max(labelPx, metrics.horizontalAdvance(QStringLiteral("rest shape")));
+    if (layout.ghost) labelPx = std::max(labelPx, metrics.horizontalAdvance(QCoreApplication::translate("palpate::SceneOverlay", "rest shape")));
     const double width = 2 * kLegendPaddingPx + style::kLegendSwatchPx + kLegendGapPx + std::ceil(labelPx);
     const double height = 2 * kLegendPaddingPx + layout.rows() * layout.rowPx;
     layout.box = QRectF(style::kLegendMarginPx, sizePx.height() - style::kLegendMarginPx - height, width, height);
@@ -101,14 +102,15 @@ void paintLegend(QPainter& painter, const LegendLayout& layout) {
         painter.setPen(QColor(230, 230, 230));
         const QRectF labelRect(swatchRect.right() + kLegendGapPx, top, layout.box.right() - swatchRect.right(), layout.rowPx);
         painter.drawText(labelRect, Qt::AlignLeft | Qt::AlignVCenter,
-                         ghostRow ? QStringLiteral("rest shape") : ringLegendLabel(row));
+                         ghostRow ? QCoreApplication::translate("palpate::SceneOverlay", "rest shape") : ringLegendLabel(row));
     }
 }
 
 }  // namespace
 
 QString ringLegendLabel(int ring) {
-    return ring == 0 ? QStringLiteral("touched") : QStringLiteral("ring %1").arg(ring);
+    return ring == 0 ? QCoreApplication::translate("palpate::SceneOverlay", "touched")
+                     : QCoreApplication::translate("palpate::SceneOverlay", "ring %1").arg(ring);
 }
 
 QRectF sceneLegendRect(const RenderScene& scene, QSize sizePx, bool showRestGhost) {

@@ -5,10 +5,12 @@
 #include "engine/TissuePreset.h"
 #include "app/cli/DefaultScene.h"
 #include "app/gui/ExerciseController.h"
+#include "app/gui/FirstRun.h"
 #include "widgets/ChartsPanel.h"
 #include "widgets/ExerciseEditorPanel.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/LodPanel.h"
+#include "widgets/PreferencesDialog.h"
 #include "widgets/ScoreCard.h"
 #include "widgets/TraineePanel.h"
 #include "widgets/DevicePanel.h"
@@ -111,6 +113,10 @@ MainWindow::~MainWindow() { shutDown(); }
 
 void MainWindow::shutDown() {
     if (mOpenThread) mOpenThread->wait();  // a device being opened: it is closed with the job
+    // Docks hide and focus moves while the children are destroyed: the slots that react to it
+    // must not run on a half-destroyed window.
+    if (mEditorDock) mEditorDock->disconnect(this);
+    if (mFocusConnection) QObject::disconnect(mFocusConnection);
     mFrameTimer.stop();
     mStatusTimer.stop();
     if (mSession->recording()) stopRecording();  // the file gets its end chunk and is closed cleanly
@@ -427,6 +433,7 @@ void MainWindow::createMenus() {
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About Palpate"), this, &MainWindow::showAbout);
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+    installFirstRunActions(*this, edit, help);  // Edit > Preferences…, Help > User Guide (F1), Welcome
 }
 
 void MainWindow::createStatusBar() {
@@ -503,6 +510,7 @@ QString MainWindow::openDeviceInBackground(const QString& uri) {
     job->uri = uri.toStdString();
     mOpeningUri = uri;
     mOpenThread = QThread::create([job] { job->device = openDeviceUri(job->uri, job->error); });
+    mOpenThread->setParent(this);  // deleted with the window if it closes first (shutDown waits for it)
     connect(mOpenThread, &QThread::finished, this, [this, job] {
         mOpenThread->deleteLater();
         mOpenThread = nullptr;
@@ -667,7 +675,7 @@ void MainWindow::showStatus() {
                               .arg(QString::fromStdString(mSession->deviceUri()),
                                    observed ? QString::fromLatin1(deviceStateName(o.deviceState)) : tr("not started")));
     mContactLabel->setText(tr("contact: %1").arg(o.contact ? tr("yes") : tr("no")));
-    mForceLabel->setText(tr("force %1 N").arg(double(glm::length(o.forceN)), 0, 'f', 2));
+    mForceLabel->setText(tr("force %1").arg(formatForce(double(glm::length(o.forceN)))));  // N or gf (Preferences)
 }
 
 QString MainWindow::statusText() const {
@@ -950,7 +958,7 @@ void MainWindow::createEditorDock() {
     mParameterPanel->undoAction()->setShortcuts({});
     mParameterPanel->redoAction()->setShortcuts({});
     // The stack of the panel the user works in is the one Edit > Undo acts on.
-    connect(qApp, &QApplication::focusChanged, this, [this](QWidget*, QWidget* now) {
+    mFocusConnection = connect(qApp, &QApplication::focusChanged, this, [this](QWidget*, QWidget* now) {
         for (QWidget* w = now; w; w = w->parentWidget()) {
             if (w == mEditor) return mUndoGroup->setActiveStack(mEditor->undoStack());
             if (w == mParameterPanel) return mUndoGroup->setActiveStack(mParameterPanel->undoStack());

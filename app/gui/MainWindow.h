@@ -253,6 +253,7 @@ private:
     LodPanel* mLodPanel = nullptr;
     QDockWidget* mLodDock = nullptr;
     std::shared_ptr<const TissueMesh> mLodSceneMesh;
+    QMetaObject::Connection mFocusConnection;  // Edit > Undo follows the focused panel
     QThread* mOpenThread = nullptr;  // a hardware device being opened (openDeviceInBackground)
     QString mOpeningUri;  // the Level of Detail panel's source mesh
     HistoryPanel* mHistoryPanel = nullptr;

@@ -1,6 +1,7 @@
 // palpate: the GUI. Exit codes: 0 success, 1 failure (bad mesh or device, screenshot not written),
 // 2 bad usage.
 #include "app/cli/DefaultScene.h"
+#include "app/gui/FirstRun.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/ViewportBenchmark.h"
 #include "device/DeviceUri.h"
@@ -8,7 +9,9 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <QMessageBox>
+#include <QPointer>
 #include <QTimer>
 
 #include <cstdio>
@@ -62,6 +65,9 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("palpate"));
     QApplication::setApplicationVersion(QStringLiteral(PALPATE_VERSION));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/palpate-256.png")));
+    QGuiApplication::setDesktopFileName(QStringLiteral("org.palpate.Palpate"));  // packaging/*.desktop
+    palpate::installTranslator(app);  // QSettings "language", else the system locale (FirstRun.h)
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Palpate: haptic soft-tissue deformation"));
@@ -123,6 +129,13 @@ int main(int argc, char** argv) {
                                            QStringLiteral("FILE"));
     openRecordingOption.setFlags(QCommandLineOption::HiddenFromHelp);
     parser.addOption(openRecordingOption);
+    // Hidden, for the user guide's pictures: shows the welcome page, the preferences or the guide
+    // over the window; --screenshot FILE (timed) then saves that window instead of the main one.
+    QCommandLineOption showDialogOption(QStringLiteral("show-dialog"),
+                                        QStringLiteral("Show welcome, preferences or guide (for screenshots)."),
+                                        QStringLiteral("NAME"));
+    showDialogOption.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(showDialogOption);
     parser.process(app);  // exits with 0 on --help/--version and with 1 on unknown options
     if (parser.isSet(benchmarkOption))
         return palpate::runViewportBenchmark(parser.value(secondsOption), parser.isSet(softwareOption));
@@ -177,10 +190,12 @@ int main(int argc, char** argv) {
     // The device URI is checked before anything else is built: the message names the URI.
     // Without --device: the interactive window has no hardware to find yet, so the mouse steers the
     // tool; screenshots, grabs and scripted runs keep the scripted stroke (deterministic pictures).
-    const QString deviceUri = parser.isSet(deviceOption)
-                                  ? parser.value(deviceOption)
-                                  : QLatin1String(interactive ? palpate::HapticSession::kInteractiveDeviceUri
-                                                              : palpate::HapticSession::kDefaultDeviceUri);
+    QString deviceUri = parser.isSet(deviceOption)
+                            ? parser.value(deviceOption)
+                            : QLatin1String(interactive ? palpate::HapticSession::kInteractiveDeviceUri
+                                                        : palpate::HapticSession::kDefaultDeviceUri);
+    if (!parser.isSet(deviceOption) && interactive && !palpate::preferredDeviceUri().isEmpty())
+        deviceUri = palpate::preferredDeviceUri();  // Preferences: the device at start
     {
         std::string error;
         if (!palpate::createDeviceFromUri(deviceUri.toStdString(), error)) return fail(QString::fromStdString(error));
@@ -209,6 +224,7 @@ int main(int argc, char** argv) {
     const auto mode = screenshot ? palpate::LoopMode::Stepped : palpate::LoopMode::Threaded;
     const auto renderer = parser.isSet(softwareOption) ? palpate::RendererChoice::Software : palpate::RendererChoice::Auto;
     palpate::MainWindow window(renderer, mode);
+    palpate::applyPreferences(window);  // data folder, haptic rate; --preset below still wins
     if (const QString error = window.setDeviceUri(deviceUri); !error.isEmpty()) return fail(error);
     if (const QString error = window.loadMesh(meshPath); !error.isEmpty()) return fail(error);
     if (parser.isSet(presetOption))
@@ -254,6 +270,9 @@ int main(int argc, char** argv) {
 
     window.resize(kWindowWidthPx, kWindowHeightPx);
     window.show();
+    if (interactive) palpate::maybeShowWelcome(window);
+    const QPointer<QWidget> shownDialog =
+        parser.isSet(showDialogOption) ? palpate::showFirstRunDialog(window, parser.value(showDialogOption)) : nullptr;
     if (parser.isSet(openRecordingOption)) {
         palpate::RecorderPanel* panel = window.recorderPanel();
         QObject::connect(panel, &palpate::RecorderPanel::playbackStarted, panel, [panel] { panel->setPlaying(true); });
@@ -262,7 +281,8 @@ int main(int argc, char** argv) {
     if (grab || timedShot) {
         int exitCode = 1;
         QTimer::singleShot(grabAfterMs, &window, [&] {
-            const QImage image = window.grab().toImage();  // the whole window: menus, viewport, status bar
+            // The whole window (menus, viewport, status bar), or the dialog --show-dialog opened.
+            const QImage image = shownDialog ? shownDialog->grab().toImage() : window.grab().toImage();
             if (image.isNull() || !image.save(grabFile, "PNG")) {
                 std::fprintf(stderr, "palpate: the window could not be saved to %s\n", qPrintable(grabFile));
             } else {

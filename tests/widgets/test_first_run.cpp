@@ -1,0 +1,251 @@
+// The first-run experience under QT_QPA_PLATFORM=offscreen (issue 12): the welcome page (shown once,
+// "Don't show this again", its three actions on a real stepped MainWindow), the Preferences dialog
+// (fields, validation, the QSettings keys) and what the preferences do to a window, the Help menu's
+// User Guide (F1, shown in the guide window; no browser is started) and formatForce. Own main().
+#include "app/cli/DefaultScene.h"
+#include "app/gui/ExerciseController.h"
+#include "app/gui/FirstRun.h"
+#include "app/gui/MainWindow.h"
+#include "widgets/PreferencesDialog.h"
+#include "widgets/RecorderPanel.h"
+#include "widgets/WelcomePage.h"
+
+#include <gtest/gtest.h>
+
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QCommandLinkButton>
+#include <QDialogButtonBox>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextBrowser>
+
+#include <memory>
+
+using namespace palpate;
+
+namespace {
+
+/// A stepped window with the default mesh, its first-run actions in the Edit and Help menus
+/// (installed here unless MainWindow::createMenus already did).
+std::unique_ptr<MainWindow> makeWindow() {
+    auto window = std::make_unique<MainWindow>(RendererChoice::Software, LoopMode::Stepped);
+    if (!window->findChild<QAction*>(QStringLiteral("userGuideAction"))) {
+        const QList<QAction*> menus = window->menuBar()->actions();
+        QMenu* edit = nullptr;
+        for (QAction* a : menus)
+            if (a->menu() && a->menu()->actions().size() > 0 && a->text() == MainWindow::tr("&Edit")) edit = a->menu();
+        installFirstRunActions(*window, edit, menus.last()->menu());
+    }
+    const std::string mesh = cli::findResource(cli::kDefaultMesh);
+    EXPECT_FALSE(mesh.empty());
+    EXPECT_EQ(window->setDeviceUri(QStringLiteral("sim:press")), QString());
+    EXPECT_EQ(window->loadMesh(QString::fromStdString(mesh)), QString());
+    window->resize(1024, 768);
+    window->show();
+    return window;
+}
+
+class FirstRunTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        QSettings().clear();
+        mPreviousOpener = setUrlOpener([this](const QUrl& url) {
+            mOpened << url;
+            return true;
+        });
+    }
+    void TearDown() override {
+        setUrlOpener(mPreviousOpener);
+        QSettings().clear();
+    }
+    QList<QUrl> mOpened;
+    UrlOpener mPreviousOpener;
+};
+
+}  // namespace
+
+TEST_F(FirstRunTest, WelcomeShowsOnFirstStartUntilDontShowAgain) {
+    auto window = makeWindow();
+    WelcomePage* page = maybeShowWelcome(*window);
+    ASSERT_NE(page, nullptr);
+    EXPECT_TRUE(page->isVisible());
+    EXPECT_FALSE(page->dontShowAgain());
+    page->reject();  // closed without the tick: shown again next time
+    EXPECT_FALSE(QSettings().value(Preferences::kFirstRunDoneKey).toBool());
+    QApplication::processEvents();
+
+    page = maybeShowWelcome(*window);
+    ASSERT_NE(page, nullptr);
+    page->dontShowAgainBox()->click();
+    page->reject();
+    EXPECT_TRUE(QSettings().value(Preferences::kFirstRunDoneKey).toBool());
+    QApplication::processEvents();
+    EXPECT_EQ(maybeShowWelcome(*window), nullptr);
+
+    // Help > Welcome still shows it, with the tick as stored.
+    QAction* welcome = window->findChild<QAction*>(QStringLiteral("welcomeAction"));
+    ASSERT_NE(welcome, nullptr);
+    welcome->trigger();
+    auto* again = window->findChild<WelcomePage*>(QStringLiteral("welcomePage"));
+    ASSERT_NE(again, nullptr);
+    EXPECT_TRUE(again->isVisible());
+    EXPECT_TRUE(again->dontShowAgain());
+    again->reject();
+}
+
+TEST_F(FirstRunTest, WelcomeTouchModeSwitchesToTheMouse) {
+    auto window = makeWindow();
+    EXPECT_FALSE(window->touchMode());
+    WelcomePage* page = showWelcome(*window);
+    ASSERT_NE(page, nullptr);
+    page->touchModeButton()->click();
+    EXPECT_EQ(QString::fromStdString(window->session().deviceUri()), QStringLiteral("mouse:"));
+    EXPECT_TRUE(window->touchMode());
+    EXPECT_TRUE(window->touchModeAction()->isChecked());
+    EXPECT_FALSE(page->isVisible());
+}
+
+TEST_F(FirstRunTest, WelcomeSampleSceneAndExampleExercise) {
+    auto window = makeWindow();
+    EXPECT_EQ(window->loadMesh(QString::fromStdString(cli::findResource("meshes/sphere_1442.off"))), QString());
+    showWelcome(*window)->sampleSceneButton()->click();
+    EXPECT_TRUE(QString::fromStdString(window->session().drawnPath()).endsWith(QLatin1String("stomach_3970.off")));
+
+    showWelcome(*window)->exerciseButton()->click();
+    EXPECT_EQ(window->mode(), MainWindow::Mode::Trainee);
+    EXPECT_TRUE(window->exercises().running());
+}
+
+TEST_F(FirstRunTest, PreferencesDialogSavesItsKeys) {
+    PreferencesDialog dialog;
+    EXPECT_EQ(dialog.preferences(), Preferences{});  // nothing stored: the defaults
+    dialog.languageBox()->setCurrentIndex(dialog.languageBox()->findData(QStringLiteral("ms")));
+    dialog.forceUnitBox()->setCurrentIndex(dialog.forceUnitBox()->findData(QStringLiteral("gf")));
+    dialog.hapticRateBox()->setCurrentIndex(dialog.hapticRateBox()->findData(2000));
+    dialog.deviceBox()->setCurrentText(QStringLiteral("sim:press"));
+    QTemporaryDir data;
+    dialog.dataFolderEdit()->setText(data.path());
+    EXPECT_EQ(dialog.problem(), QString());
+    dialog.accept();
+
+    QSettings settings;
+    EXPECT_EQ(settings.value("language").toString(), QStringLiteral("ms"));
+    EXPECT_EQ(settings.value("units/force").toString(), QStringLiteral("gf"));
+    EXPECT_EQ(settings.value("haptic/rateHz").toInt(), 2000);
+    EXPECT_EQ(settings.value("device/defaultUri").toString(), QStringLiteral("sim:press"));
+    EXPECT_EQ(settings.value("dataFolder").toString(), data.path());
+    EXPECT_EQ(preferredDeviceUri(), QStringLiteral("sim:press"));
+    EXPECT_EQ(Preferences::load().effectiveLanguage(), QStringLiteral("ms"));
+
+    // A new dialog shows what is stored; Restore Defaults goes back to the defaults.
+    PreferencesDialog reopened;
+    EXPECT_EQ(reopened.preferences(), Preferences::load());
+    auto* box = reopened.findChild<QDialogButtonBox*>();
+    ASSERT_NE(box, nullptr);
+    box->button(QDialogButtonBox::RestoreDefaults)->click();
+    EXPECT_EQ(reopened.preferences(), Preferences{});
+}
+
+TEST_F(FirstRunTest, PreferencesDialogRefusesABadDeviceAndARelativeFolder) {
+    PreferencesDialog dialog;
+    auto* ok = dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+    dialog.deviceBox()->setCurrentText(QStringLiteral("nosuchscheme:3"));
+    EXPECT_TRUE(dialog.problem().contains(QLatin1String("nosuchscheme")));
+    EXPECT_FALSE(ok->isEnabled());
+    dialog.accept();  // refused: nothing stored
+    EXPECT_FALSE(QSettings().contains("device/defaultUri"));
+
+    dialog.deviceBox()->setCurrentIndex(0);
+    EXPECT_EQ(dialog.problem(), QString());
+    dialog.dataFolderEdit()->setText(QStringLiteral("relative/folder"));
+    EXPECT_FALSE(dialog.problem().isEmpty());
+    EXPECT_FALSE(ok->isEnabled());
+}
+
+TEST_F(FirstRunTest, PreferencesApplyToTheWindow) {
+    auto window = makeWindow();
+    QTemporaryDir data;
+    Preferences p;
+    p.dataFolder = data.path();
+    p.hapticRateHz = 500;
+    p.save();
+    applyPreferences(*window);
+    EXPECT_EQ(window->recorderPanel()->recordingFolder(), QDir(data.path()).filePath(QStringLiteral("recordings")));
+    EXPECT_EQ(window->exercises().database().path(), QDir(data.path()).filePath(QStringLiteral("results.sqlite")));
+    EXPECT_TRUE(QFileInfo::exists(QDir(data.path()).filePath(QStringLiteral("results.sqlite"))));
+    EXPECT_EQ(window->session().preset().hapticRateHz, 500.0);
+    window->advanceTicks(10);  // the loop runs at the new rate
+    EXPECT_DOUBLE_EQ(window->session().periodS(), 1.0 / 500.0);
+
+    // Cleared, the data folder is the default one again.
+    p.dataFolder.clear();
+    p.save();
+    applyPreferences(*window);
+    EXPECT_EQ(window->recorderPanel()->recordingFolder(), RecorderPanel::defaultRecordingFolder());
+    EXPECT_EQ(window->exercises().database().path(), ExerciseController::defaultDatabasePath());
+
+    // Edit > Preferences… opens the dialog (once).
+    QAction* action = window->findChild<QAction*>(QStringLiteral("preferencesAction"));
+    ASSERT_NE(action, nullptr);
+    EXPECT_EQ(action->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_Comma));
+    action->trigger();
+    action->trigger();
+    const auto dialogs = window->findChildren<PreferencesDialog*>();
+    ASSERT_EQ(dialogs.size(), 1);
+    EXPECT_TRUE(dialogs.front()->isVisible());
+    EXPECT_EQ(dialogs.front()->preferences(), Preferences::load());
+    dialogs.front()->reject();
+}
+
+TEST_F(FirstRunTest, UserGuideOpensFromHelpWithF1) {
+    const QString path = userGuidePath();
+    ASSERT_FALSE(path.isEmpty()) << "docs/user-guide.md not found";
+    EXPECT_TRUE(path.endsWith(QLatin1String("user-guide.md")));
+
+    auto window = makeWindow();
+    QAction* guide = window->findChild<QAction*>(QStringLiteral("userGuideAction"));
+    ASSERT_NE(guide, nullptr);
+    EXPECT_EQ(guide->shortcut(), QKeySequence(QKeySequence::HelpContents));
+    EXPECT_EQ(guide->shortcut(), QKeySequence(Qt::Key_F1));
+    guide->trigger();
+    auto* browser = window->findChild<QTextBrowser*>(QStringLiteral("userGuideBrowser"));
+    ASSERT_NE(browser, nullptr);
+    EXPECT_TRUE(browser->isVisible());
+    EXPECT_TRUE(browser->toPlainText().contains(QLatin1String("Palpate user guide")));
+    EXPECT_TRUE(browser->toPlainText().contains(QLatin1String("Touch mode")));
+    // The guide's pictures load (the document has images, all of them found next to the guide).
+    EXPECT_TRUE(browser->toHtml().contains(QLatin1String("<img")));
+    EXPECT_TRUE(mOpened.isEmpty());  // nothing went to a browser
+}
+
+TEST(FormatForce, NewtonsAndGramForce) {
+    EXPECT_EQ(formatForce(1.25, QStringLiteral("N")), QStringLiteral("1.25 N"));
+    EXPECT_EQ(formatForce(1.0, QStringLiteral("gf")), QStringLiteral("102.0 gf"));  // 1 N = 101.97 gf
+    EXPECT_EQ(formatForce(0.0, QStringLiteral("gf"), 1), QStringLiteral("0 gf"));
+    // The stored unit, as Preferences saves it.
+    Preferences p;
+    p.forceUnit = QStringLiteral("gf");
+    p.save();
+    EXPECT_EQ(formatForce(0.5), QStringLiteral("51.0 gf"));
+    p.forceUnit = QStringLiteral("N");
+    p.save();
+    EXPECT_EQ(formatForce(0.5), QStringLiteral("0.50 N"));
+    QSettings().clear();
+}
+
+int main(int argc, char** argv) {
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true);  // QSettings and the data folder are not the user's
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("palpate-first-run-tests"));
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

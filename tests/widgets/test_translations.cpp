@@ -1,0 +1,85 @@
+// The translations (issue 12) under QT_QPA_PLATFORM=offscreen: the embedded German and Malay .qm
+// files load, and a MainWindow built after switching finds its menus in that language; switching
+// back to English gives the English menus. Own main().
+#include "app/gui/FirstRun.h"
+#include "app/gui/MainWindow.h"
+
+#include <gtest/gtest.h>
+
+#include <QAction>
+#include <QApplication>
+#include <QMenuBar>
+#include <QSettings>
+#include <QStandardPaths>
+
+#include <memory>
+
+using namespace palpate;
+
+namespace {
+
+QStringList menuTitles(const MainWindow& window) {
+    QStringList titles;
+    for (const QAction* action : window.menuBar()->actions()) titles << action->text();
+    return titles;
+}
+
+QStringList actionTexts(const MainWindow& window) {
+    QStringList texts;
+    for (const QAction* action : window.findChildren<QAction*>()) texts << action->text();
+    return texts;
+}
+
+class Translations : public ::testing::Test {
+protected:
+    void TearDown() override { loadLanguage(*qApp, QStringLiteral("en")); }
+};
+
+}  // namespace
+
+TEST_F(Translations, GermanMainWindow) {
+    ASSERT_TRUE(loadLanguage(*qApp, QStringLiteral("de")));
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    const QStringList titles = menuTitles(window);
+    EXPECT_TRUE(titles.contains(QStringLiteral("&Datei"))) << titles.join(QLatin1Char(' ')).toStdString();
+    EXPECT_TRUE(titles.contains(QStringLiteral("&Hilfe"))) << titles.join(QLatin1Char(' ')).toStdString();
+    EXPECT_FALSE(titles.contains(QStringLiteral("&File")));
+    EXPECT_TRUE(actionTexts(window).contains(QStringLiteral("&Beenden")));
+}
+
+TEST_F(Translations, MalayMainWindow) {
+    ASSERT_TRUE(loadLanguage(*qApp, QStringLiteral("ms")));
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    const QStringList titles = menuTitles(window);
+    EXPECT_TRUE(titles.contains(QStringLiteral("&Fail"))) << titles.join(QLatin1Char(' ')).toStdString();
+    EXPECT_TRUE(titles.contains(QStringLiteral("&Bantuan"))) << titles.join(QLatin1Char(' ')).toStdString();
+    EXPECT_FALSE(titles.contains(QStringLiteral("&File")));
+}
+
+TEST_F(Translations, BackToEnglishAndTheStoredLanguage) {
+    ASSERT_TRUE(loadLanguage(*qApp, QStringLiteral("de")));
+    EXPECT_FALSE(loadLanguage(*qApp, QStringLiteral("en")));  // English needs no translator
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    EXPECT_TRUE(menuTitles(window).contains(QStringLiteral("&File")));
+
+    // installTranslator follows QSettings "language" (what Preferences stores).
+    QSettings().setValue("language", QStringLiteral("de"));
+    EXPECT_EQ(installTranslator(*qApp), QStringLiteral("de"));
+    EXPECT_EQ(MainWindow::tr("&File"), QStringLiteral("&Datei"));
+    QSettings().setValue("language", QStringLiteral("ms"));
+    EXPECT_EQ(installTranslator(*qApp), QStringLiteral("ms"));
+    EXPECT_EQ(MainWindow::tr("&Help"), QStringLiteral("&Bantuan"));
+    QSettings().setValue("language", QStringLiteral("en"));
+    EXPECT_EQ(installTranslator(*qApp), QStringLiteral("en"));
+    EXPECT_EQ(MainWindow::tr("&File"), QStringLiteral("&File"));
+    QSettings().remove("language");
+}
+
+int main(int argc, char** argv) {
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true);  // QSettings are not the user's
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("palpate-translation-tests"));
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

@@ -1,0 +1,3870 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="ms_MY">
+<context>
+    <name>QObject</name>
+    <message>
+        <source>No sweep points to draw</source>
+        <translation>Tiada titik sapuan untuk dilukis</translation>
+    </message>
+    <message>
+        <source>%1–%2 N</source>
+        <translation>%1–%2 N</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ChartsPanel</name>
+    <message>
+        <source>1 point</source>
+        <translation>1 titik</translation>
+    </message>
+    <message>
+        <source>%1 points</source>
+        <translation>%1 titik</translation>
+    </message>
+    <message>
+        <source>&amp;Run sweep</source>
+        <translation>&amp;Jalankan sapuan</translation>
+    </message>
+    <message>
+        <source>Measure every model&apos;s tick cost and its displacement error against the flat punch (slopes calibrated for the tissue and tool in use). Runs in the background; the full sweep (both shapes, four sizes, 1 to 8 rings and the paper&apos;s methods) takes seconds.</source>
+        <translation>Ukur kos tik setiap model dan ralat anjakannya berbanding penebuk rata (cerun ditentukur untuk tisu dan alat yang digunakan). Berjalan di latar belakang; sapuan penuh (kedua-dua bentuk, empat saiz, 1 hingga 8 gelang dan kaedah kertas kerja) mengambil masa beberapa saat.</translation>
+    </message>
+    <message>
+        <source>&amp;Quick</source>
+        <translation>&amp;Pantas</translation>
+    </message>
+    <message>
+        <source>Sphere only, at 1442 and 3970 vertices, up to 4 rings: about a second.</source>
+        <translation>Sfera sahaja, pada 1442 dan 3970 bucu, sehingga 4 gelang: kira-kira satu saat.</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Batal</translation>
+    </message>
+    <message>
+        <source>Stop after the model being measured; the points measured so far are shown.</source>
+        <translation>Berhenti selepas model yang sedang diukur; titik yang telah diukur ditunjukkan.</translation>
+    </message>
+    <message>
+        <source>&amp;Open CSV…</source>
+        <translation>&amp;Buka CSV…</translation>
+    </message>
+    <message>
+        <source>Show a sweep saved as CSV (palpate-cli sweep --csv, or Save CSV here).</source>
+        <translation>Tunjukkan sapuan yang disimpan sebagai CSV (palpate-cli sweep --csv, atau Simpan CSV di sini).</translation>
+    </message>
+    <message>
+        <source>S&amp;ave CSV…</source>
+        <translation>S&amp;impan CSV…</translation>
+    </message>
+    <message>
+        <source>Write the points shown as CSV (and the tissue as JSON next to it).</source>
+        <translation>Tulis titik yang ditunjukkan sebagai CSV (dan tisu sebagai JSON di sebelahnya).</translation>
+    </message>
+    <message>
+        <source>Sha&amp;pe:</source>
+        <translation>B&amp;entuk:</translation>
+    </message>
+    <message>
+        <source>The shape whose points are drawn (each shape has its own Pareto front).</source>
+        <translation>Bentuk yang titiknya dilukis (setiap bentuk mempunyai hadapan Pareto sendiri).</translation>
+    </message>
+    <message>
+        <source>No sweep loaded: press Run sweep</source>
+        <translation>Tiada sapuan dimuatkan: tekan Jalankan sapuan</translation>
+    </message>
+    <message>
+        <source>%p %</source>
+        <translation>%p %</translation>
+    </message>
+    <message>
+        <source>%1 with %2 rings</source>
+        <translation>%1 dengan %2 gelang</translation>
+    </message>
+    <message>
+        <source>In use: %1 (no mesh loaded)</source>
+        <translation>Digunakan: %1 (tiada jejaring dimuatkan)</translation>
+    </message>
+    <message>
+        <source>In use: %1 on %2 vertices (ringed in magenta)</source>
+        <translation>Digunakan: %1 pada %2 bucu (dibulatkan dengan magenta)</translation>
+    </message>
+    <message>
+        <source>In use: %1 on %2 vertices</source>
+        <translation>Digunakan: %1 pada %2 bucu</translation>
+    </message>
+    <message>
+        <source>In use: %1 on %2 vertices (not measured in this sweep)</source>
+        <translation>Digunakan: %1 pada %2 bucu (tidak diukur dalam sapuan ini)</translation>
+    </message>
+    <message>
+        <source>Sweep started: building the first mesh…</source>
+        <translation>Sapuan bermula: membina jejaring pertama…</translation>
+    </message>
+    <message>
+        <source>Cancelling: the model being measured finishes first…</source>
+        <translation>Membatalkan: model yang sedang diukur selesai dahulu…</translation>
+    </message>
+    <message>
+        <source>Sweep failed: %1</source>
+        <translation>Sapuan gagal: %1</translation>
+    </message>
+    <message>
+        <source>Cancelled after %1 (%2 s); the chart shows them.</source>
+        <translation>Dibatalkan selepas %1 (%2 s); carta menunjukkannya.</translation>
+    </message>
+    <message>
+        <source>Cancelled before the first point; the chart is unchanged.</source>
+        <translation>Dibatalkan sebelum titik pertama; carta tidak berubah.</translation>
+    </message>
+    <message>
+        <source>Sweep done: %1 in %2 s.</source>
+        <translation>Sapuan selesai: %1 dalam %2 s.</translation>
+    </message>
+    <message>
+        <source>%1: cannot be read (%2)</source>
+        <translation>%1: tidak dapat dibaca (%2)</translation>
+    </message>
+    <message>
+        <source>%1: no points (only the header)</source>
+        <translation>%1: tiada titik (hanya pengepala)</translation>
+    </message>
+    <message>
+        <source>Loaded %1 (%2).</source>
+        <translation>%1 dimuatkan (%2).</translation>
+    </message>
+    <message>
+        <source>%1: not saved, there are no points</source>
+        <translation>%1: tidak disimpan, tiada titik</translation>
+    </message>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1: tidak dapat ditulis (%2)</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>%1 disimpan.</translation>
+    </message>
+    <message>
+        <source>Open sweep CSV</source>
+        <translation>Buka CSV sapuan</translation>
+    </message>
+    <message>
+        <source>Sweep CSV (*.csv);;All files (*)</source>
+        <translation>CSV sapuan (*.csv);;Semua fail (*)</translation>
+    </message>
+    <message>
+        <source>Save sweep CSV</source>
+        <translation>Simpan CSV sapuan</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::DevicePanel</name>
+    <message>
+        <source>Disconnected</source>
+        <translation>Terputus</translation>
+    </message>
+    <message>
+        <source>Opening</source>
+        <translation>Sedang dibuka</translation>
+    </message>
+    <message>
+        <source>NeedsCalibration</source>
+        <translation>Perlu penentukuran</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Sedia</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Ralat</translation>
+    </message>
+    <message>
+        <source>HoldOff</source>
+        <translation>Ditahan</translation>
+    </message>
+    <message>
+        <source>RampIn</source>
+        <translation>Meningkat</translation>
+    </message>
+    <message>
+        <source>Armed</source>
+        <translation>Aktif</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Peranti</translation>
+    </message>
+    <message>
+        <source>URI</source>
+        <translation>URI</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Keterangan</translation>
+    </message>
+    <message>
+        <source>The devices this build knows. Double-click one to connect.</source>
+        <translation>Peranti yang diketahui oleh binaan ini. Klik dua kali untuk menyambung.</translation>
+    </message>
+    <message>
+        <source>Waypoint File…</source>
+        <translation>Fail titik laluan…</translation>
+    </message>
+    <message>
+        <source>Choose the waypoint file the simulated device follows</source>
+        <translation>Pilih fail titik laluan yang diikuti oleh peranti simulasi</translation>
+    </message>
+    <message>
+        <source>&amp;URI:</source>
+        <translation>&amp;URI:</translation>
+    </message>
+    <message>
+        <source>Type a device URI, e.g. sim:stroke</source>
+        <translation>Taip URI peranti, cth. sim:stroke</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>&amp;Sambung</translation>
+    </message>
+    <message>
+        <source>Connect to the device the URI names (switching from the current one)</source>
+        <translation>Sambung ke peranti yang dinamakan oleh URI (bertukar daripada yang semasa)</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Putuskan</translation>
+    </message>
+    <message>
+        <source>Stop sending forces and release the device</source>
+        <translation>Berhenti menghantar daya dan lepaskan peranti</translation>
+    </message>
+    <message>
+        <source>Connected Device</source>
+        <translation>Peranti Bersambung</translation>
+    </message>
+    <message>
+        <source>URI:</source>
+        <translation>URI:</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Nama:</translation>
+    </message>
+    <message>
+        <source>Max force:</source>
+        <translation>Daya maks.:</translation>
+    </message>
+    <message>
+        <source>Max stiffness:</source>
+        <translation>Kekakuan maks.:</translation>
+    </message>
+    <message>
+        <source>Max damping:</source>
+        <translation>Redaman maks.:</translation>
+    </message>
+    <message>
+        <source>Workspace radius:</source>
+        <translation>Jejari ruang kerja:</translation>
+    </message>
+    <message>
+        <source>Actuated:</source>
+        <translation>Berpenggerak:</translation>
+    </message>
+    <message>
+        <source>Buttons:</source>
+        <translation>Butang:</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Keadaan</translation>
+    </message>
+    <message>
+        <source>The device&apos;s state as the haptic loop last saw it</source>
+        <translation>Keadaan peranti seperti yang terakhir dilihat oleh gelung haptik</translation>
+    </message>
+    <message>
+        <source>The safety filter: holding forces off until the command is small, ramping in, or armed</source>
+        <translation>Penapis keselamatan: menahan daya sehingga arahan kecil, meningkatkan daya, atau aktif</translation>
+    </message>
+    <message>
+        <source>Why the force sent differs from the force the model asked for</source>
+        <translation>Mengapa daya yang dihantar berbeza daripada daya yang diminta oleh model</translation>
+    </message>
+    <message>
+        <source>Force sent to the device (after the safety filter)</source>
+        <translation>Daya yang dihantar ke peranti (selepas penapis keselamatan)</translation>
+    </message>
+    <message>
+        <source>Tool tip position in the scene&apos;s frame</source>
+        <translation>Kedudukan hujung alat dalam kerangka adegan</translation>
+    </message>
+    <message>
+        <source>Device:</source>
+        <translation>Peranti:</translation>
+    </message>
+    <message>
+        <source>Safety:</source>
+        <translation>Keselamatan:</translation>
+    </message>
+    <message>
+        <source>Flags:</source>
+        <translation>Bendera:</translation>
+    </message>
+    <message>
+        <source>Force:</source>
+        <translation>Daya:</translation>
+    </message>
+    <message>
+        <source>Tool:</source>
+        <translation>Alat:</translation>
+    </message>
+    <message>
+        <source>Choose a Waypoint File</source>
+        <translation>Pilih Fail Titik Laluan</translation>
+    </message>
+    <message>
+        <source>Waypoint files (*.txt *.csv *.tsv);;All files (*)</source>
+        <translation>Fail titik laluan (*.txt *.csv *.tsv);;Semua fail (*)</translation>
+    </message>
+    <message>
+        <source>No device URI: choose a device in the list or type a URI.</source>
+        <translation>Tiada URI peranti: pilih peranti dalam senarai atau taip URI.</translation>
+    </message>
+    <message>
+        <source>Cannot connect: %1</source>
+        <translation>Tidak dapat menyambung: %1</translation>
+    </message>
+    <message>
+        <source>%1 is connected again: forces stay off until the safety filter has armed.</source>
+        <translation>%1 bersambung semula: daya kekal mati sehingga penapis keselamatan aktif.</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Tidak bersambung</translation>
+    </message>
+    <message>
+        <source>%1 N</source>
+        <translation>%1 N</translation>
+    </message>
+    <message>
+        <source>%1 N/mm</source>
+        <translation>%1 N/mm</translation>
+    </message>
+    <message>
+        <source>%1 N·s/mm</source>
+        <translation>%1 N·s/mm</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ya</translation>
+    </message>
+    <message>
+        <source>no (input only)</source>
+        <translation>tidak (input sahaja)</translation>
+    </message>
+    <message>
+        <source>held off</source>
+        <translation>ditahan</translation>
+    </message>
+    <message>
+        <source>ramping</source>
+        <translation>meningkat</translation>
+    </message>
+    <message>
+        <source>clamped</source>
+        <translation>diapit</translation>
+    </message>
+    <message>
+        <source>stale sample</source>
+        <translation>sampel lapuk</translation>
+    </message>
+    <message>
+        <source>overrun</source>
+        <translation>terlebih masa</translation>
+    </message>
+    <message>
+        <source>not ready</source>
+        <translation>tidak sedia</translation>
+    </message>
+    <message>
+        <source>non-finite command</source>
+        <translation>arahan tidak terhingga</translation>
+    </message>
+    <message>
+        <source>bad clock</source>
+        <translation>jam rosak</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>tiada</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>%1 N  (%2, %3, %4)</source>
+        <translation>%1 N  (%2, %3, %4)</translation>
+    </message>
+    <message>
+        <source>(%1, %2, %3) mm</source>
+        <translation>(%1, %2, %3) mm</translation>
+    </message>
+    <message>
+        <source>%1 reports a fault: forces are off. Disconnect it, or reconnect it to try again.</source>
+        <translation>%1 melaporkan ralat: daya dimatikan. Putuskannya, atau sambung semula untuk mencuba lagi.</translation>
+    </message>
+    <message>
+        <source>%1 is disconnected (unplugged?): forces are off. Plug it back in or choose another device.</source>
+        <translation>%1 terputus (tercabut?): daya dimatikan. Pasangkannya semula atau pilih peranti lain.</translation>
+    </message>
+    <message>
+        <source>%1 is coming back (%2): forces are off.</source>
+        <translation>%1 sedang kembali (%2): daya dimatikan.</translation>
+    </message>
+    <message>
+        <source>%1 is back: forces are held off until the tool eases off the tissue.</source>
+        <translation>%1 telah kembali: daya ditahan sehingga alat melonggarkan tekanan pada tisu.</translation>
+    </message>
+    <message>
+        <source>%1 is back: forces are ramping in.</source>
+        <translation>%1 telah kembali: daya sedang ditingkatkan.</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ExerciseController</name>
+    <message>
+        <source>The results database is not open: trainees cannot be stored.</source>
+        <translation>Pangkalan data keputusan tidak dibuka: pelatih tidak dapat disimpan.</translation>
+    </message>
+    <message>
+        <source>Choose a trainee, or add one with New…, before starting.</source>
+        <translation>Pilih pelatih, atau tambah satu dengan Baharu…, sebelum bermula.</translation>
+    </message>
+    <message>
+        <source>Choose an exercise first.</source>
+        <translation>Pilih latihan dahulu.</translation>
+    </message>
+    <message>
+        <source>An exercise is already running: stop it first.</source>
+        <translation>Latihan sedang berjalan: hentikannya dahulu.</translation>
+    </message>
+    <message>
+        <source>Preview</source>
+        <translation>Pratonton</translation>
+    </message>
+    <message>
+        <source>Preview of &quot;%1&quot;: not stored.</source>
+        <translation>Pratonton &quot;%1&quot;: tidak disimpan.</translation>
+    </message>
+    <message>
+        <source>The recordings folder %1 cannot be created: the exercise cannot be recorded and scored.</source>
+        <translation>Folder rakaman %1 tidak dapat dicipta: latihan tidak dapat dirakam dan diberi markah.</translation>
+    </message>
+    <message>
+        <source>Exercise &quot;%1&quot; started; recording to %2</source>
+        <translation>Latihan &quot;%1&quot; bermula; merakam ke %2</translation>
+    </message>
+    <message>
+        <source>the recording was stopped</source>
+        <translation>rakaman telah dihentikan</translation>
+    </message>
+    <message>
+        <source>Marked</source>
+        <translation>Ditanda</translation>
+    </message>
+    <message>
+        <source>Stopped before the session began: nothing recorded.</source>
+        <translation>Dihentikan sebelum sesi bermula: tiada apa-apa dirakam.</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>dihentikan</translation>
+    </message>
+    <message>
+        <source>The exercise could not go on: %1</source>
+        <translation>Latihan tidak dapat diteruskan: %1</translation>
+    </message>
+    <message>
+        <source>Exercise ended: %1</source>
+        <translation>Latihan tamat: %1</translation>
+    </message>
+    <message>
+        <source>The result was NOT stored: %1</source>
+        <translation>Keputusan TIDAK disimpan: %1</translation>
+    </message>
+    <message>
+        <source>the results database is not open</source>
+        <translation>pangkalan data keputusan tidak dibuka</translation>
+    </message>
+    <message>
+        <source>Result stored for %1.</source>
+        <translation>Keputusan disimpan untuk %1.</translation>
+    </message>
+    <message>
+        <source>Ended: %1. </source>
+        <translation>Tamat: %1. </translation>
+    </message>
+    <message>
+        <source>Exercise &quot;%1&quot;: score %2</source>
+        <translation>Latihan &quot;%1&quot;: markah %2</translation>
+    </message>
+    <message>
+        <source>There is no score to export yet.</source>
+        <translation>Belum ada markah untuk dieksport.</translation>
+    </message>
+    <message>
+        <source>This result has no recording to report from.</source>
+        <translation>Keputusan ini tiada rakaman untuk dilaporkan.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ExerciseEditorPanel</name>
+    <message>
+        <source>Unsaved exercise</source>
+        <translation>Latihan belum disimpan</translation>
+    </message>
+    <message>
+        <source>The exercise &quot;%1&quot; has changes that are not saved. Save them first?</source>
+        <translation>Latihan &quot;%1&quot; mempunyai perubahan yang belum disimpan. Simpan dahulu?</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Buat asal</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Buat semula</translation>
+    </message>
+    <message>
+        <source>Type:</source>
+        <translation>Jenis:</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Nama:</translation>
+    </message>
+    <message>
+        <source>Description:</source>
+        <translation>Keterangan:</translation>
+    </message>
+    <message>
+        <source>Mesh:</source>
+        <translation>Jejaring:</translation>
+    </message>
+    <message>
+        <source>Tissue preset:</source>
+        <translation>Praset tisu:</translation>
+    </message>
+    <message>
+        <source>Time limit:</source>
+        <translation>Had masa:</translation>
+    </message>
+    <message>
+        <source>Damage beyond:</source>
+        <translation>Kerosakan melebihi:</translation>
+    </message>
+    <message>
+        <source>Excessive force:</source>
+        <translation>Daya berlebihan:</translation>
+    </message>
+    <message>
+        <source>The mesh &apos;%1&apos; cannot be found.</source>
+        <translation>Jejaring &apos;%1&apos; tidak ditemui.</translation>
+    </message>
+    <message>
+        <source>Centre:</source>
+        <translation>Pusat:</translation>
+    </message>
+    <message>
+        <source>Radius:</source>
+        <translation>Jejari:</translation>
+    </message>
+    <message>
+        <source>Stiffness factor:</source>
+        <translation>Faktor kekakuan:</translation>
+    </message>
+    <message>
+        <source>Band from:</source>
+        <translation>Jalur dari:</translation>
+    </message>
+    <message>
+        <source>Band to:</source>
+        <translation>Jalur hingga:</translation>
+    </message>
+    <message>
+        <source>Tolerance:</source>
+        <translation>Toleransi:</translation>
+    </message>
+    <message>
+        <source>Press targets</source>
+        <translation>Tekan sasaran</translation>
+    </message>
+    <message>
+        <source>Find the lump</source>
+        <translation>Cari ketulan</translation>
+    </message>
+    <message>
+        <source>Trace a path</source>
+        <translation>Jejaki laluan</translation>
+    </message>
+    <message>
+        <source>A new exercise: press a sequence of surface targets, each with a force window and a hold.</source>
+        <translation>Latihan baharu: tekan satu jujukan sasaran pada permukaan, setiap satu dengan tetingkap daya dan tempoh tahan.</translation>
+    </message>
+    <message>
+        <source>A new exercise: find a hidden stiff inclusion by palpation and mark it.</source>
+        <translation>Latihan baharu: cari rangkuman keras yang tersembunyi dengan palpasi dan tandakannya.</translation>
+    </message>
+    <message>
+        <source>A new exercise: trace a path on the surface, keeping the force in a band.</source>
+        <translation>Latihan baharu: jejaki laluan pada permukaan, dengan daya kekal dalam satu jalur.</translation>
+    </message>
+    <message>
+        <source>New: %1</source>
+        <translation>Baharu: %1</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Baharu</translation>
+    </message>
+    <message>
+        <source>A new exercise of a type; asks before unsaved changes are lost.</source>
+        <translation>Latihan baharu bagi satu jenis; bertanya sebelum perubahan yang belum disimpan hilang.</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Buka…</translation>
+    </message>
+    <message>
+        <source>Open an exercise file (Ctrl+O).</source>
+        <translation>Buka fail latihan (Ctrl+O).</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Simpan</translation>
+    </message>
+    <message>
+        <source>Save the exercise to its file (Ctrl+S); refused while it has problems.</source>
+        <translation>Simpan latihan ke failnya (Ctrl+S); ditolak selagi ada masalah.</translation>
+    </message>
+    <message>
+        <source>Save As…</source>
+        <translation>Simpan Sebagai…</translation>
+    </message>
+    <message>
+        <source>Save the exercise to a new file (Ctrl+Shift+S).</source>
+        <translation>Simpan latihan ke fail baharu (Ctrl+Shift+S).</translation>
+    </message>
+    <message>
+        <source>Try it</source>
+        <translation>Cuba</translation>
+    </message>
+    <message>
+        <source>Run this exercise now as a trainee would, without saving it (F5).</source>
+        <translation>Jalankan latihan ini sekarang seperti pelatih, tanpa menyimpannya (F5).</translation>
+    </message>
+    <message>
+        <source>Stop placing</source>
+        <translation>Berhenti meletak</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Buang</translation>
+    </message>
+    <message>
+        <source>Move up</source>
+        <translation>Naikkan</translation>
+    </message>
+    <message>
+        <source>Move down</source>
+        <translation>Turunkan</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Latihan</translation>
+    </message>
+    <message>
+        <source>What the trainee does. Each type keeps its own points: switching back restores them.</source>
+        <translation>Apa yang dilakukan oleh pelatih. Setiap jenis menyimpan titiknya sendiri: bertukar semula memulihkannya.</translation>
+    </message>
+    <message>
+        <source>The name trainees and score reports see (name).</source>
+        <translation>Nama yang dilihat oleh pelatih dan laporan markah (name).</translation>
+    </message>
+    <message>
+        <source>Required</source>
+        <translation>Wajib</translation>
+    </message>
+    <message>
+        <source>What the trainee is asked to do, shown before the exercise starts (description).</source>
+        <translation>Apa yang perlu dilakukan oleh pelatih, ditunjukkan sebelum latihan bermula (description).</translation>
+    </message>
+    <message>
+        <source>Tissue</source>
+        <translation>Tisu</translation>
+    </message>
+    <message>
+        <source>The mesh file (mesh): a shipped mesh, a path relative to resources/ or to the exercise file, or an absolute path. Points are vertices of this file.</source>
+        <translation>Fail jejaring (mesh): jejaring yang disertakan, laluan relatif kepada resources/ atau kepada fail latihan, atau laluan mutlak. Titik ialah bucu fail ini.</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Semak imbas…</translation>
+    </message>
+    <message>
+        <source>Choose a mesh file (OBJ, OFF, PLY, STL, OM).</source>
+        <translation>Pilih fail jejaring (OBJ, OFF, PLY, STL, OM).</translation>
+    </message>
+    <message>
+        <source>Show this mesh</source>
+        <translation>Tunjukkan jejaring ini</translation>
+    </message>
+    <message>
+        <source>Draw the exercise&apos;s mesh in the viewport, so that points can be placed by clicking.</source>
+        <translation>Lukis jejaring latihan dalam port pandangan, supaya titik boleh diletakkan dengan mengklik.</translation>
+    </message>
+    <message>
+        <source>The tissue preset file (tissue_preset): how the tissue feels.</source>
+        <translation>Fail praset tisu (tissue_preset): bagaimana tisu terasa.</translation>
+    </message>
+    <message>
+        <source>Choose a tissue preset file (JSON).</source>
+        <translation>Pilih fail praset tisu (JSON).</translation>
+    </message>
+    <message>
+        <source>Limits</source>
+        <translation>Had</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Time the trainee has (time_limit_s); what happens after it is not scored.</source>
+        <translation>Masa yang ada pada pelatih (time_limit_s); apa yang berlaku selepasnya tidak diberi markah.</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Tissue displaced further than this counts as damage (damage.displacement_limit_mm).</source>
+        <translation>Tisu yang teranjak lebih jauh daripada ini dikira sebagai kerosakan (damage.displacement_limit_mm).</translation>
+    </message>
+    <message>
+        <source> N</source>
+        <translation> N</translation>
+    </message>
+    <message>
+        <source>A force above this is excessive (force.excessive_n); every target&apos;s lower force must stay below it.</source>
+        <translation>Daya melebihi ini adalah berlebihan (force.excessive_n); daya bawah setiap sasaran mesti kekal di bawahnya.</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <source>Vertex</source>
+        <translation>Bucu</translation>
+    </message>
+    <message>
+        <source>Fmin N</source>
+        <translation>Fmin N</translation>
+    </message>
+    <message>
+        <source>Fmax N</source>
+        <translation>Fmax N</translation>
+    </message>
+    <message>
+        <source>Hold s</source>
+        <translation>Tahan s</translation>
+    </message>
+    <message>
+        <source>Tol. mm</source>
+        <translation>Tol. mm</translation>
+    </message>
+    <message>
+        <source>The order the trainee presses them in.</source>
+        <translation>Urutan pelatih menekannya.</translation>
+    </message>
+    <message>
+        <source>The target&apos;s vertex, in the mesh file&apos;s numbering (vertex).</source>
+        <translation>Bucu sasaran, dalam penomboran fail jejaring (vertex).</translation>
+    </message>
+    <message>
+        <source>The force window&apos;s lower end, N (force_min_n).</source>
+        <translation>Hujung bawah tetingkap daya, N (force_min_n).</translation>
+    </message>
+    <message>
+        <source>The force window&apos;s upper end, N (force_max_n).</source>
+        <translation>Hujung atas tetingkap daya, N (force_max_n).</translation>
+    </message>
+    <message>
+        <source>How long the force must stay in the window without a break, s (hold_s).</source>
+        <translation>Berapa lama daya mesti kekal dalam tetingkap tanpa putus, s (hold_s).</translation>
+    </message>
+    <message>
+        <source>How close to the target the contact must be, mm (tolerance_mm).</source>
+        <translation>Berapa dekat sentuhan mesti dengan sasaran, mm (tolerance_mm).</translation>
+    </message>
+    <message>
+        <source>Add by clicking</source>
+        <translation>Tambah dengan mengklik</translation>
+    </message>
+    <message>
+        <source>While on, each click on the mesh appends a target there, with the last target&apos;s window, hold and tolerance (Esc stops).</source>
+        <translation>Semasa hidup, setiap klik pada jejaring menambah sasaran di situ, dengan tetingkap, tempoh tahan dan toleransi sasaran terakhir (Esc menghentikan).</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Alih</translation>
+    </message>
+    <message>
+        <source>The next click on the mesh moves the selected target there.</source>
+        <translation>Klik seterusnya pada jejaring mengalihkan sasaran yang dipilih ke situ.</translation>
+    </message>
+    <message>
+        <source>Remove the selected target (Delete).</source>
+        <translation>Buang sasaran yang dipilih (Delete).</translation>
+    </message>
+    <message>
+        <source>Move the selected target earlier (Ctrl+Up).</source>
+        <translation>Alihkan sasaran yang dipilih lebih awal (Ctrl+Up).</translation>
+    </message>
+    <message>
+        <source>Move the selected target later (Ctrl+Down).</source>
+        <translation>Alihkan sasaran yang dipilih lebih lewat (Ctrl+Down).</translation>
+    </message>
+    <message>
+        <source>Place by clicking</source>
+        <translation>Letak dengan mengklik</translation>
+    </message>
+    <message>
+        <source>The next click on the mesh puts the inclusion&apos;s centre there.</source>
+        <translation>Klik seterusnya pada jejaring meletakkan pusat rangkuman di situ.</translation>
+    </message>
+    <message>
+        <source>Vertices this close to the centre are in the inclusion (find_lump.inclusion.radius_mm).</source>
+        <translation>Bucu sedekat ini dengan pusat berada dalam rangkuman (find_lump.inclusion.radius_mm).</translation>
+    </message>
+    <message>
+        <source>The inclusion&apos;s slopes are multiplied by this, in (0, 1]: smaller is stiffer (find_lump.inclusion.stiffness_factor).</source>
+        <translation>Cerun rangkuman didarab dengan nilai ini, dalam (0, 1]: lebih kecil lebih keras (find_lump.inclusion.stiffness_factor).</translation>
+    </message>
+    <message>
+        <source>While on, each click on the mesh appends a path point there (Esc stops).</source>
+        <translation>Semasa hidup, setiap klik pada jejaring menambah titik laluan di situ (Esc menghentikan).</translation>
+    </message>
+    <message>
+        <source>The next click on the mesh moves the selected path point there.</source>
+        <translation>Klik seterusnya pada jejaring mengalihkan titik laluan yang dipilih ke situ.</translation>
+    </message>
+    <message>
+        <source>Remove the selected path point (Delete).</source>
+        <translation>Buang titik laluan yang dipilih (Delete).</translation>
+    </message>
+    <message>
+        <source>Move the selected point earlier on the path (Ctrl+Up).</source>
+        <translation>Alihkan titik yang dipilih lebih awal pada laluan (Ctrl+Up).</translation>
+    </message>
+    <message>
+        <source>Move the selected point later on the path (Ctrl+Down).</source>
+        <translation>Alihkan titik yang dipilih lebih lewat pada laluan (Ctrl+Down).</translation>
+    </message>
+    <message>
+        <source>The force band&apos;s lower end (trace.force_min_n).</source>
+        <translation>Hujung bawah jalur daya (trace.force_min_n).</translation>
+    </message>
+    <message>
+        <source>The force band&apos;s upper end (trace.force_max_n).</source>
+        <translation>Hujung atas jalur daya (trace.force_max_n).</translation>
+    </message>
+    <message>
+        <source>A path point is covered by contact this close to it (trace.tolerance_mm).</source>
+        <translation>Titik laluan dikira diliputi oleh sentuhan sedekat ini (trace.tolerance_mm).</translation>
+    </message>
+    <message>
+        <source>Rubric</source>
+        <translation>Rubrik</translation>
+    </message>
+    <message>
+        <source>Metric</source>
+        <translation>Metrik</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Pemberat</translation>
+    </message>
+    <message>
+        <source>Full</source>
+        <translation>Penuh</translation>
+    </message>
+    <message>
+        <source>Zero</source>
+        <translation>Sifar</translation>
+    </message>
+    <message>
+        <source>What is measured (the rubric key; its tooltip says what it is).</source>
+        <translation>Apa yang diukur (kunci rubrik; petua alatnya menerangkannya).</translation>
+    </message>
+    <message>
+        <source>The metric&apos;s unit.</source>
+        <translation>Unit metrik.</translation>
+    </message>
+    <message>
+        <source>Relative weight (0: reported, not scored).</source>
+        <translation>Pemberat relatif (0: dilaporkan, tidak diberi markah).</translation>
+    </message>
+    <message>
+        <source>At or beyond this value the line scores full marks.</source>
+        <translation>Pada atau melepasi nilai ini baris mendapat markah penuh.</translation>
+    </message>
+    <message>
+        <source>At or beyond this value (away from full) the line scores zero.</source>
+        <translation>Pada atau melepasi nilai ini (menjauhi penuh) baris mendapat sifar.</translation>
+    </message>
+    <message>
+        <source>Grey lines are the defaults (docs/scoring.md), computed from the exercise&apos;s own numbers; editing a line sets it in the exercise.</source>
+        <translation>Baris kelabu ialah lalai (docs/scoring.md), dikira daripada nombor latihan itu sendiri; menyunting baris menetapkannya dalam latihan.</translation>
+    </message>
+    <message>
+        <source>Reset to defaults</source>
+        <translation>Set semula ke lalai</translation>
+    </message>
+    <message>
+        <source>Remove every rubric line the exercise sets: all metrics use the defaults.</source>
+        <translation>Buang setiap baris rubrik yang ditetapkan oleh latihan: semua metrik menggunakan lalai.</translation>
+    </message>
+    <message>
+        <source>New exercise: %1</source>
+        <translation>Latihan baharu: %1</translation>
+    </message>
+    <message>
+        <source>Not opened:</source>
+        <translation>Tidak dibuka:</translation>
+    </message>
+    <message>
+        <source>Opened %1.</source>
+        <translation>%1 dibuka.</translation>
+    </message>
+    <message>
+        <source>No file to save to.</source>
+        <translation>Tiada fail untuk disimpan.</translation>
+    </message>
+    <message>
+        <source>Not saved: the exercise has problems:</source>
+        <translation>Tidak disimpan: latihan mempunyai masalah:</translation>
+    </message>
+    <message>
+        <source>Not saved:</source>
+        <translation>Tidak disimpan:</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>%1 disimpan.</translation>
+    </message>
+    <message>
+        <source>Not saved.</source>
+        <translation>Tidak disimpan.</translation>
+    </message>
+    <message>
+        <source>Save exercise</source>
+        <translation>Simpan latihan</translation>
+    </message>
+    <message>
+        <source>Exercises (*.json)</source>
+        <translation>Latihan (*.json)</translation>
+    </message>
+    <message>
+        <source>Open exercise</source>
+        <translation>Buka latihan</translation>
+    </message>
+    <message>
+        <source>Exercises (*.json);;All files (*)</source>
+        <translation>Latihan (*.json);;Semua fail (*)</translation>
+    </message>
+    <message>
+        <source>Choose a mesh</source>
+        <translation>Pilih jejaring</translation>
+    </message>
+    <message>
+        <source>Meshes (*.off *.obj *.ply *.stl *.om);;All files (*)</source>
+        <translation>Jejaring (*.off *.obj *.ply *.stl *.om);;Semua fail (*)</translation>
+    </message>
+    <message>
+        <source>Choose a tissue preset</source>
+        <translation>Pilih praset tisu</translation>
+    </message>
+    <message>
+        <source>Tissue presets (*.json);;All files (*)</source>
+        <translation>Praset tisu (*.json);;Semua fail (*)</translation>
+    </message>
+    <message>
+        <source>(%1, %2, %3) mm</source>
+        <translation>(%1, %2, %3) mm</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation>bucu %1</translation>
+    </message>
+    <message>
+        <source>(%1, %2, %3) mm, snapped to the nearest vertex</source>
+        <translation>(%1, %2, %3) mm, dilekatkan pada bucu terdekat</translation>
+    </message>
+    <message>
+        <source>%1.  vertex %2</source>
+        <translation>%1.  bucu %2</translation>
+    </message>
+    <message>
+        <source>%1.  (%2, %3, %4) mm</source>
+        <translation>%1.  (%2, %3, %4) mm</translation>
+    </message>
+    <message>
+        <source>  (start)</source>
+        <translation>  (mula)</translation>
+    </message>
+    <message>
+        <source>  (end)</source>
+        <translation>  (tamat)</translation>
+    </message>
+    <message>
+        <source>Weights total %1; the score is 100 × Σ wᵢsᵢ / Σ wᵢ.</source>
+        <translation>Jumlah pemberat %1; markah ialah 100 × Σ wᵢsᵢ / Σ wᵢ.</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>nama</translation>
+    </message>
+    <message>
+        <source>description</source>
+        <translation>keterangan</translation>
+    </message>
+    <message>
+        <source>time limit</source>
+        <translation>had masa</translation>
+    </message>
+    <message>
+        <source>damage limit</source>
+        <translation>had kerosakan</translation>
+    </message>
+    <message>
+        <source>excessive force</source>
+        <translation>daya berlebihan</translation>
+    </message>
+    <message>
+        <source>inclusion radius</source>
+        <translation>jejari rangkuman</translation>
+    </message>
+    <message>
+        <source>stiffness factor</source>
+        <translation>faktor kekakuan</translation>
+    </message>
+    <message>
+        <source>band&apos;s lower force</source>
+        <translation>daya bawah jalur</translation>
+    </message>
+    <message>
+        <source>band&apos;s upper force</source>
+        <translation>daya atas jalur</translation>
+    </message>
+    <message>
+        <source>trace tolerance</source>
+        <translation>toleransi jejakan</translation>
+    </message>
+    <message>
+        <source>Change %1</source>
+        <translation>Ubah %1</translation>
+    </message>
+    <message>
+        <source>Change target %1&apos;s %2</source>
+        <translation>Ubah %2 sasaran %1</translation>
+    </message>
+    <message>
+        <source>Change the rubric&apos;s %1</source>
+        <translation>Ubah %1 rubrik</translation>
+    </message>
+    <message>
+        <source>Reset the rubric</source>
+        <translation>Set semula rubrik</translation>
+    </message>
+    <message>
+        <source>Change the mesh</source>
+        <translation>Ubah jejaring</translation>
+    </message>
+    <message>
+        <source>Change the tissue preset</source>
+        <translation>Ubah praset tisu</translation>
+    </message>
+    <message>
+        <source>Change the type to %1</source>
+        <translation>Ubah jenis kepada %1</translation>
+    </message>
+    <message>
+        <source>Remove target %1</source>
+        <translation>Buang sasaran %1</translation>
+    </message>
+    <message>
+        <source>Remove path point %1</source>
+        <translation>Buang titik laluan %1</translation>
+    </message>
+    <message>
+        <source>Move target %1 up</source>
+        <translation>Naikkan sasaran %1</translation>
+    </message>
+    <message>
+        <source>Move target %1 down</source>
+        <translation>Turunkan sasaran %1</translation>
+    </message>
+    <message>
+        <source>Move path point %1 up</source>
+        <translation>Naikkan titik laluan %1</translation>
+    </message>
+    <message>
+        <source>Move path point %1 down</source>
+        <translation>Turunkan titik laluan %1</translation>
+    </message>
+    <message>
+        <source>Click the mesh to add targets; Esc stops.</source>
+        <translation>Klik jejaring untuk menambah sasaran; Esc menghentikan.</translation>
+    </message>
+    <message>
+        <source>Click the mesh where the lump&apos;s centre goes; Esc cancels.</source>
+        <translation>Klik jejaring di tempat pusat ketulan; Esc membatalkan.</translation>
+    </message>
+    <message>
+        <source>Click the mesh to add path points in order; Esc stops.</source>
+        <translation>Klik jejaring untuk menambah titik laluan mengikut urutan; Esc menghentikan.</translation>
+    </message>
+    <message>
+        <source>Click the mesh where the selected point goes; Esc cancels.</source>
+        <translation>Klik jejaring di tempat titik yang dipilih; Esc membatalkan.</translation>
+    </message>
+    <message>
+        <source>The viewport does not show this exercise&apos;s mesh: press Show this mesh first.</source>
+        <translation>Port pandangan tidak menunjukkan jejaring latihan ini: tekan Tunjukkan jejaring ini dahulu.</translation>
+    </message>
+    <message>
+        <source>That click was on another mesh than the exercise&apos;s: press Show this mesh first.</source>
+        <translation>Klik itu pada jejaring lain daripada jejaring latihan: tekan Tunjukkan jejaring ini dahulu.</translation>
+    </message>
+    <message>
+        <source>Vertex %1 is not on the drawn mesh.</source>
+        <translation>Bucu %1 tiada pada jejaring yang dilukis.</translation>
+    </message>
+    <message>
+        <source>Add target %1</source>
+        <translation>Tambah sasaran %1</translation>
+    </message>
+    <message>
+        <source>Add path point %1</source>
+        <translation>Tambah titik laluan %1</translation>
+    </message>
+    <message>
+        <source>Place the lump</source>
+        <translation>Letak ketulan</translation>
+    </message>
+    <message>
+        <source>Move point %1</source>
+        <translation>Alih titik %1</translation>
+    </message>
+    <message>
+        <source>mesh: &apos;%1&apos; is not found beside the exercise file or under resources/</source>
+        <translation>mesh: &apos;%1&apos; tidak ditemui di sebelah fail latihan atau di bawah resources/</translation>
+    </message>
+    <message>
+        <source>tissue_preset: &apos;%1&apos; is not found beside the exercise file or under resources/</source>
+        <translation>tissue_preset: &apos;%1&apos; tidak ditemui di sebelah fail latihan atau di bawah resources/</translation>
+    </message>
+    <message>
+        <source>mesh: %1</source>
+        <translation>jejaring: %1</translation>
+    </message>
+    <message>
+        <source>no mesh</source>
+        <translation>tiada jejaring</translation>
+    </message>
+    <message>
+        <source>mesh: the viewport shows %1, not this exercise&apos;s %2: press Show this mesh to place points by clicking</source>
+        <translation>mesh: port pandangan menunjukkan %1, bukan %2 latihan ini: tekan Tunjukkan jejaring ini untuk meletak titik dengan mengklik</translation>
+    </message>
+    <message>
+        <source>Not found.</source>
+        <translation>Tidak ditemui.</translation>
+    </message>
+    <message>
+        <source>Drawn in the viewport.</source>
+        <translation>Dilukis dalam port pandangan.</translation>
+    </message>
+    <message>
+        <source>Not drawn in the viewport.</source>
+        <translation>Tidak dilukis dalam port pandangan.</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>belum disimpan</translation>
+    </message>
+    <message>
+        <source>%1 — %2%3</source>
+        <translation>%1 — %2%3</translation>
+    </message>
+    <message>
+        <source>(unnamed)</source>
+        <translation>(tanpa nama)</translation>
+    </message>
+    <message>
+        <source> (modified)</source>
+        <translation> (diubah)</translation>
+    </message>
+    <message>
+        <source>Cannot try it: the exercise has problems (listed above).</source>
+        <translation>Tidak dapat dicuba: latihan mempunyai masalah (disenaraikan di atas).</translation>
+    </message>
+    <message>
+        <source>State level-of-detail targets</source>
+        <translation>Nyatakan sasaran aras perincian</translation>
+    </message>
+    <message>
+        <source>The accuracy and haptic time the model for this exercise must meet (needs)</source>
+        <translation>Ketepatan dan masa haptik yang mesti dipenuhi oleh model untuk latihan ini (needs)</translation>
+    </message>
+    <message>
+        <source>Largest displacement error against the reference (needs.max_error)</source>
+        <translation>Ralat anjakan terbesar berbanding rujukan (needs.max_error)</translation>
+    </message>
+    <message>
+        <source>Max error:</source>
+        <translation>Ralat maks.:</translation>
+    </message>
+    <message>
+        <source>Longest haptic tick the model may take (needs.budget_us)</source>
+        <translation>Tik haptik terpanjang yang boleh diambil oleh model (needs.budget_us)</translation>
+    </message>
+    <message>
+        <source>Tick budget:</source>
+        <translation>Bajet tik:</translation>
+    </message>
+    <message>
+        <source>State targets</source>
+        <translation>Nyatakan sasaran</translation>
+    </message>
+    <message>
+        <source>Remove targets</source>
+        <translation>Buang sasaran</translation>
+    </message>
+    <message>
+        <source>max error</source>
+        <translation>ralat maks.</translation>
+    </message>
+    <message>
+        <source>tick budget</source>
+        <translation>bajet tik</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::FirstRun</name>
+    <message>
+        <source>Cannot open the sample scene</source>
+        <translation>Tidak dapat membuka adegan contoh</translation>
+    </message>
+    <message>
+        <source>The sample mesh %1 was not found (set PALPATE_RESOURCES).</source>
+        <translation>Jejaring contoh %1 tidak ditemui (tetapkan PALPATE_RESOURCES).</translation>
+    </message>
+    <message>
+        <source>Cannot start touch mode</source>
+        <translation>Tidak dapat memulakan mod sentuh</translation>
+    </message>
+    <message>
+        <source>Touch mode: left-drag presses the tissue, the wheel sets the depth, right-drag turns the view.</source>
+        <translation>Mod sentuh: seret kiri menekan tisu, roda menetapkan kedalaman, seret kanan memutar pandangan.</translation>
+    </message>
+    <message>
+        <source>Cannot run the example exercise</source>
+        <translation>Tidak dapat menjalankan latihan contoh</translation>
+    </message>
+    <message>
+        <source>The example exercise exercises/press_targets.json was not found (set PALPATE_RESOURCES).</source>
+        <translation>Latihan contoh exercises/press_targets.json tidak ditemui (tetapkan PALPATE_RESOURCES).</translation>
+    </message>
+    <message>
+        <source>Haptic rate not applied</source>
+        <translation>Kadar haptik tidak digunakan</translation>
+    </message>
+    <message>
+        <source>User Guide</source>
+        <translation>Panduan Pengguna</translation>
+    </message>
+    <message>
+        <source>The user guide (user-guide.md) was not found. It is installed in share/doc/palpate; in a source tree it is docs/user-guide.md.</source>
+        <translation>Panduan pengguna (user-guide.md) tidak ditemui. Ia dipasang dalam share/doc/palpate; dalam pepohon sumber ia ialah docs/user-guide.md.</translation>
+    </message>
+    <message>
+        <source>Palpate User Guide</source>
+        <translation>Panduan Pengguna Palpate</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Keutamaan…</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Panduan Pengguna</translation>
+    </message>
+    <message>
+        <source>&amp;Welcome</source>
+        <translation>&amp;Selamat Datang</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ForceGauge</name>
+    <message>
+        <source>Force gauge</source>
+        <translation>Tolok daya</translation>
+    </message>
+    <message>
+        <source>%1 N</source>
+        <translation>%1 N</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::HistoryPanel</name>
+    <message>
+        <source>Trainee:</source>
+        <translation>Pelatih:</translation>
+    </message>
+    <message>
+        <source>Trainee</source>
+        <translation>Pelatih</translation>
+    </message>
+    <message>
+        <source>When</source>
+        <translation>Bila</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Latihan</translation>
+    </message>
+    <message>
+        <source>Score</source>
+        <translation>Markah</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Masa (s)</translation>
+    </message>
+    <message>
+        <source>Report PDF…</source>
+        <translation>Laporan PDF…</translation>
+    </message>
+    <message>
+        <source>Re-scores the result&apos;s recording and writes its PDF report</source>
+        <translation>Memarkah semula rakaman keputusan dan menulis laporan PDF-nya</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>Main semula</translation>
+    </message>
+    <message>
+        <source>Opens the result&apos;s recording in the Recorder</source>
+        <translation>Membuka rakaman keputusan dalam Perakam</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Tarikh</translation>
+    </message>
+    <message>
+        <source>Scores of %1</source>
+        <translation>Markah %1</translation>
+    </message>
+    <message>
+        <source>No trainee yet</source>
+        <translation>Belum ada pelatih</translation>
+    </message>
+    <message>
+        <source>No trainees yet: add one in the Exercise dock.</source>
+        <translation>Belum ada pelatih: tambah satu dalam dok Latihan.</translation>
+    </message>
+    <message>
+        <source>No results yet.</source>
+        <translation>Belum ada keputusan.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n session(s); best %1, mean %2</source>
+        <translation>
+            <numerusform>%n sesi; terbaik %1, purata %2</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>palpate::LodPanel</name>
+    <message>
+        <source>1 ring</source>
+        <translation>1 gelang</translation>
+    </message>
+    <message>
+        <source>%1 rings</source>
+        <translation>%1 gelang</translation>
+    </message>
+    <message>
+        <source>Targets</source>
+        <translation>Sasaran</translation>
+    </message>
+    <message>
+        <source>Levels and rings</source>
+        <translation>Aras dan gelang</translation>
+    </message>
+    <message>
+        <source>Max &amp;error:</source>
+        <translation>&amp;Ralat maks.:</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>The displacement error allowed: RMS over the loaded region divided by the peak displacement, measured on the displayed (source) surface. 10 % is 0.1.</source>
+        <translation>Ralat anjakan yang dibenarkan: RMS ke atas kawasan yang dibebani dibahagi dengan anjakan puncak, diukur pada permukaan (sumber) yang dipaparkan. 10 % ialah 0.1.</translation>
+    </message>
+    <message>
+        <source>Tick &amp;budget:</source>
+        <translation>&amp;Bajet tik:</translation>
+    </message>
+    <message>
+        <source> µs</source>
+        <translation> µs</translation>
+    </message>
+    <message>
+        <source>The time one haptic tick may take on this machine, in microseconds (a 1 kHz loop has 1000 µs per tick for everything).</source>
+        <translation>Masa yang boleh diambil oleh satu tik haptik pada mesin ini, dalam mikrosaat (gelung 1 kHz mempunyai 1000 µs setiap tik untuk segala-galanya).</translation>
+    </message>
+    <message>
+        <source>&amp;Plan</source>
+        <translation>&amp;Rancang</translation>
+    </message>
+    <message>
+        <source>Make (or read from the cache next to the mesh) the coarser levels, measure every level and ring count on this machine and choose.</source>
+        <translation>Bina (atau baca daripada cache di sebelah jejaring) aras yang lebih kasar, ukur setiap aras dan bilangan gelang pada mesin ini dan pilih.</translation>
+    </message>
+    <message>
+        <source>&amp;Store targets in preset</source>
+        <translation>&amp;Simpan sasaran dalam praset</translation>
+    </message>
+    <message>
+        <source>Write these targets into the current tissue preset as its &quot;needs&quot;.</source>
+        <translation>Tulis sasaran ini ke dalam praset tisu semasa sebagai &quot;needs&quot;-nya.</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Batal</translation>
+    </message>
+    <message>
+        <source>Stop after the candidate being measured; what was measured so far is planned.</source>
+        <translation>Berhenti selepas calon yang sedang diukur; apa yang telah diukur dirancang.</translation>
+    </message>
+    <message>
+        <source>&amp;Use chosen</source>
+        <translation>&amp;Guna pilihan</translation>
+    </message>
+    <message>
+        <source>Load the planner&apos;s choice: its level&apos;s mesh and ring count.</source>
+        <translation>Muatkan pilihan perancang: jejaring arasnya dan bilangan gelang.</translation>
+    </message>
+    <message>
+        <source>Use selected (&amp;override)</source>
+        <translation>Guna yang dipilih (&amp;atasi)</translation>
+    </message>
+    <message>
+        <source>Load the row selected in the table instead of the planner&apos;s choice.</source>
+        <translation>Muatkan baris yang dipilih dalam jadual dan bukannya pilihan perancang.</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>Aras</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Bucu</translation>
+    </message>
+    <message>
+        <source>Rings</source>
+        <translation>Gelang</translation>
+    </message>
+    <message>
+        <source>Error %</source>
+        <translation>Ralat %</translation>
+    </message>
+    <message>
+        <source>Tick µs</source>
+        <translation>Tik µs</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>Keputusan</translation>
+    </message>
+    <message>
+        <source>0 is the mesh itself; each further level keeps about half the vertices of the one before.</source>
+        <translation>0 ialah jejaring itu sendiri; setiap aras seterusnya menyimpan kira-kira separuh bucu aras sebelumnya.</translation>
+    </message>
+    <message>
+        <source>Vertices of the level&apos;s mesh.</source>
+        <translation>Bucu jejaring aras itu.</translation>
+    </message>
+    <message>
+        <source>Rings of neighbours the slope-ring model moves around the touched vertex.</source>
+        <translation>Gelang jiran yang digerakkan oleh model gelang-cerun di sekeliling bucu yang disentuh.</translation>
+    </message>
+    <message>
+        <source>Displacement error against the flat-punch reference on the displayed surface (RMS / peak, in %); ✓ within the max error, ✗ above it.</source>
+        <translation>Ralat anjakan berbanding rujukan penebuk rata pada permukaan yang dipaparkan (RMS / puncak, dalam %); ✓ dalam ralat maks., ✗ melebihinya.</translation>
+    </message>
+    <message>
+        <source>Median time of one haptic tick on this machine, in microseconds; ✓ within the budget, ✗ over it.</source>
+        <translation>Masa median satu tik haptik pada mesin ini, dalam mikrosaat; ✓ dalam bajet, ✗ melebihinya.</translation>
+    </message>
+    <message>
+        <source>The planner&apos;s choice, the closest when nothing fits, or your override.</source>
+        <translation>Pilihan perancang, yang terdekat apabila tiada yang muat, atau pengatasan anda.</translation>
+    </message>
+    <message>
+        <source>Max error: %1 % is absurd (at most %2 %).</source>
+        <translation>Ralat maks.: %1 % tidak munasabah (paling banyak %2 %).</translation>
+    </message>
+    <message>
+        <source>Max error: must be above 0 % (it is %1 %).</source>
+        <translation>Ralat maks.: mesti melebihi 0 % (ia %1 %).</translation>
+    </message>
+    <message>
+        <source>Tick budget: %1 µs is absurd (at most %2 µs).</source>
+        <translation>Bajet tik: %1 µs tidak munasabah (paling banyak %2 µs).</translation>
+    </message>
+    <message>
+        <source>Tick budget: must be above 0 µs (it is %1 µs).</source>
+        <translation>Bajet tik: mesti melebihi 0 µs (ia %1 µs).</translation>
+    </message>
+    <message>
+        <source>No scene yet.</source>
+        <translation>Belum ada adegan.</translation>
+    </message>
+    <message>
+        <source>Targets edited here (the scene&apos;s were %1 % and %2 µs). Store them in the preset to keep them.</source>
+        <translation>Sasaran disunting di sini (sasaran adegan ialah %1 % dan %2 µs). Simpan dalam praset untuk mengekalkannya.</translation>
+    </message>
+    <message>
+        <source>Targets edited here. Store them in the preset to keep them.</source>
+        <translation>Sasaran disunting di sini. Simpan dalam praset untuk mengekalkannya.</translation>
+    </message>
+    <message>
+        <source>Targets from the scene.</source>
+        <translation>Sasaran daripada adegan.</translation>
+    </message>
+    <message>
+        <source>Targets from %1.</source>
+        <translation>Sasaran daripada %1.</translation>
+    </message>
+    <message>
+        <source>The scene states no targets: these are the panel&apos;s defaults.</source>
+        <translation>Adegan tidak menyatakan sasaran: ini ialah lalai panel.</translation>
+    </message>
+    <message>
+        <source>No mesh file: the levels are cached next to the scene&apos;s mesh file.</source>
+        <translation>Tiada fail jejaring: aras dicache di sebelah fail jejaring adegan.</translation>
+    </message>
+    <message>
+        <source>Fix the targets first: %1</source>
+        <translation>Betulkan sasaran dahulu: %1</translation>
+    </message>
+    <message>
+        <source>Cannot measure: %1</source>
+        <translation>Tidak dapat mengukur: %1</translation>
+    </message>
+    <message>
+        <source>Loading the mesh…</source>
+        <translation>Memuatkan jejaring…</translation>
+    </message>
+    <message>
+        <source>Looking for cached levels…</source>
+        <translation>Mencari aras dalam cache…</translation>
+    </message>
+    <message>
+        <source>Generating 1 coarser level: decimating</source>
+        <translation>Menjana 1 aras lebih kasar: menipiskan</translation>
+    </message>
+    <message>
+        <source>Generating %1 coarser levels: decimating</source>
+        <translation>Menjana %1 aras lebih kasar: menipiskan</translation>
+    </message>
+    <message>
+        <source>Generating levels %1/%2: mapping to the mesh</source>
+        <translation>Menjana aras %1/%2: memeta ke jejaring</translation>
+    </message>
+    <message>
+        <source>Reading cached level %1</source>
+        <translation>Membaca aras %1 dalam cache</translation>
+    </message>
+    <message>
+        <source>Levels ready</source>
+        <translation>Aras sedia</translation>
+    </message>
+    <message>
+        <source>Measuring level %1 (%2 vertices), %3: %4 of %5</source>
+        <translation>Mengukur aras %1 (%2 bucu), %3: %4 daripada %5</translation>
+    </message>
+    <message>
+        <source>Measured %1 candidates</source>
+        <translation>%1 calon diukur</translation>
+    </message>
+    <message>
+        <source>unknown error</source>
+        <translation>ralat tidak diketahui</translation>
+    </message>
+    <message>
+        <source>Planning started…</source>
+        <translation>Perancangan bermula…</translation>
+    </message>
+    <message>
+        <source>Cancelling: the candidate being measured finishes first…</source>
+        <translation>Membatalkan: calon yang sedang diukur selesai dahulu…</translation>
+    </message>
+    <message>
+        <source>Plan failed: %1</source>
+        <translation>Perancangan gagal: %1</translation>
+    </message>
+    <message>
+        <source>Levels (%1 vertices) read from the cache %2 next to the mesh.</source>
+        <translation>Aras (%1 bucu) dibaca daripada cache %2 di sebelah jejaring.</translation>
+    </message>
+    <message>
+        <source>Levels (%1 vertices) generated: %2.</source>
+        <translation>Aras (%1 bucu) dijana: %2.</translation>
+    </message>
+    <message>
+        <source>The cache could not be written (%1): the levels other than 0 cannot be used.</source>
+        <translation>Cache tidak dapat ditulis (%1): aras selain 0 tidak boleh digunakan.</translation>
+    </message>
+    <message>
+        <source>Planned in %1 s: %2 candidates measured on this machine.</source>
+        <translation>Dirancang dalam %1 s: %2 calon diukur pada mesin ini.</translation>
+    </message>
+    <message>
+        <source>Cancelled after %1 of %2 candidates: the table is partial and the plan is made from them only.</source>
+        <translation>Dibatalkan selepas %1 daripada %2 calon: jadual tidak lengkap dan rancangan dibuat daripadanya sahaja.</translation>
+    </message>
+    <message>
+        <source>Not measured: %1</source>
+        <translation>Tidak diukur: %1</translation>
+    </message>
+    <message>
+        <source>n/a</source>
+        <translation>t/b</translation>
+    </message>
+    <message>
+        <source>chosen</source>
+        <translation>dipilih</translation>
+    </message>
+    <message>
+        <source>closest</source>
+        <translation>terdekat</translation>
+    </message>
+    <message>
+        <source>override</source>
+        <translation>diatasi</translation>
+    </message>
+    <message>
+        <source>level %1 (%2 vertices), %3: error %4 %, tick %5 µs</source>
+        <translation>aras %1 (%2 bucu), %3: ralat %4 %, tik %5 µs</translation>
+    </message>
+    <message>
+        <source>No scene mesh.</source>
+        <translation>Tiada jejaring adegan.</translation>
+    </message>
+    <message>
+        <source>Nothing measured yet: Plan measures the levels on this machine.</source>
+        <translation>Belum ada apa-apa diukur: Rancang mengukur aras pada mesin ini.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;No plan:&lt;/b&gt; the targets are invalid.</source>
+        <translation>&lt;b&gt;Tiada rancangan:&lt;/b&gt; sasaran tidak sah.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Chosen:&lt;/b&gt; %1.</source>
+        <translation>&lt;b&gt;Dipilih:&lt;/b&gt; %1.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Nothing meets both targets.&lt;/b&gt; Closest: %1.</source>
+        <translation>&lt;b&gt;Tiada yang memenuhi kedua-dua sasaran.&lt;/b&gt; Terdekat: %1.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Nothing meets both targets&lt;/b&gt; and no candidate could be measured.</source>
+        <translation>&lt;b&gt;Tiada yang memenuhi kedua-dua sasaran&lt;/b&gt; dan tiada calon dapat diukur.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Override:&lt;/b&gt; %1.</source>
+        <translation>&lt;b&gt;Diatasi:&lt;/b&gt; %1.</translation>
+    </message>
+    <message>
+        <source>Why: %1</source>
+        <translation>Sebab: %1</translation>
+    </message>
+    <message>
+        <source>The level&apos;s mesh file %1 is missing (was the cache written or removed?); plan again.</source>
+        <translation>Fail jejaring aras %1 tiada (adakah cache ditulis atau dibuang?); rancang semula.</translation>
+    </message>
+    <message>
+        <source>Using %1 (override).</source>
+        <translation>Menggunakan %1 (diatasi).</translation>
+    </message>
+    <message>
+        <source>Using %1.</source>
+        <translation>Menggunakan %1.</translation>
+    </message>
+    <message>
+        <source>No scene mesh yet.</source>
+        <translation>Belum ada jejaring adegan.</translation>
+    </message>
+    <message>
+        <source>Ready: Plan measures the levels of %1.</source>
+        <translation>Sedia: Rancang mengukur aras %1.</translation>
+    </message>
+    <message>
+        <source>Candidates</source>
+        <translation>Calon</translation>
+    </message>
+    <message>
+        <source>The levels were not finished (cancelled); nothing was cached.</source>
+        <translation>Aras tidak selesai (dibatalkan); tiada apa-apa dicache.</translation>
+    </message>
+    <message>
+        <source>Planned in %1 s: %2 of %3 candidates could be measured on this machine.</source>
+        <translation>Dirancang dalam %1 s: %2 daripada %3 calon dapat diukur pada mesin ini.</translation>
+    </message>
+    <message>
+        <source>Cancelled while making the levels; nothing was measured.</source>
+        <translation>Dibatalkan semasa membina aras; tiada apa-apa diukur.</translation>
+    </message>
+    <message>
+        <source>Cancelled while making the levels; the table shows the previous plan.</source>
+        <translation>Dibatalkan semasa membina aras; jadual menunjukkan rancangan sebelumnya.</translation>
+    </message>
+    <message>
+        <source>Cancelled before the first candidate; nothing was measured.</source>
+        <translation>Dibatalkan sebelum calon pertama; tiada apa-apa diukur.</translation>
+    </message>
+    <message>
+        <source>Cancelled before the first candidate; the table shows the previous plan.</source>
+        <translation>Dibatalkan sebelum calon pertama; jadual menunjukkan rancangan sebelumnya.</translation>
+    </message>
+    <message>
+        <source>%1 of %2 candidates could not be measured (n/a): the row&apos;s tooltip says why.</source>
+        <translation>%1 daripada %2 calon tidak dapat diukur (t/b): petua alat baris menerangkan sebabnya.</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::MainWindow</name>
+    <message>
+        <source>Touch depth %1 mm</source>
+        <translation>Kedalaman sentuh %1 mm</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Parameters not applied</source>
+        <translation>Parameter tidak digunakan</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Peranti</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Charts</source>
+        <translation>Carta</translation>
+    </message>
+    <message>
+        <source>: not loaded</source>
+        <translation>: tidak dimuatkan</translation>
+    </message>
+    <message>
+        <source>Cannot open mesh</source>
+        <translation>Tidak dapat membuka jejaring</translation>
+    </message>
+    <message>
+        <source>About Palpate</source>
+        <translation>Perihal Palpate</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Palpate %1&lt;/h3&gt;&lt;p&gt;Haptic soft-tissue deformation: the slope-ring method of Ahmad, Sulaiman and Rambli, made exact and measured.&lt;/p&gt;&lt;p&gt;Built with these libraries (Debian 12 packages):&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (Widgets, OpenGL): LGPL-3.0&lt;/li&gt;&lt;li&gt;OpenMesh: BSD-3-Clause&lt;/li&gt;&lt;li&gt;GLM: MIT (Happy Bunny licence)&lt;/li&gt;&lt;li&gt;nlohmann/json: MIT&lt;/li&gt;&lt;li&gt;GoogleTest and Google Benchmark (tests only): BSD-3-Clause, Apache-2.0&lt;/li&gt;&lt;/ul&gt;</source>
+        <translation>&lt;h3&gt;Palpate %1&lt;/h3&gt;&lt;p&gt;Ubah bentuk tisu lembut haptik: kaedah gelang-cerun Ahmad, Sulaiman dan Rambli, dijadikan tepat dan diukur.&lt;/p&gt;&lt;p&gt;Dibina dengan pustaka berikut (pakej Debian 12):&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (Widgets, OpenGL): LGPL-3.0&lt;/li&gt;&lt;li&gt;OpenMesh: BSD-3-Clause&lt;/li&gt;&lt;li&gt;GLM: MIT (lesen Happy Bunny)&lt;/li&gt;&lt;li&gt;nlohmann/json: MIT&lt;/li&gt;&lt;li&gt;GoogleTest dan Google Benchmark (ujian sahaja): BSD-3-Clause, Apache-2.0&lt;/li&gt;&lt;/ul&gt;</translation>
+    </message>
+    <message>
+        <source>Haptic rate: %1 Hz (loop says %2 Hz)
+Ticks: %3
+Missed deadlines: %4
+Overruns: %5
+Tick compute: last %6 µs, max %7 µs
+Jitter: last %8 µs, max %9 µs
+Scheduling: %10
+GUI: %11 fps
+Displaced vertices: %12
+Paused: %13</source>
+        <translation>Kadar haptik: %1 Hz (gelung melaporkan %2 Hz)
+Tik: %3
+Tarikh akhir terlepas: %4
+Terlebih masa: %5
+Pengiraan tik: terakhir %6 µs, maks. %7 µs
+Ketar: terakhir %8 µs, maks. %9 µs
+Penjadualan: %10
+GUI: %11 fps
+Bucu teranjak: %12
+Dijeda: %13</translation>
+    </message>
+    <message>
+        <source>SCHED_FIFO</source>
+        <translation>SCHED_FIFO</translation>
+    </message>
+    <message>
+        <source>normal (SCHED_FIFO not permitted)</source>
+        <translation>biasa (SCHED_FIFO tidak dibenarkan)</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ya</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>tidak</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Fail</translation>
+    </message>
+    <message>
+        <source>&amp;Open Mesh…</source>
+        <translation>&amp;Buka Jejaring…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Buka &amp;Terkini</translation>
+    </message>
+    <message>
+        <source>Open Recor&amp;ding…</source>
+        <translation>Buka Ra&amp;kaman…</translation>
+    </message>
+    <message>
+        <source>Play a session recording back (the live session pauses meanwhile)</source>
+        <translation>Main semula rakaman sesi (sesi langsung dijeda sementara itu)</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Keluar</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Sunting</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Buat Asal</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>Buat &amp;Semula</translation>
+    </message>
+    <message>
+        <source>&amp;Apply Parameters</source>
+        <translation>&amp;Guna Parameter</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Lihat</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Camera</source>
+        <translation>&amp;Set Semula Kamera</translation>
+    </message>
+    <message>
+        <source>&amp;Fit</source>
+        <translation>&amp;Muat</translation>
+    </message>
+    <message>
+        <source>&amp;Wireframe</source>
+        <translation>&amp;Bingkai Dawai</translation>
+    </message>
+    <message>
+        <source>Rest Shape &amp;Ghost</source>
+        <translation>&amp;Bayang Bentuk Rehat</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>S&amp;imulasi</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Jeda</translation>
+    </message>
+    <message>
+        <source>&amp;Restart</source>
+        <translation>&amp;Mula Semula</translation>
+    </message>
+    <message>
+        <source>Cannot restart</source>
+        <translation>Tidak dapat memulakan semula</translation>
+    </message>
+    <message>
+        <source>&amp;Touch Mode</source>
+        <translation>Mod &amp;Sentuh</translation>
+    </message>
+    <message>
+        <source>The mouse steers the tool: left-drag presses the tissue, the wheel sets the depth; right-drag orbits, middle-drag pans, Shift+wheel zooms</source>
+        <translation>Tetikus mengemudi alat: seret kiri menekan tisu, roda menetapkan kedalaman; seret kanan memutar, seret tengah menganjak, Shift+roda mengezum</translation>
+    </message>
+    <message>
+        <source>Re&amp;cord</source>
+        <translation>&amp;Rakam</translation>
+    </message>
+    <message>
+        <source>Record the live session to a new file (again: stop). Starting resets the tissue to rest and the force ramps in again</source>
+        <translation>Rakam sesi langsung ke fail baharu (sekali lagi: berhenti). Memulakan menetapkan semula tisu kepada rehat dan daya meningkat semula</translation>
+    </message>
+    <message>
+        <source>Add &amp;Mark</source>
+        <translation>Tambah &amp;Tanda</translation>
+    </message>
+    <message>
+        <source>Mark the current moment of the recording (the Recorder dock&apos;s text, if any)</source>
+        <translation>Tandakan detik semasa rakaman (teks dok Perakam, jika ada)</translation>
+    </message>
+    <message>
+        <source>&amp;Device</source>
+        <translation>&amp;Peranti</translation>
+    </message>
+    <message>
+        <source>Cannot switch the device</source>
+        <translation>Tidak dapat menukar peranti</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Bantuan</translation>
+    </message>
+    <message>
+        <source>&amp;About Palpate</source>
+        <translation>Perihal P&amp;alpate</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>Perihal &amp;Qt</translation>
+    </message>
+    <message>
+        <source>Haptic ticks per second achieved by the loop thread</source>
+        <translation>Tik haptik sesaat yang dicapai oleh bebenang gelung</translation>
+    </message>
+    <message>
+        <source>Time spent in a haptic tick: the last one / the longest</source>
+        <translation>Masa yang digunakan dalam satu tik haptik: yang terakhir / yang paling lama</translation>
+    </message>
+    <message>
+        <source>Lateness of the haptic thread&apos;s wake-up after its deadline: the last / the worst</source>
+        <translation>Kelewatan bebenang haptik bangun selepas tarikh akhirnya: yang terakhir / yang paling teruk</translation>
+    </message>
+    <message>
+        <source>Ticks that finished after the next deadline (and the deadlines skipped)</source>
+        <translation>Tik yang selesai selepas tarikh akhir seterusnya (dan tarikh akhir yang dilangkau)</translation>
+    </message>
+    <message>
+        <source>Whether the haptic thread runs with SCHED_FIFO priority</source>
+        <translation>Sama ada bebenang haptik berjalan dengan keutamaan SCHED_FIFO</translation>
+    </message>
+    <message>
+        <source>Frames the viewport painted per second</source>
+        <translation>Bingkai sesaat yang dilukis oleh port pandangan</translation>
+    </message>
+    <message>
+        <source>The device URI and its state</source>
+        <translation>URI peranti dan keadaannya</translation>
+    </message>
+    <message>
+        <source>The tool is pressing the tissue</source>
+        <translation>Alat sedang menekan tisu</translation>
+    </message>
+    <message>
+        <source>Force sent to the device (after the safety filter)</source>
+        <translation>Daya yang dihantar ke peranti (selepas penapis keselamatan)</translation>
+    </message>
+    <message>
+        <source>The session is being recorded, or a recording is played back</source>
+        <translation>Sesi sedang dirakam, atau rakaman sedang dimainkan semula</translation>
+    </message>
+    <message>
+        <source>&amp;Play</source>
+        <translation>&amp;Main</translation>
+    </message>
+    <message>
+        <source>No mesh, %1</source>
+        <translation>Tiada jejaring, %1</translation>
+    </message>
+    <message>
+        <source>%1, %2 vertices, %3</source>
+        <translation>%1, %2 bucu, %3</translation>
+    </message>
+    <message>
+        <source>%1
+%2 vertices, %3 triangles
+%4 renderer</source>
+        <translation>%1
+%2 bucu, %3 segi tiga
+pemapar %4</translation>
+    </message>
+    <message>
+        <source>The tissue model diverged (%1) at tick %2: the force was zeroed and the tissue reset. %3</source>
+        <translation>Model tisu mencapah (%1) pada tik %2: daya disifarkan dan tisu ditetapkan semula. %3</translation>
+    </message>
+    <message>
+        <source>haptic -</source>
+        <translation>haptik -</translation>
+    </message>
+    <message>
+        <source>haptic stepped (%1 Hz virtual)</source>
+        <translation>haptik berlangkah (%1 Hz maya)</translation>
+    </message>
+    <message>
+        <source>haptic %1 Hz</source>
+        <translation>haptik %1 Hz</translation>
+    </message>
+    <message>
+        <source>tick %1/%2 µs</source>
+        <translation>tik %1/%2 µs</translation>
+    </message>
+    <message>
+        <source>jitter %1/%2 µs</source>
+        <translation>ketar %1/%2 µs</translation>
+    </message>
+    <message>
+        <source>overruns %1 (missed %2)</source>
+        <translation>terlebih masa %1 (terlepas %2)</translation>
+    </message>
+    <message>
+        <source>SCHED_FIFO %1</source>
+        <translation>SCHED_FIFO %1</translation>
+    </message>
+    <message>
+        <source>GUI %1 fps</source>
+        <translation>GUI %1 fps</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>not started</source>
+        <translation>belum bermula</translation>
+    </message>
+    <message>
+        <source>contact: %1</source>
+        <translation>sentuhan: %1</translation>
+    </message>
+    <message>
+        <source>Open Mesh</source>
+        <translation>Buka Jejaring</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.off *.ply *.stl *.om);;All files (*)</source>
+        <translation>Jejaring (*.obj *.off *.ply *.stl *.om);;Semua fail (*)</translation>
+    </message>
+    <message>
+        <source>Recorder</source>
+        <translation>Perakam</translation>
+    </message>
+    <message>
+        <source>Go back to the live session before recording</source>
+        <translation>Kembali ke sesi langsung sebelum merakam</translation>
+    </message>
+    <message>
+        <source>Load a mesh before recording: there is no session to record</source>
+        <translation>Muatkan jejaring sebelum merakam: tiada sesi untuk dirakam</translation>
+    </message>
+    <message>
+        <source>Recording to %1</source>
+        <translation>Merakam ke %1</translation>
+    </message>
+    <message>
+        <source>Cannot record: %1</source>
+        <translation>Tidak dapat merakam: %1</translation>
+    </message>
+    <message>
+        <source>The recording failed: %1</source>
+        <translation>Rakaman gagal: %1</translation>
+    </message>
+    <message>
+        <source>Recording saved: %1</source>
+        <translation>Rakaman disimpan: %1</translation>
+    </message>
+    <message>
+        <source>mark (trainee)</source>
+        <translation>tanda (pelatih)</translation>
+    </message>
+    <message>
+        <source>Mark added: %1</source>
+        <translation>Tanda ditambah: %1</translation>
+    </message>
+    <message>
+        <source>Recording stopped: %1 (%2 keeps what was written before)</source>
+        <translation>Rakaman dihentikan: %1 (%2 menyimpan apa yang ditulis sebelumnya)</translation>
+    </message>
+    <message>
+        <source>● REC %1</source>
+        <translation>● RAKAM %1</translation>
+    </message>
+    <message>
+        <source>▶ playback</source>
+        <translation>▶ main semula</translation>
+    </message>
+    <message>
+        <source>A recording is still being opened; try again when it is done</source>
+        <translation>Rakaman masih dibuka; cuba lagi apabila selesai</translation>
+    </message>
+    <message>
+        <source>Recording stopped to play %1 back</source>
+        <translation>Rakaman dihentikan untuk memainkan semula %1</translation>
+    </message>
+    <message>
+        <source>Palpate - playing %1</source>
+        <translation>Palpate - memainkan %1</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Latihan</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Sejarah</translation>
+    </message>
+    <message>
+        <source>Exercise Editor</source>
+        <translation>Editor Latihan</translation>
+    </message>
+    <message>
+        <source>Click the mesh to place; drag still orbits; Esc stops placing</source>
+        <translation>Klik jejaring untuk meletak; seret masih memutar; Esc menghentikan peletakan</translation>
+    </message>
+    <message>
+        <source>An exercise is running: the mesh cannot change now.</source>
+        <translation>Latihan sedang berjalan: jejaring tidak boleh diubah sekarang.</translation>
+    </message>
+    <message>
+        <source>Cannot try the exercise</source>
+        <translation>Tidak dapat mencuba latihan</translation>
+    </message>
+    <message>
+        <source>E&amp;xercise</source>
+        <translation>La&amp;tihan</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Mula</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>&amp;Henti</translation>
+    </message>
+    <message>
+        <source>&amp;Open Exercise…</source>
+        <translation>&amp;Buka Latihan…</translation>
+    </message>
+    <message>
+        <source>&amp;New Trainee…</source>
+        <translation>Pelatih Bah&amp;aru…</translation>
+    </message>
+    <message>
+        <source>&amp;Export Score Report (PDF)…</source>
+        <translation>&amp;Eksport Laporan Markah (PDF)…</translation>
+    </message>
+    <message>
+        <source>&amp;History</source>
+        <translation>&amp;Sejarah</translation>
+    </message>
+    <message>
+        <source>&amp;Author</source>
+        <translation>&amp;Karang</translation>
+    </message>
+    <message>
+        <source>&amp;Instructor Mode</source>
+        <translation>Mod &amp;Jurulatih</translation>
+    </message>
+    <message>
+        <source>&amp;Trainee Mode</source>
+        <translation>Mod &amp;Pelatih</translation>
+    </message>
+    <message>
+        <source>New Trainee</source>
+        <translation>Pelatih Baharu</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Nama:</translation>
+    </message>
+    <message>
+        <source>Trainee not added</source>
+        <translation>Pelatih tidak ditambah</translation>
+    </message>
+    <message>
+        <source>Open Exercise</source>
+        <translation>Buka Latihan</translation>
+    </message>
+    <message>
+        <source>Exercises (*.json)</source>
+        <translation>Latihan (*.json)</translation>
+    </message>
+    <message>
+        <source>Not an exercise</source>
+        <translation>Bukan latihan</translation>
+    </message>
+    <message>
+        <source>There is no score to export yet: run an exercise first.</source>
+        <translation>Belum ada markah untuk dieksport: jalankan latihan dahulu.</translation>
+    </message>
+    <message>
+        <source>Export Score Report</source>
+        <translation>Eksport Laporan Markah</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Report not written</source>
+        <translation>Laporan tidak ditulis</translation>
+    </message>
+    <message>
+        <source>Report written: %1</source>
+        <translation>Laporan ditulis: %1</translation>
+    </message>
+    <message>
+        <source>%1 is still being opened: wait for it first</source>
+        <translation>%1 masih dibuka: tunggu sehingga selesai dahulu</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>Tidak dapat membuka %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 is connected</source>
+        <translation>%1 bersambung</translation>
+    </message>
+    <message>
+        <source>Opening %1…</source>
+        <translation>Membuka %1…</translation>
+    </message>
+    <message>
+        <source>Level of Detail</source>
+        <translation>Aras Perincian</translation>
+    </message>
+    <message>
+        <source>An exercise is running: the model cannot change now.</source>
+        <translation>Latihan sedang berjalan: model tidak boleh diubah sekarang.</translation>
+    </message>
+    <message>
+        <source>Cannot use this level</source>
+        <translation>Tidak dapat menggunakan aras ini</translation>
+    </message>
+    <message>
+        <source>Using your choice: %1, %2 rings (overrides the plan)</source>
+        <translation>Menggunakan pilihan anda: %1, %2 gelang (mengatasi rancangan)</translation>
+    </message>
+    <message>
+        <source>Using the plan&apos;s choice: %1, %2 rings</source>
+        <translation>Menggunakan pilihan rancangan: %1, %2 gelang</translation>
+    </message>
+    <message>
+        <source>Targets stored in the preset: save it (File &gt; Save Preset) to keep them</source>
+        <translation>Sasaran disimpan dalam praset: simpan praset itu (Fail &gt; Simpan Praset) untuk mengekalkannya</translation>
+    </message>
+    <message>
+        <source>the tissue preset</source>
+        <translation>praset tisu</translation>
+    </message>
+    <message>
+        <source>exercise &apos;%1&apos;</source>
+        <translation>latihan &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>force %1</source>
+        <translation>daya %1</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ParameterPanel</name>
+    <message>
+        <source>Mass-spring, symplectic Euler</source>
+        <translation>Jisim-spring, Euler simplektik</translation>
+    </message>
+    <message>
+        <source>Masses on the vertices, edge and anchor springs, penalty contact; explicit symplectic Euler with automatic sub-steps. Cost: every vertex per sub-step, O(n).</source>
+        <translation>Jisim pada bucu, spring tepi dan sauh, sentuhan penalti; Euler simplektik eksplisit dengan sub-langkah automatik. Kos: setiap bucu bagi setiap sub-langkah, O(n).</translation>
+    </message>
+    <message>
+        <source>Mass-spring, RK4</source>
+        <translation>Jisim-spring, RK4</translation>
+    </message>
+    <message>
+        <source>The mass-spring model with classic Runge-Kutta 4 (four stages per sub-step). Cost: every vertex, four times per sub-step, O(n): over 1 ms from a few thousand vertices.</source>
+        <translation>Model jisim-spring dengan Runge-Kutta 4 klasik (empat peringkat bagi setiap sub-langkah). Kos: setiap bucu, empat kali bagi setiap sub-langkah, O(n): melebihi 1 ms mulai beberapa ribu bucu.</translation>
+    </message>
+    <message>
+        <source>Mass-spring, backward Euler</source>
+        <translation>Jisim-spring, Euler ke belakang</translation>
+    </message>
+    <message>
+        <source>The mass-spring model with the implicit backward Euler step (conjugate gradients): unconditionally stable, dissipative. Cost: every vertex per CG iteration, O(n).</source>
+        <translation>Model jisim-spring dengan langkah Euler ke belakang yang tersirat (kecerunan konjugat): stabil tanpa syarat, melesapkan. Kos: setiap bucu bagi setiap lelaran CG, O(n).</translation>
+    </message>
+    <message>
+        <source>Mass-spring, local rings</source>
+        <translation>Jisim-spring, gelang setempat</translation>
+    </message>
+    <message>
+        <source>The mass-spring model on the touched vertex&apos;s rings only (and what still moves); the rest is pinned at rest. Cost: the rings, about the same at every mesh size.</source>
+        <translation>Model jisim-spring pada gelang bucu yang disentuh sahaja (dan apa yang masih bergerak); selebihnya dipaku pada rehat. Kos: gelang itu, lebih kurang sama pada setiap saiz jejaring.</translation>
+    </message>
+    <message>
+        <source>Radius of influence (Basdogan)</source>
+        <translation>Jejari pengaruh (Basdogan)</translation>
+    </message>
+    <message>
+        <source>Geometric: every vertex within a radius follows the tool by a polynomial profile of its distance; force k_s × depth. Cost: the vertices within the radius.</source>
+        <translation>Geometri: setiap bucu dalam satu jejari mengikut alat mengikut profil polinomial jaraknya; daya k_s × kedalaman. Kos: bucu dalam jejari itu.</translation>
+    </message>
+    <message>
+        <source>Free-form deformation (FFD)</source>
+        <translation>Ubah bentuk bentuk bebas (FFD)</translation>
+    </message>
+    <message>
+        <source>Geometric: the mesh embedded in a Bernstein lattice whose control points near the contact move; force k_s × depth. Cost: every vertex per tick, O(n).</source>
+        <translation>Geometri: jejaring dibenamkan dalam kekisi Bernstein yang titik kawalannya berhampiran sentuhan bergerak; daya k_s × kedalaman. Kos: setiap bucu bagi setiap tik, O(n).</translation>
+    </message>
+    <message>
+        <source>Volumetric slope-rings</source>
+        <translation>Gelang-cerun volumetrik</translation>
+    </message>
+    <message>
+        <source>The slope-ring update on rings of a tetrahedral fill of the surface (the paper&apos;s future work); uses the slopes and springs below. Cost: the rings of the tet graph.</source>
+        <translation>Kemas kini gelang-cerun pada gelang isian tetrahedron permukaan (kerja masa depan kertas kerja); menggunakan cerun dan spring di bawah. Kos: gelang graf tet.</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Buat asal</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Buat semula</translation>
+    </message>
+    <message>
+        <source>|m%1| (touched)</source>
+        <translation>|m%1| (disentuh)</translation>
+    </message>
+    <message>
+        <source>|m%1| (ring %2)</source>
+        <translation>|m%1| (gelang %2)</translation>
+    </message>
+    <message>
+        <source>deformation model</source>
+        <translation>model ubah bentuk</translation>
+    </message>
+    <message>
+        <source>ring count</source>
+        <translation>bilangan gelang</translation>
+    </message>
+    <message>
+        <source>slope limit</source>
+        <translation>had cerun</translation>
+    </message>
+    <message>
+        <source>spring stiffness</source>
+        <translation>kekakuan spring</translation>
+    </message>
+    <message>
+        <source>damping ratio</source>
+        <translation>nisbah redaman</translation>
+    </message>
+    <message>
+        <source>contact stiffness</source>
+        <translation>kekakuan sentuhan</translation>
+    </message>
+    <message>
+        <source>force relaxation</source>
+        <translation>pengenduran daya</translation>
+    </message>
+    <message>
+        <source>vertex mass</source>
+        <translation>jisim bucu</translation>
+    </message>
+    <message>
+        <source>octree depth</source>
+        <translation>kedalaman octree</translation>
+    </message>
+    <message>
+        <source>leaf capacity</source>
+        <translation>kapasiti daun</translation>
+    </message>
+    <message>
+        <source>haptic rate</source>
+        <translation>kadar haptik</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus</source>
+        <translation>modulus Young</translation>
+    </message>
+    <message>
+        <source>Poisson&apos;s ratio</source>
+        <translation>nisbah Poisson</translation>
+    </message>
+    <message>
+        <source>tool radius</source>
+        <translation>jejari alat</translation>
+    </message>
+    <message>
+        <source>Model and loop</source>
+        <translation>Model dan gelung</translation>
+    </message>
+    <message>
+        <source>Slopes (magnitudes, |m1| &gt; |m2| &gt; …)</source>
+        <translation>Cerun (magnitud, |m1| &gt; |m2| &gt; …)</translation>
+    </message>
+    <message>
+        <source>Springs and contact</source>
+        <translation>Spring dan sentuhan</translation>
+    </message>
+    <message>
+        <source>Octree</source>
+        <translation>Octree</translation>
+    </message>
+    <message>
+        <source>Tissue and tool</source>
+        <translation>Tisu dan alat</translation>
+    </message>
+    <message>
+        <source>The tissue&apos;s elasticity and the probe&apos;s flat tip: Calibrate slopes turns them into slopes and a spring stiffness for the current mesh (flat punch on a half-space, docs/calibration.md).</source>
+        <translation>Keanjalan tisu dan hujung rata prob: Tentukur cerun menukarkannya kepada cerun dan kekakuan spring untuk jejaring semasa (penebuk rata pada separuh ruang, docs/calibration.md).</translation>
+    </message>
+    <message>
+        <source>Tissue preset:</source>
+        <translation>Praset tisu:</translation>
+    </message>
+    <message>
+        <source>Choose a tissue…</source>
+        <translation>Pilih tisu…</translation>
+    </message>
+    <message>
+        <source>Load a shipped tissue preset: E, ν, the tool radius and slopes calibrated for the default stomach mesh (one undoable step). Each entry&apos;s tooltip names its source.</source>
+        <translation>Muatkan praset tisu yang disertakan: E, ν, jejari alat dan cerun yang ditentukur untuk jejaring perut lalai (satu langkah boleh dibuat asal). Petua alat setiap entri menamakan sumbernya.</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus E:</source>
+        <translation>Modulus Young E:</translation>
+    </message>
+    <message>
+        <source> kPa</source>
+        <translation> kPa</translation>
+    </message>
+    <message>
+        <source>Stiffness of the tissue, kPa (soft tissue: about 1 to 30 kPa).</source>
+        <translation>Kekakuan tisu, kPa (tisu lembut: kira-kira 1 hingga 30 kPa).</translation>
+    </message>
+    <message>
+        <source>Poisson&apos;s ratio ν:</source>
+        <translation>Nisbah Poisson ν:</translation>
+    </message>
+    <message>
+        <source>How the tissue bulges sideways when pressed, 0..%1 (soft tissue is nearly incompressible: about 0.45 to 0.49).</source>
+        <translation>Bagaimana tisu membonjol ke sisi apabila ditekan, 0..%1 (tisu lembut hampir tidak boleh mampat: kira-kira 0.45 hingga 0.49).</translation>
+    </message>
+    <message>
+        <source>Tool radius a:</source>
+        <translation>Jejari alat a:</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Radius of the probe&apos;s flat tip, mm (%1..%2).</source>
+        <translation>Jejari hujung rata prob, mm (%1..%2).</translation>
+    </message>
+    <message>
+        <source>Ca&amp;librate slopes</source>
+        <translation>Ten&amp;tukur cerun</translation>
+    </message>
+    <message>
+        <source>Slopes for the ring count and spring k for the current mesh from E, ν and the tool radius (flat punch: |m1| = 1 / (2 a E*), k = 1 / |m1|), then the error the calibrated model leaves against the punch. One undoable step; Apply sends them.</source>
+        <translation>Cerun untuk bilangan gelang dan spring k untuk jejaring semasa daripada E, ν dan jejari alat (penebuk rata: |m1| = 1 / (2 a E*), k = 1 / |m1|), kemudian ralat yang ditinggalkan oleh model yang ditentukur berbanding penebuk. Satu langkah boleh dibuat asal; Guna menghantarnya.</translation>
+    </message>
+    <message>
+        <source>Deformation model:</source>
+        <translation>Model ubah bentuk:</translation>
+    </message>
+    <message>
+        <source>Palpate (ours)</source>
+        <translation>Palpate (kami)</translation>
+    </message>
+    <message>
+        <source>Proposed (paper)</source>
+        <translation>Dicadangkan (kertas kerja)</translation>
+    </message>
+    <message>
+        <source>Hybrid (paper)</source>
+        <translation>Hibrid (kertas kerja)</translation>
+    </message>
+    <message>
+        <source>Previous (paper)</source>
+        <translation>Terdahulu (kertas kerja)</translation>
+    </message>
+    <message>
+        <source>Ours: exact warm-started nearest-vertex search, only the rings processed, incremental work per tick.</source>
+        <translation>Kami: carian bucu terdekat yang tepat dan bermula panas, hanya gelang diproses, kerja berperingkat setiap tik.</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s method: its octree searchNode (faithful, can miss the nearest vertex) and only the rings.</source>
+        <translation>Kaedah kertas kerja: searchNode octree-nya (setia, boleh terlepas bucu terdekat) dan hanya gelang.</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s hybrid: its octree searchNode, and the whole model processed every tick.</source>
+        <translation>Hibrid kertas kerja: searchNode octree-nya, dan seluruh model diproses setiap tik.</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s baseline: linear nearest-vertex search, and the whole model processed every tick.</source>
+        <translation>Garis dasar kertas kerja: carian bucu terdekat secara linear, dan seluruh model diproses setiap tik.</translation>
+    </message>
+    <message>
+        <source>Cost: the rings of the touched vertex.</source>
+        <translation>Kos: gelang bucu yang disentuh.</translation>
+    </message>
+    <message>
+        <source>Cost: every vertex per tick, O(n).</source>
+        <translation>Kos: setiap bucu bagi setiap tik, O(n).</translation>
+    </message>
+    <message>
+        <source>Which model deforms the tissue: the slope-ring methods (ours and the paper&apos;s three), then the literature&apos;s other models (docs/models.md).</source>
+        <translation>Model yang mengubah bentuk tisu: kaedah gelang-cerun (kami dan tiga kaedah kertas kerja), kemudian model lain daripada literatur (docs/models.md).</translation>
+    </message>
+    <message>
+        <source>Symplectic Euler</source>
+        <translation>Euler simplektik</translation>
+    </message>
+    <message>
+        <source>RK4</source>
+        <translation>RK4</translation>
+    </message>
+    <message>
+        <source>Backward Euler (implicit)</source>
+        <translation>Euler ke belakang (tersirat)</translation>
+    </message>
+    <message>
+        <source>Haptic rate:</source>
+        <translation>Kadar haptik:</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>Ticks per second of the haptic loop, %1..%2 Hz (haptics usually runs at 1000 Hz).</source>
+        <translation>Tik sesaat gelung haptik, %1..%2 Hz (haptik biasanya berjalan pada 1000 Hz).</translation>
+    </message>
+    <message>
+        <source>Ring count:</source>
+        <translation>Bilangan gelang:</translation>
+    </message>
+    <message>
+        <source>Rings of neighbours displaced with the touched vertex (ring r: the vertices r edges away). The paper uses 2; each ring adds a slope below.</source>
+        <translation>Gelang jiran yang dianjak bersama bucu yang disentuh (gelang r: bucu yang r tepi jauhnya). Kertas kerja menggunakan 2; setiap gelang menambah satu cerun di bawah.</translation>
+    </message>
+    <message>
+        <source>Slope magnitude |m| in mm/N: how far the vertex moves per newton of contact force; the model applies the paper&apos;s sign (m &lt; 0), which moves the vertex into the tissue.</source>
+        <translation>Magnitud cerun |m| dalam mm/N: sejauh mana bucu bergerak bagi setiap newton daya sentuhan; model menggunakan tanda kertas kerja (m &lt; 0), yang menggerakkan bucu ke dalam tisu.</translation>
+    </message>
+    <message>
+        <source>Read with signs, the paper&apos;s &quot;m1 &gt; m2 &gt; m3&quot; would move the outer rings further than the touched vertex. Palpate orders the magnitudes instead, |m1| &gt; |m2| &gt; |m3| &gt; …, so the displacement decays away from the touched vertex.</source>
+        <translation>Dibaca dengan tanda, &quot;m1 &gt; m2 &gt; m3&quot; kertas kerja akan menggerakkan gelang luar lebih jauh daripada bucu yang disentuh. Palpate sebaliknya menyusun magnitud, |m1| &gt; |m2| &gt; |m3| &gt; …, supaya anjakan berkurang menjauhi bucu yang disentuh.</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s range is (0, 1) mm/N; larger values need a raised slope limit and a stable loop gain.</source>
+        <translation>Julat kertas kerja ialah (0, 1) mm/N; nilai lebih besar memerlukan had cerun yang dinaikkan dan gandaan gelung yang stabil.</translation>
+    </message>
+    <message>
+        <source> mm/N</source>
+        <translation> mm/N</translation>
+    </message>
+    <message>
+        <source>Slope limit:</source>
+        <translation>Had cerun:</translation>
+    </message>
+    <message>
+        <source>Every slope magnitude must stay below this limit. The paper&apos;s range ends at 1 mm/N; calibrated soft tissue may need more (at most 100 mm/N), allowed while the loop gain stays stable. Slopes above 1 mm/N are marked as outside the paper&apos;s range.</source>
+        <translation>Setiap magnitud cerun mesti kekal di bawah had ini. Julat kertas kerja berakhir pada 1 mm/N; tisu lembut yang ditentukur mungkin memerlukan lebih (paling banyak 100 mm/N), dibenarkan selagi gandaan gelung kekal stabil. Cerun melebihi 1 mm/N ditanda sebagai di luar julat kertas kerja.</translation>
+    </message>
+    <message>
+        <source>Spring stiffness k:</source>
+        <translation>Kekakuan spring k:</translation>
+    </message>
+    <message>
+        <source> N/mm</source>
+        <translation> N/mm</translation>
+    </message>
+    <message>
+        <source>Stiffness of the springs that tie each vertex to its rest position. The touched vertex&apos;s spring reaction is the force rendered to the user.</source>
+        <translation>Kekakuan spring yang mengikat setiap bucu pada kedudukan rehatnya. Tindak balas spring bucu yang disentuh ialah daya yang dirasai pengguna.</translation>
+    </message>
+    <message>
+        <source>Damping ratio:</source>
+        <translation>Nisbah redaman:</translation>
+    </message>
+    <message>
+        <source>Damping of the return springs as a fraction of critical: 1 returns without overshoot, below 1 the tissue rings before it settles (0..100).</source>
+        <translation>Redaman spring pemulih sebagai pecahan redaman genting: 1 kembali tanpa lajakan, di bawah 1 tisu berayun sebelum tenang (0..100).</translation>
+    </message>
+    <message>
+        <source>Contact stiffness k_c:</source>
+        <translation>Kekakuan sentuhan k_c:</translation>
+    </message>
+    <message>
+        <source>Stiffness of the tool-tissue contact (a penalty spring). The loop gain is |m1| × k_c.</source>
+        <translation>Kekakuan sentuhan alat-tisu (spring penalti). Gandaan gelung ialah |m1| × k_c.</translation>
+    </message>
+    <message>
+        <source>Force relaxation α:</source>
+        <translation>Pengenduran daya α:</translation>
+    </message>
+    <message>
+        <source>automatic</source>
+        <translation>automatik</translation>
+    </message>
+    <message>
+        <source>Per-tick relaxation α of the contact force, in (0, 1]. Automatic (0) uses α = 1 / (1 + gain), which solves the contact in one tick for any gain. The update is stable while α·(1 + gain) &lt; 2.</source>
+        <translation>Pengenduran α daya sentuhan setiap tik, dalam (0, 1]. Automatik (0) menggunakan α = 1 / (1 + gandaan), yang menyelesaikan sentuhan dalam satu tik untuk sebarang gandaan. Kemas kini stabil selagi α·(1 + gandaan) &lt; 2.</translation>
+    </message>
+    <message>
+        <source>Vertex mass:</source>
+        <translation>Jisim bucu:</translation>
+    </message>
+    <message>
+        <source> kg</source>
+        <translation> kg</translation>
+    </message>
+    <message>
+        <source>Lumped mass per vertex, for the relaxation after the tool lets go.</source>
+        <translation>Jisim tergumpal setiap bucu, untuk pengenduran selepas alat dilepaskan.</translation>
+    </message>
+    <message>
+        <source>Max depth:</source>
+        <translation>Kedalaman maks.:</translation>
+    </message>
+    <message>
+        <source>Levels below the octree&apos;s root (1..20).</source>
+        <translation>Aras di bawah akar octree (1..20).</translation>
+    </message>
+    <message>
+        <source>Leaf capacity:</source>
+        <translation>Kapasiti daun:</translation>
+    </message>
+    <message>
+        <source> vertices</source>
+        <translation> bucu</translation>
+    </message>
+    <message>
+        <source>A node with at most this many vertices is not split (1..100000).</source>
+        <translation>Nod dengan paling banyak bilangan bucu ini tidak dipecahkan (1..100000).</translation>
+    </message>
+    <message>
+        <source>Open preset…</source>
+        <translation>Buka praset…</translation>
+    </message>
+    <message>
+        <source>Read a tissue preset file (JSON) into the fields; one undoable step.</source>
+        <translation>Baca fail praset tisu (JSON) ke dalam medan; satu langkah boleh dibuat asal.</translation>
+    </message>
+    <message>
+        <source>Save preset…</source>
+        <translation>Simpan praset…</translation>
+    </message>
+    <message>
+        <source>Write the fields to a tissue preset file (JSON).</source>
+        <translation>Tulis medan ke fail praset tisu (JSON).</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Guna</translation>
+    </message>
+    <message>
+        <source>Send these parameters to the haptic loop (enabled while they are valid).</source>
+        <translation>Hantar parameter ini ke gelung haptik (didayakan selagi ia sah).</translation>
+    </message>
+    <message>
+        <source>entered in the Parameters panel</source>
+        <translation>dimasukkan dalam panel Parameter</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus E = %1 kPa must be a positive number (at most %2 kPa)</source>
+        <translation>Modulus Young E = %1 kPa mesti nombor positif (paling banyak %2 kPa)</translation>
+    </message>
+    <message>
+        <source>Poisson&apos;s ratio ν = %1 must be in 0..%2 (0.5 would be incompressible)</source>
+        <translation>Nisbah Poisson ν = %1 mesti dalam 0..%2 (0.5 bermaksud tidak boleh mampat)</translation>
+    </message>
+    <message>
+        <source>tool radius a = %1 mm must be in %2..%3 mm</source>
+        <translation>jejari alat a = %1 mm mesti dalam %2..%3 mm</translation>
+    </message>
+    <message>
+        <source>E = %1 kPa, ν = %2, tool radius %3 mm</source>
+        <translation>E = %1 kPa, ν = %2, jejari alat %3 mm</translation>
+    </message>
+    <message>
+        <source>Source: %1</source>
+        <translation>Sumber: %1</translation>
+    </message>
+    <message>
+        <source>Calibrate slopes needs a mesh: open one first.</source>
+        <translation>Tentukur cerun memerlukan jejaring: buka satu dahulu.</translation>
+    </message>
+    <message>
+        <source>Not calibrated: %1</source>
+        <translation>Tidak ditentukur: %1</translation>
+    </message>
+    <message>
+        <source>Parameters panel default (gelatin phantom, as palpate-cli)</source>
+        <translation>Lalai panel Parameter (fantom gelatin, seperti palpate-cli)</translation>
+    </message>
+    <message>
+        <source>Calibrate slopes</source>
+        <translation>Tentukur cerun</translation>
+    </message>
+    <message>
+        <source>displacement error %1 % (RMS/peak over r ≤ 5a), force error %2 %</source>
+        <translation>ralat anjakan %1 % (RMS/puncak ke atas r ≤ 5a), ralat daya %2 %</translation>
+    </message>
+    <message>
+        <source>1 ring</source>
+        <translation>1 gelang</translation>
+    </message>
+    <message>
+        <source>%1 rings</source>
+        <translation>%1 gelang</translation>
+    </message>
+    <message>
+        <source>at vertex %1 of %2 vertices, pressed %3 mm in; %4 vertices compared.</source>
+        <translation>pada bucu %1 daripada %2 bucu, ditekan %3 mm ke dalam; %4 bucu dibandingkan.</translation>
+    </message>
+    <message>
+        <source>Note: %1</source>
+        <translation>Nota: %1</translation>
+    </message>
+    <message>
+        <source>(for the calibrated slopes; the slopes have changed since)</source>
+        <translation>(untuk cerun yang ditentukur; cerun telah berubah sejak itu)</translation>
+    </message>
+    <message>
+        <source>Preset: %1</source>
+        <translation>Praset: %1</translation>
+    </message>
+    <message>
+        <source>Change %1</source>
+        <translation>Ubah %1</translation>
+    </message>
+    <message>
+        <source>%1 parameters</source>
+        <translation>%1 parameter</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>haptic rate = %1 Hz must be in %2..%3 Hz</source>
+        <translation>kadar haptik = %1 Hz mesti dalam %2..%3 Hz</translation>
+    </message>
+    <message>
+        <source>%1 (automatic)</source>
+        <translation>%1 (automatik)</translation>
+    </message>
+    <message>
+        <source>Loop gain |m1| × k_c = %1, α = %2</source>
+        <translation>Gandaan gelung |m1| × k_c = %1, α = %2</translation>
+    </message>
+    <message>
+        <source>α·(1 + gain) = %1 ≥ 2: unstable (the surface oscillates and grows)</source>
+        <translation>α·(1 + gandaan) = %1 ≥ 2: tidak stabil (permukaan berayun dan membesar)</translation>
+    </message>
+    <message>
+        <source>α·(1 + gain) = %1 &lt; 2: stability margin %2&#xa0;%</source>
+        <translation>α·(1 + gandaan) = %1 &lt; 2: margin kestabilan %2&#xa0;%</translation>
+    </message>
+    <message>
+        <source>Stability margin: needs the mesh (the mass-spring step bound depends on its springs)</source>
+        <translation>Margin kestabilan: memerlukan jejaring (had langkah jisim-spring bergantung pada springnya)</translation>
+    </message>
+    <message>
+        <source>Beyond the stability margin (%1&#xa0;%): Apply asks for confirmation</source>
+        <translation>Melepasi margin kestabilan (%1&#xa0;%): Guna meminta pengesahan</translation>
+    </message>
+    <message>
+        <source>Stability margin %1&#xa0;%</source>
+        <translation>Margin kestabilan %1&#xa0;%</translation>
+    </message>
+    <message>
+        <source>How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the explicit mass-spring integrators&apos; step bound h·ω_max &lt; 2 (RK4 2.78), ω_max from Gershgorin&apos;s bound and the sub-steps the model takes; for radius of influence and FFD the rendered stiffness k_s against the device&apos;s passive stiffness (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has none.</source>
+        <translation>Sejauh mana set ini daripada had kestabilan terbitannya pada kadar haptik (docs/stability.md): had langkah pengamir jisim-spring eksplisit h·ω_max &lt; 2 (RK4 2.78), ω_max daripada had Gershgorin dan sub-langkah yang diambil oleh model; bagi jejari pengaruh dan FFD, kekakuan k_s yang dipaparkan berbanding kekakuan pasif peranti (Colgate dan Brown, 1 N/mm pada 1 kHz). Euler ke belakang tiada had.</translation>
+    </message>
+    <message>
+        <source>The contact force iteration converges while α·(1 + gain) &lt; 2, with the loop gain |m1| × k_c (docs/method.md). The margin is how far below 2 it stays: 1 − α·(1 + gain) / 2.</source>
+        <translation>Lelaran daya sentuhan menumpu selagi α·(1 + gandaan) &lt; 2, dengan gandaan gelung |m1| × k_c (docs/method.md). Margin ialah sejauh mana ia kekal di bawah 2: 1 − α·(1 + gandaan) / 2.</translation>
+    </message>
+    <message>
+        <source>%1 is outside the paper&apos;s range (0, 1) mm/N: allowed by the slope limit %2 mm/N and the loop-gain bound.</source>
+        <translation>%1 berada di luar julat kertas kerja (0, 1) mm/N: dibenarkan oleh had cerun %2 mm/N dan had gandaan gelung.</translation>
+    </message>
+    <message>
+        <source>%1 are outside the paper&apos;s range (0, 1) mm/N: allowed by the slope limit %2 mm/N and the loop-gain bound.</source>
+        <translation>%1 berada di luar julat kertas kerja (0, 1) mm/N: dibenarkan oleh had cerun %2 mm/N dan had gandaan gelung.</translation>
+    </message>
+    <message>
+        <source>Beyond the stability margin</source>
+        <translation>Melepasi margin kestabilan</translation>
+    </message>
+    <message>
+        <source>This parameter set is beyond its stability margin:
+%1
+
+The model may diverge (or the device buzz); the divergence guard would then zero the force and reset the tissue. Apply anyway?</source>
+        <translation>Set parameter ini melepasi margin kestabilannya:
+%1
+
+Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian akan mensifarkan daya dan menetapkan semula tisu. Guna juga?</translation>
+    </message>
+    <message>
+        <source>%1: could not be read</source>
+        <translation>%1: tidak dapat dibaca</translation>
+    </message>
+    <message>
+        <source>Preset not loaded; the fields are unchanged:</source>
+        <translation>Praset tidak dimuatkan; medan tidak berubah:</translation>
+    </message>
+    <message>
+        <source>Load preset %1</source>
+        <translation>Muatkan praset %1</translation>
+    </message>
+    <message>
+        <source>Loaded %1</source>
+        <translation>%1 dimuatkan</translation>
+    </message>
+    <message>
+        <source>(saved with a stability margin of %1&#xa0;% at %2&#xa0;Hz)</source>
+        <translation>(disimpan dengan margin kestabilan %1&#xa0;% pada %2&#xa0;Hz)</translation>
+    </message>
+    <message>
+        <source>%1: not saved, the parameters are not valid (see above); the file could not be read back</source>
+        <translation>%1: tidak disimpan, parameter tidak sah (lihat di atas); fail tidak dapat dibaca semula</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 disimpan</translation>
+    </message>
+    <message>
+        <source>Open preset</source>
+        <translation>Buka praset</translation>
+    </message>
+    <message>
+        <source>Tissue presets (*.json);;All files (*)</source>
+        <translation>Praset tisu (*.json);;Semua fail (*)</translation>
+    </message>
+    <message>
+        <source>Save preset</source>
+        <translation>Simpan praset</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::Preferences</name>
+    <message>
+        <source>%1 gf</source>
+        <translation>%1 gf</translation>
+    </message>
+    <message>
+        <source>%1 N</source>
+        <translation>%1 N</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Keutamaan</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Lalai sistem</translation>
+    </message>
+    <message>
+        <source>A new language applies when Palpate is started again.</source>
+        <translation>Bahasa baharu digunakan apabila Palpate dimulakan semula.</translation>
+    </message>
+    <message>
+        <source>newtons (N)</source>
+        <translation>newton (N)</translation>
+    </message>
+    <message>
+        <source>gram-force (gf, 1 gf = 9.81 mN)</source>
+        <translation>daya gram (gf, 1 gf = 9.81 mN)</translation>
+    </message>
+    <message>
+        <source>As the tissue preset says</source>
+        <translation>Seperti yang dinyatakan oleh praset tisu</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>Ticks per second of the haptic loop. Higher rates feel stiffer tissue as stable, and need a faster computer.</source>
+        <translation>Tik sesaat gelung haptik. Kadar lebih tinggi memaparkan tisu lebih keras dengan stabil, dan memerlukan komputer lebih pantas.</translation>
+    </message>
+    <message>
+        <source>Built-in default (the mouse)</source>
+        <translation>Lalai terbina dalam (tetikus)</translation>
+    </message>
+    <message>
+        <source>The device the window uses when it starts (--device overrides it).</source>
+        <translation>Peranti yang digunakan oleh tetingkap semasa bermula (--device mengatasinya).</translation>
+    </message>
+    <message>
+        <source>Recordings (in recordings/) and the trainees&apos; results (results.sqlite) are kept here.</source>
+        <translation>Rakaman (dalam recordings/) dan keputusan pelatih (results.sqlite) disimpan di sini.</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Semak Imbas…</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Bahasa:</translation>
+    </message>
+    <message>
+        <source>&amp;Forces shown in:</source>
+        <translation>&amp;Daya ditunjukkan dalam:</translation>
+    </message>
+    <message>
+        <source>&amp;Haptic rate:</source>
+        <translation>&amp;Kadar haptik:</translation>
+    </message>
+    <message>
+        <source>&amp;Device at start:</source>
+        <translation>&amp;Peranti semasa mula:</translation>
+    </message>
+    <message>
+        <source>Device: %1</source>
+        <translation>Peranti: %1</translation>
+    </message>
+    <message>
+        <source>The data folder must be an absolute path.</source>
+        <translation>Folder data mesti laluan mutlak.</translation>
+    </message>
+    <message>
+        <source>Data Folder</source>
+        <translation>Folder Data</translation>
+    </message>
+    <message>
+        <source>Data f&amp;older:</source>
+        <translation>&amp;Folder data:</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::RecorderPanel</name>
+    <message>
+        <source>%1 is not a Palpate recording (%2)</source>
+        <translation>%1 bukan rakaman Palpate (%2)</translation>
+    </message>
+    <message>
+        <source>%1: the header is damaged (%2); %3 chunks were recovered, but a replay needs the header</source>
+        <translation>%1: pengepala rosak (%2); %3 ketulan dipulihkan, tetapi main semula memerlukan pengepala</translation>
+    </message>
+    <message>
+        <source>%1 damaged region(s) skipped (%2 bytes)</source>
+        <translation>%1 kawasan rosak dilangkau (%2 bait)</translation>
+    </message>
+    <message>
+        <source>%1 ticks lost</source>
+        <translation>%1 tik hilang</translation>
+    </message>
+    <message>
+        <source>%1 ticks dropped while recording (%2 gap(s))</source>
+        <translation>%1 tik tercicir semasa merakam (%2 jurang)</translation>
+    </message>
+    <message>
+        <source>%1 chunk(s) whose hash disagrees with their ticks</source>
+        <translation>%1 ketulan yang cincangnya tidak sepadan dengan tiknya</translation>
+    </message>
+    <message>
+        <source>not closed cleanly (the program ended while recording)</source>
+        <translation>tidak ditutup dengan bersih (program tamat semasa merakam)</translation>
+    </message>
+    <message>
+        <source>%1 is damaged. Recovered %2 chunks (%3 ticks); lost: %4.</source>
+        <translation>%1 rosak. %2 ketulan (%3 tik) dipulihkan; hilang: %4.</translation>
+    </message>
+    <message>
+        <source>%1 is incomplete. Recovered %2 chunks (%3 ticks); lost: %4.</source>
+        <translation>%1 tidak lengkap. %2 ketulan (%3 tik) dipulihkan; hilang: %4.</translation>
+    </message>
+    <message>
+        <source>offset %1, %2 bytes: %3</source>
+        <translation>ofset %1, %2 bait: %3</translation>
+    </message>
+    <message>
+        <source> (ticks %1 to %2)</source>
+        <translation> (tik %1 hingga %2)</translation>
+    </message>
+    <message>
+        <source>…</source>
+        <translation>…</translation>
+    </message>
+    <message>
+        <source>Mark: %1</source>
+        <translation>Tanda: %1</translation>
+    </message>
+    <message>
+        <source>Exercise event: %1</source>
+        <translation>Peristiwa latihan: %1</translation>
+    </message>
+    <message>
+        <source>Parameters applied</source>
+        <translation>Parameter digunakan</translation>
+    </message>
+    <message>
+        <source>Scene changed without a description (the replay stops here)</source>
+        <translation>Adegan berubah tanpa keterangan (main semula berhenti di sini)</translation>
+    </message>
+    <message>
+        <source>Scene changed: %1</source>
+        <translation>Adegan berubah: %1</translation>
+    </message>
+    <message>
+        <source>Device changed: %1</source>
+        <translation>Peranti bertukar: %1</translation>
+    </message>
+    <message>
+        <source>(not described)</source>
+        <translation>(tidak diterangkan)</translation>
+    </message>
+    <message>
+        <source>Device state: %1</source>
+        <translation>Keadaan peranti: %1</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Dijeda</translation>
+    </message>
+    <message>
+        <source>Resumed</source>
+        <translation>Disambung semula</translation>
+    </message>
+    <message>
+        <source>%1 command(s) lost: the replay may differ from here</source>
+        <translation>%1 arahan hilang: main semula mungkin berbeza mulai sini</translation>
+    </message>
+    <message>
+        <source>Recording</source>
+        <translation>Rakaman</translation>
+    </message>
+    <message>
+        <source>Playback</source>
+        <translation>Main semula</translation>
+    </message>
+    <message>
+        <source>● &amp;Record</source>
+        <translation>● &amp;Rakam</translation>
+    </message>
+    <message>
+        <source>■ S&amp;top</source>
+        <translation>■ &amp;Henti</translation>
+    </message>
+    <message>
+        <source>Stop recording and close the file cleanly (Ctrl+Shift+R)</source>
+        <translation>Hentikan rakaman dan tutup fail dengan bersih (Ctrl+Shift+R)</translation>
+    </message>
+    <message>
+        <source>Folder…</source>
+        <translation>Folder…</translation>
+    </message>
+    <message>
+        <source>Mark text (optional)</source>
+        <translation>Teks tanda (pilihan)</translation>
+    </message>
+    <message>
+        <source>The text of the next mark; Return adds it</source>
+        <translation>Teks tanda seterusnya; Return menambahnya</translation>
+    </message>
+    <message>
+        <source>&amp;Mark</source>
+        <translation>&amp;Tanda</translation>
+    </message>
+    <message>
+        <source>Add a mark at the current tick of the recording (M)</source>
+        <translation>Tambah tanda pada tik semasa rakaman (M)</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Buka…</translation>
+    </message>
+    <message>
+        <source>Open a recording to play it back (the live session pauses while it plays)</source>
+        <translation>Buka rakaman untuk dimainkan semula (sesi langsung dijeda semasa ia dimainkan)</translation>
+    </message>
+    <message>
+        <source>Back to &amp;Live</source>
+        <translation>Kembali ke &amp;Langsung</translation>
+    </message>
+    <message>
+        <source>Close the recording and resume the live session</source>
+        <translation>Tutup rakaman dan sambung semula sesi langsung</translation>
+    </message>
+    <message>
+        <source>▶ &amp;Play</source>
+        <translation>▶ &amp;Main</translation>
+    </message>
+    <message>
+        <source>Play or pause the recording (Space while the timeline has the focus)</source>
+        <translation>Main atau jeda rakaman (Space apabila garis masa mempunyai fokus)</translation>
+    </message>
+    <message>
+        <source>Playback speed</source>
+        <translation>Kelajuan main semula</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>Current time / length of the recording (loop clock)</source>
+        <translation>Masa semasa / panjang rakaman (jam gelung)</translation>
+    </message>
+    <message>
+        <source>Replaying from the start to reach that tick</source>
+        <translation>Memainkan semula dari mula untuk mencapai tik itu</translation>
+    </message>
+    <message>
+        <source>Folder for New Recordings</source>
+        <translation>Folder untuk Rakaman Baharu</translation>
+    </message>
+    <message>
+        <source>%1: the recordings folder cannot be created</source>
+        <translation>%1: folder rakaman tidak dapat dicipta</translation>
+    </message>
+    <message>
+        <source>Mark %1</source>
+        <translation>Tanda %1</translation>
+    </message>
+    <message>
+        <source>Recording to %1…</source>
+        <translation>Merakam ke %1…</translation>
+    </message>
+    <message>
+        <source>Not recording.
+Folder: %1</source>
+        <translation>Tidak merakam.
+Folder: %1</translation>
+    </message>
+    <message>
+        <source>%1 %2 · %3 ticks · %4 · %5 B/tick · drops %6 (%7 gaps)</source>
+        <translation>%1 %2 · %3 tik · %4 · %5 B/tik · cicir %6 (%7 jurang)</translation>
+    </message>
+    <message>
+        <source>● REC</source>
+        <translation>● RAKAM</translation>
+    </message>
+    <message>
+        <source>Saved %1:</source>
+        <translation>Disimpan %1:</translation>
+    </message>
+    <message>
+        <source>Stopped %1:</source>
+        <translation>Dihentikan %1:</translation>
+    </message>
+    <message>
+        <source> · %1 commands lost</source>
+        <translation> · %1 arahan hilang</translation>
+    </message>
+    <message>
+        <source>%1
+Elapsed loop time, ticks written, file size, bytes per tick, ticks dropped because the writer fell behind (each run is a gap)</source>
+        <translation>%1
+Masa gelung berlalu, tik ditulis, saiz fail, bait setiap tik, tik yang tercicir kerana penulis ketinggalan (setiap siri ialah satu jurang)</translation>
+    </message>
+    <message>
+        <source>Added “%1” · next mark text</source>
+        <translation>Ditambah “%1” · teks tanda seterusnya</translation>
+    </message>
+    <message>
+        <source>Record the live session to a new file in %1 (Ctrl+Shift+R).
+Starting resets the tissue to rest and the force ramps in again (as after a device switch): a recording replays from its start alone.</source>
+        <translation>Rakam sesi langsung ke fail baharu dalam %1 (Ctrl+Shift+R).
+Memulakan menetapkan semula tisu kepada rehat dan daya meningkat semula (seperti selepas menukar peranti): rakaman dimainkan semula dari permulaannya sahaja.</translation>
+    </message>
+    <message>
+        <source>Go back to the live session to record</source>
+        <translation>Kembali ke sesi langsung untuk merakam</translation>
+    </message>
+    <message>
+        <source>Where new recordings go: %1</source>
+        <translation>Ke mana rakaman baharu pergi: %1</translation>
+    </message>
+    <message>
+        <source>❚❚ &amp;Pause</source>
+        <translation>❚❚ &amp;Jeda</translation>
+    </message>
+    <message>
+        <source>Open Recording</source>
+        <translation>Buka Rakaman</translation>
+    </message>
+    <message>
+        <source>Palpate recordings (*.palprec);;All files (*)</source>
+        <translation>Rakaman Palpate (*.palprec);;Semua fail (*)</translation>
+    </message>
+    <message>
+        <source>Opening %1…</source>
+        <translation>Membuka %1…</translation>
+    </message>
+    <message>
+        <source>%1: cannot replay: %2</source>
+        <translation>%1: tidak dapat dimainkan semula: %2</translation>
+    </message>
+    <message>
+        <source>Replaying to %1… %2 %</source>
+        <translation>Memainkan semula ke %1… %2 %</translation>
+    </message>
+    <message>
+        <source>%1
+Recorded with Palpate %2 at %3 Hz on %4; device %5; %6 ticks, %7 events</source>
+        <translation>%1
+Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</translation>
+    </message>
+    <message>
+        <source>Dropped while recording</source>
+        <translation>Tercicir semasa merakam</translation>
+    </message>
+    <message>
+        <source>Damaged (%1)</source>
+        <translation>Rosak (%1)</translation>
+    </message>
+    <message>
+        <source>Lost (damaged or missing)</source>
+        <translation>Hilang (rosak atau tiada)</translation>
+    </message>
+    <message>
+        <source>Past where the replay stops (%1)</source>
+        <translation>Melepasi titik main semula berhenti (%1)</translation>
+    </message>
+    <message>
+        <source>—:— / —:—</source>
+        <translation>—:— / —:—</translation>
+    </message>
+    <message>
+        <source>%1 / %2  (tick %3)</source>
+        <translation>%1 / %2  (tik %3)</translation>
+    </message>
+    <message>
+        <source>Open a recording to play it back and check its replay.</source>
+        <translation>Buka rakaman untuk memainkannya semula dan menyemak main semulanya.</translation>
+    </message>
+    <message>
+        <source>Replay check: play or go to the end (End) to compare every tick with the recording.</source>
+        <translation>Semakan main semula: main atau pergi ke penghujung (End) untuk membandingkan setiap tik dengan rakaman.</translation>
+    </message>
+    <message>
+        <source>✔ The replay matches the recording bit for bit (%1 ticks, %2 chunk hashes checked).</source>
+        <translation>✔ Main semula sepadan dengan rakaman bit demi bit (%1 tik, %2 cincangan ketulan disemak).</translation>
+    </message>
+    <message>
+        <source>✘ The replay differs from the recording (%1 ticks). First: %2</source>
+        <translation>✘ Main semula berbeza daripada rakaman (%1 tik). Pertama: %2</translation>
+    </message>
+    <message>
+        <source>✘ %1 of %2 chunk hashes differ from the replay&apos;s.</source>
+        <translation>✘ %1 daripada %2 cincangan ketulan berbeza daripada main semula.</translation>
+    </message>
+    <message>
+        <source>The replay stopped early: %1. The %2 ticks replayed match the recording.</source>
+        <translation>Main semula berhenti awal: %1. %2 tik yang dimainkan semula sepadan dengan rakaman.</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::RecordingTimeline</name>
+    <message>
+        <source>Recording timeline</source>
+        <translation>Garis masa rakaman</translation>
+    </message>
+    <message>
+        <source>Arrows step, Page Up and Page Down jump, Home and End go to the ends, Ctrl+arrows go to the previous or next event, Space plays or pauses</source>
+        <translation>Anak panah melangkah, Page Up dan Page Down melompat, Home dan End pergi ke hujung, Ctrl+anak panah pergi ke peristiwa sebelum atau seterusnya, Space main atau jeda</translation>
+    </message>
+    <message>
+        <source>Open a recording to scrub through it</source>
+        <translation>Buka rakaman untuk meneliti melaluinya</translation>
+    </message>
+    <message>
+        <source>%1 (tick %2)</source>
+        <translation>%1 (tik %2)</translation>
+    </message>
+    <message>
+        <source>tick %1</source>
+        <translation>tik %1</translation>
+    </message>
+    <message>
+        <source>%1 at %2</source>
+        <translation>%1 pada %2</translation>
+    </message>
+    <message>
+        <source>… and %1 more here</source>
+        <translation>… dan %1 lagi di sini</translation>
+    </message>
+    <message>
+        <source>%1: ticks %2 to %3</source>
+        <translation>%1: tik %2 hingga %3</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ResultsDatabase</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>is a folder, not a results database</source>
+        <translation>ialah folder, bukan pangkalan data keputusan</translation>
+    </message>
+    <message>
+        <source>cannot be read (permission denied)</source>
+        <translation>tidak dapat dibaca (kebenaran ditolak)</translation>
+    </message>
+    <message>
+        <source>is not writable</source>
+        <translation>tidak boleh ditulis</translation>
+    </message>
+    <message>
+        <source>cannot be created: folder %1 does not exist</source>
+        <translation>tidak dapat dicipta: folder %1 tidak wujud</translation>
+    </message>
+    <message>
+        <source>cannot be created: folder %1 is not writable</source>
+        <translation>tidak dapat dicipta: folder %1 tidak boleh ditulis</translation>
+    </message>
+    <message>
+        <source>the Qt SQLite driver (QSQLITE) is not installed</source>
+        <translation>pemacu SQLite Qt (QSQLITE) tidak dipasang</translation>
+    </message>
+    <message>
+        <source>cannot be opened: %1</source>
+        <translation>tidak dapat dibuka: %1</translation>
+    </message>
+    <message>
+        <source>not a results database (%1)</source>
+        <translation>bukan pangkalan data keputusan (%1)</translation>
+    </message>
+    <message>
+        <source>schema version %1 is newer than this build reads (%2): update Palpate</source>
+        <translation>versi skema %1 lebih baharu daripada yang dibaca oleh binaan ini (%2): kemas kini Palpate</translation>
+    </message>
+    <message>
+        <source>is an SQLite database but not a Palpate results database</source>
+        <translation>ialah pangkalan data SQLite tetapi bukan pangkalan data keputusan Palpate</translation>
+    </message>
+    <message>
+        <source>cannot create the tables: %1</source>
+        <translation>tidak dapat mencipta jadual: %1</translation>
+    </message>
+    <message>
+        <source>cannot migrate from schema version 1 to 2: %1</source>
+        <translation>tidak dapat berpindah daripada versi skema 1 ke 2: %1</translation>
+    </message>
+    <message>
+        <source>not open</source>
+        <translation>tidak dibuka</translation>
+    </message>
+    <message>
+        <source>a trainee needs a name</source>
+        <translation>pelatih memerlukan nama</translation>
+    </message>
+    <message>
+        <source>cannot add trainee &quot;%1&quot;: %2</source>
+        <translation>tidak dapat menambah pelatih &quot;%1&quot;: %2</translation>
+    </message>
+    <message>
+        <source>no trainee with id %1</source>
+        <translation>tiada pelatih dengan id %1</translation>
+    </message>
+    <message>
+        <source>cannot store the result: %1</source>
+        <translation>tidak dapat menyimpan keputusan: %1</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::SceneOverlay</name>
+    <message>
+        <source>rest shape</source>
+        <translation>bentuk rehat</translation>
+    </message>
+    <message>
+        <source>touched</source>
+        <translation>disentuh</translation>
+    </message>
+    <message>
+        <source>ring %1</source>
+        <translation>gelang %1</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ScoreCard</name>
+    <message>
+        <source>Score</source>
+        <translation>Markah</translation>
+    </message>
+    <message>
+        <source>Metric</source>
+        <translation>Metrik</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Nilai</translation>
+    </message>
+    <message>
+        <source>Sub-score</source>
+        <translation>Sub-markah</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Mata</translation>
+    </message>
+    <message>
+        <source>Export PDF…</source>
+        <translation>Eksport PDF…</translation>
+    </message>
+    <message>
+        <source>History…</source>
+        <translation>Sejarah…</translation>
+    </message>
+    <message>
+        <source>No score yet: run an exercise.</source>
+        <translation>Belum ada markah: jalankan latihan.</translation>
+    </message>
+    <message>
+        <source>completed</source>
+        <translation>selesai</translation>
+    </message>
+    <message>
+        <source>time up</source>
+        <translation>masa tamat</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>dihentikan</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>%1 / 100</source>
+        <translation>%1 / 100</translation>
+    </message>
+    <message>
+        <source>not scored</source>
+        <translation>tidak diberi markah</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ScoreReportPdf</name>
+    <message>
+        <source>force window</source>
+        <translation>tetingkap daya</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Masa (s)</translation>
+    </message>
+    <message>
+        <source>|F| (N)</source>
+        <translation>|F| (N)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>cannot be written: folder %1 does not exist</source>
+        <translation>tidak dapat ditulis: folder %1 tidak wujud</translation>
+    </message>
+    <message>
+        <source>Palpate score report</source>
+        <translation>Laporan markah Palpate</translation>
+    </message>
+    <message>
+        <source>cannot be written (permission denied or disk full)</source>
+        <translation>tidak dapat ditulis (kebenaran ditolak atau cakera penuh)</translation>
+    </message>
+    <message>
+        <source>Trainee: %1</source>
+        <translation>Pelatih: %1</translation>
+    </message>
+    <message>
+        <source>Exercise: %1</source>
+        <translation>Latihan: %1</translation>
+    </message>
+    <message>
+        <source>Date: %1</source>
+        <translation>Tarikh: %1</translation>
+    </message>
+    <message>
+        <source>completed</source>
+        <translation>selesai</translation>
+    </message>
+    <message>
+        <source>time limit reached</source>
+        <translation>had masa dicapai</translation>
+    </message>
+    <message>
+        <source>not finished</source>
+        <translation>tidak selesai</translation>
+    </message>
+    <message>
+        <source>Result: %1</source>
+        <translation>Keputusan: %1</translation>
+    </message>
+    <message>
+        <source>Score: %1 / 100</source>
+        <translation>Markah: %1 / 100</translation>
+    </message>
+    <message>
+        <source>Metric</source>
+        <translation>Metrik</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Nilai</translation>
+    </message>
+    <message>
+        <source>Sub-score</source>
+        <translation>Sub-markah</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Pemberat</translation>
+    </message>
+    <message>
+        <source>Contribution</source>
+        <translation>Sumbangan</translation>
+    </message>
+    <message>
+        <source>n/a</source>
+        <translation>t/b</translation>
+    </message>
+    <message>
+        <source>Warning: %1</source>
+        <translation>Amaran: %1</translation>
+    </message>
+    <message>
+        <source>Force over time</source>
+        <translation>Daya mengikut masa</translation>
+    </message>
+    <message>
+        <source>cannot be written</source>
+        <translation>tidak dapat ditulis</translation>
+    </message>
+    <message>
+        <source>cannot be written (empty file)</source>
+        <translation>tidak dapat ditulis (fail kosong)</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::SpeedAccuracyChart</name>
+    <message>
+        <source>No sweep yet</source>
+        <translation>Belum ada sapuan</translation>
+    </message>
+    <message>
+        <source>Slope&amp;#8209;ring, rings:</source>
+        <translation>Gelang&amp;#8209;cerun, gelang:</translation>
+    </message>
+    <message>
+        <source>Paper (2 rings):</source>
+        <translation>Kertas kerja (2 gelang):</translation>
+    </message>
+    <message>
+        <source>Other models:</source>
+        <translation>Model lain:</translation>
+    </message>
+    <message>
+        <source>Pareto front (dashed)</source>
+        <translation>Hadapan Pareto (putus-putus)</translation>
+    </message>
+    <message>
+        <source>in use</source>
+        <translation>digunakan</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>Sfera</translation>
+    </message>
+    <message>
+        <source>Stomach</source>
+        <translation>Perut</translation>
+    </message>
+    <message>
+        <source>Pareto</source>
+        <translation>Pareto</translation>
+    </message>
+    <message>
+        <source>Tick cost (µs, log)</source>
+        <translation>Kos tik (µs, log)</translation>
+    </message>
+    <message>
+        <source>Haptic tick cost (µs, log scale)</source>
+        <translation>Kos tik haptik (µs, skala log)</translation>
+    </message>
+    <message>
+        <source>error vs. the flat punch: RMS / peak over r ≤ 5a</source>
+        <translation>ralat berbanding penebuk rata: RMS / puncak ke atas r ≤ 5a</translation>
+    </message>
+    <message>
+        <source>E = %1 kPa, ν = %2, tool radius a = %3 mm</source>
+        <translation>E = %1 kPa, ν = %2, jejari alat a = %3 mm</translation>
+    </message>
+    <message>
+        <source>%1: speed against accuracy</source>
+        <translation>%1: kelajuan berbanding ketepatan</translation>
+    </message>
+    <message>
+        <source>Displacement error (%)</source>
+        <translation>Ralat anjakan (%)</translation>
+    </message>
+    <message>
+        <source>%1, %2 %3 vertices
+tick %4 µs, displacement error %5 %, force error %6 %%7</source>
+        <translation>%1, %2 %3 bucu
+tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
+    </message>
+    <message>
+        <source>on the Pareto front</source>
+        <translation>pada hadapan Pareto</translation>
+    </message>
+    <message>
+        <source>Pareto front</source>
+        <translation>Hadapan Pareto</translation>
+    </message>
+    <message>
+        <source>current configuration</source>
+        <translation>konfigurasi semasa</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::TraineePanel</name>
+    <message>
+        <source>Trainee</source>
+        <translation>Pelatih</translation>
+    </message>
+    <message>
+        <source>New…</source>
+        <translation>Baharu…</translation>
+    </message>
+    <message>
+        <source>Add a trainee</source>
+        <translation>Tambah pelatih</translation>
+    </message>
+    <message>
+        <source>Trainee:</source>
+        <translation>Pelatih:</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Latihan</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Buka…</translation>
+    </message>
+    <message>
+        <source>Choose an exercise file</source>
+        <translation>Pilih fail latihan</translation>
+    </message>
+    <message>
+        <source>Exercise:</source>
+        <translation>Latihan:</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Mula</translation>
+    </message>
+    <message>
+        <source>Start the exercise (F6)</source>
+        <translation>Mulakan latihan (F6)</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Henti</translation>
+    </message>
+    <message>
+        <source>End the exercise now and score it (Shift+F6)</source>
+        <translation>Tamatkan latihan sekarang dan beri markah (Shift+F6)</translation>
+    </message>
+    <message>
+        <source>Mark</source>
+        <translation>Tanda</translation>
+    </message>
+    <message>
+        <source>Mark the lump where the tool presses now (M)</source>
+        <translation>Tandakan ketulan di tempat alat menekan sekarang (M)</translation>
+    </message>
+    <message>
+        <source>Choose a trainee and an exercise, then Start (F6).</source>
+        <translation>Pilih pelatih dan latihan, kemudian Mula (F6).</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>Sedang bermula…</translation>
+    </message>
+    <message>
+        <source>Target %1 of %2: press with %3 and hold</source>
+        <translation>Sasaran %1 daripada %2: tekan dengan %3 dan tahan</translation>
+    </message>
+    <message>
+        <source>On target</source>
+        <translation>Pada sasaran</translation>
+    </message>
+    <message>
+        <source>Move to the blue marker (%1 mm away)</source>
+        <translation>Bergerak ke penanda biru (%1 mm jauhnya)</translation>
+    </message>
+    <message>
+        <source>hold %p%</source>
+        <translation>tahan %p%</translation>
+    </message>
+    <message>
+        <source>All targets done</source>
+        <translation>Semua sasaran selesai</translation>
+    </message>
+    <message>
+        <source>No target left</source>
+        <translation>Tiada sasaran lagi</translation>
+    </message>
+    <message>
+        <source>Marked. Mark again to correct, or Stop to finish.</source>
+        <translation>Ditanda. Tanda lagi untuk membetulkan, atau Henti untuk selesai.</translation>
+    </message>
+    <message>
+        <source>Palpate gently; press Mark (M) while you press on the lump</source>
+        <translation>Palpasi dengan lembut; tekan Tanda (M) semasa anda menekan ketulan</translation>
+    </message>
+    <message>
+        <source>In contact</source>
+        <translation>Bersentuhan</translation>
+    </message>
+    <message>
+        <source>Not in contact</source>
+        <translation>Tidak bersentuhan</translation>
+    </message>
+    <message>
+        <source>marked</source>
+        <translation>ditanda</translation>
+    </message>
+    <message>
+        <source>not marked yet</source>
+        <translation>belum ditanda</translation>
+    </message>
+    <message>
+        <source>Follow the line with %1</source>
+        <translation>Ikut garisan dengan %1</translation>
+    </message>
+    <message>
+        <source>%1 mm from the line</source>
+        <translation>%1 mm dari garisan</translation>
+    </message>
+    <message>
+        <source>covered %p%</source>
+        <translation>diliputi %p%</translation>
+    </message>
+    <message>
+        <source>Time left %1 s · score so far %2</source>
+        <translation>Baki masa %1 s · markah setakat ini %2</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::WelcomePage</name>
+    <message>
+        <source>Welcome to Palpate</source>
+        <translation>Selamat Datang ke Palpate</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;Welcome to Palpate&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Selamat Datang ke Palpate&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>Palpate lets you feel a soft tissue model through a haptic device, or with the mouse. Here are three things to try first; you find this page again under Help &gt; Welcome, and the user guide under Help &gt; User Guide (F1).</source>
+        <translation>Palpate membolehkan anda merasai model tisu lembut melalui peranti haptik, atau dengan tetikus. Berikut tiga perkara untuk dicuba dahulu; halaman ini boleh ditemui semula di bawah Bantuan &gt; Selamat Datang, dan panduan pengguna di bawah Bantuan &gt; Panduan Pengguna (F1).</translation>
+    </message>
+    <message>
+        <source>Open the sample scene</source>
+        <translation>Buka adegan contoh</translation>
+    </message>
+    <message>
+        <source>The stomach wall model with its default tissue, ready to be pressed.</source>
+        <translation>Model dinding perut dengan tisu lalainya, sedia untuk ditekan.</translation>
+    </message>
+    <message>
+        <source>Try touch mode with the mouse</source>
+        <translation>Cuba mod sentuh dengan tetikus</translation>
+    </message>
+    <message>
+        <source>Left-drag presses the tissue, the wheel sets the depth; right-drag turns the view. No haptic device needed.</source>
+        <translation>Seret kiri menekan tisu, roda menetapkan kedalaman; seret kanan memutar pandangan. Tiada peranti haptik diperlukan.</translation>
+    </message>
+    <message>
+        <source>Run the example exercise</source>
+        <translation>Jalankan latihan contoh</translation>
+    </message>
+    <message>
+        <source>&quot;Press the targets&quot; as a preview: the Exercise dock guides you and scores the run (nothing is stored).</source>
+        <translation>&quot;Tekan sasaran&quot; sebagai pratonton: dok Latihan membimbing anda dan memberi markah (tiada apa-apa disimpan).</translation>
+    </message>
+    <message>
+        <source>Read the user guide</source>
+        <translation>Baca panduan pengguna</translation>
+    </message>
+    <message>
+        <source>What every window, dock and menu does, with pictures.</source>
+        <translation>Apa yang dilakukan oleh setiap tetingkap, dok dan menu, dengan gambar.</translation>
+    </message>
+    <message>
+        <source>&amp;Don&apos;t show this again at start</source>
+        <translation>&amp;Jangan tunjukkan lagi semasa mula</translation>
+    </message>
+</context>
+</TS>
