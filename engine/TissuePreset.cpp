@@ -1,14 +1,13 @@
 #include "engine/TissuePreset.h"
 
 #include "engine/AtomicFile.h"
+#include "engine/TextFile.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -432,16 +431,10 @@ PresetLoadResult parseTissuePreset(const std::string& textIn, const std::string&
 }
 
 PresetLoadResult loadTissuePreset(const std::string& path) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const auto status = fs::status(path, ec);
-    if (ec || !fs::exists(status)) return {std::nullopt, {path + ": no such file"}};
-    if (fs::is_directory(status)) return {std::nullopt, {path + ": is a directory, not a preset file"}};
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return {std::nullopt, {path + ": cannot be opened for reading"}};
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseTissuePreset(text.str(), path);
+    std::string error;
+    const auto text = readTextFile(path, "a preset file", error);
+    if (!text) return {std::nullopt, {error}};
+    return parseTissuePreset(*text, path);
 }
 
 std::string tissuePresetToJson(const TissuePreset& preset) {

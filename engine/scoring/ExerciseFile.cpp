@@ -1,6 +1,7 @@
 #include "engine/scoring/ExerciseFile.h"
 
 #include "engine/AtomicFile.h"
+#include "engine/TextFile.h"
 #include "engine/record/RecordingFormat.h"
 
 #include <nlohmann/json.hpp>
@@ -8,8 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace palpate {
 
@@ -276,16 +275,10 @@ ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& s
 }
 
 ExerciseLoadResult loadExercise(const std::string& path) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const auto status = fs::status(path, ec);
-    if (ec || !fs::exists(status)) return {std::nullopt, {path + ": no such file"}};
-    if (fs::is_directory(status)) return {std::nullopt, {path + ": is a directory, not an exercise file"}};
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return {std::nullopt, {path + ": cannot be opened for reading"}};
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseExercise(text.str(), path);
+    std::string error;
+    const auto text = readTextFile(path, "an exercise file", error);
+    if (!text) return {std::nullopt, {error}};
+    return parseExercise(*text, path);
 }
 
 std::string exerciseToJson(const Exercise& e, int indent) {
