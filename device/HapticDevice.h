@@ -1,5 +1,5 @@
 #pragma once
-// The device interface (DESIGN §6, after CHAI3D's cGenericHapticDevice). Qt-free.
+// The device interface (docs/devices.md, after CHAI3D's cGenericHapticDevice). Qt-free.
 // Backends implement it; the haptic loop reads samples without blocking and writes forces.
 
 #include <glm/vec3.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// The I/O thread of a hardware device (DESIGN §2: one per USB device, so that the haptic tick
+// The I/O thread of a hardware device (docs/architecture.md: one per USB device, so that the haptic tick
 // never waits on USB). A std::thread with a stop request and a sleep that a stop cuts short, so
 // that close() returns promptly even while the thread waits to retry a lost device.
 

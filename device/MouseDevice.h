@@ -1,7 +1,7 @@
 #pragma once
 // A virtual tool the GUI steers (the viewport's mouse drag) while the haptic thread reads it.
 // The two threads share only a seqlock and atomics: the GUI never takes a lock the haptic thread
-// takes (DESIGN §2), and the haptic thread never waits for the GUI. Not actuated: forces written
+// takes (docs/architecture.md), and the haptic thread never waits for the GUI. Not actuated: forces written
 // to it are kept only so the GUI can show what would have been rendered.
 
 #include "device/HapticDevice.h"

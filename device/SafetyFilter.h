@@ -1,5 +1,5 @@
 #pragma once
-// The last gate before a force reaches a device (DESIGN §6). Every force command of every device
+// The last gate before a force reaches a device (docs/devices.md). Every force command of every device
 // goes through one SafetyFilter: whatever the deformation model, the parameters or the timing did,
 // the device never gets a NaN, never more than its rated force, no jolt at start or reconnect, and
 // no force computed from a position the device no longer has.

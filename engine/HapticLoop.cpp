@@ -1,5 +1,8 @@
 #include "engine/HapticLoop.h"
 
+#include "engine/HapticRate.h"
+#include "engine/params/FieldTable.h"
+
 #include <glm/geometric.hpp>
 
 #include <pthread.h>
@@ -43,8 +46,9 @@ void hashBytes(std::uint64_t& hash, const void* data, std::size_t size) {
 }  // namespace
 
 std::string validateHapticLoopDef(const HapticLoopDef& def) {
-    if (!std::isfinite(def.rateHz) || def.rateHz < 10.0 || def.rateHz > 10000.0)
-        return "haptic rate " + std::to_string(def.rateHz) + " Hz is out of range 10..10000 Hz";
+    if (!std::isfinite(def.rateHz) || def.rateHz < kMinHapticRateHz || def.rateHz > kMaxHapticRateHz)
+        return "haptic rate " + std::to_string(def.rateHz) + " Hz is out of range " + formatNumber(kMinHapticRateHz) +
+               ".." + formatNumber(kMaxHapticRateHz) + " Hz";
     if (!std::isfinite(def.spinFraction) || def.spinFraction < 0.0 || def.spinFraction > 0.9)
         return "spinFraction " + std::to_string(def.spinFraction) + " must be in 0..0.9 of the period";
     if (def.fifoPriority < 1 || def.fifoPriority > 99)
@@ -190,7 +194,7 @@ void HapticLoop::tick(double nowS, double lateUs) {
     // relaxes, and the force is zero.
     const glm::vec3 tool = ready && !mPaused ? mLastSample.positionMm : glm::vec3(NAN);
     TickResult result = mScene->model().step(tool, mPeriodS);
-    // Divergence guard (issue 8, docs/stability.md): a model that left its stable range (NaN,
+    // Divergence guard (docs/stability.md): a model that left its stable range (NaN,
     // energy growth, force flipping every tick, an inverted triangle at the tool) renders no force
     // this tick and goes back to rest; counted and published so the GUI can say what to change.
     // Allocation-free; positionsMm() writes at most the active rings (slope-ring palpate).
@@ -342,7 +346,7 @@ std::string HapticLoop::setParams(const SlopeRingParams& params) {
     const auto errors = validateSlopeRingParams(params);
     if (!errors.empty()) {
         std::string text = "parameters not applied:";
-        for (const auto& e : errors) text += "\n  " + e;
+        for (const auto& e : errors) text += "\n  " + e.message;
         return text;
     }
     Command c{Command::Kind::Params, params, nullptr, nullptr};

@@ -126,7 +126,7 @@ private:
     std::unique_ptr<HapticScene> mScene;
     std::unique_ptr<HapticDevice> mDevice;
     SafetyFilter mSafety;
-    DivergenceGuard mGuard;  // issue 8: watches each tick's model output (docs/stability.md)
+    DivergenceGuard mGuard;  // watches each tick's model output (docs/stability.md)
 
     // Haptic-thread state.
     DeviceSample mLastSample;

@@ -26,7 +26,7 @@ struct LoopCounters {
     double maxJitterUs = 0.0;
     double achievedRateHz = 0.0;
     bool schedFifo = false;             ///< the thread runs SCHED_FIFO (else it fell back quietly)
-    /// Divergence guard (issue 8): ticks on which the model left its stable range (force zeroed,
+    /// Divergence guard (docs/stability.md): ticks on which the model left its stable range (force zeroed,
     /// tissue reset), the last one's kind and tick; divergenceAdvice(kind) says what to change.
     std::uint64_t divergences = 0;
     DivergenceKind lastDivergence = DivergenceKind::None;

@@ -32,17 +32,28 @@ inline bool closer(float d2, VertexId v, float bestD2, VertexId best) {
 
 }  // namespace
 
-std::string validateOctreeDef(const OctreeDef& def) {
-    if (def.maxDepth < 1 || def.maxDepth > 20)
-        return "octree maxDepth " + std::to_string(def.maxDepth) + " is out of range 1..20";
-    if (def.leafCapacity < 1 || def.leafCapacity > 100000)
-        return "octree leafCapacity " + std::to_string(def.leafCapacity) + " is out of range 1..100000";
-    return {};
+namespace {
+constexpr FieldDef<OctreeDef> kOctreeFields[] = {
+    field<&OctreeDef::maxDepth>({.key = "maxDepth", .jsonKey = "max_depth", .lo = 1, .hi = 20, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Max depth:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "octree depth"),
+                                 .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Levels below the octree's root (1..20).")}),
+    field<&OctreeDef::leafCapacity>({.key = "leafCapacity", .jsonKey = "leaf_capacity", .unit = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "vertices"), .lo = 1,
+                                     .hi = 100000, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Leaf capacity:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "leaf capacity"),
+                                     .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "A node with at most this many vertices is not split (1..100000).")}),
+};
+}  // namespace
+
+FieldTable<OctreeDef> octreeFields() { return kOctreeFields; }
+
+Problems validateOctreeDef(const OctreeDef& def) {
+    Problems problems;
+    checkFields(octreeFields(), def, problems);
+    for (Problem& p : problems) p.message = "octree " + p.message;
+    return problems;
 }
 
 Octree::Octree(const TissueMesh& mesh, const OctreeDef& def) : mDef(def), mRestMm(mesh.restPositionsMm()) {
-    const std::string problem = validateOctreeDef(def);
-    if (!problem.empty()) throw std::invalid_argument(problem);
+    if (const Problems problems = validateOctreeDef(def); !problems.empty())
+        throw std::invalid_argument(joinedMessages(problems));
     const MortonCube cube = mortonCubeFor(mRestMm);
     std::vector<std::uint64_t> codes(mRestMm.size());
     for (std::size_t i = 0; i < mRestMm.size(); ++i) codes[i] = mortonCode(cube, mRestMm[i]);

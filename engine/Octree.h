@@ -4,6 +4,7 @@
 // linear (the paper's "previous"), the paper's searchNode kept as written, and our exact one.
 
 #include "engine/TissueMesh.h"
+#include "engine/params/FieldTable.h"
 
 #include <glm/vec3.hpp>
 
@@ -18,8 +19,10 @@ struct OctreeDef {
     int leafCapacity = 16;   ///< a node with at most this many vertices is not split, >= 1
 };
 
-/// Returns "" when the definition is usable, else a message naming the field.
-std::string validateOctreeDef(const OctreeDef& def);
+/// The fields of OctreeDef in file order (engine/params/FieldTable.h).
+FieldTable<OctreeDef> octreeFields();
+/// Every problem of the definition, each naming the field; empty when usable.
+Problems validateOctreeDef(const OctreeDef& def);
 
 class Octree {
 public:

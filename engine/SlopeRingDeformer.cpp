@@ -59,7 +59,7 @@ void SlopeRingDeformer::setParams(const SlopeRingParams& params) {
     const auto errors = validateSlopeRingParams(params);
     if (!errors.empty()) {
         std::string text = "invalid slope-ring parameters:";
-        for (const auto& e : errors) text += "\n  " + e;
+        for (const auto& e : errors) text += "\n  " + e.message;
         throw std::invalid_argument(text);
     }
     const bool ringsChanged = params.ringCount != mParams.ringCount || mRingLists.empty();

@@ -1,68 +1,95 @@
 #include "engine/SlopeRingParams.h"
 
 #include <cmath>
-#include <sstream>
 
 namespace palpate {
 
 namespace {
-std::string number(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
-std::string slopeName(int r) { return "m" + std::to_string(r + 1); }
+
+std::string slopeName(int r) { return "|m" + std::to_string(r + 1) + "|"; }
+int slopesUsed(const SlopeRingParams& p) { return std::clamp(p.ringCount, 0, kMaxRings) + 1; }
+
+constexpr FieldDef<SlopeRingParams> kFields[] = {
+    field<&SlopeRingParams::ringCount>(
+        {.key = "ringCount", .jsonKey = "ring_count", .lo = 0, .hi = kMaxRings, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Ring count:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "ring count"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Rings of neighbours displaced with the touched vertex (ring r: the vertices r edges away). The paper "
+                "uses 2; each ring adds a slope below."),
+         .required = true, .entryLo = 0, .entryHi = kMaxRings}),
+    listField<&SlopeRingParams::slopeMagnitudeMmPerN, slopesUsed>(
+        {.key = "slopeMagnitudeMmPerN", .jsonKey = "slopes_mm_per_n", .unit = "mm/N", .lo = 0, .hi = kNoLimit,
+         .lower = Bound::Open,
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Slope magnitude |m| in mm/N: how far the vertex moves per newton of contact force; the model applies "
+                "the paper's sign (m < 0), which moves the vertex into the tissue."),
+         .decimals = 9, .step = 0.01, .required = true, .sizeKey = "ring_count", .itemName = slopeName}),
+    field<&SlopeRingParams::slopeLimitMmPerN>(
+        {.key = "slopeLimitMmPerN", .jsonKey = "slope_limit_mm_per_n", .unit = "mm/N", .lo = 0, .hi = 100,
+         .lower = Bound::Open, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Slope limit:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "slope limit"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Every slope magnitude must stay below this limit. The paper's range ends at 1 mm/N; calibrated soft "
+                "tissue may need more (at most 100 mm/N), allowed while the loop gain stays stable. Slopes above "
+                "1 mm/N are marked as outside the paper's range."),
+         .decimals = 4, .step = 0.1}),
+    field<&SlopeRingParams::contactStiffnessNPerMm>(
+        {.key = "contactStiffnessNPerMm", .jsonKey = "contact_stiffness_n_per_mm", .unit = "N/mm", .lo = 0,
+         .hi = kNoLimit, .lower = Bound::Open, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Contact stiffness k_c:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "contact stiffness"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Stiffness of the tool-tissue contact (a penalty spring). The loop gain is |m1| × k_c."),
+         .decimals = 4, .step = 0.1}),
+    field<&SlopeRingParams::forceRelaxation>(
+        {.key = "forceRelaxation", .jsonKey = "force_relaxation", .lo = 0, .hi = 1, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Force relaxation α:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "force relaxation"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Per-tick relaxation α of the contact force, in (0, 1]. Automatic (0) uses α = 1 / (1 + gain), which "
+                "solves the contact in one tick for any gain. The update is stable while α·(1 + gain) < 2."),
+         .decimals = 4, .step = 0.05}),
+    field<&SlopeRingParams::springStiffnessNPerMm>(
+        {.key = "springStiffnessNPerMm", .jsonKey = "spring_stiffness_n_per_mm", .unit = "N/mm", .lo = 0,
+         .hi = kNoLimit, .lower = Bound::Open, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Spring stiffness k:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "spring stiffness"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Stiffness of the springs that tie each vertex to its rest position. The touched vertex's spring "
+                "reaction is the force rendered to the user."),
+         .decimals = 9, .step = 0.1}),
+    field<&SlopeRingParams::dampingRatio>(
+        {.key = "dampingRatio", .jsonKey = "damping_ratio", .lo = 0, .hi = 100, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Damping ratio:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "damping ratio"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Damping of the return springs as a fraction of critical: 1 returns without overshoot, below 1 the "
+                "tissue rings before it settles (0..100)."),
+         .decimals = 3, .step = 0.1}),
+    field<&SlopeRingParams::vertexMassKg>(
+        {.key = "vertexMassKg", .jsonKey = "vertex_mass_kg", .unit = "kg", .lo = 0, .hi = kNoLimit,
+         .lower = Bound::Open, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Vertex mass:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "vertex mass"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Lumped mass per vertex, for the relaxation after the tool lets go."), .decimals = 7, .step = 0.0005}),
+};
+
 }  // namespace
 
-std::vector<std::string> validateSlopeRingParams(const SlopeRingParams& p) {
-    std::vector<std::string> errors;
-    auto finitePositive = [&](double v, const char* name, const char* unit) {
-        if (!std::isfinite(v) || v <= 0.0) {
-            errors.push_back(std::string(name) + " = " + number(v) + " " + unit + " must be a positive finite number");
-            return false;
-        }
-        return true;
-    };
-    if (p.ringCount < 0 || p.ringCount > kMaxRings)
-        errors.push_back("ringCount = " + std::to_string(p.ringCount) + " must be in 0.." + std::to_string(kMaxRings));
-    const bool limitOk = finitePositive(p.slopeLimitMmPerN, "slopeLimit", "mm/N");
-    if (limitOk && p.slopeLimitMmPerN > 100.0)
-        errors.push_back("slopeLimit = " + number(p.slopeLimitMmPerN) + " mm/N is above the hard maximum 100 mm/N");
-    const int used = std::min(std::max(p.ringCount, 0), kMaxRings) + 1;
+FieldTable<SlopeRingParams> slopeRingFields() { return kFields; }
+
+Problems validateSlopeRingParams(const SlopeRingParams& p) {
+    Problems problems;
+    checkFields(slopeRingFields(), p, problems);
+    const bool limitOk = !hasProblem(problems, "slopeLimitMmPerN");
+    const int used = slopesUsed(p);
     for (int r = 0; r < used; ++r) {
         const double m = p.slopeMagnitudeMmPerN[std::size_t(r)];
-        const std::string name = "|" + slopeName(r) + "|";
-        if (!std::isfinite(m) || m <= 0.0) {
-            errors.push_back(name + " = " + number(m) + " mm/N must be greater than 0 (the paper excludes 0)");
-            continue;
-        }
+        if (!std::isfinite(m) || m <= 0.0) continue;  // named by the table's range
         if (limitOk && m >= p.slopeLimitMmPerN)
-            errors.push_back(name + " = " + number(m) + " mm/N must be below the slope limit " +
-                             number(p.slopeLimitMmPerN) + " mm/N" +
-                             (p.slopeLimitMmPerN == 1.0 ? " (the paper's range is (0, 1))" : ""));
+            problems.push_back({"slopeMagnitudeMmPerN", r, -1,
+                                slopeName(r) + " = " + formatNumber(m) + " mm/N must be below the slope limit " +
+                                    formatNumber(p.slopeLimitMmPerN) + " mm/N" +
+                                    (p.slopeLimitMmPerN == 1.0 ? " (the paper's range is (0, 1))" : "")});
         if (r > 0) {
-            const double outer = p.slopeMagnitudeMmPerN[std::size_t(r - 1)];
-            if (std::isfinite(outer) && !(m < outer))
-                errors.push_back("slopes must decrease outward: |" + slopeName(r - 1) + "| = " + number(outer) +
-                                 " mm/N is not greater than " + name + " = " + number(m) + " mm/N");
+            const double inner = p.slopeMagnitudeMmPerN[std::size_t(r - 1)];
+            if (std::isfinite(inner) && !(m < inner))
+                problems.push_back({"slopeMagnitudeMmPerN", r, r - 1,
+                                    "slopes must decrease outward: " + slopeName(r - 1) + " = " + formatNumber(inner) +
+                                        " mm/N is not greater than " + slopeName(r) + " = " + formatNumber(m) + " mm/N"});
         }
     }
-    finitePositive(p.contactStiffnessNPerMm, "contactStiffness", "N/mm");
-    finitePositive(p.springStiffnessNPerMm, "springStiffness", "N/mm");
-    finitePositive(p.vertexMassKg, "vertexMass", "kg");
-    if (!std::isfinite(p.dampingRatio) || p.dampingRatio < 0.0 || p.dampingRatio > 100.0)
-        errors.push_back("dampingRatio = " + number(p.dampingRatio) + " must be in 0..100");
-    if (!std::isfinite(p.forceRelaxation) || p.forceRelaxation < 0.0 || p.forceRelaxation > 1.0)
-        errors.push_back("forceRelaxation = " + number(p.forceRelaxation) + " must be in (0, 1], or 0 for automatic");
-    if (errors.empty()) {
+    if (problems.empty()) {
         const double alpha = p.effectiveRelaxation();
         const double gain = p.loopGain();
         if (alpha * (1.0 + gain) >= 2.0)
-            errors.push_back("unstable: loop gain |m1| * contactStiffness = " + number(gain) +
-                             " with forceRelaxation " + number(alpha) + " gives alpha * (1 + gain) = " +
-                             number(alpha * (1.0 + gain)) + ", which must stay below 2");
+            problems.push_back({"forceRelaxation", -1, -1,
+                                "unstable: loop gain |m1| * contactStiffness = " + formatNumber(gain) +
+                                    " with forceRelaxation " + formatNumber(alpha) + " gives alpha * (1 + gain) = " +
+                                    formatNumber(alpha * (1.0 + gain)) + ", which must stay below 2"});
     }
-    return errors;
+    return problems;
 }
 
 }  // namespace palpate

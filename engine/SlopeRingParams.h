@@ -4,6 +4,7 @@
 // outward reaction force, into the tissue) is applied by the model. See docs/method.md.
 
 #include "engine/Rings.h"
+#include "engine/params/FieldTable.h"
 
 #include <array>
 #include <string>
@@ -37,7 +38,11 @@ struct SlopeRingParams {
     double effectiveRelaxation() const { return forceRelaxation > 0.0 ? forceRelaxation : 1.0 / (1.0 + loopGain()); }
 };
 
-/// Every problem found, each naming the parameter and the rule; empty when valid.
-std::vector<std::string> validateSlopeRingParams(const SlopeRingParams& params);
+/// The fields of SlopeRingParams in file order (engine/params/FieldTable.h).
+FieldTable<SlopeRingParams> slopeRingFields();
+
+/// Every problem found, each naming the field and the rule; empty when valid. Beyond the table's
+/// ranges: slopes below the slope limit and decreasing outward, and the loop-gain bound.
+Problems validateSlopeRingParams(const SlopeRingParams& params);
 
 }  // namespace palpate

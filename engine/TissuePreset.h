@@ -10,6 +10,7 @@
 #include "engine/SlopeRingParams.h"
 #include "engine/lod/LodNeeds.h"
 #include "engine/models/ModelRegistry.h"
+#include "engine/params/FieldTable.h"
 
 #include <optional>
 #include <string>
@@ -20,14 +21,19 @@ namespace palpate {
 /// Version 2 adds the registry models; a preset of a slope-ring method is still written as version 1.
 inline constexpr int kTissuePresetVersion = 2;
 
-/// Elastic properties the slopes were derived from, when known, with the source (DESIGN §3):
-/// the Parameters panel and the calibration turn them into slopes for the current mesh.
+/// Elastic properties the slopes were derived from, when known, with the source (docs/calibration.md):
+/// the Parameters panel and the calibration turn them into slopes for the current mesh. The
+/// defaults are the gelatin phantom's (what the panel shows for a preset without a tissue).
 struct TissueProperties {
-    double youngsModulusKPa = 0.0;
-    double poissonRatio = 0.0;
+    double youngsModulusKPa = 4.34;
+    double poissonRatio = 0.45;
     double toolRadiusMm = 5.0;  ///< radius of the probe the slopes are calibrated for
     std::string source;
 };
+/// The numeric fields of TissueProperties in file order (engine/params/FieldTable.h); "source" is
+/// a required string beside them.
+FieldTable<TissueProperties> tissueFields();
+Problems validateTissueProperties(const TissueProperties& tissue);
 
 /// The stability margin of a preset's parameter set when it was saved (stabilityMargin in
 /// engine/stability/StabilityMargin.h: > 0 inside the derived bound, <= 0 beyond) and the loop
@@ -36,6 +42,7 @@ struct PresetStabilityMargin {
     double margin = 1.0;
     double dtS = 1e-3;
 };
+FieldTable<PresetStabilityMargin> stabilityMarginFields();
 
 struct TissuePreset {
     std::string name = "default";
@@ -75,6 +82,9 @@ std::string presetModelName(const TissuePreset& preset);
 void setPresetModel(TissuePreset& preset, const ModelDef& def);
 /// Whether the preset's model runs on `params` (slope-ring methods and volumetric-rings).
 bool presetUsesSlopeRingParams(const TissuePreset& preset);
+
+/// True when every value of the two presets is the same (exact comparison): the undo check.
+bool samePreset(const TissuePreset& a, const TissuePreset& b);
 
 /// Parses preset JSON text; `sourceName` (a path) prefixes every message.
 PresetLoadResult parseTissuePreset(const std::string& text, const std::string& sourceName);

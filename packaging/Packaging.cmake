@@ -1,5 +1,6 @@
-# Installation and the Debian package (issue 12). Included from the top-level CMakeLists.txt after
-# the targets exist. `cmake --install build/release --prefix /usr` (or DESTDIR=...) lays out:
+# Installation and the Debian package (docs/architecture.md). Included from the top-level
+# CMakeLists.txt after the targets exist. `cmake --install build/release --prefix /usr`
+# (or DESTDIR=...) lays out:
 #   bin/palpate, bin/palpate-cli
 #   share/applications/org.palpate.Palpate.desktop
 #   share/icons/hicolor/scalable/apps/org.palpate.Palpate.svg and .../NxN/apps/org.palpate.Palpate.png

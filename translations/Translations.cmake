@@ -1,10 +1,10 @@
-# The German and Malay translations (issue 12). Included from app/gui/CMakeLists.txt: the .qm files
+# The German and Malay translations (translations/README.md). Included from app/gui/CMakeLists.txt: the .qm files
 # are built from translations/palpate_<lang>.ts by lrelease and embedded in palpate_gui as
 # :/i18n/palpate_<lang>.qm (app/gui/FirstRun.cpp loads them).
 #
 # After changing user-visible strings in app/gui/ or widgets/:
 #   cmake --build build/release --target update_translations
-# runs lupdate over app/gui and widgets and rewrites translations/*.ts (new strings come in as
+# runs lupdate over app/gui, widgets and the engine's field tables and rewrites translations/*.ts (new strings come in as
 # unfinished, removed ones are dropped); translate the unfinished entries (Qt Linguist, or by
 # hand), and the translations_complete test passes again.
 find_package(Qt6 REQUIRED COMPONENTS LinguistTools)
@@ -15,10 +15,14 @@ set(PALPATE_TS_FILES
 file(GLOB PALPATE_TR_SOURCES CONFIGURE_DEPENDS
   "${PROJECT_SOURCE_DIR}/app/gui/*.cpp" "${PROJECT_SOURCE_DIR}/app/gui/*.h"
   "${PROJECT_SOURCE_DIR}/widgets/*.cpp" "${PROJECT_SOURCE_DIR}/widgets/*.h")
+# The engine's parameter tables hold the labels and tooltips the Parameters panel shows, marked
+# with PALPATE_TRANSLATE_NOOP (engine/params/FieldTable.h), which lupdate reads as QT_TRANSLATE_NOOP.
+file(GLOB_RECURSE PALPATE_TR_ENGINE_SOURCES CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/engine/*.cpp")
+list(APPEND PALPATE_TR_SOURCES ${PALPATE_TR_ENGINE_SOURCES})
 
 qt_add_translations(palpate_gui
   TS_FILES ${PALPATE_TS_FILES}
   SOURCES ${PALPATE_TR_SOURCES}
   INCLUDE_DIRECTORIES "${PROJECT_SOURCE_DIR}"
-  LUPDATE_OPTIONS -no-obsolete -locations none
+  LUPDATE_OPTIONS -no-obsolete -locations none -tr-function-alias QT_TRANSLATE_NOOP+=PALPATE_TRANSLATE_NOOP
   RESOURCE_PREFIX "/i18n")

@@ -2483,10 +2483,6 @@ Pausiert: %13</translation>
         <translation>Elastizitätsmodul E:</translation>
     </message>
     <message>
-        <source> kPa</source>
-        <translation> kPa</translation>
-    </message>
-    <message>
         <source>Stiffness of the tissue, kPa (soft tissue: about 1 to 30 kPa).</source>
         <translation>Steifigkeit des Gewebes, kPa (Weichgewebe: etwa 1 bis 30 kPa).</translation>
     </message>
@@ -2495,20 +2491,8 @@ Pausiert: %13</translation>
         <translation>Poissonzahl ν:</translation>
     </message>
     <message>
-        <source>How the tissue bulges sideways when pressed, 0..%1 (soft tissue is nearly incompressible: about 0.45 to 0.49).</source>
-        <translation>Wie stark sich das Gewebe beim Drücken seitlich wölbt, 0..%1 (Weichgewebe ist nahezu inkompressibel: etwa 0,45 bis 0,49).</translation>
-    </message>
-    <message>
         <source>Tool radius a:</source>
         <translation>Werkzeugradius a:</translation>
-    </message>
-    <message>
-        <source> mm</source>
-        <translation> mm</translation>
-    </message>
-    <message>
-        <source>Radius of the probe&apos;s flat tip, mm (%1..%2).</source>
-        <translation>Radius der flachen Sondenspitze, mm (%1..%2).</translation>
     </message>
     <message>
         <source>Ca&amp;librate slopes</source>
@@ -2611,10 +2595,6 @@ Pausiert: %13</translation>
         <translation>Der Bereich des Artikels ist (0, 1) mm/N; größere Werte brauchen eine angehobene Steigungsgrenze und eine stabile Schleifenverstärkung.</translation>
     </message>
     <message>
-        <source> mm/N</source>
-        <translation> mm/N</translation>
-    </message>
-    <message>
         <source>Slope limit:</source>
         <translation>Steigungsgrenze:</translation>
     </message>
@@ -2625,10 +2605,6 @@ Pausiert: %13</translation>
     <message>
         <source>Spring stiffness k:</source>
         <translation>Federsteifigkeit k:</translation>
-    </message>
-    <message>
-        <source> N/mm</source>
-        <translation> N/mm</translation>
     </message>
     <message>
         <source>Stiffness of the springs that tie each vertex to its rest position. The touched vertex&apos;s spring reaction is the force rendered to the user.</source>
@@ -2667,10 +2643,6 @@ Pausiert: %13</translation>
         <translation>Knotenmasse:</translation>
     </message>
     <message>
-        <source> kg</source>
-        <translation> kg</translation>
-    </message>
-    <message>
         <source>Lumped mass per vertex, for the relaxation after the tool lets go.</source>
         <translation>Konzentrierte Masse pro Knoten, für die Relaxation, nachdem das Werkzeug loslässt.</translation>
     </message>
@@ -2685,10 +2657,6 @@ Pausiert: %13</translation>
     <message>
         <source>Leaf capacity:</source>
         <translation>Blattkapazität:</translation>
-    </message>
-    <message>
-        <source> vertices</source>
-        <translation> Knoten</translation>
     </message>
     <message>
         <source>A node with at most this many vertices is not split (1..100000).</source>
@@ -2721,18 +2689,6 @@ Pausiert: %13</translation>
     <message>
         <source>entered in the Parameters panel</source>
         <translation>im Parameterbereich eingegeben</translation>
-    </message>
-    <message>
-        <source>Young&apos;s modulus E = %1 kPa must be a positive number (at most %2 kPa)</source>
-        <translation>Elastizitätsmodul E = %1 kPa muss eine positive Zahl sein (höchstens %2 kPa)</translation>
-    </message>
-    <message>
-        <source>Poisson&apos;s ratio ν = %1 must be in 0..%2 (0.5 would be incompressible)</source>
-        <translation>Poissonzahl ν = %1 muss in 0..%2 liegen (0,5 wäre inkompressibel)</translation>
-    </message>
-    <message>
-        <source>tool radius a = %1 mm must be in %2..%3 mm</source>
-        <translation>Werkzeugradius a = %1 mm muss in %2..%3 mm liegen</translation>
     </message>
     <message>
         <source>E = %1 kPa, ν = %2, tool radius %3 mm</source>
@@ -2899,6 +2855,158 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
     <message>
         <source>Save preset</source>
         <translation>Vorgabe speichern</translation>
+    </message>
+    <message>
+        <source>vertices</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>How the tissue bulges sideways when pressed, 0..0.4999 (soft tissue is nearly incompressible: about 0.45 to 0.49; 0.5 would be incompressible).</source>
+        <translation>Wie stark sich das Gewebe beim Drücken seitlich wölbt, 0..0,4999 (Weichgewebe ist nahezu inkompressibel: etwa 0,45 bis 0,49; 0,5 wäre inkompressibel).</translation>
+    </message>
+    <message>
+        <source>Radius of the probe&apos;s flat tip, mm (0.01..1000).</source>
+        <translation>Radius der flachen Sondenspitze, mm (0,01..1000).</translation>
+    </message>
+    <message>
+        <source>Control points per axis:</source>
+        <translation>Kontrollpunkte pro Achse:</translation>
+    </message>
+    <message>
+        <source>Lattice resolution: control points per axis, Bernstein degree + 1 (2..16).</source>
+        <translation>Gitterauflösung: Kontrollpunkte pro Achse, Bernstein-Grad + 1 (2..16).</translation>
+    </message>
+    <message>
+        <source>Moved per axis:</source>
+        <translation>Bewegt pro Achse:</translation>
+    </message>
+    <message>
+        <source>Control points moved per axis: the block nearest the contact (1..control points).</source>
+        <translation>Pro Achse bewegte Kontrollpunkte: der Block, der dem Kontakt am nächsten liegt (1..Kontrollpunkte).</translation>
+    </message>
+    <message>
+        <source>Lattice margin:</source>
+        <translation>Gitterrand:</translation>
+    </message>
+    <message>
+        <source>The lattice is the mesh&apos;s bounding box grown by this fraction of its diagonal, in (0, 1].</source>
+        <translation>Das Gitter ist der Hüllquader des Netzes, vergrößert um diesen Anteil seiner Diagonale, in (0, 1].</translation>
+    </message>
+    <message>
+        <source>Stiffness k_s:</source>
+        <translation>Steifigkeit k_s:</translation>
+    </message>
+    <message>
+        <source>The rendered force is k_s times the touched vertex&apos;s displacement, N/mm.</source>
+        <translation>Die ausgegebene Kraft ist k_s mal die Verschiebung des berührten Knotens, N/mm.</translation>
+    </message>
+    <message>
+        <source>Vertex mass m:</source>
+        <translation>Knotenmasse m:</translation>
+    </message>
+    <message>
+        <source>Lumped mass per vertex, kg.</source>
+        <translation>Konzentrierte Masse pro Knoten, kg.</translation>
+    </message>
+    <message>
+        <source>Anchor stiffness k_a:</source>
+        <translation>Ankersteifigkeit k_a:</translation>
+    </message>
+    <message>
+        <source>Spring from each vertex to its rest position, N/mm: what holds the shape.</source>
+        <translation>Feder von jedem Knoten zu seiner Ruhelage, N/mm: sie hält die Form.</translation>
+    </message>
+    <message>
+        <source>Edge stiffness k_e:</source>
+        <translation>Kantensteifigkeit k_e:</translation>
+    </message>
+    <message>
+        <source>Spring along each mesh edge, N/mm: spreads the dent to the neighbours.</source>
+        <translation>Feder entlang jeder Netzkante, N/mm: verteilt die Delle auf die Nachbarn.</translation>
+    </message>
+    <message>
+        <source>Penalty stiffness between the tool tip and the touched vertex, N/mm.</source>
+        <translation>Straf-Steifigkeit zwischen Werkzeugspitze und berührtem Knoten, N/mm.</translation>
+    </message>
+    <message>
+        <source>Damping ratio ζ:</source>
+        <translation>Dämpfungsgrad ζ:</translation>
+    </message>
+    <message>
+        <source>Velocity damping as a fraction of the anchor spring&apos;s critical damping (0..100).</source>
+        <translation>Geschwindigkeitsdämpfung als Anteil der kritischen Dämpfung der Ankerfeder (0..100).</translation>
+    </message>
+    <message>
+        <source>Sub-steps:</source>
+        <translation>Teilschritte:</translation>
+    </message>
+    <message>
+        <source>Explicit integrators: sub-steps per tick; 0 = automatic (inside the stability bound); at most the max sub-steps.</source>
+        <translation>Explizite Integratoren: Teilschritte pro Takt; 0 = automatisch (innerhalb der Stabilitätsgrenze); höchstens die maximalen Teilschritte.</translation>
+    </message>
+    <message>
+        <source>Max sub-steps:</source>
+        <translation>Max. Teilschritte:</translation>
+    </message>
+    <message>
+        <source>Cap on automatic sub-steps (bounded work per tick).</source>
+        <translation>Obergrenze für automatische Teilschritte (begrenzte Arbeit pro Takt).</translation>
+    </message>
+    <message>
+        <source>CG iterations (max):</source>
+        <translation>CG-Iterationen (max.):</translation>
+    </message>
+    <message>
+        <source>Backward Euler: conjugate-gradient iteration cap.</source>
+        <translation>Rückwärts-Euler: Obergrenze der Iterationen des konjugierten Gradientenverfahrens.</translation>
+    </message>
+    <message>
+        <source>CG tolerance:</source>
+        <translation>CG-Toleranz:</translation>
+    </message>
+    <message>
+        <source>Backward Euler: relative residual at which conjugate gradients stop, in (0, 1).</source>
+        <translation>Rückwärts-Euler: relatives Residuum, bei dem das CG-Verfahren anhält, in (0, 1).</translation>
+    </message>
+    <message>
+        <source>Simulated rings:</source>
+        <translation>Simulierte Ringe:</translation>
+    </message>
+    <message>
+        <source>Rings of the touched vertex that are simulated; everything else is pinned at rest.</source>
+        <translation>Ringe des berührten Knotens, die simuliert werden; alles andere bleibt in Ruhelage fixiert.</translation>
+    </message>
+    <message>
+        <source>Integrator:</source>
+        <translation>Integrator:</translation>
+    </message>
+    <message>
+        <source>The local variant&apos;s integrator: symplectic Euler, RK4 or backward Euler.</source>
+        <translation>Der Integrator der lokalen Variante: symplektischer Euler, RK4 oder Rückwärts-Euler.</translation>
+    </message>
+    <message>
+        <source>Rest tolerance:</source>
+        <translation>Ruhetoleranz:</translation>
+    </message>
+    <message>
+        <source>A vertex outside the rings this close to rest and moving less than this per tick stops being simulated, mm.</source>
+        <translation>Ein Knoten außerhalb der Ringe, der so nah an der Ruhelage ist und sich pro Takt weniger bewegt, wird nicht mehr simuliert, mm.</translation>
+    </message>
+    <message>
+        <source>Radius R:</source>
+        <translation>Radius R:</translation>
+    </message>
+    <message>
+        <source>Every vertex within this distance of the touched vertex (in 3D, whatever the edges) moves, mm.</source>
+        <translation>Jeder Knoten innerhalb dieses Abstands vom berührten Knoten (in 3D, unabhängig von den Kanten) bewegt sich, mm.</translation>
+    </message>
+    <message>
+        <source>Profile degree:</source>
+        <translation>Profilgrad:</translation>
+    </message>
+    <message>
+        <source>The profile is (1 − r/R)^degree (2..8); a preset file&apos;s own coefficients are kept until the degree changes.</source>
+        <translation>Das Profil ist (1 − r/R)^Grad (2..8); die eigenen Koeffizienten einer Voreinstellungsdatei bleiben, bis sich der Grad ändert.</translation>
     </message>
 </context>
 <context>

@@ -2482,10 +2482,6 @@ pemapar %4</translation>
         <translation>Modulus Young E:</translation>
     </message>
     <message>
-        <source> kPa</source>
-        <translation> kPa</translation>
-    </message>
-    <message>
         <source>Stiffness of the tissue, kPa (soft tissue: about 1 to 30 kPa).</source>
         <translation>Kekakuan tisu, kPa (tisu lembut: kira-kira 1 hingga 30 kPa).</translation>
     </message>
@@ -2494,20 +2490,8 @@ pemapar %4</translation>
         <translation>Nisbah Poisson ν:</translation>
     </message>
     <message>
-        <source>How the tissue bulges sideways when pressed, 0..%1 (soft tissue is nearly incompressible: about 0.45 to 0.49).</source>
-        <translation>Bagaimana tisu membonjol ke sisi apabila ditekan, 0..%1 (tisu lembut hampir tidak boleh mampat: kira-kira 0.45 hingga 0.49).</translation>
-    </message>
-    <message>
         <source>Tool radius a:</source>
         <translation>Jejari alat a:</translation>
-    </message>
-    <message>
-        <source> mm</source>
-        <translation> mm</translation>
-    </message>
-    <message>
-        <source>Radius of the probe&apos;s flat tip, mm (%1..%2).</source>
-        <translation>Jejari hujung rata prob, mm (%1..%2).</translation>
     </message>
     <message>
         <source>Ca&amp;librate slopes</source>
@@ -2610,10 +2594,6 @@ pemapar %4</translation>
         <translation>Julat kertas kerja ialah (0, 1) mm/N; nilai lebih besar memerlukan had cerun yang dinaikkan dan gandaan gelung yang stabil.</translation>
     </message>
     <message>
-        <source> mm/N</source>
-        <translation> mm/N</translation>
-    </message>
-    <message>
         <source>Slope limit:</source>
         <translation>Had cerun:</translation>
     </message>
@@ -2624,10 +2604,6 @@ pemapar %4</translation>
     <message>
         <source>Spring stiffness k:</source>
         <translation>Kekakuan spring k:</translation>
-    </message>
-    <message>
-        <source> N/mm</source>
-        <translation> N/mm</translation>
     </message>
     <message>
         <source>Stiffness of the springs that tie each vertex to its rest position. The touched vertex&apos;s spring reaction is the force rendered to the user.</source>
@@ -2666,10 +2642,6 @@ pemapar %4</translation>
         <translation>Jisim bucu:</translation>
     </message>
     <message>
-        <source> kg</source>
-        <translation> kg</translation>
-    </message>
-    <message>
         <source>Lumped mass per vertex, for the relaxation after the tool lets go.</source>
         <translation>Jisim tergumpal setiap bucu, untuk pengenduran selepas alat dilepaskan.</translation>
     </message>
@@ -2684,10 +2656,6 @@ pemapar %4</translation>
     <message>
         <source>Leaf capacity:</source>
         <translation>Kapasiti daun:</translation>
-    </message>
-    <message>
-        <source> vertices</source>
-        <translation> bucu</translation>
     </message>
     <message>
         <source>A node with at most this many vertices is not split (1..100000).</source>
@@ -2720,18 +2688,6 @@ pemapar %4</translation>
     <message>
         <source>entered in the Parameters panel</source>
         <translation>dimasukkan dalam panel Parameter</translation>
-    </message>
-    <message>
-        <source>Young&apos;s modulus E = %1 kPa must be a positive number (at most %2 kPa)</source>
-        <translation>Modulus Young E = %1 kPa mesti nombor positif (paling banyak %2 kPa)</translation>
-    </message>
-    <message>
-        <source>Poisson&apos;s ratio ν = %1 must be in 0..%2 (0.5 would be incompressible)</source>
-        <translation>Nisbah Poisson ν = %1 mesti dalam 0..%2 (0.5 bermaksud tidak boleh mampat)</translation>
-    </message>
-    <message>
-        <source>tool radius a = %1 mm must be in %2..%3 mm</source>
-        <translation>jejari alat a = %1 mm mesti dalam %2..%3 mm</translation>
     </message>
     <message>
         <source>E = %1 kPa, ν = %2, tool radius %3 mm</source>
@@ -2898,6 +2854,158 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
     <message>
         <source>Save preset</source>
         <translation>Simpan praset</translation>
+    </message>
+    <message>
+        <source>vertices</source>
+        <translation>bucu</translation>
+    </message>
+    <message>
+        <source>How the tissue bulges sideways when pressed, 0..0.4999 (soft tissue is nearly incompressible: about 0.45 to 0.49; 0.5 would be incompressible).</source>
+        <translation>Sejauh mana tisu membonjol ke sisi apabila ditekan, 0..0.4999 (tisu lembut hampir tidak boleh mampat: kira-kira 0.45 hingga 0.49; 0.5 bermakna tidak boleh mampat langsung).</translation>
+    </message>
+    <message>
+        <source>Radius of the probe&apos;s flat tip, mm (0.01..1000).</source>
+        <translation>Jejari hujung rata prob, mm (0.01..1000).</translation>
+    </message>
+    <message>
+        <source>Control points per axis:</source>
+        <translation>Titik kawalan setiap paksi:</translation>
+    </message>
+    <message>
+        <source>Lattice resolution: control points per axis, Bernstein degree + 1 (2..16).</source>
+        <translation>Resolusi kekisi: titik kawalan setiap paksi, darjah Bernstein + 1 (2..16).</translation>
+    </message>
+    <message>
+        <source>Moved per axis:</source>
+        <translation>Digerakkan setiap paksi:</translation>
+    </message>
+    <message>
+        <source>Control points moved per axis: the block nearest the contact (1..control points).</source>
+        <translation>Titik kawalan yang digerakkan setiap paksi: blok yang paling hampir dengan sentuhan (1..titik kawalan).</translation>
+    </message>
+    <message>
+        <source>Lattice margin:</source>
+        <translation>Jidar kekisi:</translation>
+    </message>
+    <message>
+        <source>The lattice is the mesh&apos;s bounding box grown by this fraction of its diagonal, in (0, 1].</source>
+        <translation>Kekisi ialah kotak sempadan jejaring yang dibesarkan dengan pecahan pepenjurunya ini, dalam (0, 1].</translation>
+    </message>
+    <message>
+        <source>Stiffness k_s:</source>
+        <translation>Kekakuan k_s:</translation>
+    </message>
+    <message>
+        <source>The rendered force is k_s times the touched vertex&apos;s displacement, N/mm.</source>
+        <translation>Daya yang dipaparkan ialah k_s darab anjakan bucu yang disentuh, N/mm.</translation>
+    </message>
+    <message>
+        <source>Vertex mass m:</source>
+        <translation>Jisim bucu m:</translation>
+    </message>
+    <message>
+        <source>Lumped mass per vertex, kg.</source>
+        <translation>Jisim tergumpal setiap bucu, kg.</translation>
+    </message>
+    <message>
+        <source>Anchor stiffness k_a:</source>
+        <translation>Kekakuan sauh k_a:</translation>
+    </message>
+    <message>
+        <source>Spring from each vertex to its rest position, N/mm: what holds the shape.</source>
+        <translation>Spring dari setiap bucu ke kedudukan rehatnya, N/mm: yang mengekalkan bentuk.</translation>
+    </message>
+    <message>
+        <source>Edge stiffness k_e:</source>
+        <translation>Kekakuan sisi k_e:</translation>
+    </message>
+    <message>
+        <source>Spring along each mesh edge, N/mm: spreads the dent to the neighbours.</source>
+        <translation>Spring di sepanjang setiap sisi jejaring, N/mm: menyebarkan lekuk kepada jiran.</translation>
+    </message>
+    <message>
+        <source>Penalty stiffness between the tool tip and the touched vertex, N/mm.</source>
+        <translation>Kekakuan penalti antara hujung alat dan bucu yang disentuh, N/mm.</translation>
+    </message>
+    <message>
+        <source>Damping ratio ζ:</source>
+        <translation>Nisbah redaman ζ:</translation>
+    </message>
+    <message>
+        <source>Velocity damping as a fraction of the anchor spring&apos;s critical damping (0..100).</source>
+        <translation>Redaman halaju sebagai pecahan redaman kritikal spring sauh (0..100).</translation>
+    </message>
+    <message>
+        <source>Sub-steps:</source>
+        <translation>Sub-langkah:</translation>
+    </message>
+    <message>
+        <source>Explicit integrators: sub-steps per tick; 0 = automatic (inside the stability bound); at most the max sub-steps.</source>
+        <translation>Pengamir eksplisit: sub-langkah setiap detik; 0 = automatik (dalam had kestabilan); paling banyak sub-langkah maksimum.</translation>
+    </message>
+    <message>
+        <source>Max sub-steps:</source>
+        <translation>Sub-langkah maks.:</translation>
+    </message>
+    <message>
+        <source>Cap on automatic sub-steps (bounded work per tick).</source>
+        <translation>Had bagi sub-langkah automatik (kerja terhad setiap detik).</translation>
+    </message>
+    <message>
+        <source>CG iterations (max):</source>
+        <translation>Lelaran CG (maks.):</translation>
+    </message>
+    <message>
+        <source>Backward Euler: conjugate-gradient iteration cap.</source>
+        <translation>Euler ke belakang: had lelaran kecerunan konjugat.</translation>
+    </message>
+    <message>
+        <source>CG tolerance:</source>
+        <translation>Toleransi CG:</translation>
+    </message>
+    <message>
+        <source>Backward Euler: relative residual at which conjugate gradients stop, in (0, 1).</source>
+        <translation>Euler ke belakang: baki relatif di mana kecerunan konjugat berhenti, dalam (0, 1).</translation>
+    </message>
+    <message>
+        <source>Simulated rings:</source>
+        <translation>Gelang yang disimulasi:</translation>
+    </message>
+    <message>
+        <source>Rings of the touched vertex that are simulated; everything else is pinned at rest.</source>
+        <translation>Gelang bucu yang disentuh yang disimulasi; yang lain disemat pada kedudukan rehat.</translation>
+    </message>
+    <message>
+        <source>Integrator:</source>
+        <translation>Pengamir:</translation>
+    </message>
+    <message>
+        <source>The local variant&apos;s integrator: symplectic Euler, RK4 or backward Euler.</source>
+        <translation>Pengamir varian tempatan: Euler simplektik, RK4 atau Euler ke belakang.</translation>
+    </message>
+    <message>
+        <source>Rest tolerance:</source>
+        <translation>Toleransi rehat:</translation>
+    </message>
+    <message>
+        <source>A vertex outside the rings this close to rest and moving less than this per tick stops being simulated, mm.</source>
+        <translation>Bucu di luar gelang yang sedekat ini dengan kedudukan rehat dan bergerak kurang daripada ini setiap detik tidak lagi disimulasi, mm.</translation>
+    </message>
+    <message>
+        <source>Radius R:</source>
+        <translation>Jejari R:</translation>
+    </message>
+    <message>
+        <source>Every vertex within this distance of the touched vertex (in 3D, whatever the edges) moves, mm.</source>
+        <translation>Setiap bucu dalam jarak ini dari bucu yang disentuh (dalam 3D, tanpa mengira sisi) bergerak, mm.</translation>
+    </message>
+    <message>
+        <source>Profile degree:</source>
+        <translation>Darjah profil:</translation>
+    </message>
+    <message>
+        <source>The profile is (1 − r/R)^degree (2..8); a preset file&apos;s own coefficients are kept until the degree changes.</source>
+        <translation>Profil ialah (1 − r/R)^darjah (2..8); pekali fail praset sendiri dikekalkan sehingga darjah berubah.</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,5 @@
 #pragma once
-// The device panel (DESIGN §6, §7): choose a device by URI, ask to connect or disconnect, and watch
+// The device panel (docs/devices.md): choose a device by URI, ask to connect or disconnect, and watch
 // its state, the safety filter and the force. It does not own the haptic loop: it emits requests,
 // and the main window answers with setConnected / setDisconnected / showError and feeds it the
 // loop's snapshots. A red banner warns when a device that should be connected is lost (unplug,

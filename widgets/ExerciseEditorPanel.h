@@ -1,5 +1,5 @@
 #pragma once
-// The instructor's exercise editor (issue 7): authors a graded exercise (Exercise.h) in the GUI.
+// The instructor's exercise editor (docs/scoring.md): authors a graded exercise (Exercise.h) in the GUI.
 // Common fields (name, description, mesh, tissue preset, limits), one page per type (press
 // targets: a table of targets; find the lump: the inclusion; trace: the path points), the rubric
 // of the metrics that apply to the type, and the problems of the exercise, live. Points are placed

@@ -1,5 +1,5 @@
 #pragma once
-// The level-of-detail panel (issue 10, docs/lod.md): chooses the mesh level and ring count for the
+// The level-of-detail panel (docs/lod.md): chooses the mesh level and ring count for the
 // scene. The scene's needs (accuracy target, tick budget) come from the exercise or preset and can
 // be edited here; Plan makes (or reads from the cache beside the mesh) the coarser levels and
 // measures every level and ring count on a worker thread, with progress and Cancel; the table shows

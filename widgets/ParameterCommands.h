@@ -2,7 +2,7 @@
 // Undo commands of the parameters panel. A command holds the whole preset before and after the
 // edit (a TissuePreset is a few hundred bytes), so undo and redo restore every field at once and a
 // loaded preset is one step like any edit. The commands know nothing about widgets: they hand the
-// preset to a callback that shows it.
+// preset to a callback that shows it; samePreset (engine/TissuePreset.h) is the undo check.
 
 #include "engine/TissuePreset.h"
 
@@ -11,9 +11,6 @@
 #include <functional>
 
 namespace palpate {
-
-/// True when every value of the two presets is the same (exact comparison: the panel's own values).
-bool samePreset(const TissuePreset& a, const TissuePreset& b);
 
 /// Shows a preset in the panel's fields without pushing another command.
 using PresetSink = std::function<void(const TissuePreset&)>;

@@ -2,6 +2,7 @@
 
 #include "widgets/ParameterCommands.h"
 
+#include "engine/HapticRate.h"
 #include "engine/Octree.h"
 #include "engine/SceneTarget.h"
 #include "engine/SlopeRingDeformer.h"
@@ -38,7 +39,42 @@
 
 namespace palpate {
 
+/// One entry of an engine field table that the panel edits: the table's row (range, text), where
+/// the value lives in a TissuePreset, and the widget that shows it.
+struct PanelField {
+    QWidget* widget = nullptr;
+    const FieldSpec* spec = nullptr;
+    FieldType type = FieldType::Real;
+    int index = -1;        ///< the list entry (a slope); -1 for a scalar
+    std::string section;   ///< the preset file's section: slope_ring, mass_spring, ..., octree, tissue
+    std::function<double(const TissuePreset&)> get;
+    std::function<void(TissuePreset&, double)> set;  ///< null: presetFromFields sets it (the tissue)
+};
+
 namespace {
+
+/// Every row of `table` (each stored entry of a list its own field, when `lists`) as PanelFields
+/// reading and writing `member` of a TissuePreset.
+template <class S>
+void addFields(std::vector<PanelField>& out, const char* section, S TissuePreset::*member, FieldTable<S> table,
+               bool lists = true) {
+    for (const FieldDef<S>& f : table) {
+        const bool list = f.type == FieldType::RealList;
+        if (list && !lists) continue;
+        for (int i = 0; i < (list ? f.capacity : 1); ++i) {
+            PanelField field;
+            field.spec = &f.spec;
+            field.type = f.type;
+            field.index = list ? i : -1;
+            field.section = section;
+            const FieldDef<S>* row = &f;  // a row of the engine's static table
+            const int index = field.index;
+            field.get = [member, row, index](const TissuePreset& p) { return row->get(p.*member, index); };
+            field.set = [member, row, index](TissuePreset& p, double v) { row->set(p.*member, index, v); };
+            out.push_back(std::move(field));
+        }
+    }
+}
 
 constexpr SlopeRingMethod kMethods[] = {SlopeRingMethod::Palpate, SlopeRingMethod::Proposed, SlopeRingMethod::Hybrid,
                                         SlopeRingMethod::Previous};
@@ -80,122 +116,38 @@ constexpr RegistryModelText kRegistryModels[] = {
                        "work); uses the slopes and springs below. Cost: the rings of the tet graph.")},
 };
 
-/// The registry models' own parameters, one row each (docs/models.md has their meaning).
-enum class FieldType { Double, Int, Integrator };
-enum FieldFamily : unsigned { kWholeMassSpring = 1, kLocalMassSpring = 2, kRadius = 4, kFfd = 8 };
-struct ModelFieldDef {
-    unsigned families;
-    const char* field;  // the params struct's field, as its validator names it
-    const char* objectName;
-    const char* label;
-    const char* suffix;
-    const char* tip;
-    FieldType type;
-    double lo, hi;
-    int decimals;
-    double step;
-    double (*get)(const TissuePreset&);
-    void (*set)(TissuePreset&, double);
+/// The registry models whose own section of fields the model-parameters form shows.
+struct ModelSection {
+    const char* section;  ///< the preset file's section, as mFields names it
+    std::vector<ModelKind> kinds;
 };
-constexpr unsigned kMassSpring = kWholeMassSpring | kLocalMassSpring;
-#define PALPATE_TR(text) QT_TRANSLATE_NOOP("palpate::ParameterPanel", text)
-const ModelFieldDef kModelFields[] = {
-    {kMassSpring, "vertexMassKg", "massSpringVertexMassSpin", PALPATE_TR("Vertex mass m:"), " kg",
-     PALPATE_TR("Lumped mass per vertex, kg."), FieldType::Double, 0.0, 1.0e3, 7, 0.0005,
-     [](const TissuePreset& p) { return p.massSpring.vertexMassKg; }, [](TissuePreset& p, double v) { p.massSpring.vertexMassKg = v; }},
-    {kMassSpring, "anchorStiffnessNPerMm", "massSpringAnchorSpin", PALPATE_TR("Anchor stiffness k_a:"), " N/mm",
-     PALPATE_TR("Spring from each vertex to its rest position, N/mm: what holds the shape."), FieldType::Double, 0.0, 1.0e6,
-     6, 0.01, [](const TissuePreset& p) { return p.massSpring.anchorStiffnessNPerMm; },
-     [](TissuePreset& p, double v) { p.massSpring.anchorStiffnessNPerMm = v; }},
-    {kMassSpring, "edgeStiffnessNPerMm", "massSpringEdgeSpin", PALPATE_TR("Edge stiffness k_e:"), " N/mm",
-     PALPATE_TR("Spring along each mesh edge, N/mm: spreads the dent to the neighbours."), FieldType::Double, 0.0, 1.0e6, 6,
-     0.05, [](const TissuePreset& p) { return p.massSpring.edgeStiffnessNPerMm; },
-     [](TissuePreset& p, double v) { p.massSpring.edgeStiffnessNPerMm = v; }},
-    {kMassSpring, "contactStiffnessNPerMm", "massSpringContactSpin", PALPATE_TR("Contact stiffness k_c:"), " N/mm",
-     PALPATE_TR("Penalty stiffness between the tool tip and the touched vertex, N/mm."), FieldType::Double, 0.0, 1.0e6, 6,
-     0.1, [](const TissuePreset& p) { return p.massSpring.contactStiffnessNPerMm; },
-     [](TissuePreset& p, double v) { p.massSpring.contactStiffnessNPerMm = v; }},
-    {kMassSpring, "dampingRatio", "massSpringDampingSpin", PALPATE_TR("Damping ratio ζ:"), "",
-     PALPATE_TR("Velocity damping as a fraction of the anchor spring's critical damping (0..100)."), FieldType::Double,
-     0.0, 1000.0, 3, 0.1, [](const TissuePreset& p) { return p.massSpring.dampingRatio; },
-     [](TissuePreset& p, double v) { p.massSpring.dampingRatio = v; }},
-    {kMassSpring, "substeps", "massSpringSubstepsSpin", PALPATE_TR("Sub-steps:"), "",
-     PALPATE_TR("Explicit integrators: sub-steps per tick; 0 = automatic (inside the stability bound)."), FieldType::Int,
-     0, 1.0e6, 0, 1, [](const TissuePreset& p) { return double(p.massSpring.substeps); },
-     [](TissuePreset& p, double v) { p.massSpring.substeps = int(v); }},
-    {kMassSpring, "maxSubsteps", "massSpringMaxSubstepsSpin", PALPATE_TR("Max sub-steps:"), "",
-     PALPATE_TR("Cap on automatic sub-steps (bounded work per tick)."), FieldType::Int, 0, 1.0e6, 0, 1,
-     [](const TissuePreset& p) { return double(p.massSpring.maxSubsteps); },
-     [](TissuePreset& p, double v) { p.massSpring.maxSubsteps = int(v); }},
-    {kMassSpring, "cgMaxIterations", "massSpringCgIterationsSpin", PALPATE_TR("CG iterations (max):"), "",
-     PALPATE_TR("Backward Euler: conjugate-gradient iteration cap."), FieldType::Int, 0, 1.0e6, 0, 1,
-     [](const TissuePreset& p) { return double(p.massSpring.cgMaxIterations); },
-     [](TissuePreset& p, double v) { p.massSpring.cgMaxIterations = int(v); }},
-    {kMassSpring, "cgTolerance", "massSpringCgToleranceSpin", PALPATE_TR("CG tolerance:"), "",
-     PALPATE_TR("Backward Euler: relative residual at which conjugate gradients stop, in (0, 1)."), FieldType::Double, 0.0,
-     1.0, 12, 1e-6, [](const TissuePreset& p) { return p.massSpring.cgTolerance; },
-     [](TissuePreset& p, double v) { p.massSpring.cgTolerance = v; }},
-    {kLocalMassSpring, "localRingCount", "massSpringLocalRingsSpin", PALPATE_TR("Simulated rings:"), "",
-     PALPATE_TR("Rings of the touched vertex that are simulated; everything else is pinned at rest."), FieldType::Int, 0,
-     1000, 0, 1, [](const TissuePreset& p) { return double(p.massSpring.localRingCount); },
-     [](TissuePreset& p, double v) { p.massSpring.localRingCount = int(v); }},
-    {kLocalMassSpring, "localIntegrator", "massSpringLocalIntegratorCombo", PALPATE_TR("Integrator:"), "",
-     PALPATE_TR("The local variant's integrator: symplectic Euler, RK4 or backward Euler."), FieldType::Integrator, 0, 2,
-     0, 1, [](const TissuePreset& p) { return double(int(p.massSpring.localIntegrator)); },
-     [](TissuePreset& p, double v) { p.massSpring.localIntegrator = MassSpringIntegrator(int(v)); }},
-    {kLocalMassSpring, "restEpsilonMm", "massSpringRestEpsilonSpin", PALPATE_TR("Rest tolerance:"), " mm",
-     PALPATE_TR("A vertex outside the rings this close to rest and moving less than this per tick stops being "
-                "simulated, mm."),
-     FieldType::Double, 0.0, 1000.0, 9, 1e-4, [](const TissuePreset& p) { return p.massSpring.restEpsilonMm; },
-     [](TissuePreset& p, double v) { p.massSpring.restEpsilonMm = v; }},
-    {kRadius, "radiusMm", "radiusOfInfluenceRadiusSpin", PALPATE_TR("Radius R:"), " mm",
-     PALPATE_TR("Every vertex within this distance of the touched vertex (in 3D, whatever the edges) moves, mm."),
-     FieldType::Double, 0.0, 1.0e6, 4, 1.0, [](const TissuePreset& p) { return p.radiusOfInfluence.radiusMm; },
-     [](TissuePreset& p, double v) { p.radiusOfInfluence.radiusMm = v; }},
-    {kRadius, "degree", "radiusOfInfluenceDegreeSpin", PALPATE_TR("Profile degree:"), "",
-     PALPATE_TR("The profile is (1 − r/R)^degree (2..8); a preset file's own coefficients are kept until the degree "
-                "changes."),
-     FieldType::Int, 0, 100, 0, 1, [](const TissuePreset& p) { return double(p.radiusOfInfluence.degree); },
-     [](TissuePreset& p, double v) {
-         if (int(v) == p.radiusOfInfluence.degree) return;
-         p.radiusOfInfluence.degree = int(v);
-         p.radiusOfInfluence.coefficients = powerProfileCoefficients(int(v));
-     }},
-    {kRadius, "stiffnessNPerMm", "radiusOfInfluenceStiffnessSpin", PALPATE_TR("Stiffness k_s:"), " N/mm",
-     PALPATE_TR("The rendered force is k_s times the touched vertex's displacement, N/mm."), FieldType::Double, 0.0,
-     1.0e6, 6, 0.01, [](const TissuePreset& p) { return p.radiusOfInfluence.stiffnessNPerMm; },
-     [](TissuePreset& p, double v) { p.radiusOfInfluence.stiffnessNPerMm = v; }},
-    {kFfd, "controlPointsPerAxis", "ffdControlPointsSpin", PALPATE_TR("Control points per axis:"), "",
-     PALPATE_TR("Lattice resolution: control points per axis, Bernstein degree + 1 (2..16)."), FieldType::Int, 0, 1000, 0,
-     1, [](const TissuePreset& p) { return double(p.ffd.controlPointsPerAxis); },
-     [](TissuePreset& p, double v) { p.ffd.controlPointsPerAxis = int(v); }},
-    {kFfd, "movedPerAxis", "ffdMovedSpin", PALPATE_TR("Moved per axis:"), "",
-     PALPATE_TR("Control points moved per axis: the block nearest the contact (1..control points)."), FieldType::Int, 0,
-     1000, 0, 1, [](const TissuePreset& p) { return double(p.ffd.movedPerAxis); },
-     [](TissuePreset& p, double v) { p.ffd.movedPerAxis = int(v); }},
-    {kFfd, "marginFraction", "ffdMarginSpin", PALPATE_TR("Lattice margin:"), "",
-     PALPATE_TR("The lattice is the mesh's bounding box grown by this fraction of its diagonal, in (0, 1]."),
-     FieldType::Double, 0.0, 10.0, 4, 0.01, [](const TissuePreset& p) { return p.ffd.marginFraction; },
-     [](TissuePreset& p, double v) { p.ffd.marginFraction = v; }},
-    {kFfd, "stiffnessNPerMm", "ffdStiffnessSpin", PALPATE_TR("Stiffness k_s:"), " N/mm",
-     PALPATE_TR("The rendered force is k_s times the touched vertex's displacement, N/mm."), FieldType::Double, 0.0,
-     1.0e6, 6, 0.01, [](const TissuePreset& p) { return p.ffd.stiffnessNPerMm; },
-     [](TissuePreset& p, double v) { p.ffd.stiffnessNPerMm = v; }},
+const ModelSection kModelSections[] = {
+    {"mass_spring",
+     {ModelKind::MassSpringSymplectic, ModelKind::MassSpringRk4, ModelKind::MassSpringImplicit, ModelKind::MassSpringLocal}},
+    {"radius_of_influence", {ModelKind::RadiusOfInfluence}},
+    {"ffd", {ModelKind::Ffd}},
 };
-#undef PALPATE_TR
-constexpr int kModelFieldCount = int(std::size(kModelFields));
 
-/// The field families a model shows (0: the slope rows instead).
-unsigned familiesOf(ModelKind kind) {
-    switch (kind) {
-        case ModelKind::MassSpringSymplectic:
-        case ModelKind::MassSpringRk4:
-        case ModelKind::MassSpringImplicit: return kWholeMassSpring;
-        case ModelKind::MassSpringLocal: return kLocalMassSpring;
-        case ModelKind::RadiusOfInfluence: return kRadius;
-        case ModelKind::Ffd: return kFfd;
-        default: return 0;
+/// The section whose fields a model shows in the model-parameters form; "" for the slope rows.
+std::string modelSectionOf(ModelKind kind) {
+    for (const ModelSection& m : kModelSections)
+        if (std::find(m.kinds.begin(), m.kinds.end(), kind) != m.kinds.end()) return m.section;
+    return {};
+}
+
+/// "mass_spring" -> "massSpring"
+QString camelCase(const std::string& section) {
+    QString out;
+    bool upper = false;
+    for (char c : section) {
+        if (c == '_') {
+            upper = true;
+            continue;
+        }
+        out += upper ? QChar::fromLatin1(c).toUpper() : QChar::fromLatin1(c);
+        upper = false;
     }
+    return out;
 }
 
 QString modelData(std::string_view name) { return QString::fromLatin1(name.data(), qsizetype(name.size())); }
@@ -277,6 +229,39 @@ void ParameterPanel::buildUi() {
     setObjectName(QStringLiteral("parameterPanel"));
     setStyleSheet(QLatin1String(kStyleSheet));
 
+    // The fields, from the engine's tables; the tissue's are read from the preset's optional
+    // properties (the defaults when it has none) and written by tissueFromFields.
+    addFields(mFields, "slope_ring", &TissuePreset::params, slopeRingFields());
+    addFields(mFields, "octree", &TissuePreset::octree, octreeFields());
+    addFields(mFields, "mass_spring", &TissuePreset::massSpring, massSpringFields(), false);
+    addFields(mFields, "radius_of_influence", &TissuePreset::radiusOfInfluence, radiusOfInfluenceFields(), false);
+    addFields(mFields, "ffd", &TissuePreset::ffd, ffdFields(), false);
+    for (const FieldDef<TissueProperties>& f : tissueFields()) {
+        PanelField field;
+        field.spec = &f.spec;
+        field.type = f.type;
+        field.section = "tissue";
+        const FieldDef<TissueProperties>* row = &f;
+        field.get = [row](const TissuePreset& p) { return row->get(p.tissue.value_or(TissueProperties{}), -1); };
+        mFields.push_back(std::move(field));
+    }
+    // Each field of `section` whose key passes `pick` into `form`, in table order.
+    auto place = [this](const char* section, QFormLayout* form, QWidget* parent, auto pick) {
+        for (PanelField& f : mFields)
+            if (f.section == section && pick(std::string(f.spec->key))) {
+                QWidget* widget = createFieldWidget(f, parent);
+                if (f.index >= 0) {
+                    mSlopeLabels[std::size_t(f.index)] = new QLabel(parent);
+                    mSlopeLabels[std::size_t(f.index)]->setObjectName(QString::fromLatin1("slopeLabel%1").arg(f.index));
+                    mSlopeLabels[std::size_t(f.index)]->setBuddy(widget);
+                    form->addRow(mSlopeLabels[std::size_t(f.index)], widget);
+                } else {
+                    form->addRow(new QLabel(parent), widget);
+                }
+            }
+    };
+    auto all = [](const std::string&) { return true; };
+
     // The fields scroll (nine slope rows do not fit a short dock); feedback and buttons stay put.
     auto* fields = new QWidget;
     auto* fieldsLayout = new QVBoxLayout(fields);
@@ -303,7 +288,7 @@ void ParameterPanel::buildUi() {
     mModelCombo->insertSeparator(mModelCombo->count());
     for (const RegistryModelText& m : kRegistryModels) mModelCombo->addItem(QString(), modelData(m.name));
     mModelForm->addRow(new QLabel(fields), mModelCombo);
-    mRateSpin = doubleSpin(mModelGroup, "hapticRateSpin", 0.0, 100000.0, 1, 50.0);
+    mRateSpin = doubleSpin(mModelGroup, "hapticRateSpin", 0.0, 10.0 * kMaxHapticRateHz, 1, 50.0);
     mModelForm->addRow(new QLabel(fields), mRateSpin);
 
     // Tissue and tool: elasticity in, calibrated slopes out (into the slope group below).
@@ -313,12 +298,7 @@ void ParameterPanel::buildUi() {
     mTissueCombo->addItem(QString());  // "Choose a tissue…": the placeholder, no file
     mTissueCombo->setEnabled(false);   // until setTissuePresetDirectory finds presets
     mTissueForm->addRow(new QLabel(fields), mTissueCombo);
-    mYoungsSpin = doubleSpin(mTissueGroup, "youngsModulusSpin", 0.0, kMaxYoungsModulusKPa, 4, 0.1);
-    mTissueForm->addRow(new QLabel(fields), mYoungsSpin);
-    mPoissonSpin = doubleSpin(mTissueGroup, "poissonRatioSpin", -1.0, 1.0, 4, 0.01);
-    mTissueForm->addRow(new QLabel(fields), mPoissonSpin);
-    mToolRadiusSpin = doubleSpin(mTissueGroup, "toolRadiusSpin", 0.0, kMaxToolRadiusMm, 3, 0.5);
-    mTissueForm->addRow(new QLabel(fields), mToolRadiusSpin);
+    place("tissue", mTissueForm, mTissueGroup, all);
     // The button and its result in one nested widget: a spanning row, not a label column entry.
     auto* calibrateBox = new QWidget(mTissueGroup);
     auto* calibrateLayout = new QVBoxLayout(calibrateBox);
@@ -339,54 +319,28 @@ void ParameterPanel::buildUi() {
     mTissueForm->addRow(calibrateBox);
 
     newForm(mModelParamsGroup, mModelParamsForm, "modelParamsGroup");
-    for (const ModelFieldDef& f : kModelFields) {
-        QWidget* field = nullptr;
-        if (f.type == FieldType::Integrator) {
-            auto* combo = new QComboBox(mModelParamsGroup);
-            for (auto i : {MassSpringIntegrator::SymplecticEuler, MassSpringIntegrator::Rk4, MassSpringIntegrator::BackwardEuler})
-                combo->addItem(QString(), int(i));
-            field = combo;
-        } else if (f.type == FieldType::Int) {
-            field = intSpin(mModelParamsGroup, f.objectName, int(f.lo), int(f.hi));
-        } else {
-            field = doubleSpin(mModelParamsGroup, f.objectName, f.lo, f.hi, f.decimals, f.step);
-        }
-        field->setObjectName(QLatin1String(f.objectName));
-        mModelParamsForm->addRow(new QLabel(fields), field);
-        mModelFields.push_back(field);
-    }
+    for (const ModelSection& m : kModelSections) place(m.section, mModelParamsForm, mModelParamsGroup, all);
 
     newForm(mSlopeGroup, mSlopeForm, "slopeGroup");
-    mRingSpin = intSpin(mSlopeGroup, "ringCountSpin", 0, kMaxRings);
-    mSlopeForm->addRow(new QLabel(fields), mRingSpin);
-    for (int r = 0; r <= kMaxRings; ++r) {
-        const QByteArray name = "slopeSpin" + QByteArray::number(r);
-        mSlopeSpins[std::size_t(r)] = doubleSpin(mSlopeGroup, name.constData(), 0.0, 1000.0, kSlopeDecimals, 0.01);
-        mSlopeLabels[std::size_t(r)] = new QLabel(mSlopeGroup);
-        mSlopeLabels[std::size_t(r)]->setObjectName(QString::fromLatin1("slopeLabel%1").arg(r));
-        mSlopeLabels[std::size_t(r)]->setBuddy(mSlopeSpins[std::size_t(r)]);
-        mSlopeForm->addRow(mSlopeLabels[std::size_t(r)], mSlopeSpins[std::size_t(r)]);
-    }
-    mSlopeLimitSpin = doubleSpin(mSlopeGroup, "slopeLimitSpin", 0.0, 1000.0, 4, 0.1);
-    mSlopeForm->addRow(new QLabel(fields), mSlopeLimitSpin);
-
+    auto slopeRows = [](const std::string& key) {
+        return key == "ringCount" || key == "slopeMagnitudeMmPerN" || key == "slopeLimitMmPerN";
+    };
+    place("slope_ring", mSlopeForm, mSlopeGroup, slopeRows);
     newForm(mSpringGroup, mSpringForm, "springGroup");
-    mSpringSpin = doubleSpin(mSpringGroup, "springStiffnessSpin", 0.0, 1.0e6, kSlopeDecimals, 0.1);
-    mSpringForm->addRow(new QLabel(fields), mSpringSpin);
-    mDampingSpin = doubleSpin(mSpringGroup, "dampingRatioSpin", 0.0, 1000.0, 3, 0.1);
-    mSpringForm->addRow(new QLabel(fields), mDampingSpin);
-    mContactSpin = doubleSpin(mSpringGroup, "contactStiffnessSpin", 0.0, 1.0e6, 4, 0.1);
-    mSpringForm->addRow(new QLabel(fields), mContactSpin);
-    mRelaxationSpin = doubleSpin(mSpringGroup, "forceRelaxationSpin", 0.0, 10.0, 4, 0.05);
-    mSpringForm->addRow(new QLabel(fields), mRelaxationSpin);
-    mMassSpin = doubleSpin(mSpringGroup, "vertexMassSpin", 0.0, 1.0e3, 7, 0.0005);
-    mSpringForm->addRow(new QLabel(fields), mMassSpin);
-
+    place("slope_ring", mSpringForm, mSpringGroup, [&](const std::string& key) { return !slopeRows(key); });
     newForm(mOctreeGroup, mOctreeForm, "octreeGroup");
-    mDepthSpin = intSpin(mOctreeGroup, "octreeDepthSpin", 0, 64);
-    mOctreeForm->addRow(new QLabel(fields), mDepthSpin);
-    mLeafSpin = intSpin(mOctreeGroup, "leafCapacitySpin", 0, 10000000);
-    mOctreeForm->addRow(new QLabel(fields), mLeafSpin);
+    place("octree", mOctreeForm, mOctreeGroup, all);
+    // The widgets the panel's own logic refers to (ring rows, loop gain, tissue).
+    for (const PanelField& f : mFields) {
+        const std::string key = f.spec->key;
+        if (f.section == "slope_ring" && key == "ringCount") mRingSpin = qobject_cast<QSpinBox*>(f.widget);
+        if (f.section == "slope_ring" && f.index >= 0) mSlopeSpins[std::size_t(f.index)] = qobject_cast<QDoubleSpinBox*>(f.widget);
+        if (f.section == "slope_ring" && key == "contactStiffnessNPerMm") mContactSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
+        if (f.section == "slope_ring" && key == "forceRelaxation") mRelaxationSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
+        if (f.section == "tissue" && key == "youngsModulusKPa") mYoungsSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
+        if (f.section == "tissue" && key == "poissonRatio") mPoissonSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
+        if (f.section == "tissue" && key == "toolRadiusMm") mToolRadiusSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
+    }
     fieldsLayout->addStretch(1);
 
     mScroll = new QScrollArea(this);
@@ -464,30 +418,18 @@ void ParameterPanel::buildUi() {
     layout->addLayout(applyRow);
 
     // Every field: an edit records an undo step and revalidates.
-    connect(mModelCombo, &QComboBox::currentIndexChanged, this, [this] { onEdited(kModel); });
-    connect(mRingSpin, &QSpinBox::valueChanged, this, [this] { onEdited(kRingCount); });
-    const std::pair<QDoubleSpinBox*, int> doubles[] = {
-        {mRateSpin, kHapticRate},      {mSlopeLimitSpin, kSlopeLimit},    {mSpringSpin, kSpringStiffness},
-        {mDampingSpin, kDampingRatio}, {mContactSpin, kContactStiffness}, {mRelaxationSpin, kForceRelaxation},
-        {mMassSpin, kVertexMass}};
-    for (const auto& [spin, field] : doubles)
-        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, field = field] { onEdited(field); });
-    for (int r = 0; r <= kMaxRings; ++r)
-        connect(mSlopeSpins[std::size_t(r)], &QDoubleSpinBox::valueChanged, this, [this, r] { onEdited(kSlope0 + r); });
-    for (int i = 0; i < kModelFieldCount; ++i) {
-        QWidget* field = mModelFields[std::size_t(i)];
+    connect(mModelCombo, &QComboBox::currentIndexChanged, this, [this] { onEdited(kModelEdit); });
+    connect(mRateSpin, &QDoubleSpinBox::valueChanged, this, [this] { onEdited(kRateEdit); });
+    for (int i = 0; i < int(mFields.size()); ++i) {
+        QWidget* field = mFields[std::size_t(i)].widget;
+        const int edit = kFieldEdit0 + i;
         if (auto* spin = qobject_cast<QDoubleSpinBox*>(field))
-            connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i] { onEdited(kModelField0 + i); });
+            connect(spin, &QDoubleSpinBox::valueChanged, this, [this, edit] { onEdited(edit); });
         else if (auto* ints = qobject_cast<QSpinBox*>(field))
-            connect(ints, &QSpinBox::valueChanged, this, [this, i] { onEdited(kModelField0 + i); });
+            connect(ints, &QSpinBox::valueChanged, this, [this, edit] { onEdited(edit); });
         else if (auto* combo = qobject_cast<QComboBox*>(field))
-            connect(combo, &QComboBox::currentIndexChanged, this, [this, i] { onEdited(kModelField0 + i); });
+            connect(combo, &QComboBox::currentIndexChanged, this, [this, edit] { onEdited(edit); });
     }
-    connect(mDepthSpin, &QSpinBox::valueChanged, this, [this] { onEdited(kOctreeDepth); });
-    connect(mLeafSpin, &QSpinBox::valueChanged, this, [this] { onEdited(kLeafCapacity); });
-    connect(mYoungsSpin, &QDoubleSpinBox::valueChanged, this, [this] { onEdited(kYoungsModulus); });
-    connect(mPoissonSpin, &QDoubleSpinBox::valueChanged, this, [this] { onEdited(kPoissonRatio); });
-    connect(mToolRadiusSpin, &QDoubleSpinBox::valueChanged, this, [this] { onEdited(kToolRadius); });
     connect(mTissueCombo, &QComboBox::activated, this, [this](int index) {
         const QString path = mTissueCombo->itemData(index).toString();
         if (!path.isEmpty()) loadPresetFile(path);
@@ -521,30 +463,44 @@ QString ParameterPanel::slopeLabel(int ring) const {
     return tr("|m%1| (ring %2)").arg(ring + 1).arg(ring);
 }
 
-QString ParameterPanel::fieldName(int field) const {
-    switch (field) {
-    case kModel: return tr("deformation model");
-    case kRingCount: return tr("ring count");
-    case kSlopeLimit: return tr("slope limit");
-    case kSpringStiffness: return tr("spring stiffness");
-    case kDampingRatio: return tr("damping ratio");
-    case kContactStiffness: return tr("contact stiffness");
-    case kForceRelaxation: return tr("force relaxation");
-    case kVertexMass: return tr("vertex mass");
-    case kOctreeDepth: return tr("octree depth");
-    case kLeafCapacity: return tr("leaf capacity");
-    case kHapticRate: return tr("haptic rate");
-    case kYoungsModulus: return tr("Young's modulus");
-    case kPoissonRatio: return tr("Poisson's ratio");
-    case kToolRadius: return tr("tool radius");
-    default:
-        if (field >= kModelField0 && field < kModelField0 + kModelFieldCount) {
-            QString label = tr(kModelFields[field - kModelField0].label);
-            if (label.endsWith(QLatin1Char(':'))) label.chop(1);
-            return label;
-        }
-        return slopeLabel(field - kSlope0);
+QWidget* ParameterPanel::createFieldWidget(PanelField& f, QWidget* parent) {
+    const FieldSpec& spec = *f.spec;
+    QString name = camelCase(f.section) + QChar::fromLatin1(spec.key[0]).toUpper() + QLatin1String(spec.key + 1) +
+                   QLatin1String(f.type == FieldType::Choice ? "Combo" : "Spin");
+    if (f.index >= 0) name += QString::number(f.index);
+    QWidget* widget = nullptr;
+    if (f.type == FieldType::Choice) {
+        auto* combo = new QComboBox(parent);
+        for (int i = 0; i < int(spec.choices.size()); ++i) combo->addItem(QString(), i);
+        widget = combo;
+    } else if (f.type == FieldType::Whole) {
+        widget = intSpin(parent, "", int(entryLowOf(spec)), int(entryHighOf(spec)));
+    } else {
+        widget = doubleSpin(parent, "", entryLowOf(spec), entryHighOf(spec), spec.decimals, spec.step);
     }
+    widget->setObjectName(name);
+    f.widget = widget;
+    return widget;
+}
+
+std::vector<const PanelField*> ParameterPanel::fieldsNamedBy(const std::string& section, const Problem& problem) const {
+    std::vector<const PanelField*> named;
+    for (const PanelField& f : mFields)
+        if (f.section == section && problem.field == f.spec->key &&
+            (f.index < 0 || problem.index < 0 || f.index == problem.index || f.index == problem.relatedIndex))
+            named.push_back(&f);
+    return named;
+}
+
+QString ParameterPanel::fieldName(int edit) const {
+    if (edit == kModelEdit) return tr("deformation model");
+    if (edit == kRateEdit) return tr("haptic rate");
+    const PanelField& f = mFields[std::size_t(edit - kFieldEdit0)];
+    if (f.index >= 0) return slopeLabel(f.index);
+    if (*f.spec->name) return tr(f.spec->name);
+    QString label = tr(f.spec->label);
+    if (label.endsWith(QLatin1Char(':'))) label.chop(1);
+    return label;
 }
 
 void ParameterPanel::retranslateUi() {
@@ -560,16 +516,6 @@ void ParameterPanel::retranslateUi() {
     mTissueCombo->setItemText(0, tr("Choose a tissue…"));
     mTissueCombo->setToolTip(tr("Load a shipped tissue preset: E, ν, the tool radius and slopes calibrated for the "
                                 "default stomach mesh (one undoable step). Each entry's tooltip names its source."));
-    setRowLabel(mTissueForm, mYoungsSpin, tr("Young's modulus E:"));
-    mYoungsSpin->setSuffix(tr(" kPa"));
-    mYoungsSpin->setToolTip(tr("Stiffness of the tissue, kPa (soft tissue: about 1 to 30 kPa)."));
-    setRowLabel(mTissueForm, mPoissonSpin, tr("Poisson's ratio ν:"));
-    mPoissonSpin->setToolTip(tr("How the tissue bulges sideways when pressed, 0..%1 (soft tissue is nearly "
-                                "incompressible: about 0.45 to 0.49).")
-                                 .arg(kMaxPoissonRatio));
-    setRowLabel(mTissueForm, mToolRadiusSpin, tr("Tool radius a:"));
-    mToolRadiusSpin->setSuffix(tr(" mm"));
-    mToolRadiusSpin->setToolTip(tr("Radius of the probe's flat tip, mm (%1..%2).").arg(kMinToolRadiusMm).arg(kMaxToolRadiusMm));
     mCalibrateButton->setText(tr("Ca&librate slopes"));
     mCalibrateButton->setToolTip(tr("Slopes for the ring count and spring k for the current mesh from E, ν and the tool "
                                     "radius (flat punch: |m1| = 1 / (2 a E*), k = 1 / |m1|), then the error the "
@@ -600,30 +546,28 @@ void ParameterPanel::retranslateUi() {
     }
     mModelCombo->setToolTip(tr("Which model deforms the tissue: the slope-ring methods (ours and the paper's three), "
                                "then the literature's other models (docs/models.md)."));
-    for (int i = 0; i < kModelFieldCount; ++i) {
-        const ModelFieldDef& f = kModelFields[i];
-        QWidget* field = mModelFields[std::size_t(i)];
-        setRowLabel(mModelParamsForm, field, tr(f.label));
-        field->setToolTip(tr(f.tip));
-        if (auto* spin = qobject_cast<QDoubleSpinBox*>(field); spin && *f.suffix) spin->setSuffix(tr(f.suffix));
-        if (auto* combo = qobject_cast<QComboBox*>(field)) {
-            combo->setItemText(0, tr("Symplectic Euler"));
-            combo->setItemText(1, tr("RK4"));
-            combo->setItemText(2, tr("Backward Euler (implicit)"));
-        }
+    // Every table field: its label, tooltip and unit from the engine's table, translated here.
+    for (const PanelField& f : mFields) {
+        QFormLayout* form = qobject_cast<QFormLayout*>(f.widget->parentWidget()->layout());
+        if (f.index < 0 && form) setRowLabel(form, f.widget, tr(f.spec->label));
+        f.widget->setToolTip(tr(f.spec->tip));
+        // Units are international ("mm/N"); tr() translates the few that are words ("vertices").
+        const QString suffix = *f.spec->unit ? QLatin1Char(' ') + tr(f.spec->unit) : QString();
+        if (auto* spin = qobject_cast<QDoubleSpinBox*>(f.widget)) spin->setSuffix(suffix);
+        if (auto* ints = qobject_cast<QSpinBox*>(f.widget)) ints->setSuffix(suffix);
+        if (auto* combo = qobject_cast<QComboBox*>(f.widget))
+            for (int i = 0; i < combo->count() && i < int(f.spec->choiceLabels.size()); ++i)
+                combo->setItemText(i, tr(f.spec->choiceLabels[std::size_t(i)]));
     }
     setRowLabel(mModelForm, mRateSpin, tr("Haptic rate:"));
     mRateSpin->setSuffix(tr(" Hz"));
     mRateSpin->setToolTip(tr("Ticks per second of the haptic loop, %1..%2 Hz (haptics usually runs at 1000 Hz).")
-                              .arg(kMinRateHz)
-                              .arg(kMaxRateHz));
+                              .arg(kMinHapticRateHz)
+                              .arg(kMaxHapticRateHz));
 
-    setRowLabel(mSlopeForm, mRingSpin, tr("Ring count:"));
-    mRingSpin->setToolTip(tr("Rings of neighbours displaced with the touched vertex (ring r: the vertices r edges "
-                             "away). The paper uses 2; each ring adds a slope below."));
+    const auto slope = std::find_if(mFields.begin(), mFields.end(), [](const PanelField& f) { return f.index == 0; });
     const QString slopeTip =
-        tr("Slope magnitude |m| in mm/N: how far the vertex moves per newton of contact force; the model applies the "
-           "paper's sign (m < 0), which moves the vertex into the tissue.") +
+        tr(slope->spec->tip) +
         QStringLiteral("\n\n") +
         tr("Read with signs, the paper's \"m1 > m2 > m3\" would move the outer rings further than the touched "
            "vertex. Palpate orders the magnitudes instead, |m1| > |m2| > |m3| > …, so the displacement decays away "
@@ -633,40 +577,9 @@ void ParameterPanel::retranslateUi() {
     for (int r = 0; r <= kMaxRings; ++r) {
         mSlopeLabels[std::size_t(r)]->setText(slopeLabel(r) + QLatin1Char(':'));
         mSlopeLabels[std::size_t(r)]->setToolTip(slopeTip);
-        mSlopeSpins[std::size_t(r)]->setSuffix(tr(" mm/N"));
         mSlopeSpins[std::size_t(r)]->setToolTip(slopeTip);
     }
-    setRowLabel(mSlopeForm, mSlopeLimitSpin, tr("Slope limit:"));
-    mSlopeLimitSpin->setSuffix(tr(" mm/N"));
-    mSlopeLimitSpin->setToolTip(tr("Every slope magnitude must stay below this limit. The paper's range ends at 1 mm/N; "
-                                   "calibrated soft tissue may need more (at most 100 mm/N), allowed while the loop "
-                                   "gain stays stable. Slopes above 1 mm/N are marked as outside the paper's range."));
-
-    setRowLabel(mSpringForm, mSpringSpin, tr("Spring stiffness k:"));
-    mSpringSpin->setSuffix(tr(" N/mm"));
-    mSpringSpin->setToolTip(tr("Stiffness of the springs that tie each vertex to its rest position. The touched "
-                               "vertex's spring reaction is the force rendered to the user."));
-    setRowLabel(mSpringForm, mDampingSpin, tr("Damping ratio:"));
-    mDampingSpin->setToolTip(tr("Damping of the return springs as a fraction of critical: 1 returns without "
-                                "overshoot, below 1 the tissue rings before it settles (0..100)."));
-    setRowLabel(mSpringForm, mContactSpin, tr("Contact stiffness k_c:"));
-    mContactSpin->setSuffix(tr(" N/mm"));
-    mContactSpin->setToolTip(tr("Stiffness of the tool-tissue contact (a penalty spring). The loop gain is "
-                                "|m1| × k_c."));
-    setRowLabel(mSpringForm, mRelaxationSpin, tr("Force relaxation α:"));
-    mRelaxationSpin->setSpecialValueText(tr("automatic"));
-    mRelaxationSpin->setToolTip(tr("Per-tick relaxation α of the contact force, in (0, 1]. Automatic (0) uses "
-                                   "α = 1 / (1 + gain), which solves the contact in one tick for any gain. The update "
-                                   "is stable while α·(1 + gain) < 2."));
-    setRowLabel(mSpringForm, mMassSpin, tr("Vertex mass:"));
-    mMassSpin->setSuffix(tr(" kg"));
-    mMassSpin->setToolTip(tr("Lumped mass per vertex, for the relaxation after the tool lets go."));
-
-    setRowLabel(mOctreeForm, mDepthSpin, tr("Max depth:"));
-    mDepthSpin->setToolTip(tr("Levels below the octree's root (1..20)."));
-    setRowLabel(mOctreeForm, mLeafSpin, tr("Leaf capacity:"));
-    mLeafSpin->setSuffix(tr(" vertices"));
-    mLeafSpin->setToolTip(tr("A node with at most this many vertices is not split (1..100000)."));
+    mRelaxationSpin->setSpecialValueText(tr("automatic"));  // 0: alpha = 1 / (1 + gain)
 
     // mStabilityLabel's tooltip depends on the model: validate() sets it.
     // The slope group's title states the ordering rule; its tooltip says why.
@@ -712,24 +625,13 @@ TissuePreset ParameterPanel::presetFromFields() const {
         preset.modelKind = model->kind;
         if (model->kind == ModelKind::SlopeRing) preset.method = model->slopeRingMethod;
     }
-    for (int i = 0; i < kModelFieldCount; ++i) {
-        QWidget* field = mModelFields[std::size_t(i)];
-        if (auto* spin = qobject_cast<QDoubleSpinBox*>(field)) kModelFields[i].set(preset, spin->value());
-        else if (auto* ints = qobject_cast<QSpinBox*>(field)) kModelFields[i].set(preset, ints->value());
-        else if (auto* combo = qobject_cast<QComboBox*>(field)) kModelFields[i].set(preset, combo->currentData().toInt());
-    }
     preset.hapticRateHz = mRateSpin->value();
-    SlopeRingParams& p = preset.params;
-    p.ringCount = mRingSpin->value();
-    for (int r = 0; r <= kMaxRings; ++r) p.slopeMagnitudeMmPerN[std::size_t(r)] = mSlopeSpins[std::size_t(r)]->value();
-    p.slopeLimitMmPerN = mSlopeLimitSpin->value();
-    p.springStiffnessNPerMm = mSpringSpin->value();
-    p.dampingRatio = mDampingSpin->value();
-    p.contactStiffnessNPerMm = mContactSpin->value();
-    p.forceRelaxation = mRelaxationSpin->value();
-    p.vertexMassKg = mMassSpin->value();
-    preset.octree.maxDepth = mDepthSpin->value();
-    preset.octree.leafCapacity = mLeafSpin->value();
+    for (const PanelField& f : mFields) {
+        if (!f.set) continue;
+        if (auto* spin = qobject_cast<QDoubleSpinBox*>(f.widget)) f.set(preset, spin->value());
+        else if (auto* ints = qobject_cast<QSpinBox*>(f.widget)) f.set(preset, ints->value());
+        else if (auto* combo = qobject_cast<QComboBox*>(f.widget)) f.set(preset, combo->currentData().toInt());
+    }
     preset.tissue = tissueFromFields();
     return preset;
 }
@@ -741,9 +643,9 @@ std::optional<TissueProperties> ParameterPanel::tissueFromFields() const {
         if (youngs == shownAs(mYoungsSpin, t.youngsModulusKPa) && poisson == shownAs(mPoissonSpin, t.poissonRatio) &&
             radius == shownAs(mToolRadiusSpin, t.toolRadiusMm))
             return TissueProperties{youngs, poisson, radius, t.source};  // as shown: its source still holds
-    } else if (youngs == shownAs(mYoungsSpin, kDefaultYoungsModulusKPa) &&
-               poisson == shownAs(mPoissonSpin, kDefaultPoissonRatio) &&
-               radius == shownAs(mToolRadiusSpin, kDefaultToolRadiusMm)) {
+    } else if (const TissueProperties defaults; youngs == shownAs(mYoungsSpin, defaults.youngsModulusKPa) &&
+                                                  poisson == shownAs(mPoissonSpin, defaults.poissonRatio) &&
+                                                  radius == shownAs(mToolRadiusSpin, defaults.toolRadiusMm)) {
         return std::nullopt;  // the defaults of a preset without a tissue: nothing to record
     }
     return TissueProperties{youngs, poisson, radius, tr("entered in the Parameters panel").toStdString()};
@@ -758,34 +660,23 @@ ToolContact ParameterPanel::toolContact() const {
 }
 
 ToolContact ParameterPanel::toolContactOf(const TissuePreset& preset) {
+    const TissueProperties tissue = preset.tissue.value_or(TissueProperties{});
     ToolContact contact;
-    contact.material.youngsModulusNPerMm2 = (preset.tissue ? preset.tissue->youngsModulusKPa : kDefaultYoungsModulusKPa) * 1e-3;
-    contact.material.poissonRatio = preset.tissue ? preset.tissue->poissonRatio : kDefaultPoissonRatio;
-    contact.toolRadiusMm = preset.tissue ? preset.tissue->toolRadiusMm : kDefaultToolRadiusMm;
+    contact.material.youngsModulusNPerMm2 = tissue.youngsModulusKPa * 1e-3;  // 1 kPa = 0.001 N/mm^2
+    contact.material.poissonRatio = tissue.poissonRatio;
+    contact.toolRadiusMm = tissue.toolRadiusMm;
     return contact;
 }
 
 QStringList ParameterPanel::tissueProblems(QList<QWidget*>* invalid) const {
-    const QLocale locale = this->locale();
-    auto number = [&](double v) { return locale.toString(v, 'g', 6); };
+    const TissueProperties tissue{mYoungsSpin->value(), mPoissonSpin->value(), mToolRadiusSpin->value(), {}};
     QStringList problems;
-    const double youngs = mYoungsSpin->value(), poisson = mPoissonSpin->value(), radius = mToolRadiusSpin->value();
-    if (!(youngs > 0.0 && youngs <= kMaxYoungsModulusKPa)) {
-        problems << tr("Young's modulus E = %1 kPa must be a positive number (at most %2 kPa)")
-                        .arg(number(youngs), number(kMaxYoungsModulusKPa));
-        if (invalid) invalid->append(mYoungsSpin);
-    }
-    // The half-space solution allows (-1, 0.5); a preset file holds 0..0.4999 (nearly incompressible tissue).
-    if (!(poisson >= 0.0 && poisson <= kMaxPoissonRatio)) {
-        problems << tr("Poisson's ratio ν = %1 must be in 0..%2 (0.5 would be incompressible)")
-                        .arg(number(poisson), number(kMaxPoissonRatio));
-        if (invalid) invalid->append(mPoissonSpin);
-    }
-    if (!(radius >= kMinToolRadiusMm && radius <= kMaxToolRadiusMm)) {
-        problems << tr("tool radius a = %1 mm must be in %2..%3 mm").arg(number(radius), number(kMinToolRadiusMm),
-                                                                         number(kMaxToolRadiusMm));
-        if (invalid) invalid->append(mToolRadiusSpin);
-    }
+    for (const Problem& problem : validateTissueProperties(tissue))
+        for (const PanelField* f : fieldsNamedBy("tissue", problem)) {
+            problems << tr("%1: %2").arg(fieldName(kFieldEdit0 + int(f - mFields.data())),
+                                         QString::fromStdString(problem.message));
+            if (invalid) invalid->append(f->widget);
+        }
     return problems;
 }
 
@@ -914,28 +805,13 @@ void ParameterPanel::showPreset(const TissuePreset& preset) {
     const QString model = QString::fromStdString(presetModelName(preset));
     for (int i = 0; i < mModelCombo->count(); ++i)
         if (mModelCombo->itemData(i).toString() == model) mModelCombo->setCurrentIndex(i);
-    for (int i = 0; i < kModelFieldCount; ++i) {
-        QWidget* field = mModelFields[std::size_t(i)];
-        const double value = kModelFields[i].get(preset);
-        if (auto* spin = qobject_cast<QDoubleSpinBox*>(field)) spin->setValue(value);
-        else if (auto* ints = qobject_cast<QSpinBox*>(field)) ints->setValue(int(value));
-        else if (auto* combo = qobject_cast<QComboBox*>(field)) combo->setCurrentIndex(combo->findData(int(value)));
-    }
     mRateSpin->setValue(preset.hapticRateHz);
-    const SlopeRingParams& p = preset.params;
-    mRingSpin->setValue(p.ringCount);
-    for (int r = 0; r <= kMaxRings; ++r) mSlopeSpins[std::size_t(r)]->setValue(p.slopeMagnitudeMmPerN[std::size_t(r)]);
-    mSlopeLimitSpin->setValue(p.slopeLimitMmPerN);
-    mSpringSpin->setValue(p.springStiffnessNPerMm);
-    mDampingSpin->setValue(p.dampingRatio);
-    mContactSpin->setValue(p.contactStiffnessNPerMm);
-    mRelaxationSpin->setValue(p.forceRelaxation);
-    mMassSpin->setValue(p.vertexMassKg);
-    mDepthSpin->setValue(preset.octree.maxDepth);
-    mLeafSpin->setValue(preset.octree.leafCapacity);
-    mYoungsSpin->setValue(preset.tissue ? preset.tissue->youngsModulusKPa : kDefaultYoungsModulusKPa);
-    mPoissonSpin->setValue(preset.tissue ? preset.tissue->poissonRatio : kDefaultPoissonRatio);
-    mToolRadiusSpin->setValue(preset.tissue ? preset.tissue->toolRadiusMm : kDefaultToolRadiusMm);
+    for (const PanelField& f : mFields) {
+        const double value = f.get(preset);
+        if (auto* spin = qobject_cast<QDoubleSpinBox*>(f.widget)) spin->setValue(value);
+        else if (auto* ints = qobject_cast<QSpinBox*>(f.widget)) ints->setValue(int(value));
+        else if (auto* combo = qobject_cast<QComboBox*>(f.widget)) combo->setCurrentIndex(combo->findData(int(value)));
+    }
     mShowing = false;
 
     mShown = preset;
@@ -952,8 +828,9 @@ void ParameterPanel::showPreset(const TissuePreset& preset) {
 
 void ParameterPanel::onEdited(int field) {
     if (mShowing) return;
-    if (field == kRingCount) updateSlopeRows();
-    if (field == kModel) updateModelRows();
+    const bool ringCount = field >= kFieldEdit0 && mFields[std::size_t(field - kFieldEdit0)].widget == mRingSpin;
+    if (ringCount) updateSlopeRows();
+    if (field == kModelEdit) updateModelRows();
     mFileErrors.clear();
     mFileNote.clear();
     const TissuePreset after = presetFromFields();
@@ -961,7 +838,7 @@ void ParameterPanel::onEdited(int field) {
         const TissuePreset before = mShown;
         mShown = after;
         // Typing "0.45" or holding an arrow is one step; the model and the ring count are choices.
-        const int mergeKey = (field == kModel || field == kRingCount) ? ParameterEditCommand::kNoMerge : field;
+        const int mergeKey = (field == kModelEdit || ringCount) ? ParameterEditCommand::kNoMerge : field;
         mUndoStack->push(new ParameterEditCommand(before, after, tr("Change %1").arg(fieldName(field)), mergeKey,
                                                   /*alreadyShown=*/true,
                                                   [this](const TissuePreset& preset) { showPreset(preset); }));
@@ -986,10 +863,13 @@ std::optional<StabilityMargin> ParameterPanel::stabilityMargin() const {
 void ParameterPanel::updateModelRows() {
     const auto model = modelDefForName(mModelCombo->currentData().toString().toStdString());
     const ModelKind kind = model ? model->kind : ModelKind::SlopeRing;
-    const unsigned families = familiesOf(kind);
-    for (int i = 0; i < kModelFieldCount; ++i)
-        mModelParamsForm->setRowVisible(mModelFields[std::size_t(i)], (kModelFields[i].families & families) != 0);
-    mModelParamsGroup->setVisible(families != 0);
+    const std::string section = modelSectionOf(kind);
+    const std::string name = model ? modelName(*model) : std::string();
+    for (const PanelField& f : mFields)
+        if (std::any_of(std::begin(kModelSections), std::end(kModelSections),
+                        [&](const ModelSection& m) { return f.section == m.section; }))
+            mModelParamsForm->setRowVisible(f.widget, f.section == section && (!*f.spec->onlyFor || name == f.spec->onlyFor));
+    mModelParamsGroup->setVisible(!section.empty());
     // The slope rows stay for the slope-ring methods and volumetric-rings, which run on them.
     const bool slopeRing = kind == ModelKind::SlopeRing || kind == ModelKind::VolumetricRings;
     mSlopeGroup->setVisible(slopeRing);
@@ -1013,44 +893,32 @@ void ParameterPanel::validate() {
 
     QStringList problems;
     QSet<QWidget*> invalid;
-    // The engine's own validators; their messages name the parameter, which names the field.
-    const std::pair<const char*, QWidget*> names[] = {
-        {"ringCount", mRingSpin},         {"slopeLimit", mSlopeLimitSpin},   {"contactStiffness", mContactSpin},
-        {"springStiffness", mSpringSpin}, {"vertexMass", mMassSpin},         {"dampingRatio", mDampingSpin},
-        {"forceRelaxation", mRelaxationSpin}, {"maxDepth", mDepthSpin},      {"leafCapacity", mLeafSpin}};
-    auto take = [&](const std::string& message) {
-        for (const auto& [name, field] : names)
-            if (message.find(name) != std::string::npos) invalid.insert(field);
-        for (int r = 0; r <= kMaxRings; ++r)
-            if (message.find("|m" + std::to_string(r + 1) + "|") != std::string::npos)
-                invalid.insert(mSlopeSpins[std::size_t(r)]);
-        problems << QString::fromStdString(message);
-    };
-    for (const std::string& message : validateSlopeRingParams(p.params)) take(message);
-    // The chosen registry model's own validator; its messages name the params field, which names the row.
-    if (const unsigned families = familiesOf(p.modelKind); families != 0)
-        for (const std::string& message : validateModelDef(presetModelDef(p))) {
-            const std::string field = message.substr(0, message.find_first_of(" [:"));
-            QString label;
-            for (int i = 0; i < kModelFieldCount; ++i)
-                if ((kModelFields[i].families & families) && field == kModelFields[i].field) {
-                    invalid.insert(mModelFields[std::size_t(i)]);
-                    label = fieldName(kModelField0 + i);
-                }
-            problems << (label.isEmpty() ? QString::fromStdString(message)
-                                         : tr("%1: %2").arg(label, QString::fromStdString(message)));
+    // The engine's own validators: each problem names its field, which names the widget.
+    auto take = [&](const std::string& section, const Problems& found, bool withName) {
+        for (const Problem& problem : found) {
+            const std::vector<const PanelField*> named = fieldsNamedBy(section, problem);
+            for (const PanelField* f : named) invalid.insert(f->widget);
+            const QString message = QString::fromStdString(problem.message);
+            problems << (withName && named.size() == 1
+                             ? tr("%1: %2").arg(fieldName(kFieldEdit0 + int(named.front() - mFields.data())), message)
+                             : message);
         }
-    if (const std::string message = validateOctreeDef(p.octree); !message.empty()) take(message);
+    };
+    take("slope_ring", validateSlopeRingParams(p.params), false);
+    // The chosen registry model's own validator.
+    if (const std::string section = modelSectionOf(p.modelKind); !section.empty())
+        take(section, validateModelDef(presetModelDef(p)), true);
+    take("octree", validateOctreeDef(p.octree), false);
     {
         QList<QWidget*> badTissue;
         problems << tissueProblems(&badTissue);
         for (QWidget* field : badTissue) invalid.insert(field);
     }
-    if (!(p.hapticRateHz >= kMinRateHz && p.hapticRateHz <= kMaxRateHz)) {
+    if (!(p.hapticRateHz >= kMinHapticRateHz && p.hapticRateHz <= kMaxHapticRateHz)) {
         problems << tr("haptic rate = %1 Hz must be in %2..%3 Hz")
                         .arg(number(p.hapticRateHz))
-                        .arg(number(kMinRateHz))
-                        .arg(number(kMaxRateHz));
+                        .arg(number(kMinHapticRateHz))
+                        .arg(number(kMaxHapticRateHz));
         invalid.insert(mRateSpin);
     }
 

@@ -4,7 +4,7 @@
 // validators, with the slope model's loop gain and stability margin, undo/redo through a
 // QUndoStack, and preset files. It only edits a TissuePreset: the main window decides what Apply
 // does (e.g. HapticLoop::setParams). A plain QWidget, meant for a QDockWidget.
-// The Tissue group turns elasticity into slopes (DESIGN §3): Young's modulus, Poisson's ratio and
+// The Tissue group turns elasticity into slopes (docs/calibration.md): Young's modulus, Poisson's ratio and
 // the tool radius, the shipped tissue presets, and Calibrate slopes for the current mesh with the
 // error the calibrated model leaves against the flat punch.
 
@@ -36,25 +36,13 @@ class QUndoStack;
 
 namespace palpate {
 
+struct PanelField;
+
 class ParameterPanel final : public QWidget {
     Q_OBJECT
 public:
-    /// The haptic rate a preset may ask for (HapticLoopDef's range).
-    static constexpr double kMinRateHz = 10.0;
-    static constexpr double kMaxRateHz = 10000.0;
     /// The paper's slope range is (0, 1) mm/N; above it a slope needs a raised slope limit.
     static constexpr double kPaperSlopeMaxMmPerN = 1.0;
-    /// The tissue the fields show for a preset without one: the gelatin phantom (as palpate-cli).
-    static constexpr double kDefaultYoungsModulusKPa = 4.34;
-    static constexpr double kDefaultPoissonRatio = 0.45;
-    static constexpr double kDefaultToolRadiusMm = 5.0;
-    /// What a preset file may hold (TissuePreset's reader): the panel refuses anything it could not read back.
-    static constexpr double kMaxYoungsModulusKPa = 1.0e9;
-    static constexpr double kMaxPoissonRatio = 0.4999;
-    static constexpr double kMinToolRadiusMm = 0.01;
-    static constexpr double kMaxToolRadiusMm = 1000.0;
-    /// Decimals of the slope and spring fields: a calibrated value survives to 1e-9.
-    static constexpr int kSlopeDecimals = 9;
 
     /// Returns the mesh Calibrate slopes works on, or null when there is none. Called for each
     /// calibration and each stability margin; the panel never keeps the pointer.
@@ -134,32 +122,20 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    /// What an edit changed; the undo step's merge key and its text.
-    enum Field : int {
-        kModel,
-        kRingCount,
-        kSlopeLimit,
-        kSpringStiffness,
-        kDampingRatio,
-        kContactStiffness,
-        kForceRelaxation,
-        kVertexMass,
-        kOctreeDepth,
-        kLeafCapacity,
-        kHapticRate,
-        kYoungsModulus,
-        kPoissonRatio,
-        kToolRadius,
-        kSlope0,  // kSlope0 + r: the slope of ring r (r = 0: the touched vertex)
-        kModelField0 = kSlope0 + kMaxRings + 1,  // kModelField0 + i: the registry models' field i (ParameterPanel.cpp)
-    };
+    /// What an edit changed; the undo step's merge key and its text: the model, the haptic rate,
+    /// or kFieldEdit0 + the index of the field in mFields.
+    enum Edit : int { kModelEdit, kRateEdit, kFieldEdit0 };
 
     void buildUi();
     void retranslateUi();
     QString slopeLabel(int ring) const;
-    QString fieldName(int field) const;
+    QString fieldName(int edit) const;
+    /// Creates the field's widget (spin box or combo) in `parent`, named after its section and key.
+    QWidget* createFieldWidget(PanelField& field, QWidget* parent);
+    /// The bound field a problem of `section` names (and its entry), or null.
+    std::vector<const PanelField*> fieldsNamedBy(const std::string& section, const Problem& problem) const;
     void watchEdits(QWidget* spin);
-    void onEdited(int field);
+    void onEdited(int edit);
     /// Sets every field from `preset` without recording a step (undo/redo, loads, setPreset).
     void showPreset(const TissuePreset& preset);
     TissuePreset presetFromFields() const;
@@ -175,31 +151,26 @@ private:
     void syncTissueCombo();
     void updateCalibrationLabel();
 
-    // Fields.
+    // Fields. mFields: every field of the engine's tables the panel edits (engine/params/
+    // FieldTable.h), each with its widget; the pointers below are some of those widgets.
+    std::vector<PanelField> mFields;
     QComboBox* mModelCombo = nullptr;
     QDoubleSpinBox* mRateSpin = nullptr;
     QSpinBox* mRingSpin = nullptr;
     std::array<QDoubleSpinBox*, kMaxRings + 1> mSlopeSpins{};
     std::array<QLabel*, kMaxRings + 1> mSlopeLabels{};
-    QDoubleSpinBox* mSlopeLimitSpin = nullptr;
-    QDoubleSpinBox* mSpringSpin = nullptr;
-    QDoubleSpinBox* mDampingSpin = nullptr;
     QDoubleSpinBox* mContactSpin = nullptr;
     QDoubleSpinBox* mRelaxationSpin = nullptr;
-    QDoubleSpinBox* mMassSpin = nullptr;
-    QSpinBox* mDepthSpin = nullptr;
-    QSpinBox* mLeafSpin = nullptr;
-    QComboBox* mTissueCombo = nullptr;
     QDoubleSpinBox* mYoungsSpin = nullptr;
     QDoubleSpinBox* mPoissonSpin = nullptr;
     QDoubleSpinBox* mToolRadiusSpin = nullptr;
+    QComboBox* mTissueCombo = nullptr;
     QPushButton* mCalibrateButton = nullptr;
     QLabel* mCalibrationLabel = nullptr;
     /// The registry models' own parameters (mass-spring, radius of influence, FFD): one form whose
-    /// rows are those of the chosen model; mModelFields[i] edits field i of the table in the .cpp.
+    /// rows are those of the chosen model.
     QGroupBox* mModelParamsGroup = nullptr;
     QFormLayout* mModelParamsForm = nullptr;
-    std::vector<QWidget*> mModelFields;
 
     // Layout pieces whose text is translated.
     QScrollArea* mScroll = nullptr;

@@ -1,5 +1,5 @@
 #pragma once
-// The Recorder dock (DESIGN §7, docs/recording.md): records the live session and plays recordings
+// The Recorder dock (docs/recording.md): records the live session and plays recordings
 // back. Recording: the main window owns the haptic session and its RecordingSession; this panel
 // asks (recordRequested, stopRequested, markRequested), names the file (a timestamped name in the
 // recordings folder) and shows what it is told (started, stats about 4 times a second, stopped,

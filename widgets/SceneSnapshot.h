@@ -1,6 +1,6 @@
 #pragma once
 // What the GUI shows of the simulation at one instant. The GUI's snapshot observer fills it from the
-// haptic loop's newest HapticSnapshot (DESIGN.md section 2): the GUI never steps the model itself.
+// haptic loop's newest HapticSnapshot (docs/architecture.md): the GUI never steps the model itself.
 
 #include "engine/TissueMesh.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The speed-vs-accuracy chart (DESIGN §3, issue 5): every model's tick cost against its
+// The speed-vs-accuracy chart (docs/calibration.md): every model's tick cost against its
 // displacement error, one series per model joined in order of resolution, the Pareto front marked,
 // and the configuration in use highlighted, so that a choice of rings and model can be read off as
 // "how much error for how many microseconds". One shape (sphere or stomach) per chart: the two

@@ -1,7 +1,7 @@
 #pragma once
 // Picks the renderer: OpenGL where a 3.3 core context can really be made current, QPainter otherwise.
 // Qt's offscreen platform is always software: on Debian's Qt 6.4 it has no OpenGL, and
-// QOpenGLWidget::grabFramebuffer crashes there (DESIGN.md section 7).
+// QOpenGLWidget::grabFramebuffer crashes there (docs/architecture.md).
 
 #include "widgets/Viewport.h"
 

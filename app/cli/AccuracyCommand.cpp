@@ -1,5 +1,5 @@
 // palpate-cli accuracy --reference punch|hertz: the reference FEM against the closed forms
-// (DESIGN §3), with the convergence rate and linear-tet locking. Exit 0 when every case with
+// (docs/accuracy.md), with the convergence rate and linear-tet locking. Exit 0 when every case with
 // a/h >= 8 and nu <= 0.45 is within 5 % (displacement and force), 1 otherwise, 2 on bad usage.
 
 #include "app/cli/Args.h"
@@ -21,7 +21,7 @@ namespace palpate::cli {
 
 namespace {
 
-constexpr double kGateError = 0.05;  ///< DESIGN §3: within 5 %
+constexpr double kGateError = 0.05;  ///< docs/accuracy.md: within 5 %
 constexpr int kGateMinAOverH = 8;
 constexpr double kGateMaxNu = 0.45;
 

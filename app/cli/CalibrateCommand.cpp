@@ -1,5 +1,5 @@
 // palpate-cli calibrate: slopes and spring stiffness for a mesh from E, nu and the tool radius
-// (flat-punch calibration, DESIGN §3), the error they leave against the punch, and optionally a
+// (flat-punch calibration, docs/calibration.md), the error they leave against the punch, and optionally a
 // tissue preset written with them.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"

@@ -18,11 +18,11 @@ int scoreCommand(const std::vector<std::string>& words);
 int sweepCommand(const std::vector<std::string>& words);
 int calibrateCommand(const std::vector<std::string>& words);
 int accuracyCommand(const std::vector<std::string>& words);
-/// stability: maps of where each model fails, derived against measured (StabilityCommand.cpp, issue 8).
+/// stability: maps of where each model fails, derived against measured (StabilityCommand.cpp, docs/stability.md).
 int stabilityCommand(const std::vector<std::string>& words);
-/// devices: backends compiled in and devices connected, with their URIs (DevicesCommand.cpp, issue 11).
+/// devices: backends compiled in and devices connected, with their URIs (DevicesCommand.cpp, docs/devices.md).
 int devicesCommand(const std::vector<std::string>& words);
-/// lod: mesh levels of detail and the plan of the cheapest model a scene needs (LodCommand.cpp, issue 10).
+/// lod: mesh levels of detail and the plan of the cheapest model a scene needs (LodCommand.cpp, docs/lod.md).
 int lodCommand(const std::vector<std::string>& words);
 
 }  // namespace palpate::cli

@@ -1,4 +1,4 @@
-// palpate-cli lod: levels of detail (issue 10, docs/lod.md). "lod levels" makes (or reads from the
+// palpate-cli lod: levels of detail (docs/lod.md). "lod levels" makes (or reads from the
 // cache beside the mesh) the decimated levels and checks them; "lod plan" measures every level and
 // ring count on this machine and picks the cheapest that meets an accuracy target and a tick budget.
 #include "app/cli/Args.h"

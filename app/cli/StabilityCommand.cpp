@@ -1,4 +1,4 @@
-// palpate-cli stability: where each model fails (issue 8, docs/stability.md). --list names the
+// palpate-cli stability: where each model fails (docs/stability.md). --list names the
 // maps; --model NAME runs one: the grid of cells, the measured boundary by bisection, the derived
 // boundary, their gap; as a table, JSON, CSV and (in builds with Qt) the map as a PNG.
 #include "app/cli/Args.h"

@@ -1,4 +1,4 @@
-// palpate-cli sweep: speed against accuracy for every model (issue 5), as a table, CSV, JSON and
+// palpate-cli sweep: speed against accuracy for every model (docs/calibration.md), as a table, CSV, JSON and
 // (in builds with Qt) the chart as a PNG.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"

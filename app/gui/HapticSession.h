@@ -1,5 +1,5 @@
 #pragma once
-// The GUI's side of the haptic loop (DESIGN §2, docs/haptic-loop.md): builds scenes and devices off
+// The GUI's side of the haptic loop (docs/architecture.md, docs/haptic-loop.md): builds scenes and devices off
 // the haptic thread, hands them to the loop as commands, and observes its snapshots. The loop owns
 // the model; this class never steps it while the thread runs. For drawing it keeps its own copy of
 // every mesh it handed over, tagged with the scene id, so nothing it draws can be freed under it.

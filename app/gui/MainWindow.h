@@ -2,7 +2,7 @@
 // The main window: the viewport in the centre, menus, and a status bar with the mesh, the haptic
 // loop's health (rate, tick time, jitter, overruns, SCHED_FIFO), the GUI's frame rate, the device,
 // the contact and the force. The haptic loop runs the model; this window only observes its
-// snapshots (DESIGN §2) and sends it commands. Docks (parameters, device, recorder...) come later.
+// snapshots (docs/architecture.md) and sends it commands. Docks (parameters, device, recorder...) come later.
 
 #include "app/gui/HapticSession.h"
 #include "widgets/ResultsDatabase.h"

@@ -1,5 +1,5 @@
 #pragma once
-// The GUI's copy of the deformed mesh, kept up to date from the haptic loop's snapshots (DESIGN §2:
+// The GUI's copy of the deformed mesh, kept up to date from the haptic loop's snapshots (docs/architecture.md:
 // the GUI only observes). A snapshot lists only the displaced vertices; the observer keeps all
 // positions and rings, sets the listed ones and puts back at rest those it had set in the previous
 // snapshot that are no longer listed, so each update touches only what changed. It also records

@@ -1,5 +1,5 @@
 #pragma once
-// Speed against accuracy for every model (issue 5): at each Table 1 resolution, each model gets a
+// Speed against accuracy for every model (docs/calibration.md): at each Table 1 resolution, each model gets a
 // tick cost (over the benchmark's press-and-stroke path) and an error against the flat punch
 // (ModelError). Slope-ring models use slopes calibrated from the same material and tool, so the
 // error measures the model's structure (rings, resolution), not a badly chosen parameter.

@@ -1,5 +1,5 @@
 #pragma once
-// Slopes and spring stiffness from elasticity (DESIGN §3): the slope model is linear in the force,
+// Slopes and spring stiffness from elasticity (docs/calibration.md): the slope model is linear in the force,
 // like a flat rigid punch on a half-space, so the punch solution gives every ring's compliance:
 // |m1| = 1 / (2 a E*), |m_k| = |m1| (2/pi) asin(a / r_k), with r_k the mean distance of ring k from
 // the touched vertex; and k = 1 / |m1| makes the rendered spring force equal the punch force at the
@@ -47,7 +47,7 @@ SlopeCalibration calibrateSlopesFromDisplacements(const TissueMesh& mesh, Vertex
                                                   const std::vector<double>& normalDisplacementMm, double forceN,
                                                   const SlopeRingParams& base);
 
-/// Per mesh from the reference FEM (DESIGN §3): the mesh filled with tetrahedra
+/// Per mesh from the reference FEM (docs/calibration.md, docs/accuracy.md): the mesh filled with tetrahedra
 /// (engine/accuracy/SurfaceFill.h: tissue over a rigid core), the tool's footprint pressed by
 /// `indentationMm` at `touched`, then calibrateSlopesFromDisplacements on the FEM's surface.
 /// `referenceNormalDisplacementMm` (optional) receives the FEM field for error measurement.

@@ -1,5 +1,5 @@
 #pragma once
-// Closed-form contact solutions of linear elasticity on a half-space (DESIGN §3): the ground truth
+// Closed-form contact solutions of linear elasticity on a half-space (docs/calibration.md): the ground truth
 // that the reference FEM is validated against and that slopes are calibrated from.
 // Units: mm, N, moduli in N/mm^2 (= MPa; 1 kPa = 0.001 N/mm^2). The half-space is z <= 0.
 

@@ -1,7 +1,7 @@
 #pragma once
-// Validation of the reference FEM against the closed forms (DESIGN §3): a flat punch or a Hertz
+// Validation of the reference FEM against the closed forms (docs/accuracy.md): a flat punch or a Hertz
 // sphere pressed into the graded block, with the Boussinesq field of the self-consistent load on
-// the far faces; errors as DESIGN §3 defines them, and the observed convergence rate.
+// the far faces; errors as docs/accuracy.md defines them, and the observed convergence rate.
 
 #include "engine/accuracy/GradedBlock.h"
 #include "engine/accuracy/LinearElasticFem.h"

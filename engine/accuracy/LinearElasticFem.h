@@ -1,5 +1,5 @@
 #pragma once
-// Reference linear-elastic FEM (DESIGN §3): 4-node tets, isotropic (E, nu), small strain, static.
+// Reference linear-elastic FEM (docs/accuracy.md): 4-node tets, isotropic (E, nu), small strain, static.
 // K is assembled from triplets; Dirichlet conditions by partition into free and fixed DOFs (never
 // penalty); a direct LDLT or a preconditioned conjugate-gradient solve. Units: mm, N, N/mm^2.
 // DOF numbering: node i owns DOFs 3i (x), 3i+1 (y), 3i+2 (z).

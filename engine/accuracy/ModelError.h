@@ -1,6 +1,6 @@
 #pragma once
-// How far a deformation model is from elasticity (DESIGN §3): press the model's touched vertex
-// straight in, let it settle, and compare its surface with the flat-punch solution at the same
+// How far a deformation model is from elasticity (docs/calibration.md): press the model's touched
+// vertex straight in, let it settle, and compare its surface with the flat-punch solution at the same
 // indentation. Displacement error: RMS over the vertices within 5 tool radii of the contact of
 // (u_model - u_punch), divided by the peak (the indentation). Force error: |F_model - F_punch| / F_punch.
 
@@ -13,7 +13,7 @@ namespace palpate {
 struct PressDef {
     double toolDepthMm = 3.0;    ///< tool tip below the touched vertex's rest position
     int settleTicks = 300;       ///< ticks at 1 kHz before the surface is measured
-    double regionInRadii = 5.0;  ///< compare vertices within this many tool radii (DESIGN: 5)
+    double regionInRadii = 5.0;  ///< compare vertices within this many tool radii (docs/calibration.md: 5)
 };
 
 struct ModelError {

@@ -1,5 +1,5 @@
 #pragma once
-// What a scene needs from its model (DESIGN §5): an accuracy target and a haptic time budget. An
+// What a scene needs from its model (docs/lod.md): an accuracy target and a haptic time budget. An
 // exercise or a tissue preset may carry them as "needs": {"max_error": E, "budget_us": T}; the
 // planner (LodPlanner.h) picks the cheapest level and ring count that meets both.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The choice (DESIGN §5): of the measured candidates (one per level and ring count), the coarsest
+// The choice (docs/lod.md, section 5): of the measured candidates (one per level and ring count), the coarsest
 // level with the fewest rings whose error meets the target and whose tick fits the budget. A pure
 // function on a table, so it is tested on synthetic tables and the GUI can replan on an override
 // without measuring again. docs/lod.md says why the order is structural, not "lowest tick".

@@ -1,5 +1,5 @@
 #pragma once
-// A mesh's levels of detail (DESIGN §5): the source surface and coarser copies of it made by the
+// A mesh's levels of detail (docs/lod.md): the source surface and coarser copies of it made by the
 // OpenMesh Decimater (MeshDecimation.h), each tied to the source by a mapping both ways
 // (SurfaceEmbedding.h), so that a deformation computed on any level can be shown on any other.
 // Generation may run on a worker thread: it reports progress and stops when asked.

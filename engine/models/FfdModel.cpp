@@ -17,7 +17,7 @@ FfdLattice makeLattice(const TissueMesh& mesh, const FfdParams& params) {
     const auto errors = validateFfdParams(params);
     if (!errors.empty()) {
         std::string text = "invalid FFD parameters:";
-        for (const auto& e : errors) text += "\n  " + e;
+        for (const auto& e : errors) text += "\n  " + e.message;
         throw std::invalid_argument(text);
     }
     const glm::dvec3 lo(mesh.boundsMinMm()), hi(mesh.boundsMaxMm());

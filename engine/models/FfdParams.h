@@ -3,6 +3,8 @@
 // a trivariate Bernstein lattice of control points; the tool moves the control points nearest the
 // contact (docs/models.md).
 
+#include "engine/params/FieldTable.h"
+
 #include <string>
 #include <vector>
 
@@ -26,7 +28,10 @@ struct FfdParams {
     double stiffnessNPerMm = 0.125;
 };
 
+/// The fields of FfdParams in file order (engine/params/FieldTable.h).
+FieldTable<FfdParams> ffdFields();
+
 /// Every problem found, each naming the field; empty when valid.
-std::vector<std::string> validateFfdParams(const FfdParams& params);
+Problems validateFfdParams(const FfdParams& params);
 
 }  // namespace palpate

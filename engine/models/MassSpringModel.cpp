@@ -35,7 +35,7 @@ MassSpringModel::MassSpringModel(const TissueMesh& mesh, const Octree& octree, c
     const auto errors = validateMassSpringParams(params);
     if (!errors.empty()) {
         std::string text = "invalid mass-spring parameters:";
-        for (const auto& e : errors) text += "\n  " + e;
+        for (const auto& e : errors) text += "\n  " + e.message;
         throw std::invalid_argument(text);
     }
     const std::size_t n = mesh.vertexCount();

@@ -4,6 +4,8 @@
 // touched vertex. Stiffnesses are per spring (N/mm), as in the classic models, so the same numbers
 // give a dimple the same number of edges wide at every resolution (see docs/models.md).
 
+#include "engine/params/FieldTable.h"
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -53,7 +55,10 @@ struct MassSpringParams {
     double restEpsilonMm = 1e-4;
 };
 
+/// The fields of MassSpringParams in file order (engine/params/FieldTable.h).
+FieldTable<MassSpringParams> massSpringFields();
+
 /// Every problem found, each naming the field; empty when valid.
-std::vector<std::string> validateMassSpringParams(const MassSpringParams& params);
+Problems validateMassSpringParams(const MassSpringParams& params);
 
 }  // namespace palpate

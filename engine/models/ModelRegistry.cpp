@@ -33,7 +33,7 @@ void throwIfInvalid(const ModelDef& def) {
     const auto errors = validateModelDef(def);
     if (errors.empty()) return;
     std::string text = "invalid " + modelName(def) + " parameters:";
-    for (const auto& e : errors) text += "\n  " + e;
+    for (const auto& e : errors) text += "\n  " + e.message;
     throw std::invalid_argument(text);
 }
 
@@ -68,7 +68,7 @@ std::string modelName(const ModelDef& def) {
     return "unknown";
 }
 
-std::vector<std::string> validateModelDef(const ModelDef& def) {
+Problems validateModelDef(const ModelDef& def) {
     switch (def.kind) {
         case ModelKind::SlopeRing: return validateSlopeRingParams(def.slopeRing);
         case ModelKind::MassSpringSymplectic:
@@ -79,7 +79,7 @@ std::vector<std::string> validateModelDef(const ModelDef& def) {
         case ModelKind::Ffd: return validateFfdParams(def.ffd);
         case ModelKind::VolumetricRings: return validateVolumetricRingsParams(def.volumetricRings);
     }
-    return {"kind: unknown model kind " + std::to_string(int(def.kind))};
+    return {{"kind", -1, -1, "kind: unknown model kind " + std::to_string(int(def.kind))}};
 }
 
 std::unique_ptr<DeformationModel> makeModel(const ModelDef& def, const TissueMesh& mesh, const Octree& octree) {

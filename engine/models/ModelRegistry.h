@@ -53,7 +53,7 @@ std::optional<ModelDef> modelDefForName(std::string_view name);
 /// The stable name of a definition (the model's name() says the same).
 std::string modelName(const ModelDef& def);
 /// Every problem of the kind's parameters, each naming the field; empty when valid.
-std::vector<std::string> validateModelDef(const ModelDef& def);
+Problems validateModelDef(const ModelDef& def);
 
 /// Builds the model. `mesh` and `octree` must outlive it. volumetric-rings fills the surface with
 /// tetrahedra first (not real-time). Throws std::invalid_argument naming the problem (invalid

@@ -15,7 +15,7 @@ RadiusOfInfluenceModel::RadiusOfInfluenceModel(const TissueMesh& mesh, const Oct
     const auto errors = validateRadiusOfInfluenceParams(params);
     if (!errors.empty()) {
         std::string text = "invalid radius-of-influence parameters:";
-        for (const auto& e : errors) text += "\n  " + e;
+        for (const auto& e : errors) text += "\n  " + e.message;
         throw std::invalid_argument(text);
     }
     for (int k = 0; k <= params.degree; ++k) mCoefficients[k] = float(params.coefficients[std::size_t(k)]);

@@ -1,6 +1,5 @@
 #include "engine/models/RadiusOfInfluenceParams.h"
 
-#include "engine/models/ParamText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,20 +25,44 @@ std::array<double, kMaxProfileDegree + 1> powerProfileCoefficients(int degree) {
     return c;
 }
 
-std::vector<std::string> validateRadiusOfInfluenceParams(const RadiusOfInfluenceParams& p) {
-    using namespace paramtext;
-    std::vector<std::string> errors;
-    requirePositive(errors, p.radiusMm, "radiusMm", "mm");
-    requirePositive(errors, p.stiffnessNPerMm, "stiffnessNPerMm", "N/mm");
-    if (!requireRange(errors, p.degree, 2, kMaxProfileDegree, "degree")) return errors;
-    bool finite = true;
-    for (int k = 0; k <= p.degree; ++k)
-        if (!std::isfinite(p.coefficients[std::size_t(k)])) {
-            errors.push_back("coefficients[" + std::to_string(k) + "] = " + number(p.coefficients[std::size_t(k)]) +
-                             " must be finite");
-            finite = false;
-        }
-    if (!finite) return errors;
+namespace {
+
+int coefficientsUsed(const RadiusOfInfluenceParams& p) { return std::clamp(p.degree, 0, kMaxProfileDegree) + 1; }
+
+const FieldDef<RadiusOfInfluenceParams> kFields[] = {
+    field<&RadiusOfInfluenceParams::radiusMm>(
+        {.key = "radiusMm", .jsonKey = "radius_mm", .unit = "mm", .lo = 0, .hi = kNoLimit, .lower = Bound::Open,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Radius R:"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Every vertex within this distance of the touched vertex (in 3D, whatever the edges) moves, mm."),
+         .decimals = 4, .step = 1.0}),
+    customField<RadiusOfInfluenceParams>(
+        {.key = "degree", .jsonKey = "degree", .lo = 2, .hi = kMaxProfileDegree, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Profile degree:"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "The profile is (1 − r/R)^degree (2..8); a preset file's own coefficients are kept until the degree "
+                "changes.")},
+        FieldType::Whole, [](const RadiusOfInfluenceParams& p, int) { return double(p.degree); },
+        [](RadiusOfInfluenceParams& p, int, double v) {
+            if (int(v) == p.degree) return;
+            p.degree = int(v);
+            p.coefficients = powerProfileCoefficients(int(v));
+        }),
+    listField<&RadiusOfInfluenceParams::coefficients, coefficientsUsed>(
+        {.key = "coefficients", .jsonKey = "coefficients", .lo = -kNoLimit, .hi = kNoLimit, 
+         .decimals = 6, .step = 0.1, .sizeKey = "degree"}),
+    field<&RadiusOfInfluenceParams::stiffnessNPerMm>(
+        {.key = "stiffnessNPerMm", .jsonKey = "stiffness_n_per_mm", .unit = "N/mm", .lo = 0, .hi = kNoLimit,
+         .lower = Bound::Open, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Stiffness k_s:"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "The rendered force is k_s times the touched vertex's displacement, N/mm."), .decimals = 6,
+         .step = 0.01}),
+};
+
+}  // namespace
+
+FieldTable<RadiusOfInfluenceParams> radiusOfInfluenceFields() { return kFields; }
+
+Problems validateRadiusOfInfluenceParams(const RadiusOfInfluenceParams& p) {
+    Problems problems;
+    checkFields(radiusOfInfluenceFields(), p, problems);
+    if (hasProblem(problems, "degree") || hasProblem(problems, "coefficients")) return problems;
     // The three conditions that make it a dent: the touched vertex follows the tool, and the
     // profile meets the rest surface at the radius with zero value and zero slope.
     constexpr double kTolerance = 1e-9;
@@ -51,15 +74,18 @@ std::vector<std::string> validateRadiusOfInfluenceParams(const RadiusOfInfluence
         scale = std::max(scale, std::abs(c) * std::max(1, k));
     }
     if (std::abs(p.coefficients[0] - 1.0) > kTolerance)
-        errors.push_back("coefficients[0] = " + number(p.coefficients[0]) +
-                         " must be 1: phi(0) = 1 makes the touched vertex follow the tool");
+        problems.push_back({"coefficients", 0, -1,
+                            "coefficients[0] = " + formatNumber(p.coefficients[0]) +
+                                " must be 1: phi(0) = 1 makes the touched vertex follow the tool"});
     if (std::abs(atRadius) > kTolerance * std::max(1.0, scale))
-        errors.push_back("coefficients: phi(1) = sum of coefficients = " + number(atRadius) +
-                         " must be 0 (the dent ends at the radius)");
+        problems.push_back({"coefficients", -1, -1,
+                            "coefficients: phi(1) = sum of coefficients = " + formatNumber(atRadius) +
+                                " must be 0 (the dent ends at the radius)"});
     if (std::abs(slopeAtRadius) > kTolerance * std::max(1.0, scale))
-        errors.push_back("coefficients: phi'(1) = sum of k c_k = " + number(slopeAtRadius) +
-                         " must be 0 (the dent meets the rest surface without a kink)");
-    return errors;
+        problems.push_back({"coefficients", -1, -1,
+                            "coefficients: phi'(1) = sum of k c_k = " + formatNumber(slopeAtRadius) +
+                                " must be 0 (the dent meets the rest surface without a kink)"});
+    return problems;
 }
 
 }  // namespace palpate

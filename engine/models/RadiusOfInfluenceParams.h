@@ -3,6 +3,8 @@
 // vertex within a radius of the contact moves by a polynomial profile of its distance,
 // phi(rho) = sum_k c_k rho^k with rho = distance / radius, whatever the mesh's edges.
 
+#include "engine/params/FieldTable.h"
+
 #include <array>
 #include <string>
 #include <vector>
@@ -13,7 +15,7 @@ inline constexpr int kMaxProfileDegree = 8;
 
 struct RadiusOfInfluenceParams {
     /// Radius of influence, mm. Default: 5 radii of the default 5 mm tool, the region over which
-    /// the accuracy metric compares with the flat punch (DESIGN §3), so the profile covers it.
+    /// the accuracy metric compares with the flat punch (docs/calibration.md), so the profile covers it.
     double radiusMm = 25.0;
     /// Degree of the profile polynomial, 2..kMaxProfileDegree (Basdogan's is second order).
     int degree = 2;
@@ -31,7 +33,12 @@ double evaluateProfile(const RadiusOfInfluenceParams& params, double rho);
 /// Coefficients of (1 - rho)^degree, the default family: zero with zero slope at the radius for degree >= 2.
 std::array<double, kMaxProfileDegree + 1> powerProfileCoefficients(int degree);
 
+/// The fields of RadiusOfInfluenceParams in file order (engine/params/FieldTable.h). Setting the
+/// degree to a new value resets the coefficients to (1 - rho)^degree; a file's coefficients,
+/// read after it, replace them.
+FieldTable<RadiusOfInfluenceParams> radiusOfInfluenceFields();
+
 /// Every problem found, each naming the field; empty when valid.
-std::vector<std::string> validateRadiusOfInfluenceParams(const RadiusOfInfluenceParams& params);
+Problems validateRadiusOfInfluenceParams(const RadiusOfInfluenceParams& params);
 
 }  // namespace palpate

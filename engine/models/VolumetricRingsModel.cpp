@@ -22,7 +22,7 @@ VolumetricRingsModel::VolumetricRingsModel(const TissueMesh& mesh, const Octree&
     const auto errors = validateVolumetricRingsParams(params);
     if (!errors.empty()) {
         std::string text = "invalid volumetric-rings parameters:";
-        for (const auto& e : errors) text += "\n  " + e;
+        for (const auto& e : errors) text += "\n  " + e.message;
         throw std::invalid_argument(text);
     }
     const std::size_t n = mesh.vertexCount();

@@ -2,10 +2,10 @@
 
 namespace palpate {
 
-std::vector<std::string> validateVolumetricRingsParams(const VolumetricRingsParams& params) {
-    std::vector<std::string> errors;
-    for (const std::string& e : validateSlopeRingParams(params.slopeRing)) errors.push_back("slopeRing: " + e);
-    return errors;
+Problems validateVolumetricRingsParams(const VolumetricRingsParams& params) {
+    Problems problems = validateSlopeRingParams(params.slopeRing);
+    for (Problem& p : problems) p.message = "slopeRing: " + p.message;
+    return problems;
 }
 
 }  // namespace palpate

@@ -16,6 +16,6 @@ struct VolumetricRingsParams {
 };
 
 /// Every problem found, each naming the field; empty when valid.
-std::vector<std::string> validateVolumetricRingsParams(const VolumetricRingsParams& params);
+Problems validateVolumetricRingsParams(const VolumetricRingsParams& params);
 
 }  // namespace palpate

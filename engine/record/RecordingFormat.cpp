@@ -63,30 +63,31 @@ const char* chunkStatusText(ChunkStatus status) {
 
 // --- parameters, scene, device ---
 
+// The parameters in their table's order (engine/params/FieldTable.h), every stored list entry
+// included: whole numbers as i32, the rest as f64 (docs/recording.md has the layout).
 void encodeParams(ByteWriter& w, const SlopeRingParams& p) {
-    w.i32(p.ringCount);
-    for (double m : p.slopeMagnitudeMmPerN) w.f64(m);
-    w.f64(p.slopeLimitMmPerN);
-    w.f64(p.contactStiffnessNPerMm);
-    w.f64(p.forceRelaxation);
-    w.f64(p.springStiffnessNPerMm);
-    w.f64(p.dampingRatio);
-    w.f64(p.vertexMassKg);
+    for (const FieldDef<SlopeRingParams>& f : slopeRingFields())
+        for (int i = 0; i < f.capacity; ++i) {
+            if (f.type == FieldType::Whole) w.i32(int(f.get(p, i)));
+            else w.f64(f.get(p, i));
+        }
 }
 
 SlopeRingParams decodeParams(ByteReader& r, const std::string& field) {
     SlopeRingParams p;
-    p.ringCount = r.i32(field + ".ringCount");
-    if (r.ok() && (p.ringCount < 0 || p.ringCount > kMaxRings))
-        r.fail(field + ".ringCount", std::to_string(p.ringCount) + " is outside 0.." + std::to_string(kMaxRings));
-    for (std::size_t i = 0; i < p.slopeMagnitudeMmPerN.size(); ++i)
-        p.slopeMagnitudeMmPerN[i] = r.f64(field + ".slopeMagnitudeMmPerN[" + std::to_string(i) + "]");
-    p.slopeLimitMmPerN = r.f64(field + ".slopeLimitMmPerN");
-    p.contactStiffnessNPerMm = r.f64(field + ".contactStiffnessNPerMm");
-    p.forceRelaxation = r.f64(field + ".forceRelaxation");
-    p.springStiffnessNPerMm = r.f64(field + ".springStiffnessNPerMm");
-    p.dampingRatio = r.f64(field + ".dampingRatio");
-    p.vertexMassKg = r.f64(field + ".vertexMassKg");
+    for (const FieldDef<SlopeRingParams>& f : slopeRingFields())
+        for (int i = 0; i < f.capacity; ++i) {
+            const std::string name = field + "." + f.spec.key + (f.type == FieldType::RealList ? "[" + std::to_string(i) + "]" : "");
+            if (f.type != FieldType::Whole) {
+                f.set(p, i, r.f64(name));
+                continue;
+            }
+            // A count sizes what follows: refused here when out of range, not at validation.
+            const int v = r.i32(name);
+            if (r.ok() && !inRange(f, v))
+                r.fail(name, std::to_string(v) + " is outside " + formatNumber(f.spec.lo) + ".." + formatNumber(f.spec.hi));
+            f.set(p, i, v);
+        }
     return p;
 }
 

@@ -2,9 +2,8 @@
 
 #include "engine/AtomicFile.h"
 #include "engine/TextFile.h"
+#include "engine/io/JsonReader.h"
 #include "engine/record/RecordingFormat.h"
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -14,84 +13,31 @@ namespace palpate {
 
 namespace {
 
-using Json = nlohmann::ordered_json;  // keeps the written key order readable
 constexpr const char* kFormat = "palpate-exercise";
 constexpr const char* kNoteMarker = "palpate-exercise: ";
 
-/// Reads JSON objects, checking every key against a list and recording errors by key path (the
-/// style of TissuePreset.cpp). Values are only type-checked here; validateExercise checks ranges.
-class Reader {
-public:
-    Reader(std::vector<std::string>& errors, std::string source) : mErrors(errors), mSource(std::move(source)) {}
-
-    void error(const std::string& key, const std::string& problem) { mErrors.push_back(mSource + ": " + key + ": " + problem); }
-
-    bool object(const Json& j, const std::string& key, const std::vector<std::string>& allowed) {
-        if (!j.is_object()) {
-            error(key.empty() ? "(top level)" : key, "must be an object");
-            return false;
-        }
-        for (const auto& item : j.items())
-            if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end())
-                error(join(key, item.key()), "unknown key");
-        return true;
+/// {"vertex": N} or {"point_mm": [x, y, z]} inside `j` (other keys are the caller's).
+void readSurfacePoint(JsonReader& r, const Json& j, const std::string& path, SurfacePoint& out) {
+    const bool hasVertex = j.contains("vertex"), hasPoint = j.contains("point_mm");
+    if (hasVertex == hasPoint) {
+        r.error(path, hasVertex ? "give vertex or point_mm, not both" : "needs vertex or point_mm");
+        return;
     }
-
-    bool number(const Json& parent, const std::string& path, const char* key, double& out, bool required = false) {
-        if (!parent.contains(key)) {
-            if (required) error(join(path, key), "missing");
-            return false;
-        }
-        const Json& v = parent.at(key);
-        if (!v.is_number()) {
-            error(join(path, key), "must be a number");
-            return false;
-        }
-        out = v.get<double>();
-        return true;
+    if (hasVertex) {
+        const Json& v = j.at("vertex");
+        if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > 0xFFFFFFFELL)
+            r.error(JsonReader::join(path, "vertex"), "must be a vertex number (0 or more) of the mesh file");
+        else
+            out.vertex = std::uint32_t(v.get<long long>());
+        return;
     }
-
-    void text(const Json& parent, const std::string& path, const char* key, std::string& out, bool required = false) {
-        if (!parent.contains(key)) {
-            if (required) error(join(path, key), "missing");
-            return;
-        }
-        if (!parent.at(key).is_string()) {
-            error(join(path, key), "must be a string");
-            return;
-        }
-        out = parent.at(key).get<std::string>();
+    const Json& p = j.at("point_mm");
+    if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number()) {
+        r.error(JsonReader::join(path, "point_mm"), "must be an array of three numbers (x, y, z in mm)");
+        return;
     }
-
-    /// {"vertex": N} or {"point_mm": [x, y, z]} inside `j` (other keys are the caller's).
-    void surfacePoint(const Json& j, const std::string& path, SurfacePoint& out) {
-        const bool hasVertex = j.contains("vertex"), hasPoint = j.contains("point_mm");
-        if (hasVertex == hasPoint) {
-            error(path, hasVertex ? "give vertex or point_mm, not both" : "needs vertex or point_mm");
-            return;
-        }
-        if (hasVertex) {
-            const Json& v = j.at("vertex");
-            if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > 0xFFFFFFFELL)
-                error(join(path, "vertex"), "must be a vertex number (0 or more) of the mesh file");
-            else
-                out.vertex = std::uint32_t(v.get<long long>());
-            return;
-        }
-        const Json& p = j.at("point_mm");
-        if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number()) {
-            error(join(path, "point_mm"), "must be an array of three numbers (x, y, z in mm)");
-            return;
-        }
-        out.pointMm = glm::vec3(float(p[0].get<double>()), float(p[1].get<double>()), float(p[2].get<double>()));
-    }
-
-    static std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
-
-private:
-    std::vector<std::string>& mErrors;
-    std::string mSource;
-};
+    out.pointMm = glm::vec3(float(p[0].get<double>()), float(p[1].get<double>()), float(p[2].get<double>()));
+}
 
 Json pointJson(const SurfacePoint& p) {
     Json j = Json::object();
@@ -104,16 +50,10 @@ Json pointJson(const SurfacePoint& p) {
 
 ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& source) {
     ExerciseLoadResult result;
-    Reader r(result.errors, source);
-    Json j;
-    try {
-        j = Json::parse(textIn);
-    } catch (const Json::parse_error& e) {
-        const std::string what = e.what();
-        result.errors.push_back(source + ": not valid JSON at byte " + std::to_string(e.byte) + ": " +
-                                what.substr(std::min(what.size(), what.find(']') + 2)));
-        return result;
-    }
+    JsonReader r(result.errors, source);
+    const std::optional<Json> parsed = r.parse(textIn);
+    if (!parsed) return result;
+    const Json& j = *parsed;
     if (!r.object(j, "", {"format", "version", "name", "description", "type", "mesh", "tissue_preset", "time_limit_s",
                           "rubric", "press_targets", "find_lump", "trace", "damage", "force", "needs"}))
         return result;
@@ -176,7 +116,7 @@ ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& s
                     const std::string key = "press_targets.targets[" + std::to_string(i) + "]";
                     PressTarget t = defaults;
                     if (r.object(a[i], key, {"vertex", "point_mm", "force_min_n", "force_max_n", "hold_s", "tolerance_mm"})) {
-                        r.surfacePoint(a[i], key, t.at);
+                        readSurfacePoint(r, a[i], key, t.at);
                         r.number(a[i], key, "force_min_n", t.forceMinN);
                         r.number(a[i], key, "force_max_n", t.forceMaxN);
                         r.number(a[i], key, "hold_s", t.holdS);
@@ -199,7 +139,7 @@ ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& s
                     InclusionDef& d = e.findLump.inclusion;
                     if (!inc.contains("centre")) r.error(path + ".centre", "missing");
                     else if (r.object(inc.at("centre"), path + ".centre", {"vertex", "point_mm"}))
-                        r.surfacePoint(inc.at("centre"), path + ".centre", d.centre);
+                        readSurfacePoint(r, inc.at("centre"), path + ".centre", d.centre);
                     r.number(inc, path, "radius_mm", d.radiusMm, true);
                     r.number(inc, path, "stiffness_factor", d.stiffnessFactor, true);
                 }
@@ -222,7 +162,7 @@ ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& s
                 for (std::size_t i = 0; i < a.size() && i <= 10000; ++i) {
                     const std::string key = "trace.path[" + std::to_string(i) + "]";
                     SurfacePoint p;
-                    if (r.object(a[i], key, {"vertex", "point_mm"})) r.surfacePoint(a[i], key, p);
+                    if (r.object(a[i], key, {"vertex", "point_mm"})) readSurfacePoint(r, a[i], key, p);
                     t.path.push_back(p);
                 }
             }

@@ -73,7 +73,7 @@ TEST(BoussinesqField, SurfaceIsTractionFreeAwayFromTheLoad) {
         EXPECT_LT(std::abs(szz) / scale, 1e-5) << r;
         EXPECT_LT(std::abs(sxz) / scale, 1e-5) << r;
         EXPECT_LT(std::abs(syz) / scale, 1e-5) << r;
-        // And the surface displacement is the DESIGN's P (1 - nu^2) / (pi E r), pointing in.
+        // And the surface displacement is Boussinesq's P (1 - nu^2) / (pi E r), pointing in.
         EXPECT_NEAR(-u(p).z, kLoadN * (1 - nu * nu) / (std::numbers::pi * e * r), 1e-12);
     }
 }

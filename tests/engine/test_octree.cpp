@@ -91,10 +91,12 @@ void expectSameNearest(const Octree& tree, std::span<const glm::vec3> positions,
 }
 
 TEST(Octree, RejectsBadDefinitions) {
-    EXPECT_EQ(validateOctreeDef({10, 16}), "");
-    EXPECT_NE(validateOctreeDef({0, 16}).find("maxDepth"), std::string::npos);
-    EXPECT_NE(validateOctreeDef({21, 16}).find("maxDepth"), std::string::npos);
-    EXPECT_NE(validateOctreeDef({10, 0}).find("leafCapacity"), std::string::npos);
+    EXPECT_TRUE(validateOctreeDef({10, 16}).empty());
+    EXPECT_NE(joinedMessages(validateOctreeDef({0, 16})).find("maxDepth"), std::string::npos);
+    EXPECT_NE(joinedMessages(validateOctreeDef({21, 16})).find("maxDepth"), std::string::npos);
+    EXPECT_NE(joinedMessages(validateOctreeDef({10, 0})).find("leafCapacity"), std::string::npos);
+    EXPECT_TRUE(hasProblem(validateOctreeDef({21, 16}), "maxDepth"));
+    EXPECT_TRUE(hasProblem(validateOctreeDef({10, 0}), "leafCapacity"));
     EXPECT_THROW(Octree(sphere1442(), OctreeDef{0, 16}), std::invalid_argument);
     EXPECT_THROW(Octree(sphere1442(), OctreeDef{10, 0}), std::invalid_argument);
 }

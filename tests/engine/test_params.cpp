@@ -42,10 +42,10 @@ std::string slopeName(int r) { return "|m" + std::to_string(r + 1) + "|"; }
 
 TEST(SlopeRingParams, DefaultsAreValid) {
     const SlopeRingParams defaults;
-    EXPECT_TRUE(validateSlopeRingParams(defaults).empty()) << joined(validateSlopeRingParams(defaults));
+    EXPECT_TRUE(messagesOf(validateSlopeRingParams(defaults)).empty()) << joined(messagesOf(validateSlopeRingParams(defaults)));
     for (int n = 0; n <= kMaxRings; ++n)
-        EXPECT_TRUE(validateSlopeRingParams(validFor(n)).empty()) << "ringCount " << n << "\n"
-                                                                  << joined(validateSlopeRingParams(validFor(n)));
+        EXPECT_TRUE(messagesOf(validateSlopeRingParams(validFor(n))).empty()) << "ringCount " << n << "\n"
+                                                                  << joined(messagesOf(validateSlopeRingParams(validFor(n))));
 }
 
 TEST(SlopeRingParams, RejectsEveryWrongOrdering) {
@@ -54,7 +54,7 @@ TEST(SlopeRingParams, RejectsEveryWrongOrdering) {
             for (double delta : {0.0, 0.01, 0.05}) {  // equal, slightly and clearly increasing
                 SlopeRingParams p = validFor(ringCount);
                 p.slopeMagnitudeMmPerN[std::size_t(r)] = p.slopeMagnitudeMmPerN[std::size_t(r - 1)] + delta;
-                const auto errors = validateSlopeRingParams(p);
+                const auto errors = messagesOf(validateSlopeRingParams(p));
                 ASSERT_FALSE(errors.empty()) << "ringCount " << ringCount << ", " << slopeName(r - 1) << " vs "
                                              << slopeName(r) << " delta " << delta;
                 EXPECT_TRUE(anyMentions(errors, slopeName(r - 1), slopeName(r)))
@@ -66,7 +66,7 @@ TEST(SlopeRingParams, RejectsEveryWrongOrdering) {
         SlopeRingParams p = validFor(ringCount);
         if (ringCount < kMaxRings) {
             p.slopeMagnitudeMmPerN[std::size_t(ringCount + 1)] = 0.95;
-            EXPECT_TRUE(validateSlopeRingParams(p).empty()) << joined(validateSlopeRingParams(p));
+            EXPECT_TRUE(messagesOf(validateSlopeRingParams(p)).empty()) << joined(messagesOf(validateSlopeRingParams(p)));
         }
     }
 }
@@ -77,7 +77,7 @@ TEST(SlopeRingParams, RejectsZeroNegativeNonFiniteAndTooLargeSlopes) {
             for (double bad : {0.0, -0.1, -1.0, kNaN, kInf, -kInf}) {
                 SlopeRingParams p = validFor(ringCount);
                 p.slopeMagnitudeMmPerN[std::size_t(r)] = bad;
-                const auto errors = validateSlopeRingParams(p);
+                const auto errors = messagesOf(validateSlopeRingParams(p));
                 ASSERT_FALSE(errors.empty()) << slopeName(r) << " = " << bad;
                 EXPECT_TRUE(anyMentions(errors, slopeName(r))) << slopeName(r) << " = " << bad << ":\n"
                                                                << joined(errors);
@@ -88,24 +88,24 @@ TEST(SlopeRingParams, RejectsZeroNegativeNonFiniteAndTooLargeSlopes) {
     for (double m1 : {1.0, 1.0000001, 2.0, 50.0}) {
         SlopeRingParams p = validFor(2);
         p.slopeMagnitudeMmPerN[0] = m1;
-        const auto errors = validateSlopeRingParams(p);
+        const auto errors = messagesOf(validateSlopeRingParams(p));
         ASSERT_FALSE(errors.empty()) << "|m1| = " << m1;
         EXPECT_TRUE(anyMentions(errors, "|m1|")) << joined(errors);
     }
     {
         SlopeRingParams p = validFor(2);
         p.slopeLimitMmPerN = 0.5;  // |m1| = 0.9 and |m2| = 0.8 and |m3| = 0.7 are now too large
-        const auto errors = validateSlopeRingParams(p);
+        const auto errors = messagesOf(validateSlopeRingParams(p));
         EXPECT_TRUE(anyMentions(errors, "|m1|")) << joined(errors);
         EXPECT_TRUE(anyMentions(errors, "|m2|")) << joined(errors);
         EXPECT_TRUE(anyMentions(errors, "|m3|")) << joined(errors);
         p.slopeMagnitudeMmPerN = {0.4, 0.3, 0.2};
-        EXPECT_TRUE(validateSlopeRingParams(p).empty()) << joined(validateSlopeRingParams(p));
+        EXPECT_TRUE(messagesOf(validateSlopeRingParams(p)).empty()) << joined(messagesOf(validateSlopeRingParams(p)));
     }
     for (double limit : {0.0, -1.0, kNaN, kInf, 1000.0}) {
         SlopeRingParams p = validFor(2);
         p.slopeLimitMmPerN = limit;
-        const auto errors = validateSlopeRingParams(p);
+        const auto errors = messagesOf(validateSlopeRingParams(p));
         ASSERT_FALSE(errors.empty()) << "slopeLimit " << limit;
         EXPECT_TRUE(anyMentions(errors, "slopeLimit")) << joined(errors);
     }
@@ -115,7 +115,7 @@ TEST(SlopeRingParams, RejectsBadRingCount) {
     for (int n : {-1, -100, kMaxRings + 1, 1000}) {
         SlopeRingParams p;
         p.ringCount = n;
-        const auto errors = validateSlopeRingParams(p);
+        const auto errors = messagesOf(validateSlopeRingParams(p));
         ASSERT_FALSE(errors.empty()) << "ringCount " << n;
         EXPECT_TRUE(anyMentions(errors, "ringCount")) << joined(errors);
     }
@@ -139,15 +139,15 @@ TEST(SlopeRingParams, RejectsBadStiffnessMassDampingRelaxation) {
         for (double v : f.bad) {
             SlopeRingParams p;
             p.*f.member = v;
-            const auto errors = validateSlopeRingParams(p);
+            const auto errors = messagesOf(validateSlopeRingParams(p));
             ASSERT_FALSE(errors.empty()) << f.name << " = " << v;
             EXPECT_TRUE(anyMentions(errors, f.name)) << f.name << " = " << v << ":\n" << joined(errors);
         }
         for (double v : f.good) {
             SlopeRingParams p;
             p.*f.member = v;
-            EXPECT_TRUE(validateSlopeRingParams(p).empty()) << f.name << " = " << v << ":\n"
-                                                            << joined(validateSlopeRingParams(p));
+            EXPECT_TRUE(messagesOf(validateSlopeRingParams(p)).empty()) << f.name << " = " << v << ":\n"
+                                                            << joined(messagesOf(validateSlopeRingParams(p)));
         }
     }
 }
@@ -159,16 +159,16 @@ TEST(SlopeRingParams, LoopGainBoundBothSides) {
     p.slopeMagnitudeMmPerN = {40.0, 20.0, 10.0};
     p.contactStiffnessNPerMm = 1.0;  // g = 40
     p.forceRelaxation = 1.0;         // alpha (1 + g) = 41: unstable
-    auto errors = validateSlopeRingParams(p);
+    auto errors = messagesOf(validateSlopeRingParams(p));
     ASSERT_FALSE(errors.empty());
     EXPECT_TRUE(anyMentions(errors, "forceRelaxation") || anyMentions(errors, "contactStiffness"))
         << joined(errors);
     EXPECT_TRUE(anyMentions(errors, "gain")) << joined(errors);
 
     p.forceRelaxation = 1.9 / 41.0;  // inside the bound
-    EXPECT_TRUE(validateSlopeRingParams(p).empty()) << joined(validateSlopeRingParams(p));
+    EXPECT_TRUE(messagesOf(validateSlopeRingParams(p)).empty()) << joined(messagesOf(validateSlopeRingParams(p)));
     p.forceRelaxation = 0.0;  // automatic: alpha = 1 / (1 + g), the one-tick solve
-    EXPECT_TRUE(validateSlopeRingParams(p).empty()) << joined(validateSlopeRingParams(p));
+    EXPECT_TRUE(messagesOf(validateSlopeRingParams(p)).empty()) << joined(messagesOf(validateSlopeRingParams(p)));
     EXPECT_DOUBLE_EQ(p.effectiveRelaxation(), 1.0 / 41.0);
     EXPECT_DOUBLE_EQ(p.loopGain(), 40.0);
 
@@ -179,9 +179,9 @@ TEST(SlopeRingParams, LoopGainBoundBothSides) {
         e.slopeMagnitudeMmPerN = {3.0, 2.0, 1.0};
         e.contactStiffnessNPerMm = 1.0;
         e.forceRelaxation = 0.5;
-        EXPECT_FALSE(validateSlopeRingParams(e).empty());
+        EXPECT_FALSE(messagesOf(validateSlopeRingParams(e)).empty());
         e.forceRelaxation = 0.4375;  // 0.4375 * 4 = 1.75
-        EXPECT_TRUE(validateSlopeRingParams(e).empty()) << joined(validateSlopeRingParams(e));
+        EXPECT_TRUE(messagesOf(validateSlopeRingParams(e)).empty()) << joined(messagesOf(validateSlopeRingParams(e)));
     }
 
     // In the paper's range with full relaxation: g = 0.9 -> 1.9 < 2 is stable, g = 1 is not.
@@ -189,11 +189,11 @@ TEST(SlopeRingParams, LoopGainBoundBothSides) {
     q.slopeMagnitudeMmPerN = {0.9, 0.5, 0.2};
     q.forceRelaxation = 1.0;
     q.contactStiffnessNPerMm = 1.0;
-    EXPECT_TRUE(validateSlopeRingParams(q).empty()) << joined(validateSlopeRingParams(q));
+    EXPECT_TRUE(messagesOf(validateSlopeRingParams(q)).empty()) << joined(messagesOf(validateSlopeRingParams(q)));
     q.contactStiffnessNPerMm = 1.0 / 0.9;
-    EXPECT_FALSE(validateSlopeRingParams(q).empty());
+    EXPECT_FALSE(messagesOf(validateSlopeRingParams(q)).empty());
     q.contactStiffnessNPerMm = 2.0;
-    EXPECT_FALSE(validateSlopeRingParams(q).empty());
+    EXPECT_FALSE(messagesOf(validateSlopeRingParams(q)).empty());
 }
 
 TEST(SlopeRingParams, DeformerConstructorAndSetParamsThrowOnInvalid) {

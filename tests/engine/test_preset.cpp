@@ -149,7 +149,7 @@ TEST(TissuePresetFuzz, MutationsNeverCrash) {
     EXPECT_LT(accepted, 2000);
 }
 
-// "needs" (issue 10, docs/lod.md): optional; round-trips; absurd values name the key.
+// "needs" (docs/lod.md): optional; round-trips; absurd values name the key.
 TEST(TissuePreset, NeedsAreOptionalRoundTripAndNamedWhenBad) {
     const auto without = parseTissuePreset(validText(), "my.json");
     ASSERT_TRUE(without.preset) << without.error();
@@ -189,7 +189,7 @@ TEST(TissuePreset, NeedsAreOptionalRoundTripAndNamedWhenBad) {
     EXPECT_FALSE(std::filesystem::exists(path));
 }
 
-// "stability_margin" (issue 8, docs/stability.md section 7): written on save by the parameter panel
+// "stability_margin" (docs/stability.md section 7): written on save by the parameter panel
 // with the period it was computed for; informational on load (type and range checked, by key);
 // presets without it stay valid.
 TEST(TissuePreset, StabilityMarginIsOptionalRoundTripsAndIsNamedWhenBad) {

@@ -50,7 +50,7 @@ TEST(TissuePresetModels, EveryRegistryNameLoadsAndRoundTrips) {
         ASSERT_TRUE(r.preset) << name << ": " << r.error();
         EXPECT_EQ(presetModelName(*r.preset), name);
         EXPECT_EQ(tissuePresetToJson(*r.preset), text) << name;
-        EXPECT_TRUE(validateModelDef(presetModelDef(*r.preset)).empty()) << name;
+        EXPECT_TRUE(messagesOf(validateModelDef(presetModelDef(*r.preset))).empty()) << name;
     }
 }
 

@@ -74,7 +74,7 @@ protected:
         params.forceRelaxation = 1.0;
         params.contactStiffnessNPerMm = 0.5;
         params.springStiffnessNPerMm = 2.0;
-        ASSERT_TRUE(validateSlopeRingParams(params).empty());
+        ASSERT_TRUE(messagesOf(validateSlopeRingParams(params)).empty());
     }
     std::optional<TissueMesh> mesh;
     std::optional<Octree> tree;
@@ -439,7 +439,7 @@ TEST(SlopeRingEquilibrium, AcceptedOvershootingRelaxationStillConverges) {
     p.slopeMagnitudeMmPerN = {0.9, 0.4, 0.1};
     p.contactStiffnessNPerMm = 2.0;
     p.forceRelaxation = 0.7;
-    ASSERT_TRUE(validateSlopeRingParams(p).empty());
+    ASSERT_TRUE(messagesOf(validateSlopeRingParams(p)).empty());
     expectEquilibrium(p, 1.0f, 2000, "g = 1.8, forceRelaxation 0.7");
 }
 

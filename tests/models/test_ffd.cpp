@@ -111,10 +111,10 @@ TEST(FfdModel, SurfaceIsTheLatticeMapOfTheMovedControlPoints) {
 
 TEST(FfdParams, ValidatorNamesTheField) {
     FfdParams p;
-    EXPECT_TRUE(validateFfdParams(p).empty());
+    EXPECT_TRUE(messagesOf(validateFfdParams(p)).empty());
     p.controlPointsPerAxis = 40;
     p.movedPerAxis = 0;
-    const auto errors = validateFfdParams(p);
+    const auto errors = messagesOf(validateFfdParams(p));
     ASSERT_EQ(errors.size(), 2u);
     EXPECT_NE(errors[0].find("controlPointsPerAxis"), std::string::npos);
     EXPECT_NE(errors[1].find("movedPerAxis"), std::string::npos);

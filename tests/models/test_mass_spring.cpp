@@ -49,11 +49,11 @@ double setMode(MassSpringModel& model, bool uniform) {
 
 TEST(MassSpringParams, ValidatorNamesTheField) {
     MassSpringParams p;
-    EXPECT_TRUE(validateMassSpringParams(p).empty());
+    EXPECT_TRUE(messagesOf(validateMassSpringParams(p)).empty());
     p.anchorStiffnessNPerMm = -1.0;
     p.cgTolerance = 2.0;
     p.localRingCount = 20;
-    const auto errors = validateMassSpringParams(p);
+    const auto errors = messagesOf(validateMassSpringParams(p));
     ASSERT_EQ(errors.size(), 3u);
     EXPECT_NE(errors[0].find("anchorStiffnessNPerMm"), std::string::npos) << errors[0];
     EXPECT_NE(errors[1].find("cgTolerance"), std::string::npos) << errors[1];

@@ -26,7 +26,7 @@ TEST(ModelRegistry, NamesAreStableAndRoundTrip) {
         const auto def = modelDefForName(name);
         ASSERT_TRUE(def) << name;
         EXPECT_EQ(modelName(*def), name);
-        EXPECT_TRUE(validateModelDef(*def).empty()) << name;
+        EXPECT_TRUE(messagesOf(validateModelDef(*def)).empty()) << name;
     }
     EXPECT_FALSE(modelDefForName("finite-elements"));
 }

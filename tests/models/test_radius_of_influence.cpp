@@ -14,7 +14,7 @@ using namespace palpate;
 
 TEST(RadiusOfInfluenceProfile, DefaultIsZeroWithZeroSlopeAtTheRadius) {
     const RadiusOfInfluenceParams p;
-    EXPECT_TRUE(validateRadiusOfInfluenceParams(p).empty());
+    EXPECT_TRUE(messagesOf(validateRadiusOfInfluenceParams(p)).empty());
     EXPECT_EQ(p.degree, 2);
     EXPECT_DOUBLE_EQ(evaluateProfile(p, 0.0), 1.0);
     EXPECT_DOUBLE_EQ(evaluateProfile(p, 0.5), 0.25);  // (1 - 0.5)^2
@@ -25,7 +25,7 @@ TEST(RadiusOfInfluenceProfile, DefaultIsZeroWithZeroSlopeAtTheRadius) {
         RadiusOfInfluenceParams q;
         q.degree = degree;
         q.coefficients = powerProfileCoefficients(degree);
-        EXPECT_TRUE(validateRadiusOfInfluenceParams(q).empty()) << degree;
+        EXPECT_TRUE(messagesOf(validateRadiusOfInfluenceParams(q)).empty()) << degree;
         EXPECT_NEAR(evaluateProfile(q, 0.3), std::pow(0.7, degree), 1e-12) << degree;
         EXPECT_NEAR(evaluateProfile(q, 1.0), 0.0, 1e-12);
     }
@@ -34,17 +34,17 @@ TEST(RadiusOfInfluenceProfile, DefaultIsZeroWithZeroSlopeAtTheRadius) {
 TEST(RadiusOfInfluenceProfile, ValidatorNamesTheBrokenCondition) {
     RadiusOfInfluenceParams p;
     p.coefficients = {1.0, -1.0, 0.0};  // 1 - rho: zero at the radius, but with a kink
-    auto errors = validateRadiusOfInfluenceParams(p);
+    auto errors = messagesOf(validateRadiusOfInfluenceParams(p));
     ASSERT_EQ(errors.size(), 1u);
     EXPECT_NE(errors[0].find("phi'(1)"), std::string::npos) << errors[0];
     p.coefficients = {0.5, -1.0, 0.5};
-    errors = validateRadiusOfInfluenceParams(p);
+    errors = messagesOf(validateRadiusOfInfluenceParams(p));
     ASSERT_FALSE(errors.empty());
     EXPECT_NE(errors[0].find("coefficients[0]"), std::string::npos) << errors[0];
     p = {};
     p.degree = 1;
     p.radiusMm = -2.0;
-    errors = validateRadiusOfInfluenceParams(p);
+    errors = messagesOf(validateRadiusOfInfluenceParams(p));
     ASSERT_EQ(errors.size(), 2u);
     EXPECT_NE(errors[0].find("radiusMm"), std::string::npos);
     EXPECT_NE(errors[1].find("degree"), std::string::npos);

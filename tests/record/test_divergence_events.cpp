@@ -1,4 +1,4 @@
-// Issue 8 task: the divergence guard's events in the recording (format 2), end to end. A loop with
+// The divergence guard's events in the recording (format 2), end to end. A loop with
 // a recorder attached runs a parameter set beyond its stability bound (symplectic Euler, one step
 // per tick, undamped, dt above 2 / omega_max: valid parameters, an unstable step): every tick the
 // guard fires renders zero force and leaves the tissue at rest, the session keeps running, the
@@ -48,7 +48,7 @@ DivergingRun recordDiverging(const std::string& path, int ticks) {
     DivergingRun run;
     TissuePreset preset;
     const ModelDef def = divergingMassSpring();
-    EXPECT_TRUE(validateModelDef(def).empty()) << "valid parameters, unstable step";
+    EXPECT_TRUE(messagesOf(validateModelDef(def)).empty()) << "valid parameters, unstable step";
     setPresetModel(preset, def);
     auto loaded = TissueMesh::load(sphereMeshPath());
     EXPECT_TRUE(loaded.mesh) << loaded.error();

@@ -206,7 +206,7 @@ TEST(ExerciseFile, RecordingNoteCarriesTheExercise) {
 namespace palpate {
 namespace {
 
-// "needs" (issue 10, docs/lod.md): optional; round-trips; absurd values are errors naming the key.
+// "needs" (docs/lod.md): optional; round-trips; absurd values are errors naming the key.
 TEST(ExerciseFile, NeedsAreOptionalRoundTripAndNamedWhenBad) {
     const auto plain = parseExercise(pressJson().dump(), "ex.json");
     ASSERT_TRUE(plain.exercise) << plain.error();

@@ -221,7 +221,7 @@ TEST(DivergenceGuard, TheLoopZeroesTheForceResetsTheTissueAndRecordsTheEvent) {
     bad.forceRelaxation = 1.0;
     bad.slopeLimitMmPerN = 100.0;
     bad.contactStiffnessNPerMm = 1.5 / bad.slopeMagnitudeMmPerN[0];
-    ASSERT_FALSE(validateSlopeRingParams(bad).empty());
+    ASSERT_FALSE(messagesOf(validateSlopeRingParams(bad)).empty());
     ASSERT_TRUE(loop.scene().model().applySlopeRingParams(bad));
     std::uint64_t before = 0;
     bool caught = false;

@@ -73,7 +73,7 @@ TEST(StabilityCli, EveryNewMapRunsQuicklyFromTheCli) {
     }
 }
 
-// Issue 9's bench: bench models --csv writes one row per model and size (here a small sphere).
+// The models bench (docs/models.md): bench models --csv writes one row per model and size (here a small sphere).
 TEST(BenchModelsCli, CsvHasOneRowPerModelAndSize) {
     const std::string csv = ::testing::TempDir() + "bench_models.csv";
     const CliRun r = run("bench models --sizes 242 --models radius-of-influence,ffd --repeats 1 --budget-s 2 --csv " + csv);

@@ -1,4 +1,4 @@
-// Issue 8/9: the maps of the other models (mass-spring-local, the four slope-ring methods, the
+// docs/stability.md, docs/models.md: the maps of the other models (mass-spring-local, the four slope-ring methods, the
 // volumetric rings, radius of influence and FFD against a simulated device), both sides of each
 // derived boundary on the real models, the sampled-wall closed form against a direct simulation,
 // and every registry model covered by a map.

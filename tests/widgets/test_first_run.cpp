@@ -1,4 +1,4 @@
-// The first-run experience under QT_QPA_PLATFORM=offscreen (issue 12): the welcome page (shown once,
+// The first-run experience under QT_QPA_PLATFORM=offscreen (docs/user-guide.md): the welcome page (shown once,
 // "Don't show this again", its three actions on a real stepped MainWindow), the Preferences dialog
 // (fields, validation, the QSettings keys) and what the preferences do to a window, the Help menu's
 // User Guide (F1, shown in the guide window; no browser is started) and formatForce. Own main().

@@ -1,6 +1,6 @@
 // The OpenGL viewport through the real GL path: run under Xvfb with the xcb platform (ctest runs it
 // with `xvfb-run -a`; Mesa's llvmpipe gives OpenGL 4.5). Not under Qt's offscreen platform, which
-// has no OpenGL for widgets (DESIGN.md section 7). Every test skips, saying why, when no OpenGL 3.3
+// has no OpenGL for widgets (docs/architecture.md). Every test skips, saying why, when no OpenGL 3.3
 // core context can be created. The scene is the default one stepped into contact (deterministic).
 #include "ImageChecks.h"
 

@@ -1,4 +1,4 @@
-// The Parameters panel's model selector (issue 9): every registry model is listed, slope-ring
+// The Parameters panel's model selector (docs/models.md): every registry model is listed, slope-ring
 // methods first, each with a tooltip; the chosen model's own fields are shown and validated by
 // name; Apply switches the haptic session's model, and undo goes back. Offscreen, stepped loop;
 // main() is in test_viewport.cpp.
@@ -62,13 +62,13 @@ TEST(ModelSelector, ShowsTheChosenModelsOwnFieldsAndNamesBadOnes) {
     EXPECT_FALSE(shown(panel, "modelParamsGroup"));
 
     choose(panel, "radius-of-influence");
-    EXPECT_TRUE(shown(panel, "radiusOfInfluenceRadiusSpin"));
+    EXPECT_TRUE(shown(panel, "radiusOfInfluenceRadiusMmSpin"));
     EXPECT_TRUE(shown(panel, "radiusOfInfluenceDegreeSpin"));
-    EXPECT_FALSE(shown(panel, "ffdControlPointsSpin"));
+    EXPECT_FALSE(shown(panel, "ffdControlPointsPerAxisSpin"));
     EXPECT_FALSE(shown(panel, "slopeGroup"));
     EXPECT_EQ(presetModelName(panel.preset()), "radius-of-influence");
 
-    auto* radius = panel.findChild<QDoubleSpinBox*>(QStringLiteral("radiusOfInfluenceRadiusSpin"));
+    auto* radius = panel.findChild<QDoubleSpinBox*>(QStringLiteral("radiusOfInfluenceRadiusMmSpin"));
     ASSERT_TRUE(radius);
     radius->setValue(0.0);
     EXPECT_FALSE(panel.isValid());
@@ -81,13 +81,13 @@ TEST(ModelSelector, ShowsTheChosenModelsOwnFieldsAndNamesBadOnes) {
     EXPECT_EQ(panel.preset().radiusOfInfluence.radiusMm, 12.5);
 
     choose(panel, "mass-spring-local");
-    EXPECT_TRUE(shown(panel, "massSpringLocalRingsSpin"));
+    EXPECT_TRUE(shown(panel, "massSpringLocalRingCountSpin"));
     EXPECT_TRUE(shown(panel, "massSpringLocalIntegratorCombo"));
     choose(panel, "mass-spring-rk4");
-    EXPECT_TRUE(shown(panel, "massSpringEdgeSpin"));
-    EXPECT_FALSE(shown(panel, "massSpringLocalRingsSpin"));
+    EXPECT_TRUE(shown(panel, "massSpringEdgeStiffnessNPerMmSpin"));
+    EXPECT_FALSE(shown(panel, "massSpringLocalRingCountSpin"));
     choose(panel, "ffd");
-    auto* moved = panel.findChild<QSpinBox*>(QStringLiteral("ffdMovedSpin"));
+    auto* moved = panel.findChild<QSpinBox*>(QStringLiteral("ffdMovedPerAxisSpin"));
     ASSERT_TRUE(moved && moved->isVisibleTo(&panel));
     moved->setValue(9);  // more than the 8 control points per axis
     EXPECT_FALSE(panel.isValid());

@@ -36,7 +36,7 @@ using namespace palpate;
 namespace {
 
 QDoubleSpinBox* slopeSpin(ParameterPanel& panel, int ring) {
-    return panel.findChild<QDoubleSpinBox*>(QStringLiteral("slopeSpin%1").arg(ring));
+    return panel.findChild<QDoubleSpinBox*>(QStringLiteral("slopeRingSlopeMagnitudeMmPerNSpin%1").arg(ring));
 }
 QDoubleSpinBox* doubleField(ParameterPanel& panel, const char* name) {
     return panel.findChild<QDoubleSpinBox*>(QLatin1String(name));
@@ -91,7 +91,7 @@ TEST(ParameterPanel, SlopeAboveTheInnerOneDisablesApplyAndNamesBoth) {
 
 TEST(ParameterPanel, SlopeRowsFollowTheRingCount) {
     ParameterPanel panel;
-    QSpinBox* rings = intField(panel, "ringCountSpin");
+    QSpinBox* rings = intField(panel, "slopeRingRingCountSpin");
     ASSERT_NE(rings, nullptr);
     EXPECT_EQ(rings->minimum(), 0);
     EXPECT_EQ(rings->maximum(), kMaxRings);
@@ -121,9 +121,9 @@ TEST(ParameterPanel, SlopeRowsFollowTheRingCount) {
 
 TEST(ParameterPanel, UnstableLoopGainIsRejectedAndTheStableSideAccepted) {
     ParameterPanel panel;
-    doubleField(panel, "forceRelaxationSpin")->setValue(1.0);
+    doubleField(panel, "slopeRingForceRelaxationSpin")->setValue(1.0);
     slopeSpin(panel, 0)->setValue(0.9);
-    doubleField(panel, "contactStiffnessSpin")->setValue(2.0);  // gain 1.8, alpha (1 + gain) = 2.8
+    doubleField(panel, "slopeRingContactStiffnessNPerMmSpin")->setValue(2.0);  // gain 1.8, alpha (1 + gain) = 2.8
 
     EXPECT_FALSE(panel.isValid());
     EXPECT_FALSE(applyButton(panel)->isEnabled());
@@ -132,10 +132,10 @@ TEST(ParameterPanel, UnstableLoopGainIsRejectedAndTheStableSideAccepted) {
     QLabel* stability = label(panel, "stabilityLabel");
     EXPECT_TRUE(stability->text().contains(QStringLiteral("unstable"))) << stability->text().toStdString();
     EXPECT_TRUE(stability->property("unstable").toBool());
-    EXPECT_TRUE(doubleField(panel, "contactStiffnessSpin")->property("invalid").toBool());
+    EXPECT_TRUE(doubleField(panel, "slopeRingContactStiffnessNPerMmSpin")->property("invalid").toBool());
     EXPECT_TRUE(slopeSpin(panel, 0)->property("invalid").toBool());
 
-    doubleField(panel, "contactStiffnessSpin")->setValue(1.0);  // gain 0.9, alpha (1 + gain) = 1.9 < 2
+    doubleField(panel, "slopeRingContactStiffnessNPerMmSpin")->setValue(1.0);  // gain 0.9, alpha (1 + gain) = 1.9 < 2
     EXPECT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
     EXPECT_TRUE(stability->text().contains(QStringLiteral("stability margin 5")))  // 1 - 1.9 / 2 = 5 %
         << stability->text().toStdString();
@@ -148,8 +148,8 @@ TEST(ParameterPanel, SlopeOutsideThePapersRangeIsAllowedUnderARaisedLimit) {
     EXPECT_FALSE(panel.isValid());
     EXPECT_TRUE(slopeSpin(panel, 0)->property("invalid").toBool());
 
-    doubleField(panel, "slopeLimitSpin")->setValue(5.0);
-    doubleField(panel, "contactStiffnessSpin")->setValue(0.4);
+    doubleField(panel, "slopeRingSlopeLimitMmPerNSpin")->setValue(5.0);
+    doubleField(panel, "slopeRingContactStiffnessNPerMmSpin")->setValue(0.4);
     EXPECT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
     EXPECT_TRUE(applyButton(panel)->isEnabled());
     EXPECT_FALSE(slopeSpin(panel, 0)->property("invalid").toBool());
@@ -162,11 +162,11 @@ TEST(ParameterPanel, SlopeOutsideThePapersRangeIsAllowedUnderARaisedLimit) {
 
 TEST(ParameterPanel, OctreeAndRateAreValidated) {
     ParameterPanel panel;
-    intField(panel, "octreeDepthSpin")->setValue(0);
+    intField(panel, "octreeMaxDepthSpin")->setValue(0);
     EXPECT_FALSE(panel.isValid());
-    EXPECT_TRUE(intField(panel, "octreeDepthSpin")->property("invalid").toBool());
+    EXPECT_TRUE(intField(panel, "octreeMaxDepthSpin")->property("invalid").toBool());
     EXPECT_TRUE(label(panel, "messageLabel")->text().contains(QStringLiteral("maxDepth")));
-    intField(panel, "octreeDepthSpin")->setValue(12);
+    intField(panel, "octreeMaxDepthSpin")->setValue(12);
     EXPECT_TRUE(panel.isValid());
 
     doubleField(panel, "hapticRateSpin")->setValue(20000.0);
@@ -184,19 +184,19 @@ TEST(ParameterPanel, ApplyEmitsExactlyTheFieldValues) {
 
     auto* model = panel.findChild<QComboBox*>(QStringLiteral("modelCombo"));
     model->setCurrentIndex(model->findData(QStringLiteral("hybrid")));
-    intField(panel, "ringCountSpin")->setValue(3);
+    intField(panel, "slopeRingRingCountSpin")->setValue(3);
     slopeSpin(panel, 0)->setValue(0.8);
     slopeSpin(panel, 1)->setValue(0.4);
     slopeSpin(panel, 2)->setValue(0.2);
     slopeSpin(panel, 3)->setValue(0.05);
-    doubleField(panel, "slopeLimitSpin")->setValue(1.5);
-    doubleField(panel, "springStiffnessSpin")->setValue(2.25);
-    doubleField(panel, "dampingRatioSpin")->setValue(0.7);
-    doubleField(panel, "contactStiffnessSpin")->setValue(1.2);
-    doubleField(panel, "forceRelaxationSpin")->setValue(0.5);
-    doubleField(panel, "vertexMassSpin")->setValue(0.002);
-    intField(panel, "octreeDepthSpin")->setValue(8);
-    intField(panel, "leafCapacitySpin")->setValue(32);
+    doubleField(panel, "slopeRingSlopeLimitMmPerNSpin")->setValue(1.5);
+    doubleField(panel, "slopeRingSpringStiffnessNPerMmSpin")->setValue(2.25);
+    doubleField(panel, "slopeRingDampingRatioSpin")->setValue(0.7);
+    doubleField(panel, "slopeRingContactStiffnessNPerMmSpin")->setValue(1.2);
+    doubleField(panel, "slopeRingForceRelaxationSpin")->setValue(0.5);
+    doubleField(panel, "slopeRingVertexMassKgSpin")->setValue(0.002);
+    intField(panel, "octreeMaxDepthSpin")->setValue(8);
+    intField(panel, "octreeLeafCapacitySpin")->setValue(32);
     doubleField(panel, "hapticRateSpin")->setValue(500.0);
     ASSERT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
 
@@ -219,7 +219,7 @@ TEST(ParameterPanel, ApplyEmitsExactlyTheFieldValues) {
     EXPECT_EQ(p.octree.leafCapacity, 32);
     EXPECT_DOUBLE_EQ(p.hapticRateHz, 500.0);
     EXPECT_TRUE(samePreset(p, panel.preset()));
-    EXPECT_TRUE(validateSlopeRingParams(p.params).empty());
+    EXPECT_TRUE(messagesOf(validateSlopeRingParams(p.params)).empty());
 
     // Invalid fields: the button is disabled and apply() emits nothing.
     slopeSpin(panel, 1)->setValue(0.9);
@@ -231,7 +231,7 @@ TEST(ParameterPanel, ApplyEmitsExactlyTheFieldValues) {
 TEST(ParameterPanel, UndoRestoresAndRedoReappliesEachEdit) {
     ParameterPanel panel;
     QDoubleSpinBox* m1 = slopeSpin(panel, 0);
-    QDoubleSpinBox* contact = doubleField(panel, "contactStiffnessSpin");
+    QDoubleSpinBox* contact = doubleField(panel, "slopeRingContactStiffnessNPerMmSpin");
     EXPECT_FALSE(panel.undoAction()->isEnabled());
     EXPECT_EQ(panel.undoAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_Z));
     EXPECT_EQ(panel.redoAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z));
@@ -268,17 +268,17 @@ TEST(ParameterPanel, UndoRestoresAndRedoReappliesEachEdit) {
     EXPECT_TRUE(applyButton(panel)->isEnabled());
 
     // Undo of a ring-count change hides the rows again.
-    intField(panel, "ringCountSpin")->setValue(4);
+    intField(panel, "slopeRingRingCountSpin")->setValue(4);
     EXPECT_TRUE(visibleIn(slopeSpin(panel, 4), panel));
     panel.undoAction()->trigger();
-    EXPECT_EQ(intField(panel, "ringCountSpin")->value(), 2);
+    EXPECT_EQ(intField(panel, "slopeRingRingCountSpin")->value(), 2);
     EXPECT_FALSE(visibleIn(slopeSpin(panel, 4), panel));
 
     // Editing a value back to where the step started leaves no step behind.
     const int steps = panel.undoStack()->index();
-    doubleField(panel, "dampingRatioSpin")->setValue(0.5);
+    doubleField(panel, "slopeRingDampingRatioSpin")->setValue(0.5);
     EXPECT_EQ(panel.undoStack()->index(), steps + 1);
-    doubleField(panel, "dampingRatioSpin")->setValue(1.0);
+    doubleField(panel, "slopeRingDampingRatioSpin")->setValue(1.0);
     EXPECT_EQ(panel.undoStack()->index(), steps);
     EXPECT_EQ(panel.undoStack()->count(), steps);
 }
@@ -362,18 +362,18 @@ TEST(ParameterPanel, SaveThenLoadRoundTripsAsOneUndoableStep) {
     ParameterPanel panel;
     auto* model = panel.findChild<QComboBox*>(QStringLiteral("modelCombo"));
     model->setCurrentIndex(model->findData(QStringLiteral("proposed")));
-    intField(panel, "ringCountSpin")->setValue(3);
-    doubleField(panel, "slopeLimitSpin")->setValue(8.0);
+    intField(panel, "slopeRingRingCountSpin")->setValue(3);
+    doubleField(panel, "slopeRingSlopeLimitMmPerNSpin")->setValue(8.0);
     slopeSpin(panel, 0)->setValue(3.5);  // outside the paper's range, allowed by the limit
     slopeSpin(panel, 1)->setValue(1.25);
     slopeSpin(panel, 2)->setValue(0.5);
     slopeSpin(panel, 3)->setValue(0.125);
-    doubleField(panel, "contactStiffnessSpin")->setValue(0.2);
-    doubleField(panel, "forceRelaxationSpin")->setValue(0.4);
-    doubleField(panel, "dampingRatioSpin")->setValue(0.8);
-    doubleField(panel, "vertexMassSpin")->setValue(0.0025);
-    intField(panel, "octreeDepthSpin")->setValue(7);
-    intField(panel, "leafCapacitySpin")->setValue(24);
+    doubleField(panel, "slopeRingContactStiffnessNPerMmSpin")->setValue(0.2);
+    doubleField(panel, "slopeRingForceRelaxationSpin")->setValue(0.4);
+    doubleField(panel, "slopeRingDampingRatioSpin")->setValue(0.8);
+    doubleField(panel, "slopeRingVertexMassKgSpin")->setValue(0.0025);
+    intField(panel, "octreeMaxDepthSpin")->setValue(7);
+    intField(panel, "octreeLeafCapacitySpin")->setValue(24);
     doubleField(panel, "hapticRateSpin")->setValue(2500.0);
     ASSERT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
     const TissuePreset saved = panel.preset();
@@ -413,7 +413,7 @@ TEST(ParameterPanel, SaveThenLoadRoundTripsAsOneUndoableStep) {
 
 TEST(ParameterPanel, RendersEveryFieldInsideThePanel) {
     ParameterPanel panel;
-    intField(panel, "ringCountSpin")->setValue(4);
+    intField(panel, "slopeRingRingCountSpin")->setValue(4);
     slopeSpin(panel, 2)->setValue(0.5);  // above |m2|: an error, framed red
     // Tall enough that the fields need no scrolling (a dock may be shorter: then they scroll).
     auto* scroll = panel.findChild<QScrollArea*>(QStringLiteral("parameterScroll"));
@@ -446,7 +446,7 @@ TEST(ParameterPanel, RendersEveryFieldInsideThePanel) {
     if (const QByteArray out = qgetenv("PALPATE_PARAMETER_PANEL_PNG"); !out.isEmpty()) shot.save(QString::fromLocal8Bit(out));
 }
 
-// Issue 8, guards for every model (docs/stability.md section 7): the panel shows each model's
+// Guards for every model (docs/stability.md section 7): the panel shows each model's
 // stability margin; a set beyond it is not refused by the validators (mass-spring, radius of
 // influence, FFD), so Apply asks for confirmation (the real QMessageBox, answered here, or the
 // replaceable confirm function); a saved preset stores the margin with its period.
@@ -508,7 +508,7 @@ TEST(ParameterPanelStability, BeyondTheMarginApplyAsksAndNoKeepsTheSetBack) {
     QObject::connect(&panel, &ParameterPanel::applyRequested, [&](const TissuePreset& p) { applied.push_back(p); });
     choose(panel, "mass-spring-symplectic");
     intField(panel, "massSpringSubstepsSpin")->setValue(1);
-    doubleField(panel, "massSpringEdgeSpin")->setValue(5.0);  // h omega_max far above 2 at 1 kHz
+    doubleField(panel, "massSpringEdgeStiffnessNPerMmSpin")->setValue(5.0);  // h omega_max far above 2 at 1 kHz
     ASSERT_TRUE(panel.isValid()) << "the validators allow the set: " << panel.problems().join(QLatin1Char('\n')).toStdString();
     const auto margin = panel.stabilityMargin();
     ASSERT_TRUE(margin);
@@ -556,7 +556,7 @@ TEST(ParameterPanelStability, GeometricModelsAskBeyondThePassiveStiffness) {
     });
     for (const char* model : {"radius-of-influence", "ffd"}) {
         choose(panel, model);
-        const char* spin = std::string(model) == "ffd" ? "ffdStiffnessSpin" : "radiusOfInfluenceStiffnessSpin";
+        const char* spin = std::string(model) == "ffd" ? "ffdStiffnessNPerMmSpin" : "radiusOfInfluenceStiffnessNPerMmSpin";
         doubleField(panel, spin)->setValue(1.1);  // above 1 N/mm at 1 kHz
         EXPECT_LT(panel.stabilityMargin()->margin, 0.0) << model;
         panel.apply();
@@ -578,9 +578,9 @@ TEST(ParameterPanelStability, SlopeRingBeyondItsBoundIsStillRefusedNotAsked) {
     panel.setConfirmFunction([&](const QString&, const QString&) { ++asked; return true; });
     std::vector<TissuePreset> applied;
     QObject::connect(&panel, &ParameterPanel::applyRequested, [&](const TissuePreset& p) { applied.push_back(p); });
-    doubleField(panel, "forceRelaxationSpin")->setValue(1.0);
+    doubleField(panel, "slopeRingForceRelaxationSpin")->setValue(1.0);
     slopeSpin(panel, 0)->setValue(0.9);
-    doubleField(panel, "contactStiffnessSpin")->setValue(2.0);
+    doubleField(panel, "slopeRingContactStiffnessNPerMmSpin")->setValue(2.0);
     EXPECT_LT(panel.stabilityMargin()->margin, 0.0);
     panel.apply();
     EXPECT_EQ(int(applied.size()), 0);
@@ -604,7 +604,7 @@ TEST(ParameterPanelStability, SavedPresetsStoreTheMarginAndItsPeriod) {
 
     choose(panel, "mass-spring-symplectic");
     intField(panel, "massSpringSubstepsSpin")->setValue(1);
-    doubleField(panel, "massSpringEdgeSpin")->setValue(5.0);
+    doubleField(panel, "massSpringEdgeStiffnessNPerMmSpin")->setValue(5.0);
     const double beyond = panel.stabilityMargin()->margin;
     ASSERT_LT(beyond, 0.0);
     const QString ms = dir.filePath(QStringLiteral("ms.json"));
@@ -625,4 +625,74 @@ TEST(ParameterPanelStability, SavedPresetsStoreTheMarginAndItsPeriod) {
     loaded = loadTissuePreset(unknown.toStdString());
     ASSERT_TRUE(loaded.preset) << loaded.error();
     EXPECT_FALSE(loaded.preset->stabilityMargin);
+}
+
+namespace {
+
+/// "mass_spring" + "edgeStiffnessNPerMm" -> "massSpringEdgeStiffnessNPerMmSpin" (the panel's naming).
+QString widgetName(const std::string& section, const FieldSpec& spec, bool choice) {
+    QString name;
+    bool upper = false;
+    for (char c : section) {
+        if (c == '_') upper = true;
+        else {
+            name += upper ? QChar::fromLatin1(c).toUpper() : QChar::fromLatin1(c);
+            upper = false;
+        }
+    }
+    return name + QChar::fromLatin1(spec.key[0]).toUpper() + QLatin1String(spec.key + 1) +
+           QLatin1String(choice ? "Combo" : "Spin");
+}
+
+/// Every scalar field of `table` has its widget, with the table's text, unit, decimals and a range
+/// that holds every valid value; a value outside the valid range marks that widget, and only it.
+template <class S>
+void expectPanelFollowsTable(const char* section, FieldTable<S> table, const char* model) {
+    ParameterPanel panel;
+    TissuePreset preset;
+    if (*model) setPresetModel(preset, *modelDefForName(model));
+    panel.setPreset(preset);
+    for (const FieldDef<S>& f : table) {
+        if (f.type == FieldType::RealList) continue;  // the slopes have their own test; coefficients are not shown
+        if (*f.spec.onlyFor && f.spec.onlyFor != std::string(model)) continue;
+        QWidget* widget = panel.findChild<QWidget*>(widgetName(section, f.spec, f.type == FieldType::Choice));
+        ASSERT_NE(widget, nullptr) << section << "." << f.spec.key << ": no widget";
+        EXPECT_EQ(widget->toolTip(), QString::fromUtf8(f.spec.tip)) << f.spec.key;
+        if (auto* spin = qobject_cast<QDoubleSpinBox*>(widget)) {
+            EXPECT_EQ(spin->decimals(), f.spec.decimals) << f.spec.key;
+            EXPECT_LE(spin->minimum(), f.spec.lo) << f.spec.key;
+            if (std::isfinite(f.spec.hi)) EXPECT_GE(spin->maximum(), f.spec.hi) << f.spec.key;
+            if (*f.spec.unit) EXPECT_TRUE(spin->suffix().contains(QString::fromUtf8(f.spec.unit))) << f.spec.key;
+            const double bad = f.spec.lower == Bound::Open ? f.spec.lo : std::isfinite(f.spec.hi) ? f.spec.hi * 1.5 : -1.0;
+            if (bad < spin->minimum() || bad > spin->maximum()) continue;
+            const double before = spin->value();
+            spin->setValue(bad);
+            EXPECT_TRUE(spin->property("invalid").toBool()) << f.spec.key << " = " << bad << " not marked";
+            EXPECT_FALSE(panel.isValid()) << f.spec.key;
+            int marked = 0;
+            for (QAbstractSpinBox* other : panel.findChildren<QAbstractSpinBox*>()) marked += other->property("invalid").toBool();
+            // An unstable loop gain also marks |m1| and k_c, the other two terms of the bound.
+            const bool unstable = label(panel, "stabilityLabel")->property("unstable").toBool();
+            EXPECT_EQ(marked, unstable ? 3 : 1) << f.spec.key << ": other fields marked too";
+            spin->setValue(before);
+            EXPECT_TRUE(panel.isValid()) << f.spec.key << ": " << panel.problems().join('\n').toStdString();
+        } else if (auto* ints = qobject_cast<QSpinBox*>(widget)) {
+            EXPECT_LE(ints->minimum(), f.spec.lo) << f.spec.key;
+            EXPECT_GE(ints->maximum(), f.spec.hi) << f.spec.key;
+        } else if (auto* combo = qobject_cast<QComboBox*>(widget)) {
+            EXPECT_EQ(combo->count(), int(f.spec.choices.size())) << f.spec.key;
+        }
+    }
+}
+
+}  // namespace
+
+TEST(ParameterPanel, EveryFieldComesFromItsEngineTable) {
+    expectPanelFollowsTable("slope_ring", slopeRingFields(), "");
+    expectPanelFollowsTable("octree", octreeFields(), "");
+    expectPanelFollowsTable("tissue", tissueFields(), "");
+    expectPanelFollowsTable("mass_spring", massSpringFields(), "mass-spring-local");
+    expectPanelFollowsTable("mass_spring", massSpringFields(), "mass-spring-symplectic");
+    expectPanelFollowsTable("radius_of_influence", radiusOfInfluenceFields(), "radius-of-influence");
+    expectPanelFollowsTable("ffd", ffdFields(), "ffd");
 }

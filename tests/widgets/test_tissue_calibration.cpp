@@ -27,7 +27,7 @@ namespace {
 
 QDoubleSpinBox* field(ParameterPanel& panel, const char* name) { return panel.findChild<QDoubleSpinBox*>(QLatin1String(name)); }
 QDoubleSpinBox* slopeSpin(ParameterPanel& panel, int ring) {
-    return panel.findChild<QDoubleSpinBox*>(QStringLiteral("slopeSpin%1").arg(ring));
+    return panel.findChild<QDoubleSpinBox*>(QStringLiteral("slopeRingSlopeMagnitudeMmPerNSpin%1").arg(ring));
 }
 
 /// Types `text` into a spin box as a user would (select all, type, Enter).
@@ -49,10 +49,10 @@ const TissueMesh& stomach() {
 TEST(TissueCalibration, TypedTissueCalibratesTheEnginesSlopesAsOneUndoableStep) {
     ParameterPanel panel;
     panel.setMeshProvider([] { return &stomach(); });
-    type(field(panel, "youngsModulusSpin"), QStringLiteral("11.7"));
-    type(field(panel, "poissonRatioSpin"), QStringLiteral("0.49"));
-    type(field(panel, "toolRadiusSpin"), QStringLiteral("4"));
-    QTest::keyClick(panel.findChild<QSpinBox*>(QStringLiteral("ringCountSpin"))->findChild<QLineEdit*>(), Qt::Key_Up);
+    type(field(panel, "tissueYoungsModulusKPaSpin"), QStringLiteral("11.7"));
+    type(field(panel, "tissuePoissonRatioSpin"), QStringLiteral("0.49"));
+    type(field(panel, "tissueToolRadiusMmSpin"), QStringLiteral("4"));
+    QTest::keyClick(panel.findChild<QSpinBox*>(QStringLiteral("slopeRingRingCountSpin"))->findChild<QLineEdit*>(), Qt::Key_Up);
     ASSERT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
     ASSERT_EQ(panel.preset().params.ringCount, 3);
     ASSERT_TRUE(panel.preset().tissue.has_value());
@@ -97,7 +97,7 @@ TEST(TissueCalibration, TypedTissueCalibratesTheEnginesSlopesAsOneUndoableStep) 
     // Undo restores the slopes before the calibration (and keeps the typed tissue); redo re-applies.
     panel.undoAction()->trigger();
     EXPECT_TRUE(samePreset(panel.preset(), before));
-    EXPECT_DOUBLE_EQ(field(panel, "youngsModulusSpin")->value(), 11.7);
+    EXPECT_DOUBLE_EQ(field(panel, "tissueYoungsModulusKPaSpin")->value(), 11.7);
     panel.redoAction()->trigger();
     EXPECT_NEAR(panel.preset().params.slopeMagnitudeMmPerN[1], expected.params.slopeMagnitudeMmPerN[1], 1e-9);
 
@@ -115,12 +115,12 @@ TEST(TissueCalibration, BadPoissonRatioIsRejectedNamingTheField) {
     ParameterPanel panel;
     panel.setMeshProvider([] { return &stomach(); });
     const TissuePreset before = panel.preset();
-    field(panel, "poissonRatioSpin")->setValue(0.6);
+    field(panel, "tissuePoissonRatioSpin")->setValue(0.6);
     EXPECT_FALSE(panel.isValid());
     ASSERT_FALSE(panel.problems().isEmpty());
     EXPECT_TRUE(panel.problems().join(QLatin1Char('\n')).contains(QStringLiteral("Poisson")))
         << panel.problems().join(QLatin1Char('\n')).toStdString();
-    EXPECT_TRUE(field(panel, "poissonRatioSpin")->property("invalid").toBool());
+    EXPECT_TRUE(field(panel, "tissuePoissonRatioSpin")->property("invalid").toBool());
     EXPECT_FALSE(panel.findChild<QPushButton*>(QStringLiteral("applyButton"))->isEnabled());
 
     QString error;
@@ -130,13 +130,13 @@ TEST(TissueCalibration, BadPoissonRatioIsRejectedNamingTheField) {
     EXPECT_EQ(panel.undoStack()->count(), steps);  // nothing calibrated
     EXPECT_EQ(panel.preset().params.slopeMagnitudeMmPerN, before.params.slopeMagnitudeMmPerN);
 
-    field(panel, "poissonRatioSpin")->setValue(0.45);
-    field(panel, "youngsModulusSpin")->setValue(0.0);
+    field(panel, "tissuePoissonRatioSpin")->setValue(0.45);
+    field(panel, "tissueYoungsModulusKPaSpin")->setValue(0.0);
     EXPECT_TRUE(panel.problems().join(QLatin1Char('\n')).contains(QStringLiteral("Young's modulus")));
-    field(panel, "youngsModulusSpin")->setValue(4.34);
-    field(panel, "toolRadiusSpin")->setValue(0.0);
+    field(panel, "tissueYoungsModulusKPaSpin")->setValue(4.34);
+    field(panel, "tissueToolRadiusMmSpin")->setValue(0.0);
     EXPECT_TRUE(panel.problems().join(QLatin1Char('\n')).contains(QStringLiteral("tool radius")));
-    field(panel, "toolRadiusSpin")->setValue(5.0);
+    field(panel, "tissueToolRadiusMmSpin")->setValue(5.0);
     EXPECT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
 }
 
@@ -163,9 +163,9 @@ TEST(TissueCalibration, ShippedTissuePresetFillsTheTissueAndTheSlopes) {
     emit combo->activated(liver);
     const PresetLoadResult file = loadTissuePreset(combo->itemData(liver).toString().toStdString());
     ASSERT_TRUE(file.preset.has_value());
-    EXPECT_DOUBLE_EQ(field(panel, "youngsModulusSpin")->value(), 5.4);
-    EXPECT_DOUBLE_EQ(field(panel, "poissonRatioSpin")->value(), 0.49);
-    EXPECT_DOUBLE_EQ(field(panel, "toolRadiusSpin")->value(), 5.0);
+    EXPECT_DOUBLE_EQ(field(panel, "tissueYoungsModulusKPaSpin")->value(), 5.4);
+    EXPECT_DOUBLE_EQ(field(panel, "tissuePoissonRatioSpin")->value(), 0.49);
+    EXPECT_DOUBLE_EQ(field(panel, "tissueToolRadiusMmSpin")->value(), 5.0);
     for (int r = 0; r <= file.preset->params.ringCount; ++r)
         EXPECT_NEAR(slopeSpin(panel, r)->value(), file.preset->params.slopeMagnitudeMmPerN[std::size_t(r)], 1e-9);
     EXPECT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();

@@ -1,4 +1,4 @@
-// The translations (issue 12) under QT_QPA_PLATFORM=offscreen: the embedded German and Malay .qm
+// The translations (translations/README.md) under QT_QPA_PLATFORM=offscreen: the embedded German and Malay .qm
 // files load, and a MainWindow built after switching finds its menus in that language; switching
 // back to English gives the English menus. Own main().
 #include "app/gui/FirstRun.h"
