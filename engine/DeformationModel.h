@@ -1,7 +1,7 @@
 #pragma once
 // The interface every deformation model implements, so models can be swapped and charted.
 
-#include "engine/SlopeRingParams.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/TissueMesh.h"
 
 #include <glm/vec3.hpp>
@@ -11,6 +11,8 @@
 #include <string>
 
 namespace palpate {
+
+struct ModelDef;  // engine/models/ModelRegistry.h (which includes this header)
 
 /// Ring index reported for a displaced vertex that is not in the active rings (it is relaxing).
 inline constexpr std::uint8_t kRelaxingRing = 0xff;
@@ -47,10 +49,11 @@ public:
     /// the tick. The haptic loop calls it while it spins towards the deadline. Real-time safe.
     virtual void warm(const glm::vec3& /*lastToolTipMm*/) const {}
 
-    /// Applies already validated slope-ring parameters at a tick boundary. Returns false when this
-    /// model cannot take them without reallocating (the caller must build a new model instead).
-    /// Real-time safe.
-    virtual bool applySlopeRingParams(const SlopeRingParams& /*params*/) { return false; }
+    /// Applies an already validated definition (validateModelDef) at a tick boundary: the model
+    /// takes the parameters of its own kind when it can do so without reallocating. Returns false
+    /// when it cannot (another kind or method, or parameters that need a new model: the caller
+    /// builds one instead); the model is then unchanged. Real-time safe.
+    virtual bool applyModelParams(const ModelDef& /*def*/) { return false; }
 };
 
 }  // namespace palpate

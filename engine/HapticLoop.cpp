@@ -197,7 +197,7 @@ void HapticLoop::tick(double nowS, double lateUs) {
     // Divergence guard (docs/stability.md): a model that left its stable range (NaN,
     // energy growth, force flipping every tick, an inverted triangle at the tool) renders no force
     // this tick and goes back to rest; counted and published so the GUI can say what to change.
-    // Allocation-free; positionsMm() writes at most the active rings (slope-ring palpate).
+    // Allocation-free; positionsMm() writes at most the active rings (the coherent slope-ring method).
     const DivergenceVerdict verdict = mGuard.check(mScene->mesh(), mScene->model().positionsMm(), result);
     if (verdict) {
         result.forceN = glm::vec3(0.0f);
@@ -276,8 +276,11 @@ void HapticLoop::applyCommands() {
         switch (c.kind) {
             case Command::Kind::Params:
                 // Only parameters the model took are recorded (a rejected set changes nothing).
-                if (mScene->model().applySlopeRingParams(c.params) && mRecorder)
-                    mRecorder->onCommand({mCounters.ticks + 1, RecordedCommand::Kind::Params, c.params, 0, nullptr});
+                // A recording stores the slope-ring parameters (the models that take parameters in
+                // real time are the slope-ring methods and volumetric rings, both made of them).
+                if (mScene->model().applyModelParams(c.model) && mRecorder)
+                    if (const SlopeRingParams* params = slopeRingParamsOf(c.model))
+                        mRecorder->onCommand({mCounters.ticks + 1, RecordedCommand::Kind::Params, *params, 0, nullptr});
                 break;
             case Command::Kind::Scene:
                 retire(mScene.release(), nullptr);
@@ -342,14 +345,14 @@ void HapticLoop::retire(HapticScene* scene, HapticDevice* device) {
     // memory we must not allocate here, so it is leaked rather than freed on the haptic thread.
 }
 
-std::string HapticLoop::setParams(const SlopeRingParams& params) {
-    const auto errors = validateSlopeRingParams(params);
+std::string HapticLoop::setModelParams(const ModelDef& model) {
+    const auto errors = validateModelDef(model);
     if (!errors.empty()) {
         std::string text = "parameters not applied:";
         for (const auto& e : errors) text += "\n  " + e.message;
         return text;
     }
-    Command c{Command::Kind::Params, params, nullptr, nullptr};
+    Command c{Command::Kind::Params, model, nullptr, nullptr};
     return mCommands.push(c) ? std::string() : std::string("parameters not applied: the command queue is full");
 }
 

@@ -70,8 +70,11 @@ public:
     void stepAt(double nowS, bool tickOverran);
 
     // --- commands: validated here, applied by the haptic thread at a tick boundary ---
-    /// "" when queued; otherwise why not (invalid parameters name each problem, or queue full).
-    std::string setParams(const SlopeRingParams& params);
+    /// New parameters for the scene's model: "" when queued; otherwise why not (invalid parameters
+    /// name each problem, or queue full). The model takes them at a tick boundary when it can
+    /// (DeformationModel::applyModelParams: same kind and method, no reallocation); otherwise the
+    /// command changes nothing and a new scene is needed (swapScene).
+    std::string setModelParams(const ModelDef& model);
     std::string swapScene(std::unique_ptr<HapticScene> scene);
     std::string swapDevice(std::unique_ptr<HapticDevice> device);
     void pause();
@@ -102,7 +105,7 @@ public:
 private:
     struct Command {
         enum class Kind : std::uint8_t { Params, Scene, Device, Pause, Resume } kind;
-        SlopeRingParams params;
+        ModelDef model;  // trivially copyable, so the queue copies it without allocating
         HapticScene* scene;
         HapticDevice* device;
     };

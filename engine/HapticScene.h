@@ -4,8 +4,6 @@
 
 #include "engine/DeformationModel.h"
 #include "engine/Octree.h"
-#include "engine/SlopeRingMethod.h"
-#include "engine/SlopeRingParams.h"
 #include "engine/TissueMesh.h"
 #include "engine/models/ModelRegistry.h"
 
@@ -18,10 +16,6 @@ struct TissuePreset;
 
 class HapticScene {
 public:
-    /// A slope-ring scene. Throws std::invalid_argument on invalid parameters or octree definition.
-    static std::unique_ptr<HapticScene> createSlopeRing(TissueMesh mesh, const SlopeRingParams& params,
-                                                        SlopeRingMethod method = SlopeRingMethod::Palpate,
-                                                        const OctreeDef& octree = {});
     /// A scene of any registry model (docs/models.md); volumetric-rings fills the surface with
     /// tetrahedra here. Not real-time: call it off the haptic thread. Throws std::invalid_argument
     /// naming the problem (parameters, octree, a surface the filler refuses).

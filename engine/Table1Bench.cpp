@@ -1,7 +1,8 @@
 #include "engine/Table1Bench.h"
 
 #include "engine/Octree.h"
-#include "engine/SlopeRingDeformer.h"
+#include "engine/models/slopering/CoherentSlopeRing.h"
+#include "engine/models/slopering/PaperSlopeRing.h"
 #include "engine/ToolPath.h"
 
 #include <glm/geometric.hpp>
@@ -15,9 +16,9 @@ namespace palpate {
 
 namespace {
 
-MethodMeasurement measure(const TissueMesh& mesh, const Octree& octree, const std::vector<glm::vec3>& path,
-                          const Table1Options& options, SlopeRingMethod method, bool eager = false) {
-    SlopeRingDeformer deformer(mesh, octree, options.params, method, eager);
+// The concrete class (final), so that the timed loop calls step() directly.
+template <typename Model>
+MethodMeasurement measureModel(Model& deformer, const std::vector<glm::vec3>& path, const Table1Options& options) {
     MethodMeasurement m;
 
     // Exactness: before each tick, compare the method's touched vertex with brute force.
@@ -56,6 +57,16 @@ MethodMeasurement measure(const TissueMesh& mesh, const Octree& octree, const st
     return m;
 }
 
+MethodMeasurement measure(const TissueMesh& mesh, const Octree& octree, const std::vector<glm::vec3>& path,
+                          const Table1Options& options, SlopeRingMethod method, bool eager = false) {
+    if (method == SlopeRingMethod::Coherent) {
+        CoherentSlopeRing model(mesh, octree, options.params, eager);
+        return measureModel(model, path, options);
+    }
+    PaperSlopeRing model(mesh, octree, options.params, method);
+    return measureModel(model, path, options);
+}
+
 Table1Row runRow(GeneratedShape shape, std::size_t vertices, bool wholeModel, const Table1Options& options) {
     auto say = [&](const std::string& line) {
         if (options.progress) options.progress(line);
@@ -72,13 +83,13 @@ Table1Row runRow(GeneratedShape shape, std::size_t vertices, bool wholeModel, co
     row.triangles = mesh.triangleCount();
     row.ticks = path.size();
     for (auto method : {SlopeRingMethod::Previous, SlopeRingMethod::Hybrid, SlopeRingMethod::Proposed,
-                        SlopeRingMethod::Palpate}) {
+                        SlopeRingMethod::Coherent}) {
         if (!wholeModel && (method == SlopeRingMethod::Previous || method == SlopeRingMethod::Hybrid)) continue;
         say("  " + std::string(methodName(method)));
         row.methods[std::size_t(method)] = measure(mesh, octree, path, options, method);
     }
-    say("  palpate (positions written every tick)");
-    row.palpateEager = measure(mesh, octree, path, options, SlopeRingMethod::Palpate, true);
+    say("  coherent (positions written every tick)");
+    row.coherentEager = measure(mesh, octree, path, options, SlopeRingMethod::Coherent, true);
     return row;
 }
 

@@ -3,8 +3,8 @@
 // paper's previous, hybrid and proposed methods and ours, over a press-and-stroke tool path.
 
 #include "engine/MeshGenerator.h"
-#include "engine/SlopeRingMethod.h"
-#include "engine/SlopeRingParams.h"
+#include "engine/models/slopering/SlopeRingMethod.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 
 #include <array>
 #include <functional>
@@ -28,7 +28,7 @@ struct Table1Row {
     std::array<std::optional<MethodMeasurement>, 4> methods;  ///< indexed by SlopeRingMethod
     /// Ours with the active rings' positions written every tick (as the paper's methods do), for
     /// an honest comparison of what the lazy writing saves.
-    std::optional<MethodMeasurement> palpateEager;
+    std::optional<MethodMeasurement> coherentEager;
 };
 
 struct Table1Options {

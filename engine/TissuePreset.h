@@ -6,8 +6,8 @@
 // them ("mass_spring", "radius_of_influence", "ffd"); volumetric-rings takes "slope_ring".
 
 #include "engine/Octree.h"
-#include "engine/SlopeRingMethod.h"
-#include "engine/SlopeRingParams.h"
+#include "engine/models/slopering/SlopeRingMethod.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/lod/LodNeeds.h"
 #include "engine/models/ModelRegistry.h"
 #include "engine/params/FieldTable.h"
@@ -51,7 +51,7 @@ struct TissuePreset {
     /// registry model (ModelDef's kinds), with its parameters below.
     ModelKind modelKind = ModelKind::SlopeRing;
     /// The slope-ring method (used when modelKind is SlopeRing).
-    SlopeRingMethod method = SlopeRingMethod::Palpate;
+    SlopeRingMethod method = SlopeRingMethod::Coherent;
     /// Slope-ring parameters: of the slope-ring methods and of volumetric-rings.
     SlopeRingParams params;
     MassSpringParams massSpring;            ///< the four mass-spring kinds

@@ -2507,8 +2507,8 @@ Pausiert: %13</translation>
         <translation>Deformationsmodell:</translation>
     </message>
     <message>
-        <source>Palpate (ours)</source>
-        <translation>Palpate (unseres)</translation>
+        <source>Coherent rings (ours)</source>
+        <translation>Kohärente Ringe (unseres)</translation>
     </message>
     <message>
         <source>Proposed (paper)</source>

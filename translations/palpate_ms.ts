@@ -2506,8 +2506,8 @@ pemapar %4</translation>
         <translation>Model ubah bentuk:</translation>
     </message>
     <message>
-        <source>Palpate (ours)</source>
-        <translation>Palpate (kami)</translation>
+        <source>Coherent rings (ours)</source>
+        <translation>Gelang koheren (kami)</translation>
     </message>
     <message>
         <source>Proposed (paper)</source>

@@ -5,7 +5,7 @@
 #include "engine/HapticRate.h"
 #include "engine/Octree.h"
 #include "engine/SceneTarget.h"
-#include "engine/SlopeRingDeformer.h"
+#include "engine/models/slopering/SlopeRingModel.h"
 #include "engine/accuracy/ModelError.h"
 
 #include <QAction>
@@ -76,7 +76,7 @@ void addFields(std::vector<PanelField>& out, const char* section, S TissuePreset
     }
 }
 
-constexpr SlopeRingMethod kMethods[] = {SlopeRingMethod::Palpate, SlopeRingMethod::Proposed, SlopeRingMethod::Hybrid,
+constexpr SlopeRingMethod kMethods[] = {SlopeRingMethod::Coherent, SlopeRingMethod::Proposed, SlopeRingMethod::Hybrid,
                                         SlopeRingMethod::Previous};
 
 /// The registry models after the slope-ring methods in the combo, with what each is and its cost class.
@@ -522,7 +522,7 @@ void ParameterPanel::retranslateUi() {
                                     "calibrated model leaves against the punch. One undoable step; Apply sends them."));
 
     setRowLabel(mModelForm, mModelCombo, tr("Deformation model:"));
-    const QString methodTexts[] = {tr("Palpate (ours)"), tr("Proposed (paper)"), tr("Hybrid (paper)"),
+    const QString methodTexts[] = {tr("Coherent rings (ours)"), tr("Proposed (paper)"), tr("Hybrid (paper)"),
                                    tr("Previous (paper)")};
     const QString methodTips[] = {
         tr("Ours: exact warm-started nearest-vertex search, only the rings processed, incremental work per tick."),
@@ -742,8 +742,8 @@ bool ParameterPanel::calibrateSlopes(QString* error) {
         // settle (PressDef: 300 ticks), never the haptic loop's.
         const OctreeDef octreeDef = validateOctreeDef(before.octree).empty() ? before.octree : OctreeDef{};
         const Octree octree(*mesh, octreeDef);
-        SlopeRingDeformer model(*mesh, octree, calibration.params, before.method);
-        measured = measureModelError(model, *mesh, touched, contact);
+        const auto model = makeSlopeRing(*mesh, octree, calibration.params, before.method);
+        measured = measureModelError(*model, *mesh, touched, contact);
     } catch (const std::exception& e) {
         return fail(tr("Not calibrated: %1").arg(QString::fromStdString(e.what())));
     }

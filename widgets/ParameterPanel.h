@@ -3,7 +3,7 @@
 // magnitudes in mm/N, springs, contact, octree, haptic rate), validated live with the engine's own
 // validators, with the slope model's loop gain and stability margin, undo/redo through a
 // QUndoStack, and preset files. It only edits a TissuePreset: the main window decides what Apply
-// does (e.g. HapticLoop::setParams). A plain QWidget, meant for a QDockWidget.
+// does (e.g. HapticLoop::setModelParams). A plain QWidget, meant for a QDockWidget.
 // The Tissue group turns elasticity into slopes (docs/calibration.md): Young's modulus, Poisson's ratio and
 // the tool radius, the shipped tissue presets, and Calibrate slopes for the current mesh with the
 // error the calibrated model leaves against the flat punch.

@@ -43,7 +43,7 @@ constexpr OtherModelStyle kOtherModels[] = {
 /// Legend order: slope-ring by ring count, then the paper's methods (proposed, hybrid, previous),
 /// then the other models (200 and up).
 int seriesRank(const SweepPoint& p) {
-    if (p.model == "palpate") return p.rings;
+    if (p.model == "coherent") return p.rings;
     if (p.model == "proposed") return 100;
     if (p.model == "hybrid") return 101;
     if (p.model == "previous") return 102;

@@ -15,7 +15,7 @@ namespace palpate::cli {
 namespace {
 
 constexpr SlopeRingMethod kMethods[] = {SlopeRingMethod::Previous, SlopeRingMethod::Hybrid, SlopeRingMethod::Proposed,
-                                        SlopeRingMethod::Palpate};
+                                        SlopeRingMethod::Coherent};
 
 /// The paper's Table 1 (microseconds per haptic loop), by vertex count.
 struct PaperRow {
@@ -41,7 +41,7 @@ nlohmann::json rowJson(const Table1Row& row) {
         j[name + "_wrong_pct"] = optionalNumber(measurement, &MethodMeasurement::wrongPct);
         j[name + "_max_off_mm"] = optionalNumber(measurement, &MethodMeasurement::maxOffMm);
     }
-    j["palpate_eager_us"] = optionalNumber(row.palpateEager, &MethodMeasurement::tickUs);
+    j["coherent_eager_us"] = optionalNumber(row.coherentEager, &MethodMeasurement::tickUs);
     return j;
 }
 
@@ -68,18 +68,18 @@ void printTable(const std::vector<Table1Row>& rows, std::ostream& out) {
     out << "Table 1 (measured): time of one haptic tick in microseconds (search + deformation + force)\n";
     out << std::left << std::setw(9) << "shape" << std::right << std::setw(9) << "vertices" << std::setw(10)
         << "triangles" << std::setw(11) << "previous" << std::setw(10) << "hybrid" << std::setw(10) << "proposed"
-        << std::setw(10) << "palpate" << std::setw(12) << "prev/ours" << std::setw(12) << "hyb/ours" << std::setw(12)
+        << std::setw(10) << "coherent" << std::setw(12) << "prev/ours" << std::setw(12) << "hyb/ours" << std::setw(12)
         << "prop/ours" << std::setw(10) << "eager" << "   wrong % (prev/hyb/prop/ours)\n";
     for (const auto& r : rows) {
         out << std::left << std::setw(9) << shapeName(r.shape) << std::right << std::setw(9) << r.vertices
             << std::setw(10) << r.triangles;
         for (auto m : kMethods) out << std::setw(m == SlopeRingMethod::Previous ? 11 : 10) << cell(r.methods[std::size_t(m)], 3);
-        const double ours = us(r, SlopeRingMethod::Palpate);
+        const double ours = us(r, SlopeRingMethod::Coherent);
         out << std::setw(12) << ratio(us(r, SlopeRingMethod::Previous), ours) << std::setw(12)
             << ratio(us(r, SlopeRingMethod::Hybrid), ours) << std::setw(12)
             << ratio(us(r, SlopeRingMethod::Proposed), ours) << std::setw(10)
-            << (r.palpateEager ? cell(r.palpateEager, 3) : std::string("-")) << "   ";
-        for (auto m : kMethods) out << cell(r.methods[std::size_t(m)], 1, true) << (m == SlopeRingMethod::Palpate ? "" : "/");
+            << (r.coherentEager ? cell(r.coherentEager, 3) : std::string("-")) << "   ";
+        for (auto m : kMethods) out << cell(r.methods[std::size_t(m)], 1, true) << (m == SlopeRingMethod::Coherent ? "" : "/");
         out << "\n";
     }
     out << "\neager: ours with the active rings' positions written every tick instead of when read.\n";
@@ -95,7 +95,7 @@ void writeCsv(const std::vector<Table1Row>& rows, std::ostream& out) {
     for (auto m : kMethods) out << "," << methodName(m) << "_us";
     for (auto m : kMethods) out << "," << methodName(m) << "_wrong_pct";
     for (auto m : kMethods) out << "," << methodName(m) << "_max_off_mm";
-    out << ",palpate_eager_us\n";
+    out << ",coherent_eager_us\n";
     for (const auto& r : rows) {
         out << shapeName(r.shape) << "," << r.vertices << "," << r.triangles << "," << r.ticks;
         for (double MethodMeasurement::*field :
@@ -106,7 +106,7 @@ void writeCsv(const std::vector<Table1Row>& rows, std::ostream& out) {
                 if (x) out << std::setprecision(6) << (*x).*field;
             }
         out << ",";
-        if (r.palpateEager) out << std::setprecision(6) << r.palpateEager->tickUs;
+        if (r.coherentEager) out << std::setprecision(6) << r.coherentEager->tickUs;
         out << "\n";
     }
 }

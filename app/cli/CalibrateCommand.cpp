@@ -7,7 +7,7 @@
 #include "app/cli/ToolContactOptions.h"
 #include "engine/Octree.h"
 #include "engine/SceneTarget.h"
-#include "engine/SlopeRingDeformer.h"
+#include "engine/models/slopering/CoherentSlopeRing.h"
 #include "engine/TissuePreset.h"
 #include "engine/accuracy/ModelError.h"
 
@@ -68,7 +68,7 @@ int calibrateCommand(const std::vector<std::string>& words) {
         fem ? calibrateSlopesFromFem(mesh, touched, choice.contact, preset.params, 1.0, &femField)
             : calibrateSlopesFromPunch(mesh, touched, choice.contact, preset.params);
     const Octree octree(mesh, preset.octree);
-    SlopeRingDeformer model(mesh, octree, calibration.params, SlopeRingMethod::Palpate);
+    CoherentSlopeRing model(mesh, octree, calibration.params);
     const ModelError error = measureModelError(model, mesh, touched, choice.contact);
     const double femError =
         fem ? displacementErrorAgainstField(mesh, touched, normalDisplacementsMm(model, mesh, touched), femField,
@@ -113,7 +113,7 @@ int calibrateCommand(const std::vector<std::string>& words) {
     }
     if (const auto out = args.option("out")) {
         preset.params = p;
-        preset.method = SlopeRingMethod::Palpate;
+        preset.method = SlopeRingMethod::Coherent;
         if (const auto name = args.option("name")) preset.name = *name;
         if (const auto description = args.option("description")) preset.description = *description;
         TissueProperties tissue;

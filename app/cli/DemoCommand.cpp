@@ -30,9 +30,9 @@ int demoCommand(const std::vector<std::string>& words) {
         std::cerr << "demo: the default mesh " << kDefaultMesh << " was not found (set PALPATE_RESOURCES)\n";
         return 1;
     }
-    const auto method = parseMethod(args.option("method").value_or("palpate"));
+    const auto method = parseMethod(args.option("method").value_or("coherent"));
     if (!method) {
-        std::cerr << "demo: unknown --method (use previous, hybrid, proposed or palpate)\n";
+        std::cerr << "demo: unknown --method (use previous, hybrid, proposed or coherent)\n";
         return 2;
     }
     // --model NAME: any registry model (docs/models.md); --method stays for the slope-ring methods.

@@ -60,7 +60,7 @@ int loopCommand(const std::vector<std::string>& words) {
     }
     aimAtDefaultTarget(*device, *loaded.mesh);
 
-    HapticLoop loop(def, HapticScene::createSlopeRing(std::move(*loaded.mesh), SlopeRingParams{}), std::move(device));
+    HapticLoop loop(def, HapticScene::create(std::move(*loaded.mesh), ModelDef{}), std::move(device));
     std::atomic<bool> observing{true};
     std::uint64_t snapshotsSeen = 0, torn = 0, contactSnapshots = 0, lastPublish = 0;
     std::thread observer([&] {

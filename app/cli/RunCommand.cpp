@@ -77,7 +77,7 @@ int runCommand(const std::vector<std::string>& words) {
     if (auto name = args.option("method")) {
         const auto method = parseMethod(*name);
         if (!method) {
-            std::cerr << "run: unknown --method '" << *name << "' (use previous, hybrid, proposed or palpate)\n";
+            std::cerr << "run: unknown --method '" << *name << "' (use previous, hybrid, proposed or coherent)\n";
             return 2;
         }
         preset.method = *method;

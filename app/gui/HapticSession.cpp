@@ -142,11 +142,11 @@ std::string HapticSession::applyPreset(const TissuePreset& preset) {
     }
     const bool needsScene = preset.method != before.method || preset.octree.maxDepth != before.octree.maxDepth ||
                             preset.octree.leafCapacity != before.octree.leafCapacity ||
-                            (preset.method != SlopeRingMethod::Palpate && preset.params.ringCount != before.params.ringCount) ||
+                            (preset.method != SlopeRingMethod::Coherent && preset.params.ringCount != before.params.ringCount) ||
                             preset.modelKind != before.modelKind ||
                             // The registry models other than volumetric-rings take no parameters at a tick boundary.
                             (!presetUsesSlopeRingParams(preset) && tissuePresetToJson(preset) != tissuePresetToJson(before));
-    if (!needsScene) return mLoop->setParams(preset.params);
+    if (!needsScene) return mLoop->setModelParams(presetModelDef(preset));
     const SceneRecord base = latest();
     std::string error;
     auto scene = makeScene(*base.mesh, base.path, error);

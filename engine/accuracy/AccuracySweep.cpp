@@ -14,7 +14,7 @@
 namespace palpate {
 
 std::string sweepSeriesName(SlopeRingMethod method, int rings) {
-    if (method == SlopeRingMethod::Palpate)
+    if (method == SlopeRingMethod::Coherent)
         return rings < 1 ? std::string() : "slope-ring " + std::to_string(rings) + (rings == 1 ? " ring" : " rings");
     // The paper's three methods are measured with the paper's 2 rings only.
     return rings == 2 ? std::string(methodName(method)) + " (paper)" : std::string();
@@ -32,7 +32,7 @@ SweepResult runSweep(const SweepDef& def) {
         int rings;
     };
     std::vector<Config> configs;
-    for (int r = 1; r <= def.maxRings; ++r) configs.push_back({ModelKind::SlopeRing, SlopeRingMethod::Palpate, r});
+    for (int r = 1; r <= def.maxRings; ++r) configs.push_back({ModelKind::SlopeRing, SlopeRingMethod::Coherent, r});
     if (def.paperMethods)
         for (auto m : {SlopeRingMethod::Proposed, SlopeRingMethod::Hybrid, SlopeRingMethod::Previous})
             configs.push_back({ModelKind::SlopeRing, m, 2});
@@ -40,7 +40,7 @@ SweepResult runSweep(const SweepDef& def) {
         for (auto k : {ModelKind::MassSpringLocal, ModelKind::MassSpringSymplectic, ModelKind::MassSpringRk4,
                        ModelKind::MassSpringImplicit, ModelKind::RadiusOfInfluence, ModelKind::Ffd,
                        ModelKind::VolumetricRings})
-            configs.push_back({k, SlopeRingMethod::Palpate, 2});
+            configs.push_back({k, SlopeRingMethod::Coherent, 2});
     const double punchStiffnessNPerMm = 2.0 * def.contact.toolRadiusMm * planeStrainModulusNPerMm2(def.contact.material);
 
     SweepResult result;

@@ -5,7 +5,7 @@
 // error measures the model's structure (rings, resolution), not a badly chosen parameter.
 
 #include "engine/MeshGenerator.h"
-#include "engine/SlopeRingMethod.h"
+#include "engine/models/slopering/SlopeRingMethod.h"
 #include "engine/accuracy/Calibration.h"
 #include "engine/accuracy/ModelError.h"
 
@@ -41,7 +41,7 @@ struct SweepDef {
 
 struct SweepPoint {
     std::string series;   ///< chart series: "slope-ring 3 rings", "proposed (paper)", ...
-    std::string model;    ///< the registry name: palpate, proposed, hybrid, previous, mass-spring-rk4, ffd, ...
+    std::string model;    ///< the registry name: coherent, proposed, hybrid, previous, mass-spring-rk4, ffd, ...
     int rings = 0;
     GeneratedShape shape = GeneratedShape::Sphere;
     std::size_t vertices = 0;

@@ -5,7 +5,7 @@
 // the touched vertex; and k = 1 / |m1| makes the rendered spring force equal the punch force at the
 // same indentation. See docs/accuracy.md.
 
-#include "engine/SlopeRingParams.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/TissueMesh.h"
 #include "engine/accuracy/ClosedForms.h"
 

@@ -98,8 +98,9 @@ const std::vector<Column>& columns() {
          }},
         {"model",
          [](const std::string& t, SweepPoint& p) -> std::string {
-             if (!modelDefForName(t)) return "'" + t + "' is not a model (see palpate-cli bench models)";
-             p.model = t;
+             const auto def = modelDefForName(t);
+             if (!def) return "'" + t + "' is not a model (see palpate-cli bench models)";
+             p.model = modelName(*def);  // the current name: a sweep written before may say "palpate"
              return {};
          }},
         {"rings",

@@ -81,7 +81,7 @@ LodMeasurement measureLodCandidates(const MeshLevels& levels, const LodMeasureDe
                 const SlopeCalibration calibration = calibrateSlopesFromPunch(mesh, touched, def.contact, base);
                 ModelDef modelDef;
                 modelDef.kind = ModelKind::SlopeRing;
-                modelDef.slopeRingMethod = SlopeRingMethod::Palpate;
+                modelDef.slopeRingMethod = SlopeRingMethod::Coherent;
                 modelDef.slopeRing = calibration.params;
                 const auto model = makeModel(modelDef, mesh, octree);
                 c.model = modelName(modelDef);

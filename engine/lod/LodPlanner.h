@@ -19,7 +19,7 @@ struct LodCandidate {
     std::size_t vertices = 0;
     std::size_t triangles = 0;
     int rings = 0;
-    std::string model = "palpate";   ///< registry name (engine/models/ModelRegistry.h)
+    std::string model = "coherent";  ///< registry name (engine/models/ModelRegistry.h)
     double errorFraction = 0.0;      ///< displacement error on the display (source) surface
     double levelErrorFraction = 0.0; ///< the same metric on the level's own vertices (the sweep's view)
     double forceErrorFraction = 0.0; ///< |F - F_punch| / F_punch at the model's indentation

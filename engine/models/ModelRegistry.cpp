@@ -1,11 +1,11 @@
 #include "engine/models/ModelRegistry.h"
 
-#include "engine/SlopeRingDeformer.h"
 #include "engine/models/FfdModel.h"
 #include "engine/models/MassSpringModel.h"
 #include "engine/models/RadiusOfInfluenceModel.h"
 #include "engine/models/VolumetricFill.h"
 #include "engine/models/VolumetricRingsModel.h"
+#include "engine/models/slopering/SlopeRingModel.h"
 
 #include <stdexcept>
 
@@ -26,7 +26,7 @@ constexpr Named kModels[] = {
     {"ffd", ModelKind::Ffd},
     {"volumetric-rings", ModelKind::VolumetricRings},
 };
-constexpr SlopeRingMethod kSlopeRingMethods[] = {SlopeRingMethod::Palpate, SlopeRingMethod::Proposed,
+constexpr SlopeRingMethod kSlopeRingMethods[] = {SlopeRingMethod::Coherent, SlopeRingMethod::Proposed,
                                                  SlopeRingMethod::Hybrid, SlopeRingMethod::Previous};
 
 void throwIfInvalid(const ModelDef& def) {
@@ -38,6 +38,14 @@ void throwIfInvalid(const ModelDef& def) {
 }
 
 }  // namespace
+
+ModelDef slopeRingModelDef(const SlopeRingParams& params, SlopeRingMethod method) {
+    ModelDef def;
+    def.kind = ModelKind::SlopeRing;
+    def.slopeRingMethod = method;
+    def.slopeRing = params;
+    return def;
+}
 
 std::vector<std::string> modelNames() {
     std::vector<std::string> names;
@@ -82,6 +90,18 @@ Problems validateModelDef(const ModelDef& def) {
     return {{"kind", -1, -1, "kind: unknown model kind " + std::to_string(int(def.kind))}};
 }
 
+const SlopeRingParams* slopeRingParamsOf(const ModelDef& def) {
+    switch (def.kind) {
+        case ModelKind::SlopeRing: return &def.slopeRing;
+        case ModelKind::VolumetricRings: return &def.volumetricRings.slopeRing;
+        default: return nullptr;
+    }
+}
+
+SlopeRingParams* slopeRingParamsOf(ModelDef& def) {
+    return const_cast<SlopeRingParams*>(slopeRingParamsOf(static_cast<const ModelDef&>(def)));
+}
+
 std::unique_ptr<DeformationModel> makeModel(const ModelDef& def, const TissueMesh& mesh, const Octree& octree) {
     if (def.kind == ModelKind::VolumetricRings) {
         throwIfInvalid(def);
@@ -95,7 +115,7 @@ std::unique_ptr<DeformationModel> makeModel(const ModelDef& def, const TissueMes
                                             const TetMesh& tets) {
     throwIfInvalid(def);
     switch (def.kind) {
-        case ModelKind::SlopeRing: return std::make_unique<SlopeRingDeformer>(mesh, octree, def.slopeRing, def.slopeRingMethod);
+        case ModelKind::SlopeRing: return makeSlopeRing(mesh, octree, def.slopeRing, def.slopeRingMethod);
         case ModelKind::MassSpringSymplectic:
             return std::make_unique<MassSpringModel>(mesh, octree, def.massSpring, MassSpringIntegrator::SymplecticEuler,
                                                      MassSpringScope::Whole);

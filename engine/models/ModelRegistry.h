@@ -3,12 +3,13 @@
 // scenes, presets, the GUI's selector, the sweep and the stability maps can offer them all without
 // knowing each class. Names: mass-spring-symplectic, mass-spring-rk4, mass-spring-implicit,
 // mass-spring-local, radius-of-influence, ffd, volumetric-rings, and the slope-ring methods by
-// their SlopeRingMethod names (palpate, proposed, hybrid, previous). See docs/models.md.
+// their SlopeRingMethod names (coherent, proposed, hybrid, previous; "palpate" is read as
+// coherent, as files written before named it). See docs/models.md.
 
 #include "engine/DeformationModel.h"
 #include "engine/Octree.h"
-#include "engine/SlopeRingMethod.h"
-#include "engine/SlopeRingParams.h"
+#include "engine/models/slopering/SlopeRingMethod.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/TissueMesh.h"
 #include "engine/accuracy/TetMesh.h"
 #include "engine/models/FfdParams.h"
@@ -25,7 +26,7 @@
 namespace palpate {
 
 enum class ModelKind {
-    SlopeRing,             ///< SlopeRingDeformer, the method in ModelDef::slopeRingMethod
+    SlopeRing,             ///< the method in ModelDef::slopeRingMethod (engine/models/slopering)
     MassSpringSymplectic,  ///< whole model, symplectic Euler
     MassSpringRk4,         ///< whole model, RK4
     MassSpringImplicit,    ///< whole model, backward Euler (conjugate gradients)
@@ -35,16 +36,20 @@ enum class ModelKind {
     VolumetricRings,
 };
 
-/// Which model, and every model's parameters (only the kind's are used).
+/// Which model, and every model's parameters (only the kind's are used). Trivially copyable: the
+/// haptic loop queues it to the haptic thread (HapticLoop::setModelParams).
 struct ModelDef {
     ModelKind kind = ModelKind::SlopeRing;
-    SlopeRingMethod slopeRingMethod = SlopeRingMethod::Palpate;
+    SlopeRingMethod slopeRingMethod = SlopeRingMethod::Coherent;
     SlopeRingParams slopeRing;
     MassSpringParams massSpring;
     RadiusOfInfluenceParams radiusOfInfluence;
     FfdParams ffd;
     VolumetricRingsParams volumetricRings;
 };
+
+/// A slope-ring method's definition with these parameters.
+ModelDef slopeRingModelDef(const SlopeRingParams& params, SlopeRingMethod method = SlopeRingMethod::Coherent);
 
 /// The stable names, in the order a selector lists them.
 std::vector<std::string> modelNames();
@@ -54,6 +59,10 @@ std::optional<ModelDef> modelDefForName(std::string_view name);
 std::string modelName(const ModelDef& def);
 /// Every problem of the kind's parameters, each naming the field; empty when valid.
 Problems validateModelDef(const ModelDef& def);
+/// The slope-ring parameters the kind uses (the slope-ring methods' and volumetric rings'), or
+/// nullptr for a kind made of others: what a recording stores of a parameter change.
+const SlopeRingParams* slopeRingParamsOf(const ModelDef& def);
+SlopeRingParams* slopeRingParamsOf(ModelDef& def);
 
 /// Builds the model. `mesh` and `octree` must outlive it. volumetric-rings fills the surface with
 /// tetrahedra first (not real-time). Throws std::invalid_argument naming the problem (invalid

@@ -10,7 +10,7 @@ namespace palpate {
 namespace {
 
 // Relative margin that keeps the pruning valid for float-rounded distances (they are within a
-// few ulps, ~1e-7, of the true ones), as in SlopeRingDeformer.
+// few ulps, ~1e-7, of the true ones), as in CandidateCache (engine/models/slopering).
 constexpr float kRoundingMargin = 1e-5f;
 
 inline float distance2(const glm::vec3& a, const glm::vec3& b) {

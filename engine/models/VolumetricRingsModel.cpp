@@ -1,5 +1,6 @@
 #include "engine/models/VolumetricRingsModel.h"
 
+#include "engine/models/ModelRegistry.h"
 #include "engine/models/OctreeQueries.h"
 
 #include <glm/geometric.hpp>
@@ -95,8 +96,9 @@ void VolumetricRingsModel::applyParams() {
     mTwoZetaOmega = float(2.0 * p.dampingRatio * std::sqrt(omega2));
 }
 
-bool VolumetricRingsModel::applySlopeRingParams(const SlopeRingParams& params) {
-    mParams.slopeRing = params;
+bool VolumetricRingsModel::applyModelParams(const ModelDef& def) {
+    if (def.kind != ModelKind::VolumetricRings) return false;
+    mParams = def.volumetricRings;
     applyParams();
     // New slopes or rings: the active set is rebuilt on the next tick; its nodes relax from where they are.
     if (mActiveCentre != kNoVertex) changeActiveSet(mActiveCentre, false);

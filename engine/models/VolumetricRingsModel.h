@@ -31,7 +31,8 @@ public:
     std::size_t copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::uint8_t* rings,
                               std::size_t capacity) const override;
     /// Real-time: the rings are found into buffers sized for the whole tet mesh, so any ring count fits.
-    bool applySlopeRingParams(const SlopeRingParams& params) override;
+    /// Real-time: takes a volumetric-rings definition (any ring count: the active set is sized for all).
+    bool applyModelParams(const ModelDef& def) override;
 
     const VolumetricRingsParams& params() const { return mParams; }
     /// Every node (surface first, then interior), mm.
@@ -66,7 +67,7 @@ private:
     std::vector<glm::vec3> mNodePositions;
     std::vector<glm::vec3> mNodeVelocities;
 
-    // Hot constants (as SlopeRingDeformer's).
+    // Hot constants (as SlopeRingModel's).
     float mSignedSlope[kMaxRings + 1] = {};
     int mRingCount = 2;
     float mAlpha = 1.0f, mContactStiffness = 1.0f, mSpringStiffness = 1.0f;

@@ -5,7 +5,7 @@
 // logging or exception.
 
 #include "device/HapticDevice.h"
-#include "engine/SlopeRingParams.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/TissueMesh.h"
 
 #include <glm/vec3.hpp>

@@ -110,9 +110,9 @@ RecordedScene decodeScene(ByteReader& r, const std::string& field) {
     s.vertexCount = r.u32(field + ".vertexCount");
     s.triangleCount = r.u32(field + ".triangleCount");
     const std::uint8_t method = r.u8(field + ".method");
-    if (r.ok() && method > std::uint8_t(SlopeRingMethod::Palpate))
+    if (r.ok() && method > std::uint8_t(SlopeRingMethod::Coherent))
         r.fail(field + ".method", "unknown model " + std::to_string(method));
-    s.method = r.ok() ? SlopeRingMethod(method) : SlopeRingMethod::Palpate;
+    s.method = r.ok() ? SlopeRingMethod(method) : SlopeRingMethod::Coherent;
     s.params = decodeParams(r, field + ".params");
     s.octree.maxDepth = r.i32(field + ".octree.maxDepth");
     s.octree.leafCapacity = r.i32(field + ".octree.leafCapacity");

@@ -12,8 +12,8 @@
 #include "device/HapticDevice.h"
 #include "device/SafetyFilter.h"
 #include "engine/Octree.h"
-#include "engine/SlopeRingMethod.h"
-#include "engine/SlopeRingParams.h"
+#include "engine/models/slopering/SlopeRingMethod.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/record/ByteIo.h"
 
 #include <cstdint>
@@ -70,7 +70,7 @@ struct RecordedScene {
     std::uint64_t meshHash = 0;  ///< meshHash() of the loaded (renumbered) mesh
     std::uint32_t vertexCount = 0;
     std::uint32_t triangleCount = 0;
-    SlopeRingMethod method = SlopeRingMethod::Palpate;
+    SlopeRingMethod method = SlopeRingMethod::Coherent;
     SlopeRingParams params;      ///< binary, exact: what replay uses
     OctreeDef octree;
     std::string presetJson;      ///< the whole TissuePreset as JSON, for people and tools

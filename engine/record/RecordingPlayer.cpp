@@ -142,15 +142,17 @@ std::unique_ptr<HapticScene> RecordingPlayer::buildScene(const RecordedScene& sc
         // A registry model other than the slope-ring methods is named by the stored preset JSON
         // only; its binary slope-ring parameters, method and octree stay the exact ones.
         const PresetLoadResult stored = parseTissuePreset(scene.presetJson, "presetJson");
+        ModelDef model;
         if (stored.preset && stored.preset->modelKind != ModelKind::SlopeRing) {
             TissuePreset preset = *stored.preset;
             preset.params = scene.params;
             preset.method = scene.method;
-            preset.octree = scene.octree;
-            built = HapticScene::create(found->second, preset);
+            model = presetModelDef(preset);
         } else {
-            built = HapticScene::createSlopeRing(found->second, scene.params, scene.method, scene.octree);
+            model = slopeRingModelDef(scene.params, scene.method);
         }
+        built = HapticScene::create(found->second, model, scene.octree);
+        mModel = model;
     } catch (const std::exception& e) {
         error = std::string("the recorded scene cannot be rebuilt: ") + e.what();
         return nullptr;
@@ -238,7 +240,12 @@ bool RecordingPlayer::applyEvents(std::uint64_t tick) {
         std::string error;
         switch (e.kind) {
             case EventKind::ParamsApplied:
-                error = mLoop->setParams(e.params);
+                if (SlopeRingParams* params = slopeRingParamsOf(mModel)) {
+                    *params = e.params;
+                    error = mLoop->setModelParams(mModel);
+                } else {
+                    error = "parameters applied to a model that takes no slope-ring parameters";
+                }
                 break;
             case EventKind::SceneChanged: {
                 if (!e.scene) {

@@ -109,6 +109,9 @@ private:
     ReplayFeed mFeed;
     std::unique_ptr<HapticLoop> mLoop;
     std::map<std::string, TissueMesh> mMeshes;  // loaded meshes by path, reused on restart
+    // The model of the scene last built for the loop: a ParamsApplied event replaces its
+    // slope-ring parameters and sends it (HapticLoop::setModelParams).
+    ModelDef mModel;
 
     std::uint64_t mFirstTick = 0, mLastReplayableTick = 0;
     std::uint64_t mCurrentTick = 0;

@@ -9,7 +9,7 @@
 //   RecordingStats s = session->stats();        // ticks, bytes, drops, elapsed: for a status line
 //   session->stop();                            // controller thread; "" or the write error
 //
-// Parameter sets go through loop.setParams as usual: the loop reports each one it applied. Scenes
+// Parameter sets go through loop.setModelParams as usual: the loop reports each one it applied. Scenes
 // and devices switched while recording go through swapScene/swapDevice here, so that the file
 // describes them (a replay rebuilds the scene from that description).
 

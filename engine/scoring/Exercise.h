@@ -41,7 +41,7 @@ struct PressTargetsDef {
     std::vector<PressTarget> targets;  ///< done in this order
 };
 
-/// Find the lump: a stiffer region of the tissue (the physics changes: SlopeRingDeformer's
+/// Find the lump: a stiffer region of the tissue (the physics changes: CoherentSlopeRing's
 /// compliance factors).
 struct InclusionDef {
     SurfacePoint centre;            ///< snapped to a vertex

@@ -1,7 +1,7 @@
 #include "engine/scoring/ExerciseGeometry.h"
 
 #include "engine/HapticScene.h"
-#include "engine/SlopeRingDeformer.h"
+#include "engine/models/slopering/CoherentSlopeRing.h"
 
 #include <glm/geometric.hpp>
 
@@ -135,8 +135,9 @@ std::string applyExercisePhysics(const ExerciseGeometry& geometry, HapticScene& 
     if (scene.mesh().vertexCount() != geometry.vertexCount())
         return "the exercise's inclusion is for a mesh of " + std::to_string(geometry.vertexCount()) +
                " vertices, the scene has " + std::to_string(scene.mesh().vertexCount());
-    auto* deformer = dynamic_cast<SlopeRingDeformer*>(&scene.model());
-    if (!deformer) return "the find-the-lump inclusion needs the slope-ring model (the scene runs " + scene.model().name() + ")";
+    auto* deformer = dynamic_cast<CoherentSlopeRing*>(&scene.model());
+    if (!deformer)  // the paper's methods stay as published
+        return "the find-the-lump inclusion needs the coherent slope-ring method (the scene runs " + scene.model().name() + ")";
     try {
         deformer->setCompliance(geometry.compliance());
     } catch (const std::exception& e) {

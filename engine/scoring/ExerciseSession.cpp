@@ -37,9 +37,9 @@ std::optional<ExerciseAssets> loadExerciseAssets(const Exercise& exercise, const
         return std::nullopt;
     }
     if (exercise.type == ExerciseType::FindLump &&
-        (a.preset.modelKind != ModelKind::SlopeRing || a.preset.method != SlopeRingMethod::Palpate)) {
+        (a.preset.modelKind != ModelKind::SlopeRing || a.preset.method != SlopeRingMethod::Coherent)) {
         errors.push_back(source + ": tissue_preset: " + a.presetPath + " uses the " + presetModelName(a.preset) +
-                         " model; the find-the-lump inclusion needs the palpate model");
+                         " model; the find-the-lump inclusion needs the coherent model");
         return std::nullopt;
     }
     return a;

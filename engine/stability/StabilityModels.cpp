@@ -2,12 +2,12 @@
 
 #include "engine/MeshGenerator.h"
 #include "engine/Octree.h"
-#include "engine/SlopeRingDeformer.h"
 #include "engine/Rings.h"
 #include "engine/models/MassSpringModel.h"
 #include "engine/models/ModelRegistry.h"
 #include "engine/models/VolumetricFill.h"
 #include "engine/models/VolumetricRingsModel.h"
+#include "engine/models/slopering/SlopeRingModel.h"
 #include "engine/stability/StabilityBounds.h"
 
 #include <glm/geometric.hpp>
@@ -81,18 +81,21 @@ CellOutcome settles(const PressScene& scene, Model& model, double slope1MmPerN, 
 }
 
 CellOutcome runSlopeRingCell(const PressScene& scene, double slope1MmPerN, double contactNPerMm, double alpha,
-                             int ticks, SlopeRingMethod method = SlopeRingMethod::Palpate) {
+                             int ticks, SlopeRingMethod method = SlopeRingMethod::Coherent) {
     SlopeRingParams valid;  // defaults: the constructor validates, the real-time apply does not
-    SlopeRingDeformer model(scene.mesh, scene.octree, valid, method);
-    model.applySlopeRingParams(slopeRingCellParams(slope1MmPerN, contactNPerMm, alpha));
-    return settles(scene, model, slope1MmPerN, contactNPerMm, ticks);
+    const auto model = makeSlopeRing(scene.mesh, scene.octree, valid, method);
+    model->applyModelParams(slopeRingModelDef(slopeRingCellParams(slope1MmPerN, contactNPerMm, alpha), method));
+    return settles(scene, *model, slope1MmPerN, contactNPerMm, ticks);
 }
 
 /// The same update on the tet graph's rings (VolumetricRingsModel).
 CellOutcome runVolumetricRingsCell(const PressScene& scene, double slope1MmPerN, double contactNPerMm, double alpha,
                                    int ticks) {
     VolumetricRingsModel model(scene.mesh, scene.octree, scene.tets, VolumetricRingsParams{});
-    model.applySlopeRingParams(slopeRingCellParams(slope1MmPerN, contactNPerMm, alpha));
+    ModelDef def;
+    def.kind = ModelKind::VolumetricRings;
+    def.volumetricRings.slopeRing = slopeRingCellParams(slope1MmPerN, contactNPerMm, alpha);
+    model.applyModelParams(def);
     return settles(scene, model, slope1MmPerN, contactNPerMm, ticks);
 }
 
@@ -297,20 +300,23 @@ StabilityMapSpec deviceSpec(const std::string& name, ModelKind kind, std::shared
 
 std::vector<std::string> stabilityModelNames() {
     return {"slope-ring-gain",   "slope-ring-relaxation", "mass-spring-symplectic", "mass-spring-symplectic-vertex",
-            "mass-spring-rk4",   "mass-spring-implicit",  "mass-spring-local",      "palpate",
+            "mass-spring-rk4",   "mass-spring-implicit",  "mass-spring-local",      "coherent",
             "proposed",          "hybrid",                "previous",               "volumetric-rings",
             "radius-of-influence", "ffd"};
 }
 
 std::vector<std::string> stabilityMapModels(std::string_view map) {
-    if (map == "slope-ring-gain" || map == "slope-ring-relaxation") return {"palpate"};
+    if (map == "slope-ring-gain" || map == "slope-ring-relaxation") return {"coherent"};
     if (map == "mass-spring-symplectic" || map == "mass-spring-symplectic-vertex") return {"mass-spring-symplectic"};
     const auto names = stabilityModelNames();
     if (std::find(names.begin(), names.end(), map) == names.end()) return {};
     return {std::string(map)};  // the other maps are named after the registry model they run
 }
 
-std::optional<StabilityMapSpec> stabilityMapSpec(std::string_view name, const StabilitySceneDef& def) {
+std::optional<StabilityMapSpec> stabilityMapSpec(std::string_view nameGiven, const StabilitySceneDef& def) {
+    // A slope-ring method by its current name (parseMethod also reads "palpate", the former name of coherent).
+    const auto named = parseMethod(nameGiven);
+    const std::string_view name = named ? methodName(*named) : nameGiven;
     const auto names = stabilityModelNames();
     if (std::find(names.begin(), names.end(), name) == names.end()) return std::nullopt;
     auto scene = makeScene(def);
@@ -337,7 +343,7 @@ std::optional<StabilityMapSpec> stabilityMapSpec(std::string_view name, const St
         constexpr double kAlpha = 0.5;
         StabilityMapSpec spec;
         spec.model = std::string(name);
-        spec.description = "palpate slope-ring tick, forceRelaxation alpha = 0.5 held, press " +
+        spec.description = "coherent slope-ring tick, forceRelaxation alpha = 0.5 held, press " +
                            std::to_string(def.pressDepthMm).substr(0, 4) + " mm, " + std::to_string(ticks) + " ticks";
         spec.criterion = "contact force settles: swing over the last tenth < 1 % of k_c d / (1 + g)";
         spec.derivedFormula = "|m1| = (2 / alpha - 1) / k_c  (alpha (1 + |m1| k_c) = 2)";
@@ -351,7 +357,7 @@ std::optional<StabilityMapSpec> stabilityMapSpec(std::string_view name, const St
         constexpr double kContact = 1.0;
         StabilityMapSpec spec;
         spec.model = std::string(name);
-        spec.description = "palpate slope-ring tick, k_c = 1 N/mm held, gain swept through |m1|, press " +
+        spec.description = "coherent slope-ring tick, k_c = 1 N/mm held, gain swept through |m1|, press " +
                            std::to_string(def.pressDepthMm).substr(0, 4) + " mm, " + std::to_string(ticks) + " ticks";
         spec.criterion = "contact force settles: swing over the last tenth < 1 % of k_c d / (1 + g)";
         spec.derivedFormula = "g = 2 / alpha - 1";

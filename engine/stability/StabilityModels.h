@@ -39,7 +39,7 @@ struct StabilityDeviceDef {
 std::vector<std::string> stabilityMapModels(std::string_view mapName);
 
 /// slope-ring-gain, slope-ring-relaxation, mass-spring-symplectic, mass-spring-symplectic-vertex,
-/// mass-spring-rk4, mass-spring-implicit, mass-spring-local, palpate, proposed, hybrid, previous
+/// mass-spring-rk4, mass-spring-implicit, mass-spring-local, coherent, proposed, hybrid, previous
 /// (the gain map on each slope-ring method), volumetric-rings, radius-of-influence, ffd.
 std::vector<std::string> stabilityModelNames();
 /// The map's definition for a name; nullopt for an unknown one. Builds the scene (not real-time).

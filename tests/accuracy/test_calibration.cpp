@@ -5,7 +5,7 @@
 #include "engine/Octree.h"
 #include "engine/Rings.h"
 #include "engine/SceneTarget.h"
-#include "engine/SlopeRingDeformer.h"
+#include "engine/models/slopering/CoherentSlopeRing.h"
 #include "engine/accuracy/AccuracySweep.h"
 #include "engine/accuracy/Calibration.h"
 #include "engine/accuracy/ModelError.h"
@@ -85,7 +85,7 @@ TEST(Calibration, PressedModelReproducesThePunchProfileAtTheRingRadii) {
     const ToolContact contact = liverLike();
     const SlopeCalibration c = calibrateSlopesFromPunch(mesh, t, contact, base);
     const Octree octree(mesh, OctreeDef{});
-    SlopeRingDeformer model(mesh, octree, c.params, SlopeRingMethod::Palpate);
+    CoherentSlopeRing model(mesh, octree, c.params);
     const ModelError e = measureModelError(model, mesh, t, contact);
     ASSERT_GT(e.indentationMm, 0.5);
 
@@ -117,7 +117,7 @@ TEST(Calibration, ErrorFallsAsRingsCoverTheLoadedRegion) {
         SlopeRingParams base;
         base.ringCount = rings;
         const SlopeCalibration c = calibrateSlopesFromPunch(mesh, t, contact, base);
-        SlopeRingDeformer model(mesh, octree, c.params, SlopeRingMethod::Palpate);
+        CoherentSlopeRing model(mesh, octree, c.params);
         const ModelError e = measureModelError(model, mesh, t, contact);
         EXPECT_LT(e.displacementError, previous) << rings << " rings";
         EXPECT_GT(e.verticesCompared, 20);
@@ -130,7 +130,7 @@ TEST(Calibration, UncalibratedPaperSlopesHaveALargeForceError) {
     const TissueMesh& mesh = sphere3970();
     const VertexId t = defaultTargetVertex(mesh);
     const Octree octree(mesh, OctreeDef{});
-    SlopeRingDeformer model(mesh, octree, SlopeRingParams{}, SlopeRingMethod::Palpate);  // 0.6/0.35/0.15, k = 1.5
+    CoherentSlopeRing model(mesh, octree, SlopeRingParams{});  // 0.6/0.35/0.15, k = 1.5
     const ModelError e = measureModelError(model, mesh, t, liverLike());
     EXPECT_GT(e.forceError, 1.0);  // k = 1.5 N/mm against the punch's 2 a E* ~ 0.04 N/mm
 }
@@ -185,7 +185,7 @@ TEST(Calibration, BadInputIsNamed) {
 TEST(ModelError, NoContactIsAnErrorNamingTheVertex) {
     const TissueMesh& mesh = sphere3970();
     const Octree octree(mesh, OctreeDef{});
-    SlopeRingDeformer model(mesh, octree, SlopeRingParams{}, SlopeRingMethod::Palpate);
+    CoherentSlopeRing model(mesh, octree, SlopeRingParams{});
     PressDef above;
     above.toolDepthMm = -2.0;  // 2 mm above the surface
     const VertexId t = defaultTargetVertex(mesh);
@@ -304,7 +304,7 @@ TEST(Sweep, OtherModelsGetAPointEachWithTheirForceCalibratedWherePossible) {
         if (p.model == "radius-of-influence" || p.model == "ffd") EXPECT_LT(p.error.forceError, 0.01) << p.model;
     }
     for (const char* name : {"mass-spring-local", "mass-spring-symplectic", "mass-spring-rk4", "mass-spring-implicit",
-                             "radius-of-influence", "ffd", "volumetric-rings", "palpate"})
+                             "radius-of-influence", "ffd", "volumetric-rings", "coherent"})
         EXPECT_EQ(names.count(name), 1u) << name;
 }
 
@@ -330,7 +330,7 @@ TEST(Calibration, FromTheFemFitsTheFemBetterThanThePunchFormulaDoes) {
 
     const Octree octree(mesh, OctreeDef{});
     auto errorAgainstFem = [&](const SlopeRingParams& params) {
-        SlopeRingDeformer model(mesh, octree, params, SlopeRingMethod::Palpate);
+        CoherentSlopeRing model(mesh, octree, params);
         measureModelError(model, mesh, t, contact);  // presses and settles
         return displacementErrorAgainstField(mesh, t, normalDisplacementsMm(model, mesh, t), femField, contact.toolRadiusMm);
     };

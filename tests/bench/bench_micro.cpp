@@ -4,7 +4,7 @@
 
 #include "engine/MeshGenerator.h"
 #include "engine/Octree.h"
-#include "engine/SlopeRingDeformer.h"
+#include "engine/models/slopering/SlopeRingModel.h"
 #include "engine/ToolPath.h"
 
 #include <benchmark/benchmark.h>
@@ -89,7 +89,8 @@ void BM_SearchExactCold(benchmark::State& state) {
 void BM_Step(benchmark::State& state) {
     const Scene& scene = sphereScene(std::size_t(state.range(0)));
     const auto method = SlopeRingMethod(state.range(1));
-    SlopeRingDeformer model(scene.mesh, *scene.octree, SlopeRingParams{}, method);
+    const auto modelOwner = makeSlopeRing(scene.mesh, *scene.octree, SlopeRingParams{}, method);
+    SlopeRingModel& model = *modelOwner;
     std::size_t i = 0;
     for (auto _ : state) {
         benchmark::DoNotOptimize(model.step(scene.path[i], 1e-3));
@@ -106,11 +107,11 @@ BENCHMARK(BM_SearchExactCold)->Arg(1442)->Arg(8664)->Arg(100000);
 BENCHMARK(BM_Step)
     ->ArgsProduct({{1442, 8664},
                    {int(SlopeRingMethod::Previous), int(SlopeRingMethod::Hybrid), int(SlopeRingMethod::Proposed),
-                    int(SlopeRingMethod::Palpate)}})
+                    int(SlopeRingMethod::Coherent)}})
     ->ArgNames({"vertices", "method"});
 // Ours on fine meshes, where the touched-vertex search's certificate is hardest.
 BENCHMARK(BM_Step)
-    ->ArgsProduct({{100000, 1000000}, {int(SlopeRingMethod::Palpate)}})
+    ->ArgsProduct({{100000, 1000000}, {int(SlopeRingMethod::Coherent)}})
     ->ArgNames({"vertices", "method"});
 
 }  // namespace

@@ -5,7 +5,7 @@
 #include "engine/HapticLoop.h"
 #include "engine/HapticRate.h"
 #include "engine/Octree.h"
-#include "engine/SlopeRingParams.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/TissuePreset.h"
 #include "engine/models/FfdParams.h"
 #include "engine/models/MassSpringParams.h"

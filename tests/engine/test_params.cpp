@@ -3,8 +3,8 @@
 
 #include "engine/MeshGenerator.h"
 #include "engine/Octree.h"
-#include "engine/SlopeRingDeformer.h"
-#include "engine/SlopeRingParams.h"
+#include "engine/models/slopering/SlopeRingModel.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 
 #include <gtest/gtest.h>
 
@@ -203,21 +203,21 @@ TEST(SlopeRingParams, DeformerConstructorAndSetParamsThrowOnInvalid) {
     SlopeRingParams bad;
     bad.slopeMagnitudeMmPerN[1] = bad.slopeMagnitudeMmPerN[0];
     for (SlopeRingMethod m : {SlopeRingMethod::Previous, SlopeRingMethod::Hybrid, SlopeRingMethod::Proposed,
-                              SlopeRingMethod::Palpate}) {
-        EXPECT_THROW(SlopeRingDeformer(*loaded.mesh, tree, bad, m), std::invalid_argument);
+                              SlopeRingMethod::Coherent}) {
+        EXPECT_THROW(makeSlopeRing(*loaded.mesh, tree, bad, m), std::invalid_argument);
         try {
-            SlopeRingDeformer d(*loaded.mesh, tree, bad, m);
+            const auto d = makeSlopeRing(*loaded.mesh, tree, bad, m);
         } catch (const std::invalid_argument& e) {
             EXPECT_NE(std::string(e.what()).find("|m1|"), std::string::npos) << e.what();
         }
-        SlopeRingDeformer ok(*loaded.mesh, tree, SlopeRingParams{}, m);
-        EXPECT_THROW(ok.setParams(bad), std::invalid_argument);
+        const auto ok = makeSlopeRing(*loaded.mesh, tree, SlopeRingParams{}, m);
+        EXPECT_THROW(ok->setParams(bad), std::invalid_argument);
         SlopeRingParams nan;
         nan.contactStiffnessNPerMm = kNaN;
-        EXPECT_THROW(ok.setParams(nan), std::invalid_argument);
-        EXPECT_THROW(SlopeRingDeformer(*loaded.mesh, tree, nan, m), std::invalid_argument);
+        EXPECT_THROW(ok->setParams(nan), std::invalid_argument);
+        EXPECT_THROW(makeSlopeRing(*loaded.mesh, tree, nan, m), std::invalid_argument);
         // A rejected setParams keeps the old parameters.
-        EXPECT_EQ(ok.params().contactStiffnessNPerMm, SlopeRingParams{}.contactStiffnessNPerMm);
+        EXPECT_EQ(ok->params().contactStiffnessNPerMm, SlopeRingParams{}.contactStiffnessNPerMm);
     }
 }
 

@@ -139,6 +139,26 @@ TEST(TissuePresetModels, EachModelsParametersRoundTrip) {
     EXPECT_EQ(presetModelDef(*r.preset).volumetricRings.slopeRing.ringCount, 3);
 }
 
+TEST(TissuePresetModels, PresetsWrittenBeforeTheRenameReadAsTheCoherentMethod) {
+    // Before the rename the coherent method was called "palpate"; such presets (and the presets
+    // inside exercises and recordings) still load, and are written with the current name.
+    const std::string text = R"({
+  "format": "palpate-tissue-preset",
+  "version": 2,
+  "name": "old",
+  "model": "palpate"
+})";
+    const auto r = parseTissuePreset(text, "old.json");
+    ASSERT_TRUE(r.preset) << r.error();
+    EXPECT_EQ(r.preset->modelKind, ModelKind::SlopeRing);
+    EXPECT_EQ(r.preset->method, SlopeRingMethod::Coherent);
+    EXPECT_EQ(presetModelName(*r.preset), "coherent");
+    EXPECT_NE(tissuePresetToJson(*r.preset).find("\"model\": \"coherent\""), std::string::npos);
+    const auto again = parseTissuePreset(tissuePresetToJson(*r.preset), "new.json");
+    ASSERT_TRUE(again.preset) << again.error();
+    EXPECT_EQ(again.preset->method, SlopeRingMethod::Coherent);
+}
+
 TEST(TissuePresetModels, ADegreeWithoutCoefficientsIsThePowerProfile) {
     const std::string text = R"({
   "format": "palpate-tissue-preset",

@@ -4,7 +4,8 @@
 
 #include "engine/MeshGenerator.h"
 #include "engine/Octree.h"
-#include "engine/SlopeRingDeformer.h"
+#include "engine/models/slopering/CoherentSlopeRing.h"
+#include "engine/models/slopering/PaperSlopeRing.h"
 #include "engine/ToolPath.h"
 #include "tests/engine/TestMeshes.h"
 
@@ -27,7 +28,7 @@ using test::dist2;
 using test::isFinite;
 
 constexpr SlopeRingMethod kMethods[] = {SlopeRingMethod::Previous, SlopeRingMethod::Hybrid, SlopeRingMethod::Proposed,
-                                        SlopeRingMethod::Palpate};
+                                        SlopeRingMethod::Coherent};
 
 std::string nameOf(SlopeRingMethod m) { return std::string(methodName(m)); }
 
@@ -99,7 +100,8 @@ TEST_F(HandTick, TwoTicksMatchEquationsOneToThreeBitForBit) {
     std::vector<std::vector<glm::vec3>> positionsByMethod;
     for (SlopeRingMethod method : kMethods) {
         SCOPED_TRACE(nameOf(method));
-        SlopeRingDeformer model(*mesh, *tree, params, method);
+        const auto modelOwner = makeSlopeRing(*mesh, *tree, params, method);
+        SlopeRingModel& model = *modelOwner;
         EXPECT_EQ(model.findTouched(glm::vec3(0.0f, 0.0f, 8.0f)), apex);
 
         // Tick 1: e = dot((0,0,10) - (0,0,8), (0,0,1)) = 2; F = (1 - 1) 0 + 1 * 0.5 * 2 = 1 N.
@@ -156,7 +158,8 @@ TEST_F(HandTick, SecondTickWithoutReadingPositions) {
     // depend on whether its positions were read (tick 2: e = 9.5 - 8 = 1.5, F = 0.75).
     for (SlopeRingMethod method : kMethods) {
         SCOPED_TRACE(nameOf(method));
-        SlopeRingDeformer model(*mesh, *tree, params, method);
+        const auto modelOwner = makeSlopeRing(*mesh, *tree, params, method);
+        SlopeRingModel& model = *modelOwner;
         TickResult r = model.step(glm::vec3(0.0f, 0.0f, 8.0f), 1e-3);
         EXPECT_EQ(r.penetrationMm, 2.0f);
         EXPECT_EQ(model.contactForceN(), 1.0f);
@@ -171,7 +174,8 @@ TEST_F(HandTick, SecondTickWithoutReadingPositions) {
 TEST_F(HandTick, NoContactAboveTheSurface) {
     for (SlopeRingMethod method : kMethods) {
         SCOPED_TRACE(nameOf(method));
-        SlopeRingDeformer model(*mesh, *tree, params, method);
+        const auto modelOwner = makeSlopeRing(*mesh, *tree, params, method);
+        SlopeRingModel& model = *modelOwner;
         // Just above the apex, inside the root box (so that the paper's search finds the apex too).
         const TickResult r = model.step(glm::vec3(0.0f, 0.0f, 10.0005f), 1e-3);
         EXPECT_EQ(r.touched, apex);
@@ -214,7 +218,8 @@ TEST(SlopeRingRelaxation, ReturnsToRestAfterRelease) {
     const glm::vec3 rest = mesh.restPositionsMm()[v], normal = mesh.restNormals()[v];
     for (SlopeRingMethod method : kMethods) {
         SCOPED_TRACE(nameOf(method));
-        SlopeRingDeformer model(mesh, tree, SlopeRingParams{}, method);
+        const auto modelOwner = makeSlopeRing(mesh, tree, SlopeRingParams{}, method);
+        SlopeRingModel& model = *modelOwner;
         int contacts = 0;
         for (int t = 0; t < 100; ++t) contacts += model.step(rest - 2.0f * normal, 1e-3).contact ? 1 : 0;
         EXPECT_EQ(contacts, 100);
@@ -240,7 +245,8 @@ TEST(SlopeRingRelaxation, ResetRestoresRest) {
     const glm::vec3 rest = mesh.restPositionsMm()[v], normal = mesh.restNormals()[v];
     for (SlopeRingMethod method : kMethods) {
         SCOPED_TRACE(nameOf(method));
-        SlopeRingDeformer model(mesh, tree, SlopeRingParams{}, method);
+        const auto modelOwner = makeSlopeRing(mesh, tree, SlopeRingParams{}, method);
+        SlopeRingModel& model = *modelOwner;
         for (int t = 0; t < 10; ++t) model.step(rest - 2.0f * normal, 1e-3);
         ASSERT_GT(maxDistanceFromRest(model, mesh), 0.1f);
         model.reset();
@@ -262,7 +268,8 @@ TEST(SlopeRingRobustness, LongRandomToolPathsStayFinite) {
     constexpr float kInff = std::numeric_limits<float>::infinity();
     for (SlopeRingMethod method : kMethods) {
         SCOPED_TRACE(nameOf(method));
-        SlopeRingDeformer model(mesh, tree, SlopeRingParams{}, method);
+        const auto modelOwner = makeSlopeRing(mesh, tree, SlopeRingParams{}, method);
+        SlopeRingModel& model = *modelOwner;
         std::mt19937 rng(4242);
         std::uniform_real_distribution<float> u01(0.0f, 1.0f);
         std::normal_distribution<float> gauss(0.0f, 1.0f);
@@ -314,14 +321,14 @@ TEST(SlopeRingRobustness, LongRandomToolPathsStayFinite) {
             for (VertexId w = 0; w < p.size(); ++w)
                 ASSERT_TRUE(isFinite(p[w])) << "tick " << tick << " vertex " << w;
             // Exact methods report the true nearest vertex of the positions the tick started from.
-            if (isFinite(input) && (method == SlopeRingMethod::Previous || method == SlopeRingMethod::Palpate)) {
+            if (isFinite(input) && (method == SlopeRingMethod::Previous || method == SlopeRingMethod::Coherent)) {
                 ASSERT_NE(r.touched, kNoVertex);
                 const VertexId truth = nearestLinear(input, before);
                 ASSERT_EQ(dist2(before[r.touched], input), dist2(before[truth], input))
                     << "tick " << tick << ": touched " << r.touched << " but nearest is " << truth;
             }
             // Palpate's search depends on it: every vertex away from rest is listed as displaced.
-            if (method == SlopeRingMethod::Palpate) {
+            if (method == SlopeRingMethod::Coherent) {
                 std::vector<bool> listed(p.size(), false);
                 for (VertexId w : model.displacedVertices()) listed[w] = true;
                 for (VertexId w = 0; w < p.size(); ++w) {
@@ -345,8 +352,10 @@ TEST(SlopeRingMethods, ReadingPositionsDoesNotChangeTheSimulation) {
     const auto path = makePressAndStrokePath(mesh, def);
     for (SlopeRingMethod method : kMethods) {
         SCOPED_TRACE(nameOf(method));
-        SlopeRingDeformer read(mesh, tree, SlopeRingParams{}, method);
-        SlopeRingDeformer blind(mesh, tree, SlopeRingParams{}, method);
+        const auto readOwner = makeSlopeRing(mesh, tree, SlopeRingParams{}, method);
+        SlopeRingModel& read = *readOwner;
+        const auto blindOwner = makeSlopeRing(mesh, tree, SlopeRingParams{}, method);
+        SlopeRingModel& blind = *blindOwner;
         float sink = 0.0f;
         for (std::size_t t = 0; t < path.size(); ++t) {
             const TickResult a = read.step(path[t], 1e-3);
@@ -377,7 +386,7 @@ Equilibrium heldPress(const SlopeRingParams& params, float depthMm, int ticks) {
     const Octree tree(mesh, OctreeDef{});
     const VertexId v = largestX(mesh);
     const glm::vec3 rest = mesh.restPositionsMm()[v], normal = mesh.restNormals()[v];
-    SlopeRingDeformer model(mesh, tree, params, SlopeRingMethod::Palpate);
+    CoherentSlopeRing model(mesh, tree, params);
     const glm::vec3 tool = rest - depthMm * normal;
     Equilibrium out;
     TickResult r;
@@ -481,7 +490,7 @@ TEST(SlopeRingSearch, PalpateIsExactOnADenseMeshAndRarelyRetakesItsCache) {
     const std::vector<glm::vec3>* paths[] = {&smooth, &jerky, &hover};
     for (const std::vector<glm::vec3>* path : paths) {
         SCOPED_TRACE(path == &smooth ? "press and stroke" : path == &jerky ? "jerky" : "hover");
-        SlopeRingDeformer model(mesh, tree, SlopeRingParams{}, SlopeRingMethod::Palpate);
+        CoherentSlopeRing model(mesh, tree, SlopeRingParams{});
         int contacts = 0;
         for (std::size_t t = 0; t < path->size(); ++t) {
             const glm::vec3 tool = (*path)[t];
@@ -513,19 +522,19 @@ TEST(SlopeRingMethods, PreviousAndPalpateAgreeOverPressAndStroke) {
     def.strokeTicks = 1500;
     const auto path = makePressAndStrokePath(mesh, def);
     ASSERT_FALSE(path.empty());
-    SlopeRingDeformer previous(mesh, tree, SlopeRingParams{}, SlopeRingMethod::Previous);
-    SlopeRingDeformer palpate(mesh, tree, SlopeRingParams{}, SlopeRingMethod::Palpate);
+    PaperSlopeRing previous(mesh, tree, SlopeRingParams{}, SlopeRingMethod::Previous);
+    CoherentSlopeRing coherent(mesh, tree, SlopeRingParams{});
     int contacts = 0;
     for (std::size_t t = 0; t < path.size(); ++t) {
         const TickResult a = previous.step(path[t], 1e-3);
-        const TickResult b = palpate.step(path[t], 1e-3);
+        const TickResult b = coherent.step(path[t], 1e-3);
         ASSERT_EQ(a.touched, b.touched) << "tick " << t;
         ASSERT_EQ(a.contact, b.contact) << "tick " << t;
         contacts += a.contact ? 1 : 0;
-        ASSERT_NEAR(previous.contactForceN(), palpate.contactForceN(), 1e-4f * (1.0f + previous.contactForceN()))
+        ASSERT_NEAR(previous.contactForceN(), coherent.contactForceN(), 1e-4f * (1.0f + previous.contactForceN()))
             << "tick " << t;
         ASSERT_LT(glm::length(a.forceN - b.forceN), 1e-3f) << "tick " << t;
-        const auto pa = previous.positionsMm(), pb = palpate.positionsMm();
+        const auto pa = previous.positionsMm(), pb = coherent.positionsMm();
         float worst = 0.0f;
         for (VertexId v = 0; v < pa.size(); ++v) worst = std::max(worst, glm::length(pa[v] - pb[v]));
         ASSERT_LT(worst, 1e-3f) << "tick " << t;

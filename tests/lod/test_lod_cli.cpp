@@ -77,7 +77,7 @@ TEST_F(LodCli, PlanPrintsTheDocumentedJsonAndChoosesTheCheapest) {
     }
     EXPECT_EQ(chosen["vertices"].get<std::size_t>(), fewestVertices);
     EXPECT_EQ(chosen["rings"], 1);
-    EXPECT_EQ(chosen["model"], "palpate");
+    EXPECT_EQ(chosen["model"], "coherent");
     EXPECT_NE(j["reason"].get<std::string>().find("coarsest"), std::string::npos);
 
     // A target between the candidates' errors: the choice meets it, and no candidate that also

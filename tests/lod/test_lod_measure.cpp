@@ -43,7 +43,7 @@ TEST(LodMeasure, OneMeasuredCandidatePerLevelAndRingCount) {
         EXPECT_EQ(c.level, i / def.ringCounts.size());
         EXPECT_EQ(c.rings, def.ringCounts[i % def.ringCounts.size()]);
         EXPECT_EQ(c.vertices, levels.levels[c.level].mesh.vertexCount());
-        EXPECT_EQ(c.model, "palpate");
+        EXPECT_EQ(c.model, "coherent");
         EXPECT_TRUE(std::isfinite(c.errorFraction) && c.errorFraction > 0.0 && c.errorFraction < 1.0);
         EXPECT_TRUE(std::isfinite(c.levelErrorFraction) && c.levelErrorFraction > 0.0);
         EXPECT_TRUE(std::isfinite(c.tickUs) && c.tickUs > 0.0);

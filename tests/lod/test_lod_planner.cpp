@@ -91,7 +91,7 @@ TEST(LodPlanner, TheChoiceIsTheCheapestFeasibleOnRandomTablesWhateverTheirOrder)
 
 TEST(LodPlanner, TiesOnLevelAndRingsGoToTheFasterModel) {
     std::vector<LodCandidate> t{cand(1000, 2, 0.1, 3.0), cand(1000, 2, 0.05, 2.0), cand(2000, 1, 0.1, 1.0)};
-    t[0].model = "palpate";
+    t[0].model = "coherent";
     t[1].model = "mass-spring-local";
     const LodPlan plan = planLod(t, LodNeeds{0.2, 10.0});
     ASSERT_TRUE(plan.chosen);

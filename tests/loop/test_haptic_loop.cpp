@@ -43,12 +43,12 @@ struct Rig {
 };
 
 Rig makeRig(SimTrajectory trajectory = SimTrajectory::Stroke, HapticLoopDef def = {},
-            SlopeRingParams params = {}, SlopeRingMethod method = SlopeRingMethod::Palpate) {
+            SlopeRingParams params = {}, SlopeRingMethod method = SlopeRingMethod::Coherent) {
     TissueMesh mesh = makeSphere();
     auto device = aimedDevice(mesh, trajectory);
     Rig rig;
     rig.device = device.get();
-    rig.loop = std::make_unique<HapticLoop>(def, HapticScene::createSlopeRing(std::move(mesh), params, method),
+    rig.loop = std::make_unique<HapticLoop>(def, HapticScene::create(std::move(mesh), slopeRingModelDef(params, method)),
                                             std::move(device));
     return rig;
 }
@@ -77,12 +77,12 @@ TEST(HapticLoop, RejectsBadDefinitions) {
 }
 
 TEST(HapticLoop, SteppedTickDoesNotAllocate) {
-    for (auto method : {SlopeRingMethod::Palpate, SlopeRingMethod::Proposed, SlopeRingMethod::Previous}) {
+    for (auto method : {SlopeRingMethod::Coherent, SlopeRingMethod::Proposed, SlopeRingMethod::Previous}) {
         Rig rig = makeRig(SimTrajectory::Stroke, quietDef(), {}, method);
         for (int i = 0; i < 50; ++i) rig.loop->stepOnce();
         SlopeRingParams softer;
         softer.slopeMagnitudeMmPerN = {0.5, 0.3, 0.1, 0.05, 0.03, 0.02, 0.01, 0.005, 0.001};
-        ASSERT_EQ(rig.loop->setParams(softer), "");  // queued (may allocate: controller side)
+        ASSERT_EQ(rig.loop->setModelParams(slopeRingModelDef(softer, method)), "");  // queued (may allocate: controller side)
         const auto before = test::threadAllocationCount();
         for (int i = 0; i < 6000; ++i) rig.loop->stepOnce();  // press, stroke, command applied
         const auto after = test::threadAllocationCount();
@@ -180,20 +180,20 @@ TEST(HapticLoop, CommandsValidateAndApplyAtATickBoundary) {
     Rig rig = makeRig(SimTrajectory::PressHold, quietDef());
     SlopeRingParams bad;
     bad.slopeMagnitudeMmPerN[1] = 0.9;  // m2 > m1
-    const std::string error = rig.loop->setParams(bad);
+    const std::string error = rig.loop->setModelParams(slopeRingModelDef(bad));
     EXPECT_NE(error.find("m1"), std::string::npos) << error;
 
     for (int i = 0; i < 2500; ++i) rig.loop->stepOnce();
     const float before = glm::length(rig.loop->newestSnapshot().commandedForceN);
     SlopeRingParams stiffer;
     stiffer.springStiffnessNPerMm = 3.0;
-    ASSERT_EQ(rig.loop->setParams(stiffer), "");
+    ASSERT_EQ(rig.loop->setModelParams(slopeRingModelDef(stiffer)), "");
     EXPECT_FLOAT_EQ(glm::length(rig.loop->newestSnapshot().commandedForceN), before);  // not yet
     rig.loop->stepOnce();
     EXPECT_NEAR(glm::length(rig.loop->newestSnapshot().commandedForceN), 2.0f * before, 0.05f * before);
 
     const auto firstScene = rig.loop->newestSnapshot().sceneId;
-    ASSERT_EQ(rig.loop->swapScene(HapticScene::createSlopeRing(makeSphere(642), {})), "");
+    ASSERT_EQ(rig.loop->swapScene(HapticScene::create(makeSphere(642), slopeRingModelDef(SlopeRingParams{}))), "");
     rig.loop->stepOnce();
     EXPECT_NE(rig.loop->newestSnapshot().sceneId, firstScene);
     rig.loop->collectRetired();
@@ -252,7 +252,7 @@ TEST(HapticLoop, OverrunZeroesTheForce) {
     StallingDevice* device = stalling.get();
     device->stallAtRead = 2000;  // during the hold, in contact (tick counts, not seconds: a slow
                                  // sanitizer build or a stalled machine only delays it)
-    HapticLoop loop(quietDef(), HapticScene::createSlopeRing(std::move(mesh), {}), std::move(stalling));
+    HapticLoop loop(quietDef(), HapticScene::create(std::move(mesh), slopeRingModelDef(SlopeRingParams{})), std::move(stalling));
     ASSERT_TRUE(loop.start());
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
     while (!device->afterStallWritten && std::chrono::steady_clock::now() < deadline)
@@ -274,7 +274,7 @@ TEST(HapticLoopThreads, ObserverNeverSeesATornSnapshotUnderParameterChurn) {
     reference.setTimeS(1.0 / 4000.0);  // the loop's first tick starts the script (sets the epoch)
     HapticLoopDef def = quietDef();
     def.rateHz = 4000.0;
-    HapticLoop loop(def, HapticScene::createSlopeRing(std::move(mesh), {}), std::move(device));
+    HapticLoop loop(def, HapticScene::create(std::move(mesh), slopeRingModelDef(SlopeRingParams{})), std::move(device));
     std::atomic<bool> done{false};
     std::uint64_t seen = 0, torn = 0, lastPublish = 0;
     std::thread observer([&] {
@@ -298,7 +298,7 @@ TEST(HapticLoopThreads, ObserverNeverSeesATornSnapshotUnderParameterChurn) {
             SlopeRingParams p;
             p.contactStiffnessNPerMm = 0.5 + 0.1 * double(rng() % 10);
             p.springStiffnessNPerMm = 1.0 + 0.1 * double(rng() % 10);
-            loop.setParams(p);  // may be full under churn; that is reported, not a failure
+            loop.setModelParams(slopeRingModelDef(p));  // may be full under churn; that is reported, not a failure
             std::this_thread::sleep_for(std::chrono::microseconds(300));
         }
         loop.stop();
@@ -335,7 +335,7 @@ TEST(HapticLoop, QueuedScenesAndDevicesAreFreedWithTheLoop) {
     {
         Rig rig = makeRig(SimTrajectory::PressHold, quietDef());
         ASSERT_EQ(rig.loop->swapDevice(std::make_unique<CountedDevice>(&destroyed)), "");
-        ASSERT_EQ(rig.loop->swapScene(HapticScene::createSlopeRing(makeSphere(642), {})), "");
+        ASSERT_EQ(rig.loop->swapScene(HapticScene::create(makeSphere(642), slopeRingModelDef(SlopeRingParams{}))), "");
     }
     EXPECT_TRUE(destroyed);
 }

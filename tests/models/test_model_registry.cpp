@@ -19,7 +19,7 @@ using namespace palpate;
 TEST(ModelRegistry, NamesAreStableAndRoundTrip) {
     const std::vector<std::string> expected{"mass-spring-symplectic", "mass-spring-rk4", "mass-spring-implicit",
                                             "mass-spring-local",      "radius-of-influence", "ffd",
-                                            "volumetric-rings",       "palpate",             "proposed",
+                                            "volumetric-rings",       "coherent",            "proposed",
                                             "hybrid",                 "previous"};
     EXPECT_EQ(modelNames(), expected);
     for (const std::string& name : modelNames()) {
@@ -29,6 +29,44 @@ TEST(ModelRegistry, NamesAreStableAndRoundTrip) {
         EXPECT_TRUE(messagesOf(validateModelDef(*def)).empty()) << name;
     }
     EXPECT_FALSE(modelDefForName("finite-elements"));
+}
+
+TEST(ModelRegistry, FormerNameOfTheCoherentMethodStillReads) {
+    // Presets, exercises, sweeps and recordings written before the rename say "palpate".
+    const auto def = modelDefForName("palpate");
+    ASSERT_TRUE(def);
+    EXPECT_EQ(def->kind, ModelKind::SlopeRing);
+    EXPECT_EQ(def->slopeRingMethod, SlopeRingMethod::Coherent);
+    EXPECT_EQ(modelName(*def), "coherent");
+    EXPECT_EQ(parseMethod("palpate"), SlopeRingMethod::Coherent);
+    EXPECT_EQ(parseMethod("coherent"), SlopeRingMethod::Coherent);
+}
+
+TEST(ModelRegistry, ModelsTakeNewParametersOnlyOfTheirOwnKind) {
+    const TissueMesh mesh = test::sphereMesh(642);
+    const Octree octree(mesh, {});
+    SlopeRingParams fourRings;
+    fourRings.ringCount = 4;
+    for (const std::string& name : modelNames()) {
+        if (name == "volumetric-rings") continue;  // fills the surface with tetrahedra: slow here
+        const ModelDef def = *modelDefForName(name);
+        auto model = makeModel(def, mesh, octree);
+        const bool realTime = def.kind == ModelKind::SlopeRing;
+        EXPECT_EQ(model->applyModelParams(def), realTime) << name;
+        ModelDef other = def;
+        other.kind = def.kind == ModelKind::Ffd ? ModelKind::RadiusOfInfluence : ModelKind::Ffd;
+        EXPECT_FALSE(model->applyModelParams(other)) << name;
+        if (def.kind == ModelKind::SlopeRing) {
+            // Another method needs another model; a new ring count only the coherent method takes.
+            ModelDef method = def;
+            method.slopeRingMethod = def.slopeRingMethod == SlopeRingMethod::Coherent ? SlopeRingMethod::Proposed
+                                                                                       : SlopeRingMethod::Coherent;
+            EXPECT_FALSE(model->applyModelParams(method)) << name;
+            EXPECT_EQ(model->applyModelParams(slopeRingModelDef(fourRings, def.slopeRingMethod)),
+                      def.slopeRingMethod == SlopeRingMethod::Coherent)
+                << name;
+        }
+    }
 }
 
 TEST(ModelRegistry, BuildsEveryModelAndNamesBadParameters) {
@@ -108,7 +146,8 @@ TEST(ModelRegistry, NoAllocationInTheTick) {
     std::vector<glm::vec3> positions(mesh.vertexCount());
     std::vector<std::uint8_t> rings(mesh.vertexCount());
     for (const std::string& name : modelNames()) {
-        auto model = makeModel(*modelDefForName(name), mesh, octree);
+        const ModelDef def = *modelDefForName(name);
+        auto model = makeModel(def, mesh, octree);
         for (int i = 0; i < 50; ++i) model->step(path[std::size_t(i)], 0.001);
         std::size_t displaced = 0;
         const test::AllocationCounter counter;
@@ -116,7 +155,7 @@ TEST(ModelRegistry, NoAllocationInTheTick) {
             const glm::vec3& tool = path[i];
             model->step(tool, 0.001);
             model->warm(tool);
-            if (i == 1000) model->applySlopeRingParams(SlopeRingParams{});  // at a tick boundary, in the loop
+            if (i == 1000) model->applyModelParams(def);  // at a tick boundary, in the loop
             displaced = std::max(displaced, model->copyDisplaced(ids.data(), positions.data(), rings.data(), ids.size()));
         }
         EXPECT_EQ(counter.count(), 0u) << name;
@@ -134,7 +173,7 @@ TEST(ModelRegistry, ErrorAgainstTheFlatPunch) {
         const Octree octree(mesh, {});
         const VertexId target = defaultTargetVertex(mesh);
         for (const std::string& name : modelNames()) {
-            if (name == "hybrid" || name == "proposed" || name == "previous") continue;  // as palpate (same formulas)
+            if (name == "hybrid" || name == "proposed" || name == "previous") continue;  // as coherent (same formulas)
             auto model = makeModel(*modelDefForName(name), mesh, octree);
             const ModelError e = measureModelError(*model, mesh, target, contact);
             std::printf("%-24s %8zu %12.3f %12.3f %10.4f %8.3f\n", name.c_str(), size, e.displacementError, e.forceError,
@@ -175,7 +214,7 @@ TEST(ModelRegistry, ErrorSeriesOfTheGeometricModels) {
 
 TEST(ModelRegistry, BadToolOrPeriodKeepsEveryModelFinite) {
     // A NaN tool tip (a device glitch) means no contact; a zero or NaN period integrates nothing.
-    // (SlopeRingDeformer is given no NaN period: its relaxation does not guard against one.)
+    // (The slope-ring methods are given no NaN period: its relaxation does not guard against one.)
     const TissueMesh mesh = test::sphereMesh(642);
     const Octree octree(mesh, {});
     const auto path = makePressAndStrokePath(mesh);

@@ -2,7 +2,7 @@
 // model where the two must agree (ring 0 only).
 #include "engine/Octree.h"
 #include "engine/SceneTarget.h"
-#include "engine/SlopeRingDeformer.h"
+#include "engine/models/slopering/CoherentSlopeRing.h"
 #include "engine/ToolPath.h"
 #include "engine/models/VolumetricFill.h"
 #include "engine/models/VolumetricRingsModel.h"
@@ -115,7 +115,7 @@ TEST(VolumetricRings, WithRingZeroOnlyItIsTheSurfaceModel) {
     VolumetricRingsParams p;
     p.slopeRing.ringCount = 0;
     VolumetricRingsModel volumetric(mesh, octree, tets, p);
-    SlopeRingDeformer surface(mesh, octree, p.slopeRing, SlopeRingMethod::Palpate);
+    CoherentSlopeRing surface(mesh, octree, p.slopeRing);
     for (const glm::vec3& tool : makePressAndStrokePath(mesh)) {
         const TickResult a = volumetric.step(tool, 0.001);
         const TickResult b = surface.step(tool, 0.001);

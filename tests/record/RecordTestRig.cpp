@@ -74,7 +74,7 @@ RecordRig makeRecordRig(SimTrajectory trajectory, TissuePreset preset, const std
     def.trySchedFifo = false;
     rig.header = makeRecordingHeader(*loaded.mesh, rig.meshPath, preset, uri, device->spec(), def.safety);
     rig.loop = std::make_unique<HapticLoop>(
-        def, HapticScene::createSlopeRing(std::move(*loaded.mesh), preset.params, preset.method, preset.octree),
+        def, HapticScene::create(std::move(*loaded.mesh), slopeRingModelDef(preset.params, preset.method), preset.octree),
         std::move(device));
     return rig;
 }

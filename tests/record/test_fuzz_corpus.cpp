@@ -93,7 +93,7 @@ TEST(RecordFuzzCorpus, DISABLED_WriteCorpus) {
             if (events && i == 40) {
                 SlopeRingParams p;
                 p.ringCount = 3;
-                ASSERT_EQ(rig.loop->setParams(p), "");
+                ASSERT_EQ(rig.loop->setModelParams(slopeRingModelDef(p)), "");
                 session->mark("mark");
                 session->exerciseEvent("{\"step\":1}");
                 rig.loop->pause();
@@ -108,7 +108,7 @@ TEST(RecordFuzzCorpus, DISABLED_WriteCorpus) {
                 auto loaded = TissueMesh::load(smallSphereMeshPath());
                 ASSERT_TRUE(loaded.mesh);
                 const RecordedScene description = describeScene(*loaded.mesh, smallSphereMeshPath(), TissuePreset{});
-                ASSERT_EQ(session->swapScene(HapticScene::createSlopeRing(std::move(*loaded.mesh), {}), description), "");
+                ASSERT_EQ(session->swapScene(HapticScene::create(std::move(*loaded.mesh), slopeRingModelDef(SlopeRingParams{})), description), "");
             }
             rig.loop->stepOnce();
         }

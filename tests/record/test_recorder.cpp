@@ -62,7 +62,7 @@ TEST(Recorder, RoundTripKeepsEveryTickAndEvent) {
     softer.springStiffnessNPerMm = 0.9;
     for (int i = 0; i < 3000; ++i) {
         if (i == 1000) {
-            ASSERT_EQ(rig.loop->setParams(softer), "");
+            ASSERT_EQ(rig.loop->setModelParams(slopeRingModelDef(softer)), "");
         }
         if (i == 1500) writer->mark("halfway");
         if (i == 1600) writer->exerciseEvent(R"({"event":"nodule found"})");
@@ -178,7 +178,7 @@ TEST(Recorder, FullRingDropsTicksAndTheFileSaysSo) {
 
 TEST(Recorder, SteppedTickWithRecorderDoesNotAllocate) {
     TempDir dir;
-    for (auto method : {SlopeRingMethod::Palpate, SlopeRingMethod::Proposed}) {
+    for (auto method : {SlopeRingMethod::Coherent, SlopeRingMethod::Proposed}) {
         TissuePreset preset;
         preset.method = method;
         RecordRig rig = makeRecordRig(SimTrajectory::Stroke, preset);
@@ -190,7 +190,7 @@ TEST(Recorder, SteppedTickWithRecorderDoesNotAllocate) {
         EXPECT_EQ(threadAllocationCount() - atAttach, 0u) << methodName(method);
         SlopeRingParams p;
         p.contactStiffnessNPerMm = 0.7;
-        ASSERT_EQ(rig.loop->setParams(p), "");
+        ASSERT_EQ(rig.loop->setModelParams(slopeRingModelDef(p, method)), "");
         const auto before = threadAllocationCount();
         for (int i = 0; i < 5000; ++i) rig.loop->stepOnce();  // ring: 8192 ticks, no flush needed
         const auto after = threadAllocationCount();

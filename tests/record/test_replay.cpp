@@ -61,7 +61,7 @@ TEST(Replay, SteppedRecordingReplaysBitExactly) {
             SlopeRingParams p;
             p.ringCount = 4;
             p.slopeMagnitudeMmPerN = {0.5, 0.3, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.001};
-            ASSERT_EQ(rig.loop->setParams(p), "");
+            ASSERT_EQ(rig.loop->setModelParams(slopeRingModelDef(p)), "");
         }
         if (i == 2500) rig.loop->pause();
         if (i == 2600) rig.loop->resume();
@@ -79,7 +79,7 @@ TEST(Replay, SteppedRecordingReplaysBitExactly) {
             TissuePreset preset;
             preset.params.springStiffnessNPerMm = 2.0;
             const RecordedScene description = describeScene(*loaded.mesh, smallSphereMeshPath(), preset);
-            ASSERT_EQ(session.swapScene(HapticScene::createSlopeRing(std::move(*loaded.mesh), preset.params), description), "");
+            ASSERT_EQ(session.swapScene(HapticScene::create(std::move(*loaded.mesh), slopeRingModelDef(preset.params)), description), "");
         }
     });
     rig.loop->collectRetired();
@@ -142,7 +142,7 @@ TEST(ReplayThreads, RealTimeRecordingReplaysBitExactly) {
     std::this_thread::sleep_for(std::chrono::milliseconds(700));
     SlopeRingParams p;
     p.contactStiffnessNPerMm = 0.6;
-    ASSERT_EQ(rig.loop->setParams(p), "");
+    ASSERT_EQ(rig.loop->setModelParams(slopeRingModelDef(p)), "");
     session->mark("stiffness changed");
     std::this_thread::sleep_for(std::chrono::milliseconds(1300));
     rig.loop->stop();

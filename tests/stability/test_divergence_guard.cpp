@@ -7,7 +7,7 @@
 #include "device/SimulatedDevice.h"
 #include "engine/HapticLoop.h"
 #include "engine/MeshGenerator.h"
-#include "engine/SlopeRingDeformer.h"
+#include "engine/models/slopering/CoherentSlopeRing.h"
 #include "engine/models/MassSpringModel.h"
 #include "tests/support/AllocationCounter.h"
 
@@ -156,12 +156,12 @@ TEST(DivergenceGuard, SlopeRingBeyondItsBoundIsCaughtAndInsideIsNot) {
     const VertexId v = sideVertex(mesh);
     const glm::vec3 tool = mesh.restPositionsMm()[v] - 0.5f * mesh.restNormals()[v];
     for (double factor : {0.95, 1.05}) {
-        SlopeRingDeformer model(mesh, octree, SlopeRingParams{});
+        CoherentSlopeRing model(mesh, octree, SlopeRingParams{});
         SlopeRingParams p;
         p.forceRelaxation = 1.0;  // bound: gain < 1
         p.slopeLimitMmPerN = 100.0;
         p.contactStiffnessNPerMm = factor / p.slopeMagnitudeMmPerN[0];
-        model.applySlopeRingParams(p);
+        model.applyModelParams(slopeRingModelDef(p));
         DivergenceGuard guard;
         DivergenceKind seen = DivergenceKind::None;
         for (int t = 0; t < 3000 && seen == DivergenceKind::None; ++t)
@@ -198,7 +198,7 @@ TEST(DivergenceGuard, CheckDoesNotAllocate) {
     const Octree octree(mesh, OctreeDef{});
     const VertexId v = sideVertex(mesh);
     const glm::vec3 tool = mesh.restPositionsMm()[v] - 0.5f * mesh.restNormals()[v];
-    SlopeRingDeformer model(mesh, octree, SlopeRingParams{});
+    CoherentSlopeRing model(mesh, octree, SlopeRingParams{});
     DivergenceGuard guard;
     model.step(tool, 1e-3);
     const test::AllocationCounter counter;
@@ -214,7 +214,7 @@ TEST(DivergenceGuard, TheLoopZeroesTheForceResetsTheTissueAndRecordsTheEvent) {
     ASSERT_TRUE(device->open());
     HapticLoopDef def;
     def.trySchedFifo = false;
-    HapticLoop loop(def, HapticScene::createSlopeRing(std::move(mesh), SlopeRingParams{}), std::move(device));
+    HapticLoop loop(def, HapticScene::create(std::move(mesh), slopeRingModelDef(SlopeRingParams{})), std::move(device));
     // Beyond the loop-gain bound (the validator refuses this set; the model's real-time apply
     // does not check, which is what a wrong set would do at run time).
     SlopeRingParams bad;
@@ -222,7 +222,7 @@ TEST(DivergenceGuard, TheLoopZeroesTheForceResetsTheTissueAndRecordsTheEvent) {
     bad.slopeLimitMmPerN = 100.0;
     bad.contactStiffnessNPerMm = 1.5 / bad.slopeMagnitudeMmPerN[0];
     ASSERT_FALSE(messagesOf(validateSlopeRingParams(bad)).empty());
-    ASSERT_TRUE(loop.scene().model().applySlopeRingParams(bad));
+    ASSERT_TRUE(loop.scene().model().applyModelParams(slopeRingModelDef(bad)));
     std::uint64_t before = 0;
     bool caught = false;
     for (int t = 0; t < 5000 && !caught; ++t) {
@@ -248,7 +248,7 @@ TEST(DivergenceGuard, TheLoopZeroesTheForceResetsTheTissueAndRecordsTheEvent) {
     EXPECT_TRUE(caught);
     // The session keeps running: with a stable set the loop renders a force again.
     SlopeRingParams good;
-    ASSERT_TRUE(loop.scene().model().applySlopeRingParams(good));
+    ASSERT_TRUE(loop.scene().model().applyModelParams(slopeRingModelDef(good)));
     bool forceAgain = false;
     for (int t = 0; t < 3000; ++t) {
         loop.stepOnce();
@@ -259,7 +259,7 @@ TEST(DivergenceGuard, TheLoopZeroesTheForceResetsTheTissueAndRecordsTheEvent) {
 }
 
 TEST(DivergenceGuard, NoFalseAlarmOnTheSimulatedTrajectoriesWithEveryMethod) {
-    for (auto method : {SlopeRingMethod::Palpate, SlopeRingMethod::Proposed, SlopeRingMethod::Previous})
+    for (auto method : {SlopeRingMethod::Coherent, SlopeRingMethod::Proposed, SlopeRingMethod::Previous})
         for (auto trajectory : {SimTrajectory::PressHold, SimTrajectory::Stroke, SimTrajectory::Scan, SimTrajectory::Sine}) {
             TissueMesh mesh = sphere(1442);
             const VertexId v = sideVertex(mesh);
@@ -268,7 +268,7 @@ TEST(DivergenceGuard, NoFalseAlarmOnTheSimulatedTrajectoriesWithEveryMethod) {
             ASSERT_TRUE(device->open());
             HapticLoopDef def;
             def.trySchedFifo = false;
-            HapticLoop loop(def, HapticScene::createSlopeRing(std::move(mesh), SlopeRingParams{}, method), std::move(device));
+            HapticLoop loop(def, HapticScene::create(std::move(mesh), slopeRingModelDef(SlopeRingParams{}, method)), std::move(device));
             bool contact = false;
             for (int t = 0; t < 6000; ++t) {
                 loop.stepOnce();

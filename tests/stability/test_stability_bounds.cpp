@@ -5,7 +5,7 @@
 #include "engine/stability/StabilityModels.h"
 
 #include "engine/MeshGenerator.h"
-#include "engine/SlopeRingParams.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 
 #include <gtest/gtest.h>
 
@@ -179,7 +179,7 @@ TEST(StabilityBounds, DefaultSlopesCannotInvertTheGeneratedSphereWithinTheDevice
 TEST(StabilityMargin, NamesTheLimitingParameterOnBothSides) {
     auto mesh = generateMesh(GeneratedShape::Sphere, 242);
     ASSERT_TRUE(mesh.mesh);
-    ModelDef def = *modelDefForName("palpate");
+    ModelDef def = *modelDefForName("coherent");
     EXPECT_NEAR(stabilityMargin(def, *mesh.mesh, 1e-3).margin, 0.5, 1e-12);  // automatic alpha: alpha (1 + g) = 1
     def.slopeRing.forceRelaxation = 1.0;
     def.slopeRing.contactStiffnessNPerMm = 2.0;  // g = 1.2 > 1

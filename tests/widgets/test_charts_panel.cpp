@@ -59,9 +59,9 @@ std::vector<SweepPoint> samplePoints() {
     for (GeneratedShape shape : {GeneratedShape::Sphere, GeneratedShape::Stomach})
         for (std::size_t vertices : {std::size_t(1442), std::size_t(3970)}) {
             const double grow = vertices == 1442 ? 1.0 : 1.2;
-            points.push_back(point("slope-ring 1 ring", "palpate", 1, shape, vertices, 0.02 * grow, 0.30));
-            points.push_back(point("slope-ring 2 rings", "palpate", 2, shape, vertices, 0.03 * grow, 0.20));
-            points.push_back(point("slope-ring 3 rings", "palpate", 3, shape, vertices, 0.05 * grow, 0.10));
+            points.push_back(point("slope-ring 1 ring", "coherent", 1, shape, vertices, 0.02 * grow, 0.30));
+            points.push_back(point("slope-ring 2 rings", "coherent", 2, shape, vertices, 0.03 * grow, 0.20));
+            points.push_back(point("slope-ring 3 rings", "coherent", 3, shape, vertices, 0.05 * grow, 0.10));
             points.push_back(point("previous (paper)", "previous", 2, shape, vertices, 8.0 * grow, 0.20));
         }
     markParetoFront(points);

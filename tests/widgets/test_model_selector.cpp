@@ -100,7 +100,7 @@ TEST(ModelSelector, ShowsTheChosenModelsOwnFieldsAndNamesBadOnes) {
 
     // Each choice and edit is one undo step; undoing them all goes back to the start.
     while (panel.undoStack()->canUndo()) panel.undoStack()->undo();
-    EXPECT_EQ(presetModelName(panel.preset()), "palpate");
+    EXPECT_EQ(presetModelName(panel.preset()), "coherent");
     EXPECT_EQ(panel.preset().radiusOfInfluence.radiusMm, RadiusOfInfluenceParams{}.radiusMm);
     EXPECT_TRUE(shown(panel, "slopeGroup"));
 }
@@ -111,7 +111,7 @@ TEST(ModelSelector, ApplySwitchesTheSessionsModelAndUndoGoesBack) {
     HapticSession session(LoopMode::Stepped);
     ASSERT_EQ(session.loadMesh(meshPath), "");
     session.step(1);
-    EXPECT_EQ(session.loopModelName(), "slope-ring/palpate");
+    EXPECT_EQ(session.loopModelName(), "slope-ring/coherent");
 
     ParameterPanel panel;
     panel.setPreset(session.preset());
@@ -142,13 +142,13 @@ TEST(ModelSelector, ApplySwitchesTheSessionsModelAndUndoGoesBack) {
 
     // Undo: the panel shows the slope-ring model again, and Apply sends it back to the session.
     panel.undoStack()->undo();
-    EXPECT_EQ(presetModelName(panel.preset()), "palpate");
+    EXPECT_EQ(presetModelName(panel.preset()), "coherent");
     QTest::mouseClick(apply, Qt::LeftButton);
     ASSERT_EQ(applyErrors.size(), 2u);
     EXPECT_EQ(applyErrors[1], "");
     session.step(2);
     session.observe();
-    EXPECT_EQ(session.loopModelName(), "slope-ring/palpate");
+    EXPECT_EQ(session.loopModelName(), "slope-ring/coherent");
     panel.undoStack()->redo();
     EXPECT_EQ(presetModelName(panel.preset()), "radius-of-influence");
 }

@@ -12,11 +12,11 @@ std::vector<SweepPoint> points() {
     std::vector<SweepPoint> out;
     int i = 0;
     for (GeneratedShape shape : {GeneratedShape::Sphere, GeneratedShape::Stomach})
-        for (const char* model : {"palpate", "proposed", "mass-spring-rk4"}) {
+        for (const char* model : {"coherent", "proposed", "mass-spring-rk4"}) {
             SweepPoint p;
             p.model = model;
             p.rings = 2 + i % 3;
-            p.series = p.model == "palpate"    ? "slope-ring " + std::to_string(p.rings) + " rings"
+            p.series = p.model == "coherent"   ? "slope-ring " + std::to_string(p.rings) + " rings"
                        : p.model == "proposed" ? "proposed (paper)"
                                                : p.model;
             p.shape = shape;

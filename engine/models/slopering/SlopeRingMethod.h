@@ -11,10 +11,12 @@ enum class SlopeRingMethod {
     Previous,  ///< linear nearest-vertex search + whole model processed every tick (paper, Table 1)
     Hybrid,    ///< the paper's octree searchNode + whole model processed every tick
     Proposed,  ///< the paper's octree searchNode + only the rings processed (faithful to the paper)
-    Palpate,   ///< ours: exact warm-started search, incremental ring work, curve-ordered memory
+    Coherent,  ///< ours, temporal coherence: exact warm-started search, incremental ring work,
+               ///< curve-ordered memory (CoherentSlopeRing)
 };
 
 std::string_view methodName(SlopeRingMethod method);
+/// The method of a name; also reads "palpate", what files written before called the coherent method.
 std::optional<SlopeRingMethod> parseMethod(std::string_view name);
 
 }  // namespace palpate

@@ -1,4 +1,4 @@
-#include "engine/SlopeRingParams.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 
 #include <cmath>
 

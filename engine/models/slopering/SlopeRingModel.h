@@ -1,0 +1,162 @@
+#pragma once
+// The slope-ring model: the touched vertex and its rings move by p = p_rest + m_r F (the paper's
+// Eq. (1)-(3), m_r < 0), return springs tie them to rest, and the touched vertex's spring
+// reaction is the force rendered (docs/method.md). This base holds what every slope-ring method
+// shares: the parameters and their hot constants, the contact force update, the return springs'
+// relaxation and the rendered force. The methods (PaperSlopeRing: the paper's three;
+// CoherentSlopeRing: ours) differ only in the search and in how much work a tick does.
+
+#include "engine/DeformationModel.h"
+#include "engine/Octree.h"
+#include "engine/Rings.h"
+#include "engine/models/slopering/SlopeRingMethod.h"
+#include "engine/models/slopering/SlopeRingParams.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+namespace palpate {
+
+class SlopeRingModel : public DeformationModel {
+public:
+    std::span<const glm::vec3> positionsMm() const override { return mPositions; }
+    std::string name() const override;
+    /// Real-time: takes a slope-ring definition of this model's method when the method can take it
+    /// without reallocating (see canTakeParams); false otherwise (the caller rebuilds the model).
+    bool applyModelParams(const ModelDef& def) override;
+
+    /// Replaces the parameters (validated first; throws std::invalid_argument listing every problem).
+    /// Not real-time: may precompute rings.
+    void setParams(const SlopeRingParams& params);
+    const SlopeRingParams& params() const { return mParams; }
+    SlopeRingMethod method() const { return mMethod; }
+
+    /// The touched vertex this method's search would report now, without changing the deformation
+    /// (kNoVertex where the paper's searchNode finds nothing).
+    virtual VertexId findTouched(const glm::vec3& toolTipMm) const = 0;
+    VertexId touchedVertex() const { return mTouched; }
+    /// Contact force magnitude of the slope model (N), before the spring rendering.
+    float contactForceN() const { return mContactForceN; }
+    /// Coherent: every vertex that may be away from rest (the active rings and those relaxing).
+    /// The paper's methods: empty (they keep no such list). Not real-time.
+    virtual std::span<const VertexId> displacedVertices() const { return {}; }
+
+protected:
+    /// `mesh` and `octree` must outlive the model. The derived constructor calls setParams.
+    SlopeRingModel(const TissueMesh& mesh, const Octree& octree, SlopeRingMethod method);
+
+    /// Whether already validated parameters can be taken at a tick boundary (no reallocation).
+    virtual bool canTakeParams(const SlopeRingParams& params) const = 0;
+    /// After the parameters changed (setParams, or applyModelParams in real time): `ringsChanged`
+    /// when the ring count did.
+    virtual void paramsReplaced(bool ringsChanged) = 0;
+
+    /// Back to rest: positions, velocities, the contact. The derived reset() calls it.
+    void resetShared();
+
+    /// The start of a tick: the relaxation's factors for this period.
+    void prepareTick(double dtS) {
+        if (dtS != mRelaxDtS) {
+            mRelaxDtS = dtS;
+            mRelaxDt = float(dtS);
+            mRelaxDenominatorInv = 1.0f / (1.0f + mRelaxDt * mTwoZetaOmega + mRelaxDt * mRelaxDt * mOmega2);
+        }
+    }
+    static bool isFinite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+    /// The contact and the contact force (docs/method.md): d = depth of the tip below the touched
+    /// vertex's rest position along its rest normal; the model displaces that vertex by |m1| F, so
+    /// the tip is e = d - |m1| F below it. F <- max(0, (1 - alpha) F + alpha k_c e); contact while
+    /// F > 0. A stiffer inclusion scales the touched vertex's slopes by `compliance` c in (0, 1]:
+    /// the tip is d - c |m1| F below it, and the exact solve uses the gain c |m1| k_c (c = 1: the
+    /// paper's model). Sets the touched vertex, the force and the contact; returns the penetration.
+    float updateContact(const glm::vec3& tool, bool toolValid, VertexId touched, float compliance) {
+        float penetration = 0.0f;
+        if (toolValid && touched != kNoVertex) {
+            const float depth = glm::dot(mMesh.restPositionsMm()[touched] - tool, mMesh.restNormals()[touched]);
+            penetration = depth + mSignedSlope[0] * (compliance * mContactForceN);
+        }
+        const float alpha = compliance == 1.0f || mParams.forceRelaxation > 0.0
+                                ? mAlpha
+                                : float(1.0 / (1.0 + mParams.loopGain() * double(compliance)));
+        // Projected onto F >= 0 (the tissue only pushes): a non-expansive step, so the iteration
+        // converges wherever its linear part does, alpha (1 + gain) < 2, overshoot or not.
+        if (toolValid && touched != kNoVertex)
+            mContactForceN = std::max(0.0f, (1.0f - alpha) * mContactForceN + alpha * (mContactStiffness * penetration));
+        else
+            mContactForceN = 0.0f;
+        mTouched = touched;
+        mContact = mContactForceN > 0.0f;
+        return penetration;
+    }
+
+    /// The tick's result; `touchedDisplacementMm` is the touched vertex's displacement from rest,
+    /// whose spring reaction is the force rendered.
+    TickResult tickResult(VertexId touched, float penetration, const glm::vec3& touchedDisplacementMm) const {
+        TickResult result;
+        result.touched = touched;
+        result.contact = mContact;
+        result.penetrationMm = penetration;
+        if (mContact) result.forceN = -mSpringStiffness * touchedDisplacementMm;
+        return result;
+    }
+
+    /// The slope update (the paper's Eq. (1)-(3)): a vertex of ring `ring` sits at rest + this,
+    /// m_r F along the touched vertex's rest normal (m_r < 0: into the tissue).
+    glm::vec3 ringDisplacementMm(int ring, float forceN, const glm::vec3& normal) const {
+        return (mSignedSlope[ring] * forceN) * normal;
+    }
+
+    /// Backward Euler on m x'' = -k x - c x' for one vertex: unconditionally stable and dissipative.
+    void relaxVertex(VertexId v) {
+        const glm::vec3 rest = mMesh.restPositionsMm()[v];
+        const glm::vec3 u = mPositions[v] - rest;
+        glm::vec3& vel = mVelocitiesMmPerS[v];
+        vel = (vel - (mRelaxDt * mOmega2) * u) * mRelaxDenominatorInv;
+        mPositions[v] = rest + (u + mRelaxDt * vel);
+    }
+
+    const TissueMesh& mMesh;
+    const Octree& mOctree;
+    SlopeRingParams mParams;
+    const SlopeRingMethod mMethod;
+    RingFinder mRingFinder;
+
+    // Hot-loop constants derived from the parameters.
+    float mSignedSlope[kMaxRings + 1] = {};  // -|m_r|, mm/N
+    int mRingCount = 2;
+    float mAlpha = 1.0f;
+    float mContactStiffness = 1.0f;  // N/mm
+    float mSpringStiffness = 1.0f;   // N/mm
+    float mOmega2 = 0.0f;            // return-spring omega^2, 1/s^2
+    float mTwoZetaOmega = 0.0f;      // 2 zeta omega, 1/s
+    double mRelaxDtS = -1.0;         // dt for which the two factors below hold
+    float mRelaxDenominatorInv = 1.0f, mRelaxDt = 0.0f;
+
+    // mutable: the coherent method writes its active rings here when they are read
+    // (positionsMm() const, at display rate); the paper's methods write them in the tick.
+    mutable std::vector<glm::vec3> mPositions;
+    std::vector<glm::vec3> mVelocitiesMmPerS;
+
+    // State of the contact.
+    VertexId mTouched = kNoVertex;
+    float mContactForceN = 0.0f;
+    bool mContact = false;
+
+private:
+    void updateHotConstants();
+};
+
+/// The method's class (PaperSlopeRing for previous, hybrid and proposed; CoherentSlopeRing for
+/// coherent). Throws std::invalid_argument on bad params. `eagerPositions` (coherent only): see
+/// CoherentSlopeRing.
+std::unique_ptr<SlopeRingModel> makeSlopeRing(const TissueMesh& mesh, const Octree& octree,
+                                              const SlopeRingParams& params,
+                                              SlopeRingMethod method = SlopeRingMethod::Coherent,
+                                              bool eagerPositions = false);
+
+}  // namespace palpate
