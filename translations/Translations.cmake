@@ -2,9 +2,9 @@
 # are built from translations/palpate_<lang>.ts by lrelease and embedded in palpate_gui as
 # :/i18n/palpate_<lang>.qm (app/gui/FirstRun.cpp loads them).
 #
-# After changing user-visible strings in app/gui/ or widgets/:
+# After changing user-visible strings in app/gui/, widgets/ or app/report/:
 #   cmake --build build/release --target update_translations
-# runs lupdate over app/gui and widgets and rewrites translations/*.ts (new strings come in as
+# runs lupdate over app/gui, widgets and app/report and rewrites translations/*.ts (new strings come in as
 # unfinished, removed ones are dropped); translate the unfinished entries (Qt Linguist, or by
 # hand), and the translations_complete test passes again.
 find_package(Qt6 REQUIRED COMPONENTS LinguistTools)
@@ -14,7 +14,8 @@ set(PALPATE_TS_FILES
   "${PROJECT_SOURCE_DIR}/translations/palpate_ms.ts")
 file(GLOB PALPATE_TR_SOURCES CONFIGURE_DEPENDS
   "${PROJECT_SOURCE_DIR}/app/gui/*.cpp" "${PROJECT_SOURCE_DIR}/app/gui/*.h"
-  "${PROJECT_SOURCE_DIR}/widgets/*.cpp" "${PROJECT_SOURCE_DIR}/widgets/*.h")
+  "${PROJECT_SOURCE_DIR}/widgets/*.cpp" "${PROJECT_SOURCE_DIR}/widgets/*.h"
+  "${PROJECT_SOURCE_DIR}/app/report/*.cpp" "${PROJECT_SOURCE_DIR}/app/report/*.h")
 
 qt_add_translations(palpate_gui
   TS_FILES ${PALPATE_TS_FILES}

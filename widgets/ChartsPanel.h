@@ -4,8 +4,8 @@
 // sweep (docs/bench/sweep.csv) is shown without measuring again. Measuring a sweep takes minutes;
 // the window stays responsive and the haptic loop is not touched (the sweep builds its own models).
 
-#include "engine/SlopeRingMethod.h"
-#include "engine/TissuePreset.h"
+#include "engine/models/slopering/SlopeRingMethod.h"
+#include "engine/scene/TissuePreset.h"
 #include "engine/accuracy/AccuracySweep.h"
 
 #include <QElapsedTimer>

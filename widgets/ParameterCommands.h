@@ -4,7 +4,7 @@
 // loaded preset is one step like any edit. The commands know nothing about widgets: they hand the
 // preset to a callback that shows it.
 
-#include "engine/TissuePreset.h"
+#include "engine/scene/TissuePreset.h"
 
 #include <QUndoCommand>
 

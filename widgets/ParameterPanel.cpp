@@ -2,9 +2,9 @@
 
 #include "widgets/ParameterCommands.h"
 
-#include "engine/Octree.h"
-#include "engine/SceneTarget.h"
-#include "engine/SlopeRingDeformer.h"
+#include "engine/core/Octree.h"
+#include "engine/core/SceneTarget.h"
+#include "engine/models/slopering/SlopeRingDeformer.h"
 #include "engine/accuracy/ModelError.h"
 
 #include <QAction>

@@ -1,6 +1,6 @@
 #include "engine/models/MassSpringParams.h"
 
-#include "engine/Rings.h"
+#include "engine/core/Rings.h"
 #include "engine/models/ParamText.h"
 
 namespace palpate {

@@ -1,6 +1,6 @@
 #include "engine/models/ModelRegistry.h"
 
-#include "engine/SlopeRingDeformer.h"
+#include "engine/models/slopering/SlopeRingDeformer.h"
 #include "engine/models/FfdModel.h"
 #include "engine/models/MassSpringModel.h"
 #include "engine/models/RadiusOfInfluenceModel.h"

@@ -5,12 +5,12 @@
 // mass-spring-local, radius-of-influence, ffd, volumetric-rings, and the slope-ring methods by
 // their SlopeRingMethod names (palpate, proposed, hybrid, previous). See docs/models.md.
 
-#include "engine/DeformationModel.h"
-#include "engine/Octree.h"
-#include "engine/SlopeRingMethod.h"
-#include "engine/SlopeRingParams.h"
-#include "engine/TissueMesh.h"
-#include "engine/accuracy/TetMesh.h"
+#include "engine/models/DeformationModel.h"
+#include "engine/core/Octree.h"
+#include "engine/models/slopering/SlopeRingMethod.h"
+#include "engine/models/slopering/SlopeRingParams.h"
+#include "engine/core/TissueMesh.h"
+#include "engine/fem/TetMesh.h"
 #include "engine/models/FfdParams.h"
 #include "engine/models/MassSpringParams.h"
 #include "engine/models/RadiusOfInfluenceParams.h"

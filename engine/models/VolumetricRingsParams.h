@@ -3,7 +3,7 @@
 // on rings taken in a tetrahedral mesh's edge graph. The slope-ring parameters mean what they mean
 // on the surface (docs/method.md); ring r is now every tet node r edges away, inside or on the surface.
 
-#include "engine/SlopeRingParams.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 
 #include <string>
 #include <vector>

@@ -11,9 +11,9 @@
 
 #include "device/HapticDevice.h"
 #include "device/SafetyFilter.h"
-#include "engine/Octree.h"
-#include "engine/SlopeRingMethod.h"
-#include "engine/SlopeRingParams.h"
+#include "engine/core/Octree.h"
+#include "engine/models/slopering/SlopeRingMethod.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/record/ByteIo.h"
 
 #include <cstdint>

@@ -1,10 +1,10 @@
 // Slope-ring parameters: every way to get them wrong is rejected with a message naming the
 // parameter; the defaults and the stable side of the loop-gain bound are accepted.
 
-#include "engine/MeshGenerator.h"
-#include "engine/Octree.h"
-#include "engine/SlopeRingDeformer.h"
-#include "engine/SlopeRingParams.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/Octree.h"
+#include "engine/models/slopering/SlopeRingDeformer.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 
 #include <gtest/gtest.h>
 

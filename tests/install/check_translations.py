@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fails when a translation is not complete: runs lupdate over app/gui and widgets on a COPY of each
+"""Fails when a translation is not complete: runs lupdate over app/gui, widgets and app/report on a COPY of each
 translations/*.ts (the committed files are never rewritten) and lists every entry that is unfinished
 (a new or changed string) or obsolete/vanished (a string the sources no longer have).
 
@@ -30,6 +30,7 @@ def main():
             # here obsolete entries must show.
             run = subprocess.run([lupdate, "-locations", "none", "-I", source,
                                   os.path.join(source, "app", "gui"), os.path.join(source, "widgets"),
+                                  os.path.join(source, "app", "report"),
                                   "-ts", copy], capture_output=True, text=True)
             if run.returncode != 0:
                 print(run.stdout, run.stderr)

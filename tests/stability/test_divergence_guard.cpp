@@ -5,9 +5,9 @@
 #include "engine/stability/StabilityBounds.h"
 
 #include "device/SimulatedDevice.h"
-#include "engine/HapticLoop.h"
-#include "engine/MeshGenerator.h"
-#include "engine/SlopeRingDeformer.h"
+#include "engine/loop/HapticLoop.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/models/slopering/SlopeRingDeformer.h"
 #include "engine/models/MassSpringModel.h"
 #include "tests/support/AllocationCounter.h"
 

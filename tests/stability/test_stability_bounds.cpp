@@ -4,8 +4,8 @@
 #include "engine/stability/StabilityMargin.h"
 #include "engine/stability/StabilityModels.h"
 
-#include "engine/MeshGenerator.h"
-#include "engine/SlopeRingParams.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/models/slopering/SlopeRingParams.h"
 
 #include <gtest/gtest.h>
 

@@ -1,0 +1,43 @@
+#pragma once
+// Parameters of the slope-ring model (the paper's Eq. (1)-(3) generalised to N rings).
+// Slopes are stored as magnitudes in mm/N; the paper's sign (m < 0: the vertex moves against the
+// outward reaction force, into the tissue) is applied by the model. See docs/method.md.
+
+#include "engine/core/Rings.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace palpate {
+
+struct SlopeRingParams {
+    /// Rings beyond the touched vertex (the paper uses 2).
+    int ringCount = 2;
+    /// |m| per ring in mm/N: [0] the touched vertex (the paper's m1), [1] ring 1 (m2), ...
+    /// Only the first ringCount + 1 entries are used; they must decrease strictly.
+    std::array<double, kMaxRings + 1> slopeMagnitudeMmPerN{0.6, 0.35, 0.15, 0.08, 0.04, 0.02, 0.01, 0.005, 0.0025};
+    /// Upper bound for |m1|. The paper's range is (0, 1) mm/N; calibrated soft tissue may need more,
+    /// allowed only where the loop-gain bound (docs/method.md) holds.
+    double slopeLimitMmPerN = 1.0;
+    /// Stiffness of the tool-tissue contact (penalty), N/mm. The loop gain is |m1| * this.
+    double contactStiffnessNPerMm = 1.0;
+    /// Per-tick relaxation of the contact force, in (0, 1]; 0 selects the exact one-tick solve
+    /// alpha = 1 / (1 + gain). The iteration is stable for alpha * (1 + gain) < 2.
+    double forceRelaxation = 0.0;
+    /// Return springs tying each vertex to its rest position, N/mm. The touched vertex's spring
+    /// reaction is the force rendered to the user.
+    double springStiffnessNPerMm = 1.5;
+    /// Damping of the return springs as a fraction of critical (1 = no overshoot).
+    double dampingRatio = 1.0;
+    /// Lumped mass per vertex for the relaxation after release, kg.
+    double vertexMassKg = 0.001;
+
+    double loopGain() const { return slopeMagnitudeMmPerN[0] * contactStiffnessNPerMm; }
+    double effectiveRelaxation() const { return forceRelaxation > 0.0 ? forceRelaxation : 1.0 / (1.0 + loopGain()); }
+};
+
+/// Every problem found, each naming the parameter and the rule; empty when valid.
+std::vector<std::string> validateSlopeRingParams(const SlopeRingParams& params);
+
+}  // namespace palpate
