@@ -2,9 +2,9 @@
 # are built from translations/palpate_<lang>.ts by lrelease and embedded in palpate_gui as
 # :/i18n/palpate_<lang>.qm (app/gui/FirstRun.cpp loads them).
 #
-# After changing user-visible strings in app/gui/ or widgets/:
+# After changing user-visible strings in app/gui/, widgets/ or app/report/:
 #   cmake --build build/release --target update_translations
-# runs lupdate over app/gui, widgets and the engine's field tables and rewrites translations/*.ts (new strings come in as
+# runs lupdate over app/gui, widgets, app/report and the engine's field tables and rewrites translations/*.ts (new strings come in as
 # unfinished, removed ones are dropped); translate the unfinished entries (Qt Linguist, or by
 # hand), and the translations_complete test passes again.
 find_package(Qt6 REQUIRED COMPONENTS LinguistTools)
@@ -14,7 +14,8 @@ set(PALPATE_TS_FILES
   "${PROJECT_SOURCE_DIR}/translations/palpate_ms.ts")
 file(GLOB PALPATE_TR_SOURCES CONFIGURE_DEPENDS
   "${PROJECT_SOURCE_DIR}/app/gui/*.cpp" "${PROJECT_SOURCE_DIR}/app/gui/*.h"
-  "${PROJECT_SOURCE_DIR}/widgets/*.cpp" "${PROJECT_SOURCE_DIR}/widgets/*.h")
+  "${PROJECT_SOURCE_DIR}/widgets/*.cpp" "${PROJECT_SOURCE_DIR}/widgets/*.h"
+  "${PROJECT_SOURCE_DIR}/app/report/*.cpp" "${PROJECT_SOURCE_DIR}/app/report/*.h")
 # The engine's parameter tables hold the labels and tooltips the Parameters panel shows, marked
 # with PALPATE_TRANSLATE_NOOP (engine/params/FieldTable.h), which lupdate reads as QT_TRANSLATE_NOOP.
 file(GLOB_RECURSE PALPATE_TR_ENGINE_SOURCES CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/engine/*.cpp")

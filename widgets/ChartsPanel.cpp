@@ -1,7 +1,7 @@
 #include "widgets/ChartsPanel.h"
 
 #include "engine/accuracy/SweepCsv.h"
-#include "widgets/SpeedAccuracyChart.h"
+#include "app/report/SpeedAccuracyChart.h"
 
 #include <QCheckBox>
 #include <QComboBox>

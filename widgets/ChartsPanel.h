@@ -5,7 +5,7 @@
 // the window stays responsive and the haptic loop is not touched (the sweep builds its own models).
 
 #include "engine/models/slopering/SlopeRingMethod.h"
-#include "engine/TissuePreset.h"
+#include "engine/scene/TissuePreset.h"
 #include "engine/accuracy/AccuracySweep.h"
 
 #include <QElapsedTimer>

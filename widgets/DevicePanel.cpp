@@ -1,8 +1,8 @@
 #include "widgets/DevicePanel.h"
 
-#include "device/DeviceUri.h"
+#include "device/open/DeviceUri.h"
 #include "device/SafetyFilter.h"
-#include "engine/HapticSnapshot.h"
+#include "engine/loop/HapticSnapshot.h"
 
 #include <QCoreApplication>
 #include <QFileDialog>

@@ -1,6 +1,6 @@
 #include "widgets/ExerciseEditCommands.h"
 
-#include "engine/scoring/ExerciseFile.h"
+#include "engine/exercise/ExerciseFile.h"
 
 #include <utility>
 

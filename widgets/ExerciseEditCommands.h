@@ -5,7 +5,7 @@
 // like any field edit. The commands know nothing about widgets: they hand the exercise to a
 // callback that shows it.
 
-#include "engine/scoring/Exercise.h"
+#include "engine/exercise/Exercise.h"
 
 #include <QUndoCommand>
 

@@ -2,7 +2,7 @@
 
 #include "widgets/ExerciseEditCommands.h"
 
-#include "engine/scoring/ExerciseGeometry.h"
+#include "engine/exercise/ExerciseGeometry.h"
 
 #include <QAction>
 #include <QCheckBox>

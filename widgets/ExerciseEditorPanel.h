@@ -9,9 +9,9 @@
 // mesh and preset paths relative to resources/ when they are under it, as the shipped examples do.
 // A plain QWidget, meant for a QDockWidget (about 380 px wide: the form scrolls).
 
-#include "engine/TissueMesh.h"
-#include "engine/scoring/Exercise.h"
-#include "engine/scoring/ExerciseFile.h"
+#include "engine/core/TissueMesh.h"
+#include "engine/exercise/Exercise.h"
+#include "engine/exercise/ExerciseFile.h"
 #include "widgets/ExerciseMarkers.h"
 
 #include <QList>

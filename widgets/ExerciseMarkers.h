@@ -4,8 +4,8 @@
 // instructor who places it, hidden from the trainee who must find it), plus the trainee's mark.
 // Both renderers paint them with QPainter over the scene, like the tool marker (SceneOverlay).
 
-#include "engine/scoring/ExerciseGeometry.h"
-#include "engine/scoring/ScoreReport.h"
+#include "engine/exercise/ExerciseGeometry.h"
+#include "engine/exercise/ScoreReport.h"
 
 #include <QColor>
 #include <QSize>

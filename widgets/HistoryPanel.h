@@ -3,7 +3,7 @@
 // as a table below. A result with a recording can be exported as a PDF report or replayed: the
 // window re-scores the recording (the same score bit for bit) or opens it in the Recorder.
 
-#include "widgets/ResultsDatabase.h"
+#include "app/report/ResultsDatabase.h"
 
 #include <QWidget>
 

@@ -7,7 +7,7 @@
 // Editing the targets replans from the measured table at once: planLod is pure, so nothing is
 // measured again.
 
-#include "engine/TissueMesh.h"
+#include "engine/core/TissueMesh.h"
 #include "engine/lod/LodMeasure.h"
 #include "engine/lod/LodNeeds.h"
 #include "engine/lod/LodPlanner.h"

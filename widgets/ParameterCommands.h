@@ -2,9 +2,9 @@
 // Undo commands of the parameters panel. A command holds the whole preset before and after the
 // edit (a TissuePreset is a few hundred bytes), so undo and redo restore every field at once and a
 // loaded preset is one step like any edit. The commands know nothing about widgets: they hand the
-// preset to a callback that shows it; samePreset (engine/TissuePreset.h) is the undo check.
+// preset to a callback that shows it; samePreset (engine/scene/TissuePreset.h) is the undo check.
 
-#include "engine/TissuePreset.h"
+#include "engine/scene/TissuePreset.h"
 
 #include <QUndoCommand>
 

@@ -2,9 +2,9 @@
 
 #include "widgets/ParameterCommands.h"
 
-#include "engine/HapticRate.h"
-#include "engine/Octree.h"
-#include "engine/SceneTarget.h"
+#include "engine/core/HapticRate.h"
+#include "engine/core/Octree.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/models/slopering/SlopeRingModel.h"
 #include "engine/accuracy/ModelError.h"
 
@@ -45,8 +45,8 @@ struct PanelField {
     QWidget* widget = nullptr;
     const FieldSpec* spec = nullptr;
     FieldType type = FieldType::Real;
-    int index = -1;        ///< the list entry (a slope); -1 for a scalar
-    std::string section;   ///< the preset file's section: slope_ring, mass_spring, ..., octree, tissue
+    int index = -1;       ///< the list entry (a slope); -1 for a scalar
+    std::string section;  ///< the preset file's section: slope_ring, mass_spring, ..., octree, tissue
     std::function<double(const TissuePreset&)> get;
     std::function<void(TissuePreset&, double)> set;  ///< null: presetFromFields sets it (the tissue)
 };
@@ -123,7 +123,8 @@ struct ModelSection {
 };
 const ModelSection kModelSections[] = {
     {"mass_spring",
-     {ModelKind::MassSpringSymplectic, ModelKind::MassSpringRk4, ModelKind::MassSpringImplicit, ModelKind::MassSpringLocal}},
+     {ModelKind::MassSpringSymplectic, ModelKind::MassSpringRk4, ModelKind::MassSpringImplicit,
+      ModelKind::MassSpringLocal}},
     {"radius_of_influence", {ModelKind::RadiusOfInfluence}},
     {"ffd", {ModelKind::Ffd}},
 };
@@ -334,9 +335,12 @@ void ParameterPanel::buildUi() {
     for (const PanelField& f : mFields) {
         const std::string key = f.spec->key;
         if (f.section == "slope_ring" && key == "ringCount") mRingSpin = qobject_cast<QSpinBox*>(f.widget);
-        if (f.section == "slope_ring" && f.index >= 0) mSlopeSpins[std::size_t(f.index)] = qobject_cast<QDoubleSpinBox*>(f.widget);
-        if (f.section == "slope_ring" && key == "contactStiffnessNPerMm") mContactSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
-        if (f.section == "slope_ring" && key == "forceRelaxation") mRelaxationSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
+        if (f.section == "slope_ring" && f.index >= 0)
+            mSlopeSpins[std::size_t(f.index)] = qobject_cast<QDoubleSpinBox*>(f.widget);
+        if (f.section == "slope_ring" && key == "contactStiffnessNPerMm")
+            mContactSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
+        if (f.section == "slope_ring" && key == "forceRelaxation")
+            mRelaxationSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
         if (f.section == "tissue" && key == "youngsModulusKPa") mYoungsSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
         if (f.section == "tissue" && key == "poissonRatio") mPoissonSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
         if (f.section == "tissue" && key == "toolRadiusMm") mToolRadiusSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
@@ -509,17 +513,20 @@ void ParameterPanel::retranslateUi() {
     mSpringGroup->setTitle(tr("Springs and contact"));
     mOctreeGroup->setTitle(tr("Octree"));
     mTissueGroup->setTitle(tr("Tissue and tool"));
-    mTissueGroup->setToolTip(tr("The tissue's elasticity and the probe's flat tip: Calibrate slopes turns them into "
-                                "slopes and a spring stiffness for the current mesh (flat punch on a half-space, "
-                                "docs/calibration.md)."));
+    mTissueGroup->setToolTip(
+        tr("The tissue's elasticity and the probe's flat tip: Calibrate slopes turns them into "
+           "slopes and a spring stiffness for the current mesh (flat punch on a half-space, "
+           "docs/calibration.md)."));
     setRowLabel(mTissueForm, mTissueCombo, tr("Tissue preset:"));
     mTissueCombo->setItemText(0, tr("Choose a tissue…"));
-    mTissueCombo->setToolTip(tr("Load a shipped tissue preset: E, ν, the tool radius and slopes calibrated for the "
-                                "default stomach mesh (one undoable step). Each entry's tooltip names its source."));
+    mTissueCombo->setToolTip(
+        tr("Load a shipped tissue preset: E, ν, the tool radius and slopes calibrated for the "
+           "default stomach mesh (one undoable step). Each entry's tooltip names its source."));
     mCalibrateButton->setText(tr("Ca&librate slopes"));
-    mCalibrateButton->setToolTip(tr("Slopes for the ring count and spring k for the current mesh from E, ν and the tool "
-                                    "radius (flat punch: |m1| = 1 / (2 a E*), k = 1 / |m1|), then the error the "
-                                    "calibrated model leaves against the punch. One undoable step; Apply sends them."));
+    mCalibrateButton->setToolTip(
+        tr("Slopes for the ring count and spring k for the current mesh from E, ν and the tool "
+           "radius (flat punch: |m1| = 1 / (2 a E*), k = 1 / |m1|), then the error the "
+           "calibrated model leaves against the punch. One undoable step; Apply sends them."));
 
     setRowLabel(mModelForm, mModelCombo, tr("Deformation model:"));
     const QString methodTexts[] = {tr("Coherent rings (ours)"), tr("Proposed (paper)"), tr("Hybrid (paper)"),
@@ -544,8 +551,9 @@ void ParameterPanel::retranslateUi() {
                 mModelCombo->setItemData(i, tr(m.tip), Qt::ToolTipRole);
             }
     }
-    mModelCombo->setToolTip(tr("Which model deforms the tissue: the slope-ring methods (ours and the paper's three), "
-                               "then the literature's other models (docs/models.md)."));
+    mModelCombo->setToolTip(
+        tr("Which model deforms the tissue: the slope-ring methods (ours and the paper's three), "
+           "then the literature's other models (docs/models.md)."));
     // Every table field: its label, tooltip and unit from the engine's table, translated here.
     for (const PanelField& f : mFields) {
         QFormLayout* form = qobject_cast<QFormLayout*>(f.widget->parentWidget()->layout());
@@ -567,8 +575,7 @@ void ParameterPanel::retranslateUi() {
 
     const auto slope = std::find_if(mFields.begin(), mFields.end(), [](const PanelField& f) { return f.index == 0; });
     const QString slopeTip =
-        tr(slope->spec->tip) +
-        QStringLiteral("\n\n") +
+        tr(slope->spec->tip) + QStringLiteral("\n\n") +
         tr("Read with signs, the paper's \"m1 > m2 > m3\" would move the outer rings further than the touched "
            "vertex. Palpate orders the magnitudes instead, |m1| > |m2| > |m3| > …, so the displacement decays away "
            "from the touched vertex.") +
@@ -644,8 +651,8 @@ std::optional<TissueProperties> ParameterPanel::tissueFromFields() const {
             radius == shownAs(mToolRadiusSpin, t.toolRadiusMm))
             return TissueProperties{youngs, poisson, radius, t.source};  // as shown: its source still holds
     } else if (const TissueProperties defaults; youngs == shownAs(mYoungsSpin, defaults.youngsModulusKPa) &&
-                                                  poisson == shownAs(mPoissonSpin, defaults.poissonRatio) &&
-                                                  radius == shownAs(mToolRadiusSpin, defaults.toolRadiusMm)) {
+                                                poisson == shownAs(mPoissonSpin, defaults.poissonRatio) &&
+                                                radius == shownAs(mToolRadiusSpin, defaults.toolRadiusMm)) {
         return std::nullopt;  // the defaults of a preset without a tissue: nothing to record
     }
     return TissueProperties{youngs, poisson, radius, tr("entered in the Parameters panel").toStdString()};
@@ -696,10 +703,11 @@ void ParameterPanel::setTissuePresetDirectory(const QString& directory) {
         const TissuePreset& preset = *loaded.preset;
         QString tip = QString::fromStdString(preset.description);
         if (preset.tissue)
-            tip += QStringLiteral("\n\n") + tr("E = %1 kPa, ν = %2, tool radius %3 mm")
-                                              .arg(locale().toString(preset.tissue->youngsModulusKPa, 'g', 4),
-                                                   locale().toString(preset.tissue->poissonRatio, 'g', 4),
-                                                   locale().toString(preset.tissue->toolRadiusMm, 'g', 4)) +
+            tip += QStringLiteral("\n\n") +
+                   tr("E = %1 kPa, ν = %2, tool radius %3 mm")
+                       .arg(locale().toString(preset.tissue->youngsModulusKPa, 'g', 4),
+                            locale().toString(preset.tissue->poissonRatio, 'g', 4),
+                            locale().toString(preset.tissue->toolRadiusMm, 'g', 4)) +
                    QStringLiteral("\n") + tr("Source: %1").arg(QString::fromStdString(preset.tissue->source));
         mTissueCombo->addItem(QString::fromStdString(preset.name), path);
         mTissueCombo->setItemData(mTissueCombo->count() - 1, tip, Qt::ToolTipRole);
@@ -750,9 +758,9 @@ bool ParameterPanel::calibrateSlopes(QString* error) {
 
     TissuePreset after = before;
     after.params = calibration.params;
-    after.tissue = before.tissue.value_or(
-        TissueProperties{mYoungsSpin->value(), mPoissonSpin->value(), mToolRadiusSpin->value(),
-                         tr("Parameters panel default (gelatin phantom, as palpate-cli)").toStdString()});
+    after.tissue = before.tissue.value_or(TissueProperties{
+        mYoungsSpin->value(), mPoissonSpin->value(), mToolRadiusSpin->value(),
+        tr("Parameters panel default (gelatin phantom, as palpate-cli)").toStdString()});
     if (!samePreset(before, after))
         mUndoStack->push(new ParameterEditCommand(before, after, tr("Calibrate slopes"), ParameterEditCommand::kNoMerge,
                                                   /*alreadyShown=*/false,
@@ -766,10 +774,10 @@ bool ParameterPanel::calibrateSlopes(QString* error) {
     const int rings = calibration.params.ringCount;
     lines << (rings == 1 ? tr("1 ring") : tr("%1 rings").arg(rings)) + QLatin1Char(' ') +
                  tr("at vertex %1 of %2 vertices, pressed %3 mm in; %4 vertices compared.")
-                 .arg(touched)
-                 .arg(mesh->vertexCount())
-                 .arg(locale.toString(measured.indentationMm, 'f', 2))
-                 .arg(measured.verticesCompared);
+                     .arg(touched)
+                     .arg(mesh->vertexCount())
+                     .arg(locale.toString(measured.indentationMm, 'f', 2))
+                     .arg(measured.verticesCompared);
     for (const std::string& note : calibration.notes) lines << tr("Note: %1").arg(QString::fromStdString(note));
     mCalibratedParams = mShown.params;  // as the fields hold them
     mCalibrationText = lines.join(QLatin1Char('\n'));
@@ -781,15 +789,16 @@ bool ParameterPanel::calibrateSlopes(QString* error) {
 
 void ParameterPanel::updateCalibrationLabel() {
     QString text = mCalibrationText;
-    const bool stale = mCalibratedParams && !(presetFromFields().params.slopeMagnitudeMmPerN ==
-                                                  mCalibratedParams->slopeMagnitudeMmPerN &&
-                                              presetFromFields().params.ringCount == mCalibratedParams->ringCount);
+    const bool stale = mCalibratedParams &&
+                       !(presetFromFields().params.slopeMagnitudeMmPerN == mCalibratedParams->slopeMagnitudeMmPerN &&
+                         presetFromFields().params.ringCount == mCalibratedParams->ringCount);
     if (stale) text += QLatin1Char('\n') + tr("(for the calibrated slopes; the slopes have changed since)");
     mCalibrationLabel->setText(text);
     mCalibrationLabel->setVisible(!text.isEmpty());
     const bool problem = mCalibrationLabel->property("problem").toBool();
-    mCalibrationLabel->setStyleSheet(problem ? QStringLiteral("color: #c62828;") : stale ? QStringLiteral("color: #757575;")
-                                                                                          : QString());
+    mCalibrationLabel->setStyleSheet(problem ? QStringLiteral("color: #c62828;")
+                                     : stale ? QStringLiteral("color: #757575;")
+                                             : QString());
 }
 
 TissuePreset ParameterPanel::preset() const { return presetFromFields(); }
@@ -868,7 +877,8 @@ void ParameterPanel::updateModelRows() {
     for (const PanelField& f : mFields)
         if (std::any_of(std::begin(kModelSections), std::end(kModelSections),
                         [&](const ModelSection& m) { return f.section == m.section; }))
-            mModelParamsForm->setRowVisible(f.widget, f.section == section && (!*f.spec->onlyFor || name == f.spec->onlyFor));
+            mModelParamsForm->setRowVisible(f.widget,
+                                            f.section == section && (!*f.spec->onlyFor || name == f.spec->onlyFor));
     mModelParamsGroup->setVisible(!section.empty());
     // The slope rows stay for the slope-ring methods and volumetric-rings, which run on them.
     const bool slopeRing = kind == ModelKind::SlopeRing || kind == ModelKind::VolumetricRings;
@@ -959,16 +969,17 @@ void ParameterPanel::validate() {
                    QLatin1Char('\n') + QString::fromStdString(margin->text);
         }
         mStabilityLabel->setText(text);
-        mStabilityLabel->setToolTip(
-            tr("How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the "
-               "explicit mass-spring integrators' step bound h·ω_max < 2 (RK4 2.78), ω_max from Gershgorin's bound "
-               "and the sub-steps the model takes; for radius of influence and FFD the rendered stiffness k_s "
-               "against the device's passive stiffness (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has none."));
+        mStabilityLabel->setToolTip(tr(
+            "How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the "
+            "explicit mass-spring integrators' step bound h·ω_max < 2 (RK4 2.78), ω_max from Gershgorin's bound "
+            "and the sub-steps the model takes; for radius of influence and FFD the rendered stiffness k_s "
+            "against the device's passive stiffness (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has none."));
         markField(mStabilityLabel, "unstable", beyond);
     } else {
-        mStabilityLabel->setToolTip(tr("The contact force iteration converges while α·(1 + gain) < 2, with the loop "
-                                       "gain |m1| × k_c (docs/method.md). The margin is how far below 2 it stays: "
-                                       "1 − α·(1 + gain) / 2."));
+        mStabilityLabel->setToolTip(
+            tr("The contact force iteration converges while α·(1 + gain) < 2, with the loop "
+               "gain |m1| × k_c (docs/method.md). The margin is how far below 2 it stays: "
+               "1 − α·(1 + gain) / 2."));
     }
 
     // Allowed, but not the paper's: slopes above 1 mm/N under a raised limit.
@@ -1111,7 +1122,8 @@ void ParameterPanel::savePresetDialog() {
     if (!mShown.name.empty())
         start = QDir(mLastDirectory.isEmpty() ? QDir::currentPath() : mLastDirectory)
                     .filePath(QString::fromStdString(mShown.name) + QStringLiteral(".json"));
-    QString path = QFileDialog::getSaveFileName(this, tr("Save preset"), start, tr("Tissue presets (*.json);;All files (*)"));
+    QString path = QFileDialog::getSaveFileName(this, tr("Save preset"), start,
+                                                tr("Tissue presets (*.json);;All files (*)"));
     if (path.isEmpty()) return;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
     savePresetFile(path);

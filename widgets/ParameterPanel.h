@@ -8,9 +8,9 @@
 // the tool radius, the shipped tissue presets, and Calibrate slopes for the current mesh with the
 // error the calibrated model leaves against the flat punch.
 
-#include "engine/Rings.h"
-#include "engine/TissueMesh.h"
-#include "engine/TissuePreset.h"
+#include "engine/core/Rings.h"
+#include "engine/core/TissueMesh.h"
+#include "engine/scene/TissuePreset.h"
 #include "engine/accuracy/Calibration.h"
 #include "engine/stability/StabilityMargin.h"
 

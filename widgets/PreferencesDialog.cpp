@@ -1,6 +1,6 @@
 #include "widgets/PreferencesDialog.h"
 
-#include "device/DeviceUri.h"
+#include "device/open/DeviceUri.h"
 
 #include <QComboBox>
 #include <QCoreApplication>

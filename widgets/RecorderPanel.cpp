@@ -1,6 +1,6 @@
 #include "widgets/RecorderPanel.h"
 
-#include "engine/record/RecordingPlayer.h"
+#include "engine/replay/RecordingPlayer.h"
 #include "engine/record/RecordingReader.h"
 #include "widgets/RecordingTimeline.h"
 

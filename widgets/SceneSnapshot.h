@@ -2,7 +2,7 @@
 // What the GUI shows of the simulation at one instant. The GUI's snapshot observer fills it from the
 // haptic loop's newest HapticSnapshot (docs/architecture.md): the GUI never steps the model itself.
 
-#include "engine/TissueMesh.h"
+#include "engine/core/TissueMesh.h"
 
 #include <glm/vec3.hpp>
 

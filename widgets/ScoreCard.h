@@ -3,7 +3,7 @@
 // breakdown (each metric's value, sub-score, weight and points) and any warnings. It only shows;
 // the buttons ask the window to export the PDF report or to open the trainee's history.
 
-#include "engine/scoring/ScoreReport.h"
+#include "engine/exercise/ScoreReport.h"
 
 #include <QString>
 #include <QWidget>

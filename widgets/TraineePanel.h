@@ -5,8 +5,8 @@
 // the score card takes the guidance's place. The panel only shows and asks; the window's
 // ExerciseController runs the session.
 
-#include "engine/scoring/Exercise.h"
-#include "engine/scoring/ScoreReport.h"
+#include "engine/exercise/Exercise.h"
+#include "engine/exercise/ScoreReport.h"
 
 #include <QPair>
 #include <QString>

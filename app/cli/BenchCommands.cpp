@@ -1,6 +1,6 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "engine/Table1Bench.h"
+#include "engine/bench/Table1Bench.h"
 
 #include <nlohmann/json.hpp>
 

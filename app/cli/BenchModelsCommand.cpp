@@ -7,11 +7,11 @@
 // the reason.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "engine/MeshGenerator.h"
-#include "engine/Octree.h"
-#include "engine/SceneTarget.h"
-#include "engine/TickTimer.h"
-#include "engine/ToolPath.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/Octree.h"
+#include "engine/core/SceneTarget.h"
+#include "engine/models/TickTimer.h"
+#include "engine/core/ToolPath.h"
 #include "engine/accuracy/ModelError.h"
 #include "engine/models/ModelRegistry.h"
 

@@ -3,12 +3,12 @@
 // tissue preset written with them.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/cli/ToolContactOptions.h"
-#include "engine/Octree.h"
-#include "engine/SceneTarget.h"
+#include "engine/core/Octree.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/models/slopering/CoherentSlopeRing.h"
-#include "engine/TissuePreset.h"
+#include "engine/scene/TissuePreset.h"
 #include "engine/accuracy/ModelError.h"
 
 #include <nlohmann/json.hpp>

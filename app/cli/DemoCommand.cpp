@@ -3,11 +3,11 @@
 // happened. What the run command does when there is no display.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/DefaultScene.h"
-#include "device/DeviceUri.h"
+#include "app/common/DefaultScene.h"
+#include "device/open/DeviceUri.h"
 #include "device/SimulatedDevice.h"
-#include "engine/HapticLoop.h"
-#include "engine/SceneTarget.h"
+#include "engine/loop/HapticLoop.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/models/ModelRegistry.h"
 
 #include <glm/geometric.hpp>

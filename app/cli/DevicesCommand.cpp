@@ -2,8 +2,8 @@
 // (with the URI to pass as --device, and the udev rule to install when a node is not accessible).
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "device/DeviceDiscovery.h"
-#include "device/DeviceUri.h"
+#include "device/open/DeviceDiscovery.h"
+#include "device/open/DeviceUri.h"
 
 #include <nlohmann/json.hpp>
 

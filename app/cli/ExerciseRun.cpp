@@ -1,6 +1,6 @@
 #include "app/cli/ExerciseRun.h"
 
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // inclusion), its recording's note carries the exercise, marks are pressed at the given loop
 // times (a scripted trainee's button), and a LiveScorer follows the recording for the score.
 
-#include "engine/HapticLoop.h"
+#include "engine/loop/HapticLoop.h"
 #include "engine/record/RecordingSession.h"
 #include "engine/scoring/ExerciseSession.h"
 #include "engine/scoring/LiveScorer.h"

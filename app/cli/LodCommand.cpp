@@ -3,13 +3,13 @@
 // ring count on this machine and picks the cheapest that meets an accuracy target and a tick budget.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/cli/ToolContactOptions.h"
-#include "engine/TissuePreset.h"
+#include "engine/scene/TissuePreset.h"
 #include "engine/lod/LevelCache.h"
 #include "engine/lod/LodMeasure.h"
 #include "engine/lod/LodPlanner.h"
-#include "engine/scoring/ExerciseFile.h"
+#include "engine/exercise/ExerciseFile.h"
 
 #include <nlohmann/json.hpp>
 

@@ -2,10 +2,10 @@
 // observer thread reading snapshots the way the GUI does; prints the loop's timing.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/DefaultScene.h"
-#include "device/DeviceUri.h"
-#include "engine/HapticLoop.h"
-#include "engine/SceneTarget.h"
+#include "app/common/DefaultScene.h"
+#include "device/open/DeviceUri.h"
+#include "engine/loop/HapticLoop.h"
+#include "engine/core/SceneTarget.h"
 
 #include <nlohmann/json.hpp>
 

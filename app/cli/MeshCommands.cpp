@@ -1,7 +1,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "engine/MeshGenerator.h"
-#include "engine/TissueMesh.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/TissueMesh.h"
 
 #include <iostream>
 

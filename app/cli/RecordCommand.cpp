@@ -2,7 +2,7 @@
 // is intact (and what a damaged one still holds), its ticks as CSV, and a bit-exact replay check.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "engine/record/RecordingPlayer.h"
+#include "engine/replay/RecordingPlayer.h"
 #include "engine/record/RecordingReader.h"
 
 #include <nlohmann/json.hpp>

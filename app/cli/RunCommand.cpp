@@ -2,12 +2,12 @@
 // the GUI), optionally recorded to a file for info/verify/export/replay (RecordCommand.cpp).
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/cli/ExerciseRun.h"
-#include "device/DeviceUri.h"
-#include "engine/HapticLoop.h"
-#include "engine/SceneTarget.h"
-#include "engine/TissuePreset.h"
+#include "device/open/DeviceUri.h"
+#include "engine/loop/HapticLoop.h"
+#include "engine/core/SceneTarget.h"
+#include "engine/scene/TissuePreset.h"
 #include "engine/record/RecordingSession.h"
 
 #include <nlohmann/json.hpp>

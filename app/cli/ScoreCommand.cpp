@@ -3,7 +3,7 @@
 // tick by tick by the same scorer the live session uses (docs/scoring.md).
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
 

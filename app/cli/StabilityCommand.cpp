@@ -6,7 +6,7 @@
 #include "engine/stability/StabilityModels.h"
 
 #ifdef PALPATE_HAVE_CHARTS
-#include "widgets/StabilityMapImage.h"
+#include "app/report/StabilityMapImage.h"
 #endif
 
 #include <nlohmann/json.hpp>

@@ -6,7 +6,7 @@
 #include "engine/accuracy/AccuracySweep.h"
 
 #ifdef PALPATE_HAVE_CHARTS
-#include "widgets/SweepChartImage.h"
+#include "app/report/SweepChartImage.h"
 #endif
 
 #include <fstream>

@@ -1,6 +1,6 @@
 #include "app/cli/ToolContactOptions.h"
 
-#include "engine/TissuePreset.h"
+#include "engine/scene/TissuePreset.h"
 
 #include <cmath>
 #include <cstdlib>

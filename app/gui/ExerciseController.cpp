@@ -1,11 +1,11 @@
 #include "app/gui/ExerciseController.h"
 
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/ScoreCard.h"
-#include "widgets/ScoreReportPdf.h"
+#include "app/report/ScoreReportPdf.h"
 #include "widgets/TraineePanel.h"
 #include "widgets/Viewport.h"
 

@@ -13,7 +13,7 @@
 #include "app/gui/HapticSession.h"
 #include "engine/scoring/ExerciseSession.h"
 #include "engine/scoring/LiveScorer.h"
-#include "widgets/ResultsDatabase.h"
+#include "app/report/ResultsDatabase.h"
 
 #include <QDateTime>
 #include <QObject>

@@ -1,6 +1,6 @@
 #include "app/gui/FirstRun.h"
 
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/ExerciseController.h"
 #include "app/gui/MainWindow.h"
 #include "widgets/ParameterPanel.h"

@@ -1,10 +1,10 @@
 #include "app/gui/HapticSession.h"
 
-#include "device/DeviceUri.h"
+#include "device/open/DeviceUri.h"
 #include "device/MouseDevice.h"
 #include "device/SimulatedDevice.h"
-#include "engine/HapticScene.h"
-#include "engine/SceneTarget.h"
+#include "engine/scene/HapticScene.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/record/RecordedToolDevice.h"
 
 #include <exception>

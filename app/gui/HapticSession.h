@@ -6,9 +6,9 @@
 // Qt-free; every member is called from one thread (the GUI's).
 
 #include "app/gui/SnapshotObserver.h"
-#include "engine/HapticLoop.h"
-#include "engine/TissuePreset.h"
-#include "engine/TissueMesh.h"
+#include "engine/loop/HapticLoop.h"
+#include "engine/scene/TissuePreset.h"
+#include "engine/core/TissueMesh.h"
 #include "engine/record/RecordingSession.h"
 #include "engine/scoring/ExerciseSession.h"
 

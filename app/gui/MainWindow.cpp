@@ -1,9 +1,9 @@
 #include "app/gui/MainWindow.h"
 
-#include "device/DeviceUri.h"
-#include "engine/HapticSnapshot.h"
-#include "engine/TissuePreset.h"
-#include "app/cli/DefaultScene.h"
+#include "device/open/DeviceUri.h"
+#include "engine/loop/HapticSnapshot.h"
+#include "engine/scene/TissuePreset.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/ExerciseController.h"
 #include "app/gui/FirstRun.h"
 #include "widgets/ChartsPanel.h"

@@ -5,7 +5,7 @@
 // snapshots (docs/architecture.md) and sends it commands. Docks (parameters, device, recorder...) come later.
 
 #include "app/gui/HapticSession.h"
-#include "widgets/ResultsDatabase.h"
+#include "app/report/ResultsDatabase.h"
 #include "widgets/ViewportFactory.h"
 
 #include <QElapsedTimer>
@@ -57,7 +57,7 @@ public:
     /// the current scene stays and the error (naming the file and the problem) is returned; "" on
     /// success. Shows no dialog. The first mesh is drawn at once, later ones once the loop runs them.
     QString loadMesh(const QString& path);
-    /// Switches the device (a URI, see device/DeviceUri.h). "" or an error naming the URI; no dialog.
+    /// Switches the device (a URI, see device/open/DeviceUri.h). "" or an error naming the URI; no dialog.
     /// Real hardware (HapticSession::opensSlowly) is opened on a worker thread while the loop runs:
     /// then "" means "opening"; the device arrives later (deviceOpening() until then) and an error
     /// is shown in the Device dock and the status bar.

@@ -6,7 +6,7 @@
 // which vertices really changed (view().changed, under a new view().version), so that the viewport
 // can upload just those. Qt-free, single thread.
 
-#include "engine/HapticSnapshot.h"
+#include "engine/loop/HapticSnapshot.h"
 #include "widgets/SceneSnapshot.h"
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 #include "app/gui/ViewportBenchmark.h"
 
 #include "app/gui/HapticSession.h"
-#include "engine/MeshGenerator.h"
+#include "engine/core/MeshGenerator.h"
 #include "widgets/MeshViewport.h"
 
 #include <QApplication>

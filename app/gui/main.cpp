@@ -1,10 +1,10 @@
 // palpate: the GUI. Exit codes: 0 success, 1 failure (bad mesh or device, screenshot not written),
 // 2 bad usage.
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/FirstRun.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/ViewportBenchmark.h"
-#include "device/DeviceUri.h"
+#include "device/open/DeviceUri.h"
 #include "widgets/RecorderPanel.h"
 
 #include <QApplication>

@@ -1,9 +1,9 @@
 #include "engine/accuracy/AccuracySweep.h"
 
-#include "engine/Octree.h"
-#include "engine/SceneTarget.h"
-#include "engine/TickTimer.h"
-#include "engine/ToolPath.h"
+#include "engine/core/Octree.h"
+#include "engine/core/SceneTarget.h"
+#include "engine/models/TickTimer.h"
+#include "engine/core/ToolPath.h"
 #include "engine/models/ModelRegistry.h"
 
 #include <nlohmann/json.hpp>

@@ -4,7 +4,7 @@
 // (ModelError). Slope-ring models use slopes calibrated from the same material and tool, so the
 // error measures the model's structure (rings, resolution), not a badly chosen parameter.
 
-#include "engine/MeshGenerator.h"
+#include "engine/core/MeshGenerator.h"
 #include "engine/models/slopering/SlopeRingMethod.h"
 #include "engine/accuracy/Calibration.h"
 #include "engine/accuracy/ModelError.h"

@@ -1,7 +1,7 @@
 #include "engine/accuracy/Calibration.h"
 
-#include "engine/Rings.h"
-#include "engine/accuracy/SurfaceFill.h"
+#include "engine/core/Rings.h"
+#include "engine/fem/SurfaceFill.h"
 
 #include <glm/geometric.hpp>
 

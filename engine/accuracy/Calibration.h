@@ -6,8 +6,8 @@
 // same indentation. See docs/accuracy.md.
 
 #include "engine/models/slopering/SlopeRingParams.h"
-#include "engine/TissueMesh.h"
-#include "engine/accuracy/ClosedForms.h"
+#include "engine/core/TissueMesh.h"
+#include "engine/fem/ClosedForms.h"
 
 #include <string>
 #include <vector>
@@ -48,7 +48,7 @@ SlopeCalibration calibrateSlopesFromDisplacements(const TissueMesh& mesh, Vertex
                                                   const SlopeRingParams& base);
 
 /// Per mesh from the reference FEM (docs/calibration.md, docs/accuracy.md): the mesh filled with tetrahedra
-/// (engine/accuracy/SurfaceFill.h: tissue over a rigid core), the tool's footprint pressed by
+/// (engine/fem/SurfaceFill.h: tissue over a rigid core), the tool's footprint pressed by
 /// `indentationMm` at `touched`, then calibrateSlopesFromDisplacements on the FEM's surface.
 /// `referenceNormalDisplacementMm` (optional) receives the FEM field for error measurement.
 SlopeCalibration calibrateSlopesFromFem(const TissueMesh& mesh, VertexId touched, const ToolContact& contact,

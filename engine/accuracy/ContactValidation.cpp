@@ -1,6 +1,6 @@
 #include "engine/accuracy/ContactValidation.h"
 
-#include "engine/accuracy/ClosedForms.h"
+#include "engine/fem/ClosedForms.h"
 
 #include <chrono>
 #include <cmath>

@@ -3,8 +3,8 @@
 // sphere pressed into the graded block, with the Boussinesq field of the self-consistent load on
 // the far faces; errors as docs/accuracy.md defines them, and the observed convergence rate.
 
-#include "engine/accuracy/GradedBlock.h"
-#include "engine/accuracy/LinearElasticFem.h"
+#include "engine/fem/GradedBlock.h"
+#include "engine/fem/LinearElasticFem.h"
 
 #include <optional>
 #include <string>

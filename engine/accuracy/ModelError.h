@@ -4,8 +4,8 @@
 // indentation. Displacement error: RMS over the vertices within 5 tool radii of the contact of
 // (u_model - u_punch), divided by the peak (the indentation). Force error: |F_model - F_punch| / F_punch.
 
-#include "engine/DeformationModel.h"
-#include "engine/TissueMesh.h"
+#include "engine/models/DeformationModel.h"
+#include "engine/core/TissueMesh.h"
 #include "engine/accuracy/Calibration.h"
 
 namespace palpate {

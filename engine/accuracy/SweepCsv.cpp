@@ -1,6 +1,6 @@
 #include "engine/accuracy/SweepCsv.h"
 
-#include "engine/Rings.h"
+#include "engine/core/Rings.h"
 #include "engine/models/ModelRegistry.h"
 
 #include <charconv>

@@ -76,7 +76,10 @@ void readFields(JsonReader& r, const Json& object, const std::string& section, F
                 }
                 std::string names;
                 for (std::size_t i = 0; i < f.spec.choices.size(); ++i)
-                    names += std::string(i == 0 ? "" : i + 1 == f.spec.choices.size() ? " or " : ", ") + f.spec.choices[i];
+                    names += std::string(i == 0                           ? ""
+                                         : i + 1 == f.spec.choices.size() ? " or "
+                                                                          : ", ") +
+                             f.spec.choices[i];
                 r.error(path, "unknown " + std::string(f.spec.choiceNoun) + " '" + name + "' (use " + names + ")");
                 break;
             }
@@ -120,7 +123,8 @@ Json fieldsToJson(FieldTable<S> table, const S& s) {
             case FieldType::Whole: j[f.spec.jsonKey] = int(f.get(s, -1)); break;
             case FieldType::Choice: {
                 const int i = int(f.get(s, -1));
-                j[f.spec.jsonKey] = i >= 0 && std::size_t(i) < f.spec.choices.size() ? f.spec.choices[std::size_t(i)] : "?";
+                j[f.spec.jsonKey] = i >= 0 && std::size_t(i) < f.spec.choices.size() ? f.spec.choices[std::size_t(i)]
+                                                                                     : "?";
                 break;
             }
             case FieldType::RealList: {

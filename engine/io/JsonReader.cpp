@@ -35,7 +35,8 @@ bool JsonReader::object(const Json& j, const std::string& key, const std::vector
         return false;
     }
     for (const auto& item : j.items())
-        if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end()) error(join(key, item.key()), "unknown key");
+        if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end())
+            error(join(key, item.key()), "unknown key");
     return true;
 }
 
@@ -53,8 +54,8 @@ bool JsonReader::number(const Json& parent, const std::string& path, const char*
     return true;
 }
 
-bool JsonReader::number(const Json& parent, const std::string& path, const char* key, double lo, double hi,
-                        double& out, bool required) {
+bool JsonReader::number(const Json& parent, const std::string& path, const char* key, double lo, double hi, double& out,
+                        bool required) {
     double x = 0.0;
     if (!number(parent, path, key, x, required)) return false;
     if (!std::isfinite(x) || x < lo || x > hi) {

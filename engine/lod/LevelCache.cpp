@@ -1,7 +1,7 @@
 #include "engine/lod/LevelCache.h"
 
-#include "engine/AtomicFile.h"
-#include "engine/record/MeshHash.h"
+#include "engine/io/AtomicFile.h"
+#include "engine/core/MeshHash.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,8 +1,8 @@
 #include "engine/lod/LodMeasure.h"
 
-#include "engine/Octree.h"
-#include "engine/Rings.h"
-#include "engine/SceneTarget.h"
+#include "engine/core/Octree.h"
+#include "engine/core/Rings.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/models/ModelRegistry.h"
 
 #include <glm/geometric.hpp>

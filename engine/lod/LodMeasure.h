@@ -7,8 +7,8 @@
 // coarse level is not judged only at its own few vertices.
 
 #include "engine/models/slopering/SlopeRingParams.h"
-#include "engine/TickTimer.h"
-#include "engine/ToolPath.h"
+#include "engine/models/TickTimer.h"
+#include "engine/core/ToolPath.h"
 #include "engine/accuracy/Calibration.h"
 #include "engine/accuracy/ModelError.h"
 #include "engine/lod/LodPlanner.h"

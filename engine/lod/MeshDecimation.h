@@ -5,7 +5,7 @@
 // manifold closed and manifold. A collapse keeps one end's position, so every coarse vertex sits
 // exactly on a vertex of the finer surface.
 
-#include "engine/TissueMesh.h"
+#include "engine/core/TissueMesh.h"
 
 #include <array>
 #include <atomic>

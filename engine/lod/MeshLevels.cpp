@@ -1,6 +1,6 @@
 #include "engine/lod/MeshLevels.h"
 
-#include "engine/record/MeshHash.h"
+#include "engine/core/MeshHash.h"
 
 #include <algorithm>
 #include <chrono>

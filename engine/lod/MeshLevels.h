@@ -4,7 +4,7 @@
 // (SurfaceEmbedding.h), so that a deformation computed on any level can be shown on any other.
 // Generation may run on a worker thread: it reports progress and stops when asked.
 
-#include "engine/TissueMesh.h"
+#include "engine/core/TissueMesh.h"
 #include "engine/lod/MeshDecimation.h"
 #include "engine/lod/SurfaceEmbedding.h"
 
@@ -43,7 +43,7 @@ using LodProgressFn = std::function<void(double fraction, const std::string& sta
 
 struct MeshLevels {
     std::vector<MeshLevel> levels;   ///< [0] is the source; then coarser, fewer vertices each
-    std::uint64_t sourceHash = 0;    ///< meshHash of the source (engine/record/MeshHash.h)
+    std::uint64_t sourceHash = 0;    ///< meshHash of the source (engine/core/MeshHash.h)
     bool cancelled = false;          ///< generation stopped early; the levels made so far are kept
     std::vector<std::string> notes;  ///< targets the guards did not let the decimater reach, ...
 

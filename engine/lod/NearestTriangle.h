@@ -4,7 +4,7 @@
 // million-vertex hierarchy take hours. Exact: the search grows shell by shell until no unvisited
 // cell can hold a nearer triangle.
 
-#include "engine/TissueMesh.h"
+#include "engine/core/TissueMesh.h"
 
 #include <glm/vec3.hpp>
 

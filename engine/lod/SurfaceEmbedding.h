@@ -6,7 +6,7 @@
 // model is coarse, or the reverse. The coordinates are those of the point's projection onto the
 // triangle's plane (not clamped to the triangle), so the rest positions round-trip exactly.
 
-#include "engine/TissueMesh.h"
+#include "engine/core/TissueMesh.h"
 
 #include <glm/vec3.hpp>
 

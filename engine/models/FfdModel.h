@@ -5,8 +5,8 @@
 // along its rest normal, and every vertex follows the lattice. Geometric, not dynamic: the dent is
 // a function of the contact. Bernstein functions reach the whole lattice, so a tick is O(n).
 
-#include "engine/DeformationModel.h"
-#include "engine/Octree.h"
+#include "engine/models/DeformationModel.h"
+#include "engine/core/Octree.h"
 #include "engine/models/FfdLattice.h"
 #include "engine/models/FfdParams.h"
 

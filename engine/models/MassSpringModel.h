@@ -6,9 +6,9 @@
 // every tick (O(n), its point on the chart); the local variant only the touched vertex's rings and
 // the vertices still moving, with everything else pinned at rest. Both share every formula.
 
-#include "engine/DeformationModel.h"
-#include "engine/Octree.h"
-#include "engine/Rings.h"
+#include "engine/models/DeformationModel.h"
+#include "engine/core/Octree.h"
+#include "engine/core/Rings.h"
 #include "engine/models/MassSpringParams.h"
 
 #include <vector>

@@ -117,8 +117,8 @@ std::unique_ptr<DeformationModel> makeModel(const ModelDef& def, const TissueMes
     switch (def.kind) {
         case ModelKind::SlopeRing: return makeSlopeRing(mesh, octree, def.slopeRing, def.slopeRingMethod);
         case ModelKind::MassSpringSymplectic:
-            return std::make_unique<MassSpringModel>(mesh, octree, def.massSpring, MassSpringIntegrator::SymplecticEuler,
-                                                     MassSpringScope::Whole);
+            return std::make_unique<MassSpringModel>(mesh, octree, def.massSpring,
+                                                     MassSpringIntegrator::SymplecticEuler, MassSpringScope::Whole);
         case ModelKind::MassSpringRk4:
             return std::make_unique<MassSpringModel>(mesh, octree, def.massSpring, MassSpringIntegrator::Rk4,
                                                      MassSpringScope::Whole);

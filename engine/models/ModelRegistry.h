@@ -6,12 +6,12 @@
 // their SlopeRingMethod names (coherent, proposed, hybrid, previous; "palpate" is read as
 // coherent, as files written before named it). See docs/models.md.
 
-#include "engine/DeformationModel.h"
-#include "engine/Octree.h"
+#include "engine/models/DeformationModel.h"
+#include "engine/core/Octree.h"
 #include "engine/models/slopering/SlopeRingMethod.h"
 #include "engine/models/slopering/SlopeRingParams.h"
-#include "engine/TissueMesh.h"
-#include "engine/accuracy/TetMesh.h"
+#include "engine/core/TissueMesh.h"
+#include "engine/fem/TetMesh.h"
 #include "engine/models/FfdParams.h"
 #include "engine/models/MassSpringParams.h"
 #include "engine/models/RadiusOfInfluenceParams.h"

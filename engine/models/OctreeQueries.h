@@ -3,8 +3,8 @@
 // of rest positions): the exact nearest vertex when no vertex is farther than a known bound from
 // its rest position, and the rest vertices within a radius of a point. Fixed stacks: no allocation.
 
-#include "engine/Octree.h"
-#include "engine/TissueMesh.h"
+#include "engine/core/Octree.h"
+#include "engine/core/TissueMesh.h"
 
 #include <glm/vec3.hpp>
 

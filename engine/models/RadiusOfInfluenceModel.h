@@ -5,8 +5,8 @@
 // (RadiusOfInfluenceParams). Independent of the mesh's edges. Geometric, not dynamic: the dent is a
 // function of the contact and disappears with it. Work per tick: the vertices in the radius.
 
-#include "engine/DeformationModel.h"
-#include "engine/Octree.h"
+#include "engine/models/DeformationModel.h"
+#include "engine/core/Octree.h"
 #include "engine/models/RadiusOfInfluenceParams.h"
 
 #include <vector>

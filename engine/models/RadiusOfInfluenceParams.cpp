@@ -1,6 +1,5 @@
 #include "engine/models/RadiusOfInfluenceParams.h"
 
-
 #include <algorithm>
 #include <cmath>
 
@@ -31,27 +30,52 @@ int coefficientsUsed(const RadiusOfInfluenceParams& p) { return std::clamp(p.deg
 
 const FieldDef<RadiusOfInfluenceParams> kFields[] = {
     field<&RadiusOfInfluenceParams::radiusMm>(
-        {.key = "radiusMm", .jsonKey = "radius_mm", .unit = "mm", .lo = 0, .hi = kNoLimit, .lower = Bound::Open,
+        {.key = "radiusMm",
+         .jsonKey = "radius_mm",
+         .unit = "mm",
+         .lo = 0,
+         .hi = kNoLimit,
+         .lower = Bound::Open,
          .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Radius R:"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Every vertex within this distance of the touched vertex (in 3D, whatever the edges) moves, mm."),
-         .decimals = 4, .step = 1.0}),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "Every vertex within this distance of the touched vertex (in 3D, whatever the edges) moves, mm."),
+         .decimals = 4,
+         .step = 1.0}),
     customField<RadiusOfInfluenceParams>(
-        {.key = "degree", .jsonKey = "degree", .lo = 2, .hi = kMaxProfileDegree, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Profile degree:"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "The profile is (1 − r/R)^degree (2..8); a preset file's own coefficients are kept until the degree "
-                "changes.")},
+        {.key = "degree",
+         .jsonKey = "degree",
+         .lo = 2,
+         .hi = kMaxProfileDegree,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Profile degree:"),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "The profile is (1 − r/R)^degree (2..8); a preset file's own coefficients are kept until the degree "
+             "changes.")},
         FieldType::Whole, [](const RadiusOfInfluenceParams& p, int) { return double(p.degree); },
         [](RadiusOfInfluenceParams& p, int, double v) {
             if (int(v) == p.degree) return;
             p.degree = int(v);
             p.coefficients = powerProfileCoefficients(int(v));
         }),
-    listField<&RadiusOfInfluenceParams::coefficients, coefficientsUsed>(
-        {.key = "coefficients", .jsonKey = "coefficients", .lo = -kNoLimit, .hi = kNoLimit, 
-         .decimals = 6, .step = 0.1, .sizeKey = "degree"}),
+    listField<&RadiusOfInfluenceParams::coefficients, coefficientsUsed>({.key = "coefficients",
+                                                                         .jsonKey = "coefficients",
+                                                                         .lo = -kNoLimit,
+                                                                         .hi = kNoLimit,
+                                                                         .decimals = 6,
+                                                                         .step = 0.1,
+                                                                         .sizeKey = "degree"}),
     field<&RadiusOfInfluenceParams::stiffnessNPerMm>(
-        {.key = "stiffnessNPerMm", .jsonKey = "stiffness_n_per_mm", .unit = "N/mm", .lo = 0, .hi = kNoLimit,
-         .lower = Bound::Open, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Stiffness k_s:"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "The rendered force is k_s times the touched vertex's displacement, N/mm."), .decimals = 6,
+        {.key = "stiffnessNPerMm",
+         .jsonKey = "stiffness_n_per_mm",
+         .unit = "N/mm",
+         .lo = 0,
+         .hi = kNoLimit,
+         .lower = Bound::Open,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Stiffness k_s:"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+                                       "The rendered force is k_s times the touched vertex's displacement, N/mm."),
+         .decimals = 6,
          .step = 0.01}),
 };
 

@@ -1,6 +1,6 @@
 #include "engine/models/VolumetricFill.h"
 
-#include "engine/accuracy/SurfaceFill.h"
+#include "engine/fem/SurfaceFill.h"
 
 #include <glm/geometric.hpp>
 

@@ -2,13 +2,13 @@
 // The tetrahedral mesh the volumetric slope-ring model runs on. Its first nodes are the surface's
 // vertices in the TissueMesh's order, so the display and the error measurement work unchanged.
 
-#include "engine/TissueMesh.h"
-#include "engine/accuracy/TetMesh.h"
+#include "engine/core/TissueMesh.h"
+#include "engine/fem/TetMesh.h"
 
 namespace palpate {
 
 /// Fills a closed surface with tetrahedra for the volumetric model: the lead team's filler
-/// (engine/accuracy/SurfaceFill.h: prism layers extruded inward along the normals, default
+/// (engine/fem/SurfaceFill.h: prism layers extruded inward along the normals, default
 /// options), renumbered so that the surface vertices come first in the mesh's order and each
 /// vertex's inner nodes follow, layer by layer. Throws std::invalid_argument naming the problem
 /// when the surface cannot be filled. Not real-time.

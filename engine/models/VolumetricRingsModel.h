@@ -6,9 +6,9 @@
 // The tet mesh's first nodes are the surface vertices in the TissueMesh's order, so the surface
 // shown, searched and measured is those nodes' positions.
 
-#include "engine/DeformationModel.h"
-#include "engine/Octree.h"
-#include "engine/accuracy/TetMesh.h"
+#include "engine/models/DeformationModel.h"
+#include "engine/core/Octree.h"
+#include "engine/fem/TetMesh.h"
 #include "engine/models/VolumetricRingsParams.h"
 
 #include <vector>

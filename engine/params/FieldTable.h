@@ -33,19 +33,19 @@ enum class Bound { Closed, Open };
 
 /// Everything said about one field but how to reach it (the builders below add that).
 struct FieldSpec {
-    const char* key;           ///< the member's name: what Problems name ("anchorStiffnessNPerMm")
-    const char* jsonKey;       ///< the key in preset and exercise files ("anchor_stiffness_n_per_mm")
-    const char* unit = "";     ///< shown after a value ("N/mm"); "" when it has none
-    double lo = 0.0;           ///< valid values lie between lo and hi ...
+    const char* key;        ///< the member's name: what Problems name ("anchorStiffnessNPerMm")
+    const char* jsonKey;    ///< the key in preset and exercise files ("anchor_stiffness_n_per_mm")
+    const char* unit = "";  ///< shown after a value ("N/mm"); "" when it has none
+    double lo = 0.0;        ///< valid values lie between lo and hi ...
     double hi = kNoLimit;
     Bound lower = Bound::Closed;  ///< ... with or without the ends
     Bound upper = Bound::Closed;
-    const char* label = "";    ///< the panel's row label, English (the panel translates it)
-    const char* name = "";     ///< the field in a sentence ("damping ratio"); "": the label without its colon
-    const char* tip = "";      ///< the panel's tooltip, English
-    int decimals = 0;          ///< the panel's decimals (Real, RealList)
-    double step = 1.0;         ///< the panel's single step
-    bool required = false;     ///< a file's section must hold this key
+    const char* label = "";  ///< the panel's row label, English (the panel translates it)
+    const char* name = "";   ///< the field in a sentence ("damping ratio"); "": the label without its colon
+    const char* tip = "";    ///< the panel's tooltip, English
+    int decimals = 0;        ///< the panel's decimals (Real, RealList)
+    double step = 1.0;       ///< the panel's single step
+    bool required = false;   ///< a file's section must hold this key
     std::span<const char* const> choices = {};       ///< Choice: each value's name in files
     std::span<const char* const> choiceLabels = {};  ///< Choice: each value's text in the panel
     const char* choiceNoun = "value";                ///< Choice: "unknown <noun> 'x'"
@@ -76,7 +76,7 @@ template <class S>
 struct FieldDef {
     FieldSpec spec;
     FieldType type;
-    double (*get)(const S& s, int index);       ///< index: the RealList entry; ignored otherwise
+    double (*get)(const S& s, int index);        ///< index: the RealList entry; ignored otherwise
     void (*set)(S& s, int index, double value);  ///< the caller keeps an int field's value in int range
     int (*used)(const S& s) = nullptr;           ///< RealList: entries in use
     int capacity = 1;                            ///< RealList: entries stored
@@ -115,9 +115,9 @@ template <auto Member>
 constexpr FieldDef<fielddetail::OwnerOf<Member>> field(const FieldSpec& spec) {
     using S = fielddetail::OwnerOf<Member>;
     using T = fielddetail::TypeOf<Member>;
-    constexpr FieldType type = std::is_enum_v<T>                  ? FieldType::Choice
-                               : std::is_same_v<T, double>         ? FieldType::Real
-                                                                   : FieldType::Whole;
+    constexpr FieldType type = std::is_enum_v<T>           ? FieldType::Choice
+                               : std::is_same_v<T, double> ? FieldType::Real
+                                                           : FieldType::Whole;
     static_assert(std::is_enum_v<T> || std::is_same_v<T, double> || std::is_same_v<T, int>,
                   "a field is a double, an int or an enum");
     FieldSpec s = spec;
@@ -137,7 +137,8 @@ template <auto Member, auto Used>
 constexpr FieldDef<fielddetail::OwnerOf<Member>> listField(const FieldSpec& spec) {
     using S = fielddetail::OwnerOf<Member>;
     using A = fielddetail::TypeOf<Member>;
-    return FieldDef<S>{spec, FieldType::RealList,
+    return FieldDef<S>{spec,
+                       FieldType::RealList,
                        [](const S& v, int i) {
                            constexpr int capacity = int(std::tuple_size_v<A>);
                            return i >= 0 && i < capacity ? (v.*Member)[std::size_t(i)] : 0.0;
@@ -198,7 +199,8 @@ void checkFields(FieldTable<S> table, const S& s, Problems& out) {
             const double v = f.get(s, i);
             if (inRange(f, v)) continue;
             const std::string unit = *f.spec.unit ? std::string(" ") + f.spec.unit : std::string();
-            out.push_back({f.spec.key, list ? i : -1, -1, f.nameOf(i) + " = " + formatNumber(v) + unit + " " + rangeRule(f.spec)});
+            out.push_back({f.spec.key, list ? i : -1, -1,
+                           f.nameOf(i) + " = " + formatNumber(v) + unit + " " + rangeRule(f.spec)});
         }
     }
 }

@@ -5,7 +5,7 @@
 // scene and parameters run now: an instructor's demonstration, re-felt on another tissue. The
 // recording is read whole at open(); the tick reads it without allocating.
 
-#include "device/DeviceUri.h"
+#include "device/open/DeviceUri.h"
 #include "device/HapticDevice.h"
 
 #include <cstdint>

@@ -77,7 +77,8 @@ SlopeRingParams decodeParams(ByteReader& r, const std::string& field) {
     SlopeRingParams p;
     for (const FieldDef<SlopeRingParams>& f : slopeRingFields())
         for (int i = 0; i < f.capacity; ++i) {
-            const std::string name = field + "." + f.spec.key + (f.type == FieldType::RealList ? "[" + std::to_string(i) + "]" : "");
+            const std::string name = field + "." + f.spec.key +
+                                     (f.type == FieldType::RealList ? "[" + std::to_string(i) + "]" : "");
             if (f.type != FieldType::Whole) {
                 f.set(p, i, r.f64(name));
                 continue;
@@ -85,7 +86,8 @@ SlopeRingParams decodeParams(ByteReader& r, const std::string& field) {
             // A count sizes what follows: refused here when out of range, not at validation.
             const int v = r.i32(name);
             if (r.ok() && !inRange(f, v))
-                r.fail(name, std::to_string(v) + " is outside " + formatNumber(f.spec.lo) + ".." + formatNumber(f.spec.hi));
+                r.fail(name,
+                       std::to_string(v) + " is outside " + formatNumber(f.spec.lo) + ".." + formatNumber(f.spec.hi));
             f.set(p, i, v);
         }
     return p;

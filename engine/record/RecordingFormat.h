@@ -11,7 +11,7 @@
 
 #include "device/HapticDevice.h"
 #include "device/SafetyFilter.h"
-#include "engine/Octree.h"
+#include "engine/core/Octree.h"
 #include "engine/models/slopering/SlopeRingMethod.h"
 #include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/record/ByteIo.h"

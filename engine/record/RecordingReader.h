@@ -9,7 +9,7 @@
 // tickAt()/decodeChunk() for the ticks themselves, decoded on demand. Not thread-safe for writes;
 // const members may be called from several threads.
 
-#include "engine/record/RecorderSink.h"
+#include "engine/loop/RecorderSink.h"
 #include "engine/record/RecordingFormat.h"
 #include "engine/stability/DivergenceKind.h"
 

@@ -1,6 +1,6 @@
 #include "engine/record/RecordingSession.h"
 
-#include "engine/record/MeshHash.h"
+#include "engine/core/MeshHash.h"
 
 #include <chrono>
 #include <cmath>

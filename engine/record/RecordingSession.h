@@ -13,8 +13,8 @@
 // and devices switched while recording go through swapScene/swapDevice here, so that the file
 // describes them (a replay rebuilds the scene from that description).
 
-#include "engine/HapticLoop.h"
-#include "engine/TissuePreset.h"
+#include "engine/loop/HapticLoop.h"
+#include "engine/scene/TissuePreset.h"
 #include "engine/record/RecordingWriter.h"
 
 #include <memory>

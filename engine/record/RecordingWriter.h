@@ -11,9 +11,9 @@
 // (mark, exerciseEvent, describe*, stats and flush are safe from any thread; close from one).
 // Usually driven through RecordingSession, which also attaches it to a HapticLoop.
 
-#include "engine/record/RecorderSink.h"
+#include "engine/loop/RecorderSink.h"
 #include "engine/record/RecordingFormat.h"
-#include "engine/record/SpscRing.h"
+#include "engine/concurrency/SpscRing.h"
 #include "engine/record/TickCodec.h"
 
 #include <atomic>

@@ -6,7 +6,7 @@
 // because it depends on the recording; device/ must not depend on engine/.
 
 #include "device/HapticDevice.h"
-#include "engine/record/RecorderSink.h"
+#include "engine/loop/RecorderSink.h"
 
 namespace palpate {
 

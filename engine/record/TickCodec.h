@@ -6,7 +6,7 @@
 // one-byte flag set covers the booleans. A recording averages about 20 bytes per tick
 // (docs/recording.md). The coder restarts at each chunk, so every chunk decodes on its own.
 
-#include "engine/record/RecorderSink.h"
+#include "engine/loop/RecorderSink.h"
 
 #include <cstdint>
 #include <vector>

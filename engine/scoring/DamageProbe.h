@@ -4,7 +4,7 @@
 // active rings and those relaxing) with its position, so this costs the displaced set, not the mesh;
 // when the snapshot had to cut the list, the whole surface is read instead.
 
-#include "engine/HapticSnapshot.h"
+#include "engine/loop/HapticSnapshot.h"
 #include "engine/scoring/ScoreSample.h"
 
 #include <glm/vec3.hpp>

@@ -11,11 +11,11 @@
 //   auto session = RecordingSession::start(loop, path, header, error);
 //   LiveScorer live(path, exercise);
 
-#include "engine/HapticScene.h"
-#include "engine/TissuePreset.h"
+#include "engine/scene/HapticScene.h"
+#include "engine/scene/TissuePreset.h"
 #include "engine/record/RecordingFormat.h"
-#include "engine/scoring/ExerciseFile.h"
-#include "engine/scoring/ExerciseGeometry.h"
+#include "engine/exercise/ExerciseFile.h"
+#include "engine/exercise/ExerciseGeometry.h"
 
 #include <memory>
 #include <optional>

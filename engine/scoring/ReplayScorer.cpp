@@ -1,7 +1,7 @@
 #include "engine/scoring/ReplayScorer.h"
 
-#include "engine/record/MeshHash.h"
-#include "engine/scoring/RecordedExercise.h"
+#include "engine/core/MeshHash.h"
+#include "engine/exercise/RecordedExercise.h"
 
 #include <algorithm>
 #include <sstream>

@@ -8,10 +8,10 @@
 //   RecordingReader reader = RecordingReader::open("session.palprec");
 //   ScoreReport report = scoreRecording(reader, &exercise, error);  // or nullptr: the recorded one
 
-#include "engine/record/RecordingPlayer.h"
+#include "engine/replay/RecordingPlayer.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/DamageProbe.h"
-#include "engine/scoring/ExerciseFile.h"
+#include "engine/exercise/ExerciseFile.h"
 #include "engine/scoring/Scorer.h"
 
 #include <memory>

@@ -4,7 +4,7 @@
 // that tick, which needs the model (DamageProbe on a replay). Live and replayed sessions give the
 // scorer the same samples, so the same score.
 
-#include "engine/record/RecorderSink.h"
+#include "engine/loop/RecorderSink.h"
 
 namespace palpate {
 

@@ -1,6 +1,6 @@
 #include "engine/scoring/Scorer.h"
 
-#include "engine/scoring/Rubric.h"
+#include "engine/exercise/Rubric.h"
 
 #include <glm/geometric.hpp>
 

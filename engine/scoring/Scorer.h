@@ -7,8 +7,8 @@
 // Not thread-safe; no allocation per sample (the GUI's 60 Hz polling may call report(), which
 // allocates its result).
 
-#include "engine/scoring/ExerciseGeometry.h"
-#include "engine/scoring/ScoreReport.h"
+#include "engine/exercise/ExerciseGeometry.h"
+#include "engine/exercise/ScoreReport.h"
 #include "engine/scoring/ScoreSample.h"
 
 #include <cstdint>

@@ -8,8 +8,8 @@
 // orientation; and a few vertices per tick, round robin, for NaN anywhere. Real-time safe: no
 // allocation, O(valence^2 + sampled) work, messages are static strings.
 
-#include "engine/DeformationModel.h"
-#include "engine/TissueMesh.h"
+#include "engine/models/DeformationModel.h"
+#include "engine/core/TissueMesh.h"
 #include "engine/stability/DivergenceKind.h"
 
 #include <cstdint>

@@ -3,7 +3,7 @@
 // the return springs' integrators, haptic passivity (Colgate and Brown) and triangle inversion.
 // The maps (StabilityMap) draw these over what they measure; the guards compare a set against them.
 
-#include "engine/TissueMesh.h"
+#include "engine/core/TissueMesh.h"
 #include "engine/models/MassSpringParams.h"
 
 #include <cstdint>

@@ -3,7 +3,7 @@
 // number and one sentence, for the parameter panel and presets (docs/stability.md): margin > 0
 // inside, <= 0 at or beyond; the text names the parameter that sets it. Qt-free, not real-time.
 
-#include "engine/TissueMesh.h"
+#include "engine/core/TissueMesh.h"
 #include "engine/models/ModelRegistry.h"
 
 #include <optional>

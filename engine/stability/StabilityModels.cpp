@@ -1,8 +1,8 @@
 #include "engine/stability/StabilityModels.h"
 
-#include "engine/MeshGenerator.h"
-#include "engine/Octree.h"
-#include "engine/Rings.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/Octree.h"
+#include "engine/core/Rings.h"
 #include "engine/models/MassSpringModel.h"
 #include "engine/models/ModelRegistry.h"
 #include "engine/models/VolumetricFill.h"

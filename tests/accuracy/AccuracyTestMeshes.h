@@ -2,7 +2,7 @@
 // Tet meshes for the FEM tests, built here by hand (not by GradedBlock or SurfaceFill) so that the
 // tests do not share the code under test: a box of Kuhn-split cubes, optionally jittered.
 
-#include "engine/accuracy/TetMesh.h"
+#include "engine/fem/TetMesh.h"
 
 #include <glm/vec3.hpp>
 

@@ -2,8 +2,8 @@
 // elasticity itself (equilibrium, a traction-free surface, the load it carries) by finite
 // differences, and reproduced by the FEM inside a box away from the load, converging as h^2.
 
-#include "engine/accuracy/ClosedForms.h"
-#include "engine/accuracy/LinearElasticFem.h"
+#include "engine/fem/ClosedForms.h"
+#include "engine/fem/LinearElasticFem.h"
 #include "tests/accuracy/AccuracyTestMeshes.h"
 
 #include <glm/geometric.hpp>

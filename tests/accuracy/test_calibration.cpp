@@ -1,10 +1,10 @@
 // Calibration from the flat punch: the calibrated slopes reproduce the punch profile at the ring
 // radii when the real model is pressed; least squares recovers known ring displacements; the
 // error against the punch falls as rings cover the loaded region; the sweep measures and ranks.
-#include "engine/MeshGenerator.h"
-#include "engine/Octree.h"
-#include "engine/Rings.h"
-#include "engine/SceneTarget.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/Octree.h"
+#include "engine/core/Rings.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/models/slopering/CoherentSlopeRing.h"
 #include "engine/accuracy/AccuracySweep.h"
 #include "engine/accuracy/Calibration.h"

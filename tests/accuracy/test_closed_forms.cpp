@@ -1,7 +1,7 @@
 // Closed forms checked against values computed here by hand from the textbook formulas
 // (Johnson, Contact Mechanics, 1985): continuity where the regimes meet, far-field decay, and
 // the Boussinesq surface field.
-#include "engine/accuracy/ClosedForms.h"
+#include "engine/fem/ClosedForms.h"
 
 #include <gtest/gtest.h>
 

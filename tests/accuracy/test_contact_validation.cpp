@@ -3,7 +3,7 @@
 // load iteration converges, and linear-tet locking shows as nu -> 0.5.
 
 #include "engine/accuracy/ContactValidation.h"
-#include "engine/accuracy/GradedBlock.h"
+#include "engine/fem/GradedBlock.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

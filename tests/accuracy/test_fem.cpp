@@ -2,7 +2,7 @@
 // on the boundary of an irregular mesh is reproduced exactly inside, with the constant stress),
 // reactions, solver agreement, and rejection of bad input.
 
-#include "engine/accuracy/LinearElasticFem.h"
+#include "engine/fem/LinearElasticFem.h"
 #include "tests/accuracy/AccuracyTestMeshes.h"
 
 #include <glm/geometric.hpp>

@@ -2,8 +2,8 @@
 // and its core; surface nodes exactly on the mesh vertices; thickness halving; bad input
 // rejected with a message; a punch on a sphere pushes back and its dent decays with distance.
 
-#include "engine/MeshGenerator.h"
-#include "engine/accuracy/SurfaceFill.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/fem/SurfaceFill.h"
 #include "tests/engine/TestMeshes.h"
 
 #include <glm/geometric.hpp>

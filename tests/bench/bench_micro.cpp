@@ -1,11 +1,11 @@
 // Micro-benchmarks: the three nearest-vertex searches and one haptic tick of each method, over the
-// press-and-stroke tool path (engine/ToolPath.h) on generated spheres.
+// press-and-stroke tool path (engine/core/ToolPath.h) on generated spheres.
 //   palpate_microbench --benchmark_filter=Search   (or Step)
 
-#include "engine/MeshGenerator.h"
-#include "engine/Octree.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/Octree.h"
 #include "engine/models/slopering/SlopeRingModel.h"
-#include "engine/ToolPath.h"
+#include "engine/core/ToolPath.h"
 
 #include <benchmark/benchmark.h>
 

@@ -1,8 +1,8 @@
 // Device URIs: every scheme parses and creates the right, openable device; unknown schemes, empty
 // URIs, 'sim:path:' without a file and bad files are errors that name the URI and the problem.
 
-#include "device/DeviceUri.h"
-#include "device/DeviceDiscovery.h"
+#include "device/open/DeviceUri.h"
+#include "device/open/DeviceDiscovery.h"
 #include "device/UdevHint.h"
 #include "device/MouseDevice.h"
 #include "device/SimulatedDevice.h"

@@ -5,7 +5,7 @@
 // usbfs node without an ioctl recording of real hardware, so open() is tested for its error: the
 // real libusb says NO_DEVICE, and our message names the Falcon and the node.
 
-#include "device/DeviceDiscovery.h"
+#include "device/open/DeviceDiscovery.h"
 #include "device/hid/HidTransport.h"
 #include "device/hid/SpaceMouseDevice.h"
 #include "device/usb/FalconDevice.h"

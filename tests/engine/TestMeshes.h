@@ -3,7 +3,7 @@
 // Everything here is computed from coordinates by hand-written formulas, never by the engine code
 // under test, so that the tests can disagree with it.
 
-#include "engine/TissueMesh.h"
+#include "engine/core/TissueMesh.h"
 
 #include <glm/vec3.hpp>
 

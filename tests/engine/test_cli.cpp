@@ -1,7 +1,7 @@
 // palpate-cli's mesh commands, run as a separate process: `mesh check` exit codes and messages,
 // `mesh generate` writing exactly the requested vertex count.
 
-#include "engine/TissueMesh.h"
+#include "engine/core/TissueMesh.h"
 #include "tests/engine/TestMeshes.h"
 
 #include <gtest/gtest.h>

@@ -2,15 +2,15 @@
 // outside names that field, a value inside is accepted), every field goes through a preset file
 // and back, keys are unique, and a file that cannot be represented (1e400) is refused by name.
 
-#include "engine/HapticLoop.h"
-#include "engine/HapticRate.h"
-#include "engine/Octree.h"
+#include "engine/loop/HapticLoop.h"
+#include "engine/core/HapticRate.h"
+#include "engine/core/Octree.h"
 #include "engine/models/slopering/SlopeRingParams.h"
-#include "engine/TissuePreset.h"
+#include "engine/scene/TissuePreset.h"
 #include "engine/models/FfdParams.h"
 #include "engine/models/MassSpringParams.h"
 #include "engine/models/RadiusOfInfluenceParams.h"
-#include "engine/scoring/ExerciseFile.h"
+#include "engine/exercise/ExerciseFile.h"
 
 #include <gtest/gtest.h>
 
@@ -25,7 +25,9 @@ template <class S>
 std::vector<double> outsideValues(const FieldDef<S>& f) {
     std::vector<double> out{std::nan("")};
     const FieldSpec& s = f.spec;
-    const double eps = (f.type == FieldType::Real || f.type == FieldType::RealList) ? 1e-9 * std::max(1.0, std::abs(s.lo)) : 1.0;
+    const double eps = (f.type == FieldType::Real || f.type == FieldType::RealList)
+                           ? 1e-9 * std::max(1.0, std::abs(s.lo))
+                           : 1.0;
     if (std::isfinite(s.lo)) out.push_back(s.lower == Bound::Open ? s.lo : s.lo - eps);
     if (std::isfinite(s.hi)) out.push_back(s.upper == Bound::Open ? s.hi : s.hi + std::max(eps, 1e-9 * std::abs(s.hi)));
     return out;
@@ -104,7 +106,8 @@ TEST(FieldTables, EveryFieldRoundTripsThroughAPresetFile) {
     auto roundTrip = [](const TissuePreset& preset, const std::string& what) {
         const PresetLoadResult back = parseTissuePreset(tissuePresetToJson(preset), "p.json");
         ASSERT_TRUE(back.preset) << what << ": " << back.error();
-        EXPECT_TRUE(samePreset(*back.preset, preset)) << what << " did not survive the file:\n" << tissuePresetToJson(preset);
+        EXPECT_TRUE(samePreset(*back.preset, preset)) << what << " did not survive the file:\n"
+                                                      << tissuePresetToJson(preset);
     };
     for (const FieldDef<MassSpringParams>& f : massSpringFields()) {
         TissuePreset preset = *parseTissuePreset(tissuePresetToJson(TissuePreset{}), "p.json").preset;
@@ -117,7 +120,8 @@ TEST(FieldTables, EveryFieldRoundTripsThroughAPresetFile) {
         TissuePreset preset;
         setPresetModel(preset, *modelDefForName("ffd"));
         f.set(preset.ffd, -1, f.spec.key == std::string("controlPointsPerAxis") ? 9 : otherValidValue(f));
-        ASSERT_TRUE(validateFfdParams(preset.ffd).empty()) << f.spec.key << joinedMessages(validateFfdParams(preset.ffd));
+        ASSERT_TRUE(validateFfdParams(preset.ffd).empty())
+            << f.spec.key << joinedMessages(validateFfdParams(preset.ffd));
         roundTrip(preset, f.spec.key);
     }
     for (const FieldDef<OctreeDef>& f : octreeFields()) {

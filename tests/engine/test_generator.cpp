@@ -1,7 +1,7 @@
 // Generated meshes: exact vertex counts, closed, manifold, genus 0, outward-facing, for small
 // counts and the paper's Table 1 sizes. Topology is re-derived here from the raw triangles.
 
-#include "engine/MeshGenerator.h"
+#include "engine/core/MeshGenerator.h"
 #include "tests/engine/TestMeshes.h"
 
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // problem, never a crash; open surfaces load with a warning; inside-out meshes are flipped.
 // Ends with a small deterministic fuzz test over mutated OFF, OBJ and binary STL files.
 
-#include "engine/MeshGenerator.h"
-#include "engine/TissueMesh.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/TissueMesh.h"
 #include "tests/engine/TestMeshes.h"
 
 #include <gtest/gtest.h>

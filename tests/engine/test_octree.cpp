@@ -2,8 +2,8 @@
 // (near the surface, far outside the root, exactly on cell borders) and on a deformed mesh; and the
 // paper's faithful searchNode, whose documented blind spots each get a test.
 
-#include "engine/MeshGenerator.h"
-#include "engine/Octree.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/Octree.h"
 #include "tests/engine/TestMeshes.h"
 
 #include <gtest/gtest.h>

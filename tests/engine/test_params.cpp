@@ -1,8 +1,8 @@
 // Slope-ring parameters: every way to get them wrong is rejected with a message naming the
 // parameter; the defaults and the stable side of the loop-gain bound are accepted.
 
-#include "engine/MeshGenerator.h"
-#include "engine/Octree.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/Octree.h"
 #include "engine/models/slopering/SlopeRingModel.h"
 #include "engine/models/slopering/SlopeRingParams.h"
 

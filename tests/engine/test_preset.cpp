@@ -1,5 +1,5 @@
 // Tissue presets: round trip, and every malformed file gives an error naming the key.
-#include "engine/TissuePreset.h"
+#include "engine/scene/TissuePreset.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Tissue presets with the registry models (docs/models.md): every model name, each model's own
 // section round trips, its validator's problems and unknown keys are named by key, and presets of
 // the slope-ring methods are written as before.
-#include "engine/TissuePreset.h"
+#include "engine/scene/TissuePreset.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // answer is known by hand (icosahedron, a triangulated grid with a boundary) and against an
 // independent breadth-first search over the raw triangles of a generated mesh.
 
-#include "engine/MeshGenerator.h"
-#include "engine/Rings.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/Rings.h"
 #include "tests/engine/TestMeshes.h"
 
 #include <gtest/gtest.h>

@@ -2,11 +2,11 @@
 // four methods agreeing on it, relaxation after release, robustness over long random tool paths
 // (NaN/Inf tool positions, extreme time steps), and the equilibrium force of a held press.
 
-#include "engine/MeshGenerator.h"
-#include "engine/Octree.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/Octree.h"
 #include "engine/models/slopering/CoherentSlopeRing.h"
 #include "engine/models/slopering/PaperSlopeRing.h"
-#include "engine/ToolPath.h"
+#include "engine/core/ToolPath.h"
 #include "tests/engine/TestMeshes.h"
 
 #include <gtest/gtest.h>

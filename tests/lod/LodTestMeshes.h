@@ -3,7 +3,7 @@
 // (decimation and mapping of a few thousand vertices take a fraction of a second, but every test
 // needs them).
 
-#include "engine/MeshGenerator.h"
+#include "engine/core/MeshGenerator.h"
 #include "engine/lod/MeshLevels.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The levels cache beside the mesh: written once, read back identical, and regenerated (never a
 // crash) when the mesh changed, the options changed, or any part of it is missing or corrupt.
 #include "engine/lod/LevelCache.h"
-#include "engine/record/MeshHash.h"
+#include "engine/core/MeshHash.h"
 #include "tests/engine/TestMeshes.h"
 #include "tests/lod/LodTestMeshes.h"
 

@@ -1,8 +1,8 @@
 // The measured table: one candidate per level and ring count, all measured (finite, positive), the
 // error on the source level equal to the sweep's metric, more rings never much worse than one, and
 // a cancel that stops early. No timing is asserted beyond "positive".
-#include "engine/Octree.h"
-#include "engine/SceneTarget.h"
+#include "engine/core/Octree.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/lod/LodMeasure.h"
 #include "engine/models/ModelRegistry.h"
 #include "tests/lod/LodTestMeshes.h"

@@ -1,7 +1,7 @@
 // The haptic loop: real-time rules, determinism, commands, device faults and snapshot consistency.
 #include "device/SimulatedDevice.h"
-#include "engine/HapticLoop.h"
-#include "engine/MeshGenerator.h"
+#include "engine/loop/HapticLoop.h"
+#include "engine/core/MeshGenerator.h"
 #include "tests/support/AllocationCounter.h"
 
 #include <glm/geometric.hpp>

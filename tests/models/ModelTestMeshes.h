@@ -1,8 +1,8 @@
 #pragma once
 // Small meshes for the models' tests, built from hand-written coordinates.
 
-#include "engine/MeshGenerator.h"
-#include "engine/TissueMesh.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/TissueMesh.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,7 +1,7 @@
 // Free-form deformation: the Bernstein lattice at rest reproduces the mesh exactly; the model's
 // surface is the lattice's map with the moved control points; the least-norm control update.
-#include "engine/Octree.h"
-#include "engine/SceneTarget.h"
+#include "engine/core/Octree.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/models/FfdModel.h"
 #include "tests/models/ModelTestMeshes.h"
 

@@ -1,9 +1,9 @@
 // Mass-spring model: the integrators' energy laws on single modes computed by hand, both sides of
 // the explicit stability bound, the static equilibrium, and whole/local parity.
-#include "engine/Octree.h"
-#include "engine/Rings.h"
-#include "engine/SceneTarget.h"
-#include "engine/ToolPath.h"
+#include "engine/core/Octree.h"
+#include "engine/core/Rings.h"
+#include "engine/core/SceneTarget.h"
+#include "engine/core/ToolPath.h"
 #include "engine/models/MassSpringModel.h"
 #include "tests/models/ModelTestMeshes.h"
 

@@ -1,8 +1,8 @@
 // Every model through the registry: stable names, parameter errors that name the field, the exact
 // touched vertex against brute force, no allocation in the tick, and the error against the punch.
-#include "engine/Octree.h"
-#include "engine/SceneTarget.h"
-#include "engine/ToolPath.h"
+#include "engine/core/Octree.h"
+#include "engine/core/SceneTarget.h"
+#include "engine/core/ToolPath.h"
 #include "engine/accuracy/ModelError.h"
 #include "engine/models/ModelRegistry.h"
 #include "tests/models/ModelTestMeshes.h"

@@ -1,7 +1,7 @@
 // Radius of influence (Basdogan et al. 1998): the profile, the dent it makes, and its independence
 // of the mesh's edges.
-#include "engine/Octree.h"
-#include "engine/SceneTarget.h"
+#include "engine/core/Octree.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/models/RadiusOfInfluenceModel.h"
 #include "tests/models/ModelTestMeshes.h"
 

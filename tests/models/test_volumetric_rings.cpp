@@ -1,9 +1,9 @@
 // Volumetric slope-rings: the tet fill, rings through the interior, and parity with the surface
 // model where the two must agree (ring 0 only).
-#include "engine/Octree.h"
-#include "engine/SceneTarget.h"
+#include "engine/core/Octree.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/models/slopering/CoherentSlopeRing.h"
-#include "engine/ToolPath.h"
+#include "engine/core/ToolPath.h"
 #include "engine/models/VolumetricFill.h"
 #include "engine/models/VolumetricRingsModel.h"
 #include "tests/models/ModelTestMeshes.h"

@@ -1,7 +1,7 @@
 #include "tests/record/RecordTestRig.h"
 
-#include "engine/MeshGenerator.h"
-#include "engine/SceneTarget.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/record/RecordingSession.h"
 
 #include <sys/wait.h>

@@ -3,8 +3,8 @@
 // stepped or threaded loop on it with a simulated device, and running palpate-cli.
 
 #include "device/SimulatedDevice.h"
-#include "engine/HapticLoop.h"
-#include "engine/TissuePreset.h"
+#include "engine/loop/HapticLoop.h"
+#include "engine/scene/TissuePreset.h"
 #include "engine/record/RecordingFormat.h"
 
 #include <cstdint>

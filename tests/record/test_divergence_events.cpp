@@ -5,9 +5,9 @@
 // tick allocates nothing, and the recording holds one Divergence event per firing with the kind and
 // tick the loop published; the replay reproduces them, info --json and export-csv show them, and a
 // version-1 file still reads.
-#include "engine/HapticScene.h"
+#include "engine/scene/HapticScene.h"
 #include "engine/models/ModelRegistry.h"
-#include "engine/record/RecordingPlayer.h"
+#include "engine/replay/RecordingPlayer.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/RecordingSession.h"
 #include "engine/stability/StabilityBounds.h"

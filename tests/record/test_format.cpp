@@ -1,8 +1,8 @@
 // The recording's building blocks: CRC-32, varints, the header, chunks, the tick codec, mesh hash.
-#include "engine/MeshGenerator.h"
+#include "engine/core/MeshGenerator.h"
 #include "engine/record/ByteIo.h"
 #include "engine/record/Crc32.h"
-#include "engine/record/MeshHash.h"
+#include "engine/core/MeshHash.h"
 #include "engine/record/RecordingFormat.h"
 #include "engine/record/TickCodec.h"
 #include "engine/record/Varint.h"

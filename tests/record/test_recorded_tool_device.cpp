@@ -4,7 +4,7 @@
 // a missing or empty file is an error naming the file.
 #include "RecordTestRig.h"
 
-#include "device/DeviceUri.h"
+#include "device/open/DeviceUri.h"
 #include "engine/record/RecordedToolDevice.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/RecordingSession.h"

@@ -1,7 +1,7 @@
 // Damaged recordings: a truncated file gives back every chunk before the cut, a flipped byte is
 // caught by a CRC and costs only its chunk, and a recorder killed with SIGKILL leaves a file whose
 // recovered part ends at most 100 ms before the kill.
-#include "engine/record/RecordingPlayer.h"
+#include "engine/replay/RecordingPlayer.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/RecordingSession.h"
 #include "tests/record/RecordTestRig.h"

@@ -1,8 +1,8 @@
 // Replay: a stepped loop fed the recorded device input gives the recorded forces and touched
 // vertices bit for bit, chunk hashes included; for stepped and real-time recordings, with
 // parameter sets, pauses, device and scene switches; a difference is found at its tick.
-#include "engine/record/MeshHash.h"
-#include "engine/record/RecordingPlayer.h"
+#include "engine/core/MeshHash.h"
+#include "engine/replay/RecordingPlayer.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/RecordingSession.h"
 #include "tests/record/RecordTestRig.h"

@@ -1,8 +1,8 @@
 // Replay of the registry models other than the slope-ring methods: the player rebuilds the scene
 // from the recording's preset JSON (RecordingPlayer::buildScene), so a stepped recording of the
 // radius-of-influence or mass-spring model replays bit for bit.
-#include "engine/HapticScene.h"
-#include "engine/record/RecordingPlayer.h"
+#include "engine/scene/HapticScene.h"
+#include "engine/replay/RecordingPlayer.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/RecordingSession.h"
 #include "tests/record/RecordTestRig.h"

@@ -4,7 +4,7 @@
 // such a script, with a hook to poll a live scorer between flushes.
 
 #include "device/WaypointFile.h"
-#include "engine/HapticLoop.h"
+#include "engine/loop/HapticLoop.h"
 #include "engine/record/RecordingSession.h"
 #include "engine/scoring/ExerciseSession.h"
 

@@ -3,8 +3,8 @@
 // 5 x 5 grid of vertices 10 mm apart in the plane z = 0 (vertex j * 5 + i at (10 i, 10 j, 0)),
 // and samples at 1024 Hz, whose period (2^-10 s) makes every sum of tick lengths exact.
 
-#include "engine/TissueMesh.h"
-#include "engine/scoring/Exercise.h"
+#include "engine/core/TissueMesh.h"
+#include "engine/exercise/Exercise.h"
 #include "engine/scoring/ScoreSample.h"
 
 #include <glm/vec3.hpp>

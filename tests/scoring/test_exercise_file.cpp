@@ -1,7 +1,7 @@
 // Exercise files: the shipped examples read; save and load round-trip; every kind of mistake is an
 // error naming the file and the key; the recording note carries an exercise.
-#include "engine/scoring/ExerciseFile.h"
-#include "engine/scoring/ExerciseGeometry.h"
+#include "engine/exercise/ExerciseFile.h"
+#include "engine/exercise/ExerciseGeometry.h"
 #include "tests/record/RecordTestRig.h"
 #include "tests/scoring/ScoringTestRig.h"
 #include "tests/scoring/SyntheticTicks.h"

@@ -1,10 +1,10 @@
 // Find the lump's physics: CoherentSlopeRing's per-vertex compliance factors. Absent, or all 1,
 // the model is bit for bit what it was; inside an inclusion the same depth renders more force
 // (the closed form of the exact one-tick solve); the tick still allocates nothing.
-#include "engine/HapticScene.h"
+#include "engine/scene/HapticScene.h"
 #include "engine/models/slopering/CoherentSlopeRing.h"
-#include "engine/TissuePreset.h"
-#include "engine/scoring/ExerciseGeometry.h"
+#include "engine/scene/TissuePreset.h"
+#include "engine/exercise/ExerciseGeometry.h"
 #include "tests/scoring/ScoringTestRig.h"
 #include "tests/support/AllocationCounter.h"
 

@@ -1,7 +1,7 @@
 // Reading a recording while it is written (RecordingReader::openLive, refresh, finishLive) and a
 // player that follows it (RecordingPlayer::refresh): at every stage what was read is a prefix of
 // the whole, an incomplete tail is not damage, and at the end everything equals open().
-#include "engine/record/RecordingPlayer.h"
+#include "engine/replay/RecordingPlayer.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/RecordingSession.h"
 #include "tests/record/RecordTestRig.h"

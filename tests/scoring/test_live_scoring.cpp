@@ -2,7 +2,7 @@
 // the real-time haptic thread) ends with the same report, bit for bit, as scoring the finished
 // file. Also: the running score and guidance move during the session, a late mark makes it start
 // over and still agree, and a LiveScorer refuses a recording of another mesh.
-#include "engine/HapticLoop.h"
+#include "engine/loop/HapticLoop.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/LiveScorer.h"
 #include "device/SimulatedDevice.h"

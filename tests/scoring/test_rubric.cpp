@@ -1,6 +1,6 @@
 // The rubric's rules and its edge cases: the sub-score in both directions, weights, a session
 // with no time, one without contact, one where all the force is excessive.
-#include "engine/scoring/Rubric.h"
+#include "engine/exercise/Rubric.h"
 #include "engine/scoring/Scorer.h"
 #include "tests/scoring/SyntheticTicks.h"
 

@@ -5,8 +5,8 @@
 #include "engine/stability/StabilityBounds.h"
 
 #include "device/SimulatedDevice.h"
-#include "engine/HapticLoop.h"
-#include "engine/MeshGenerator.h"
+#include "engine/loop/HapticLoop.h"
+#include "engine/core/MeshGenerator.h"
 #include "engine/models/slopering/CoherentSlopeRing.h"
 #include "engine/models/MassSpringModel.h"
 #include "tests/support/AllocationCounter.h"

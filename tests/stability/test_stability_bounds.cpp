@@ -4,7 +4,7 @@
 #include "engine/stability/StabilityMargin.h"
 #include "engine/stability/StabilityModels.h"
 
-#include "engine/MeshGenerator.h"
+#include "engine/core/MeshGenerator.h"
 #include "engine/models/slopering/SlopeRingParams.h"
 
 #include <gtest/gtest.h>

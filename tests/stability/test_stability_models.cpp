@@ -6,8 +6,8 @@
 #include "engine/stability/StabilityBounds.h"
 #include "engine/stability/StabilityModels.h"
 
-#include "engine/MeshGenerator.h"
-#include "engine/Octree.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/Octree.h"
 #include "engine/models/ModelRegistry.h"
 #include "engine/models/VolumetricFill.h"
 #include "engine/models/VolumetricRingsModel.h"

@@ -6,8 +6,8 @@
 #include "engine/accuracy/SweepCsv.h"
 #include "widgets/ChartsPanel.h"
 #include "widgets/ParameterPanel.h"
-#include "widgets/SpeedAccuracyChart.h"
-#include "widgets/SweepChartImage.h"
+#include "app/report/SpeedAccuracyChart.h"
+#include "app/report/SweepChartImage.h"
 
 #include <QAbstractButton>
 #include <QApplication>

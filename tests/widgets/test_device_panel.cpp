@@ -3,11 +3,11 @@
 // file for sim:path:FILE, emits connect requests without owning the loop, shows the spec and the
 // live state, and raises a red banner when the connected device is lost until it is Ready and armed.
 // Set PALPATE_DEVICE_PANEL_PNG_DIR to keep the rendered panels as PNGs.
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/MainWindow.h"
-#include "device/DeviceUri.h"
+#include "device/open/DeviceUri.h"
 #include "device/SafetyFilter.h"
-#include "engine/HapticSnapshot.h"
+#include "engine/loop/HapticSnapshot.h"
 #include "widgets/DevicePanel.h"
 
 #include <QDir>

@@ -7,9 +7,9 @@
 #include "widgets/ExerciseEditCommands.h"
 #include "widgets/ExerciseEditorPanel.h"
 
-#include "engine/TissueMesh.h"
-#include "engine/scoring/ExerciseFile.h"
-#include "engine/scoring/ExerciseGeometry.h"
+#include "engine/core/TissueMesh.h"
+#include "engine/exercise/ExerciseFile.h"
+#include "engine/exercise/ExerciseGeometry.h"
 
 #include <QAction>
 #include <QApplication>

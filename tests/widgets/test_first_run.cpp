@@ -2,7 +2,7 @@
 // "Don't show this again", its three actions on a real stepped MainWindow), the Preferences dialog
 // (fields, validation, the QSettings keys) and what the preferences do to a window, the Help menu's
 // User Guide (F1, shown in the guide window; no browser is started) and formatForce. Own main().
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/ExerciseController.h"
 #include "app/gui/FirstRun.h"
 #include "app/gui/MainWindow.h"

@@ -4,7 +4,7 @@
 // core context can be created. The scene is the default one stepped into contact (deterministic).
 #include "ImageChecks.h"
 
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/HapticSession.h"
 #include "widgets/MeshViewport.h"
 #include "widgets/SceneOverlay.h"

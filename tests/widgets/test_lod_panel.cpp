@@ -4,7 +4,7 @@
 // replanning on edited targets without measuring; Use chosen / Use selected (override) with the
 // level's file; Cancel (at once, and in the middle of measuring); the cache on a second plan;
 // invalid targets; meshes that fail; destruction while planning.
-#include "engine/TissueMesh.h"
+#include "engine/core/TissueMesh.h"
 #include "engine/lod/LevelCache.h"
 #include "engine/lod/LodPlanner.h"
 #include "widgets/LodPanel.h"

@@ -1,8 +1,8 @@
 // The main window's docks reach the engine: Apply changes what the haptic loop computes, a bad
 // preset leaves the scene alone, the device dock switches devices, recent files are kept.
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/MainWindow.h"
-#include "engine/TissuePreset.h"
+#include "engine/scene/TissuePreset.h"
 #include "widgets/DevicePanel.h"
 #include "widgets/ParameterPanel.h"
 

@@ -2,7 +2,7 @@
 // methods first, each with a tooltip; the chosen model's own fields are shown and validated by
 // name; Apply switches the haptic session's model, and undo goes back. Offscreen, stepped loop;
 // main() is in test_viewport.cpp.
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/HapticSession.h"
 #include "widgets/ParameterCommands.h"
 #include "widgets/ParameterPanel.h"

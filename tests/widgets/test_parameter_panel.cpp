@@ -5,7 +5,7 @@
 #include "widgets/ParameterCommands.h"
 #include "widgets/ParameterPanel.h"
 
-#include "engine/MeshGenerator.h"
+#include "engine/core/MeshGenerator.h"
 
 #include <QAction>
 #include <QApplication>

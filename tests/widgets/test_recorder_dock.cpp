@@ -3,9 +3,9 @@
 // the recording plays back in the dock (markers, seeks that show the recorded tick, 4x faster than
 // 1x, a matching verdict at the end); garbage and damaged files are reported by name; Back to live
 // resumes the loop; a recording stops cleanly on a write problem and on window close.
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/MainWindow.h"
-#include "engine/record/RecordingPlayer.h"
+#include "engine/replay/RecordingPlayer.h"
 #include "engine/record/RecordingReader.h"
 #include "widgets/ParameterPanel.h"
 #include "widgets/RecorderPanel.h"

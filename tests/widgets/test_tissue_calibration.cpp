@@ -2,8 +2,8 @@
 // calibrate exactly the slopes calibrateSlopesFromPunch gives (one undoable step), the error label
 // shows the calibrated model's error, a bad Poisson's ratio is refused naming the field, and the
 // shipped tissue presets fill the tissue and the slopes.
-#include "engine/MeshGenerator.h"
-#include "engine/SceneTarget.h"
+#include "engine/core/MeshGenerator.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/accuracy/Calibration.h"
 #include "widgets/ParameterCommands.h"
 #include "widgets/ParameterPanel.h"

@@ -1,7 +1,7 @@
 // Touch mode under QT_QPA_PLATFORM=offscreen, stepped (deterministic): the mouse: device, steered by
 // the viewport's left button (ray-picked on the drawn mesh), presses the tissue where it is touched,
 // lets go on release, and presses deeper as the wheel turns. Shares widget_tests' main().
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/HapticSession.h"
 #include "app/gui/MainWindow.h"
 

@@ -4,7 +4,7 @@
 // equals the score of replaying the recording the session left; the result (trainee, exercise,
 // score, metrics, recording) is in the database, which survives reopening; the History view plots
 // it; the score report PDF holds the score; errors are reported, not crashed on.
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/ExerciseController.h"
 #include "app/gui/MainWindow.h"
 #include "engine/record/RecordingReader.h"

@@ -2,7 +2,7 @@
 // software renderer, which draws the mesh and the touched-vertex highlight; the window runs the
 // haptic loop stepped (deterministic) or on its thread (interactive), observes its snapshots, and
 // reports contact, force and the loop's health; bad meshes and devices give errors naming them.
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/HapticSession.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/SnapshotObserver.h"

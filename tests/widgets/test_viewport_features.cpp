@@ -3,7 +3,7 @@
 // observer's changed vertices and versions, the scene's dirty vertices, ranges and normals).
 #include "ImageChecks.h"
 
-#include "app/cli/DefaultScene.h"
+#include "app/common/DefaultScene.h"
 #include "app/gui/HapticSession.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/SnapshotObserver.h"

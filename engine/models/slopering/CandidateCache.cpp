@@ -26,10 +26,8 @@ void CandidateCache::refresh(const Octree& octree, const glm::vec3& tool, const 
         const float along = glm::dot(toolStepMm, axis);
         glm::vec3 lead = kLeadTicks * (toolStepMm - along * axis) + (kAxialLeadTicks * along) * axis;
         const float leadMax = 0.5f * distance, leadLength = glm::length(lead);
-        if (!std::isfinite(leadLength))
-            lead = glm::vec3(0.0f);
-        else if (leadLength > leadMax)
-            lead *= leadMax / leadLength;
+        if (!std::isfinite(leadLength)) lead = glm::vec3(0.0f);
+        else if (leadLength > leadMax) lead *= leadMax / leadLength;
         centre = tool + kCentreOffset * away + lead;
     }
     float d2[kCacheSize];

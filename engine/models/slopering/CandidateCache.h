@@ -6,8 +6,8 @@
 // (docs/method.md). The cache is search state, not model state: it is retaken from the const
 // searches (findTouched, warm), hence the owner keeps it `mutable`.
 
-#include "engine/Octree.h"
-#include "engine/TissueMesh.h"
+#include "engine/core/Octree.h"
+#include "engine/core/TissueMesh.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -58,7 +58,7 @@ public:
                 const float lower = mDistanceMm[i] * (1.0f - kRoundingMargin) - shift;  // |tool - rest| >= this
                 if (lower > 0.0f && lower * lower > best2) break;  // sorted: no later entry can win
                 const VertexId v = mIds[i];
-                if (displaced(v)) continue;  // counted by the caller at its current position
+                if (displaced(v)) continue;             // counted by the caller at its current position
                 const glm::vec3 d = mRestMm[i] - tool;  // at rest: its position is its rest position
                 const float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
                 if (d2 < best2 || (d2 == best2 && v < best)) {

@@ -254,7 +254,8 @@ void CoherentSlopeRing::writeActivePositions() const {
     for (int r = 0; r <= mActive.ringCount; ++r) {
         const glm::vec3 displacement = ringDisplacementMm(r, mActiveForceN, mActiveNormal);
         for (std::uint32_t i = mActive.ringStart[r], end = mActive.ringStart[r + 1]; i < end; ++i)
-            mPositions[mActive.vertices[i]] = glm::vec3(mActiveRestX[i], mActiveRestY[i], mActiveRestZ[i]) + displacement;
+            mPositions[mActive.vertices[i]] = glm::vec3(mActiveRestX[i], mActiveRestY[i], mActiveRestZ[i]) +
+                                              displacement;
     }
     mActiveDirty = false;
 }
@@ -305,7 +306,8 @@ void CoherentSlopeRing::stepRings(VertexId touched, bool contact) {
     if (touched != mActiveCentre || contact != mActiveContact) changeActiveSet(touched, contact);
     // The rings follow c F (c: the touched vertex's compliance factor); the rendered force stays
     // k_s |m1| F, the touched spring being stiffer by 1 / c.
-    mActiveForceN = mCompliance.empty() || touched == kNoVertex ? mContactForceN : mCompliance[touched] * mContactForceN;
+    mActiveForceN = mCompliance.empty() || touched == kNoVertex ? mContactForceN
+                                                                : mCompliance[touched] * mContactForceN;
     mActiveDirty = contact;
     if (mEagerPositions) writeActivePositions();
 

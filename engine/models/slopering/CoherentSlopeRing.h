@@ -90,7 +90,7 @@ private:
         float forceN = 0.0f;
         std::uint32_t best = 0;  // index into mActive
         int bestRing = 0;
-        float secondMm = 0.0f;  // runner-up distance at the scan
+        float secondMm = 0.0f;            // runner-up distance at the scan
         std::vector<float> distance2Mm2;  // scratch of the full scan, one per active vertex
     };
     mutable ActiveScan mActiveScan;

@@ -17,7 +17,8 @@ PaperSlopeRing::PaperSlopeRing(const TissueMesh& mesh, const Octree& octree, con
         case SlopeRingMethod::Hybrid: mRingOf.assign(n, kNotInRing); break;
         case SlopeRingMethod::Proposed: mPreviousRingVertices.reserve(n); break;
         case SlopeRingMethod::Coherent:
-            throw std::invalid_argument("PaperSlopeRing runs the paper's methods (previous, hybrid, proposed), not coherent");
+            throw std::invalid_argument(
+                "PaperSlopeRing runs the paper's methods (previous, hybrid, proposed), not coherent");
     }
     setParams(params);
 }
@@ -92,10 +93,8 @@ TickResult PaperSlopeRing::step(const glm::vec3& tool, double dtS) {
         if (found != kNoVertex) touched = found;  // the paper's search leaves touchedNode unchanged
     }
     const float penetration = updateContact(tool, toolValid, touched, 1.0f);  // as published: no inclusion
-    if (mMethod == SlopeRingMethod::Proposed)
-        stepProposed(touched, mContact);
-    else
-        stepWholeModel(touched, mContact);
+    if (mMethod == SlopeRingMethod::Proposed) stepProposed(touched, mContact);
+    else stepWholeModel(touched, mContact);
     return tickResult(touched, penetration,
                       mContact ? mPositions[touched] - mMesh.restPositionsMm()[touched] : glm::vec3(0.0f));
 }

@@ -16,8 +16,7 @@ class PaperSlopeRing final : public SlopeRingModel {
 public:
     /// `mesh` and `octree` must outlive the model. `method` is previous, hybrid or proposed.
     /// Throws std::invalid_argument on bad params or another method.
-    PaperSlopeRing(const TissueMesh& mesh, const Octree& octree, const SlopeRingParams& params,
-                   SlopeRingMethod method);
+    PaperSlopeRing(const TissueMesh& mesh, const Octree& octree, const SlopeRingParams& params, SlopeRingMethod method);
 
     TickResult step(const glm::vec3& toolTipMm, double dtS) override;
     void reset() override;

@@ -65,7 +65,8 @@ void SlopeRingModel::resetShared() {
 std::unique_ptr<SlopeRingModel> makeSlopeRing(const TissueMesh& mesh, const Octree& octree,
                                               const SlopeRingParams& params, SlopeRingMethod method,
                                               bool eagerPositions) {
-    if (method == SlopeRingMethod::Coherent) return std::make_unique<CoherentSlopeRing>(mesh, octree, params, eagerPositions);
+    if (method == SlopeRingMethod::Coherent)
+        return std::make_unique<CoherentSlopeRing>(mesh, octree, params, eagerPositions);
     return std::make_unique<PaperSlopeRing>(mesh, octree, params, method);
 }
 

@@ -6,9 +6,9 @@
 // relaxation and the rendered force. The methods (PaperSlopeRing: the paper's three;
 // CoherentSlopeRing: ours) differ only in the search and in how much work a tick does.
 
-#include "engine/DeformationModel.h"
-#include "engine/Octree.h"
-#include "engine/Rings.h"
+#include "engine/models/DeformationModel.h"
+#include "engine/core/Octree.h"
+#include "engine/core/Rings.h"
 #include "engine/models/slopering/SlopeRingMethod.h"
 #include "engine/models/slopering/SlopeRingParams.h"
 
@@ -86,9 +86,9 @@ protected:
         // Projected onto F >= 0 (the tissue only pushes): a non-expansive step, so the iteration
         // converges wherever its linear part does, alpha (1 + gain) < 2, overshoot or not.
         if (toolValid && touched != kNoVertex)
-            mContactForceN = std::max(0.0f, (1.0f - alpha) * mContactForceN + alpha * (mContactStiffness * penetration));
-        else
-            mContactForceN = 0.0f;
+            mContactForceN = std::max(0.0f,
+                                      (1.0f - alpha) * mContactForceN + alpha * (mContactStiffness * penetration));
+        else mContactForceN = 0.0f;
         mTouched = touched;
         mContact = mContactForceN > 0.0f;
         return penetration;

@@ -11,48 +11,119 @@ int slopesUsed(const SlopeRingParams& p) { return std::clamp(p.ringCount, 0, kMa
 
 constexpr FieldDef<SlopeRingParams> kFields[] = {
     field<&SlopeRingParams::ringCount>(
-        {.key = "ringCount", .jsonKey = "ring_count", .lo = 0, .hi = kMaxRings, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Ring count:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "ring count"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Rings of neighbours displaced with the touched vertex (ring r: the vertices r edges away). The paper "
-                "uses 2; each ring adds a slope below."),
-         .required = true, .entryLo = 0, .entryHi = kMaxRings}),
+        {.key = "ringCount",
+         .jsonKey = "ring_count",
+         .lo = 0,
+         .hi = kMaxRings,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Ring count:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "ring count"),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "Rings of neighbours displaced with the touched vertex (ring r: the vertices r edges away). The paper "
+             "uses 2; each ring adds a slope below."),
+         .required = true,
+         .entryLo = 0,
+         .entryHi = kMaxRings}),
     listField<&SlopeRingParams::slopeMagnitudeMmPerN, slopesUsed>(
-        {.key = "slopeMagnitudeMmPerN", .jsonKey = "slopes_mm_per_n", .unit = "mm/N", .lo = 0, .hi = kNoLimit,
+        {.key = "slopeMagnitudeMmPerN",
+         .jsonKey = "slopes_mm_per_n",
+         .unit = "mm/N",
+         .lo = 0,
+         .hi = kNoLimit,
          .lower = Bound::Open,
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Slope magnitude |m| in mm/N: how far the vertex moves per newton of contact force; the model applies "
-                "the paper's sign (m < 0), which moves the vertex into the tissue."),
-         .decimals = 9, .step = 0.01, .required = true, .sizeKey = "ring_count", .itemName = slopeName}),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "Slope magnitude |m| in mm/N: how far the vertex moves per newton of contact force; the model applies "
+             "the paper's sign (m < 0), which moves the vertex into the tissue."),
+         .decimals = 9,
+         .step = 0.01,
+         .required = true,
+         .sizeKey = "ring_count",
+         .itemName = slopeName}),
     field<&SlopeRingParams::slopeLimitMmPerN>(
-        {.key = "slopeLimitMmPerN", .jsonKey = "slope_limit_mm_per_n", .unit = "mm/N", .lo = 0, .hi = 100,
-         .lower = Bound::Open, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Slope limit:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "slope limit"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Every slope magnitude must stay below this limit. The paper's range ends at 1 mm/N; calibrated soft "
-                "tissue may need more (at most 100 mm/N), allowed while the loop gain stays stable. Slopes above "
-                "1 mm/N are marked as outside the paper's range."),
-         .decimals = 4, .step = 0.1}),
+        {.key = "slopeLimitMmPerN",
+         .jsonKey = "slope_limit_mm_per_n",
+         .unit = "mm/N",
+         .lo = 0,
+         .hi = 100,
+         .lower = Bound::Open,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Slope limit:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "slope limit"),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "Every slope magnitude must stay below this limit. The paper's range ends at 1 mm/N; calibrated soft "
+             "tissue may need more (at most 100 mm/N), allowed while the loop gain stays stable. Slopes above "
+             "1 mm/N are marked as outside the paper's range."),
+         .decimals = 4,
+         .step = 0.1}),
     field<&SlopeRingParams::contactStiffnessNPerMm>(
-        {.key = "contactStiffnessNPerMm", .jsonKey = "contact_stiffness_n_per_mm", .unit = "N/mm", .lo = 0,
-         .hi = kNoLimit, .lower = Bound::Open, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Contact stiffness k_c:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "contact stiffness"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Stiffness of the tool-tissue contact (a penalty spring). The loop gain is |m1| × k_c."),
-         .decimals = 4, .step = 0.1}),
+        {.key = "contactStiffnessNPerMm",
+         .jsonKey = "contact_stiffness_n_per_mm",
+         .unit = "N/mm",
+         .lo = 0,
+         .hi = kNoLimit,
+         .lower = Bound::Open,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Contact stiffness k_c:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "contact stiffness"),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "Stiffness of the tool-tissue contact (a penalty spring). The loop gain is |m1| × k_c."),
+         .decimals = 4,
+         .step = 0.1}),
     field<&SlopeRingParams::forceRelaxation>(
-        {.key = "forceRelaxation", .jsonKey = "force_relaxation", .lo = 0, .hi = 1, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Force relaxation α:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "force relaxation"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Per-tick relaxation α of the contact force, in (0, 1]. Automatic (0) uses α = 1 / (1 + gain), which "
-                "solves the contact in one tick for any gain. The update is stable while α·(1 + gain) < 2."),
-         .decimals = 4, .step = 0.05}),
+        {.key = "forceRelaxation",
+         .jsonKey = "force_relaxation",
+         .lo = 0,
+         .hi = 1,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Force relaxation α:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "force relaxation"),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "Per-tick relaxation α of the contact force, in (0, 1]. Automatic (0) uses α = 1 / (1 + gain), which "
+             "solves the contact in one tick for any gain. The update is stable while α·(1 + gain) < 2."),
+         .decimals = 4,
+         .step = 0.05}),
     field<&SlopeRingParams::springStiffnessNPerMm>(
-        {.key = "springStiffnessNPerMm", .jsonKey = "spring_stiffness_n_per_mm", .unit = "N/mm", .lo = 0,
-         .hi = kNoLimit, .lower = Bound::Open, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Spring stiffness k:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "spring stiffness"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Stiffness of the springs that tie each vertex to its rest position. The touched vertex's spring "
-                "reaction is the force rendered to the user."),
-         .decimals = 9, .step = 0.1}),
+        {.key = "springStiffnessNPerMm",
+         .jsonKey = "spring_stiffness_n_per_mm",
+         .unit = "N/mm",
+         .lo = 0,
+         .hi = kNoLimit,
+         .lower = Bound::Open,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Spring stiffness k:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "spring stiffness"),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "Stiffness of the springs that tie each vertex to its rest position. The touched vertex's spring "
+             "reaction is the force rendered to the user."),
+         .decimals = 9,
+         .step = 0.1}),
     field<&SlopeRingParams::dampingRatio>(
-        {.key = "dampingRatio", .jsonKey = "damping_ratio", .lo = 0, .hi = 100, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Damping ratio:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "damping ratio"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Damping of the return springs as a fraction of critical: 1 returns without overshoot, below 1 the "
-                "tissue rings before it settles (0..100)."),
-         .decimals = 3, .step = 0.1}),
+        {.key = "dampingRatio",
+         .jsonKey = "damping_ratio",
+         .lo = 0,
+         .hi = 100,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Damping ratio:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "damping ratio"),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "Damping of the return springs as a fraction of critical: 1 returns without overshoot, below 1 the "
+             "tissue rings before it settles (0..100)."),
+         .decimals = 3,
+         .step = 0.1}),
     field<&SlopeRingParams::vertexMassKg>(
-        {.key = "vertexMassKg", .jsonKey = "vertex_mass_kg", .unit = "kg", .lo = 0, .hi = kNoLimit,
-         .lower = Bound::Open, .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Vertex mass:"), .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "vertex mass"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Lumped mass per vertex, for the relaxation after the tool lets go."), .decimals = 7, .step = 0.0005}),
+        {.key = "vertexMassKg",
+         .jsonKey = "vertex_mass_kg",
+         .unit = "kg",
+         .lo = 0,
+         .hi = kNoLimit,
+         .lower = Bound::Open,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Vertex mass:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "vertex mass"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+                                       "Lumped mass per vertex, for the relaxation after the tool lets go."),
+         .decimals = 7,
+         .step = 0.0005}),
 };
 
 }  // namespace
@@ -77,7 +148,8 @@ Problems validateSlopeRingParams(const SlopeRingParams& p) {
             if (std::isfinite(inner) && !(m < inner))
                 problems.push_back({"slopeMagnitudeMmPerN", r, r - 1,
                                     "slopes must decrease outward: " + slopeName(r - 1) + " = " + formatNumber(inner) +
-                                        " mm/N is not greater than " + slopeName(r) + " = " + formatNumber(m) + " mm/N"});
+                                        " mm/N is not greater than " + slopeName(r) + " = " + formatNumber(m) +
+                                        " mm/N"});
         }
     }
     if (problems.empty()) {

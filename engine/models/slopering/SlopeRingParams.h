@@ -3,7 +3,7 @@
 // Slopes are stored as magnitudes in mm/N; the paper's sign (m < 0: the vertex moves against the
 // outward reaction force, into the tissue) is applied by the model. See docs/method.md.
 
-#include "engine/Rings.h"
+#include "engine/core/Rings.h"
 #include "engine/params/FieldTable.h"
 
 #include <array>

@@ -1,0 +1,314 @@
+#include "app/report/ResultsDatabase.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSqlError>
+#include <QSqlQuery>
+#include <QVariant>
+
+#include <atomic>
+
+namespace palpate {
+
+namespace {
+
+std::atomic<int> gConnectionCounter{0};
+
+// Version 1: the first release (no recording path). Kept verbatim for createVersion1().
+const char* const kSchemaV1[] = {
+    "CREATE TABLE trainees (id INTEGER PRIMARY KEY AUTOINCREMENT, name TEXT NOT NULL UNIQUE,"
+    " created TEXT NOT NULL)",
+    "CREATE TABLE results (id INTEGER PRIMARY KEY AUTOINCREMENT,"
+    " trainee_id INTEGER NOT NULL REFERENCES trainees(id),"
+    " exercise_name TEXT NOT NULL, exercise_path TEXT NOT NULL, started_utc TEXT NOT NULL,"
+    " duration_s REAL NOT NULL, score REAL NOT NULL, metrics_json TEXT NOT NULL,"
+    " rubric_json TEXT NOT NULL)",
+    "CREATE INDEX results_by_trainee ON results(trainee_id, started_utc)",
+    "PRAGMA user_version = 1",
+};
+
+// Version 2: the recording a result was scored from.
+const char* const kMigrateV1ToV2[] = {
+    "ALTER TABLE results ADD COLUMN recording_path TEXT NOT NULL DEFAULT ''",
+    "PRAGMA user_version = 2",
+};
+
+QString isoUtc(const QDateTime& t) { return t.toUTC().toString(Qt::ISODateWithMs); }
+QDateTime fromIsoUtc(const QString& s) {
+    QDateTime t = QDateTime::fromString(s, Qt::ISODateWithMs);
+    return t.toUTC();
+}
+
+/// Runs statements in one transaction; the first failure rolls back and is returned.
+QString runInTransaction(QSqlDatabase& db, const char* const* begin, const char* const* end) {
+    if (!db.transaction()) return db.lastError().text();
+    QSqlQuery q(db);
+    for (auto it = begin; it != end; ++it)
+        if (!q.exec(QString::fromLatin1(*it))) {
+            const QString message = q.lastError().text();
+            q.finish();
+            db.rollback();
+            return message;
+        }
+    q.finish();
+    if (!db.commit()) {
+        const QString message = db.lastError().text();
+        db.rollback();
+        return message;
+    }
+    return {};
+}
+
+}  // namespace
+
+ResultsDatabase::ResultsDatabase()
+    : mConnection(QStringLiteral("palpate-results-%1").arg(gConnectionCounter.fetch_add(1))) {}
+
+ResultsDatabase::~ResultsDatabase() { close(); }
+
+bool ResultsDatabase::fail(const QString& problem, QString* error) const {
+    mLastError = tr("%1: %2").arg(QDir::toNativeSeparators(mPath), problem);
+    if (error) *error = mLastError;
+    return false;
+}
+
+void ResultsDatabase::close() {
+    if (!mDb.isValid()) return;
+    mDb.close();
+    mDb = QSqlDatabase();
+    QSqlDatabase::removeDatabase(mConnection);
+}
+
+bool ResultsDatabase::isOpen() const { return mDb.isValid() && mDb.isOpen(); }
+
+bool ResultsDatabase::open(const QString& path, QString* error) {
+    close();
+    mPath = path;
+    const QFileInfo info(path);
+    if (info.exists()) {
+        if (info.isDir()) return fail(tr("is a folder, not a results database"), error);
+        if (!info.isReadable()) return fail(tr("cannot be read (permission denied)"), error);
+        if (!info.isWritable()) return fail(tr("is not writable"), error);
+    } else {
+        const QFileInfo folder(info.absolutePath());
+        if (!folder.isDir())
+            return fail(tr("cannot be created: folder %1 does not exist")
+                            .arg(QDir::toNativeSeparators(folder.absoluteFilePath())), error);
+        if (!folder.isWritable())
+            return fail(tr("cannot be created: folder %1 is not writable")
+                            .arg(QDir::toNativeSeparators(folder.absoluteFilePath())), error);
+    }
+    if (!QSqlDatabase::isDriverAvailable(QStringLiteral("QSQLITE")))
+        return fail(tr("the Qt SQLite driver (QSQLITE) is not installed"), error);
+
+    mDb = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), mConnection);
+    mDb.setDatabaseName(path);
+    if (!mDb.open()) {
+        const QString why = mDb.lastError().text();
+        close();
+        return fail(tr("cannot be opened: %1").arg(why), error);
+    }
+    // SQLite opens lazily: the first read is what finds a file that is not a database.
+    int version = -1;
+    {
+        QSqlQuery q(mDb);
+        if (!q.exec(QStringLiteral("PRAGMA user_version")) || !q.next()) {
+            const QString why = q.lastError().text();
+            q.finish();
+            close();
+            return fail(tr("not a results database (%1)").arg(why), error);
+        }
+        version = q.value(0).toInt();
+        // Durable commits (a write that returned survives a crash) and the trainee references.
+        q.exec(QStringLiteral("PRAGMA synchronous = FULL"));
+        q.exec(QStringLiteral("PRAGMA foreign_keys = ON"));
+    }
+    if (version > kSchemaVersion) {
+        close();
+        return fail(tr("schema version %1 is newer than this build reads (%2): update Palpate")
+                        .arg(version).arg(kSchemaVersion), error);
+    }
+    if (version < kSchemaVersion && !migrate(version, error)) {
+        close();
+        return false;
+    }
+    mLastError.clear();
+    return true;
+}
+
+bool ResultsDatabase::migrate(int from, QString* error) {
+    if (from == 0) {
+        QSqlQuery q(mDb);
+        if (!q.exec(QStringLiteral("SELECT count(*) FROM sqlite_master")) || !q.next())
+            return fail(tr("not a results database (%1)").arg(q.lastError().text()), error);
+        if (q.value(0).toInt() > 0)
+            return fail(tr("is an SQLite database but not a Palpate results database"), error);
+        q.finish();
+        const QString why = runInTransaction(mDb, std::begin(kSchemaV1), std::end(kSchemaV1));
+        if (!why.isEmpty()) return fail(tr("cannot create the tables: %1").arg(why), error);
+        from = 1;
+    }
+    if (from == 1) {
+        const QString why = runInTransaction(mDb, std::begin(kMigrateV1ToV2), std::end(kMigrateV1ToV2));
+        if (!why.isEmpty()) return fail(tr("cannot migrate from schema version 1 to 2: %1").arg(why), error);
+        from = 2;
+    }
+    return true;
+}
+
+int ResultsDatabase::schemaVersion() const {
+    if (!isOpen()) return -1;
+    QSqlQuery q(mDb);
+    if (!q.exec(QStringLiteral("PRAGMA user_version")) || !q.next()) return -1;
+    return q.value(0).toInt();
+}
+
+bool ResultsDatabase::createVersion1(const QString& path, QString* error) {
+    const QString connection =
+        QStringLiteral("palpate-results-v1-%1").arg(gConnectionCounter.fetch_add(1));
+    QString why;
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), connection);
+        db.setDatabaseName(path);
+        if (!db.open())
+            why = db.lastError().text();
+        else
+            why = runInTransaction(db, std::begin(kSchemaV1), std::end(kSchemaV1));
+        db.close();
+    }
+    QSqlDatabase::removeDatabase(connection);
+    if (!why.isEmpty() && error) *error = tr("%1: %2").arg(QDir::toNativeSeparators(path), why);
+    return why.isEmpty();
+}
+
+qint64 ResultsDatabase::addTrainee(const QString& name, QString* error) {
+    const QString trimmed = name.trimmed();
+    if (!isOpen()) return fail(tr("not open"), error), -1;
+    if (trimmed.isEmpty()) return fail(tr("a trainee needs a name"), error), -1;
+    if (!mDb.transaction()) return fail(mDb.lastError().text(), error), -1;
+    qint64 id = -1;
+    QString why;
+    {
+        QSqlQuery q(mDb);
+        q.prepare(QStringLiteral("SELECT id FROM trainees WHERE name = ?"));
+        q.addBindValue(trimmed);
+        if (!q.exec())
+            why = q.lastError().text();
+        else if (q.next())
+            id = q.value(0).toLongLong();
+        else {
+            q.finish();
+            q.prepare(QStringLiteral("INSERT INTO trainees (name, created) VALUES (?, ?)"));
+            q.addBindValue(trimmed);
+            q.addBindValue(isoUtc(QDateTime::currentDateTimeUtc()));
+            if (q.exec())
+                id = q.lastInsertId().toLongLong();
+            else
+                why = q.lastError().text();
+        }
+    }
+    if (why.isEmpty() && !mDb.commit()) why = mDb.lastError().text();
+    if (!why.isEmpty()) {
+        mDb.rollback();
+        return fail(tr("cannot add trainee \"%1\": %2").arg(trimmed, why), error), -1;
+    }
+    return id;
+}
+
+std::vector<TraineeRecord> ResultsDatabase::trainees() const {
+    std::vector<TraineeRecord> out;
+    if (!isOpen()) return out;
+    QSqlQuery q(mDb);
+    if (!q.exec(QStringLiteral("SELECT id, name, created FROM trainees ORDER BY name, id"))) {
+        mLastError = tr("%1: %2").arg(mPath, q.lastError().text());
+        return out;
+    }
+    while (q.next())
+        out.push_back({q.value(0).toLongLong(), q.value(1).toString(), fromIsoUtc(q.value(2).toString())});
+    return out;
+}
+
+qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, const QString& exerciseName,
+                                  const QString& exercisePath, const QDateTime& startedUtc, double durationS,
+                                  const QString& recordingPath, QString* error) {
+    if (!isOpen()) return fail(tr("not open"), error), -1;
+    // The same metrics and rubric objects as `palpate-cli score --json`.
+    const QJsonObject all =
+        QJsonDocument::fromJson(QByteArray::fromStdString(scoreReportToJson(report, -1))).object();
+    const QString metrics = QString::fromUtf8(QJsonDocument(all.value(QStringLiteral("metrics")).toObject())
+                                                  .toJson(QJsonDocument::Compact));
+    const QString rubric = QString::fromUtf8(QJsonDocument(all.value(QStringLiteral("rubric")).toObject())
+                                                 .toJson(QJsonDocument::Compact));
+    if (!mDb.transaction()) return fail(mDb.lastError().text(), error), -1;
+    qint64 id = -1;
+    QString why;
+    {
+        QSqlQuery q(mDb);
+        q.prepare(QStringLiteral("SELECT 1 FROM trainees WHERE id = ?"));
+        q.addBindValue(traineeId);
+        if (!q.exec())
+            why = q.lastError().text();
+        else if (!q.next())
+            why = tr("no trainee with id %1").arg(traineeId);
+        else {
+            q.finish();
+            q.prepare(QStringLiteral(
+                "INSERT INTO results (trainee_id, exercise_name, exercise_path, started_utc, duration_s,"
+                " score, metrics_json, rubric_json, recording_path)"
+                // A null QString binds as NULL: empty text instead.
+                " VALUES (?, COALESCE(?, ''), COALESCE(?, ''), ?, ?, ?, ?, ?, COALESCE(?, ''))"));
+            q.addBindValue(traineeId);
+            q.addBindValue(exerciseName);
+            q.addBindValue(exercisePath);
+            q.addBindValue(isoUtc(startedUtc));
+            q.addBindValue(durationS);
+            q.addBindValue(report.score);
+            q.addBindValue(metrics);
+            q.addBindValue(rubric);
+            q.addBindValue(recordingPath);
+            if (q.exec())
+                id = q.lastInsertId().toLongLong();
+            else
+                why = q.lastError().text();
+        }
+    }
+    if (why.isEmpty() && !mDb.commit()) why = mDb.lastError().text();
+    if (!why.isEmpty()) {
+        mDb.rollback();
+        return fail(tr("cannot store the result: %1").arg(why), error), -1;
+    }
+    return id;
+}
+
+std::vector<ResultRecord> ResultsDatabase::results(qint64 traineeId) const {
+    std::vector<ResultRecord> out;
+    if (!isOpen()) return out;
+    QSqlQuery q(mDb);
+    q.prepare(QStringLiteral(
+        "SELECT id, trainee_id, exercise_name, exercise_path, started_utc, duration_s, score, metrics_json,"
+        " rubric_json, recording_path FROM results WHERE trainee_id = ? ORDER BY started_utc, id"));
+    q.addBindValue(traineeId);
+    if (!q.exec()) {
+        mLastError = tr("%1: %2").arg(mPath, q.lastError().text());
+        return out;
+    }
+    while (q.next()) {
+        ResultRecord r;
+        r.id = q.value(0).toLongLong();
+        r.traineeId = q.value(1).toLongLong();
+        r.exerciseName = q.value(2).toString();
+        r.exercisePath = q.value(3).toString();
+        r.startedUtc = fromIsoUtc(q.value(4).toString());
+        r.durationS = q.value(5).toDouble();
+        r.score = q.value(6).toDouble();
+        r.metricsJson = q.value(7).toString();
+        r.rubricJson = q.value(8).toString();
+        r.recordingPath = q.value(9).toString();
+        out.push_back(std::move(r));
+    }
+    return out;
+}
+
+}  // namespace palpate

@@ -1,0 +1,81 @@
+#pragma once
+// Trainees and their scored sessions in one SQLite file (Qt SQL, QSQLITE), so that the GUI can show
+// a trainee's history. Every write is one transaction: once addResult returns, the row is on disk.
+// The schema carries its version in PRAGMA user_version and older files are migrated on open.
+
+#include "engine/exercise/ScoreReport.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QSqlDatabase>
+#include <QString>
+
+#include <vector>
+
+namespace palpate {
+
+struct TraineeRecord {
+    qint64 id = -1;
+    QString name;
+    QDateTime created;  ///< UTC
+};
+
+struct ResultRecord {
+    qint64 id = -1;
+    qint64 traineeId = -1;
+    QString exerciseName;
+    QString exercisePath;
+    QDateTime startedUtc;
+    double durationS = 0.0;
+    double score = 0.0;
+    QString metricsJson;    ///< `{name: value|null}`, as in `palpate-cli score --json`
+    QString rubricJson;     ///< `{name: {value, sub_score, weight, contribution, full, zero}}`
+    QString recordingPath;  ///< empty when the session was not recorded
+};
+
+class ResultsDatabase {
+    Q_DECLARE_TR_FUNCTIONS(palpate::ResultsDatabase)
+public:
+    /// The version this build writes; files with a newer one are refused, older ones migrated.
+    static constexpr int kSchemaVersion = 2;
+
+    ResultsDatabase();
+    ~ResultsDatabase();
+    ResultsDatabase(const ResultsDatabase&) = delete;
+    ResultsDatabase& operator=(const ResultsDatabase&) = delete;
+
+    /// Opens (creating if missing) and migrates; on failure the message names the file and why.
+    bool open(const QString& path, QString* error = nullptr);
+    void close();
+    bool isOpen() const;
+    QString path() const { return mPath; }
+    /// The version of the open file (kSchemaVersion after a successful open).
+    int schemaVersion() const;
+
+    /// The trainee's id; an existing name gives its id. -1 on error (empty name, database error).
+    qint64 addTrainee(const QString& name, QString* error = nullptr);
+    /// By name.
+    std::vector<TraineeRecord> trainees() const;
+    /// Stores a scored session (committed before returning). -1 on error (unknown trainee, ...).
+    qint64 addResult(qint64 traineeId, const ScoreReport& report, const QString& exerciseName,
+                     const QString& exercisePath, const QDateTime& startedUtc, double durationS,
+                     const QString& recordingPath, QString* error = nullptr);
+    /// The trainee's results, oldest first (the History chart's order).
+    std::vector<ResultRecord> results(qint64 traineeId) const;
+    QString lastError() const { return mLastError; }
+
+    /// Writes an empty version-1 file (no recording_path): kept so that the migration is tested
+    /// against the real old schema, not a guess at it.
+    static bool createVersion1(const QString& path, QString* error = nullptr);
+
+private:
+    bool fail(const QString& problem, QString* error) const;
+    bool migrate(int from, QString* error);
+
+    QString mConnection;
+    QString mPath;
+    QSqlDatabase mDb;
+    mutable QString mLastError;
+};
+
+}  // namespace palpate

@@ -1,0 +1,225 @@
+#include "engine/core/MeshFileProbe.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace palpate {
+
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+    const auto dot = path.find_last_of('.');
+    if (dot == std::string::npos) return {};
+    std::string ext = path.substr(dot + 1);
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+bool readAll(const std::string& path, std::string& bytes) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return false;
+    std::ostringstream s;
+    s << in.rdbuf();
+    bytes = s.str();
+    return true;
+}
+
+/// Lines with content, comments ('#') removed.
+std::vector<std::string> contentLines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) {
+        const auto hash = line.find('#');
+        if (hash != std::string::npos) line.resize(hash);
+        if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
+    }
+    return lines;
+}
+
+/// Counts the leading numbers of a record; sets `nonFinite` if one of them is NaN or infinite.
+std::size_t countNumbers(const std::string& line, bool* nonFinite = nullptr) {
+    std::istringstream in(line);
+    std::size_t n = 0;
+    std::string token;
+    while (in >> token) {
+        char* end = nullptr;
+        const double value = std::strtod(token.c_str(), &end);
+        if (end == token.c_str()) break;
+        if (!std::isfinite(value) && nonFinite) *nonFinite = true;
+        ++n;
+    }
+    return n;
+}
+
+std::string probeOff(const std::string& text) {
+    const auto lines = contentLines(text);
+    if (lines.empty()) return "is not an OFF file (no header)";
+    std::size_t at = 0;
+    std::istringstream header(lines[0]);
+    std::string magic;
+    header >> magic;
+    if (magic.find("OFF") == std::string::npos) return "is not an OFF file (missing 'OFF' header)";
+    if (magic.find("BINARY") != std::string::npos || lines[0].find("BINARY") != std::string::npos) return {};
+    long long nv = -1, nf = -1;
+    if (!(header >> nv >> nf)) {
+        if (lines.size() < 2) return "is truncated: OFF header has no vertex and face counts";
+        std::istringstream counts(lines[1]);
+        if (!(counts >> nv >> nf)) return "has a malformed OFF header: no vertex and face counts";
+        at = 2;
+    } else {
+        at = 1;
+    }
+    if (nv < 0 || nf < 0) return "has a malformed OFF header: negative counts";
+    const std::size_t available = lines.size() - at;
+    if (available < std::size_t(nv) + std::size_t(nf)) {
+        return "is truncated: the OFF header declares " + std::to_string(nv) + " vertices and " +
+               std::to_string(nf) + " faces, but only " + std::to_string(available) + " records follow";
+    }
+    for (long long i = 0; i < nv; ++i) {
+        bool nonFinite = false;
+        if (countNumbers(lines[at + std::size_t(i)], &nonFinite) < 3)
+            return "has a malformed vertex record at OFF vertex " + std::to_string(i);
+        if (nonFinite) return "has NaN or infinite coordinates at OFF vertex " + std::to_string(i);
+    }
+    return {};
+}
+
+std::string probeObj(const std::string& text) {
+    std::istringstream in(text);
+    std::string line;
+    std::size_t lineNo = 0, vertices = 0, faces = 0;
+    while (std::getline(in, line)) {
+        ++lineNo;
+        std::istringstream words(line);
+        std::string key;
+        if (!(words >> key)) continue;
+        if (key == "v") {
+            ++vertices;
+            std::string rest;
+            std::getline(words, rest);
+            bool nonFinite = false;
+            if (countNumbers(rest, &nonFinite) < 3) return "has a malformed vertex at line " + std::to_string(lineNo);
+            if (nonFinite) return "has NaN or infinite coordinates at line " + std::to_string(lineNo);
+        } else if (key == "f") {
+            ++faces;
+            std::size_t corners = 0;
+            std::string token;
+            while (words >> token) {
+                if (token.empty() || !(std::isdigit((unsigned char)token[0]) || token[0] == '-'))
+                    return "has a malformed face at line " + std::to_string(lineNo);
+                ++corners;
+            }
+            if (corners < 3) return "has a face with fewer than 3 corners at line " + std::to_string(lineNo);
+        }
+    }
+    if (vertices == 0) return "has no vertices ('v' lines)";
+    if (faces == 0) return "has no faces ('f' lines)";
+    return {};
+}
+
+std::string probeStl(const std::string& bytes) {
+    const bool looksAscii = bytes.size() >= 5 && bytes.compare(0, 5, "solid") == 0 &&
+                            bytes.find("facet") != std::string::npos;
+    if (looksAscii) {
+        if (bytes.find("endsolid") == std::string::npos) return "is truncated: ASCII STL without 'endsolid'";
+        return {};
+    }
+    if (bytes.size() < 84) return "is truncated: shorter than a binary STL header (84 bytes)";
+    std::uint32_t count = 0;
+    std::memcpy(&count, bytes.data() + 80, 4);
+    const std::uint64_t expected = 84ull + 50ull * count;
+    if (bytes.size() < expected)
+        return "is truncated: binary STL declares " + std::to_string(count) + " triangles (" +
+               std::to_string(expected) + " bytes) but has " + std::to_string(bytes.size()) + " bytes";
+    if (bytes.size() > expected + 1024)
+        return "is not a binary STL: it declares " + std::to_string(count) + " triangles but has " +
+               std::to_string(bytes.size()) + " bytes";
+    for (std::uint32_t t = 0; t < count; ++t)
+        for (int k = 3; k < 12; ++k) {  // skip the facet normal; check the three vertices
+            float value = 0.0f;
+            std::memcpy(&value, bytes.data() + 84 + 50ull * t + 4ull * std::size_t(k), 4);
+            if (!std::isfinite(value))
+                return "has NaN or infinite coordinates in triangle " + std::to_string(t);
+        }
+    return {};
+}
+
+std::string probePly(const std::string& bytes) {
+    if (bytes.compare(0, 3, "ply") != 0) return "is not a PLY file (missing 'ply' magic)";
+    const auto endHeader = bytes.find("end_header");
+    if (endHeader == std::string::npos) return "is truncated: PLY header has no 'end_header'";
+    std::istringstream header(bytes.substr(0, endHeader));
+    std::string line, format;
+    long long nv = -1, nf = -1;
+    std::size_t vertexBytes = 0;
+    std::string current;
+    while (std::getline(header, line)) {
+        std::istringstream w(line);
+        std::string key;
+        w >> key;
+        if (key == "format") w >> format;
+        else if (key == "element") {
+            long long count = 0;
+            w >> current >> count;
+            if (current == "vertex") nv = count;
+            if (current == "face") nf = count;
+        } else if (key == "property" && current == "vertex") {
+            std::string type;
+            w >> type;
+            if (type == "double" || type == "float64") vertexBytes += 8;
+            else if (type == "float" || type == "float32" || type == "int" || type == "uint" || type == "int32" ||
+                     type == "uint32")
+                vertexBytes += 4;
+            else if (type == "short" || type == "ushort" || type == "int16" || type == "uint16")
+                vertexBytes += 2;
+            else vertexBytes += 1;
+        }
+    }
+    if (nv < 0 || nf < 0) return "has a PLY header without vertex or face elements";
+    std::size_t bodyStart = bytes.find('\n', endHeader);
+    bodyStart = bodyStart == std::string::npos ? bytes.size() : bodyStart + 1;
+    if (format == "ascii") {
+        const auto lines = contentLines(bytes.substr(bodyStart));
+        if (lines.size() < std::size_t(nv + nf))
+            return "is truncated: the PLY header declares " + std::to_string(nv) + " vertices and " +
+                   std::to_string(nf) + " faces, but only " + std::to_string(lines.size()) + " records follow";
+        for (long long i = 0; i < nv; ++i) {
+            bool nonFinite = false;
+            countNumbers(lines[std::size_t(i)], &nonFinite);
+            if (nonFinite) return "has NaN or infinite coordinates at PLY vertex " + std::to_string(i);
+        }
+        return {};
+    }
+    // Binary: each face is at least a count byte and three 32-bit indices.
+    const std::uint64_t minimum = std::uint64_t(nv) * vertexBytes + std::uint64_t(nf) * 13ull;
+    if (bytes.size() - bodyStart < minimum)
+        return "is truncated: the binary PLY body has " + std::to_string(bytes.size() - bodyStart) +
+               " bytes, at least " + std::to_string(minimum) + " expected";
+    return {};
+}
+
+}  // namespace
+
+std::string probeMeshFile(const std::string& path) {
+    std::string bytes;
+    if (!readAll(path, bytes)) return "cannot be opened for reading";
+    const std::string ext = lowerExtension(path);
+    const bool textFormat = ext == "obj" || ext == "off";
+    if (textFormat && bytes.find('\0') != std::string::npos)
+        return "contains binary data where a text " + ext + " file was expected (corrupt or not a mesh)";
+    if (ext == "off") return probeOff(bytes);
+    if (ext == "obj") return probeObj(bytes);
+    if (ext == "stl") return probeStl(bytes);
+    if (ext == "ply") return probePly(bytes);
+    if (ext == "om") return {};
+    return "has an unsupported extension '." + ext + "' (use .obj, .off, .ply, .stl or .om)";
+}
+
+}  // namespace palpate

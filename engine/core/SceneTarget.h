@@ -1,0 +1,16 @@
+#pragma once
+// Where scripted devices and tool paths press by default: the side of the mesh (the vertex with
+// the largest x, away from the generators' poles), along its rest normal, stroking towards +y.
+
+#include "device/HapticDevice.h"
+#include "engine/core/TissueMesh.h"
+
+namespace palpate {
+
+/// The vertex with the largest x (0 for an empty mesh).
+VertexId defaultTargetVertex(const TissueMesh& mesh);
+
+/// Aims a device that scripts its motion (HapticDevice::setScene) at defaultTargetVertex.
+void aimAtDefaultTarget(HapticDevice& device, const TissueMesh& mesh);
+
+}  // namespace palpate

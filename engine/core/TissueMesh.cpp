@@ -1,0 +1,440 @@
+#include "engine/core/TissueMesh.h"
+
+#include "engine/core/MeshFileProbe.h"
+#include "engine/core/SpaceFillingCurve.h"
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <mutex>
+#include <numeric>
+#include <sstream>
+
+namespace palpate {
+
+namespace {
+
+using OmMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+constexpr std::size_t kMaxVertices = 50'000'000;
+constexpr double kMinDiagonalMm = 1e-3;
+constexpr double kMaxDiagonalMm = 1e5;
+
+std::string plural(std::size_t n, const char* word) {
+    return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+/// OpenMesh reports reader problems on its global omerr stream, which writes to std::cerr.
+/// While one file loads, std::cerr (and std::clog) write into a buffer instead, so the text can be
+/// turned into a message that names the file. (Connecting a stream to omerr and disconnecting it
+/// leaks inside OpenMesh, so the standard streams' buffers are swapped instead.)
+class OmErrCapture {
+public:
+    OmErrCapture()
+        : mLock(mutex()), mOldErr(std::cerr.rdbuf(mText.rdbuf())), mOldLog(std::clog.rdbuf(mText.rdbuf())) {}
+    ~OmErrCapture() {
+        omerr().flush();
+        std::cerr.rdbuf(mOldErr);
+        std::clog.rdbuf(mOldLog);
+    }
+    std::string text() {
+        omerr().flush();
+        return mText.str();
+    }
+
+private:
+    static std::mutex& mutex() {
+        static std::mutex m;
+        return m;
+    }
+    std::lock_guard<std::mutex> mLock;
+    std::ostringstream mText;
+    std::streambuf* mOldErr;
+    std::streambuf* mOldLog;
+};
+
+std::size_t countOccurrences(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+}  // namespace
+
+/// Validation and flat-array construction, shared by files and generators.
+struct MeshBuilder {
+    static TissueMesh::LoadResult build(std::vector<glm::vec3> positions,
+                                        std::vector<std::array<VertexId, 3>> triangles,
+                                        MeshReport report, bool reorder);
+};
+
+std::string MeshReport::text() const {
+    std::ostringstream out;
+    out << source << ": " << (valid() ? "valid" : "INVALID") << "\n";
+    out << "  vertices: " << vertexCount << "\n";
+    out << "  triangles: " << triangleCount << "\n";
+    out << "  bounding-box diagonal: " << bboxDiagonalMm << " mm\n";
+    out << "  boundary edges: " << boundaryEdgeCount << (boundaryEdgeCount ? " (open surface)" : " (closed)")
+        << "\n";
+    out << "  non-manifold edges: " << nonManifoldEdgeCount << "\n";
+    out << "  non-manifold vertices: " << nonManifoldVertexCount << "\n";
+    out << "  degenerate triangles: " << degenerateTriangleCount << "\n";
+    out << "  non-finite vertices: " << nonFiniteVertexCount << "\n";
+    out << "  unused vertices: " << isolatedVertexCount << "\n";
+    for (const std::string& e : errors) out << "  error: " << e << "\n";
+    for (const std::string& w : warnings) out << "  warning: " << w << "\n";
+    return out.str();
+}
+
+TissueMesh::LoadResult TissueMesh::load(const std::string& path) {
+    namespace fs = std::filesystem;
+    MeshReport report;
+    report.source = path;
+    auto fail = [&](const std::string& problem) {
+        report.errors.push_back(path + ": " + problem);
+        return LoadResult{std::nullopt, report};
+    };
+
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) return fail("no such file");
+    if (fs::is_directory(status)) return fail("is a directory, not a mesh file");
+    if (!fs::is_regular_file(status)) return fail("is not a regular file");
+    const auto bytes = fs::file_size(path, ec);
+    if (ec) return fail("cannot read its size: " + ec.message());
+    if (bytes == 0) return fail("is empty (0 bytes)");
+
+    const std::string probeError = probeMeshFile(path);
+    if (!probeError.empty()) return fail(probeError);
+
+    OmMesh om;
+    om.request_vertex_status();
+    om.request_face_status();
+    om.request_edge_status();
+    std::string readerText;
+    bool readOk = false;
+    {
+        OmErrCapture capture;
+        OpenMesh::IO::Options options;
+        try {
+            readOk = OpenMesh::IO::read_mesh(om, path, options);
+        } catch (const std::exception& e) {
+            readOk = false;
+            readerText = e.what();
+        }
+        readerText += capture.text();
+    }
+    if (!readOk) {
+        std::string why = "cannot be read as a mesh (unknown extension, or not a mesh in that format)";
+        if (!readerText.empty()) {
+            std::string first = readerText.substr(0, readerText.find('\n'));
+            why += ": " + first;
+        }
+        return fail(why);
+    }
+
+    std::vector<glm::vec3> positions(om.n_vertices());
+    for (auto vh : om.vertices()) {
+        const auto& p = om.point(vh);
+        positions[vh.idx()] = glm::vec3(p[0], p[1], p[2]);
+    }
+    std::vector<std::array<VertexId, 3>> triangles;
+    triangles.reserve(om.n_faces());
+    std::size_t splitFaces = 0;
+    for (auto fh : om.faces()) {
+        if (om.status(fh).fixed_nonmanifold()) ++splitFaces;
+        std::array<VertexId, 3> t{};
+        int i = 0;
+        for (auto vh : om.fv_range(fh)) {
+            if (i < 3) t[i] = VertexId(vh.idx());
+            ++i;
+        }
+        if (i == 3) triangles.push_back(t);
+    }
+
+    const std::size_t equalVertexFaces = countOccurrences(readerText, "equal vertices");
+    const std::size_t invalidIndexFaces = countOccurrences(readerText, "invalid vertex index");
+    if (invalidIndexFaces > 0)
+        report.errors.push_back(path + ": " + plural(invalidIndexFaces, "face") +
+                                " refer to vertices that do not exist (truncated or corrupt file)");
+    if (equalVertexFaces > 0) {
+        report.degenerateTriangleCount += equalVertexFaces;
+        report.errors.push_back(path + ": " + plural(equalVertexFaces, "degenerate face") +
+                                " (a vertex repeated within a face)");
+    }
+    if (splitFaces > 0) {
+        report.nonManifoldEdgeCount += splitFaces;
+        report.errors.push_back(path + ": non-manifold: " + plural(splitFaces, "face") +
+                                " share an edge with two others or join at a complex vertex");
+    }
+    return MeshBuilder::build(std::move(positions), std::move(triangles), std::move(report), true);
+}
+
+TissueMesh::LoadResult TissueMesh::fromTriangles(std::vector<glm::vec3> positionsMm,
+                                                 const std::vector<std::array<VertexId, 3>>& triangles,
+                                                 const std::string& sourceName, bool reorderAlongCurve) {
+    MeshReport report;
+    report.source = sourceName;
+    return MeshBuilder::build(std::move(positionsMm), triangles, std::move(report), reorderAlongCurve);
+}
+
+TissueMesh::LoadResult MeshBuilder::build(std::vector<glm::vec3> positions,
+                                          std::vector<std::array<VertexId, 3>> triangles, MeshReport report,
+                                          bool reorder) {
+    const std::string& src = report.source;
+    auto error = [&](const std::string& problem) { report.errors.push_back(src + ": " + problem); };
+    const std::size_t nv = positions.size();
+    report.vertexCount = nv;
+    report.triangleCount = triangles.size();
+
+    if (nv == 0 || triangles.empty()) {
+        error(nv == 0 ? "has no vertices" : "has no triangles");
+        return {std::nullopt, report};
+    }
+    if (nv > kMaxVertices) {
+        error("has " + std::to_string(nv) + " vertices, more than the supported " +
+              std::to_string(kMaxVertices));
+        return {std::nullopt, report};
+    }
+
+    // Finite coordinates and size.
+    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : positions) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+            ++report.nonFiniteVertexCount;
+            continue;
+        }
+        lo = glm::min(lo, glm::dvec3(p));
+        hi = glm::max(hi, glm::dvec3(p));
+    }
+    if (report.nonFiniteVertexCount > 0) {
+        error(plural(report.nonFiniteVertexCount, "vertex") + " with NaN or infinite coordinates");
+        return {std::nullopt, report};
+    }
+    report.bboxDiagonalMm = glm::length(hi - lo);
+    if (report.bboxDiagonalMm < kMinDiagonalMm || report.bboxDiagonalMm > kMaxDiagonalMm) {
+        std::ostringstream s;
+        s << "absurd size: bounding-box diagonal " << report.bboxDiagonalMm << " mm (expected "
+          << kMinDiagonalMm << " to " << kMaxDiagonalMm << " mm)";
+        error(s.str());
+    }
+
+    // Indices and degenerate triangles (zero area relative to the model's scale).
+    const double minArea2 = std::pow(report.bboxDiagonalMm * 1e-7, 4);
+    std::size_t badIndex = 0;
+    for (const auto& t : triangles) {
+        if (t[0] >= nv || t[1] >= nv || t[2] >= nv) {
+            ++badIndex;
+            continue;
+        }
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+            ++report.degenerateTriangleCount;
+            continue;
+        }
+        const glm::dvec3 a(positions[t[0]]), b(positions[t[1]]), c(positions[t[2]]);
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        if (glm::dot(n, n) <= minArea2) ++report.degenerateTriangleCount;
+    }
+    if (badIndex) {
+        error(plural(badIndex, "triangle") + " refer to vertices that do not exist");
+        return {std::nullopt, report};
+    }
+    if (report.degenerateTriangleCount > 0 &&
+        std::none_of(report.errors.begin(), report.errors.end(),
+                     [](const std::string& e) { return e.find("degenerate") != std::string::npos; }))
+        error(plural(report.degenerateTriangleCount, "degenerate triangle") + " (zero area)");
+
+    // Edges: boundary (1 face), manifold (2 faces, opposite directions), non-manifold (3+).
+    struct DirectedEdge {
+        std::uint64_t key;
+        bool forward;
+    };
+    std::vector<DirectedEdge> edges;
+    edges.reserve(triangles.size() * 3);
+    for (const auto& t : triangles)
+        for (int i = 0; i < 3; ++i) {
+            const VertexId a = t[i], b = t[(i + 1) % 3];
+            const VertexId lo32 = std::min(a, b), hi32 = std::max(a, b);
+            edges.push_back({std::uint64_t(lo32) << 32 | hi32, a < b});
+        }
+    std::sort(edges.begin(), edges.end(),
+              [](const DirectedEdge& x, const DirectedEdge& y) { return x.key < y.key; });
+    std::size_t misoriented = 0;
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i;
+        int forward = 0;
+        while (j < edges.size() && edges[j].key == edges[i].key) forward += edges[j++].forward ? 1 : 0;
+        const std::size_t count = j - i;
+        if (count == 1) ++report.boundaryEdgeCount;
+        else if (count > 2) ++report.nonManifoldEdgeCount;
+        else if (forward != 1) ++misoriented;
+        i = j;
+    }
+    if (report.nonManifoldEdgeCount > 0 &&
+        std::none_of(report.errors.begin(), report.errors.end(),
+                     [](const std::string& e) { return e.find("non-manifold") != std::string::npos; }))
+        error("non-manifold: " + plural(report.nonManifoldEdgeCount, "edge") + " shared by three or more triangles");
+    if (misoriented > 0)
+        error(plural(misoriented, "edge") + " where neighbouring triangles are inconsistently oriented");
+
+    // Vertex fans: a manifold vertex's incident triangles form one fan.
+    std::vector<std::uint32_t> incidentStart(nv + 1, 0);
+    for (const auto& t : triangles)
+        for (VertexId v : t) ++incidentStart[v + 1];
+    for (std::size_t v = 0; v < nv; ++v) incidentStart[v + 1] += incidentStart[v];
+    std::vector<std::uint32_t> incident(incidentStart.back());
+    {
+        std::vector<std::uint32_t> fill(incidentStart.begin(), incidentStart.end() - 1);
+        for (std::uint32_t f = 0; f < triangles.size(); ++f)
+            for (VertexId v : triangles[f]) incident[fill[v]++] = f;
+    }
+    std::vector<VertexId> others;
+    std::vector<std::uint32_t> parent;
+    for (VertexId v = 0; v < nv; ++v) {
+        const std::uint32_t begin = incidentStart[v], end = incidentStart[v + 1];
+        if (begin == end) {
+            ++report.isolatedVertexCount;
+            continue;
+        }
+        others.clear();
+        for (std::uint32_t i = begin; i < end; ++i)
+            for (VertexId w : triangles[incident[i]])
+                if (w != v) others.push_back(w);
+        std::sort(others.begin(), others.end());
+        others.erase(std::unique(others.begin(), others.end()), others.end());
+        parent.resize(others.size());
+        std::iota(parent.begin(), parent.end(), 0u);
+        auto find = [&](std::uint32_t x) {
+            while (parent[x] != x) x = parent[x] = parent[parent[x]];
+            return x;
+        };
+        auto slot = [&](VertexId w) {
+            return std::uint32_t(std::lower_bound(others.begin(), others.end(), w) - others.begin());
+        };
+        std::size_t components = others.size();
+        for (std::uint32_t i = begin; i < end; ++i) {
+            const auto& t = triangles[incident[i]];
+            VertexId a = kNoVertex, b = kNoVertex;
+            for (VertexId w : t)
+                if (w != v) (a == kNoVertex ? a : b) = w;
+            if (a == kNoVertex || b == kNoVertex) continue;
+            const std::uint32_t ra = find(slot(a)), rb = find(slot(b));
+            if (ra != rb) {
+                parent[ra] = rb;
+                --components;
+            }
+        }
+        if (components > 1) ++report.nonManifoldVertexCount;
+    }
+    if (report.nonManifoldVertexCount > 0)
+        error("non-manifold: " + plural(report.nonManifoldVertexCount, "vertex") +
+              " where separate sheets of triangles touch at a single point");
+    if (report.boundaryEdgeCount > 0)
+        report.warnings.push_back(src + ": open surface with " + plural(report.boundaryEdgeCount, "boundary edge") +
+                                  " (allowed; contact near the boundary is less accurate)");
+    if (report.isolatedVertexCount > 0)
+        report.warnings.push_back(src + ": " + plural(report.isolatedVertexCount, "vertex") +
+                                  " used by no triangle (dropped)");
+    if (!report.valid()) return {std::nullopt, report};
+
+    // Drop unused vertices, then renumber along the Morton curve.
+    std::vector<VertexId> keep;
+    keep.reserve(nv);
+    for (VertexId v = 0; v < nv; ++v)
+        if (incidentStart[v + 1] > incidentStart[v]) keep.push_back(v);
+    std::vector<glm::vec3> kept(keep.size());
+    for (std::size_t i = 0; i < keep.size(); ++i) kept[i] = positions[keep[i]];
+    std::vector<std::uint32_t> order(keep.size());
+    if (reorder) order = mortonOrder(kept, mortonCubeFor(kept));
+    else std::iota(order.begin(), order.end(), 0u);
+    std::vector<VertexId> newIndexOfOld(nv, kNoVertex);
+    TissueMesh mesh;
+    mesh.mRestMm.resize(keep.size());
+    mesh.mOriginalIndex.resize(keep.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const VertexId old = keep[order[i]];
+        newIndexOfOld[old] = VertexId(i);
+        mesh.mRestMm[i] = positions[old];
+        mesh.mOriginalIndex[i] = old;
+    }
+    mesh.mTriangles.resize(triangles.size());
+    for (std::size_t f = 0; f < triangles.size(); ++f)
+        for (int k = 0; k < 3; ++k) mesh.mTriangles[f][k] = newIndexOfOld[triangles[f][k]];
+
+    // Outward orientation: a closed surface with negative signed volume is inside out.
+    if (report.boundaryEdgeCount == 0) {
+        double volume6 = 0.0;
+        for (const auto& t : mesh.mTriangles)
+            volume6 += glm::dot(glm::dvec3(mesh.mRestMm[t[0]]),
+                                glm::cross(glm::dvec3(mesh.mRestMm[t[1]]), glm::dvec3(mesh.mRestMm[t[2]])));
+        if (volume6 < 0.0) {
+            for (auto& t : mesh.mTriangles) std::swap(t[1], t[2]);
+            report.warnings.push_back(src + ": triangles faced inward; flipped so normals point out");
+        }
+    }
+
+    // Area-weighted vertex normals.
+    const std::size_t n = mesh.mRestMm.size();
+    std::vector<glm::dvec3> normalSum(n, glm::dvec3(0.0));
+    double edgeSum = 0.0;
+    for (const auto& t : mesh.mTriangles) {
+        const glm::dvec3 a(mesh.mRestMm[t[0]]), b(mesh.mRestMm[t[1]]), c(mesh.mRestMm[t[2]]);
+        const glm::dvec3 fn = glm::cross(b - a, c - a);
+        for (VertexId v : t) normalSum[v] += fn;
+        edgeSum += glm::length(b - a) + glm::length(c - b) + glm::length(a - c);
+    }
+    mesh.mMeanEdgeMm = edgeSum / double(3 * mesh.mTriangles.size());
+    mesh.mRestNormals.resize(n);
+    for (std::size_t v = 0; v < n; ++v) {
+        const double len = glm::length(normalSum[v]);
+        mesh.mRestNormals[v] = len > 0.0 ? glm::vec3(normalSum[v] / len) : glm::vec3(0.0f, 0.0f, 1.0f);
+    }
+
+    // Vertex adjacency (CSR), sorted and unique per vertex.
+    std::vector<std::vector<VertexId>> adjacency(n);
+    for (const auto& t : mesh.mTriangles)
+        for (int k = 0; k < 3; ++k) {
+            adjacency[t[k]].push_back(t[(k + 1) % 3]);
+            adjacency[t[k]].push_back(t[(k + 2) % 3]);
+        }
+    mesh.mNeighbourStart.assign(n + 1, 0);
+    for (std::size_t v = 0; v < n; ++v) {
+        auto& a = adjacency[v];
+        std::sort(a.begin(), a.end());
+        a.erase(std::unique(a.begin(), a.end()), a.end());
+        mesh.mNeighbourStart[v + 1] = mesh.mNeighbourStart[v] + std::uint32_t(a.size());
+        mesh.mMaxValence = std::max(mesh.mMaxValence, a.size());
+    }
+    mesh.mNeighbours.reserve(mesh.mNeighbourStart.back());
+    for (auto& a : adjacency) mesh.mNeighbours.insert(mesh.mNeighbours.end(), a.begin(), a.end());
+
+    mesh.mBoundsMin = glm::vec3(lo);
+    mesh.mBoundsMax = glm::vec3(hi);
+    report.vertexCount = n;
+    mesh.mReport = report;
+    return {std::move(mesh), report};
+}
+
+std::string TissueMesh::save(const std::string& path) const {
+    OmMesh om;
+    std::vector<OmMesh::VertexHandle> handles(mRestMm.size());
+    for (std::size_t v = 0; v < mRestMm.size(); ++v)
+        handles[v] = om.add_vertex(OmMesh::Point(mRestMm[v].x, mRestMm[v].y, mRestMm[v].z));
+    for (const auto& t : mTriangles) om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
+    OmErrCapture capture;
+    OpenMesh::IO::Options options;
+    if (!OpenMesh::IO::write_mesh(om, path, options, 9)) {
+        const std::string text = capture.text();
+        return path + ": cannot write mesh" + (text.empty() ? "" : ": " + text.substr(0, text.find('\n')));
+    }
+    return {};
+}
+
+}  // namespace palpate

@@ -1,0 +1,96 @@
+#pragma once
+// A graded exercise: what the trainee must do on which tissue, in how long, and how it is graded.
+// Three types: press a sequence of surface targets with a force inside a window and hold it; find
+// a hidden stiff inclusion by palpation and mark it; trace a path on the surface keeping contact
+// and the force in a band. Stored as versioned JSON (ExerciseFile.h); every key is in
+// docs/scoring.md.
+
+#include "engine/lod/LodNeeds.h"
+#include "engine/exercise/Metric.h"
+#include "engine/exercise/Rubric.h"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace palpate {
+
+inline constexpr int kExerciseVersion = 1;
+
+/// A point on the tissue surface: a vertex of the mesh file (in the file's own numbering, as a
+/// mesh viewer shows it), or a point in the mesh's frame, snapped to the nearest vertex at rest.
+struct SurfacePoint {
+    std::optional<std::uint32_t> vertex;
+    glm::vec3 pointMm{0.0f};  ///< used when `vertex` is empty
+};
+
+/// Press targets: one target.
+struct PressTarget {
+    SurfacePoint at;
+    double forceMinN = 1.0;    ///< the window [forceMinN, forceMaxN] on |F| rendered
+    double forceMaxN = 2.0;
+    double holdS = 1.0;        ///< time to stay on the target inside the window without a break
+    double toleranceMm = 3.0;  ///< the contact point must be this close to the target
+};
+
+struct PressTargetsDef {
+    std::vector<PressTarget> targets;  ///< done in this order
+};
+
+/// Find the lump: a stiffer region of the tissue (the physics changes: CoherentSlopeRing's
+/// compliance factors).
+struct InclusionDef {
+    SurfacePoint centre;            ///< snapped to a vertex
+    double radiusMm = 10.0;         ///< vertices this close to the centre (at rest) are in it
+    double stiffnessFactor = 0.25;  ///< their slopes are multiplied by this, in (0, 1]: smaller is stiffer
+};
+
+struct FindLumpDef {
+    InclusionDef inclusion;
+};
+
+/// Trace: a polyline on the surface.
+struct TraceDef {
+    std::vector<SurfacePoint> path;  ///< at least 2 points, each snapped to a vertex
+    double forceMinN = 0.5;          ///< the band [forceMinN, forceMaxN] on |F|
+    double forceMaxN = 1.5;
+    double toleranceMm = 4.0;        ///< a path point is covered by contact this close to it
+};
+
+struct Exercise {
+    std::string name;
+    std::string description;
+    ExerciseType type = ExerciseType::PressTargets;
+    std::string meshPath;           ///< as written: absolute, relative to the file, or to resources/
+    std::string tissuePresetPath;   ///< the same
+    double timeLimitS = 60.0;       ///< ticks after it are not scored
+    double displacementLimitMm = 10.0;  ///< tissue displaced further than this counts as damage
+    double excessiveForceN = 3.0;   ///< |F| above this is excessive
+    PressTargetsDef pressTargets;   ///< type PressTargets
+    FindLumpDef findLump;           ///< type FindLump
+    TraceDef trace;                 ///< type Trace
+    /// The rubric lines the exercise sets; metrics without one use defaultRubricItem().
+    std::array<std::optional<RubricItem>, kMetricCount> rubric{};
+    /// "needs": the accuracy target and haptic budget the model must meet (docs/lod.md); absent
+    /// means the exercise states none. Checked by parseExercise and saveExercise (validateLodNeeds).
+    std::optional<LodNeeds> needs;
+    /// The file it was read from (relative paths resolve from its folder); not saved.
+    std::string sourcePath;
+};
+
+/// Every problem, each naming the key as in the JSON file ("press_targets.targets[1].force_max_n:
+/// ..."); empty when valid. Vertex ids are checked against a mesh later (ExerciseGeometry).
+std::vector<std::string> validateExercise(const Exercise& exercise);
+
+/// The default rubric line for a metric of this exercise (docs/scoring.md lists them): weights per
+/// type, thresholds from the exercise's own numbers (time limit, tolerances, excessive force).
+RubricItem defaultRubricItem(const Exercise& exercise, Metric metric);
+/// The rubric the exercise is graded by: its own lines, defaults for the rest; zero weight for
+/// metrics of other types.
+Rubric effectiveRubric(const Exercise& exercise);
+
+}  // namespace palpate

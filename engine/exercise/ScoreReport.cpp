@@ -1,0 +1,99 @@
+#include "engine/exercise/ScoreReport.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <sstream>
+
+namespace palpate {
+
+const MetricResult* ScoreReport::find(Metric metric) const {
+    for (const MetricResult& m : metrics)
+        if (m.metric == metric) return &m;
+    return nullptr;
+}
+
+std::string scoreReportToJson(const ScoreReport& r, int indent) {
+    using Json = nlohmann::ordered_json;
+    Json metrics = Json::object(), rubric = Json::object();
+    for (const MetricResult& m : r.metrics) {
+        const std::string name(metricName(m.metric));
+        metrics[name] = m.measured ? Json(m.value) : Json(nullptr);
+        rubric[name] = {{"value", m.measured ? Json(m.value) : Json(nullptr)},
+                        {"sub_score", m.subScore},
+                        {"weight", m.weight},
+                        {"contribution", m.contribution},
+                        {"full", m.fullMarks},
+                        {"zero", m.zeroMarks}};
+    }
+    Json j{{"score", r.score},
+           {"metrics", metrics},
+           {"rubric", rubric},
+           {"exercise", r.exerciseName},
+           {"type", std::string(exerciseTypeName(r.type))},
+           {"completed", r.guidance.completed},
+           {"time_up", r.guidance.timeUp},
+           {"ticks_scored", r.ticksScored},
+           {"ticks_after_end", r.ticksAfterEnd},
+           {"first_tick", r.firstTick},
+           {"last_tick", r.lastTick},
+           {"marks", r.marks}};
+    if (r.type == ExerciseType::PressTargets) {
+        Json targets = Json::array();
+        for (const TargetResult& t : r.targets)
+            targets.push_back({{"achieved", t.achieved},
+                               {"achieved_at_s", t.achieved ? Json(t.achievedAtS) : Json(nullptr)},
+                               {"error_mm", t.errorMeasured ? Json(t.errorMm) : Json(nullptr)},
+                               {"on_target_s", t.onTargetS},
+                               {"in_window_s", t.inWindowS}});
+        j["targets"] = targets;
+    }
+    j["warnings"] = r.warnings;
+    return indent < 0 ? j.dump() : j.dump(indent);
+}
+
+std::string scoreReportToText(const ScoreReport& r) {
+    std::ostringstream out;
+    char line[256];
+    std::snprintf(line, sizeof(line), "%s (%s): score %.1f / 100%s\n", r.exerciseName.c_str(),
+                  std::string(exerciseTypeName(r.type)).c_str(), r.score,
+                  r.guidance.completed ? ", completed" : (r.guidance.timeUp ? ", time up" : ", not completed"));
+    out << line;
+    std::snprintf(line, sizeof(line), "  %-26s %12s %6s %7s %8s  %s\n", "metric", "value", "sub", "weight", "points",
+                  "full .. zero");
+    out << line;
+    for (const MetricResult& m : r.metrics) {
+        char value[32];
+        if (m.measured) std::snprintf(value, sizeof(value), "%.3f", m.value);
+        else std::snprintf(value, sizeof(value), "-");
+        const std::string unit(metricUnit(m.metric));
+        std::snprintf(line, sizeof(line), "  %-26s %12s %6.2f %7.1f %8.2f  %g .. %g%s%s\n",
+                      std::string(metricName(m.metric)).c_str(), value, m.subScore, m.weight, m.contribution,
+                      m.fullMarks, m.zeroMarks, unit.empty() ? "" : " ", unit.c_str());
+        out << line;
+    }
+    for (std::size_t i = 0; i < r.targets.size(); ++i) {
+        const TargetResult& t = r.targets[i];
+        std::snprintf(line, sizeof(line), "  target %zu: %s", i + 1, t.achieved ? "achieved" : "not achieved");
+        out << line;
+        if (t.achieved) {
+            std::snprintf(line, sizeof(line), " at %.2f s", t.achievedAtS);
+            out << line;
+        }
+        if (t.errorMeasured) {
+            std::snprintf(line, sizeof(line), ", error %.2f mm", t.errorMm);
+            out << line;
+        }
+        std::snprintf(line, sizeof(line), ", %.2f s in window of %.2f s on target\n", t.inWindowS, t.onTargetS);
+        out << line;
+    }
+    std::snprintf(line, sizeof(line), "  ticks scored %llu (ticks %llu..%llu), after the end %llu, marks %llu\n",
+                  static_cast<unsigned long long>(r.ticksScored), static_cast<unsigned long long>(r.firstTick),
+                  static_cast<unsigned long long>(r.lastTick), static_cast<unsigned long long>(r.ticksAfterEnd),
+                  static_cast<unsigned long long>(r.marks));
+    out << line;
+    for (const std::string& w : r.warnings) out << "  warning: " << w << "\n";
+    return out.str();
+}
+
+}  // namespace palpate

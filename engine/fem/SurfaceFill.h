@@ -1,0 +1,86 @@
+#pragma once
+// The reference FEM on any tissue surface: a closed, outward-oriented TissueMesh is filled with
+// tets (prism layers extruded inward along the vertex normals, each prism split into 3 tets), the
+// innermost layer is held fixed (tissue over a rigid core), and a flat punch pressed at a surface
+// vertex gives the per-vertex displacement and the force that slope calibration fits to.
+// Own method (no TetGen/CGAL: licences). Units: mm, N, N/mm^2.
+
+#include "engine/core/TissueMesh.h"
+#include "engine/fem/LinearElasticFem.h"
+#include "engine/fem/TetMesh.h"
+
+#include <glm/vec3.hpp>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace palpate {
+
+struct SurfaceFillOptions {
+    int layers = 4;                      ///< prism layers, 1..32
+    /// Total thickness T (mm) of the tissue over the core; nullopt = a quarter of the smallest
+    /// extent of the bounding box. Must be positive and finite when given.
+    std::optional<double> thicknessMm;
+    double layerGrowth = 1.5;            ///< each layer this much thicker than the one outside it (fine at the surface)
+    int maxHalvings = 6;                 ///< T is halved at most this often while a tet inverts
+};
+
+/// The filled surface. Node node(v, l) is surface vertex v (TissueMesh order) moved inward along
+/// its normal by the depth of layer l (l = 0: the surface itself, l = layers: the fixed core).
+struct FilledSurface {
+    TetMesh mesh;
+    std::size_t surfaceVertexCount = 0;
+    int layers = 0;
+    /// A vertex's column of nodes is contiguous (better locality for the solver than layer-major).
+    TetNodeId node(VertexId v, int layer) const { return TetNodeId(std::size_t(v) * std::size_t(layers + 1) + std::size_t(layer)); }
+    double requestedThicknessMm = 0.0;
+    double thicknessMm = 0.0;            ///< as used, after halvings
+    int halvings = 0;
+    double minTetVolumeMm3 = 0.0;
+    double seconds = 0.0;
+};
+
+/// Fills the surface. Throws std::invalid_argument with a message naming the problem: open or
+/// inward-facing surface, bad options, or no positive-volume fill after maxHalvings.
+FilledSurface fillSurface(const TissueMesh& mesh, const SurfaceFillOptions& options = {});
+
+struct SurfaceIndentation {
+    std::vector<glm::dvec3> displacementMm;  ///< per surface vertex, TissueMesh order
+    double reactionForceN = 0.0;             ///< along the touched vertex's rest normal, positive pushing in
+    std::size_t prescribedVertexCount = 0;   ///< surface vertices under the punch
+    std::size_t nodes = 0, tets = 0, dofs = 0, freeDofs = 0;
+    double thicknessMm = 0.0;
+    FemSolveStats solve;
+    double seconds = 0.0;                    ///< assembly + factorization + solve of this indentation
+};
+
+/// One filled surface, indented at any vertex (the fill is done once).
+class SurfaceIndenter {
+public:
+    /// Throws std::invalid_argument (see fillSurface; also a bad material).
+    SurfaceIndenter(const TissueMesh& mesh, const ElasticMaterial& material, const SurfaceFillOptions& fill = {},
+                    const FemSolverOptions& solver = {});
+
+    /// Flat frictionless punch of radius a: the surface vertices within distance a of `touched`
+    /// (at least `touched`) move by `indentationMm` along minus the touched vertex's rest normal;
+    /// their motion across that normal is free. Throws std::invalid_argument on bad input.
+    SurfaceIndentation indent(VertexId touched, double punchRadiusMm, double indentationMm) const;
+
+    const FilledSurface& filled() const { return mFilled; }
+    /// Time to assemble K once (global frame); each indentation rotates it instead of reassembling.
+    double assemblySeconds() const { return mStiffness.assemblySeconds(); }
+
+private:
+    std::vector<glm::dvec3> mRestMm;
+    std::vector<glm::dvec3> mNormals;
+    FemSolverOptions mSolver;
+    FilledSurface mFilled;
+    StiffnessMatrix mStiffness;
+};
+
+/// Convenience: fill and indent once.
+SurfaceIndentation indentSurface(const TissueMesh& mesh, VertexId touched, double punchRadiusMm, double indentationMm,
+                                 const ElasticMaterial& material, const SurfaceFillOptions& fill = {});
+
+}  // namespace palpate

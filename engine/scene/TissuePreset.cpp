@@ -1,0 +1,277 @@
+#include "engine/scene/TissuePreset.h"
+
+#include "engine/io/AtomicFile.h"
+#include "engine/core/HapticRate.h"
+#include "engine/io/TextFile.h"
+#include "engine/io/JsonFields.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+namespace palpate {
+
+namespace {
+
+constexpr const char* kFormat = "palpate-tissue-preset";
+
+constexpr FieldDef<TissueProperties> kTissueFields[] = {
+    field<&TissueProperties::youngsModulusKPa>(
+        {.key = "youngsModulusKPa",
+         .jsonKey = "youngs_modulus_kpa",
+         .unit = "kPa",
+         .lo = 0,
+         .hi = 1e9,
+         .lower = Bound::Open,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Young's modulus E:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Young's modulus"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+                                       "Stiffness of the tissue, kPa (soft tissue: about 1 to 30 kPa)."),
+         .decimals = 4,
+         .step = 0.1,
+         .required = true}),
+    field<&TissueProperties::poissonRatio>(
+        {.key = "poissonRatio",
+         .jsonKey = "poisson_ratio",
+         .lo = 0,
+         .hi = 0.4999,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Poisson's ratio ν:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Poisson's ratio"),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "How the tissue bulges sideways when pressed, 0..0.4999 (soft tissue is nearly incompressible: about "
+             "0.45 to 0.49; 0.5 would be incompressible)."),
+         .decimals = 4,
+         .step = 0.01,
+         .required = true}),
+    field<&TissueProperties::toolRadiusMm>(
+        {.key = "toolRadiusMm",
+         .jsonKey = "tool_radius_mm",
+         .unit = "mm",
+         .lo = 0.01,
+         .hi = 1000,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Tool radius a:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "tool radius"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Radius of the probe's flat tip, mm (0.01..1000)."),
+         .decimals = 3,
+         .step = 0.5}),
+};
+
+constexpr FieldDef<PresetStabilityMargin> kMarginFields[] = {
+    // Any finite margin up to 1 (far beyond a bound it is a large negative number).
+    field<&PresetStabilityMargin::margin>(
+        {.key = "margin", .jsonKey = "margin", .lo = -1e308, .hi = 1, .required = true}),
+    field<&PresetStabilityMargin::dtS>(
+        {.key = "dtS", .jsonKey = "dt_s", .unit = "s", .lo = 1e-6, .hi = 1, .required = true}),
+};
+
+/// A model's section: read through its table, then checked by its validator, each problem at the
+/// key of the field it names. Returns whether the section is valid.
+template <class S>
+bool readSection(JsonReader& r, const Json& j, const char* section, FieldTable<S> table, S& s,
+                 Problems (*validate)(const S&)) {
+    const std::size_t before = r.errorCount();
+    readFields(r, j.at(section), section, table, s);
+    if (r.errorCount() != before) return false;
+    const Problems problems = validate(s);
+    reportProblems(r, table, section, problems);
+    return problems.empty();
+}
+
+bool isMassSpring(ModelKind kind) {
+    return kind == ModelKind::MassSpringSymplectic || kind == ModelKind::MassSpringRk4 ||
+           kind == ModelKind::MassSpringImplicit || kind == ModelKind::MassSpringLocal;
+}
+
+}  // namespace
+
+ModelDef presetModelDef(const TissuePreset& preset) {
+    ModelDef def;
+    def.kind = preset.modelKind;
+    def.slopeRingMethod = preset.method;
+    def.slopeRing = preset.params;
+    def.massSpring = preset.massSpring;
+    def.radiusOfInfluence = preset.radiusOfInfluence;
+    def.ffd = preset.ffd;
+    def.volumetricRings.slopeRing = preset.params;
+    return def;
+}
+
+std::string presetModelName(const TissuePreset& preset) { return modelName(presetModelDef(preset)); }
+
+void setPresetModel(TissuePreset& preset, const ModelDef& def) {
+    preset.modelKind = def.kind;
+    switch (def.kind) {
+        case ModelKind::SlopeRing:
+            preset.method = def.slopeRingMethod;
+            preset.params = def.slopeRing;
+            break;
+        case ModelKind::VolumetricRings: preset.params = def.volumetricRings.slopeRing; break;
+        case ModelKind::RadiusOfInfluence: preset.radiusOfInfluence = def.radiusOfInfluence; break;
+        case ModelKind::Ffd: preset.ffd = def.ffd; break;
+        default: preset.massSpring = def.massSpring; break;
+    }
+}
+
+bool presetUsesSlopeRingParams(const TissuePreset& preset) {
+    return preset.modelKind == ModelKind::SlopeRing || preset.modelKind == ModelKind::VolumetricRings;
+}
+
+FieldTable<TissueProperties> tissueFields() { return kTissueFields; }
+FieldTable<PresetStabilityMargin> stabilityMarginFields() { return kMarginFields; }
+
+Problems validateTissueProperties(const TissueProperties& tissue) {
+    Problems problems;
+    checkFields(tissueFields(), tissue, problems);
+    return problems;
+}
+
+bool samePreset(const TissuePreset& a, const TissuePreset& b) {
+    const bool sameTissue = a.tissue.has_value() == b.tissue.has_value() &&
+                            (!a.tissue || (sameFields(tissueFields(), *a.tissue, *b.tissue) &&
+                                           a.tissue->source == b.tissue->source));
+    return a.name == b.name && a.description == b.description && a.modelKind == b.modelKind && a.method == b.method &&
+           sameFields(slopeRingFields(), a.params, b.params) &&
+           sameFields(massSpringFields(), a.massSpring, b.massSpring) &&
+           sameFields(radiusOfInfluenceFields(), a.radiusOfInfluence, b.radiusOfInfluence) &&
+           sameFields(ffdFields(), a.ffd, b.ffd) && sameFields(octreeFields(), a.octree, b.octree) &&
+           a.hapticRateHz == b.hapticRateHz && sameTissue;
+}
+
+PresetLoadResult parseTissuePreset(const std::string& textIn, const std::string& source) {
+    PresetLoadResult result;
+    JsonReader r(result.errors, source);
+    const std::optional<Json> parsed = r.parse(textIn);
+    if (!parsed) return result;
+    const Json& j = *parsed;
+    if (!r.object(j, "",
+                  {"format", "version", "name", "description", "model", "slope_ring", "mass_spring",
+                   "radius_of_influence", "ffd", "octree", "haptic_rate_hz", "tissue", "needs", "stability_margin"}))
+        return result;
+
+    std::string format;
+    r.text(j, "", "format", format, true);
+    if (!format.empty() && format != kFormat) r.error("format", "is '" + format + "', expected '" + kFormat + "'");
+    double version = 0.0;
+    if (r.number(j, "", "version", 1, 1e9, version, true) &&
+        (std::floor(version) != version || int(version) > kTissuePresetVersion))
+        r.error("version", "version " + formatNumber(version) + " is not supported (this build reads up to " +
+                               std::to_string(kTissuePresetVersion) + ")");
+
+    TissuePreset preset;
+    r.text(j, "", "name", preset.name, true);
+    r.text(j, "", "description", preset.description);
+    if (j.contains("model")) {
+        std::string model;
+        r.text(j, "", "model", model);
+        if (const auto def = modelDefForName(model)) {
+            preset.modelKind = def->kind;
+            if (def->kind == ModelKind::SlopeRing) preset.method = def->slopeRingMethod;
+        } else if (j.at("model").is_string()) {
+            std::string names;
+            for (const std::string& n : modelNames()) names += (names.empty() ? "" : ", ") + n;
+            r.error("model", "unknown model '" + model + "' (use one of " + names + ")");
+        }
+    }
+    r.number(j, "", "haptic_rate_hz", kMinHapticRateHz, kMaxHapticRateHz, preset.hapticRateHz);
+
+    // Each model's own section, read whatever the model (a hand-written preset may keep several)
+    // and checked by the model's validator.
+    if (j.contains("slope_ring"))
+        readSection(r, j, "slope_ring", slopeRingFields(), preset.params, validateSlopeRingParams);
+    if (j.contains("mass_spring"))
+        readSection(r, j, "mass_spring", massSpringFields(), preset.massSpring, validateMassSpringParams);
+    if (j.contains("radius_of_influence"))
+        readSection(r, j, "radius_of_influence", radiusOfInfluenceFields(), preset.radiusOfInfluence,
+                    validateRadiusOfInfluenceParams);
+    if (j.contains("ffd")) readSection(r, j, "ffd", ffdFields(), preset.ffd, validateFfdParams);
+    if (j.contains("octree")) readSection(r, j, "octree", octreeFields(), preset.octree, validateOctreeDef);
+    if (j.contains("tissue")) {
+        const Json& t = j.at("tissue");
+        TissueProperties tissue;
+        const std::size_t before = r.errorCount();
+        if (t.is_object()) {
+            // "source" beside the table's fields; readFields checks the keys.
+            Json numbers = t;
+            numbers.erase("source");
+            readFields(r, numbers, "tissue", tissueFields(), tissue);
+            r.text(t, "tissue", "source", tissue.source, true);
+        } else {
+            r.error("tissue", "must be an object");
+        }
+        if (r.errorCount() == before) {
+            reportProblems(r, tissueFields(), "tissue", validateTissueProperties(tissue));
+            if (r.errorCount() == before) preset.tissue = tissue;
+        }
+    }
+    if (j.contains("needs") && r.object(j.at("needs"), "needs", {"max_error", "budget_us"})) {
+        // Read any finite number here; validateLodNeeds says what is out of range, by key.
+        LodNeeds needs;
+        const bool complete = j.at("needs").contains("max_error") && j.at("needs").contains("budget_us");
+        r.number(j.at("needs"), "needs", "max_error", needs.maxErrorFraction, true);
+        r.number(j.at("needs"), "needs", "budget_us", needs.budgetUs, true);
+        if (complete) {
+            for (const std::string& problem : validateLodNeeds(needs)) result.errors.push_back(source + ": " + problem);
+            preset.needs = needs;
+        }
+    }
+    // Informational (the panel writes it on save): checked for type and range, never enforced.
+    if (j.contains("stability_margin")) {
+        PresetStabilityMargin margin;
+        const std::size_t before = r.errorCount();
+        readFields(r, j.at("stability_margin"), "stability_margin", stabilityMarginFields(), margin);
+        if (r.errorCount() == before) {
+            Problems problems;
+            checkFields(stabilityMarginFields(), margin, problems);
+            reportProblems(r, stabilityMarginFields(), "stability_margin", problems);
+            if (problems.empty()) preset.stabilityMargin = margin;
+        }
+    }
+    if (result.errors.empty()) result.preset = preset;
+    return result;
+}
+
+PresetLoadResult loadTissuePreset(const std::string& path) {
+    std::string error;
+    const auto text = readTextFile(path, "a preset file", error);
+    if (!text) return {std::nullopt, {error}};
+    return parseTissuePreset(*text, path);
+}
+
+std::string tissuePresetToJson(const TissuePreset& preset) {
+    Json j{{"format", kFormat},
+           {"version", preset.modelKind == ModelKind::SlopeRing ? 1 : kTissuePresetVersion},
+           {"name", preset.name},
+           {"description", preset.description},
+           {"model", presetModelName(preset)},
+           {"haptic_rate_hz", preset.hapticRateHz},
+           {"slope_ring", fieldsToJson(slopeRingFields(), preset.params)},
+           {"octree", fieldsToJson(octreeFields(), preset.octree)}};
+    // Only the section of the model in use (slope_ring always: the slope-ring methods and
+    // volumetric-rings run on it, and the GUI keeps it for a switch back).
+    if (isMassSpring(preset.modelKind)) j["mass_spring"] = fieldsToJson(massSpringFields(), preset.massSpring);
+    if (preset.modelKind == ModelKind::RadiusOfInfluence)
+        j["radius_of_influence"] = fieldsToJson(radiusOfInfluenceFields(), preset.radiusOfInfluence);
+    if (preset.modelKind == ModelKind::Ffd) j["ffd"] = fieldsToJson(ffdFields(), preset.ffd);
+    if (preset.tissue) {
+        j["tissue"] = fieldsToJson(tissueFields(), *preset.tissue);
+        j["tissue"]["source"] = preset.tissue->source;
+    }
+    if (preset.needs)
+        j["needs"] = {{"max_error", preset.needs->maxErrorFraction}, {"budget_us", preset.needs->budgetUs}};
+    if (preset.stabilityMargin && std::isfinite(preset.stabilityMargin->margin) &&
+        std::isfinite(preset.stabilityMargin->dtS))
+        j["stability_margin"] = fieldsToJson(stabilityMarginFields(), *preset.stabilityMargin);
+    return j.dump(2) + "\n";
+}
+
+std::string saveTissuePreset(const TissuePreset& preset, const std::string& path) {
+    if (preset.needs)
+        if (const auto problems = validateLodNeeds(*preset.needs); !problems.empty())
+            return path + ": not saved: " + problems.front();
+    return writeFileAtomically(path, tissuePresetToJson(preset));
+}
+
+}  // namespace palpate
