@@ -44,6 +44,8 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/resources/meshes" "${PROJECT_SOURCE_DIR
 
 # The user guide and its screenshots (Help > User Guide opens the installed copy).
 install(FILES "${PROJECT_SOURCE_DIR}/docs/user-guide.md" DESTINATION ${PALPATE_DOCDIR})
+# The licence, GPL-3.0-or-later, in Debian's machine-readable copyright format.
+install(FILES "${PROJECT_SOURCE_DIR}/packaging/copyright" DESTINATION ${PALPATE_DOCDIR})
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/docs/guide" DESTINATION ${PALPATE_DOCDIR})
 
 # --- CPack: the Debian package -------------------------------------------------------------------

@@ -475,7 +475,7 @@ bool LodPanel::plan() {
                 if (!loaded.mesh) throw std::runtime_error(loaded.error());
                 source = std::make_shared<const TissueMesh>(std::move(*loaded.mesh));
             }
-            const LevelOptions options;
+            const LevelDef options;
             const std::size_t coarse = levelTargets(source->vertexCount(), options).size();
             post(0.0, tr("Looking for cached levels…"));
             LevelCacheResult levels = loadOrGenerateLevels(

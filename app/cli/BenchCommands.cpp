@@ -124,7 +124,7 @@ int benchCommand(const std::vector<std::string>& words) {
         std::cerr << "bench table1: " << args.error() << "\n";
         return 2;
     }
-    Table1Options options;
+    Table1Def options;
     if (args.flag("quick")) {  // a smoke run: small meshes, one repeat
         options.paperSizes = {1442};
         options.largeSphereSizes = {20000};

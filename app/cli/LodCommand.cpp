@@ -43,7 +43,7 @@ std::vector<std::string> splitList(const std::string& text) {
 }
 
 /// --min-vertices, --max-levels, --ratio into `options`; "" or the problem naming the option.
-std::string levelOptionsFromArgs(const Args& args, LevelOptions& options) {
+std::string levelOptionsFromArgs(const Args& args, LevelDef& options) {
     if (const auto text = args.option("min-vertices")) {
         const auto n = parsePositiveInt(*text);
         if (!n || *n < 8 || *n > 50'000'000) return "--min-vertices: '" + *text + "' is not a vertex count of 8 or more";
@@ -70,7 +70,7 @@ void progressLine(double fraction, const std::string& stage) {
 
 /// Loads the mesh and its levels (cache or generation), printing where they came from on stderr.
 /// Returns an exit code (0: go on).
-int loadLevels(const std::string& command, const std::string& meshPath, const LevelOptions& options, bool useCache,
+int loadLevels(const std::string& command, const std::string& meshPath, const LevelDef& options, bool useCache,
                std::optional<TissueMesh>& mesh, LevelCacheResult& levels) {
     auto loaded = TissueMesh::load(meshPath);
     if (!loaded.mesh) {
@@ -116,7 +116,7 @@ int levelsCommand(const Args& args) {
         std::cerr << "palpate-cli lod levels: --mesh FILE is required\n";
         return 2;
     }
-    LevelOptions options;
+    LevelDef options;
     if (const std::string e = levelOptionsFromArgs(args, options); !e.empty()) {
         std::cerr << "palpate-cli lod levels: " << e << "\n";
         return 2;
@@ -242,7 +242,7 @@ int planCommand(const Args& args) {
     }
 
     const bool quick = args.flag("quick");
-    LevelOptions levelOptions;
+    LevelDef levelOptions;
     if (quick) levelOptions.maxCoarseLevels = 3;
     if (const std::string e = levelOptionsFromArgs(args, levelOptions); !e.empty()) {
         std::cerr << me << e << "\n";

@@ -80,7 +80,7 @@ int loopCommand(const std::vector<std::string>& words) {
             std::this_thread::sleep_until(next);
         }
     });
-    if (!loop.start(&error)) {
+    if (error = loop.start(); !error.empty()) {
         observing = false;
         observer.join();
         std::cerr << "loop: " << error << "\n";

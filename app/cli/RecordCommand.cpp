@@ -191,7 +191,7 @@ int exportCsv(const RecordingReader& reader, const std::optional<std::string>& o
 }
 
 int replay(const RecordingReader& reader, const std::optional<std::string>& meshPath, bool json) {
-    ReplayOptions options;
+    ReplayDef options;
     if (meshPath) options.meshPath = *meshPath;
     std::string error;
     const ReplayStatus s = replayRecording(reader, error, options);

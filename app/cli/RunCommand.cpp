@@ -173,7 +173,7 @@ int runCommand(const std::vector<std::string>& words) {
     gInterrupted = false;
     auto previousInt = std::signal(SIGINT, onInterrupt);
     auto previousTerm = std::signal(SIGTERM, onInterrupt);
-    if (!loop->start(&error)) {
+    if (error = loop->start(); !error.empty()) {
         std::cerr << "run: " << error << "\n";
         return 1;
     }

@@ -37,7 +37,7 @@ int scoreCommand(const std::vector<std::string>& words) {
         exercise = *loaded.exercise;
     }
     const RecordingReader reader = RecordingReader::open(*recording);
-    ReplayScorerOptions options;
+    ReplayScorerDef options;
     options.findResource = findResource;
     options.meshPath = args.option("mesh").value_or("");
     std::string error;

@@ -351,7 +351,7 @@ QString ExerciseController::exportResultPdf(const ResultRecord& result, const QS
     if (!reader.headerOk())
         return tr("%1: %2").arg(result.recordingPath, QString::fromStdString(reader.headerError()));
     std::string error;
-    ReplayScorerOptions options;
+    ReplayScorerDef options;
     options.findResource = cli::findResource;
     const ScoreReport report = scoreRecording(reader, nullptr, error, options);
     if (!error.empty()) return QString::fromStdString(error);

@@ -286,7 +286,7 @@ std::string HapticSession::handOver(SceneRecord record, std::unique_ptr<HapticSc
         mDrawn = std::move(record);
         mObserver.setRestPositions(mDrawn.mesh->restPositionsMm());
         std::string error;
-        if (mMode == LoopMode::Threaded && !mLoop->start(&error)) return error;
+        if (mMode == LoopMode::Threaded && !(error = mLoop->start()).empty()) return error;
         return {};
     }
     // The device first: switching it re-arms the safety filter, so whatever the new scene would

@@ -51,13 +51,13 @@ int runViewportBenchmark(const QString& secondsText, bool softwareRender) {
         std::fprintf(stderr, "palpate: --seconds needs a number > 0, not '%s'\n", qPrintable(secondsText));
         return 2;
     }
-    ViewportBenchmarkOptions options;
+    ViewportBenchmarkDef options;
     options.seconds = seconds;
     options.renderer = softwareRender ? RendererChoice::Software : RendererChoice::Auto;
     return runViewportBenchmark(options);
 }
 
-int runViewportBenchmark(const ViewportBenchmarkOptions& options) {
+int runViewportBenchmark(const ViewportBenchmarkDef& options) {
     // As fast as it goes: no vertical sync (where the platform honours it) for the window's swaps.
     QSurfaceFormat defaultFormat = QSurfaceFormat::defaultFormat();
     defaultFormat.setSwapInterval(0);

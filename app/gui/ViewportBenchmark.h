@@ -15,14 +15,14 @@
 
 namespace palpate {
 
-struct ViewportBenchmarkOptions {
+struct ViewportBenchmarkDef {
     double seconds = 5.0;
     std::size_t vertexCount = 100000;
     RendererChoice renderer = RendererChoice::Auto;
 };
 
 /// Runs the benchmark in the running QApplication. Returns the process exit code (0, or 1 on failure).
-int runViewportBenchmark(const ViewportBenchmarkOptions& options);
+int runViewportBenchmark(const ViewportBenchmarkDef& options);
 
 /// The command line's entry: `secondsText` from --seconds (a number > 0); 2 on a bad value.
 int runViewportBenchmark(const QString& secondsText, bool softwareRender);

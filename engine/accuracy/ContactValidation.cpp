@@ -22,7 +22,7 @@ ContactCaseResult runContactCase(const ContactCase& c) {
     if (const char* e = validateElasticMaterial(c.material); *e) throw std::invalid_argument(e);
     if (!std::isfinite(c.indentationOverRadius) || c.indentationOverRadius <= 0.0)
         throw std::invalid_argument("indentation over radius must be positive");
-    GradedBlockOptions blockOptions = c.block;
+    GradedBlockDef blockOptions = c.block;
     blockOptions.contactRadiusMm = c.contactRadiusMm;
     blockOptions.contactRadiusOverSpacing = c.aOverH;
     const GradedBlock block = makeGradedBlock(blockOptions);

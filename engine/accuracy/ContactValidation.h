@@ -26,8 +26,8 @@ struct ContactCase {
     double contactRadiusMm = 1.0;        ///< a (punch radius, or Hertz contact radius)
     /// Punch: delta = 0.1 a. Hertz: R = a / 0.1, delta = a^2 / R. (Linear FEM: relative errors do not depend on it.)
     double indentationOverRadius = 0.1;
-    GradedBlockOptions block;            ///< contactRadiusMm and contactRadiusOverSpacing are overwritten
-    FemSolverOptions solver;
+    GradedBlockDef block;            ///< contactRadiusMm and contactRadiusOverSpacing are overwritten
+    FemSolverDef solver;
     double loadTolerance = 1e-8;         ///< stop the load iteration when |P_k+1 - P_k| <= tol P
     int maxLoadIterations = 30;
 };

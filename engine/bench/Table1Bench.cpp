@@ -18,7 +18,7 @@ namespace {
 
 // The concrete class (final), so that the timed loop calls step() directly.
 template <typename Model>
-MethodMeasurement measureModel(Model& deformer, const std::vector<glm::vec3>& path, const Table1Options& options) {
+MethodMeasurement measureModel(Model& deformer, const std::vector<glm::vec3>& path, const Table1Def& options) {
     MethodMeasurement m;
 
     // Exactness: before each tick, compare the method's touched vertex with brute force.
@@ -58,7 +58,7 @@ MethodMeasurement measureModel(Model& deformer, const std::vector<glm::vec3>& pa
 }
 
 MethodMeasurement measure(const TissueMesh& mesh, const Octree& octree, const std::vector<glm::vec3>& path,
-                          const Table1Options& options, SlopeRingMethod method, bool eager = false) {
+                          const Table1Def& options, SlopeRingMethod method, bool eager = false) {
     if (method == SlopeRingMethod::Coherent) {
         CoherentSlopeRing model(mesh, octree, options.params, eager);
         return measureModel(model, path, options);
@@ -67,7 +67,7 @@ MethodMeasurement measure(const TissueMesh& mesh, const Octree& octree, const st
     return measureModel(model, path, options);
 }
 
-Table1Row runRow(GeneratedShape shape, std::size_t vertices, bool wholeModel, const Table1Options& options) {
+Table1Row runRow(GeneratedShape shape, std::size_t vertices, bool wholeModel, const Table1Def& options) {
     auto say = [&](const std::string& line) {
         if (options.progress) options.progress(line);
     };
@@ -95,7 +95,7 @@ Table1Row runRow(GeneratedShape shape, std::size_t vertices, bool wholeModel, co
 
 }  // namespace
 
-std::vector<Table1Row> runTable1(const Table1Options& options) {
+std::vector<Table1Row> runTable1(const Table1Def& options) {
     std::vector<Table1Row> rows;
     for (auto shape : {GeneratedShape::Sphere, GeneratedShape::Stomach})
         for (std::size_t n : options.paperSizes) rows.push_back(runRow(shape, n, true, options));

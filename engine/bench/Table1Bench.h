@@ -31,7 +31,7 @@ struct Table1Row {
     std::optional<MethodMeasurement> coherentEager;
 };
 
-struct Table1Options {
+struct Table1Def {
     std::vector<std::size_t> paperSizes{1442, 3970, 5762, 8664};
     std::vector<std::size_t> largeSphereSizes{100'000, 1'000'000};  ///< proposed and ours only
     int repeats = 5;
@@ -40,6 +40,6 @@ struct Table1Options {
     std::function<void(const std::string&)> progress;  ///< optional, called with a line per step
 };
 
-std::vector<Table1Row> runTable1(const Table1Options& options);
+std::vector<Table1Row> runTable1(const Table1Def& options);
 
 }  // namespace palpate

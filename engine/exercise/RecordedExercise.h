@@ -19,7 +19,7 @@ class HapticScene;
 /// The exercise in the header's note, or nullopt (with `errors` when one is there but does not read).
 std::optional<Exercise> recordedExercise(const RecordingHeader& header, std::vector<std::string>& errors);
 
-/// For ReplayOptions::prepareScene: applies the recorded exercise's physics (find the lump's
+/// For ReplayDef::prepareScene: applies the recorded exercise's physics (find the lump's
 /// inclusion) to scenes on the recorded mesh. Empty when the note carries no exercise or the
 /// exercise changes no physics.
 std::function<std::string(HapticScene&)> recordedExercisePhysics(const RecordingHeader& header);

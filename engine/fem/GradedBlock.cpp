@@ -10,7 +10,7 @@
 
 namespace palpate {
 
-const char* validateGradedBlockOptions(const GradedBlockOptions& o) {
+const char* validateGradedBlockOptions(const GradedBlockDef& o) {
     if (!std::isfinite(o.contactRadiusMm) || o.contactRadiusMm <= 0.0) return "contact radius must be positive";
     if (o.contactRadiusOverSpacing < 1 || o.contactRadiusOverSpacing > 256) return "a/h must be in 1..256";
     if (!std::isfinite(o.fineLateralFactor) || o.fineLateralFactor < 1.0) return "fine lateral zone must be >= a";
@@ -74,12 +74,12 @@ glm::dvec2 bendTowardsContactCircle(const glm::dvec2& p, ContactEdgeNodes edge, 
 
 }  // namespace
 
-double effectiveGrowthRatio(const GradedBlockOptions& o) {
+double effectiveGrowthRatio(const GradedBlockDef& o) {
     if (o.growthRatio != 0.0) return o.growthRatio;
     return std::min(1.5, 1.0 + 2.0 / std::max(1, o.contactRadiusOverSpacing));
 }
 
-GradedBlock makeGradedBlock(const GradedBlockOptions& o) {
+GradedBlock makeGradedBlock(const GradedBlockDef& o) {
     if (const char* e = validateGradedBlockOptions(o); *e) throw std::invalid_argument(e);
     GradedBlock b;
     const double a = o.contactRadiusMm;

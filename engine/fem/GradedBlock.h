@@ -22,7 +22,7 @@ enum class ContactEdgeNodes {
     HalfSpacing,
 };
 
-struct GradedBlockOptions {
+struct GradedBlockDef {
     double contactRadiusMm = 1.0;     ///< a: the length everything else is measured in
     int contactRadiusOverSpacing = 8;  ///< a/h, integer so that nodes sit at r = a on both axes
     double fineLateralFactor = 2.0;   ///< uniform spacing h for x, y <= 2a (the contact and its edge)
@@ -36,7 +36,7 @@ struct GradedBlockOptions {
 };
 
 /// "" when usable, else a message naming the field.
-const char* validateGradedBlockOptions(const GradedBlockOptions& o);
+const char* validateGradedBlockOptions(const GradedBlockDef& o);
 
 /// Node coordinates 0 = c0 < c1 < ... = totalMm: spacing `spacingMm` up to `fineExtentMm`, then
 /// cells growing by `growthRatio` (uniformly rescaled so the last node lands on totalMm).
@@ -56,9 +56,9 @@ struct GradedBlock {
 };
 
 /// The growth ratio used: options.growthRatio, or the automatic one when it is 0.
-double effectiveGrowthRatio(const GradedBlockOptions& options);
+double effectiveGrowthRatio(const GradedBlockDef& options);
 
 /// Throws std::invalid_argument on bad options.
-GradedBlock makeGradedBlock(const GradedBlockOptions& options);
+GradedBlock makeGradedBlock(const GradedBlockDef& options);
 
 }  // namespace palpate

@@ -323,18 +323,18 @@ struct LinearElasticFem::Impl {
     SparseMatrix kFree;          ///< K_ff
     /// LDLT factors, or the CG preconditioner (shared read-only by concurrent solves).
     std::variant<std::monostate, Ldlt, IcPreconditioner, DiagPreconditioner, NodeBlockJacobi> solver;
-    FemSolverOptions options;
+    FemSolverDef options;
     std::string solverName;
     double assemblySeconds = 0;
     double factorSeconds = 0;
 };
 
 LinearElasticFem::LinearElasticFem(const TetMesh& mesh, const ElasticMaterial& material,
-                                   std::vector<std::uint8_t> fixedDofs, const FemSolverOptions& options)
+                                   std::vector<std::uint8_t> fixedDofs, const FemSolverDef& options)
     : LinearElasticFem(StiffnessMatrix(mesh, material), std::move(fixedDofs), options) {}
 
 LinearElasticFem::LinearElasticFem(const StiffnessMatrix& stiffness, std::vector<std::uint8_t> fixedDofs,
-                                   const FemSolverOptions& options)
+                                   const FemSolverDef& options)
     : mImpl(std::make_unique<Impl>()) {
     Impl& s = *mImpl;
     s.stiffness = stiffness.mData;

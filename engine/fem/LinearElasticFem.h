@@ -19,7 +19,7 @@
 namespace palpate {
 
 enum class FemSolverKind {
-    Auto,               ///< direct up to FemSolverOptions::directMaxFreeDofs, CG above
+    Auto,               ///< direct up to FemSolverDef::directMaxFreeDofs, CG above
     DirectLdlt,         ///< Eigen SimplicialLDLT (AMD ordering)
     ConjugateGradient,  ///< Eigen ConjugateGradient with the preconditioner below
 };
@@ -30,7 +30,7 @@ enum class FemPreconditioner {
     NodeBlockJacobi,     ///< Jacobi with each node's 3x3 block inverted (~12 % fewer iterations than Diagonal)
 };
 
-struct FemSolverOptions {
+struct FemSolverDef {
     FemSolverKind kind = FemSolverKind::Auto;
     /// Auto picks LDLT at or below this many free DOFs. Measured on the graded block: LDLT and CG
     /// both ~0.03 s at 1.4k DOFs, LDLT 10x slower at 5k (3D fill); see docs/accuracy.md.
@@ -101,10 +101,10 @@ public:
     /// `fixedDofs[d]` != 0 marks DOF d as prescribed (size 3 * nodes). Throws std::invalid_argument
     /// on a bad mesh, material or mask, std::runtime_error if the factorization fails.
     LinearElasticFem(const TetMesh& mesh, const ElasticMaterial& material, std::vector<std::uint8_t> fixedDofs,
-                     const FemSolverOptions& options = {});
+                     const FemSolverDef& options = {});
     /// The same on an already assembled K.
     LinearElasticFem(const StiffnessMatrix& stiffness, std::vector<std::uint8_t> fixedDofs,
-                     const FemSolverOptions& options = {});
+                     const FemSolverDef& options = {});
     ~LinearElasticFem();
     LinearElasticFem(const LinearElasticFem&) = delete;
     LinearElasticFem& operator=(const LinearElasticFem&) = delete;

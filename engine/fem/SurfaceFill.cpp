@@ -87,7 +87,7 @@ SurfaceData checkedSurface(const TissueMesh& mesh) {
 
 }  // namespace
 
-FilledSurface fillSurface(const TissueMesh& mesh, const SurfaceFillOptions& options) {
+FilledSurface fillSurface(const TissueMesh& mesh, const SurfaceFillDef& options) {
     const auto start = std::chrono::steady_clock::now();
     if (options.layers < 1 || options.layers > 32) throw std::invalid_argument("layers must be in 1..32");
     if (!std::isfinite(options.layerGrowth) || options.layerGrowth < 1.0 || options.layerGrowth > 4.0)
@@ -171,8 +171,8 @@ const ElasticMaterial& checkedMaterial(const ElasticMaterial& m) {
 
 }  // namespace
 
-SurfaceIndenter::SurfaceIndenter(const TissueMesh& mesh, const ElasticMaterial& material, const SurfaceFillOptions& fill,
-                                 const FemSolverOptions& solver)
+SurfaceIndenter::SurfaceIndenter(const TissueMesh& mesh, const ElasticMaterial& material, const SurfaceFillDef& fill,
+                                 const FemSolverDef& solver)
     : mSolver(solver),
       mFilled(fillSurface(mesh, fill)),
       mStiffness(mFilled.mesh, checkedMaterial(material)) {
@@ -241,7 +241,7 @@ SurfaceIndentation SurfaceIndenter::indent(VertexId touched, double punchRadiusM
 }
 
 SurfaceIndentation indentSurface(const TissueMesh& mesh, VertexId touched, double punchRadiusMm, double indentationMm,
-                                 const ElasticMaterial& material, const SurfaceFillOptions& fill) {
+                                 const ElasticMaterial& material, const SurfaceFillDef& fill) {
     return SurfaceIndenter(mesh, material, fill).indent(touched, punchRadiusMm, indentationMm);
 }
 

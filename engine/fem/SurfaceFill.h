@@ -17,7 +17,7 @@
 
 namespace palpate {
 
-struct SurfaceFillOptions {
+struct SurfaceFillDef {
     int layers = 4;                      ///< prism layers, 1..32
     /// Total thickness T (mm) of the tissue over the core; nullopt = a quarter of the smallest
     /// extent of the bounding box. Must be positive and finite when given.
@@ -43,7 +43,7 @@ struct FilledSurface {
 
 /// Fills the surface. Throws std::invalid_argument with a message naming the problem: open or
 /// inward-facing surface, bad options, or no positive-volume fill after maxHalvings.
-FilledSurface fillSurface(const TissueMesh& mesh, const SurfaceFillOptions& options = {});
+FilledSurface fillSurface(const TissueMesh& mesh, const SurfaceFillDef& options = {});
 
 struct SurfaceIndentation {
     std::vector<glm::dvec3> displacementMm;  ///< per surface vertex, TissueMesh order
@@ -59,8 +59,8 @@ struct SurfaceIndentation {
 class SurfaceIndenter {
 public:
     /// Throws std::invalid_argument (see fillSurface; also a bad material).
-    SurfaceIndenter(const TissueMesh& mesh, const ElasticMaterial& material, const SurfaceFillOptions& fill = {},
-                    const FemSolverOptions& solver = {});
+    SurfaceIndenter(const TissueMesh& mesh, const ElasticMaterial& material, const SurfaceFillDef& fill = {},
+                    const FemSolverDef& solver = {});
 
     /// Flat frictionless punch of radius a: the surface vertices within distance a of `touched`
     /// (at least `touched`) move by `indentationMm` along minus the touched vertex's rest normal;
@@ -74,13 +74,13 @@ public:
 private:
     std::vector<glm::dvec3> mRestMm;
     std::vector<glm::dvec3> mNormals;
-    FemSolverOptions mSolver;
+    FemSolverDef mSolver;
     FilledSurface mFilled;
     StiffnessMatrix mStiffness;
 };
 
 /// Convenience: fill and indent once.
 SurfaceIndentation indentSurface(const TissueMesh& mesh, VertexId touched, double punchRadiusMm, double indentationMm,
-                                 const ElasticMaterial& material, const SurfaceFillOptions& fill = {});
+                                 const ElasticMaterial& material, const SurfaceFillDef& fill = {});
 
 }  // namespace palpate

@@ -24,7 +24,7 @@ std::string hex64(std::uint64_t v) {
     return text;
 }
 
-Json optionsJson(const LevelOptions& o) {
+Json optionsJson(const LevelDef& o) {
     return Json{{"vertex_ratio", o.vertexRatio},
                 {"min_vertices", o.minVertices},
                 {"max_coarse_levels", o.maxCoarseLevels},
@@ -54,7 +54,7 @@ std::string objText(const TissueMesh& mesh) {
 
 std::string levelCacheDir(const std::string& meshPath) { return meshPath + ".levels"; }
 
-std::optional<MeshLevels> readLevelCache(const std::string& dir, const TissueMesh& source, const LevelOptions& options,
+std::optional<MeshLevels> readLevelCache(const std::string& dir, const TissueMesh& source, const LevelDef& options,
                                          std::string& why, const LodProgressFn& progress,
                                          const std::atomic<bool>* cancel) {
     namespace fs = std::filesystem;
@@ -148,7 +148,7 @@ std::optional<MeshLevels> readLevelCache(const std::string& dir, const TissueMes
     }
 }
 
-std::string writeLevelCache(const std::string& dir, const MeshLevels& levels, const LevelOptions& options) {
+std::string writeLevelCache(const std::string& dir, const MeshLevels& levels, const LevelDef& options) {
     namespace fs = std::filesystem;
     std::error_code ec;
     fs::create_directories(dir, ec);
@@ -176,7 +176,7 @@ std::string writeLevelCache(const std::string& dir, const MeshLevels& levels, co
     return writeFileAtomically((fs::path(dir) / kIndexName).string(), j.dump(2) + "\n");
 }
 
-LevelCacheResult loadOrGenerateLevels(const std::string& meshPath, const TissueMesh& source, const LevelOptions& options,
+LevelCacheResult loadOrGenerateLevels(const std::string& meshPath, const TissueMesh& source, const LevelDef& options,
                                       const LodProgressFn& progress, const std::atomic<bool>* cancel, bool useCache) {
     if (const std::string e = validateLevelOptions(options); !e.empty()) throw std::invalid_argument(e);
     LevelCacheResult result;

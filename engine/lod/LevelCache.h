@@ -21,12 +21,12 @@ std::string levelCacheDir(const std::string& meshPath);
 
 /// The cached levels, or nullopt with `why` saying what made the cache unusable.
 std::optional<MeshLevels> readLevelCache(const std::string& cacheDir, const TissueMesh& source,
-                                         const LevelOptions& options, std::string& why,
+                                         const LevelDef& options, std::string& why,
                                          const LodProgressFn& progress = {}, const std::atomic<bool>* cancel = nullptr);
 
 /// Writes the coarse levels and then the index, each atomically (engine/io/AtomicFile.h), so a crash
 /// leaves either no index or a complete cache. Returns "" or the problem, naming the path.
-std::string writeLevelCache(const std::string& cacheDir, const MeshLevels& levels, const LevelOptions& options);
+std::string writeLevelCache(const std::string& cacheDir, const MeshLevels& levels, const LevelDef& options);
 
 struct LevelCacheResult {
     MeshLevels levels;
@@ -37,7 +37,7 @@ struct LevelCacheResult {
 
 /// Reads the cache beside `meshPath`, or generates (and caches, unless cancelled) the levels.
 /// `useCache` false generates without reading or writing. Throws as generateLevels does.
-LevelCacheResult loadOrGenerateLevels(const std::string& meshPath, const TissueMesh& source, const LevelOptions& options,
+LevelCacheResult loadOrGenerateLevels(const std::string& meshPath, const TissueMesh& source, const LevelDef& options,
                                       const LodProgressFn& progress = {}, const std::atomic<bool>* cancel = nullptr,
                                       bool useCache = true);
 

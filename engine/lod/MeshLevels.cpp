@@ -10,7 +10,7 @@
 
 namespace palpate {
 
-std::string validateLevelOptions(const LevelOptions& o) {
+std::string validateLevelOptions(const LevelDef& o) {
     if (!std::isfinite(o.vertexRatio) || o.vertexRatio <= 0.05 || o.vertexRatio >= 0.95)
         return "levels: vertex ratio must be in (0.05, 0.95)";
     if (o.minVertices < 8) return "levels: min vertices must be at least 8";
@@ -19,7 +19,7 @@ std::string validateLevelOptions(const LevelOptions& o) {
     return {};
 }
 
-std::vector<std::size_t> levelTargets(std::size_t sourceVertices, const LevelOptions& o) {
+std::vector<std::size_t> levelTargets(std::size_t sourceVertices, const LevelDef& o) {
     std::vector<std::size_t> targets;
     double n = double(sourceVertices);
     for (int k = 0; k < o.maxCoarseLevels; ++k) {
@@ -49,7 +49,7 @@ std::string levelTopologyProblem(const TissueMesh& source, const TissueMesh& lev
     return s.str();
 }
 
-MeshLevels generateLevels(const TissueMesh& source, const LevelOptions& options, const LodProgressFn& progress,
+MeshLevels generateLevels(const TissueMesh& source, const LevelDef& options, const LodProgressFn& progress,
                           const std::atomic<bool>* cancel) {
     if (const std::string e = validateLevelOptions(options); !e.empty()) throw std::invalid_argument(e);
     using Clock = std::chrono::steady_clock;

@@ -18,7 +18,7 @@
 namespace palpate {
 
 /// Which levels to make. The defaults give 8664 -> 4332 -> 2166 -> 1083 -> 541 -> 270.
-struct LevelOptions {
+struct LevelDef {
     double vertexRatio = 0.5;        ///< each level keeps this fraction of the previous one's vertices
     std::size_t minVertices = 250;   ///< no level below this
     int maxCoarseLevels = 5;         ///< levels besides the source
@@ -26,9 +26,9 @@ struct LevelOptions {
 };
 
 /// "" when usable, else a message naming the field.
-std::string validateLevelOptions(const LevelOptions& options);
+std::string validateLevelOptions(const LevelDef& options);
 /// The vertex counts the coarse levels aim at for a source of `sourceVertices` (descending).
-std::vector<std::size_t> levelTargets(std::size_t sourceVertices, const LevelOptions& options);
+std::vector<std::size_t> levelTargets(std::size_t sourceVertices, const LevelDef& options);
 
 struct MeshLevel {
     TissueMesh mesh;
@@ -58,7 +58,7 @@ struct MeshLevels {
 /// Makes the levels. Throws std::invalid_argument for bad options (naming the field) and
 /// std::runtime_error when the source cannot be decimated (naming the mesh). On cancel, returns
 /// the complete levels made so far with `cancelled` set.
-MeshLevels generateLevels(const TissueMesh& source, const LevelOptions& options, const LodProgressFn& progress = {},
+MeshLevels generateLevels(const TissueMesh& source, const LevelDef& options, const LodProgressFn& progress = {},
                           const std::atomic<bool>* cancel = nullptr);
 
 /// A level from an already decimated mesh (the cache's): computes its mappings to `source`.

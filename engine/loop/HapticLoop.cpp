@@ -10,6 +10,7 @@
 #include <time.h>
 
 #include <chrono>
+#include <system_error>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -77,16 +78,19 @@ HapticLoop::~HapticLoop() {
     collectRetired();
 }
 
-bool HapticLoop::start(std::string* error) {
-    if (running()) {
-        if (error) *error = "the haptic loop is already running";
-        return false;
-    }
+std::string HapticLoop::start() {
+    if (running()) return "the haptic loop is already running";
     if (mThread.joinable()) mThread.join();
     mStopRequested.store(false, std::memory_order_release);
     mRunning.store(true, std::memory_order_release);
-    mThread = std::thread([this] { threadMain(); });
-    return true;
+    try {
+        mThread = std::thread([this] { threadMain(); });
+    } catch (const std::system_error& e) {
+        // No thread (a process limit, no memory for its stack): the loop stays usable in stepped mode.
+        mRunning.store(false, std::memory_order_release);
+        return std::string("could not start the haptic thread: ") + e.what();
+    }
+    return {};
 }
 
 void HapticLoop::stop() {

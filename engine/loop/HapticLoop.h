@@ -56,8 +56,9 @@ public:
     HapticLoop& operator=(const HapticLoop&) = delete;
 
     // --- the thread (controller thread calls these) ---
-    /// Starts the haptic thread. False (with a message) if it is already running.
-    bool start(std::string* error = nullptr);
+    /// Starts the haptic thread: "" when it runs; otherwise why not (already running, or no
+    /// thread could be created).
+    std::string start();
     /// Stops and joins the thread; the scene and device stay, stepped mode is available again.
     void stop();
     bool running() const { return mRunning.load(std::memory_order_acquire); }

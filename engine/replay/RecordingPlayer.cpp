@@ -25,13 +25,13 @@ std::string touchedText(VertexId v) { return v == kNoVertex ? "none" : std::to_s
 
 }  // namespace
 
-RecordingPlayer::RecordingPlayer(const RecordingReader& reader, const ReplayOptions& options)
+RecordingPlayer::RecordingPlayer(const RecordingReader& reader, const ReplayDef& options)
     : mReader(reader), mOptions(options) {}
 
 RecordingPlayer::~RecordingPlayer() = default;
 
 std::unique_ptr<RecordingPlayer> RecordingPlayer::open(const RecordingReader& reader, std::string& error,
-                                                       const ReplayOptions& options) {
+                                                       const ReplayDef& options) {
     if (!reader.fileError().empty()) {
         error = reader.fileError();
         return nullptr;
@@ -357,7 +357,7 @@ bool RecordingPlayer::seek(std::uint64_t tick) {
     return mHaveCurrent && mCurrentTick == tick;
 }
 
-ReplayStatus replayRecording(const RecordingReader& reader, std::string& error, const ReplayOptions& options) {
+ReplayStatus replayRecording(const RecordingReader& reader, std::string& error, const ReplayDef& options) {
     auto player = RecordingPlayer::open(reader, error, options);
     if (!player) {
         ReplayStatus failed;

@@ -23,7 +23,7 @@
 
 namespace palpate {
 
-struct ReplayOptions {
+struct ReplayDef {
     /// Load the initial mesh from here instead of the header's path (its hash must still match).
     std::string meshPath;
     /// Refuse a mesh whose hash differs from the recorded one (ids and forces would not reproduce).
@@ -63,7 +63,7 @@ public:
     /// the mesh is missing or differs, or the parameters do not validate. `reader` must outlive
     /// the player.
     static std::unique_ptr<RecordingPlayer> open(const RecordingReader& reader, std::string& error,
-                                                 const ReplayOptions& options = {});
+                                                 const ReplayDef& options = {});
     ~RecordingPlayer();
 
     /// First recovered tick, and the last one a replay can reach (before a gap or damage).
@@ -94,7 +94,7 @@ public:
     const ReplayStatus& status() const { return mStatus; }
 
 private:
-    RecordingPlayer(const RecordingReader& reader, const ReplayOptions& options);
+    RecordingPlayer(const RecordingReader& reader, const ReplayDef& options);
     bool restart(std::string& error);
     bool findReplayableRange(std::string& error);
     std::unique_ptr<HapticScene> buildScene(const RecordedScene& scene, const std::string& pathOverride,
@@ -105,7 +105,7 @@ private:
     void stop(const std::string& reason);
 
     const RecordingReader& mReader;
-    ReplayOptions mOptions;
+    ReplayDef mOptions;
     ReplayFeed mFeed;
     std::unique_ptr<HapticLoop> mLoop;
     std::map<std::string, TissueMesh> mMeshes;  // loaded meshes by path, reused on restart
@@ -136,6 +136,6 @@ private:
 
 /// Replays a whole recording and checks it (what `palpate-cli record replay` does). When the
 /// player cannot be built, `error` says why and the status is not ok.
-ReplayStatus replayRecording(const RecordingReader& reader, std::string& error, const ReplayOptions& options = {});
+ReplayStatus replayRecording(const RecordingReader& reader, std::string& error, const ReplayDef& options = {});
 
 }  // namespace palpate

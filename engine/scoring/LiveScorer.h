@@ -24,7 +24,7 @@ namespace palpate {
 
 struct LiveScorerDef {
     double holdBackS = 0.1;
-    ReplayScorerOptions options;
+    ReplayScorerDef options;
 };
 
 class LiveScorer {

@@ -25,7 +25,7 @@ std::string hex(std::uint64_t v) {
 }  // namespace
 
 std::unique_ptr<ReplayScorer> ReplayScorer::open(const RecordingReader& reader, const Exercise* exercise,
-                                                 std::string& error, const ReplayScorerOptions& options) {
+                                                 std::string& error, const ReplayScorerDef& options) {
     if (!reader.fileError().empty()) {
         error = reader.fileError();
         return nullptr;
@@ -77,7 +77,7 @@ std::unique_ptr<ReplayScorer> ReplayScorer::open(const RecordingReader& reader, 
                                "metrics are right only if the session had none)");
 
     // The player gives the scenes the recorded exercise's physics (RecordedExercise.h).
-    ReplayOptions replay;
+    ReplayDef replay;
     replay.meshPath = options.meshPath;
     s->mPlayer = RecordingPlayer::open(reader, error, replay);
     if (!s->mPlayer) return nullptr;
@@ -152,7 +152,7 @@ ScoreReport ReplayScorer::report() const {
 }
 
 ScoreReport scoreRecording(const RecordingReader& reader, const Exercise* exercise, std::string& error,
-                           const ReplayScorerOptions& options) {
+                           const ReplayScorerDef& options) {
     auto scorer = ReplayScorer::open(reader, exercise, error, options);
     if (!scorer) return {};
     scorer->advanceAll();

@@ -20,8 +20,8 @@
 
 namespace palpate {
 
-struct ReplayScorerOptions {
-    /// Load the recorded mesh from here instead of the header's path (ReplayOptions::meshPath).
+struct ReplayScorerDef {
+    /// Load the recorded mesh from here instead of the header's path (ReplayDef::meshPath).
     std::string meshPath;
     /// Resolves the exercise's mesh path under resources/ (for the check that the recording was
     /// made on the exercise's mesh).
@@ -34,7 +34,7 @@ public:
     /// Null with `error` when there is none, the recording was made on another mesh (the message
     /// names both), or it cannot be replayed. `reader` must outlive the scorer.
     static std::unique_ptr<ReplayScorer> open(const RecordingReader& reader, const Exercise* exercise,
-                                              std::string& error, const ReplayScorerOptions& options = {});
+                                              std::string& error, const ReplayScorerDef& options = {});
 
     /// Replays and scores the ticks up to `tick` (at most to the last replayable one), giving the
     /// scorer each tick's marks before its sample. Once the exercise is over, later ticks are
@@ -74,6 +74,6 @@ private:
 
 /// Replays and scores a whole recording. On failure `error` says why and the report is empty.
 ScoreReport scoreRecording(const RecordingReader& reader, const Exercise* exercise, std::string& error,
-                           const ReplayScorerOptions& options = {});
+                           const ReplayScorerDef& options = {});
 
 }  // namespace palpate

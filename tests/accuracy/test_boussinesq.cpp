@@ -112,7 +112,7 @@ TEST(BoussinesqField, FemReproducesItInABoxAwayFromTheLoadAtSecondOrder) {
                     values[3 * i + std::size_t(d)] = u[d];
                 }
             }
-        FemSolverOptions o;
+        FemSolverDef o;
         o.cgRelativeTolerance = 1e-12;
         const auto s = LinearElasticFem(box.mesh, kMaterial, fixed, o).solve(values);
         double sumSq = 0, scale = 0;

@@ -37,7 +37,7 @@ std::array<TetNodeId, 3> faceKey(TetNodeId a, TetNodeId b, TetNodeId c) {
 
 TEST(GradedBlock, ConformsFillsTheQuarterBlockAndPutsTheEdgeRingWhereAsked) {
     for (auto edge : {ContactEdgeNodes::Grid, ContactEdgeNodes::OnCircle, ContactEdgeNodes::HalfSpacing}) {
-        GradedBlockOptions o;
+        GradedBlockDef o;
         o.contactRadiusOverSpacing = 4;
         o.blockSizeFactor = 6.0;
         o.contactEdge = edge;
@@ -88,7 +88,7 @@ TEST(GradedBlock, ConformsFillsTheQuarterBlockAndPutsTheEdgeRingWhereAsked) {
 }
 
 TEST(GradedBlock, AutomaticGrowthRefinesTheWholeBlockWithH) {
-    GradedBlockOptions o;
+    GradedBlockDef o;
     for (auto [aOverH, growth] : {std::pair{2, 1.5}, {4, 1.5}, {8, 1.25}, {12, 1.0 + 2.0 / 12}}) {
         o.contactRadiusOverSpacing = aOverH;
         EXPECT_DOUBLE_EQ(effectiveGrowthRatio(o), growth) << aOverH;
@@ -98,7 +98,7 @@ TEST(GradedBlock, AutomaticGrowthRefinesTheWholeBlockWithH) {
 }
 
 TEST(GradedBlock, RejectsBadOptions) {
-    GradedBlockOptions o;
+    GradedBlockDef o;
     o.growthRatio = 0.5;
     EXPECT_THROW(makeGradedBlock(o), std::invalid_argument);
     o = {};

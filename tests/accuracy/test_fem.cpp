@@ -90,7 +90,7 @@ TEST(TetStiffness, RejectsAFlatTet) {
 
 /// The patch test: u = A x + c on the boundary of a jittered box; every solver reproduces it
 /// inside to 1e-9 relative and every tet carries the stress C : sym(A).
-void expectPatchTestPasses(FemSolverOptions options) {
+void expectPatchTestPasses(FemSolverDef options) {
     const auto box = test::kuhnBox(4, {-1.0, 0.5, -2.0}, 3.0, 0.2, 7);
     const double a[3][3] = {{0.010, 0.004, -0.002}, {-0.003, 0.006, 0.001}, {0.002, -0.005, -0.008}};
     const glm::dvec3 c{0.05, -0.02, 0.01};
@@ -153,14 +153,14 @@ void expectPatchTestPasses(FemSolverOptions options) {
 }
 
 TEST(LinearElasticFem, PatchTestDirect) {
-    FemSolverOptions o;
+    FemSolverDef o;
     o.kind = FemSolverKind::DirectLdlt;
     expectPatchTestPasses(o);
 }
 
 TEST(LinearElasticFem, PatchTestConjugateGradientBothPreconditioners) {
     for (auto pre : {FemPreconditioner::Diagonal, FemPreconditioner::IncompleteCholesky, FemPreconditioner::NodeBlockJacobi}) {
-        FemSolverOptions o;
+        FemSolverDef o;
         o.kind = FemSolverKind::ConjugateGradient;
         o.preconditioner = pre;
         o.cgRelativeTolerance = 1e-13;
@@ -180,8 +180,8 @@ TEST(LinearElasticFem, SolverChoiceAndStats) {
             prescribed[3 * n + 2] = -0.01;  // compress by 1 %
         }
     }
-    FemSolverOptions direct;  // Auto: this small system goes to LDLT
-    FemSolverOptions cg;
+    FemSolverDef direct;  // Auto: this small system goes to LDLT
+    FemSolverDef cg;
     cg.kind = FemSolverKind::ConjugateGradient;
     cg.cgRelativeTolerance = 1e-12;
     LinearElasticFem a(box.mesh, kMaterial, fixed, direct), b(box.mesh, kMaterial, fixed, cg);

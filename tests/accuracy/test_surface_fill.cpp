@@ -68,7 +68,7 @@ void expectValidFill(const TissueMesh& mesh, const FilledSurface& f) {
 
 TEST(SurfaceFill, SphereFillIsPositiveConformingAndOnTheVertices) {
     const TissueMesh mesh = sphere(500);
-    SurfaceFillOptions o;
+    SurfaceFillDef o;
     o.layers = 3;
     const FilledSurface f = fillSurface(mesh, o);
     EXPECT_EQ(f.halvings, 0);
@@ -80,7 +80,7 @@ TEST(SurfaceFill, SphereFillIsPositiveConformingAndOnTheVertices) {
 TEST(SurfaceFill, HalvesTheThicknessUntilNoTetInvertsAndSaysSo) {
     auto built = test::icosahedron(10.0f).build("icosahedron");
     ASSERT_TRUE(built.mesh) << built.error();
-    SurfaceFillOptions o;
+    SurfaceFillDef o;
     o.layers = 2;
     o.thicknessMm = 40.0;  // four times the radius: the core would turn inside out
     const FilledSurface f = fillSurface(*built.mesh, o);
@@ -113,18 +113,18 @@ TEST(SurfaceFill, RejectsBadInputWithAMessage) {
     ASSERT_TRUE(open.mesh);
     expectRejected([&] { fillSurface(*open.mesh); }, "open");
     const TissueMesh mesh = sphere(200);
-    SurfaceFillOptions zero;
+    SurfaceFillDef zero;
     zero.thicknessMm = 0.0;
     expectRejected([&] { fillSurface(mesh, zero); }, "thickness");
-    SurfaceFillOptions nan;
+    SurfaceFillDef nan;
     nan.thicknessMm = std::nan("");
     expectRejected([&] { fillSurface(mesh, nan); }, "thickness");
-    SurfaceFillOptions noLayers;
+    SurfaceFillDef noLayers;
     noLayers.layers = 0;
     expectRejected([&] { fillSurface(mesh, noLayers); }, "layers");
     expectRejected([&] { SurfaceIndenter(mesh, ElasticMaterial{std::nan(""), 0.3}); }, "Young");
     expectRejected([&] { SurfaceIndenter(mesh, ElasticMaterial{0.01, 0.5}); }, "Poisson");
-    SurfaceFillOptions twoLayers;
+    SurfaceFillDef twoLayers;
     twoLayers.layers = 2;
     const SurfaceIndenter indenter(mesh, kMaterial, twoLayers);
     expectRejected([&] { indenter.indent(VertexId(mesh.vertexCount()), 5.0, 1.0); }, "touched vertex");

@@ -32,6 +32,7 @@ expect /usr/share/palpate/presets/default.json
 expect /usr/share/palpate/presets/tissues/phantom_gel.json
 expect /usr/share/palpate/exercises/press_targets.json
 expect /usr/share/doc/palpate/user-guide.md
+expect /usr/share/doc/palpate/copyright
 expect /usr/share/doc/palpate/guide/welcome.png
 # Every udev rule of the source tree, whatever the device work ships.
 src="$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$build/CMakeCache.txt")"

@@ -31,7 +31,7 @@ inline const MeshLevels& levelsOf(GeneratedShape shape, std::size_t vertices) {
     const auto key = std::make_pair(int(shape), vertices);
     auto it = cache.find(key);
     if (it == cache.end()) {
-        LevelOptions options;
+        LevelDef options;
         options.minVertices = 200;
         it = cache.emplace(key, generateLevels(generated(shape, vertices), options)).first;
     }

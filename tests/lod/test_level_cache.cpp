@@ -38,7 +38,7 @@ protected:
     test::TempDir dir;
     std::string meshPath;
     std::optional<TissueMesh> mesh;
-    LevelOptions options;
+    LevelDef options;
 };
 
 /// The same levels: vertex counts and hashes.

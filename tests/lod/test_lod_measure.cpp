@@ -89,7 +89,7 @@ TEST(LodMeasure, MoreRingsAreNotWorseThanOne) {
 TEST(LodMeasure, AMeshTooCoarseForTheToolIsNotMeasuredAndNeverChosen) {
     // 12 vertices on a 50 mm sphere: within 5 tool radii (25 mm) of the contact there is only the
     // touched vertex, whose error is 0 by construction. That must not pass for accuracy.
-    const MeshLevels levels = generateLevels(test::generated(GeneratedShape::Sphere, 12), LevelOptions{});
+    const MeshLevels levels = generateLevels(test::generated(GeneratedShape::Sphere, 12), LevelDef{});
     const LodMeasurement m = measureLodCandidates(levels, quickDef());
     ASSERT_EQ(m.candidates.size(), 3u);
     for (const LodCandidate& c : m.candidates) {

@@ -86,7 +86,7 @@ INSTANTIATE_TEST_SUITE_P(Shapes, Levels, ::testing::Values(GeneratedShape::Spher
                          [](const auto& info) { return std::string(shapeName(info.param)); });
 
 TEST(MeshLevels, TargetsFollowTheOptions) {
-    LevelOptions o;
+    LevelDef o;
     o.vertexRatio = 0.5;
     o.minVertices = 250;
     o.maxCoarseLevels = 5;
@@ -98,7 +98,7 @@ TEST(MeshLevels, TargetsFollowTheOptions) {
 }
 
 TEST(MeshLevels, ASmallMeshHasOnlyItsSourceLevelAndSaysWhy) {
-    LevelOptions o;
+    LevelDef o;
     o.minVertices = 250;
     const MeshLevels levels = generateLevels(generated(GeneratedShape::Sphere, 300), o);
     ASSERT_EQ(levels.levels.size(), 1u);
@@ -108,7 +108,7 @@ TEST(MeshLevels, ASmallMeshHasOnlyItsSourceLevelAndSaysWhy) {
 
 TEST(MeshLevels, BadOptionsAreNamed) {
     const TissueMesh& mesh = generated(GeneratedShape::Sphere, 1442);
-    auto expectThrowNaming = [&](LevelOptions o, const std::string& words) {
+    auto expectThrowNaming = [&](LevelDef o, const std::string& words) {
         try {
             generateLevels(mesh, o);
             ADD_FAILURE() << "accepted options; wanted an error with '" << words << "'";
@@ -116,7 +116,7 @@ TEST(MeshLevels, BadOptionsAreNamed) {
             EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
         }
     };
-    LevelOptions o;
+    LevelDef o;
     o.vertexRatio = 1.5;
     expectThrowNaming(o, "vertex ratio");
     o = {};
@@ -132,7 +132,7 @@ TEST(MeshLevels, BadOptionsAreNamed) {
 
 TEST(MeshLevels, ProgressRisesToOneAndCancelKeepsOnlyCompleteLevels) {
     const TissueMesh& mesh = generated(GeneratedShape::Sphere, 3970);
-    LevelOptions o;
+    LevelDef o;
     o.minVertices = 200;
     std::vector<double> fractions;
     const MeshLevels all = generateLevels(mesh, o, [&](double f, const std::string&) { fractions.push_back(f); });
@@ -161,7 +161,7 @@ TEST(MeshLevels, ProgressRisesToOneAndCancelKeepsOnlyCompleteLevels) {
 TEST(MeshLevels, AnOpenSurfaceStaysUsableAndOpen) {
     auto built = test::gridPatch(40, 40, 1.0f).build("grid");
     ASSERT_TRUE(built.mesh) << built.error();
-    LevelOptions o;
+    LevelDef o;
     o.minVertices = 100;
     const MeshLevels levels = generateLevels(*built.mesh, o);
     ASSERT_GE(levels.levels.size(), 2u);
@@ -182,7 +182,7 @@ namespace {
 TEST(MeshLevels, StrictGuardsStopShortAndSaySo) {
     // A 0.01 degree normal guard forbids nearly every collapse on a sphere: the levels that cannot
     // be made are reported, never faked with a copy of the level before.
-    LevelOptions o;
+    LevelDef o;
     o.minVertices = 200;
     o.guards.maxNormalDeviationDeg = 0.01;
     const MeshLevels levels = generateLevels(test::generated(GeneratedShape::Sphere, 1442), o);

@@ -224,7 +224,7 @@ TEST(RecorderThreads, RunningTickWithRecorderDoesNotAllocate) {
     ASSERT_TRUE(writer) << error;
     CountingSink counting(*writer);
     rig.loop->attachRecorder(&counting);
-    ASSERT_TRUE(rig.loop->start());
+    ASSERT_EQ(rig.loop->start(), "");
     while (counting.ticks.load() < 100) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     const auto before = counting.allocations.load();
     const auto ticksBefore = counting.ticks.load();
@@ -251,7 +251,7 @@ TEST(RecorderThreads, StartAndStopWhileTheLoopRuns) {
     // Sessions come and go on a running loop; each file is whole and replay-consistent in itself.
     TempDir dir;
     RecordRig rig = makeRecordRig(SimTrajectory::Sine);
-    ASSERT_TRUE(rig.loop->start());
+    ASSERT_EQ(rig.loop->start(), "");
     for (int round = 0; round < 5; ++round) {
         std::string error;
         const std::string path = dir.file("churn" + std::to_string(round) + ".palprec");

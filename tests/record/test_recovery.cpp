@@ -204,7 +204,7 @@ TEST(RecoveryThreads, SigkillMidRecordingLosesAtMost100Ms) {
             RecordRig rig = makeRecordRig(SimTrajectory::Sine);
             std::string error;
             auto session = RecordingSession::start(*rig.loop, path, rig.header, error);
-            if (!session || !rig.loop->start()) ::_exit(3);
+            if (!session || !rig.loop->start().empty()) ::_exit(3);
             shared->recording.store(1);
             for (;;) {  // until killed
                 shared->loopTick.store(rig.loop->newestSnapshot().tick);

@@ -138,7 +138,7 @@ TEST(ReplayThreads, RealTimeRecordingReplaysBitExactly) {
     std::string error;
     auto session = RecordingSession::start(*rig.loop, path, rig.header, error);
     ASSERT_TRUE(session) << error;
-    ASSERT_TRUE(rig.loop->start());
+    ASSERT_EQ(rig.loop->start(), "");
     std::this_thread::sleep_for(std::chrono::milliseconds(700));
     SlopeRingParams p;
     p.contactStiffnessNPerMm = 0.6;
@@ -199,7 +199,7 @@ TEST(Replay, RefusesADifferentMesh) {
     recordStepped(rig, dir.file("m.palprec"), 200);
     const RecordingReader reader = RecordingReader::open(dir.file("m.palprec"));
     std::string error;
-    ReplayOptions options;
+    ReplayDef options;
     options.meshPath = smallSphereMeshPath();
     EXPECT_FALSE(RecordingPlayer::open(reader, error, options));
     EXPECT_NE(error.find("not the recorded mesh"), std::string::npos) << error;

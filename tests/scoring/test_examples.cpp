@@ -20,7 +20,7 @@ ScoreReport scoreExample(const std::string& name, const std::string& quality, te
     test::runScriptedSession(exercise, script, recording);
     const RecordingReader reader = RecordingReader::open(recording);
     std::string error;
-    ReplayScorerOptions options;
+    ReplayScorerDef options;
     options.findResource = test::testResourceFinder();
     const ScoreReport report = scoreRecording(reader, &exercise, error, options);
     EXPECT_EQ(error, "");

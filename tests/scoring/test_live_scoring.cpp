@@ -51,7 +51,7 @@ void expectIdentical(const ScoreReport& live, const ScoreReport& replay) {
 ScoreReport scoreFile(const std::string& path, const Exercise& exercise) {
     const RecordingReader reader = RecordingReader::open(path);
     std::string error;
-    ReplayScorerOptions options;
+    ReplayScorerDef options;
     options.findResource = test::testResourceFinder();
     const ScoreReport report = scoreRecording(reader, &exercise, error, options);
     EXPECT_EQ(error, "");
@@ -169,7 +169,8 @@ TEST(LiveScorerThreads, RealTimeSessionLiveEqualsReplay) {
     auto session = RecordingSession::start(loop, path, header, error);
     ASSERT_TRUE(session) << error;
     LiveScorer live(path, exercise, liveDef());
-    ASSERT_TRUE(loop.start(&error)) << error;
+    error = loop.start();
+    ASSERT_EQ(error, "");
     const auto start = std::chrono::steady_clock::now();
     bool marked = false;
     std::uint64_t polled = 0;

@@ -36,7 +36,7 @@ TEST(ScoreCli, JsonHasScoreMetricsAndRubric) {
     // The same numbers as scoring in process.
     const Exercise exercise = test::loadExampleExercise("press_targets");
     std::string error;
-    ReplayScorerOptions options;
+    ReplayScorerDef options;
     options.findResource = test::testResourceFinder();
     const ScoreReport report = scoreRecording(RecordingReader::open(recording), &exercise, error, options);
     EXPECT_DOUBLE_EQ(j["score"].get<double>(), report.score);
@@ -108,7 +108,7 @@ TEST(ScoreCli, GapsAreScoredOnWhatIsThereWithAWarning) {
     const RecordingReader reader = RecordingReader::open(path);
     ASSERT_GT(reader.summary().gaps, 0u);
     std::string error;
-    ReplayScorerOptions options;
+    ReplayScorerDef options;
     options.findResource = test::testResourceFinder();
     const ScoreReport report = scoreRecording(reader, &exercise, error, options);
     EXPECT_EQ(error, "");

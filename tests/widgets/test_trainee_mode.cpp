@@ -70,7 +70,7 @@ int countMarkers(const ExerciseMarkers& markers, ExerciseMarker::Kind kind) {
 ScoreReport replayScore(const QString& recordingPath) {
     const RecordingReader reader = RecordingReader::open(recordingPath.toStdString());
     std::string error;
-    ReplayScorerOptions options;
+    ReplayScorerDef options;
     options.findResource = cli::findResource;
     ScoreReport report = scoreRecording(reader, nullptr, error, options);
     EXPECT_EQ(error, "");
