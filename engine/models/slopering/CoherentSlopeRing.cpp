@@ -75,15 +75,8 @@ void CoherentSlopeRing::releaseActiveSet() {
 
 std::size_t CoherentSlopeRing::copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::uint8_t* rings,
                                              std::size_t capacity) const {
-    std::size_t count = 0;
-    auto put = [&](VertexId v, const glm::vec3& p, std::uint8_t ring) {
-        if (count < capacity) {
-            ids[count] = v;
-            positionsMm[count] = p;
-            rings[count] = ring;
-        }
-        ++count;
-    };
+    DisplacedOutput out{ids, positionsMm, rings, capacity};
+    auto put = [&out](VertexId v, const glm::vec3& p, std::uint8_t ring) { out.put(v, p, ring); };
     if (mActiveCentre != kNoVertex && mActiveContact)
         for (int r = 0; r <= mActive.ringCount; ++r) {
             const glm::vec3 displacement = ringDisplacementMm(r, mActiveForceN, mActiveNormal);
@@ -92,7 +85,7 @@ std::size_t CoherentSlopeRing::copyDisplaced(VertexId* ids, glm::vec3* positions
                     std::uint8_t(r));
         }
     for (std::size_t i = 0; i < mRelaxingCount; ++i) put(mRelaxing[i], mPositions[mRelaxing[i]], kRelaxingRing);
-    return count;
+    return out.count;
 }
 
 void CoherentSlopeRing::reset() {

@@ -49,15 +49,8 @@ void PaperSlopeRing::reset() {
 
 std::size_t PaperSlopeRing::copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::uint8_t* rings,
                                           std::size_t capacity) const {
-    std::size_t count = 0;
-    auto put = [&](VertexId v, const glm::vec3& p, std::uint8_t ring) {
-        if (count < capacity) {
-            ids[count] = v;
-            positionsMm[count] = p;
-            rings[count] = ring;
-        }
-        ++count;
-    };
+    DisplacedOutput out{ids, positionsMm, rings, capacity};
+    auto put = [&out](VertexId v, const glm::vec3& p, std::uint8_t ring) { out.put(v, p, ring); };
     // Ring membership of the current touched vertex's rings.
     auto ringOf = [&](VertexId v) -> std::uint8_t {
         if (!mContact || mTouched == kNoVertex) return kRelaxingRing;
@@ -76,7 +69,7 @@ std::size_t PaperSlopeRing::copyDisplaced(VertexId* ids, glm::vec3* positionsMm,
         for (VertexId v = 0; v < mPositions.size(); ++v)
             if (mPositions[v] != rest[v]) put(v, mPositions[v], ringOf(v));
     }
-    return count;
+    return out.count;
 }
 
 VertexId PaperSlopeRing::findTouched(const glm::vec3& tool) const {

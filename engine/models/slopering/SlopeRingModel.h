@@ -21,6 +21,25 @@
 
 namespace palpate {
 
+/// copyDisplaced's output arrays: puts a vertex while there is room, counts every one (a count
+/// above the capacity tells the caller the copy was cut).
+struct DisplacedOutput {
+    VertexId* ids;
+    glm::vec3* positionsMm;
+    std::uint8_t* rings;
+    std::size_t capacity;
+    std::size_t count = 0;
+
+    void put(VertexId v, const glm::vec3& positionMm, std::uint8_t ring) {
+        if (count < capacity) {
+            ids[count] = v;
+            positionsMm[count] = positionMm;
+            rings[count] = ring;
+        }
+        ++count;
+    }
+};
+
 class SlopeRingModel : public DeformationModel {
 public:
     std::span<const glm::vec3> positionsMm() const override { return mPositions; }
