@@ -1,5 +1,6 @@
 #include "device/SafetyFilter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -15,6 +16,9 @@ std::string validateSafetyFilterDef(const SafetyFilterDef& def) {
         return "SafetyFilterDef.staleSampleTimeoutS must be finite and > 0";
     if (!std::isfinite(def.maxSampleAgeS))
         return "SafetyFilterDef.maxSampleAgeS must be finite (<= 0 disables the age check)";
+    if (def.maxConsecutiveOverruns < 0) return "SafetyFilterDef.maxConsecutiveOverruns must be >= 0";
+    if (!(def.overrunFadeTimeS > 0.0) || !std::isfinite(def.overrunFadeTimeS))
+        return "SafetyFilterDef.overrunFadeTimeS must be finite and > 0";
     return "";
 }
 
@@ -40,6 +44,8 @@ void SafetyFilter::rearm() {
     mHaveSequence = false;
     mTicksSinceSequenceChange = 0;
     mWasStale = false;
+    mConsecutiveOverruns = 0;
+    mFadeScale = 1.0f;
     ++mStats.rearms;
 }
 
@@ -132,12 +138,32 @@ glm::vec3 SafetyFilter::filter(const glm::vec3& commandedForceN, const SafetyInp
         }
     }
 
-    // 6. Watchdog, overrun: a late force is a force for a past position; one zero tick is the
-    //    smaller harm. (No re-arm: the next tick computes from a fresh sample.)
+    // 6. Watchdog, overrun. A late tick still computed its force from a fresh sample (rule 5):
+    //    rendering it is right, and zeroing it would be a 1.7 N -> 0 -> 1.7 N jerk within 2 ms
+    //    that a loaded desktop turns into a buzz. Only a loop that misses more than
+    //    maxConsecutiveOverruns deadlines in a row fades the force out, at a bounded rate; when it
+    //    keeps time again the ramp brings the force back from where the fade left it.
     if (in.tickOverran) {
-        mLastFlags = flags | kSafetyOverrun;
+        flags |= kSafetyOverrun;
         ++mStats.overrunTicks;
-        return zero;
+        if (++mConsecutiveOverruns == mDef.maxConsecutiveOverruns + 1) mFadeStartS = in.nowS;
+        if (mConsecutiveOverruns > mDef.maxConsecutiveOverruns) {
+            const double faded = 1.0 - (in.nowS - mFadeStartS) / mDef.overrunFadeTimeS;
+            mFadeScale = float(std::clamp(faded, 0.0, double(mFadeScale)));
+        }
+    } else {
+        mConsecutiveOverruns = 0;
+        if (mFadeScale < 1.0f && mPhase != SafetyPhase::HoldOff) {
+            // On time again: continue as a ramp from the faded level, so the force never steps up.
+            const double rampScale = mPhase == SafetyPhase::Armed || mDef.rampTimeS <= 0.0
+                                         ? 1.0
+                                         : std::clamp((in.nowS - mRampStartS) / mDef.rampTimeS, 0.0, 1.0);
+            if (mDef.rampTimeS > 0.0) {
+                mPhase = SafetyPhase::RampIn;
+                mRampStartS = in.nowS - rampScale * double(mFadeScale) * mDef.rampTimeS;
+            }
+        }
+        mFadeScale = 1.0f;
     }
 
     // 7. Hold-off, then ramp. A non-finite command is not "small": it must not start the ramp.
@@ -166,6 +192,11 @@ glm::vec3 SafetyFilter::filter(const glm::vec3& commandedForceN, const SafetyInp
         }
     }
 
+    if (mConsecutiveOverruns > mDef.maxConsecutiveOverruns) {
+        forceN *= mFadeScale;
+        flags |= kSafetyOverrunFade;
+        ++mStats.overrunFadeTicks;
+    }
     mLastFlags = flags;
     return forceN;
 }

@@ -33,6 +33,12 @@ struct SafetyFilterDef {
     /// After a stale-sample trip, go through hold-off and ramp again: the tool may have moved far
     /// while the sample was frozen, so the first fresh force can be large.
     bool rearmAfterStale = true;
+    /// A late tick is not a fault: it renders the force it computed (from a fresh sample). Only
+    /// after more than this many late ticks in a row (the loop is not keeping up at all) ...
+    int maxConsecutiveOverruns = 50;
+    /// ... does the force fade out, linearly over this time (never a step); once ticks are on
+    /// time again it ramps back in from where the fade left it (docs/devices.md).
+    double overrunFadeTimeS = 0.05;
 };
 
 /// Returns "" when the definition is usable, else a message naming the field.
@@ -61,7 +67,8 @@ enum SafetyFlag : std::uint32_t {
     kSafetyHeldOff = 1u << 2,        ///< zero: waiting for a small command
     kSafetyRamping = 1u << 3,        ///< scaled down by the ramp
     kSafetyStaleSample = 1u << 4,    ///< zero: sample stale
-    kSafetyOverrun = 1u << 5,        ///< zero: tick overran
+    kSafetyOverrun = 1u << 5,        ///< the tick was late; its fresh force is kept
+    kSafetyOverrunFade = 1u << 8,    ///< scaled down: too many late ticks in a row
     kSafetyNotReady = 1u << 6,       ///< zero: device not Ready
     kSafetyBadTime = 1u << 7,        ///< zero: nowS not finite
 };
@@ -74,7 +81,8 @@ struct SafetyStats {
     std::uint64_t heldOffTicks = 0;
     std::uint64_t rampTicks = 0;
     std::uint64_t staleSampleTicks = 0;
-    std::uint64_t overrunTicks = 0;
+    std::uint64_t overrunTicks = 0;      ///< late ticks (their force kept)
+    std::uint64_t overrunFadeTicks = 0;  ///< ticks scaled down by the overrun fade
     std::uint64_t notReadyTicks = 0;
     std::uint64_t badTimeTicks = 0;
     std::uint64_t rearms = 0;        ///< explicit, reconnect or after a stale trip
@@ -114,6 +122,9 @@ private:
     double mSequenceChangeS = 0.0;
     bool mWasReady = true;
     bool mWasStale = false;
+    int mConsecutiveOverruns = 0;
+    double mFadeStartS = 0.0;     ///< when the overrun fade began
+    float mFadeScale = 1.0f;      ///< what the fade left of the force (1: no fade)
     std::uint32_t mLastFlags = 0;
     SafetyStats mStats;
 };

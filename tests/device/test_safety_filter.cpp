@@ -1,7 +1,8 @@
 // Safety filter: every rule on both sides. NaN/Inf zeroed and counted; the clamp keeps the
 // direction; hold-off until the command is small, then a ramp that reaches full force at
-// rampTimeS and not before; stale samples and overruns zero the force on the tick they occur;
-// a reconnect re-arms. And the filter does not allocate.
+// rampTimeS and not before; stale samples zero the force on the tick they occur; a late tick
+// keeps its fresh force, and only a long run of them fades it out at a bounded rate and back in
+// without a step; a reconnect re-arms. And the filter does not allocate.
 
 #include "tests/support/AllocationCounter.h"
 #include "device/SafetyFilter.h"
@@ -332,16 +333,80 @@ TEST(SafetyFilter, StaleTripWithoutRearmResumesAtOnce) {
     EXPECT_EQ(loop.tick(big), big);
 }
 
-TEST(SafetyFilter, OverrunZeroesThatTickOnly) {
+TEST(SafetyFilter, LateTicksKeepTheirFreshForce) {
     Loop loop;
     loop.arm();
     const glm::vec3 f(0.0f, 1.5f, 0.0f);
     EXPECT_EQ(loop.tick(f), f);
-    EXPECT_TRUE(isZero(loop.tick(f, /*overran=*/true)));
+    // Every other tick late (a loaded desktop), and a run as long as the limit: no dropout.
+    for (int i = 0; i < 200; ++i) {
+        const glm::vec3 g = f * (1.0f + 0.001f * float(i % 7));
+        ASSERT_EQ(loop.tick(g, /*overran=*/i % 2 == 0), g) << "tick " << i;
+    }
+    for (int i = 0; i < SafetyFilterDef{}.maxConsecutiveOverruns; ++i) ASSERT_EQ(loop.tick(f, true), f) << i;
     EXPECT_TRUE(loop.filter.lastFlags() & kSafetyOverrun);
-    EXPECT_EQ(loop.filter.stats().overrunTicks, 1u);
-    EXPECT_EQ(loop.tick(f), f);  // no re-arm for a single late tick
+    EXPECT_FALSE(loop.filter.lastFlags() & kSafetyOverrunFade);
+    EXPECT_EQ(loop.filter.stats().overrunTicks, 100u + std::uint64_t(SafetyFilterDef{}.maxConsecutiveOverruns));
+    EXPECT_EQ(loop.filter.stats().overrunFadeTicks, 0u);
+    EXPECT_EQ(loop.tick(f), f);  // no re-arm for late ticks
     EXPECT_EQ(loop.filter.phase(), SafetyPhase::Armed);
+}
+
+TEST(SafetyFilter, ALongRunOfLateTicksFadesOutAtABoundedRateAndRampsBackWithoutAStep) {
+    SafetyFilterDef def;
+    def.maxConsecutiveOverruns = 5;
+    def.overrunFadeTimeS = 0.010;  // 10 ticks
+    def.rampTimeS = 0.020;         // 20 ticks
+    Loop loop(def);
+    loop.arm();
+    const glm::vec3 f(0.0f, 0.0f, 2.0f);
+    const float full = glm::length(f);
+    EXPECT_EQ(loop.tick(f), f);
+    for (int i = 0; i < def.maxConsecutiveOverruns; ++i) ASSERT_EQ(loop.tick(f, true), f);
+    // Past the limit: down, never by more than full * tick / fadeTime per tick, to zero.
+    float last = full;
+    int fadeTicks = 0;
+    while (last > 0.0f && fadeTicks < 100) {
+        const float now = glm::length(loop.tick(f, true));
+        ASSERT_LE(now, last) << "fade tick " << fadeTicks;
+        ASSERT_LE(last - now, full * float(kTickS / def.overrunFadeTimeS) * 1.001f + 1e-6f) << "fade tick " << fadeTicks;
+        EXPECT_TRUE(loop.filter.lastFlags() & kSafetyOverrunFade);
+        last = now;
+        ++fadeTicks;
+    }
+    EXPECT_EQ(last, 0.0f);
+    EXPECT_GE(fadeTicks, 10);
+    // On time again: up, never by more than full * tick / rampTime per tick, to the full force.
+    int rampTicks = 0;
+    while (last < full && rampTicks < 100) {
+        const float now = glm::length(loop.tick(f));
+        ASSERT_GE(now, last) << "ramp tick " << rampTicks;
+        ASSERT_LE(now - last, full * float(kTickS / def.rampTimeS) * 1.001f + 1e-6f) << "ramp tick " << rampTicks;
+        last = now;
+        ++rampTicks;
+    }
+    EXPECT_EQ(loop.tick(f), f);
+    EXPECT_EQ(loop.filter.phase(), SafetyPhase::Armed);
+    EXPECT_GE(rampTicks, 19);
+
+    // A fade cut short: the ramp starts from the level the fade reached, not from zero or full.
+    for (int i = 0; i < def.maxConsecutiveOverruns; ++i) loop.tick(f, true);
+    float faded = full;
+    for (int i = 0; i < 4; ++i) faded = glm::length(loop.tick(f, true));
+    ASSERT_GT(faded, 0.0f);
+    ASSERT_LT(faded, full);
+    const float back = glm::length(loop.tick(f));
+    EXPECT_GE(back, faded);
+    EXPECT_LE(back - faded, full * float(kTickS / def.rampTimeS) * 1.001f + 1e-6f);
+}
+
+TEST(SafetyFilter, OverrunRulesAreValidated) {
+    SafetyFilterDef def;
+    def.maxConsecutiveOverruns = -1;
+    EXPECT_NE(validateSafetyFilterDef(def).find("maxConsecutiveOverruns"), std::string::npos);
+    def = {};
+    def.overrunFadeTimeS = 0.0;
+    EXPECT_NE(validateSafetyFilterDef(def).find("overrunFadeTimeS"), std::string::npos);
 }
 
 TEST(SafetyFilter, ReconnectRearms) {

@@ -66,7 +66,8 @@ std::uint64_t runScriptedSession(const Exercise& exercise, const TraineeScript& 
     std::size_t nextMark = 0;
     int deferredMarks = 0;
     for (std::uint64_t i = 1; i <= ticks; ++i) {
-        loop.stepOnce();
+        if (def.tickOverran) loop.stepAt(double(i - 1) * loop.periodS(), def.tickOverran(i));
+        else loop.stepOnce();
         const double nowS = double(i) * loop.periodS();
         // A mark is the user's: taken at the tick the loop has just run, as a GUI key would be.
         while (nextMark < script.marksS.size() && nowS >= script.marksS[nextMark]) {

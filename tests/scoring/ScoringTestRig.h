@@ -39,6 +39,8 @@ struct SessionRunDef {
     bool marksAfterFlush = false;
     /// The recorder's ring and chunking (a small ring and rare flushes make gaps).
     RecordingWriterDef writer;
+    /// Which ticks (1-based) run late, as on a loaded machine; null: every tick on time.
+    std::function<bool(std::uint64_t tick)> tickOverran;
 };
 
 /// Runs a stepped session of `exercise` driven by `script` and records it to `recordingPath`
