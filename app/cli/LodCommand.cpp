@@ -60,7 +60,7 @@ std::string levelOptionsFromArgs(const Args& args, LevelDef& options) {
         if (!r) return "--ratio: '" + *text + "' is not a number";
         options.vertexRatio = *r;
     }
-    if (const std::string e = validateLevelOptions(options); !e.empty()) return e;
+    if (const std::string e = validateLevelDef(options); !e.empty()) return e;
     return {};
 }
 

@@ -178,7 +178,7 @@ std::string writeLevelCache(const std::string& dir, const MeshLevels& levels, co
 
 LevelCacheResult loadOrGenerateLevels(const std::string& meshPath, const TissueMesh& source, const LevelDef& options,
                                       const LodProgressFn& progress, const std::atomic<bool>* cancel, bool useCache) {
-    if (const std::string e = validateLevelOptions(options); !e.empty()) throw std::invalid_argument(e);
+    if (const std::string e = validateLevelDef(options); !e.empty()) throw std::invalid_argument(e);
     LevelCacheResult result;
     const std::string dir = levelCacheDir(meshPath);
     if (useCache) {

@@ -10,7 +10,7 @@
 
 namespace palpate {
 
-std::string validateLevelOptions(const LevelDef& o) {
+std::string validateLevelDef(const LevelDef& o) {
     if (!std::isfinite(o.vertexRatio) || o.vertexRatio <= 0.05 || o.vertexRatio >= 0.95)
         return "levels: vertex ratio must be in (0.05, 0.95)";
     if (o.minVertices < 8) return "levels: min vertices must be at least 8";
@@ -51,7 +51,7 @@ std::string levelTopologyProblem(const TissueMesh& source, const TissueMesh& lev
 
 MeshLevels generateLevels(const TissueMesh& source, const LevelDef& options, const LodProgressFn& progress,
                           const std::atomic<bool>* cancel) {
-    if (const std::string e = validateLevelOptions(options); !e.empty()) throw std::invalid_argument(e);
+    if (const std::string e = validateLevelDef(options); !e.empty()) throw std::invalid_argument(e);
     using Clock = std::chrono::steady_clock;
     auto say = [&](double fraction, const std::string& stage) {
         if (progress) progress(std::clamp(fraction, 0.0, 1.0), stage);

@@ -26,7 +26,7 @@ struct LevelDef {
 };
 
 /// "" when usable, else a message naming the field.
-std::string validateLevelOptions(const LevelDef& options);
+std::string validateLevelDef(const LevelDef& options);
 /// The vertex counts the coarse levels aim at for a source of `sourceVertices` (descending).
 std::vector<std::size_t> levelTargets(std::size_t sourceVertices, const LevelDef& options);
 
