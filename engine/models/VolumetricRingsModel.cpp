@@ -85,15 +85,7 @@ VolumetricRingsModel::VolumetricRingsModel(const TissueMesh& mesh, const Octree&
 }
 
 void VolumetricRingsModel::applyParams() {
-    const SlopeRingParams& p = mParams.slopeRing;
-    mRingCount = p.ringCount;
-    for (int r = 0; r <= kMaxRings; ++r) mSignedSlope[r] = -float(p.slopeMagnitudeMmPerN[std::size_t(r)]);
-    mAlpha = float(p.effectiveRelaxation());
-    mContactStiffness = float(p.contactStiffnessNPerMm);
-    mSpringStiffness = float(p.springStiffnessNPerMm);
-    const double omega2 = p.springStiffnessNPerMm * 1000.0 / p.vertexMassKg;
-    mOmega2 = float(omega2);
-    mTwoZetaOmega = float(2.0 * p.dampingRatio * std::sqrt(omega2));
+    mHot = slopeRingConstants(mParams.slopeRing);
 }
 
 bool VolumetricRingsModel::applyModelParams(const ModelDef& def) {
@@ -172,7 +164,7 @@ void VolumetricRingsModel::changeActiveSet(VertexId touched, bool contact) {
     mPreviousCount = mActiveContact ? mActiveCount : 0;
     std::copy(mActive.begin(), mActive.begin() + std::ptrdiff_t(mPreviousCount), mPrevious.begin());
     if (contact) {
-        findRings(touched, mRingCount);
+        findRings(touched, mHot.ringCount);
         for (std::size_t i = 0; i < mActiveCount; ++i) {
             mNodeVelocities[mActive[i]] = glm::vec3(0.0f);
             removeRelaxing(mActive[i]);
@@ -210,8 +202,8 @@ TickResult VolumetricRingsModel::step(const glm::vec3& tool, double dtS) {
     float penetration = 0.0f;
     if (toolValid && touched != kNoVertex) {
         const float depth = glm::dot(rest[touched] - tool, mMesh.restNormals()[touched]);
-        penetration = depth + mSignedSlope[0] * mForceN;
-        mForceN = std::max(0.0f, (1.0f - mAlpha) * mForceN + mAlpha * (mContactStiffness * penetration));
+        penetration = depth + mHot.signedSlope[0] * mForceN;
+        mForceN = std::max(0.0f, (1.0f - mHot.alpha) * mForceN + mHot.alpha * (mHot.contactStiffness * penetration));
     } else {
         mForceN = 0.0f;
     }
@@ -221,20 +213,20 @@ TickResult VolumetricRingsModel::step(const glm::vec3& tool, double dtS) {
     // Every node of ring r (surface or interior) at rest + m_r F n.
     if (contact)
         for (int r = 0; r <= mActiveRingCount; ++r) {
-            const glm::vec3 displacement = (mSignedSlope[r] * mForceN) * mActiveNormal;
+            const glm::vec3 displacement = (mHot.signedSlope[r] * mForceN) * mActiveNormal;
             for (std::uint32_t i = mActiveRingStart[r]; i < mActiveRingStart[r + 1]; ++i)
                 mNodePositions[mActive[i]] = mNodeRest[mActive[i]] + displacement;
         }
 
     // Nodes that left the rings return by damped springs (backward Euler, as the surface model).
     const float dt = dtS > 0.0 && std::isfinite(dtS) ? float(dtS) : 0.0f;  // else nothing relaxes this tick
-    const float denominatorInv = 1.0f / (1.0f + dt * mTwoZetaOmega + dt * dt * mOmega2);
+    const float denominatorInv = 1.0f / (1.0f + dt * mHot.twoZetaOmega + dt * dt * mHot.omega2);
     float maxRelaxing2 = 0.0f;
     for (std::size_t i = 0; i < mRelaxingCount;) {
         const std::uint32_t node = mRelaxing[i];
         const glm::vec3 u = mNodePositions[node] - mNodeRest[node];
         glm::vec3& vel = mNodeVelocities[node];
-        vel = (vel - (dt * mOmega2) * u) * denominatorInv;
+        vel = (vel - (dt * mHot.omega2) * u) * denominatorInv;
         const glm::vec3 uNext = u + dt * vel;
         const glm::vec3 stepMm = dt * vel;
         if (glm::dot(uNext, uNext) < kRestEpsilonMm * kRestEpsilonMm && glm::dot(stepMm, stepMm) < kRestEpsilonMm * kRestEpsilonMm) {
@@ -249,7 +241,7 @@ TickResult VolumetricRingsModel::step(const glm::vec3& tool, double dtS) {
     }
     // No surface node is farther from rest than the largest ring displacement (|m1| F: slopes
     // decrease outward) or a relaxing node's: the bound the next search relies on.
-    mMaxSurfaceDisplacementMm = std::max(contact ? -mSignedSlope[0] * mForceN : 0.0f, std::sqrt(maxRelaxing2));
+    mMaxSurfaceDisplacementMm = std::max(contact ? -mHot.signedSlope[0] * mForceN : 0.0f, std::sqrt(maxRelaxing2));
 
     mTouched = touched;
     mContact = contact;
@@ -257,7 +249,7 @@ TickResult VolumetricRingsModel::step(const glm::vec3& tool, double dtS) {
     result.touched = touched;
     result.contact = contact;
     result.penetrationMm = penetration;
-    if (contact) result.forceN = -mSpringStiffness * (mSignedSlope[0] * mForceN) * mActiveNormal;
+    if (contact) result.forceN = -mHot.springStiffness * (mHot.signedSlope[0] * mForceN) * mActiveNormal;
     return result;
 }
 

@@ -68,10 +68,7 @@ private:
     std::vector<glm::vec3> mNodeVelocities;
 
     // Hot constants (as SlopeRingModel's).
-    float mSignedSlope[kMaxRings + 1] = {};
-    int mRingCount = 2;
-    float mAlpha = 1.0f, mContactStiffness = 1.0f, mSpringStiffness = 1.0f;
-    float mOmega2 = 0.0f, mTwoZetaOmega = 0.0f;
+    SlopeRingConstants mHot;  // what the tick reads, derived from mParams.slopeRing
 
     // The active rings (breadth-first in the tet graph), generation-stamped membership.
     std::vector<std::uint32_t> mActive;

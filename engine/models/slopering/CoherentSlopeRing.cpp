@@ -134,7 +134,7 @@ void CoherentSlopeRing::removeRelaxing(VertexId v) {
 }
 
 void CoherentSlopeRing::searchActive(const glm::vec3& tool, VertexId& best, float& best2) const {
-    const float slope1 = -mSignedSlope[0];
+    const float slope1 = -mHot.signedSlope[0];
     ActiveScan& scan = mActiveScan;
     if (scan.valid) {
         // Every active vertex moved relative to the tool by at most |dtool| + |m1| |dF|.
@@ -262,7 +262,7 @@ void CoherentSlopeRing::changeActiveSet(VertexId touched, bool contact) {
         mActiveGeneration = 1;
     }
     if (contact) {
-        mRingFinder.find(touched, mRingCount, mNextActive);
+        mRingFinder.find(touched, mHot.ringCount, mNextActive);
         const auto& rest = mMesh.restPositionsMm();
         for (std::size_t i = 0, n = mNextActive.size(); i < n; ++i) {
             const VertexId v = mNextActive.vertices[i];

@@ -32,10 +32,10 @@ void PaperSlopeRing::precomputeRingLists() {
     mRingLists.assign(n, {});
     RingSet scratch = mRingFinder.makeRingSet();
     for (VertexId v = 0; v < n; ++v) {
-        mRingFinder.find(v, mRingCount, scratch);
+        mRingFinder.find(v, mHot.ringCount, scratch);
         auto& lists = mRingLists[v];
-        lists.resize(std::size_t(mRingCount));
-        for (int r = 1; r <= mRingCount; ++r) {
+        lists.resize(std::size_t(mHot.ringCount));
+        for (int r = 1; r <= mHot.ringCount; ++r) {
             const auto ring = scratch.ring(r);
             lists[std::size_t(r - 1)].assign(ring.begin(), ring.end());
         }
@@ -98,7 +98,7 @@ void PaperSlopeRing::stepWholeModel(VertexId touched, bool contact) {
     if (contact) {
         mRingOf[touched] = 0;
         const auto& lists = mRingLists[touched];
-        for (int r = 1; r <= mRingCount; ++r)
+        for (int r = 1; r <= mHot.ringCount; ++r)
             for (VertexId v : lists[std::size_t(r - 1)]) mRingOf[v] = std::uint8_t(r);
     }
     const glm::vec3 normal = touched != kNoVertex ? mMesh.restNormals()[touched] : glm::vec3(0.0f);
@@ -135,7 +135,7 @@ void PaperSlopeRing::stepProposed(VertexId touched, bool contact) {
     mPositions[touched] = rest[touched] + ringDisplacementMm(0, mContactForceN, normal);
     mPreviousRingVertices.push_back(touched);
     const auto& lists = mRingLists[touched];
-    for (int r = 1; r <= mRingCount; ++r) {
+    for (int r = 1; r <= mHot.ringCount; ++r) {
         const glm::vec3 displacement = ringDisplacementMm(r, mContactForceN, normal);
         for (VertexId v : lists[std::size_t(r - 1)]) {
             mPositions[v] = rest[v] + displacement;

@@ -42,15 +42,7 @@ bool SlopeRingModel::applyModelParams(const ModelDef& def) {
 }
 
 void SlopeRingModel::updateHotConstants() {
-    mRingCount = mParams.ringCount;
-    for (int r = 0; r <= kMaxRings; ++r) mSignedSlope[r] = -float(mParams.slopeMagnitudeMmPerN[std::size_t(r)]);
-    mAlpha = float(mParams.effectiveRelaxation());
-    mContactStiffness = float(mParams.contactStiffnessNPerMm);
-    mSpringStiffness = float(mParams.springStiffnessNPerMm);
-    // k [N/mm] * 1000 = N/m; omega^2 = k / m.
-    const double omega2 = mParams.springStiffnessNPerMm * 1000.0 / mParams.vertexMassKg;
-    mOmega2 = float(omega2);
-    mTwoZetaOmega = float(2.0 * mParams.dampingRatio * std::sqrt(omega2));
+    mHot = slopeRingConstants(mParams);
     mRelaxDtS = -1.0;
 }
 

@@ -82,7 +82,7 @@ protected:
         if (dtS != mRelaxDtS) {
             mRelaxDtS = dtS;
             mRelaxDt = float(dtS);
-            mRelaxDenominatorInv = 1.0f / (1.0f + mRelaxDt * mTwoZetaOmega + mRelaxDt * mRelaxDt * mOmega2);
+            mRelaxDenominatorInv = 1.0f / (1.0f + mRelaxDt * mHot.twoZetaOmega + mRelaxDt * mRelaxDt * mHot.omega2);
         }
     }
     static bool isFinite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
@@ -97,16 +97,16 @@ protected:
         float penetration = 0.0f;
         if (toolValid && touched != kNoVertex) {
             const float depth = glm::dot(mMesh.restPositionsMm()[touched] - tool, mMesh.restNormals()[touched]);
-            penetration = depth + mSignedSlope[0] * (compliance * mContactForceN);
+            penetration = depth + mHot.signedSlope[0] * (compliance * mContactForceN);
         }
         const float alpha = compliance == 1.0f || mParams.forceRelaxation > 0.0
-                                ? mAlpha
+                                ? mHot.alpha
                                 : float(1.0 / (1.0 + mParams.loopGain() * double(compliance)));
         // Projected onto F >= 0 (the tissue only pushes): a non-expansive step, so the iteration
         // converges wherever its linear part does, alpha (1 + gain) < 2, overshoot or not.
         if (toolValid && touched != kNoVertex)
             mContactForceN = std::max(0.0f,
-                                      (1.0f - alpha) * mContactForceN + alpha * (mContactStiffness * penetration));
+                                      (1.0f - alpha) * mContactForceN + alpha * (mHot.contactStiffness * penetration));
         else mContactForceN = 0.0f;
         mTouched = touched;
         mContact = mContactForceN > 0.0f;
@@ -120,14 +120,14 @@ protected:
         result.touched = touched;
         result.contact = mContact;
         result.penetrationMm = penetration;
-        if (mContact) result.forceN = -mSpringStiffness * touchedDisplacementMm;
+        if (mContact) result.forceN = -mHot.springStiffness * touchedDisplacementMm;
         return result;
     }
 
     /// The slope update (the paper's Eq. (1)-(3)): a vertex of ring `ring` sits at rest + this,
     /// m_r F along the touched vertex's rest normal (m_r < 0: into the tissue).
     glm::vec3 ringDisplacementMm(int ring, float forceN, const glm::vec3& normal) const {
-        return (mSignedSlope[ring] * forceN) * normal;
+        return (mHot.signedSlope[ring] * forceN) * normal;
     }
 
     /// Backward Euler on m x'' = -k x - c x' for one vertex: unconditionally stable and dissipative.
@@ -135,7 +135,7 @@ protected:
         const glm::vec3 rest = mMesh.restPositionsMm()[v];
         const glm::vec3 u = mPositions[v] - rest;
         glm::vec3& vel = mVelocitiesMmPerS[v];
-        vel = (vel - (mRelaxDt * mOmega2) * u) * mRelaxDenominatorInv;
+        vel = (vel - (mRelaxDt * mHot.omega2) * u) * mRelaxDenominatorInv;
         mPositions[v] = rest + (u + mRelaxDt * vel);
     }
 
@@ -146,13 +146,7 @@ protected:
     RingFinder mRingFinder;
 
     // Hot-loop constants derived from the parameters.
-    float mSignedSlope[kMaxRings + 1] = {};  // -|m_r|, mm/N
-    int mRingCount = 2;
-    float mAlpha = 1.0f;
-    float mContactStiffness = 1.0f;  // N/mm
-    float mSpringStiffness = 1.0f;   // N/mm
-    float mOmega2 = 0.0f;            // return-spring omega^2, 1/s^2
-    float mTwoZetaOmega = 0.0f;      // 2 zeta omega, 1/s
+    SlopeRingConstants mHot;  // what the tick reads, derived from mParams
     double mRelaxDtS = -1.0;         // dt for which the two factors below hold
     float mRelaxDenominatorInv = 1.0f, mRelaxDt = 0.0f;
 

@@ -130,6 +130,20 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
 
 FieldTable<SlopeRingParams> slopeRingFields() { return kFields; }
 
+SlopeRingConstants slopeRingConstants(const SlopeRingParams& p) {
+    SlopeRingConstants c;
+    c.ringCount = p.ringCount;
+    for (int r = 0; r <= kMaxRings; ++r) c.signedSlope[r] = -float(p.slopeMagnitudeMmPerN[std::size_t(r)]);
+    c.alpha = float(p.effectiveRelaxation());
+    c.contactStiffness = float(p.contactStiffnessNPerMm);
+    c.springStiffness = float(p.springStiffnessNPerMm);
+    // k [N/mm] * 1000 = N/m; omega^2 = k / m.
+    const double omega2 = p.springStiffnessNPerMm * 1000.0 / p.vertexMassKg;
+    c.omega2 = float(omega2);
+    c.twoZetaOmega = float(2.0 * p.dampingRatio * std::sqrt(omega2));
+    return c;
+}
+
 Problems validateSlopeRingParams(const SlopeRingParams& p) {
     Problems problems;
     checkFields(slopeRingFields(), p, problems);

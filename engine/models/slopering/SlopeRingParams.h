@@ -38,6 +38,19 @@ struct SlopeRingParams {
     double effectiveRelaxation() const { return forceRelaxation > 0.0 ? forceRelaxation : 1.0 / (1.0 + loopGain()); }
 };
 
+/// What the slope-ring update reads each tick, derived once from the parameters, in the float the
+/// tick computes in (the surface and the volumetric slope-ring models share it).
+struct SlopeRingConstants {
+    float signedSlope[kMaxRings + 1] = {};  ///< -|m_r|, mm/N
+    int ringCount = 2;
+    float alpha = 1.0f;             ///< the contact force's relaxation
+    float contactStiffness = 1.0f;  ///< N/mm
+    float springStiffness = 1.0f;   ///< N/mm
+    float omega2 = 0.0f;            ///< return-spring omega^2, 1/s^2
+    float twoZetaOmega = 0.0f;      ///< 2 zeta omega, 1/s
+};
+SlopeRingConstants slopeRingConstants(const SlopeRingParams& params);
+
 /// The fields of SlopeRingParams in file order (engine/params/FieldTable.h).
 FieldTable<SlopeRingParams> slopeRingFields();
 
