@@ -24,6 +24,10 @@ struct TickResult {
     bool contact = false;          ///< the tissue pushes back on the tool (contact force > 0)
     float penetrationMm = 0.0f;    ///< depth of the tip below the displaced touched vertex, along its
                                    ///< rest normal, before this tick's update (< 0: above it)
+    glm::vec3 normal{0.0f};        ///< unit outward direction of the normal contact force (zero
+                                   ///< without contact); forceN minus its part along this is friction
+    glm::vec3 proxyMm{0.0f};       ///< where the tool is held on the tissue: the proxy's centre for
+                                   ///< a tool with a size (toolRadiusMm() > 0); zero for a point tool
 };
 
 class DeformationModel {
@@ -36,6 +40,9 @@ public:
     /// Back to the rest shape, no contact.
     virtual void reset() = 0;
     virtual std::string name() const = 0;
+    /// The radius of the tool the model's contact assumes: 0 for a point tool (the position
+    /// step() is given is the tip); > 0 for a sphere (the position is its centre).
+    virtual float toolRadiusMm() const { return 0.0f; }
 
     /// The vertices away from rest, where they are, and which ring of the touched vertex each
     /// belongs to (kRelaxingRing when it is returning to rest), at most `capacity` of them; returns

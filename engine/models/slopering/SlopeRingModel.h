@@ -120,7 +120,10 @@ protected:
         result.touched = touched;
         result.contact = mContact;
         result.penetrationMm = penetration;
-        if (mContact) result.forceN = -mHot.springStiffness * touchedDisplacementMm;
+        if (mContact) {
+            result.forceN = -mHot.springStiffness * touchedDisplacementMm;
+            result.normal = mMesh.restNormals()[touched];
+        }
         return result;
     }
 
