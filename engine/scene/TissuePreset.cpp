@@ -57,6 +57,31 @@ constexpr FieldDef<TissueProperties> kTissueFields[] = {
          .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Radius of the probe's flat tip, mm (0.01..1000)."),
          .decimals = 3,
          .step = 0.5}),
+    field<&TissueProperties::staticFriction>(
+        {.key = "staticFriction",
+         .jsonKey = "static_friction",
+         .lo = 0,
+         .hi = 5,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Static friction μs:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "static friction coefficient"),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "Coulomb friction between tool and tissue: the tool sticks until the sideways force exceeds μs times "
+             "the normal force (0..5; 0 and 0: no friction). Moist soft tissue: about 0.3."),
+         .decimals = 3,
+         .step = 0.05}),
+    field<&TissueProperties::dynamicFriction>(
+        {.key = "dynamicFriction",
+         .jsonKey = "dynamic_friction",
+         .lo = 0,
+         .hi = 5,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Sliding friction μd:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "sliding friction coefficient"),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "While the tool slides, the sideways force is μd times the normal force (0..5, at most μs)."),
+         .decimals = 3,
+         .step = 0.05}),
 };
 
 constexpr FieldDef<PresetStabilityMargin> kMarginFields[] = {
@@ -87,6 +112,12 @@ bool isMassSpring(ModelKind kind) {
 
 }  // namespace
 
+ToolContact toolContactOf(const TissueProperties& tissue) {
+    return {.toolRadiusMm = tissue.toolRadiusMm,
+            .staticFriction = tissue.staticFriction,
+            .dynamicFriction = tissue.dynamicFriction};
+}
+
 ModelDef presetModelDef(const TissuePreset& preset) {
     ModelDef def;
     def.kind = preset.modelKind;
@@ -96,6 +127,7 @@ ModelDef presetModelDef(const TissuePreset& preset) {
     def.radiusOfInfluence = preset.radiusOfInfluence;
     def.ffd = preset.ffd;
     def.volumetricRings.slopeRing = preset.params;
+    def.contact = toolContactOf(preset.tissue.value_or(TissueProperties{}));
     return def;
 }
 
@@ -125,6 +157,12 @@ FieldTable<PresetStabilityMargin> stabilityMarginFields() { return kMarginFields
 Problems validateTissueProperties(const TissueProperties& tissue) {
     Problems problems;
     checkFields(tissueFields(), tissue, problems);
+    if (!hasProblem(problems, "dynamicFriction") && !hasProblem(problems, "staticFriction") &&
+        tissue.dynamicFriction > tissue.staticFriction)
+        problems.push_back({.field = "dynamicFriction",
+                            .message = "sliding friction coefficient " + formatNumber(tissue.dynamicFriction) +
+                                       " is above the static one " + formatNumber(tissue.staticFriction) +
+                                       " (a sliding tool cannot hold more than a sticking one)"});
     return problems;
 }
 

@@ -27,13 +27,21 @@ inline constexpr int kTissuePresetVersion = 2;
 struct TissueProperties {
     double youngsModulusKPa = 4.34;
     double poissonRatio = 0.45;
-    double toolRadiusMm = 5.0;  ///< radius of the probe the slopes are calibrated for
+    double toolRadiusMm = 5.0;  ///< radius of the probe the slopes are calibrated for, and of the
+                                ///< sphere the contact of ours (coherent) touches with
+    /// Coulomb friction between tool and tissue (docs/method.md, "Friction"). Moist soft tissue:
+    /// static 0.3 (Shacham, Castel and Gefen 2010, fresh porcine muscle, about 0.3 above 4 N);
+    /// sliding below it (0.2, our choice: that source measures only the static value).
+    double staticFriction = 0.3;
+    double dynamicFriction = 0.2;
     std::string source;
 };
 /// The numeric fields of TissueProperties in file order (engine/params/FieldTable.h); "source" is
 /// a required string beside them.
 FieldTable<TissueProperties> tissueFields();
 Problems validateTissueProperties(const TissueProperties& tissue);
+/// The tool and friction a model touches with, from the tissue (ModelDef::contact).
+ToolContact toolContactOf(const TissueProperties& tissue);
 
 /// The stability margin of a preset's parameter set when it was saved (stabilityMargin in
 /// engine/stability/StabilityMargin.h: > 0 inside the derived bound, <= 0 beyond) and the loop
