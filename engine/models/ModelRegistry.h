@@ -15,7 +15,7 @@
 #include "engine/models/FfdParams.h"
 #include "engine/models/MassSpringParams.h"
 #include "engine/models/RadiusOfInfluenceParams.h"
-#include "engine/models/ToolContact.h"
+#include "engine/models/ContactDef.h"
 #include "engine/models/VolumetricRingsParams.h"
 
 #include <memory>
@@ -48,7 +48,7 @@ struct ModelDef {
     FfdParams ffd;
     VolumetricRingsParams volumetricRings;
     /// The tool and friction (used by the coherent slope-ring method; the others touch with a point).
-    ToolContact contact;
+    ContactDef contact;
 };
 
 /// A slope-ring method's definition with these parameters.

@@ -112,7 +112,7 @@ bool isMassSpring(ModelKind kind) {
 
 }  // namespace
 
-ToolContact toolContactOf(const TissueProperties& tissue) {
+ContactDef contactDefOf(const TissueProperties& tissue) {
     return {.toolRadiusMm = tissue.toolRadiusMm,
             .staticFriction = tissue.staticFriction,
             .dynamicFriction = tissue.dynamicFriction};
@@ -127,7 +127,7 @@ ModelDef presetModelDef(const TissuePreset& preset) {
     def.radiusOfInfluence = preset.radiusOfInfluence;
     def.ffd = preset.ffd;
     def.volumetricRings.slopeRing = preset.params;
-    def.contact = toolContactOf(preset.tissue.value_or(TissueProperties{}));
+    def.contact = contactDefOf(preset.tissue.value_or(TissueProperties{}));
     return def;
 }
 

@@ -41,7 +41,7 @@ struct TissueProperties {
 FieldTable<TissueProperties> tissueFields();
 Problems validateTissueProperties(const TissueProperties& tissue);
 /// The tool and friction a model touches with, from the tissue (ModelDef::contact).
-ToolContact toolContactOf(const TissueProperties& tissue);
+ContactDef contactDefOf(const TissueProperties& tissue);
 
 /// The stability margin of a preset's parameter set when it was saved (stabilityMargin in
 /// engine/stability/StabilityMargin.h: > 0 inside the derived bound, <= 0 beyond) and the loop

@@ -6,7 +6,7 @@
 
 namespace palpate {
 
-struct ToolContact {
+struct ContactDef {
     double toolRadiusMm = 0.0;     ///< 0: a point tool
     double staticFriction = 0.0;   ///< Coulomb: stick while |F_t| <= this * F_n
     double dynamicFriction = 0.0;  ///< while sliding, |F_t| = this * F_n (at most staticFriction)
