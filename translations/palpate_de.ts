@@ -3008,6 +3008,30 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
         <source>The profile is (1 − r/R)^degree (2..8); a preset file&apos;s own coefficients are kept until the degree changes.</source>
         <translation>Das Profil ist (1 − r/R)^Grad (2..8); die eigenen Koeffizienten einer Voreinstellungsdatei bleiben, bis sich der Grad ändert.</translation>
     </message>
+    <message>
+        <source>Static friction μs:</source>
+        <translation>Haftreibung μs:</translation>
+    </message>
+    <message>
+        <source>static friction coefficient</source>
+        <translation>Haftreibungskoeffizient</translation>
+    </message>
+    <message>
+        <source>Coulomb friction between tool and tissue: the tool sticks until the sideways force exceeds μs times the normal force (0..5; 0 and 0: no friction). Moist soft tissue: about 0.3.</source>
+        <translation>Coulomb-Reibung zwischen Werkzeug und Gewebe: Das Werkzeug haftet, bis die seitliche Kraft μs mal die Normalkraft übersteigt (0..5; 0 und 0: keine Reibung). Feuchtes Weichgewebe: etwa 0,3.</translation>
+    </message>
+    <message>
+        <source>Sliding friction μd:</source>
+        <translation>Gleitreibung μd:</translation>
+    </message>
+    <message>
+        <source>sliding friction coefficient</source>
+        <translation>Gleitreibungskoeffizient</translation>
+    </message>
+    <message>
+        <source>While the tool slides, the sideways force is μd times the normal force (0..5, at most μs).</source>
+        <translation>Während das Werkzeug gleitet, ist die seitliche Kraft μd mal die Normalkraft (0..5, höchstens μs).</translation>
+    </message>
 </context>
 <context>
     <name>palpate::Preferences</name>

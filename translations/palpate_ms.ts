@@ -3007,6 +3007,30 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
         <source>The profile is (1 − r/R)^degree (2..8); a preset file&apos;s own coefficients are kept until the degree changes.</source>
         <translation>Profil ialah (1 − r/R)^darjah (2..8); pekali fail praset sendiri dikekalkan sehingga darjah berubah.</translation>
     </message>
+    <message>
+        <source>Static friction μs:</source>
+        <translation>Geseran statik μs:</translation>
+    </message>
+    <message>
+        <source>static friction coefficient</source>
+        <translation>pekali geseran statik</translation>
+    </message>
+    <message>
+        <source>Coulomb friction between tool and tissue: the tool sticks until the sideways force exceeds μs times the normal force (0..5; 0 and 0: no friction). Moist soft tissue: about 0.3.</source>
+        <translation>Geseran Coulomb antara alat dan tisu: alat melekat sehingga daya sisi melebihi μs kali daya normal (0..5; 0 dan 0: tiada geseran). Tisu lembut lembap: kira-kira 0.3.</translation>
+    </message>
+    <message>
+        <source>Sliding friction μd:</source>
+        <translation>Geseran gelongsor μd:</translation>
+    </message>
+    <message>
+        <source>sliding friction coefficient</source>
+        <translation>pekali geseran gelongsor</translation>
+    </message>
+    <message>
+        <source>While the tool slides, the sideways force is μd times the normal force (0..5, at most μs).</source>
+        <translation>Semasa alat menggelongsor, daya sisi ialah μd kali daya normal (0..5, paling banyak μs).</translation>
+    </message>
 </context>
 <context>
     <name>palpate::Preferences</name>

@@ -643,19 +643,32 @@ TissuePreset ParameterPanel::presetFromFields() const {
     return preset;
 }
 
+TissueProperties ParameterPanel::tissueInFields(const std::string& source) const {
+    TissueProperties tissue;
+    tissue.source = source;
+    for (const PanelField& f : mFields)
+        if (f.section == "tissue")
+            if (const FieldDef<TissueProperties>* row = findField(tissueFields(), f.spec->key))
+                row->set(tissue, -1, qobject_cast<const QDoubleSpinBox*>(f.widget)->value());
+    return tissue;
+}
+
+bool ParameterPanel::tissueFieldsShow(const TissueProperties& tissue) const {
+    for (const PanelField& f : mFields)
+        if (f.section == "tissue") {
+            const auto* spin = qobject_cast<const QDoubleSpinBox*>(f.widget);
+            if (spin->value() != shownAs(spin, f.get(TissuePreset{.tissue = tissue}))) return false;
+        }
+    return true;
+}
+
 std::optional<TissueProperties> ParameterPanel::tissueFromFields() const {
-    const double youngs = mYoungsSpin->value(), poisson = mPoissonSpin->value(), radius = mToolRadiusSpin->value();
     if (mShown.tissue) {
-        const TissueProperties& t = *mShown.tissue;
-        if (youngs == shownAs(mYoungsSpin, t.youngsModulusKPa) && poisson == shownAs(mPoissonSpin, t.poissonRatio) &&
-            radius == shownAs(mToolRadiusSpin, t.toolRadiusMm))
-            return TissueProperties{youngs, poisson, radius, t.source};  // as shown: its source still holds
-    } else if (const TissueProperties defaults; youngs == shownAs(mYoungsSpin, defaults.youngsModulusKPa) &&
-                                                poisson == shownAs(mPoissonSpin, defaults.poissonRatio) &&
-                                                radius == shownAs(mToolRadiusSpin, defaults.toolRadiusMm)) {
+        if (tissueFieldsShow(*mShown.tissue)) return tissueInFields(mShown.tissue->source);  // its source still holds
+    } else if (tissueFieldsShow(TissueProperties{})) {
         return std::nullopt;  // the defaults of a preset without a tissue: nothing to record
     }
-    return TissueProperties{youngs, poisson, radius, tr("entered in the Parameters panel").toStdString()};
+    return tissueInFields(tr("entered in the Parameters panel").toStdString());
 }
 
 ToolContact ParameterPanel::toolContact() const {
@@ -676,7 +689,7 @@ ToolContact ParameterPanel::toolContactOf(const TissuePreset& preset) {
 }
 
 QStringList ParameterPanel::tissueProblems(QList<QWidget*>* invalid) const {
-    const TissueProperties tissue{mYoungsSpin->value(), mPoissonSpin->value(), mToolRadiusSpin->value(), {}};
+    const TissueProperties tissue = tissueInFields({});
     QStringList problems;
     for (const Problem& problem : validateTissueProperties(tissue))
         for (const PanelField* f : fieldsNamedBy("tissue", problem)) {
@@ -758,9 +771,8 @@ bool ParameterPanel::calibrateSlopes(QString* error) {
 
     TissuePreset after = before;
     after.params = calibration.params;
-    after.tissue = before.tissue.value_or(TissueProperties{
-        mYoungsSpin->value(), mPoissonSpin->value(), mToolRadiusSpin->value(),
-        tr("Parameters panel default (gelatin phantom, as palpate-cli)").toStdString()});
+    after.tissue = before.tissue.value_or(
+        tissueInFields(tr("Parameters panel default (gelatin phantom, as palpate-cli)").toStdString()));
     if (!samePreset(before, after))
         mUndoStack->push(new ParameterEditCommand(before, after, tr("Calibrate slopes"), ParameterEditCommand::kNoMerge,
                                                   /*alreadyShown=*/false,

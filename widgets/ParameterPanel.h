@@ -145,6 +145,10 @@ private:
     void validate();
     void markField(QWidget* field, const char* property, bool on);
     /// The tissue the fields hold, or the shown preset's when they still show it (its source kept).
+    /// The tissue the tissue fields show, with this source.
+    TissueProperties tissueInFields(const std::string& source) const;
+    /// True when the tissue fields show `tissue` (each as its spin box rounds it).
+    bool tissueFieldsShow(const TissueProperties& tissue) const;
     std::optional<TissueProperties> tissueFromFields() const;
     /// Problems of E, nu and the tool radius, each naming the field; the fields are added to `invalid`.
     QStringList tissueProblems(QList<QWidget*>* invalid = nullptr) const;

@@ -142,6 +142,8 @@ void RenderScene::setSnapshot(const SceneSnapshot& snapshot) {
     mContact = snapshot.contact && mTouched != kNoVertex;
     mHasTool = snapshot.hasTool;
     mToolTipMm = snapshot.toolTipMm;
+    mToolRadiusMm = snapshot.toolRadiusMm;
+    mProxyMm = snapshot.toolRadiusMm > 0.0f ? snapshot.proxyMm : snapshot.toolTipMm;
     mForceN = snapshot.forceN;
 }
 

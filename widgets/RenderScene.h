@@ -81,6 +81,9 @@ public:
     bool contact() const { return mContact; }
     bool hasTool() const { return mHasTool; }
     glm::vec3 toolTipMm() const { return mToolTipMm; }
+    /// The tool's radius (0: a point) and where it is held on the tissue (its proxy).
+    float toolRadiusMm() const { return mToolRadiusMm; }
+    glm::vec3 proxyMm() const { return mProxyMm; }
     glm::vec3 forceN() const { return mForceN; }
 
     glm::vec3 boundsMinMm() const { return mBoundsMinMm; }
@@ -117,6 +120,8 @@ private:
     bool mContact = false;
     bool mHasTool = false;
     glm::vec3 mToolTipMm{0.0f};
+    float mToolRadiusMm = 0.0f;
+    glm::vec3 mProxyMm{0.0f};
     glm::vec3 mForceN{0.0f};
 };
 

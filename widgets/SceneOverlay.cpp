@@ -135,11 +135,34 @@ void paintSceneOverlay(QPainter& painter, const RenderScene& scene, const OrbitC
         if (const auto p = camera.projectToPixel(scene.positionsMm()[scene.touched()], size))
             paintRing(painter, toPoint(*p), style::kTouchedMarkerRadiusPx, toQColor(style::kTouchedHighlight));
     }
-    const auto tip = camera.projectToPixel(scene.toolTipMm(), size);
+    // A tool with a size: its sphere's outline where the proxy holds it on the tissue, and a thin
+    // line to the device's position (inside the tissue while pressing) when they differ.
+    const auto proxy = camera.projectToPixel(scene.proxyMm(), size);
+    if (scene.toolRadiusMm() > 0.0f && proxy) {
+        // A direction across the line of sight: the sphere's rim is its radius along it.
+        const glm::vec3 view = glm::normalize(scene.proxyMm() - camera.eyeMm());
+        glm::vec3 sideways = glm::cross(view, glm::vec3(0.0f, 0.0f, 1.0f));
+        if (glm::length(sideways) < 1e-3f) sideways = glm::cross(view, glm::vec3(0.0f, 1.0f, 0.0f));
+        sideways = glm::normalize(sideways);
+        if (const auto rim = camera.projectToPixel(scene.proxyMm() + scene.toolRadiusMm() * sideways, size)) {
+            const double radiusPx = double(glm::length(*rim - *proxy));
+            const QColor colour = toQColor(style::kTool);
+            painter.setPen(QPen(colour, 2.0));
+            painter.setBrush(toQColor(style::kTool, 0.25f));
+            painter.drawEllipse(toPoint(*proxy), radiusPx, radiusPx);
+            if (const auto device = camera.projectToPixel(scene.toolTipMm(), size);
+                device && glm::length(*device - *proxy) > 1.0f) {
+                painter.setPen(QPen(colour, 1.0, Qt::DashLine));
+                painter.drawLine(toPoint(*proxy), toPoint(*device));
+            }
+        }
+    }
+    const auto tip = scene.toolRadiusMm() > 0.0f ? proxy : camera.projectToPixel(scene.toolTipMm(), size);
     const float forceN = glm::length(scene.forceN());
     if (tip && forceN > 1e-4f) {
         const float lengthMm = std::min(forceN * style::kArrowDiagonalsPerN, style::kArrowMaxDiagonals) * scene.diagonalMm();
-        const glm::vec3 endMm = scene.toolTipMm() + scene.forceN() / forceN * lengthMm;
+        const glm::vec3 startMm = scene.toolRadiusMm() > 0.0f ? scene.proxyMm() : scene.toolTipMm();
+        const glm::vec3 endMm = startMm + scene.forceN() / forceN * lengthMm;
         if (const auto end = camera.projectToPixel(endMm, size)) {
             const QColor colour = toQColor(style::kForceArrow);
             paintArrow(painter, toPoint(*tip), toPoint(*end), colour);

@@ -28,7 +28,9 @@ struct SceneSnapshot {
     VertexId touched = kNoVertex;        ///< vertex nearest to the tool tip
     bool contact = false;                ///< the tool tip is pressing the touched vertex
     bool hasTool = false;                ///< false until the first tick: then there is no tool to draw
-    glm::vec3 toolTipMm{0.0f};
+    glm::vec3 toolTipMm{0.0f};           ///< the device's position (a sphere tool's centre)
+    float toolRadiusMm = 0.0f;           ///< 0: a point tool
+    glm::vec3 proxyMm{0.0f};             ///< where the tool is held on the tissue (the tip otherwise)
     glm::vec3 forceN{0.0f};              ///< force rendered to the user (outward reaction)
 };
 

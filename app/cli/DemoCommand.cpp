@@ -9,6 +9,7 @@
 #include "engine/loop/HapticLoop.h"
 #include "engine/core/SceneTarget.h"
 #include "engine/models/ModelRegistry.h"
+#include "engine/scene/TissuePreset.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -36,8 +37,10 @@ int demoCommand(const std::vector<std::string>& words) {
         return 2;
     }
     // --model NAME: any registry model (docs/models.md); --method stays for the slope-ring methods.
+    // The default tissue's tool and friction (ours touches with its sphere).
     ModelDef model;
     model.slopeRingMethod = *method;
+    model.contact = presetModelDef(TissuePreset{}).contact;
     if (auto name = args.option("model")) {
         const auto def = modelDefForName(*name);
         if (!def) {
@@ -50,7 +53,9 @@ int demoCommand(const std::vector<std::string>& words) {
             std::cerr << "demo: --model " << *name << " and --method " << methodName(*method) << " disagree\n";
             return 2;
         }
+        const ContactDef contact = model.contact;
         model = *def;
+        model.contact = contact;
     }
     auto loaded = TissueMesh::load(meshPath);
     if (!loaded.mesh) {
@@ -72,7 +77,7 @@ int demoCommand(const std::vector<std::string>& words) {
     const double durationS = simulated->durationS();
     const std::size_t vertices = loaded.mesh->vertexCount(), triangles = loaded.mesh->triangleCount();
     const std::vector<glm::vec3> rest = loaded.mesh->restPositionsMm();
-    aimAtDefaultTarget(*device, *loaded.mesh);
+    aimAtDefaultTarget(*device, *loaded.mesh, float(modelToolRadiusMm(model)));
 
     HapticLoopDef def;
     std::unique_ptr<HapticScene> scene;

@@ -134,7 +134,7 @@ int runCommand(const std::vector<std::string>& words) {
         std::cerr << "run: " << error << "\n";
         return 1;
     }
-    aimAtDefaultTarget(*device, *loaded.mesh);
+    aimAtDefaultTarget(*device, *loaded.mesh, float(presetToolRadiusMm(preset)));
     RecordingHeader header =
         makeRecordingHeader(*loaded.mesh, meshPath, preset, uri, device->spec(), def.safety);
     header.note = args.option("note").value_or("");

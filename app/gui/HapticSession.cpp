@@ -211,7 +211,7 @@ void HapticSession::prepareDevice(HapticDevice& deviceRef, const TissueMesh& mes
     // showing palpation; a waypoint file plays once.
     if (auto* simulated = dynamic_cast<SimulatedDevice*>(device))
         if (simulated->trajectory() != SimTrajectory::Waypoints) simulated->setRepeat(1.0);
-    aimAtDefaultTarget(*device, mesh);  // scripted devices press the side of the mesh
+    aimAtDefaultTarget(*device, mesh, float(presetToolRadiusMm(mPreset)));  // scripts press the side of the mesh
     // The mouse tool starts off the surface (its default target, the origin, may lie inside the
     // tissue): no contact and zero force until the first touch, so the safety filter arms at once.
     if (auto* mouse = dynamic_cast<MouseDevice*>(device)) mouse->setTargetMm(awayPointMm(mesh, nullptr));

@@ -109,6 +109,9 @@ public:
     /// Touch mode (the viewport steers a mouse: device). True while the loop's device is one this
     /// session made for "mouse:" (until the next device swap, disconnect or restart).
     bool touchAvailable() const { return mMouse != nullptr; }
+    /// The radius of the tool the running preset's model touches with (0: a point; otherwise the
+    /// device's position is the sphere's centre).
+    double toolRadiusMm() const { return presetToolRadiusMm(mPreset); }
     /// Moves the mouse device's tool tip to `targetMm` (scene frame, mm). Ignored without a mouse
     /// device or for a non-finite target. Wait-free towards the haptic thread.
     void setTouchTarget(const glm::vec3& targetMm);

@@ -545,8 +545,10 @@ void MainWindow::touchVertex(VertexId v) {
     const auto& mesh = mSession->drawnMesh();
     if (!mSession->touchAvailable() || !mesh || v >= mesh->vertexCount()) return;
     mTouchVertex = v;
+    // The tool's lowest point `depth` below the surface: a sphere's centre is its radius above that.
     const float depthMm = float(touchDepthMm());
-    mSession->setTouchTarget(mesh->restPositionsMm()[v] - depthMm * mesh->restNormals()[v]);
+    const float radiusMm = float(mSession->toolRadiusMm());
+    mSession->setTouchTarget(mesh->restPositionsMm()[v] + (radiusMm - depthMm) * mesh->restNormals()[v]);
 }
 
 void MainWindow::releaseTouch() {

@@ -63,6 +63,8 @@ std::size_t SnapshotObserver::apply(const HapticSnapshot& snapshot) {
     mView.contact = snapshot.contact;
     mView.hasTool = snapshot.deviceState == DeviceState::Ready && snapshot.toolSampleSequence > 0;
     mView.toolTipMm = snapshot.toolTipMm;
+    mView.toolRadiusMm = snapshot.toolRadiusMm;
+    mView.proxyMm = snapshot.proxyMm;
     mView.forceN = snapshot.forceN;  // what the device was sent: what the user feels
     return written;
 }

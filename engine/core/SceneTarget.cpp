@@ -10,10 +10,11 @@ VertexId defaultTargetVertex(const TissueMesh& mesh) {
     return best;
 }
 
-void aimAtDefaultTarget(HapticDevice& device, const TissueMesh& mesh) {
+void aimAtDefaultTarget(HapticDevice& device, const TissueMesh& mesh, float toolRadiusMm) {
     if (mesh.vertexCount() == 0) return;
     const VertexId v = defaultTargetVertex(mesh);
-    device.setScene(mesh.restPositionsMm()[v], mesh.restNormals()[v], glm::vec3(0.0f, 1.0f, 0.0f));
+    const glm::vec3 normal = mesh.restNormals()[v];
+    device.setScene(mesh.restPositionsMm()[v] + toolRadiusMm * normal, normal, glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
 }  // namespace palpate

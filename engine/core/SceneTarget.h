@@ -10,7 +10,9 @@ namespace palpate {
 /// The vertex with the largest x (0 for an empty mesh).
 VertexId defaultTargetVertex(const TissueMesh& mesh);
 
-/// Aims a device that scripts its motion (HapticDevice::setScene) at defaultTargetVertex.
-void aimAtDefaultTarget(HapticDevice& device, const TissueMesh& mesh);
+/// Aims a device that scripts its motion (HapticDevice::setScene) at defaultTargetVertex. A tool
+/// with a size (radius > 0: the device's position is the sphere's centre) is aimed `toolRadiusMm`
+/// above the surface, so that a script pressing d mm below its target presses the sphere d deep.
+void aimAtDefaultTarget(HapticDevice& device, const TissueMesh& mesh, float toolRadiusMm = 0.0f);
 
 }  // namespace palpate

@@ -201,8 +201,9 @@ void HapticLoop::tick(double nowS, double lateUs) {
     // Divergence guard (docs/stability.md): a model that left its stable range (NaN,
     // energy growth, force flipping every tick, an inverted triangle at the tool) renders no force
     // this tick and goes back to rest; counted and published so the GUI can say what to change.
-    // Allocation-free; positionsMm() writes at most the active rings (the coherent slope-ring method).
-    const DivergenceVerdict verdict = mGuard.check(mScene->mesh(), mScene->model().positionsMm(), result);
+    // Allocation-free; it reads only the touched fan and a few sampled vertices (copyPositionsMm),
+    // so a model that writes its positions when read (the coherent method) is not made to write them.
+    const DivergenceVerdict verdict = mGuard.check(mScene->mesh(), mScene->model(), result);
     if (verdict) {
         result.forceN = glm::vec3(0.0f);
         result.contact = false;
@@ -256,6 +257,8 @@ void HapticLoop::publish(const TickResult& result, const glm::vec3& forceOutN) {
     s.safetyPhase = mSafety.phase();
     s.safetyFlags = mSafety.lastFlags();
     s.toolTipMm = mLastSample.positionMm;
+    s.toolRadiusMm = mScene->model().toolRadiusMm();
+    s.proxyMm = result.contact && s.toolRadiusMm > 0.0f ? result.proxyMm : mLastSample.positionMm;
     s.toolSampleTimeS = mLastSample.timeS;
     s.toolSampleSequence = mLastSample.sequence;
     s.commandedForceN = result.forceN;
@@ -283,7 +286,8 @@ void HapticLoop::applyCommands() {
                 // real time are the slope-ring methods and volumetric rings, both made of them).
                 if (mScene->model().applyModelParams(c.model) && mRecorder)
                     if (const SlopeRingParams* params = slopeRingParamsOf(c.model))
-                        mRecorder->onCommand({mCounters.ticks + 1, RecordedCommand::Kind::Params, *params, 0, nullptr});
+                        mRecorder->onCommand(
+                            {mCounters.ticks + 1, RecordedCommand::Kind::Params, *params, 0, nullptr, c.model.contact});
                 break;
             case Command::Kind::Scene:
                 retire(mScene.release(), nullptr);

@@ -46,6 +46,10 @@ struct HapticSnapshot {
     SafetyPhase safetyPhase = SafetyPhase::HoldOff;
     std::uint32_t safetyFlags = 0;
     glm::vec3 toolTipMm{0.0f};
+    /// The tool's size and where it is held on the tissue (TickResult::proxyMm): a sphere of
+    /// this radius centred there while in contact; 0 for a point tool.
+    float toolRadiusMm = 0.0f;
+    glm::vec3 proxyMm{0.0f};
     double toolSampleTimeS = 0.0;     ///< the device sample's time stamp
     std::uint64_t toolSampleSequence = 0;
     glm::vec3 commandedForceN{0.0f};  ///< what the model asked for

@@ -5,6 +5,7 @@
 // logging or exception.
 
 #include "device/HapticDevice.h"
+#include "engine/models/ContactDef.h"
 #include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/core/TissueMesh.h"
 
@@ -41,6 +42,7 @@ struct RecordedCommand {
     SlopeRingParams params;         ///< Params: the whole set applied
     std::uint64_t sceneId = 0;      ///< Scene: HapticScene::id() of the scene switched in
     const void* device = nullptr;   ///< Device: identity of the device switched in (not dereferenced)
+    ContactDef contact;             ///< Params: the tool and friction applied with them
 };
 
 /// Receives ticks and applied commands from HapticLoop (see HapticLoop::setRecorder).

@@ -37,6 +37,14 @@ public:
     virtual TickResult step(const glm::vec3& toolTipMm, double dtS) = 0;
     /// Current vertex positions, in the mesh's vertex order.
     virtual std::span<const glm::vec3> positionsMm() const = 0;
+    /// The current positions of the vertices `ids` into `out`, without writing any model state:
+    /// what the haptic loop's guard reads each tick (a few vertices), so that a model whose
+    /// positions are written when read (the coherent slope-ring method) keeps that saving.
+    /// Real-time safe.
+    virtual void copyPositionsMm(std::span<const VertexId> ids, glm::vec3* out) const {
+        const std::span<const glm::vec3> all = positionsMm();
+        for (std::size_t k = 0; k < ids.size(); ++k) out[k] = all[ids[k]];
+    }
     /// Back to the rest shape, no contact.
     virtual void reset() = 0;
     virtual std::string name() const = 0;

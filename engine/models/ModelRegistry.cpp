@@ -76,9 +76,20 @@ std::string modelName(const ModelDef& def) {
     return "unknown";
 }
 
+double modelToolRadiusMm(const ModelDef& def) {
+    return def.kind == ModelKind::SlopeRing && def.slopeRingMethod == SlopeRingMethod::Coherent
+               ? def.contact.toolRadiusMm
+               : 0.0;
+}
+
 Problems validateModelDef(const ModelDef& def) {
     switch (def.kind) {
-        case ModelKind::SlopeRing: return validateSlopeRingParams(def.slopeRing);
+        case ModelKind::SlopeRing: {
+            Problems problems = validateSlopeRingParams(def.slopeRing);
+            const Problems contact = validateContactDef(def.contact);
+            problems.insert(problems.end(), contact.begin(), contact.end());
+            return problems;
+        }
         case ModelKind::MassSpringSymplectic:
         case ModelKind::MassSpringRk4:
         case ModelKind::MassSpringImplicit:
@@ -115,7 +126,11 @@ std::unique_ptr<DeformationModel> makeModel(const ModelDef& def, const TissueMes
                                             const TetMesh& tets) {
     throwIfInvalid(def);
     switch (def.kind) {
-        case ModelKind::SlopeRing: return makeSlopeRing(mesh, octree, def.slopeRing, def.slopeRingMethod);
+        case ModelKind::SlopeRing: {
+            auto model = makeSlopeRing(mesh, octree, def.slopeRing, def.slopeRingMethod);
+            model->setContact(def.contact);
+            return model;
+        }
         case ModelKind::MassSpringSymplectic:
             return std::make_unique<MassSpringModel>(mesh, octree, def.massSpring,
                                                      MassSpringIntegrator::SymplecticEuler, MassSpringScope::Whole);

@@ -60,6 +60,9 @@ std::vector<std::string> modelNames();
 std::optional<ModelDef> modelDefForName(std::string_view name);
 /// The stable name of a definition (the model's name() says the same).
 std::string modelName(const ModelDef& def);
+/// The radius of the tool the definition's model touches with (DeformationModel::toolRadiusMm):
+/// def.contact's for ours (the coherent slope-ring method), 0 (a point) for the others.
+double modelToolRadiusMm(const ModelDef& def);
 /// Every problem of the kind's parameters, each naming the field; empty when valid.
 Problems validateModelDef(const ModelDef& def);
 /// The slope-ring parameters the kind uses (the slope-ring methods' and volumetric rings'), or

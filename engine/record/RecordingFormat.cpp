@@ -93,6 +93,23 @@ SlopeRingParams decodeParams(ByteReader& r, const std::string& field) {
     return p;
 }
 
+void encodeContact(ByteWriter& w, const ContactDef& c) {
+    w.f64(c.toolRadiusMm);
+    w.f64(c.staticFriction);
+    w.f64(c.dynamicFriction);
+}
+
+std::optional<ContactDef> decodeContact(ByteReader& r, const std::string& field) {
+    if (r.remaining() < 3 * sizeof(double)) return std::nullopt;
+    ContactDef c;
+    c.toolRadiusMm = r.f64(field + ".toolRadiusMm");
+    c.staticFriction = r.f64(field + ".staticFriction");
+    c.dynamicFriction = r.f64(field + ".dynamicFriction");
+    const Problems problems = validateContactDef(c);
+    if (r.ok() && !problems.empty()) r.fail(field + "." + problems.front().field, problems.front().message);
+    return c;
+}
+
 void encodeScene(ByteWriter& w, const RecordedScene& s) {
     w.str(s.meshPath);
     w.u64(s.meshHash);
@@ -163,6 +180,7 @@ void encodeRecordingHeader(const RecordingHeader& h, std::vector<std::uint8_t>& 
     b.f64(h.safety.maxSampleAgeS);
     b.u8(h.safety.rearmAfterStale ? 1 : 0);
     b.str(h.note);
+    encodeContact(b, h.scene.contact);  // format 3
 
     ByteWriter w(out);
     w.bytes(kRecordingMagic, sizeof(kRecordingMagic));
@@ -219,12 +237,14 @@ bool decodeRecordingHeader(const std::uint8_t* data, std::size_t size, Recording
     h.safety.maxSampleAgeS = r.f64("safety.maxSampleAgeS");
     h.safety.rearmAfterStale = r.u8("safety.rearmAfterStale") != 0;
     h.note = r.str("note", kMaxEventTextBytes);
+    // Format 3 appends the contact (older files end here: a point tool without friction).
+    if (const auto contact = decodeContact(r, "scene.contact")) h.scene.contact = *contact;
     // Bytes after the known fields are allowed: later minor revisions append fields.
     if (!r.ok()) {
         error = r.error();
         return false;
     }
-    h.formatVersion = version;  // 1 and 2 share every layout; 2 adds an event kind
+    h.formatVersion = version;  // 1 and 2 share every layout; 2 adds an event kind; 3 appends the contact
     header = std::move(h);
     headerBytes = kPreambleBytes + length + 4;
     return true;

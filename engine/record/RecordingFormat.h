@@ -13,6 +13,7 @@
 #include "device/SafetyFilter.h"
 #include "engine/core/Octree.h"
 #include "engine/models/slopering/SlopeRingMethod.h"
+#include "engine/models/ContactDef.h"
 #include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/record/ByteIo.h"
 
@@ -25,7 +26,7 @@ namespace palpate {
 
 inline constexpr char kRecordingMagic[7] = {'P', 'A', 'L', 'P', 'R', 'E', 'C'};
 /// 2: adds the Divergence event (kind 10). Version 1 files read unchanged (they have none).
-inline constexpr std::uint8_t kRecordingFormatVersion = 2;
+inline constexpr std::uint8_t kRecordingFormatVersion = 3;
 inline constexpr std::uint8_t kOldestRecordingFormatVersion = 1;
 inline constexpr std::uint8_t kChunkMagic[4] = {'P', 'C', 'H', 'K'};
 /// Magic (7) + version (1) + header length (4).
@@ -72,6 +73,7 @@ struct RecordedScene {
     std::uint32_t triangleCount = 0;
     SlopeRingMethod method = SlopeRingMethod::Coherent;
     SlopeRingParams params;      ///< binary, exact: what replay uses
+    ContactDef contact;          ///< (format 3) the tool and friction; older files: a point tool
     OctreeDef octree;
     std::string presetJson;      ///< the whole TissuePreset as JSON, for people and tools
 };
@@ -106,6 +108,10 @@ bool decodeRecordingHeader(const std::uint8_t* data, std::size_t size, Recording
 
 void encodeParams(ByteWriter& w, const SlopeRingParams& params);
 SlopeRingParams decodeParams(ByteReader& r, const std::string& field);
+/// (format 3) The tool and friction, appended after what older formats wrote: decodeContact reads
+/// them when the bytes are there (nullopt when not; a failed read names `field`).
+void encodeContact(ByteWriter& w, const ContactDef& contact);
+std::optional<ContactDef> decodeContact(ByteReader& r, const std::string& field);
 void encodeScene(ByteWriter& w, const RecordedScene& scene);
 RecordedScene decodeScene(ByteReader& r, const std::string& field);
 void encodeDevice(ByteWriter& w, const RecordedDevice& device);

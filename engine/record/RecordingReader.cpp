@@ -71,10 +71,16 @@ bool parseEvents(const std::uint8_t* cursor, const std::uint8_t* end, std::uint6
         ByteReader p(r.cursor(), std::size_t(length), std::string("event.") + eventKindName(EventKind(kind)) + ".");
         bool known = true;
         switch (kind) {
-            case std::uint8_t(EventKind::ParamsApplied): e.params = decodeParams(p, "params"); break;
+            case std::uint8_t(EventKind::ParamsApplied):
+                e.params = decodeParams(p, "params");
+                e.contact = decodeContact(p, "contact");
+                break;
             case std::uint8_t(EventKind::SceneChanged):
                 e.sceneId = p.u64("sceneId");
-                if (p.u8("described") != 0) e.scene = decodeScene(p, "scene");
+                if (p.u8("described") != 0) {
+                    e.scene = decodeScene(p, "scene");
+                    if (const auto contact = decodeContact(p, "scene.contact")) e.scene->contact = *contact;
+                }
                 break;
             case std::uint8_t(EventKind::DeviceChanged):
                 if (p.u8("described") != 0) e.device = decodeDevice(p, "device");

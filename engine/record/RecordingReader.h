@@ -51,6 +51,7 @@ struct RecordingEvent {
     EventKind kind = EventKind::Mark;
     std::string text;             ///< Mark, Exercise: the text; otherwise a short description
     SlopeRingParams params;       ///< ParamsApplied
+    std::optional<ContactDef> contact;  ///< ParamsApplied (format 3): the tool and friction with them
     std::uint64_t sceneId = 0;    ///< SceneChanged
     std::optional<RecordedScene> scene;    ///< SceneChanged, when the recorder was told
     std::optional<RecordedDevice> device;  ///< DeviceChanged, when the recorder was told

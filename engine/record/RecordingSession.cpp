@@ -15,6 +15,7 @@ RecordedScene describeScene(const TissueMesh& mesh, const std::string& meshPath,
     s.triangleCount = std::uint32_t(mesh.triangleCount());
     s.method = preset.method;
     s.params = preset.params;
+    s.contact = presetModelDef(preset).contact;
     s.octree = preset.octree;
     s.presetJson = tissuePresetToJson(preset);
     return s;

@@ -348,13 +348,17 @@ void RecordingWriter::appendEventsUpTo(std::uint64_t lastTick, std::uint64_t fir
         switch (c.kind) {
             case RecordedCommand::Kind::Params:
                 encodeParams(w, c.params);
+                encodeContact(w, c.contact);
                 addEvent(EventKind::ParamsApplied, c.tick, firstTick, mScratch.data(), mScratch.size());
                 break;
             case RecordedCommand::Kind::Scene: {
                 w.u64(c.sceneId);
                 const auto found = mSceneDescriptions.find(c.sceneId);
                 w.u8(found != mSceneDescriptions.end() ? 1 : 0);
-                if (found != mSceneDescriptions.end()) encodeScene(w, found->second);
+                if (found != mSceneDescriptions.end()) {
+                    encodeScene(w, found->second);
+                    encodeContact(w, found->second.contact);
+                }
                 addEvent(EventKind::SceneChanged, c.tick, firstTick, mScratch.data(), mScratch.size());
                 break;
             }

@@ -151,6 +151,7 @@ std::unique_ptr<HapticScene> RecordingPlayer::buildScene(const RecordedScene& sc
         } else {
             model = slopeRingModelDef(scene.params, scene.method);
         }
+        model.contact = scene.contact;
         built = HapticScene::create(found->second, model, scene.octree);
         mModel = model;
     } catch (const std::exception& e) {
@@ -242,6 +243,7 @@ bool RecordingPlayer::applyEvents(std::uint64_t tick) {
             case EventKind::ParamsApplied:
                 if (SlopeRingParams* params = slopeRingParamsOf(mModel)) {
                     *params = e.params;
+                    if (e.contact) mModel.contact = *e.contact;
                     error = mLoop->setModelParams(mModel);
                 } else {
                     error = "parameters applied to a model that takes no slope-ring parameters";

@@ -118,6 +118,8 @@ ContactDef contactDefOf(const TissueProperties& tissue) {
             .dynamicFriction = tissue.dynamicFriction};
 }
 
+double presetToolRadiusMm(const TissuePreset& preset) { return modelToolRadiusMm(presetModelDef(preset)); }
+
 ModelDef presetModelDef(const TissuePreset& preset) {
     ModelDef def;
     def.kind = preset.modelKind;

@@ -84,6 +84,9 @@ struct PresetLoadResult {
 
 /// The registry definition of the preset's model (method and slope-ring parameters included).
 ModelDef presetModelDef(const TissuePreset& preset);
+/// The radius of the tool the preset's model touches with (DeformationModel::toolRadiusMm): the
+/// tissue's tool radius for ours (coherent), 0 (a point) for the others.
+double presetToolRadiusMm(const TissuePreset& preset);
 /// The preset's model name (modelNames()'s spelling).
 std::string presetModelName(const TissuePreset& preset);
 /// Sets the preset's model and that model's parameters from `def` (the other models' are kept).

@@ -23,27 +23,76 @@ namespace {
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace
 
-bool DivergenceGuard::fanInverted(const TissueMesh& mesh, std::span<const glm::vec3> positions, VertexId v) {
-    if (v >= mesh.vertexCount() || positions.size() != mesh.vertexCount()) return false;
+// The fan's inversion test over any source of current positions (positionOf(v)).
+template <typename PositionOf>
+bool fanInvertedWith(const TissueMesh& mesh, const PositionOf& positionOf, VertexId v) {
+    if (v >= mesh.vertexCount()) return false;
     const auto& start = mesh.neighbourStart();
     const auto& nb = mesh.neighbours();
     const auto& rest = mesh.restPositionsMm();
     const auto adjacent = [&](VertexId a, VertexId b) {
         return std::binary_search(nb.begin() + start[a], nb.begin() + start[a + 1], b);  // sorted per vertex
     };
+    const glm::vec3 pv = positionOf(v);
     for (std::uint32_t i = start[v]; i < start[v + 1]; ++i)
         for (std::uint32_t k = i + 1; k < start[v + 1]; ++k) {
             const VertexId a = nb[i], b = nb[k];
             if (!adjacent(a, b)) continue;  // (v, a, b) is a triangle of v's fan
             const glm::vec3 restNormal = glm::cross(rest[a] - rest[v], rest[b] - rest[v]);
-            const glm::vec3 nowNormal = glm::cross(positions[a] - positions[v], positions[b] - positions[v]);
+            const glm::vec3 nowNormal = glm::cross(positionOf(a) - pv, positionOf(b) - pv);
             if (glm::dot(restNormal, nowNormal) <= 0.0f) return true;
         }
     return false;
 }
 
+bool DivergenceGuard::fanInverted(const TissueMesh& mesh, std::span<const glm::vec3> positions, VertexId v) {
+    if (positions.size() != mesh.vertexCount()) return false;
+    return fanInvertedWith(mesh, [&](VertexId u) { return positions[u]; }, v);
+}
+
 DivergenceVerdict DivergenceGuard::check(const TissueMesh& mesh, std::span<const glm::vec3> positions,
                                          const TickResult& result) {
+    const std::size_t n = std::min(positions.size(), mesh.vertexCount());
+    const auto sample = [&](std::size_t first, int count, glm::vec3* out) {
+        for (int k = 0; k < count; ++k) out[k] = positions[(first + std::size_t(k)) % n];
+    };
+    const bool whole = positions.size() == mesh.vertexCount();
+    return checkWith(mesh, n, sample, whole, [&](VertexId v) { return positions[v]; }, result);
+}
+
+DivergenceVerdict DivergenceGuard::check(const TissueMesh& mesh, const DeformationModel& model,
+                                         const TickResult& result) {
+    const std::size_t n = mesh.vertexCount();
+    const auto sample = [&](std::size_t first, int count, glm::vec3* out) {
+        VertexId ids[kMaxSampled];
+        for (int k = 0; k < count; ++k) ids[k] = VertexId((first + std::size_t(k)) % n);
+        model.copyPositionsMm({ids, std::size_t(count)}, out);
+    };
+    // The fan (the touched vertex and its neighbours) read once; a vertex outside it (none, for
+    // the tests below) is read alone.
+    if (result.touched != kNoVertex) mLastTouched = result.touched;
+    mFanCount = 0;
+    if (mLastTouched != kNoVertex && mLastTouched < n) {
+        const auto& start = mesh.neighbourStart();
+        const auto& nb = mesh.neighbours();
+        mFanIds[mFanCount++] = mLastTouched;
+        for (std::uint32_t i = start[mLastTouched]; i < start[mLastTouched + 1] && mFanCount < kMaxFan; ++i)
+            mFanIds[mFanCount++] = nb[i];
+        model.copyPositionsMm({mFanIds, std::size_t(mFanCount)}, mFanPositions);
+    }
+    const auto positionOf = [&](VertexId v) {
+        for (int i = 0; i < mFanCount; ++i)
+            if (mFanIds[i] == v) return mFanPositions[i];
+        glm::vec3 p;
+        model.copyPositionsMm({&v, 1}, &p);
+        return p;
+    };
+    return checkWith(mesh, n, sample, true, positionOf, result);
+}
+
+template <typename Sample, typename PositionOf>
+DivergenceVerdict DivergenceGuard::checkWith(const TissueMesh& mesh, std::size_t n, const Sample& sample,
+                                             bool whole, const PositionOf& positionOf, const TickResult& result) {
     const glm::vec3 force = result.forceN;
     if (!finite(force)) return {DivergenceKind::NonFinite};
 
@@ -51,21 +100,26 @@ DivergenceVerdict DivergenceGuard::check(const TissueMesh& mesh, std::span<const
     double displacement2 = 0.0;
     // Round robin over the mesh: a non-finite vertex anywhere (a mode blowing up far from the tool
     // stops the search from finding any vertex, so the fan alone would never see it).
-    const std::size_t n = std::min(positions.size(), mesh.vertexCount());
-    for (int k = 0; k < mDef.sampledVerticesPerTick && n > 0; ++k) {
+    if (n > 0) {
+        const int count = std::min(mDef.sampledVerticesPerTick, kMaxSampled);
+        glm::vec3 sampled[kMaxSampled];
         if (mSampleCursor >= n) mSampleCursor = 0;
-        if (!finite(positions[mSampleCursor++])) return {DivergenceKind::NonFinite};
+        sample(mSampleCursor, count, sampled);
+        mSampleCursor = (mSampleCursor + std::size_t(count)) % n;
+        for (int k = 0; k < count; ++k)
+            if (!finite(sampled[k])) return {DivergenceKind::NonFinite};
     }
     if (result.touched != kNoVertex) mLastTouched = result.touched;
     const VertexId t = mLastTouched;
-    const bool fan = t != kNoVertex && t < mesh.vertexCount() && positions.size() == mesh.vertexCount();
+    const bool fan = t != kNoVertex && t < mesh.vertexCount() && whole;
     if (fan) {
         const auto& start = mesh.neighbourStart();
         const auto& nb = mesh.neighbours();
         const auto& rest = mesh.restPositionsMm();
         auto visit = [&](VertexId v) {
-            if (!finite(positions[v])) return false;
-            const glm::vec3 u = positions[v] - rest[v];
+            const glm::vec3 p = positionOf(v);
+            if (!finite(p)) return false;
+            const glm::vec3 u = p - rest[v];
             displacement2 = std::max(displacement2, double(glm::dot(u, u)));
             return true;
         };
@@ -73,7 +127,6 @@ DivergenceVerdict DivergenceGuard::check(const TissueMesh& mesh, std::span<const
         for (std::uint32_t i = start[t]; i < start[t + 1]; ++i)
             if (!visit(nb[i])) return {DivergenceKind::NonFinite};
     }
-
     // Energy growth: the peak activity of each window against the previous window's.
     const double activity = double(glm::dot(force, force)) + displacement2;
     mWindowPeak = std::max(mWindowPeak, activity);
@@ -100,7 +153,7 @@ DivergenceVerdict DivergenceGuard::check(const TissueMesh& mesh, std::span<const
     if (mAlternatingTicks >= mDef.oscillationTicks && glm::length(delta) >= 0.5f * mFirstSwing)
         return {DivergenceKind::Oscillation};
 
-    if (mDef.checkInversion && fan && fanInverted(mesh, positions, t)) return {DivergenceKind::Inversion};
+    if (mDef.checkInversion && fan && fanInvertedWith(mesh, positionOf, t)) return {DivergenceKind::Inversion};
     return {};
 }
 

@@ -52,6 +52,9 @@ public:
     /// One tick: `result` from the model's step, `positionsMm` its current positions (only the
     /// touched vertex's fan is read). Real-time safe.
     DivergenceVerdict check(const TissueMesh& mesh, std::span<const glm::vec3> positionsMm, const TickResult& result);
+    /// The same, reading only the few positions it needs from the model (copyPositionsMm): what
+    /// the haptic loop calls, so that a model writing its positions when read keeps that saving.
+    DivergenceVerdict check(const TissueMesh& mesh, const DeformationModel& model, const TickResult& result);
     /// Forgets the history (after the model was reset, or a scene change).
     void reset();
 
@@ -63,7 +66,16 @@ public:
     const DivergenceGuardDef& def() const { return mDef; }
 
 private:
+    static constexpr int kMaxSampled = 256;  // sampledVerticesPerTick is capped at this
+    static constexpr int kMaxFan = 64;       // fan vertices read at once (more are read one by one)
+    template <typename Sample, typename PositionOf>
+    DivergenceVerdict checkWith(const TissueMesh& mesh, std::size_t n, const Sample& sample, bool whole,
+                                const PositionOf& positionOf, const TickResult& result);
+
     DivergenceGuardDef mDef;
+    VertexId mFanIds[kMaxFan] = {};
+    glm::vec3 mFanPositions[kMaxFan] = {};
+    int mFanCount = 0;
     int mWindowTick = 0;
     double mWindowPeak = 0.0;
     double mPreviousPeak = -1.0;  // < 0: no completed window yet

@@ -75,6 +75,12 @@ TEST(FieldTables, EveryValidatorEnforcesItsTablesRanges) {
 }
 
 TEST(FieldTables, CrossFieldRulesNameTheirFields) {
+    TissueProperties tissue;
+    tissue.dynamicFriction = tissue.staticFriction + 0.1;  // slides harder than it sticks
+    EXPECT_TRUE(hasProblem(validateTissueProperties(tissue), "dynamicFriction"));
+    tissue.dynamicFriction = tissue.staticFriction;
+    EXPECT_TRUE(validateTissueProperties(tissue).empty());
+
     SlopeRingParams p;
     p.slopeMagnitudeMmPerN[1] = p.slopeMagnitudeMmPerN[0];  // not decreasing
     const Problems problems = validateSlopeRingParams(p);
@@ -134,6 +140,9 @@ TEST(FieldTables, EveryFieldRoundTripsThroughAPresetFile) {
         preset.tissue = TissueProperties{};
         preset.tissue->source = "a test";
         f.set(*preset.tissue, -1, otherValidValue(f));
+        // The sliding friction may not exceed the static one: lower it instead.
+        if (!validateTissueProperties(*preset.tissue).empty()) f.set(*preset.tissue, -1, 0.5 * f.defaultValue(0));
+        ASSERT_TRUE(validateTissueProperties(*preset.tissue).empty()) << f.spec.key;
         roundTrip(preset, f.spec.key);
     }
     TissuePreset slopes;

@@ -22,7 +22,7 @@ std::string validText() {
     p.octree.leafCapacity = 32;
     p.hapticRateHz = 2000;
     p.method = SlopeRingMethod::Proposed;
-    p.tissue = TissueProperties{5.0, 0.45, 4.0, "a textbook"};
+    p.tissue = TissueProperties{.youngsModulusKPa = 5.0, .poissonRatio = 0.45, .toolRadiusMm = 4.0, .staticFriction = 0.4, .dynamicFriction = 0.25, .source = "a textbook"};
     return tissuePresetToJson(p);
 }
 

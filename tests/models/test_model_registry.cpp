@@ -122,6 +122,8 @@ TEST(ModelRegistry, TouchedVertexIsExactOnEveryTick) {
     const auto path = makePressAndStrokePath(mesh);
     for (const std::string& name : modelNames()) {
         if (name == "hybrid" || name == "proposed") continue;  // the paper's searchNode, inexact by design
+        // Ours reports its contact triangle's corner, not the nearest vertex (test_continuous_contact).
+        if (name == "coherent") continue;
         auto model = makeModel(*modelDefForName(name), mesh, octree);
         int wrong = 0, contacts = 0;
         std::vector<glm::vec3> positions;
@@ -145,8 +147,13 @@ TEST(ModelRegistry, NoAllocationInTheTick) {
     std::vector<VertexId> ids(mesh.vertexCount());
     std::vector<glm::vec3> positions(mesh.vertexCount());
     std::vector<std::uint8_t> rings(mesh.vertexCount());
-    for (const std::string& name : modelNames()) {
-        const ModelDef def = *modelDefForName(name);
+    std::vector<ModelDef> defs;
+    for (const std::string& name : modelNames()) defs.push_back(*modelDefForName(name));
+    // Ours with the product's tool: a sphere, with friction.
+    defs.push_back(*modelDefForName("coherent"));
+    defs.back().contact = {.toolRadiusMm = 5.0, .staticFriction = 0.3, .dynamicFriction = 0.2};
+    for (const ModelDef& def : defs) {
+        const std::string name = modelName(def) + (def.contact.toolRadiusMm > 0.0 ? " (sphere, friction)" : "");
         auto model = makeModel(def, mesh, octree);
         for (int i = 0; i < 50; ++i) model->step(path[std::size_t(i)], 0.001);
         std::size_t displaced = 0;

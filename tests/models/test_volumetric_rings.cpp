@@ -3,6 +3,7 @@
 #include "engine/core/Octree.h"
 #include "engine/core/SceneTarget.h"
 #include "engine/models/slopering/CoherentSlopeRing.h"
+#include "engine/models/slopering/PaperSlopeRing.h"
 #include "engine/core/ToolPath.h"
 #include "engine/models/VolumetricFill.h"
 #include "engine/models/VolumetricRingsModel.h"
@@ -115,13 +116,15 @@ TEST(VolumetricRings, WithRingZeroOnlyItIsTheSurfaceModel) {
     VolumetricRingsParams p;
     p.slopeRing.ringCount = 0;
     VolumetricRingsModel volumetric(mesh, octree, tets, p);
-    CoherentSlopeRing surface(mesh, octree, p.slopeRing);
+    // The surface model with the same vertex contact (the exact paper method; ours blends a contact
+    // triangle's rings instead).
+    PaperSlopeRing surface(mesh, octree, p.slopeRing, SlopeRingMethod::Previous);
     for (const glm::vec3& tool : makePressAndStrokePath(mesh)) {
         const TickResult a = volumetric.step(tool, 0.001);
         const TickResult b = surface.step(tool, 0.001);
         ASSERT_EQ(a.touched, b.touched);
         ASSERT_EQ(a.contact, b.contact);
-        ASSERT_LT(glm::length(a.forceN - b.forceN), 1e-6f);
+        ASSERT_LT(glm::length(a.forceN - b.forceN), 1e-5f);  // float rounding of two formula orders
     }
 }
 

@@ -53,9 +53,9 @@ const std::string& smallSphereMeshPath() {
     return path;
 }
 
-std::unique_ptr<SimulatedDevice> aimedDevice(const TissueMesh& mesh, SimTrajectory trajectory) {
+std::unique_ptr<SimulatedDevice> aimedDevice(const TissueMesh& mesh, SimTrajectory trajectory, float toolRadiusMm) {
     auto device = std::make_unique<SimulatedDevice>(trajectory);
-    aimAtDefaultTarget(*device, mesh);
+    aimAtDefaultTarget(*device, mesh, toolRadiusMm);
     if (!device->open()) throw std::runtime_error("simulated device does not open");
     return device;
 }
@@ -66,7 +66,7 @@ RecordRig makeRecordRig(SimTrajectory trajectory, TissuePreset preset, const std
     rig.preset = preset;
     auto loaded = TissueMesh::load(rig.meshPath);
     if (!loaded.mesh) throw std::runtime_error(loaded.error());
-    auto device = aimedDevice(*loaded.mesh, trajectory);
+    auto device = aimedDevice(*loaded.mesh, trajectory, float(presetToolRadiusMm(preset)));
     rig.device = device.get();
     const std::string uri = std::string("sim:") + simTrajectoryName(trajectory);
     HapticLoopDef def;
@@ -74,7 +74,7 @@ RecordRig makeRecordRig(SimTrajectory trajectory, TissuePreset preset, const std
     def.trySchedFifo = false;
     rig.header = makeRecordingHeader(*loaded.mesh, rig.meshPath, preset, uri, device->spec(), def.safety);
     rig.loop = std::make_unique<HapticLoop>(
-        def, HapticScene::create(std::move(*loaded.mesh), slopeRingModelDef(preset.params, preset.method), preset.octree),
+        def, HapticScene::create(std::move(*loaded.mesh), preset),
         std::move(device));
     return rig;
 }

@@ -43,7 +43,10 @@ struct RecordRig {
 /// vertex, and the recording header describing it. No SCHED_FIFO (tests share the machine).
 RecordRig makeRecordRig(SimTrajectory trajectory, TissuePreset preset = {}, const std::string& meshPath = {});
 /// A simulated device aimed like the rig's (for device switches).
-std::unique_ptr<SimulatedDevice> aimedDevice(const TissueMesh& mesh, SimTrajectory trajectory);
+/// A simulated device aimed at the mesh's default target for a tool of this radius (the default
+/// preset's: ours touches with a sphere).
+std::unique_ptr<SimulatedDevice> aimedDevice(const TissueMesh& mesh, SimTrajectory trajectory,
+                                             float toolRadiusMm = float(presetToolRadiusMm(TissuePreset{})));
 
 std::vector<std::uint8_t> readBytes(const std::string& path);
 void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes);

@@ -56,7 +56,7 @@ DivergingRun recordDiverging(const std::string& path, int ticks) {
     // The set is beyond the derived bound at the loop's period.
     const double omega = massSpringOmegaGershgorinRadPerS(*loaded.mesh, def.massSpring);
     EXPECT_GT(1e-3, symplecticEulerMaxStepS(omega));
-    auto device = aimedDevice(*loaded.mesh, SimTrajectory::PressHold);
+    auto device = aimedDevice(*loaded.mesh, SimTrajectory::PressHold, float(presetToolRadiusMm(preset)));
     HapticLoopDef loopDef;
     loopDef.rateHz = preset.hapticRateHz;
     loopDef.trySchedFifo = false;

@@ -108,7 +108,7 @@ TEST(RecordFuzzCorpus, DISABLED_WriteCorpus) {
                 auto loaded = TissueMesh::load(smallSphereMeshPath());
                 ASSERT_TRUE(loaded.mesh);
                 const RecordedScene description = describeScene(*loaded.mesh, smallSphereMeshPath(), TissuePreset{});
-                ASSERT_EQ(session->swapScene(HapticScene::create(std::move(*loaded.mesh), slopeRingModelDef(SlopeRingParams{})), description), "");
+                ASSERT_EQ(session->swapScene(HapticScene::create(std::move(*loaded.mesh), TissuePreset{}), description), "");
             }
             rig.loop->stepOnce();
         }

@@ -79,7 +79,7 @@ TEST(Replay, SteppedRecordingReplaysBitExactly) {
             TissuePreset preset;
             preset.params.springStiffnessNPerMm = 2.0;
             const RecordedScene description = describeScene(*loaded.mesh, smallSphereMeshPath(), preset);
-            ASSERT_EQ(session.swapScene(HapticScene::create(std::move(*loaded.mesh), slopeRingModelDef(preset.params)), description), "");
+            ASSERT_EQ(session.swapScene(HapticScene::create(std::move(*loaded.mesh), preset), description), "");
         }
     });
     rig.loop->collectRetired();

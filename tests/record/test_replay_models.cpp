@@ -32,7 +32,7 @@ ModelRun recordModel(const std::string& modelName, const std::string& path, int 
     auto loaded = TissueMesh::load(sphereMeshPath());
     EXPECT_TRUE(loaded.mesh) << loaded.error();
     if (!loaded.mesh) return run;
-    auto device = aimedDevice(*loaded.mesh, SimTrajectory::Stroke);
+    auto device = aimedDevice(*loaded.mesh, SimTrajectory::Stroke, float(presetToolRadiusMm(preset)));
     HapticLoopDef loopDef;
     loopDef.rateHz = preset.hapticRateHz;
     loopDef.trySchedFifo = false;

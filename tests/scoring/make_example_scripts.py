@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes the scripted tool paths (sim:path waypoint files) that perform the example exercises in
 resources/exercises well (*.good.path) and badly (*.bad.path). The depth for a wanted force comes
-from the slope-ring model's static equilibrium (docs/scoring.md): a tip d mm below the touched
-vertex's rest position along its normal renders R = k_s |m1| k_c d / (1 + k_c c |m1|) N (c: the
+from the slope-ring model's static equilibrium (docs/scoring.md): a tool whose lowest point is d mm
+below the rest surface along its normal renders R = k_s |m1| k_c d / (1 + k_c c |m1|) N (c: the
 inclusion's factor, 1 outside). A "# mark-at T" line asks the runner to mark at loop time T
 (palpate-cli run --mark-at T; tests/scoring reads it).
 
@@ -68,8 +68,22 @@ class Script:
         open(path, "w").write("\n".join(lines) + "\n")
 
 
+# The radius of the tool the exercise's model touches with: ours (coherent, the default model)
+# touches with a sphere of the tissue's tool radius whose centre is the device's position, so every
+# point of a script is that radius further out along the normal than the sphere's lowest point.
+TOOL_RADIUS_MM = [0.0]
+
+
+def lift(p, n, h):
+    """The device position whose sphere's lowest point is h mm out along n from p (h < 0: pressed in)."""
+    return add(p, n, h + TOOL_RADIUS_MM[0])
+
+
 def preset(name):
-    s = json.load(open(os.path.join(RES, "presets", "tissues", name + ".json")))["slope_ring"]
+    j = json.load(open(os.path.join(RES, "presets", "tissues", name + ".json")))
+    s = j["slope_ring"]
+    ours = j.get("model", "coherent") in ("coherent", "palpate")
+    TOOL_RADIUS_MM[0] = j.get("tissue", {}).get("tool_radius_mm", 5.0) if ours else 0.0
     return s["slopes_mm_per_n"][0], s["contact_stiffness_n_per_mm"], s["spring_stiffness_n_per_mm"]
 
 
@@ -82,12 +96,12 @@ def press(s, P, N, v, depth, hold, offset=(0, 0, 0), high=15.0):
     """From `high` mm above vertex v: down to 5 mm above, press to `depth`, hold, back up."""
     p = add(P[v], offset)
     n = N[v]
-    s.at(1.5, add(p, n, high))
-    s.at(0.5, add(p, n, 5.0))
-    s.at(1.0, add(p, n, -depth))
-    s.at(hold, add(p, n, -depth))
-    s.at(0.5, add(p, n, 5.0))
-    s.at(0.5, add(p, n, high))
+    s.at(1.5, lift(p, n, high))
+    s.at(0.5, lift(p, n, 5.0))
+    s.at(1.0, lift(p, n, -depth))
+    s.at(hold, lift(p, n, -depth))
+    s.at(0.5, lift(p, n, 5.0))
+    s.at(0.5, lift(p, n, high))
 
 
 def exercise(name):
@@ -100,21 +114,21 @@ def press_targets():
     skin = preset("skin")
     t = [x["vertex"] for x in ex["press_targets"]["targets"]]
     good = Script("press_targets.json done well: each target pressed mid-window and held 1.6 s")
-    good.at(0.0, add(P[t[0]], N[t[0]], 15.0))
+    good.at(0.0, lift(P[t[0]], N[t[0]], 15.0))
     for v, force in zip(t, [1.5, 1.5, 2.0]):
         press(good, P, N, v, depth_for(force, skin), 1.6)
     good.write(os.path.join(RES, "exercises", "press_targets.good.path"))
 
     bad = Script("press_targets.json done badly: first target overshot, second missed by 8 mm, third pressed too hard")
-    bad.at(0.0, add(P[t[0]], N[t[0]], 15.0))
+    bad.at(0.0, lift(P[t[0]], N[t[0]], 15.0))
     v = t[0]
     n = N[v]
-    bad.at(1.5, add(P[v], n, 5.0))
-    bad.at(0.4, add(P[v], n, -depth_for(3.6, skin)))  # jab: excessive force and damage
-    bad.at(0.6, add(P[v], n, -depth_for(3.6, skin)))
-    bad.at(0.3, add(P[v], n, -depth_for(1.6, skin)))
-    bad.at(1.3, add(P[v], n, -depth_for(1.6, skin)))
-    bad.at(0.5, add(P[v], n, 15.0))
+    bad.at(1.5, lift(P[v], n, 5.0))
+    bad.at(0.4, lift(P[v], n, -depth_for(3.6, skin)))  # jab: excessive force and damage
+    bad.at(0.6, lift(P[v], n, -depth_for(3.6, skin)))
+    bad.at(0.3, lift(P[v], n, -depth_for(1.6, skin)))
+    bad.at(1.3, lift(P[v], n, -depth_for(1.6, skin)))
+    bad.at(0.5, lift(P[v], n, 15.0))
     side = norm(cross(N[t[1]], [1, 0, 0]))
     press(bad, P, N, t[1], depth_for(1.5, skin), 2.0, offset=[8.0 * x for x in side])
     press(bad, P, N, t[2], depth_for(2.9, skin), 2.5)
@@ -130,32 +144,32 @@ def find_lump():
     c = ex["find_lump"]["inclusion"]["stiffness_factor"]
     depth = 8.0  # soft tissue gives ~0.5 N there, the lump ~1.8 N
     good = Script("find_lump.json done well: gentle presses around, the stiff one marked")
-    good.at(0.0, add(P[1206], N[1206], 15.0))
+    good.at(0.0, lift(P[1206], N[1206], 15.0))
     for v in [1206, 1202, 1435]:
         press(good, P, N, v, depth, 1.0)
     # On the lump: press, feel it, mark while pressing.
     n = N[lump]
-    good.at(1.5, add(P[lump], n, 15.0))
-    good.at(0.5, add(P[lump], n, 5.0))
-    good.at(1.0, add(P[lump], n, -depth))
-    good.at(0.6, add(P[lump], n, -depth))
+    good.at(1.5, lift(P[lump], n, 15.0))
+    good.at(0.5, lift(P[lump], n, 5.0))
+    good.at(1.0, lift(P[lump], n, -depth))
+    good.at(0.6, lift(P[lump], n, -depth))
     good.mark()
-    good.at(0.4, add(P[lump], n, -depth))
-    good.at(0.5, add(P[lump], n, 15.0))
+    good.at(0.4, lift(P[lump], n, -depth))
+    good.at(0.5, lift(P[lump], n, 15.0))
     good.write(os.path.join(RES, "exercises", "find_lump.good.path"))
 
     bad = Script("find_lump.json done badly: hard presses, the lump crushed, the mark far from it")
-    bad.at(0.0, add(P[871], N[871], 15.0))
+    bad.at(0.0, lift(P[871], N[871], 15.0))
     press(bad, P, N, 871, 18.0, 1.5)
     press(bad, P, N, lump, depth_for(3.6, liver, c), 1.5)
     press(bad, P, N, 1206, 18.0, 1.5)
     n = N[871]
-    bad.at(1.5, add(P[871], n, 15.0))
-    bad.at(0.5, add(P[871], n, 5.0))
-    bad.at(1.0, add(P[871], n, -18.0))
-    bad.at(3.0, add(P[871], n, -18.0))
+    bad.at(1.5, lift(P[871], n, 15.0))
+    bad.at(0.5, lift(P[871], n, 5.0))
+    bad.at(1.0, lift(P[871], n, -18.0))
+    bad.at(3.0, lift(P[871], n, -18.0))
     bad.mark()
-    bad.at(0.5, add(P[871], n, 15.0))
+    bad.at(0.5, lift(P[871], n, 15.0))
     bad.write(os.path.join(RES, "exercises", "find_lump.bad.path"))
 
 
@@ -179,27 +193,27 @@ def trace():
                 n = norm(add(N[a], sub(N[b], N[a]), f))
                 side = norm(cross(n, sub(P[b], P[a])))
                 p = add(p, side, offset_mm)
-                s.at(length / steps / speed, add(p, n, -depth_at((i - 1 + f) / (len(path) - 1))))
+                s.at(length / steps / speed, lift(p, n, -depth_at((i - 1 + f) / (len(path) - 1))))
 
     good = Script("trace.json done well: the whole line at 1 N")
     d = depth_for(1.0, muscle)
     v0 = path[0]
-    good.at(0.0, add(P[v0], N[v0], 15.0))
-    good.at(1.0, add(P[v0], N[v0], 5.0))
-    good.at(1.0, add(P[v0], N[v0], -d))
-    good.at(0.3, add(P[v0], N[v0], -d))
+    good.at(0.0, lift(P[v0], N[v0], 15.0))
+    good.at(1.0, lift(P[v0], N[v0], 5.0))
+    good.at(1.0, lift(P[v0], N[v0], -d))
+    good.at(0.3, lift(P[v0], N[v0], -d))
     slide(good, lambda f: d)
     last = path[-1]
-    good.at(0.5, add(P[last], N[last], 5.0))
-    good.at(0.5, add(P[last], N[last], 15.0))
+    good.at(0.5, lift(P[last], N[last], 5.0))
+    good.at(0.5, lift(P[last], N[last], 15.0))
     good.write(os.path.join(RES, "exercises", "trace.good.path"))
 
     bad = Script("trace.json done badly: 6 mm beside the line, contact lost in the middle, too hard at the end")
     side0 = norm(cross(N[v0], sub(P[path[1]], P[v0])))
     start = add(P[v0], side0, 6.0)
-    bad.at(0.0, add(start, N[v0], 15.0))
-    bad.at(1.0, add(start, N[v0], 5.0))
-    bad.at(1.0, add(start, N[v0], -d))
+    bad.at(0.0, lift(start, N[v0], 15.0))
+    bad.at(1.0, lift(start, N[v0], 5.0))
+    bad.at(1.0, lift(start, N[v0], -d))
 
     def depth(f):
         if f < 0.3:
@@ -209,7 +223,7 @@ def trace():
         return depth_for(2.2, muscle)
 
     slide(bad, depth, offset_mm=6.0)
-    bad.at(0.5, add(P[last], N[last], 15.0))
+    bad.at(0.5, lift(P[last], N[last], 15.0))
     bad.write(os.path.join(RES, "exercises", "trace.bad.path"))
 
 

@@ -254,7 +254,7 @@ TEST(ChartsPanel, CsvSavesAndLoadsBackWithTheTissue) {
     ChartsPanel panel;
     QSignalSpy finished(&panel, &ChartsPanel::sweepFinished);
     TissuePreset applied;
-    applied.tissue = TissueProperties{5.4, 0.49, 5.0, "test"};
+    applied.tissue = TissueProperties{.youngsModulusKPa = 5.4, .poissonRatio = 0.49, .toolRadiusMm = 5.0, .source = "test"};
     panel.setCurrentConfiguration(applied, ParameterPanel::toolContactOf(applied), 1442);
     SweepDef def = tinySweep();
     def.contact = ParameterPanel::toolContactOf(applied);

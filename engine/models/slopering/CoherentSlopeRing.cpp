@@ -3,6 +3,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -22,24 +23,36 @@ inline float dist2(const glm::vec3& a, const glm::vec3& b) {
 
 CoherentSlopeRing::CoherentSlopeRing(const TissueMesh& mesh, const Octree& octree, const SlopeRingParams& params,
                                      bool eagerPositions)
-    : SlopeRingModel(mesh, octree, SlopeRingMethod::Coherent), mEagerPositions(eagerPositions) {
+    : SlopeRingModel(mesh, octree, SlopeRingMethod::Coherent), mEagerPositions(eagerPositions), mWalk(mesh) {
     const std::size_t n = mesh.vertexCount();
-    mActive = mRingFinder.makeRingSet();
-    mNextActive = mRingFinder.makeRingSet();
-    mActiveRestX.resize(n);
-    mActiveRestY.resize(n);
-    mActiveRestZ.resize(n);
-    mActiveScan.distance2Mm2.resize(n);
+    mCornerRings = mRingFinder.makeRingSet();
+    // Room for the old set and the new one side by side while the set changes (changeActiveSet).
+    mActive.resize(2 * n);
+    mActiveRestX.resize(2 * n);
+    mActiveRestY.resize(2 * n);
+    mActiveRestZ.resize(2 * n);
+    mActiveRing.resize(6 * n);
     mActiveStamp.assign(n, 0);
+    mActiveIndex.assign(n, 0);
     mRelaxing.resize(n);
     mRelaxingSlot.assign(n, kNoSlot);
-    // The full-search fallback lists active and relaxing vertices (disjoint: at most n) in the
-    // tick: reserved here so that it never allocates.
     mDisplacedScratch.reserve(n);
     setParams(params);
 }
 
-void CoherentSlopeRing::paramsReplaced(bool /*ringsChanged*/) { releaseActiveSet(); }
+void CoherentSlopeRing::paramsReplaced(bool /*ringsChanged*/) {
+    for (int r = 0; r < 16; ++r)
+        mSlopeByRing[r] = r <= mHot.ringCount ? -mHot.signedSlope[r] : 0.0f;
+    releaseActiveSet();
+    setContact(mContactDef);  // the friction's stiffness is the rendered one
+}
+
+void CoherentSlopeRing::setContact(const ContactDef& contact) {
+    mContactDef = contact;
+    mToolRadiusMm = float(contact.toolRadiusMm);
+    mFriction.setCoefficients(float(contact.staticFriction), float(contact.dynamicFriction),
+                              float(mParams.renderedStiffnessNPerMm()));
+}
 
 void CoherentSlopeRing::setCompliance(std::vector<float> factors) {
     if (!factors.empty()) {
@@ -57,34 +70,42 @@ void CoherentSlopeRing::setCompliance(std::vector<float> factors) {
 
 void CoherentSlopeRing::releaseActiveSet() {
     // New slopes or rings: the active set is rebuilt on the next tick; its vertices relax from
-    // where they are until then (those that are active again stop relaxing).
-    if (mActiveCentre == kNoVertex) return;
+    // where they are until then.
+    if (mActiveTriangle == kNoTriangle) return;
     writeActivePositions();
     if (mActiveContact)
-        for (std::size_t i = 0, n = mActive.size(); i < n; ++i) {
-            mVelocitiesMmPerS[mActive.vertices[i]] = glm::vec3(0.0f);
-            addRelaxing(mActive.vertices[i]);
+        for (std::uint32_t i = 0; i < mActiveCount; ++i) {
+            mVelocitiesMmPerS[mActive[i]] = glm::vec3(0.0f);
+            addRelaxing(mActive[i]);
         }
-    mActive.ringCount = 0;
-    mActive.ringStart[1] = 0;
+    mActiveCount = 0;
     ++mActiveGeneration;
-    mActiveScan.valid = false;
-    mActiveCentre = kNoVertex;
+    mActiveTriangle = kNoTriangle;
     mActiveContact = false;
+}
+
+glm::vec3 CoherentSlopeRing::activeDisplacementMm(std::uint32_t i) const {
+    const std::uint8_t* ring = &mActiveRing[3 * std::size_t(i)];
+    const float slope = mFieldWeight[0] * mSlopeByRing[ring[0]] + mFieldWeight[1] * mSlopeByRing[ring[1]] +
+                        mFieldWeight[2] * mSlopeByRing[ring[2]];
+    return (-slope * mFieldForceN) * mFieldNormal;
 }
 
 std::size_t CoherentSlopeRing::copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::uint8_t* rings,
                                              std::size_t capacity) const {
     DisplacedOutput out{ids, positionsMm, rings, capacity};
-    auto put = [&out](VertexId v, const glm::vec3& p, std::uint8_t ring) { out.put(v, p, ring); };
-    if (mActiveCentre != kNoVertex && mActiveContact)
-        for (int r = 0; r <= mActive.ringCount; ++r) {
-            const glm::vec3 displacement = ringDisplacementMm(r, mActiveForceN, mActiveNormal);
-            for (std::uint32_t i = mActive.ringStart[r], end = mActive.ringStart[r + 1]; i < end; ++i)
-                put(mActive.vertices[i], glm::vec3(mActiveRestX[i], mActiveRestY[i], mActiveRestZ[i]) + displacement,
-                    std::uint8_t(r));
+    if (mActiveTriangle != kNoTriangle && mActiveContact)
+        for (std::uint32_t i = 0; i < mActiveCount; ++i) {
+            // The ring of the touched corner (the largest weight), as the paper's methods report
+            // it; a vertex only in another corner's rings gets its nearest ring from any corner.
+            const std::uint8_t* ring = &mActiveRing[3 * std::size_t(i)];
+            const std::uint8_t nearest = ring[mFieldTouchedCorner] != kBeyondRings
+                                             ? ring[mFieldTouchedCorner]
+                                             : std::min({ring[0], ring[1], ring[2]});
+            out.put(mActive[i],
+                    glm::vec3(mActiveRestX[i], mActiveRestY[i], mActiveRestZ[i]) + activeDisplacementMm(i), nearest);
         }
-    for (std::size_t i = 0; i < mRelaxingCount; ++i) put(mRelaxing[i], mPositions[mRelaxing[i]], kRelaxingRing);
+    for (std::size_t i = 0; i < mRelaxingCount; ++i) out.put(mRelaxing[i], mPositions[mRelaxing[i]], kRelaxingRing);
     return out.count;
 }
 
@@ -92,14 +113,15 @@ void CoherentSlopeRing::reset() {
     resetShared();
     for (std::size_t i = 0; i < mRelaxingCount; ++i) mRelaxingSlot[mRelaxing[i]] = kNoSlot;
     mRelaxingCount = 0;
-    mActiveCentre = kNoVertex;
+    mActiveTriangle = kNoTriangle;
     mActiveContact = false;
     mActiveDirty = false;
-    mActiveForceN = 0.0f;
-    mActiveScan.valid = false;
-    mActive.ringCount = 0;
-    mActive.ringStart[1] = 0;  // empty: no vertex is active
+    mActiveCount = 0;
     ++mActiveGeneration;
+    mFieldForceN = 0.0f;
+    mContactPoint = {};
+    mContactNormal = glm::vec3(0.0f);
+    mFriction.release(glm::vec3(0.0f));
     mCache.clear();
 }
 
@@ -108,11 +130,24 @@ std::span<const glm::vec3> CoherentSlopeRing::positionsMm() const {
     return mPositions;
 }
 
+void CoherentSlopeRing::copyPositionsMm(std::span<const VertexId> ids, glm::vec3* out) const {
+    const bool active = mActiveTriangle != kNoTriangle && mActiveContact && mActiveDirty;
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+        const VertexId v = ids[k];
+        if (active && mActiveStamp[v] == mActiveGeneration) {
+            const std::uint32_t i = mActiveIndex[v];
+            out[k] = glm::vec3(mActiveRestX[i], mActiveRestY[i], mActiveRestZ[i]) + activeDisplacementMm(i);
+        } else {
+            out[k] = mPositions[v];
+        }
+    }
+}
+
 std::span<const VertexId> CoherentSlopeRing::displacedVertices() const {
     mDisplacedScratch.clear();
-    if (mActiveCentre != kNoVertex && mActiveContact)
-        mDisplacedScratch.insert(mDisplacedScratch.end(), mActive.vertices.begin(),
-                                 mActive.vertices.begin() + std::ptrdiff_t(mActive.size()));
+    if (mActiveTriangle != kNoTriangle && mActiveContact)
+        mDisplacedScratch.insert(mDisplacedScratch.end(), mActive.begin(),
+                                 mActive.begin() + std::ptrdiff_t(mActiveCount));
     mDisplacedScratch.insert(mDisplacedScratch.end(), mRelaxing.begin(),
                              mRelaxing.begin() + std::ptrdiff_t(mRelaxingCount));
     return mDisplacedScratch;
@@ -133,175 +168,203 @@ void CoherentSlopeRing::removeRelaxing(VertexId v) {
     mRelaxingSlot[v] = kNoSlot;
 }
 
-void CoherentSlopeRing::searchActive(const glm::vec3& tool, VertexId& best, float& best2) const {
-    const float slope1 = -mHot.signedSlope[0];
-    ActiveScan& scan = mActiveScan;
-    if (scan.valid) {
-        // Every active vertex moved relative to the tool by at most |dtool| + |m1| |dF|.
-        const float moved = glm::length(tool - scan.toolMm) + slope1 * std::fabs(mActiveForceN - scan.forceN);
-        const float margin = scan.secondMm - moved;
-        const std::uint32_t i = scan.best;
-        const glm::vec3 q = tool - ringDisplacementMm(scan.bestRing, mActiveForceN, mActiveNormal);
-        const float dx = mActiveRestX[i] - q.x, dy = mActiveRestY[i] - q.y, dz = mActiveRestZ[i] - q.z;
-        const float d2 = dx * dx + dy * dy + dz * dz;
-        if (margin > 0.0f && d2 < margin * margin) {
-            best = mActive.vertices[i];
-            best2 = d2;
-            return;
-        }
-    }
-    // Full scan: the active rings from their rest copy shifted by each ring's displacement
-    // (contiguous arrays, so the distance loop vectorises).
-    float* d2 = scan.distance2Mm2.data();
-    const float* rx = mActiveRestX.data();
-    const float* ry = mActiveRestY.data();
-    const float* rz = mActiveRestZ.data();
-    for (int r = 0; r <= mActive.ringCount; ++r) {
-        const glm::vec3 q = tool - ringDisplacementMm(r, mActiveForceN, mActiveNormal);
-        const std::uint32_t begin = mActive.ringStart[r], end = mActive.ringStart[r + 1];
-        for (std::uint32_t i = begin; i < end; ++i) {
-            const float dx = rx[i] - q.x, dy = ry[i] - q.y, dz = rz[i] - q.z;
-            d2[i] = dx * dx + dy * dy + dz * dz;
-        }
-    }
-    std::uint32_t bestIndex = 0;
-    float first = std::numeric_limits<float>::infinity(), second = first;
-    for (std::uint32_t i = 0, n = std::uint32_t(mActive.size()); i < n; ++i) {
-        const float v = d2[i];
-        if (v < first || (v == first && mActive.vertices[i] < mActive.vertices[bestIndex])) {
-            second = first;
-            first = v;
-            bestIndex = i;
-        } else if (v < second) {
-            second = v;
-        }
-    }
-    best = mActive.vertices[bestIndex];
-    best2 = first;
-    int ring = 0;
-    while (bestIndex >= mActive.ringStart[ring + 1]) ++ring;
-    scan.valid = true;
-    scan.toolMm = tool;
-    scan.forceN = mActiveForceN;
-    scan.best = bestIndex;
-    scan.bestRing = ring;
-    scan.secondMm = std::sqrt(second);
-}
-
-VertexId CoherentSlopeRing::search(const glm::vec3& tool) const {
-    // Exact nearest vertex over current positions, in three parts: (1) every displaced vertex:
-    // the active rings from their rest copy shifted by each ring's displacement (contiguous, so the
-    // compiler vectorises it), the relaxing ones directly; (2) the cached rest vertices that could
-    // still beat the best so far; (3) a proof that no other vertex at rest can: those are at least
-    // the cache's radius from its centre (docs/method.md).
+VertexId CoherentSlopeRing::nearestRestVertex(const glm::vec3& tool) const {
     VertexId best = kNoVertex;
     float best2 = std::numeric_limits<float>::infinity();
-    const bool activeInContact = mActiveCentre != kNoVertex && mActiveContact;
-    if (activeInContact) searchActive(tool, best, best2);
-    for (std::size_t i = 0; i < mRelaxingCount; ++i) {
-        const VertexId v = mRelaxing[i];
-        const float d2 = dist2(mPositions[v], tool);
-        if (d2 < best2 || (d2 == best2 && v < best)) {
-            best2 = d2;
-            best = v;
-        }
-    }
-    const auto displaced = [&](VertexId v) {
-        return (activeInContact && mActiveStamp[v] == mActiveGeneration) || mRelaxingSlot[v] != kNoSlot;
-    };
-    if (mCache.certifyNearest(mOctree, tool, best, best2, displaced)) return best;
-    writeActivePositions();
-    return mOctree.nearestExact(tool, mPositions, displacedVertices(), best);
+    const auto nothingDisplaced = [](VertexId) { return false; };
+    if (mCache.certifyNearest(mOctree, tool, best, best2, nothingDisplaced)) return best;
+    return mOctree.nearestExact(tool, mMesh.restPositionsMm(), {}, best);
 }
 
-void CoherentSlopeRing::warm(const glm::vec3& lastToolTipMm) const {
-    if (!std::isfinite(lastToolTipMm.x)) return;
-    volatile VertexId sink = search(lastToolTipMm);
+SurfaceHit CoherentSlopeRing::findContactPoint(const glm::vec3& tool, bool walkFromLast) const {
+    // In contact the proxy walks from where it stood (it moves over the surface, never through
+    // it); otherwise the surface is found afresh from the nearest rest vertex.
+    // The contact point is the shaded projection (SurfaceWalk::project), which moves smoothly
+    // with the tool where the closest point of the facets would rest on a vertex.
+    if (walkFromLast && mContactPoint.triangle != kNoTriangle) {
+        bool converged = false;
+        const SurfaceHit p = mWalk.project(tool, mContactPoint.triangle, &converged);
+        if (converged) return p;
+    }
+    const VertexId v = nearestRestVertex(tool);
+    if (v == kNoVertex) return {};
+    const SurfaceHit closest = mWalk.fromVertex(tool, v);
+    if (closest.triangle == kNoTriangle) return closest;
+    bool converged = false;
+    const SurfaceHit p = mWalk.project(tool, closest.triangle, &converged);
+    return converged ? p : closest;
+}
+
+float CoherentSlopeRing::blendedCompliance(TriangleId t, const float* w) const {
+    if (mCompliance.empty()) return 1.0f;
+    const auto& tri = mMesh.triangles()[t];
+    // As differences from corner 0, so that equal factors blend to exactly that factor (all ones:
+    // bit for bit the model without an inclusion).
+    const float c0 = mCompliance[tri[0]];
+    return c0 + w[1] * (mCompliance[tri[1]] - c0) + w[2] * (mCompliance[tri[2]] - c0);
+}
+
+void CoherentSlopeRing::warm(const glm::vec3& lastToolMm) const {
+    if (!isFinite(lastToolMm)) return;
+    volatile float sink = findContactPoint(lastToolMm, mContact).at.pointMm.x;
+    if (mActiveCount > 0) sink = sink + mActiveRestX[0] + mActiveRestX[mActiveCount - 1];
     (void)sink;
-    if (mTouched != kNoVertex) {
-        volatile float touch = mMesh.restPositionsMm()[mTouched].x + mMesh.restNormals()[mTouched].x;
-        (void)touch;
-    }
 }
 
-VertexId CoherentSlopeRing::findTouched(const glm::vec3& tool) const { return search(tool); }
+VertexId CoherentSlopeRing::findTouched(const glm::vec3& tool) const {
+    if (!isFinite(tool)) return kNoVertex;
+    const SurfaceHit p = findContactPoint(tool, mContact);
+    if (p.triangle == kNoTriangle) return kNoVertex;
+    const float* w = p.at.weight;
+    const int k = largestWeightCorner(w);
+    return mMesh.triangles()[p.triangle][std::size_t(k)];
+}
 
 TickResult CoherentSlopeRing::step(const glm::vec3& tool, double dtS) {
     prepareTick(dtS);
     const bool toolValid = isFinite(tool);
-    VertexId touched = mTouched;
+    SurfaceHit contact = mContactPoint;
     if (toolValid) {
-        const VertexId found = search(tool);
-        if (found != kNoVertex) touched = found;
+        const SurfaceHit found = findContactPoint(tool, mContact);
+        if (found.triangle != kNoTriangle) contact = found;
     }
-    const float compliance = mCompliance.empty() || touched == kNoVertex ? 1.0f : mCompliance[touched];
-    const float penetration = updateContact(tool, toolValid, touched, compliance);
-    stepRings(touched, mContact);
-    // The touched vertex's spring reaction: its active position may be unwritten, but its
-    // displacement is known exactly: (m1 F) n.
-    return tickResult(touched, penetration, ringDisplacementMm(0, mContactForceN, mActiveNormal));
+    const bool touching = toolValid && contact.triangle != kNoTriangle;
+    float depth = 0.0f, compliance = 1.0f;
+    glm::vec3 normal = mContactNormal;
+    VertexId touched = mTouched;
+    if (touching) {
+        // The shaded normal (Morgenbesser and Srinivasan): the corners' rest normals blended with
+        // the contact's weights; the depth of the sphere's lowest point below the rest surface.
+        const auto& tri = mMesh.triangles()[contact.triangle];
+        const auto& normals = mMesh.restNormals();
+        const float* w = contact.at.weight;
+        const glm::vec3 blended = w[0] * normals[tri[0]] + w[1] * normals[tri[1]] + w[2] * normals[tri[2]];
+        const float length = glm::length(blended);
+        if (length > 0.0f) normal = blended / length;
+        depth = mToolRadiusMm - glm::dot(tool - contact.at.pointMm, normal);
+        compliance = blendedCompliance(contact.triangle, w);
+        const int k = largestWeightCorner(w);
+        touched = tri[std::size_t(k)];
+    }
+    const float penetration = updateContactForce(depth, touching, compliance);
+    mTouched = touched;
+    mContactPoint = contact;
+    mContactNormal = normal;
+    stepRings(contact, mContact);
+
+    TickResult result;
+    result.touched = touched;
+    result.contact = mContact;
+    result.penetrationMm = penetration;
+    // The contact point moves by |m1| c F (c: the blended compliance) along the normal; the force
+    // rendered is its spring's reaction, k_s |m1| F, the touched spring being stiffer by 1 / c.
+    const float normalForceN = mHot.springStiffness * (-mHot.signedSlope[0]) * mContactForceN;
+    const glm::vec3 friction = mFriction.step(contact.at.pointMm, normal, mContact ? normalForceN : 0.0f);
+    if (mContact) {
+        result.forceN = normalForceN * normal + friction;
+        result.normal = normal;
+        const float sinkMm = -mHot.signedSlope[0] * compliance * mContactForceN;
+        result.proxyMm = mFriction.stickMm() + (mToolRadiusMm - sinkMm) * normal;
+    } else if (touching) {
+        result.proxyMm = tool;
+    }
+    return result;
 }
 
 void CoherentSlopeRing::writeActivePositions() const {
     if (!mActiveDirty) return;
-    for (int r = 0; r <= mActive.ringCount; ++r) {
-        const glm::vec3 displacement = ringDisplacementMm(r, mActiveForceN, mActiveNormal);
-        for (std::uint32_t i = mActive.ringStart[r], end = mActive.ringStart[r + 1]; i < end; ++i)
-            mPositions[mActive.vertices[i]] = glm::vec3(mActiveRestX[i], mActiveRestY[i], mActiveRestZ[i]) +
-                                              displacement;
-    }
+    for (std::uint32_t i = 0; i < mActiveCount; ++i)
+        mPositions[mActive[i]] = glm::vec3(mActiveRestX[i], mActiveRestY[i], mActiveRestZ[i]) + activeDisplacementMm(i);
     mActiveDirty = false;
 }
 
-void CoherentSlopeRing::changeActiveSet(VertexId touched, bool contact) {
-    // The old active set is written where it stands (at the force it was last displaced by), then
-    // those of its vertices that leave start relaxing from there.
+void CoherentSlopeRing::changeActiveSet(TriangleId triangle, bool contact) {
+    // The old set is written where it stands, then those of its vertices that leave start relaxing
+    // from there.
     writeActivePositions();
+    const std::uint32_t oldCount = mActiveCount;
+    const bool oldContact = mActiveTriangle != kNoTriangle && mActiveContact;
     if (++mActiveGeneration == 0) {
         std::fill(mActiveStamp.begin(), mActiveStamp.end(), 0u);
         mActiveGeneration = 1;
     }
+    // The new set goes after the old one's entries while those are still read (in place would
+    // overwrite them), then moves to the front.
+    std::uint32_t count = 0;
+    std::vector<VertexId>& list = mActive;
+    const std::uint32_t base = oldContact ? oldCount : 0;
     if (contact) {
-        mRingFinder.find(touched, mHot.ringCount, mNextActive);
+        const auto& tri = mMesh.triangles()[triangle];
         const auto& rest = mMesh.restPositionsMm();
-        for (std::size_t i = 0, n = mNextActive.size(); i < n; ++i) {
-            const VertexId v = mNextActive.vertices[i];
-            mActiveStamp[v] = mActiveGeneration;
-            // Its velocity is not read while it is active, and is zeroed when it leaves (below).
-            removeRelaxing(v);
-            mActiveRestX[i] = rest[v].x;
-            mActiveRestY[i] = rest[v].y;
-            mActiveRestZ[i] = rest[v].z;
+        for (int k = 0; k < 3; ++k) {
+            mRingFinder.find(tri[std::size_t(k)], mHot.ringCount, mCornerRings);
+            for (int r = 0; r <= mCornerRings.ringCount; ++r)
+                for (VertexId v : mCornerRings.ring(r)) {
+                    if (mActiveStamp[v] != mActiveGeneration) {
+                        mActiveStamp[v] = mActiveGeneration;
+                        mActiveIndex[v] = count;
+                        list[base + count] = v;
+                        std::uint8_t* ring = &mActiveRing[3 * std::size_t(base + count)];
+                        ring[0] = ring[1] = ring[2] = kBeyondRings;
+                        ++count;
+                    }
+                    mActiveRing[3 * std::size_t(base + mActiveIndex[v]) + std::size_t(k)] = std::uint8_t(r);
+                }
         }
-    } else {
-        mNextActive.ringCount = 0;
-        mNextActive.ringStart[1] = 0;
+        for (std::uint32_t j = 0; j < count; ++j) {
+            const VertexId v = list[base + j];
+            removeRelaxing(v);  // its velocity is not read while it is active; zeroed when it leaves
+            mActiveRestX[base + j] = rest[v].x;
+            mActiveRestY[base + j] = rest[v].y;
+            mActiveRestZ[base + j] = rest[v].z;
+        }
     }
-    if (mActiveCentre != kNoVertex && mActiveContact)
-        for (std::size_t i = 0, n = mActive.size(); i < n; ++i) {
-            const VertexId v = mActive.vertices[i];
+    if (oldContact)
+        for (std::uint32_t i = 0; i < oldCount; ++i) {
+            const VertexId v = list[i];
             if (mActiveStamp[v] != mActiveGeneration) {
                 mVelocitiesMmPerS[v] = glm::vec3(0.0f);
                 addRelaxing(v);
             }
         }
-    std::swap(mActive, mNextActive);
-    mActiveScan.valid = false;
-    mActiveCentre = touched;
+    if (base > 0)
+        for (std::uint32_t j = 0; j < count; ++j) {
+            list[j] = list[base + j];
+            mActiveRestX[j] = mActiveRestX[base + j];
+            mActiveRestY[j] = mActiveRestY[base + j];
+            mActiveRestZ[j] = mActiveRestZ[base + j];
+            for (int k = 0; k < 3; ++k) mActiveRing[3 * std::size_t(j) + std::size_t(k)] =
+                mActiveRing[3 * std::size_t(base + j) + std::size_t(k)];
+        }
+    mActiveCount = count;
+    mActiveTriangle = triangle;
     mActiveContact = contact;
-    mActiveNormal = touched != kNoVertex ? mMesh.restNormals()[touched] : glm::vec3(0.0f);
 }
 
-void CoherentSlopeRing::stepRings(VertexId touched, bool contact) {
-    // Work only where something changed: the active set is rebuilt when the touched vertex or the
-    // contact changes; its positions are a function of the force, written when read (or every
-    // tick with eagerPositions); only the relaxing vertices are integrated.
-    if (touched != mActiveCentre || contact != mActiveContact) changeActiveSet(touched, contact);
-    // The rings follow c F (c: the touched vertex's compliance factor); the rendered force stays
-    // k_s |m1| F, the touched spring being stiffer by 1 / c.
-    mActiveForceN = mCompliance.empty() || touched == kNoVertex ? mContactForceN
-                                                                : mCompliance[touched] * mContactForceN;
-    mActiveDirty = contact;
+void CoherentSlopeRing::stepRings(const SurfaceHit& contact, bool inContact) {
+    // Work only where something changed: the active set is rebuilt when the contact triangle or
+    // the contact changes; its positions are a function of the field (weights, normal, force),
+    // written when read (or every tick with eagerPositions); only the relaxing vertices are
+    // integrated.
+    if (contact.triangle != mActiveTriangle || inContact != mActiveContact)
+        changeActiveSet(contact.triangle, inContact);
+    if (inContact) {
+        // The blend, normalised so that the contact point (the corners' displacements
+        // interpolated with the same weights) moves by exactly |m1| c F: corner j is at ring 0 of
+        // itself and ring 1 of the others, so it moves by (w_j s0 + (1 - w_j) s1) and the contact
+        // point by sum_j w_j (w_j s0 + (1 - w_j) s1) = s1 + (s0 - s1) sum_j w_j^2.
+        const float* w = contact.at.weight;
+        const float s0 = mSlopeByRing[0], s1 = mSlopeByRing[1];
+        // Written as s0 - (s0 - s1)(1 - sum w^2) so that at a vertex (weights 1, 0, 0) the factor
+        // is exactly 1: there ours is the paper's model bit for bit.
+        const float interpolated = s0 - (s0 - s1) * (1.0f - (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
+        const float compliance = blendedCompliance(contact.triangle, w);
+        for (int k = 0; k < 3; ++k) mFieldWeight[k] = w[k];
+        mFieldTouchedCorner = largestWeightCorner(w);
+        mFieldNormal = mContactNormal;
+        mFieldForceN = compliance * mContactForceN * (s0 / interpolated);
+    }
+    mActiveDirty = inContact;
     if (mEagerPositions) writeActivePositions();
 
     const auto& rest = mMesh.restPositionsMm();

@@ -1,11 +1,17 @@
 #pragma once
-// Ours, the coherent method (temporal coherence, docs/method.md): the paper's slope-ring formulas
-// (SlopeRingModel) with an exact, warm-started touched-vertex search (CandidateCache certifies the
-// nearest rest vertex; the displaced ones are scanned) and incremental ring work: the active set
-// is rebuilt only when the touched vertex or the contact changes, its positions are a function of
-// the force (written when read), and only the vertices still relaxing are integrated.
+// Ours, the coherent method (docs/method.md, "Our contact"): the paper's slope-ring formulas
+// (SlopeRingModel) with a continuous contact. A sphere tool of radius a (a point when a = 0) is
+// held on the surface by a proxy that walks over the rest triangles (SurfaceWalk) to the point
+// closest to the tool; the rings of the contact triangle's three corners are blended with the
+// contact's barycentric weights, scaled so that the contact point itself moves by |m1| F as the
+// paper's touched vertex does; the force points along the interpolated normal (force shading) and
+// Coulomb friction acts on the proxy. Work is incremental: the blended ring set is rebuilt only
+// when the contact triangle or the contact changes, its positions are a function of (weights,
+// normal, force) written when read, and only the vertices still relaxing are integrated.
 
+#include "engine/core/SurfaceWalk.h"
 #include "engine/models/slopering/CandidateCache.h"
+#include "engine/models/slopering/ProxyFriction.h"
 #include "engine/models/slopering/SlopeRingModel.h"
 
 #include <cstdint>
@@ -21,29 +27,36 @@ public:
     CoherentSlopeRing(const TissueMesh& mesh, const Octree& octree, const SlopeRingParams& params,
                       bool eagerPositions = false);
 
-    TickResult step(const glm::vec3& toolTipMm, double dtS) override;
+    TickResult step(const glm::vec3& toolMm, double dtS) override;
     /// Current positions; the active rings are written here, on demand (not real-time: call from
     /// the thread that steps, at display rate).
     std::span<const glm::vec3> positionsMm() const override;
+    void copyPositionsMm(std::span<const VertexId> ids, glm::vec3* out) const override;
     void reset() override;
     std::size_t copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::uint8_t* rings,
                               std::size_t capacity) const override;
-    /// Runs the search for the last tool position (a read-only pass over the search's and the
-    /// active set's memory; only the search's caches change).
-    void warm(const glm::vec3& lastToolTipMm) const override;
-    VertexId findTouched(const glm::vec3& toolTipMm) const override;
+    /// Reads the memory the next tick will touch (the proxy's triangle and the active rings).
+    void warm(const glm::vec3& lastToolMm) const override;
+    /// The corner of the contact triangle with the largest weight, for the tool at `toolMm`
+    /// (kNoVertex if the surface has no triangle), without changing the deformation.
+    VertexId findTouched(const glm::vec3& toolMm) const override;
+    float toolRadiusMm() const override { return float(mContactDef.toolRadiusMm); }
+    void setContact(const ContactDef& contact) override;
+    const ContactDef& contact() const { return mContactDef; }
 
     /// Every vertex that may be away from rest (the active rings and those relaxing). Not real-time.
     std::span<const VertexId> displacedVertices() const override;
     /// A stiffer inclusion (engine/scoring's find-the-lump exercises): one factor per vertex in
     /// (0, 1] that scales every ring slope while that vertex is the touched one, with the return
     /// spring of the touched vertex stiffened by its inverse, so the rendered force for a given
-    /// depth grows (docs/scoring.md). Empty clears it. Not real-time; throws std::invalid_argument
-    /// naming the problem.
+    /// depth grows (docs/scoring.md); blended over the contact triangle's corners like the rings.
+    /// Empty clears it. Not real-time; throws std::invalid_argument naming the problem.
     void setCompliance(std::vector<float> factors);
     std::span<const float> compliance() const { return mCompliance; }
-    /// Search statistics: how often the candidate cache was retaken, and how often the full octree
-    /// search was needed.
+    /// The contact on the rest surface (its triangle is kNoTriangle before the first tick).
+    const SurfaceHit& contactPoint() const { return mContactPoint; }
+    /// Search statistics: how often the nearest-vertex cache (used to find the surface while the
+    /// tool is not in contact) was retaken, and how often the full octree search was needed.
     std::size_t cacheRefreshes() const { return mCache.refreshes(); }
     std::size_t fullSearches() const { return mCache.fullSearches(); }
 
@@ -53,51 +66,57 @@ protected:
     void paramsReplaced(bool ringsChanged) override;
 
 private:
-    VertexId search(const glm::vec3& tool) const;
-    void searchActive(const glm::vec3& tool, VertexId& best, float& best2) const;
+    SurfaceHit findContactPoint(const glm::vec3& tool, bool walkFromLast) const;
+    VertexId nearestRestVertex(const glm::vec3& tool) const;
+    glm::vec3 activeDisplacementMm(std::uint32_t i) const;
     void writeActivePositions() const;
-    void changeActiveSet(VertexId touched, bool contact);
+    void changeActiveSet(TriangleId triangle, bool contact);
     void releaseActiveSet();
-    void stepRings(VertexId touched, bool contact);
+    void stepRings(const SurfaceHit& contact, bool inContact);
     void addRelaxing(VertexId v);
     void removeRelaxing(VertexId v);
+    float blendedCompliance(TriangleId t, const float* weight) const;
 
     bool mEagerPositions;
     std::vector<float> mCompliance;  // per-vertex slope factor (setCompliance); empty: all 1, skipped
+    ContactDef mContactDef;
+    float mToolRadiusMm = 0.0f;
+    SurfaceWalk mWalk;
+    ProxyFriction mFriction;
 
-    // The active set (rings of the touched vertex in contact) with a copy of its rest positions in
-    // structure-of-arrays form for the search, and the vertices still relaxing.
-    RingSet mActive, mNextActive;
+    // The contact: where the proxy stands on the rest surface, and the shaded normal there.
+    SurfaceHit mContactPoint;
+    glm::vec3 mContactNormal{0.0f};
+
+    // The active set: the union of the rings of the contact triangle's corners, with a copy of
+    // each vertex's rest position and its ring from each corner (kBeyondRings when outside).
+    static constexpr std::uint8_t kBeyondRings = kMaxRings + 1;
+    RingSet mCornerRings;
+    std::vector<VertexId> mActive;
+    std::uint32_t mActiveCount = 0;
     std::vector<float> mActiveRestX, mActiveRestY, mActiveRestZ;
-    VertexId mActiveCentre = kNoVertex;
-    bool mActiveContact = false;
-    glm::vec3 mActiveNormal{0.0f};
-    float mActiveForceN = 0.0f;         // the force the active positions follow
-    mutable bool mActiveDirty = false;  // mutable with mPositions: active positions not yet written for the force
-    std::vector<std::uint32_t> mActiveStamp;
+    std::vector<std::uint8_t> mActiveRing;  // 3 per active vertex
+    std::vector<std::uint32_t> mActiveStamp;  // == mActiveGeneration: in the active set...
+    std::vector<std::uint32_t> mActiveIndex;  // ...at this index
     std::uint32_t mActiveGeneration = 1;
+    TriangleId mActiveTriangle = kNoTriangle;
+    bool mActiveContact = false;
+    // The field the active positions follow: vertex i moves by -(sum_k w_k s[ring_k(i)]) f n.
+    float mSlopeByRing[16] = {};  // |m_r| for r <= ringCount, 0 beyond
+    float mFieldWeight[3] = {};
+    int mFieldTouchedCorner = 0;  // the corner with the largest weight: the touched vertex
+    glm::vec3 mFieldNormal{0.0f};
+    float mFieldForceN = 0.0f;          // c F N(w): compliance, force, the normalisation
+    mutable bool mActiveDirty = false;  // mutable with mPositions: active positions not yet written
+
     std::vector<VertexId> mRelaxing;
     std::size_t mRelaxingCount = 0;
     std::vector<std::uint32_t> mRelaxingSlot;
 
-    // The search's memory of the last full scan of the active set: its nearest vertex and the
-    // margin to the runner-up. Until the tool and the force have moved more than that margin
-    // allows, the nearest active vertex cannot change and one distance replaces the scan. Search
-    // state, updated by the const searches (findTouched, warm): hence mutable, as mCache.
-    struct ActiveScan {
-        bool valid = false;
-        glm::vec3 toolMm{0.0f};
-        float forceN = 0.0f;
-        std::uint32_t best = 0;  // index into mActive
-        int bestRing = 0;
-        float secondMm = 0.0f;            // runner-up distance at the scan
-        std::vector<float> distance2Mm2;  // scratch of the full scan, one per active vertex
-    };
-    mutable ActiveScan mActiveScan;
-    // The candidate cache of the rest vertices (CandidateCache.h): search state, see above.
+    // The nearest rest vertex while not in contact (CandidateCache.h): search state, updated by
+    // the const searches (findTouched, warm), hence mutable.
     mutable CandidateCache mCache;
-    // The full-search fallback's list of displaced vertices (displacedVertices() const), reserved
-    // for every vertex so that it never allocates in the tick.
+    // displacedVertices()'s list, reserved for every vertex so that it never allocates.
     mutable std::vector<VertexId> mDisplacedScratch;
 };
 

@@ -38,6 +38,7 @@ bool SlopeRingModel::applyModelParams(const ModelDef& def) {
     mParams = def.slopeRing;
     updateHotConstants();
     paramsReplaced(ringsChanged);
+    setContact(def.contact);
     return true;
 }
 

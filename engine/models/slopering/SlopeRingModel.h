@@ -6,6 +6,7 @@
 // relaxation and the rendered force. The methods (PaperSlopeRing: the paper's three;
 // CoherentSlopeRing: ours) differ only in the search and in how much work a tick does.
 
+#include "engine/models/ContactDef.h"
 #include "engine/models/DeformationModel.h"
 #include "engine/core/Octree.h"
 #include "engine/core/Rings.h"
@@ -51,6 +52,9 @@ public:
     /// Replaces the parameters (validated first; throws std::invalid_argument listing every problem).
     /// Not real-time: may precompute rings.
     void setParams(const SlopeRingParams& params);
+    /// The tool and friction (ours only; the paper's methods touch with a point, without
+    /// friction, and ignore it). Already validated (validateModelDef). Real-time safe.
+    virtual void setContact(const ContactDef& /*contact*/) {}
     const SlopeRingParams& params() const { return mParams; }
     SlopeRingMethod method() const { return mMethod; }
 
@@ -94,21 +98,29 @@ protected:
     /// the tip is d - c |m1| F below it, and the exact solve uses the gain c |m1| k_c (c = 1: the
     /// paper's model). Sets the touched vertex, the force and the contact; returns the penetration.
     float updateContact(const glm::vec3& tool, bool toolValid, VertexId touched, float compliance) {
-        float penetration = 0.0f;
-        if (toolValid && touched != kNoVertex) {
-            const float depth = glm::dot(mMesh.restPositionsMm()[touched] - tool, mMesh.restNormals()[touched]);
-            penetration = depth + mHot.signedSlope[0] * (compliance * mContactForceN);
-        }
+        const bool touching = toolValid && touched != kNoVertex;
+        const float depth =
+            touching ? glm::dot(mMesh.restPositionsMm()[touched] - tool, mMesh.restNormals()[touched]) : 0.0f;
+        const float penetration = updateContactForce(depth, touching, compliance);
+        mTouched = touched;
+        return penetration;
+    }
+
+    /// The contact force update alone, for a rest depth `depthMm` (of the tip below the touched
+    /// point's rest position, along its normal) found by the caller: returns the penetration into
+    /// the displaced surface, d - c |m1| F, and updates F and the contact. `touching` false: no
+    /// contact point, F = 0.
+    float updateContactForce(float depthMm, bool touching, float compliance) {
+        const float penetration = touching ? depthMm + mHot.signedSlope[0] * (compliance * mContactForceN) : 0.0f;
         const float alpha = compliance == 1.0f || mParams.forceRelaxation > 0.0
                                 ? mHot.alpha
                                 : float(1.0 / (1.0 + mParams.loopGain() * double(compliance)));
         // Projected onto F >= 0 (the tissue only pushes): a non-expansive step, so the iteration
         // converges wherever its linear part does, alpha (1 + gain) < 2, overshoot or not.
-        if (toolValid && touched != kNoVertex)
+        if (touching)
             mContactForceN = std::max(0.0f,
                                       (1.0f - alpha) * mContactForceN + alpha * (mHot.contactStiffness * penetration));
         else mContactForceN = 0.0f;
-        mTouched = touched;
         mContact = mContactForceN > 0.0f;
         return penetration;
     }

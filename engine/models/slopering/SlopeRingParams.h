@@ -36,6 +36,11 @@ struct SlopeRingParams {
 
     double loopGain() const { return slopeMagnitudeMmPerN[0] * contactStiffnessNPerMm; }
     double effectiveRelaxation() const { return forceRelaxation > 0.0 ? forceRelaxation : 1.0 / (1.0 + loopGain()); }
+    /// The stiffness a held press renders, N/mm: R = k_s |m1| F with F = k_c d / (1 + g) at rest
+    /// (docs/method.md, "Contact and force, per tick").
+    double renderedStiffnessNPerMm() const {
+        return springStiffnessNPerMm * slopeMagnitudeMmPerN[0] * contactStiffnessNPerMm / (1.0 + loopGain());
+    }
 };
 
 /// What the slope-ring update reads each tick, derived once from the parameters, in the float the
