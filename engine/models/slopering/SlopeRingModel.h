@@ -57,6 +57,7 @@ public:
     virtual void setContact(const ContactDef& /*contact*/) {}
     const SlopeRingParams& params() const { return mParams; }
     SlopeRingMethod method() const { return mMethod; }
+    const TissueMesh& mesh() const { return mMesh; }
 
     /// The touched vertex this method's search would report now, without changing the deformation
     /// (kNoVertex where the paper's searchNode finds nothing).
