@@ -11,6 +11,10 @@
         <source>%1–%2 N</source>
         <translation>%1–%2 N</translation>
     </message>
+    <message>
+        <source>No feel bench rows to draw</source>
+        <translation>Keine Zeilen des Haptik-Benchmarks zum Zeichnen</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ChartsPanel</name>
@@ -1274,6 +1278,57 @@
     <message>
         <source>tick budget</source>
         <translation>Tick-Budget</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::FeelChart</name>
+    <message>
+        <source>No feel bench yet</source>
+        <translation>Noch kein Haptik-Benchmark</translation>
+    </message>
+    <message>
+        <source>a slide at %1 mm depth, %2 mm/s (circles: sphere, squares: stomach); goal: step ≤ %3 % of the mean force (dashed)</source>
+        <translation>Gleiten in %1 mm Tiefe, %2 mm/s (Kreise: Kugel, Quadrate: Magen); Ziel: Sprung ≤ %3 % der mittleren Kraft (gestrichelt)</translation>
+    </message>
+    <message>
+        <source>What the hand feels: force step against tick cost</source>
+        <translation>Was die Hand spürt: Kraftsprung gegen Tick-Aufwand</translation>
+    </message>
+    <message>
+        <source>sphere</source>
+        <translation>Kugel</translation>
+    </message>
+    <message>
+        <source>stomach</source>
+        <translation>Magen</translation>
+    </message>
+    <message>
+        <source>goal</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Tick cost (× the paper&apos;s previous method, log scale)</source>
+        <translation>Tick-Aufwand (× Methode „previous“ des Artikels, log. Skala)</translation>
+    </message>
+    <message>
+        <source>Tick cost (µs, log scale)</source>
+        <translation>Tick-Aufwand (µs, log. Skala)</translation>
+    </message>
+    <message>
+        <source>Largest force step (% of the mean force, log scale)</source>
+        <translation>Größter Kraftsprung (% der mittleren Kraft, log. Skala)</translation>
+    </message>
+    <message>
+        <source>goal: step ≤ %1 %</source>
+        <translation>Ziel: Sprung ≤ %1 %</translation>
+    </message>
+    <message>
+        <source>%1, %2 %3 vertices
+largest step %4 % (normal %5 %), ripple %6 %
+tick %7 µs, %8x faster than previous</source>
+        <translation>%1, %2 %3 Knoten
+größter Sprung %4 % (normal %5 %), Welligkeit %6 %
+Tick %7 µs, %8-mal schneller als previous</translation>
     </message>
 </context>
 <context>

@@ -11,6 +11,10 @@
         <source>%1–%2 N</source>
         <translation>%1–%2 N</translation>
     </message>
+    <message>
+        <source>No feel bench rows to draw</source>
+        <translation>Tiada baris penanda aras haptik untuk dilukis</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ChartsPanel</name>
@@ -1274,6 +1278,57 @@
     <message>
         <source>tick budget</source>
         <translation>bajet tik</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::FeelChart</name>
+    <message>
+        <source>No feel bench yet</source>
+        <translation>Belum ada penanda aras haptik</translation>
+    </message>
+    <message>
+        <source>a slide at %1 mm depth, %2 mm/s (circles: sphere, squares: stomach); goal: step ≤ %3 % of the mean force (dashed)</source>
+        <translation>gelongsor pada kedalaman %1 mm, %2 mm/s (bulatan: sfera, segi empat: perut); sasaran: lompatan ≤ %3 % daripada daya purata (putus-putus)</translation>
+    </message>
+    <message>
+        <source>What the hand feels: force step against tick cost</source>
+        <translation>Apa yang dirasai tangan: lompatan daya berbanding kos tik</translation>
+    </message>
+    <message>
+        <source>sphere</source>
+        <translation>sfera</translation>
+    </message>
+    <message>
+        <source>stomach</source>
+        <translation>perut</translation>
+    </message>
+    <message>
+        <source>goal</source>
+        <translation>sasaran</translation>
+    </message>
+    <message>
+        <source>Tick cost (× the paper&apos;s previous method, log scale)</source>
+        <translation>Kos tik (× kaedah previous kertas kerja, skala log)</translation>
+    </message>
+    <message>
+        <source>Tick cost (µs, log scale)</source>
+        <translation>Kos tik (µs, skala log)</translation>
+    </message>
+    <message>
+        <source>Largest force step (% of the mean force, log scale)</source>
+        <translation>Lompatan daya terbesar (% daripada daya purata, skala log)</translation>
+    </message>
+    <message>
+        <source>goal: step ≤ %1 %</source>
+        <translation>sasaran: lompatan ≤ %1 %</translation>
+    </message>
+    <message>
+        <source>%1, %2 %3 vertices
+largest step %4 % (normal %5 %), ripple %6 %
+tick %7 µs, %8x faster than previous</source>
+        <translation>%1, %2 %3 bucu
+lompatan terbesar %4 % (normal %5 %), riak %6 %
+tik %7 µs, %8x lebih pantas daripada previous</translation>
     </message>
 </context>
 <context>
