@@ -162,6 +162,22 @@
         <source>Save sweep CSV</source>
         <translation>Sweep-CSV speichern</translation>
     </message>
+    <message>
+        <source>&amp;Speed vs. accuracy</source>
+        <translation>&amp;Tempo gegen Genauigkeit</translation>
+    </message>
+    <message>
+        <source>Every model&apos;s tick cost against its displacement error (the sweep).</source>
+        <translation>Tick-Aufwand jedes Modells gegen seinen Verschiebungsfehler (der Sweep).</translation>
+    </message>
+    <message>
+        <source>&amp;Feel</source>
+        <translation>&amp;Haptik</translation>
+    </message>
+    <message>
+        <source>Every model&apos;s largest force step while sliding at constant depth, against its tick cost (palpate-cli bench feel).</source>
+        <translation>Größter Kraftsprung jedes Modells beim Gleiten in konstanter Tiefe, gegen seinen Tick-Aufwand (palpate-cli bench feel).</translation>
+    </message>
 </context>
 <context>
     <name>palpate::DevicePanel</name>
@@ -1329,6 +1345,77 @@ tick %7 µs, %8x faster than previous</source>
         <translation>%1, %2 %3 Knoten
 größter Sprung %4 % (normal %5 %), Welligkeit %6 %
 Tick %7 µs, %8-mal schneller als previous</translation>
+    </message>
+    <message>
+        <source>Tick cost (× previous, log)</source>
+        <translation>Tick-Aufwand (× previous, log)</translation>
+    </message>
+    <message>
+        <source>Tick cost (µs, log)</source>
+        <translation>Tick-Aufwand (µs, log)</translation>
+    </message>
+    <message>
+        <source>Largest step (% of mean force)</source>
+        <translation>Größter Sprung (% der mittleren Kraft)</translation>
+    </message>
+    <message>
+        <source>Feel: force step against tick cost</source>
+        <translation>Haptik: Kraftsprung gegen Tick-Aufwand</translation>
+    </message>
+    <message>
+        <source>slide %1 mm deep at %2 mm/s; goal: step ≤ %3 % (dashed)</source>
+        <translation>Gleiten %1 mm tief mit %2 mm/s; Ziel: Sprung ≤ %3 % (gestrichelt)</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::FeelPanel</name>
+    <message>
+        <source>No feel bench loaded: palpate-cli bench feel --csv FILE, then Open feel CSV</source>
+        <translation>Kein Haptik-Benchmark geladen: palpate-cli bench feel --csv DATEI, dann Haptik-CSV öffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Open feel CSV…</source>
+        <translation>Haptik-CSV &amp;öffnen…</translation>
+    </message>
+    <message>
+        <source>Show a feel bench saved as CSV (palpate-cli bench feel --csv): every model&apos;s largest force step while sliding at constant depth, against its tick cost.</source>
+        <translation>Einen als CSV gespeicherten Haptik-Benchmark zeigen (palpate-cli bench feel --csv): größter Kraftsprung jedes Modells beim Gleiten in konstanter Tiefe, gegen seinen Tick-Aufwand.</translation>
+    </message>
+    <message>
+        <source>Tick &amp;cost:</source>
+        <translation>Tick-&amp;Aufwand:</translation>
+    </message>
+    <message>
+        <source>× previous</source>
+        <translation>× previous</translation>
+    </message>
+    <message>
+        <source>µs</source>
+        <translation>µs</translation>
+    </message>
+    <message>
+        <source>The tick cost as a fraction of the paper&apos;s previous method&apos;s, measured in the same run on the same mesh, or in microseconds on the machine that ran the bench.</source>
+        <translation>Der Tick-Aufwand als Anteil an dem der Methode „previous“ des Artikels, im selben Lauf auf demselben Netz gemessen, oder in Mikrosekunden auf dem Rechner, auf dem der Benchmark lief.</translation>
+    </message>
+    <message>
+        <source>Loaded %1: %2 of %3 points above the goal (step ≤ %4 % of the mean force).</source>
+        <translation>%1 geladen: %2 von %3 Punkten über dem Ziel (Sprung ≤ %4 % der mittleren Kraft).</translation>
+    </message>
+    <message>
+        <source>%1: cannot be read (%2)</source>
+        <translation>%1: kann nicht gelesen werden (%2)</translation>
+    </message>
+    <message>
+        <source>%1: no rows (only the header)</source>
+        <translation>%1: keine Zeilen (nur die Kopfzeile)</translation>
+    </message>
+    <message>
+        <source>Open feel CSV</source>
+        <translation>Haptik-CSV öffnen</translation>
+    </message>
+    <message>
+        <source>Feel bench CSV (*.csv);;All files (*)</source>
+        <translation>Haptik-Benchmark-CSV (*.csv);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>

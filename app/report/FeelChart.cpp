@@ -24,6 +24,7 @@ namespace palpate {
 namespace {
 
 constexpr qreal kMarkerSize = 11.0;
+constexpr int kNarrowBelowPx = 720;
 constexpr double kFloorPct = 1e-3;  ///< a step of 0 (a perfectly steady force) is drawn here: log axis
 const QColor kGoalColor(0xc6, 0x28, 0x28);
 
@@ -133,16 +134,46 @@ void FeelChart::applyFonts() {
     }
 }
 
+bool FeelChart::narrow() const { return width() < kNarrowBelowPx; }
+
+void FeelChart::resizeEvent(QResizeEvent* event) {
+    QChartView::resizeEvent(event);
+    applyWidth();
+}
+
+void FeelChart::applyWidth() {
+    const bool small = narrow();
+    chart()->setTitle(titleText());
+    for (QAbstractAxis* axis : chart()->axes()) {
+        auto* log = qobject_cast<QLogValueAxis*>(axis);
+        if (log) log->setMinorTickCount(small ? 0 : 8);
+        if (axis->objectName() == QLatin1String("feelTickAxis")) {
+            if (mXAxis == XAxis::RatioToPrevious)
+                axis->setTitleText(small ? tr("Tick cost (× previous, log)")
+                                         : tr("Tick cost (× the paper's previous method, log scale)"));
+            else axis->setTitleText(small ? tr("Tick cost (µs, log)") : tr("Tick cost (µs, log scale)"));
+        } else {
+            axis->setTitleText(small ? tr("Largest step (% of mean force)")
+                                     : tr("Largest force step (% of the mean force, log scale)"));
+        }
+    }
+}
+
 QString FeelChart::titleText() const {
     if (mRows.empty()) return mEmptyHint;
     const FeelRow& first = mRows.front();
-    const QString detail = tr("a slide at %1 mm depth, %2 mm/s (circles: sphere, squares: stomach); goal: step ≤ %3 % of "
-                              "the mean force (dashed)")
-                               .arg(QLocale().toString(first.depthMm, 'g', 3),
-                                    QLocale().toString(first.speedMmPerS, 'g', 3),
-                                    QLocale().toString(kFeelStepGoalPct, 'g', 3));
+    const QString depth = QLocale().toString(first.depthMm, 'g', 3),
+                  speed = QLocale().toString(first.speedMmPerS, 'g', 3),
+                  goal = QLocale().toString(kFeelStepGoalPct, 'g', 3);
+    const QString title = narrow() ? tr("Feel: force step against tick cost")
+                                   : tr("What the hand feels: force step against tick cost");
+    const QString detail =
+        narrow() ? tr("slide %1 mm deep at %2 mm/s; goal: step ≤ %3 % (dashed)").arg(depth, speed, goal)
+                 : tr("a slide at %1 mm depth, %2 mm/s (circles: sphere, squares: stomach); goal: step ≤ %3 % of "
+                      "the mean force (dashed)")
+                       .arg(depth, speed, goal);
     return QStringLiteral("<b>%1</b><br><span style=\"font-size:small; font-weight:normal\">%2</span>")
-        .arg(tr("What the hand feels: force step against tick cost").toHtmlEscaped(), detail.toHtmlEscaped());
+        .arg(title.toHtmlEscaped(), detail.toHtmlEscaped());
 }
 
 QStringList FeelChart::seriesNames() const {
@@ -192,8 +223,6 @@ void FeelChart::rebuild() {
     x->setBase(10.0);
     x->setLabelFormat(QStringLiteral("%g"));
     x->setMinorTickCount(8);
-    x->setTitleText(mXAxis == XAxis::RatioToPrevious ? tr("Tick cost (× the paper's previous method, log scale)")
-                                                     : tr("Tick cost (µs, log scale)"));
     const double xMin = any ? niceLogBound(xLo * 0.8, false) : 1e-4, xMax = any ? niceLogBound(xHi * 1.25, true) : 10.0;
     x->setRange(xMin, xMax);
     auto* y = new QLogValueAxis;
@@ -201,7 +230,6 @@ void FeelChart::rebuild() {
     y->setBase(10.0);
     y->setLabelFormat(QStringLiteral("%g"));
     y->setMinorTickCount(8);
-    y->setTitleText(tr("Largest force step (% of the mean force, log scale)"));
     // A log axis labels only its decades, and the goal needs a labelled one.
     // Whole decades (a hair wider, so that both end labels are drawn).
     y->setRange(0.999 * std::pow(10.0, std::floor(std::log10(std::min(yLo * 0.8, kFeelStepGoalPct * 0.5)))),
@@ -290,6 +318,7 @@ void FeelChart::rebuild() {
         });
     }
     c->legend()->setVisible(mLegendShown && mPointCount > 0);
+    applyWidth();
     emit rebuilt();
 }
 

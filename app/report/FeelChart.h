@@ -52,10 +52,14 @@ signals:
 
 protected:
     void changeEvent(QEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void rebuild();
     void applyFonts();
+    /// Narrow (a dock): short title and axis titles, no minor grid lines; wide (a PNG): the full ones.
+    void applyWidth();
+    bool narrow() const;
     QString titleText() const;
     double xOf(const FeelRow& row) const;
 
