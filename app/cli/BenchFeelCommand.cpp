@@ -55,6 +55,11 @@ std::string loopPair(const FeelRow& r, std::size_t LoopFeel::*dropouts) {
     return one(r.quiet) + "/" + one(r.loaded);
 }
 
+std::string loopStepPair(const FeelRow& r) {
+    auto one = [](const std::optional<LoopFeel>& run) { return run ? fixed(run->maxStepPct, 1) : std::string("-"); };
+    return one(r.quiet) + "/" + one(r.loaded);
+}
+
 std::string overrunPair(const FeelRow& r) {
     auto one = [](const std::optional<LoopFeel>& run) {
         return run ? std::to_string(run->overruns) : std::string("-");
@@ -70,7 +75,8 @@ void printTable(const std::vector<FeelRow>& rows, const FeelBenchDef& def, doubl
         << "  " << std::left << std::setw(23) << "model" << std::right << std::setw(5) << "a mm" << std::setw(8)
         << "mean N" << std::setw(8) << "step %" << std::setw(9) << "Fn st %" << std::setw(9) << "ripple %"
         << std::setw(7) << "Ft/Fn" << std::setw(6) << "mu_d" << std::setw(8) << "dev %" << std::setw(10) << "tick ns"
-        << std::setw(9) << "vs prev" << std::setw(10) << "drop q/L" << std::setw(13) << "overrun q/L"
+        << std::setw(9) << "vs prev" << std::setw(10) << "drop q/L" << std::setw(13) << "overrun q/L" << std::setw(13)
+        << "lstep % q/L"
         << "  step drop fric speed\n";
     for (const FeelRow& r : rows) {
         const auto deviation = r.frictionDeviationPct();
@@ -82,9 +88,9 @@ void printTable(const std::vector<FeelRow>& rows, const FeelBenchDef& def, doubl
             << (r.dynamicFriction ? fixed(*r.dynamicFriction, 2) : "-") << std::setw(8)
             << (deviation ? fixed(*deviation, 1) : "-") << std::setw(10) << fixed(r.tickNs, r.tickNs < 1000.0 ? 1 : 0)
             << std::setw(9) << ratioText(r.speedupVsPrevious()) << std::setw(10) << loopPair(r, &LoopFeel::dropouts)
-            << std::setw(13) << overrunPair(r) << "  " << std::left << std::setw(5) << goalVerdictName(stepGoal(r))
-            << std::setw(5) << goalVerdictName(dropoutGoal(r)) << std::setw(5) << goalVerdictName(frictionGoal(r))
-            << goalVerdictName(speedGoal(r)) << std::right;
+            << std::setw(13) << overrunPair(r) << std::setw(13) << loopStepPair(r) << "  " << std::left << std::setw(5)
+            << goalVerdictName(stepGoal(r)) << std::setw(5) << goalVerdictName(dropoutGoal(r)) << std::setw(5)
+            << goalVerdictName(frictionGoal(r)) << goalVerdictName(speedGoal(r)) << std::right;
         if (!r.note.empty()) out << "  (" << r.note << ")";
         out << "\n";
     }
@@ -98,7 +104,9 @@ void printTable(const std::vector<FeelRow>& rows, const FeelBenchDef& def, doubl
            "in this run divided by this one. drop q/L: dropouts (contact ticks with |F| below half the mean of the +-3\n"
            "ticks around them) in the real threaded loop under normal scheduling (not SCHED_FIFO), quiet / beside "
         << def.loadProcesses << " busy processes,\n"
-        << def.loop.passes << " slide(s) per run; overrun q/L: the loop's ticks that missed their deadline.\n";
+        << def.loop.passes
+        << " slide(s) per run; overrun q/L: the loop's ticks that missed their deadline; lstep % q/L: the largest\n"
+           "force step there (after the safety filter), % of the mean |F|.\n";
     out << "Goals: step <= " << kFeelStepGoalPct << " % of the mean force on every mesh; 0 dropouts beside "
         << def.loadProcesses << " busy processes; friction ratio within " << kFeelFrictionGoalPct << " % of mu_d; "
         << kFeelSpeedGoalModel << " >= " << kFeelSpeedGoalRatio << "x faster than previous at "
@@ -120,6 +128,7 @@ nlohmann::ordered_json loopJson(const std::optional<LoopFeel>& run) {
             {"window_ticks", run->windowTicks},
             {"contact_ticks", run->contactTicks},
             {"dropouts", run->dropouts},
+            {"max_step_pct", numberOrNull(run->maxStepPct)},
             {"seconds", run->seconds}};
 }
 

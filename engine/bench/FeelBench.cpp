@@ -233,6 +233,7 @@ LoopFeel measureLoopFeel(const TissueMesh& mesh, const ModelDef& model, const Sl
         const long long index = std::llround(scriptS * def.rateHz);
         inWindow[i] = pass < def.passes && index >= (long long)(path.statsBegin) && index < (long long)(path.slideEnd);
     }
+    double sumForceN = 0.0, maxStepN = 0.0;
     for (std::size_t i = 0; i < ticks.size();) {
         if (!inWindow[i]) {
             ++i;
@@ -241,10 +242,15 @@ LoopFeel measureLoopFeel(const TissueMesh& mesh, const ModelDef& model, const Sl
         std::size_t end = i;
         while (end < ticks.size() && inWindow[end]) ++end;
         feel.windowTicks += end - i;
-        for (std::size_t k = i; k < end; ++k) feel.contactTicks += felt[k].contact ? 1 : 0;
+        for (std::size_t k = i; k < end; ++k) {
+            feel.contactTicks += felt[k].contact ? 1 : 0;
+            sumForceN += felt[k].forceN;
+            if (k > i) maxStepN = std::max(maxStepN, double(glm::length(ticks[k].forceN - ticks[k - 1].forceN)));
+        }
         feel.dropouts += countDropouts(felt, i, end);
         i = end;
     }
+    feel.maxStepPct = sumForceN > 0.0 ? 100.0 * maxStepN / (sumForceN / double(feel.windowTicks)) : kNaN;
     return feel;
 }
 

@@ -48,6 +48,9 @@ struct LoopFeel {
     std::size_t windowTicks = 0;   ///< ticks inside the statistics windows
     std::size_t contactTicks = 0;  ///< of which in contact
     std::size_t dropouts = 0;      ///< contact ticks with |F| below half its neighbours' mean (countDropouts)
+    /// Largest |F_t - F_t-1| between ticks of a window, % of the windows' mean |F| (after the safety
+    /// filter): what a late tick (the tool moved on by the missed periods) does to the force.
+    double maxStepPct = 0.0;
     double seconds = 0.0;
 };
 

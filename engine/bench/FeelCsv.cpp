@@ -64,6 +64,16 @@ std::string parseWhole(const std::string& cell, Int& out) {
 }
 
 /// A column of a LoopFeel (quiet or loaded): written empty without that run; a cell read creates it.
+/// A figure of a LoopFeel that is a number (empty without that run).
+Column loopNumberColumn(const char* name, std::optional<LoopFeel> FeelRow::*run, double LoopFeel::*field) {
+    return {name, [run, field](const FeelRow& r) { return (r.*run) ? number((*(r.*run)).*field) : std::string(); },
+            [run, field](FeelRow& r, const std::string& cell) -> std::string {
+                if (cell.empty()) return {};
+                if (!(r.*run)) r.*run = LoopFeel{};
+                return parseDouble(cell, (*(r.*run)).*field);
+            }};
+}
+
 template <typename T>
 Column loopColumn(const char* name, std::optional<LoopFeel> FeelRow::*run, T LoopFeel::*field) {
     return {name,
@@ -151,12 +161,14 @@ const std::vector<Column>& columns() {
         loopColumn("quiet_contact_ticks", &FeelRow::quiet, &LoopFeel::contactTicks),
         loopColumn("quiet_dropouts", &FeelRow::quiet, &LoopFeel::dropouts),
         loopColumn("quiet_overruns", &FeelRow::quiet, &LoopFeel::overruns),
+        loopNumberColumn("quiet_max_step_pct", &FeelRow::quiet, &LoopFeel::maxStepPct),
         loopColumn("load_processes", &FeelRow::loaded, &LoopFeel::loadProcesses),
         loopColumn("loaded_ticks", &FeelRow::loaded, &LoopFeel::ticks),
         loopColumn("loaded_window_ticks", &FeelRow::loaded, &LoopFeel::windowTicks),
         loopColumn("loaded_contact_ticks", &FeelRow::loaded, &LoopFeel::contactTicks),
         loopColumn("loaded_dropouts", &FeelRow::loaded, &LoopFeel::dropouts),
         loopColumn("loaded_overruns", &FeelRow::loaded, &LoopFeel::overruns),
+        loopNumberColumn("loaded_max_step_pct", &FeelRow::loaded, &LoopFeel::maxStepPct),
         derivedColumn("step_goal", [](const FeelRow& r) { return verdictCell(stepGoal(r)); }),
         derivedColumn("dropout_goal", [](const FeelRow& r) { return verdictCell(dropoutGoal(r)); }),
         derivedColumn("friction_goal", [](const FeelRow& r) { return verdictCell(frictionGoal(r)); }),

@@ -30,9 +30,11 @@ TEST_F(BenchFeelCli, AQuickRunWritesTheCsvAndTheJson) {
     const std::string csvPath = dir.file("feel bench.csv");  // a space, on purpose
     const std::string jsonPath = dir.file("feel.json");
     // In a subshell, so that the JSON alone goes to the file and the progress lines to the output.
-    const auto r = test::runCommand("(" + test::shellQuote(cli) +
-                                    " bench feel --quick --models coherent,previous --load 1 --csv " +
-                                    test::shellQuote(csvPath) + " --json > " + test::shellQuote(jsonPath) + ")");
+    std::string command = "(";
+    command += test::shellQuote(cli);
+    command += " bench feel --quick --models coherent,previous --load 1 --csv " + test::shellQuote(csvPath);
+    command += " --json > " + test::shellQuote(jsonPath) + ")";
+    const auto r = test::runCommand(command);
     ASSERT_EQ(r.exitCode, 0) << r.output;
 
     std::string error;

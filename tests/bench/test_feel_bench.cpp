@@ -149,6 +149,7 @@ TEST(FeelBench, AThreadedRunUnderNormalSchedulingCountsItsWindow) {
     EXPECT_LE(feel.windowTicks, 2u * (path.slideEnd - path.statsBegin));  // two passes at most
     EXPECT_GT(feel.contactTicks, 0u);
     EXPECT_LE(feel.dropouts, feel.contactTicks);
+    EXPECT_TRUE(std::isfinite(feel.maxStepPct));
 }
 
 }  // namespace

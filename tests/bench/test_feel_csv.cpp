@@ -25,8 +25,22 @@ FeelRow sampleRow() {
     r.tickNs = 41.5;
     r.previousTickNs = 37000.0;
     r.timingPasses = 3;
-    r.quiet = LoopFeel{0, false, 4000, 1, 2, 3000, 2990, 0, 4.0};
-    r.loaded = LoopFeel{2, false, 3900, 25, 40, 2950, 2950, 3, 4.0};
+    r.quiet = LoopFeel{.ticks = 4000,
+                       .overruns = 1,
+                       .missedDeadlines = 2,
+                       .windowTicks = 3000,
+                       .contactTicks = 2990,
+                       .maxStepPct = 4.5,
+                       .seconds = 4.0};
+    r.loaded = LoopFeel{.loadProcesses = 2,
+                        .ticks = 3900,
+                        .overruns = 25,
+                        .missedDeadlines = 40,
+                        .windowTicks = 2950,
+                        .contactTicks = 2950,
+                        .dropouts = 3,
+                        .maxStepPct = 12.25,
+                        .seconds = 4.0};
     r.note = "a \"quoted\" note, with a comma";
     return r;
 }
@@ -94,6 +108,7 @@ TEST(FeelCsv, ARowGoesThereAndBack) {
     EXPECT_EQ(back.loaded->loadProcesses, 2);
     EXPECT_EQ(back.loaded->dropouts, 3u);
     EXPECT_EQ(back.quiet->overruns, 1u);
+    EXPECT_NEAR(back.loaded->maxStepPct, 12.25, 1e-9);
     EXPECT_EQ(back.note, r.note);
     EXPECT_EQ(stepGoal(back), GoalVerdict::Fail);
     EXPECT_EQ(dropoutGoal(back), GoalVerdict::Fail);
