@@ -39,20 +39,6 @@ int modelRank(const std::string& model) {
     return it == names.end() ? 1000 : 10 + int(it - names.begin());
 }
 
-double niceLogBound(double v, bool up) {
-    const double decade = std::pow(10.0, std::floor(std::log10(v)));
-    const double steps[] = {1.0, 2.0, 5.0, 10.0};
-    if (up) {
-        for (double s : steps)
-            if (s * decade >= v * (1.0 - 1e-9)) return s * decade;
-        return 10.0 * decade;
-    }
-    double best = decade;
-    for (double s : steps)
-        if (s * decade <= v * (1.0 + 1e-9)) best = s * decade;
-    return best;
-}
-
 double stepOf(const FeelRow& r) { return std::max(r.metrics.maxStepPct, kFloorPct); }
 
 bool drawable(const FeelRow& r) {
@@ -223,15 +209,16 @@ void FeelChart::rebuild() {
     x->setBase(10.0);
     x->setLabelFormat(QStringLiteral("%g"));
     x->setMinorTickCount(8);
-    const double xMin = any ? niceLogBound(xLo * 0.8, false) : 1e-4, xMax = any ? niceLogBound(xHi * 1.25, true) : 10.0;
+    // Whole decades, a hair wider so that both end labels are drawn: a log axis labels only its decades.
+    const double xMin = 0.999 * (any ? std::pow(10.0, std::floor(std::log10(xLo * 0.8))) : 1e-4),
+                 xMax = 1.001 * (any ? std::pow(10.0, std::ceil(std::log10(xHi * 1.25))) : 10.0);
     x->setRange(xMin, xMax);
     auto* y = new QLogValueAxis;
     y->setObjectName(QStringLiteral("feelStepAxis"));
     y->setBase(10.0);
     y->setLabelFormat(QStringLiteral("%g"));
     y->setMinorTickCount(8);
-    // A log axis labels only its decades, and the goal needs a labelled one.
-    // Whole decades (a hair wider, so that both end labels are drawn).
+    // The same for the steps, with the goal's decade inside.
     y->setRange(0.999 * std::pow(10.0, std::floor(std::log10(std::min(yLo * 0.8, kFeelStepGoalPct * 0.5)))),
                 1.001 * std::pow(10.0, std::ceil(std::log10(std::max(yHi * 1.25, kFeelStepGoalPct * 2.0)))));
     c->addAxis(x, Qt::AlignBottom);
