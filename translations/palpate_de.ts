@@ -11,6 +11,10 @@
         <source>%1–%2 N</source>
         <translation>%1–%2 N</translation>
     </message>
+    <message>
+        <source>No feel bench rows to draw</source>
+        <translation>Keine Zeilen des Haptik-Benchmarks zum Zeichnen</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ChartsPanel</name>
@@ -157,6 +161,22 @@
     <message>
         <source>Save sweep CSV</source>
         <translation>Sweep-CSV speichern</translation>
+    </message>
+    <message>
+        <source>&amp;Speed vs. accuracy</source>
+        <translation>&amp;Tempo gegen Genauigkeit</translation>
+    </message>
+    <message>
+        <source>Every model&apos;s tick cost against its displacement error (the sweep).</source>
+        <translation>Tick-Aufwand jedes Modells gegen seinen Verschiebungsfehler (der Sweep).</translation>
+    </message>
+    <message>
+        <source>&amp;Feel</source>
+        <translation>&amp;Haptik</translation>
+    </message>
+    <message>
+        <source>Every model&apos;s largest force step while sliding at constant depth, against its tick cost (palpate-cli bench feel).</source>
+        <translation>Größter Kraftsprung jedes Modells beim Gleiten in konstanter Tiefe, gegen seinen Tick-Aufwand (palpate-cli bench feel).</translation>
     </message>
 </context>
 <context>
@@ -1274,6 +1294,128 @@
     <message>
         <source>tick budget</source>
         <translation>Tick-Budget</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::FeelChart</name>
+    <message>
+        <source>No feel bench yet</source>
+        <translation>Noch kein Haptik-Benchmark</translation>
+    </message>
+    <message>
+        <source>a slide at %1 mm depth, %2 mm/s (circles: sphere, squares: stomach); goal: step ≤ %3 % of the mean force (dashed)</source>
+        <translation>Gleiten in %1 mm Tiefe, %2 mm/s (Kreise: Kugel, Quadrate: Magen); Ziel: Sprung ≤ %3 % der mittleren Kraft (gestrichelt)</translation>
+    </message>
+    <message>
+        <source>What the hand feels: force step against tick cost</source>
+        <translation>Was die Hand spürt: Kraftsprung gegen Tick-Aufwand</translation>
+    </message>
+    <message>
+        <source>sphere</source>
+        <translation>Kugel</translation>
+    </message>
+    <message>
+        <source>stomach</source>
+        <translation>Magen</translation>
+    </message>
+    <message>
+        <source>goal</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Tick cost (× the paper&apos;s previous method, log scale)</source>
+        <translation>Tick-Aufwand (× Methode „previous“ des Artikels, log. Skala)</translation>
+    </message>
+    <message>
+        <source>Tick cost (µs, log scale)</source>
+        <translation>Tick-Aufwand (µs, log. Skala)</translation>
+    </message>
+    <message>
+        <source>Largest force step (% of the mean force, log scale)</source>
+        <translation>Größter Kraftsprung (% der mittleren Kraft, log. Skala)</translation>
+    </message>
+    <message>
+        <source>goal: step ≤ %1 %</source>
+        <translation>Ziel: Sprung ≤ %1 %</translation>
+    </message>
+    <message>
+        <source>%1, %2 %3 vertices
+largest step %4 % (normal %5 %), ripple %6 %
+tick %7 µs, %8x faster than previous</source>
+        <translation>%1, %2 %3 Knoten
+größter Sprung %4 % (normal %5 %), Welligkeit %6 %
+Tick %7 µs, %8-mal schneller als previous</translation>
+    </message>
+    <message>
+        <source>Tick cost (× previous, log)</source>
+        <translation>Tick-Aufwand (× previous, log)</translation>
+    </message>
+    <message>
+        <source>Tick cost (µs, log)</source>
+        <translation>Tick-Aufwand (µs, log)</translation>
+    </message>
+    <message>
+        <source>Largest step (% of mean force)</source>
+        <translation>Größter Sprung (% der mittleren Kraft)</translation>
+    </message>
+    <message>
+        <source>Feel: force step against tick cost</source>
+        <translation>Haptik: Kraftsprung gegen Tick-Aufwand</translation>
+    </message>
+    <message>
+        <source>slide %1 mm deep at %2 mm/s; goal: step ≤ %3 % (dashed)</source>
+        <translation>Gleiten %1 mm tief mit %2 mm/s; Ziel: Sprung ≤ %3 % (gestrichelt)</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::FeelPanel</name>
+    <message>
+        <source>No feel bench loaded: palpate-cli bench feel --csv FILE, then Open feel CSV</source>
+        <translation>Kein Haptik-Benchmark geladen: palpate-cli bench feel --csv DATEI, dann Haptik-CSV öffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Open feel CSV…</source>
+        <translation>Haptik-CSV &amp;öffnen…</translation>
+    </message>
+    <message>
+        <source>Show a feel bench saved as CSV (palpate-cli bench feel --csv): every model&apos;s largest force step while sliding at constant depth, against its tick cost.</source>
+        <translation>Einen als CSV gespeicherten Haptik-Benchmark zeigen (palpate-cli bench feel --csv): größter Kraftsprung jedes Modells beim Gleiten in konstanter Tiefe, gegen seinen Tick-Aufwand.</translation>
+    </message>
+    <message>
+        <source>Tick &amp;cost:</source>
+        <translation>Tick-&amp;Aufwand:</translation>
+    </message>
+    <message>
+        <source>× previous</source>
+        <translation>× previous</translation>
+    </message>
+    <message>
+        <source>µs</source>
+        <translation>µs</translation>
+    </message>
+    <message>
+        <source>The tick cost as a fraction of the paper&apos;s previous method&apos;s, measured in the same run on the same mesh, or in microseconds on the machine that ran the bench.</source>
+        <translation>Der Tick-Aufwand als Anteil an dem der Methode „previous“ des Artikels, im selben Lauf auf demselben Netz gemessen, oder in Mikrosekunden auf dem Rechner, auf dem der Benchmark lief.</translation>
+    </message>
+    <message>
+        <source>Loaded %1: %2 of %3 points above the goal (step ≤ %4 % of the mean force).</source>
+        <translation>%1 geladen: %2 von %3 Punkten über dem Ziel (Sprung ≤ %4 % der mittleren Kraft).</translation>
+    </message>
+    <message>
+        <source>%1: cannot be read (%2)</source>
+        <translation>%1: kann nicht gelesen werden (%2)</translation>
+    </message>
+    <message>
+        <source>%1: no rows (only the header)</source>
+        <translation>%1: keine Zeilen (nur die Kopfzeile)</translation>
+    </message>
+    <message>
+        <source>Open feel CSV</source>
+        <translation>Haptik-CSV öffnen</translation>
+    </message>
+    <message>
+        <source>Feel bench CSV (*.csv);;All files (*)</source>
+        <translation>Haptik-Benchmark-CSV (*.csv);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>

@@ -11,6 +11,10 @@
         <source>%1–%2 N</source>
         <translation>%1–%2 N</translation>
     </message>
+    <message>
+        <source>No feel bench rows to draw</source>
+        <translation>Tiada baris penanda aras haptik untuk dilukis</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ChartsPanel</name>
@@ -157,6 +161,22 @@
     <message>
         <source>Save sweep CSV</source>
         <translation>Simpan CSV sapuan</translation>
+    </message>
+    <message>
+        <source>&amp;Speed vs. accuracy</source>
+        <translation>&amp;Laju lwn. ketepatan</translation>
+    </message>
+    <message>
+        <source>Every model&apos;s tick cost against its displacement error (the sweep).</source>
+        <translation>Kos tik setiap model berbanding ralat anjakannya (sapuan).</translation>
+    </message>
+    <message>
+        <source>&amp;Feel</source>
+        <translation>&amp;Rasa</translation>
+    </message>
+    <message>
+        <source>Every model&apos;s largest force step while sliding at constant depth, against its tick cost (palpate-cli bench feel).</source>
+        <translation>Lompatan daya terbesar setiap model semasa menggelongsor pada kedalaman tetap, berbanding kos tiknya (palpate-cli bench feel).</translation>
     </message>
 </context>
 <context>
@@ -1274,6 +1294,128 @@
     <message>
         <source>tick budget</source>
         <translation>bajet tik</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::FeelChart</name>
+    <message>
+        <source>No feel bench yet</source>
+        <translation>Belum ada penanda aras haptik</translation>
+    </message>
+    <message>
+        <source>a slide at %1 mm depth, %2 mm/s (circles: sphere, squares: stomach); goal: step ≤ %3 % of the mean force (dashed)</source>
+        <translation>gelongsor pada kedalaman %1 mm, %2 mm/s (bulatan: sfera, segi empat: perut); sasaran: lompatan ≤ %3 % daripada daya purata (putus-putus)</translation>
+    </message>
+    <message>
+        <source>What the hand feels: force step against tick cost</source>
+        <translation>Apa yang dirasai tangan: lompatan daya berbanding kos tik</translation>
+    </message>
+    <message>
+        <source>sphere</source>
+        <translation>sfera</translation>
+    </message>
+    <message>
+        <source>stomach</source>
+        <translation>perut</translation>
+    </message>
+    <message>
+        <source>goal</source>
+        <translation>sasaran</translation>
+    </message>
+    <message>
+        <source>Tick cost (× the paper&apos;s previous method, log scale)</source>
+        <translation>Kos tik (× kaedah previous kertas kerja, skala log)</translation>
+    </message>
+    <message>
+        <source>Tick cost (µs, log scale)</source>
+        <translation>Kos tik (µs, skala log)</translation>
+    </message>
+    <message>
+        <source>Largest force step (% of the mean force, log scale)</source>
+        <translation>Lompatan daya terbesar (% daripada daya purata, skala log)</translation>
+    </message>
+    <message>
+        <source>goal: step ≤ %1 %</source>
+        <translation>sasaran: lompatan ≤ %1 %</translation>
+    </message>
+    <message>
+        <source>%1, %2 %3 vertices
+largest step %4 % (normal %5 %), ripple %6 %
+tick %7 µs, %8x faster than previous</source>
+        <translation>%1, %2 %3 bucu
+lompatan terbesar %4 % (normal %5 %), riak %6 %
+tik %7 µs, %8x lebih pantas daripada previous</translation>
+    </message>
+    <message>
+        <source>Tick cost (× previous, log)</source>
+        <translation>Kos tik (× previous, log)</translation>
+    </message>
+    <message>
+        <source>Tick cost (µs, log)</source>
+        <translation>Kos tik (µs, log)</translation>
+    </message>
+    <message>
+        <source>Largest step (% of mean force)</source>
+        <translation>Lompatan terbesar (% daya purata)</translation>
+    </message>
+    <message>
+        <source>Feel: force step against tick cost</source>
+        <translation>Rasa: lompatan daya berbanding kos tik</translation>
+    </message>
+    <message>
+        <source>slide %1 mm deep at %2 mm/s; goal: step ≤ %3 % (dashed)</source>
+        <translation>gelongsor sedalam %1 mm pada %2 mm/s; sasaran: lompatan ≤ %3 % (putus-putus)</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::FeelPanel</name>
+    <message>
+        <source>No feel bench loaded: palpate-cli bench feel --csv FILE, then Open feel CSV</source>
+        <translation>Tiada penanda aras rasa dimuatkan: palpate-cli bench feel --csv FAIL, kemudian Buka CSV rasa</translation>
+    </message>
+    <message>
+        <source>&amp;Open feel CSV…</source>
+        <translation>&amp;Buka CSV rasa…</translation>
+    </message>
+    <message>
+        <source>Show a feel bench saved as CSV (palpate-cli bench feel --csv): every model&apos;s largest force step while sliding at constant depth, against its tick cost.</source>
+        <translation>Tunjukkan penanda aras rasa yang disimpan sebagai CSV (palpate-cli bench feel --csv): lompatan daya terbesar setiap model semasa menggelongsor pada kedalaman tetap, berbanding kos tiknya.</translation>
+    </message>
+    <message>
+        <source>Tick &amp;cost:</source>
+        <translation>Kos &amp;tik:</translation>
+    </message>
+    <message>
+        <source>× previous</source>
+        <translation>× previous</translation>
+    </message>
+    <message>
+        <source>µs</source>
+        <translation>µs</translation>
+    </message>
+    <message>
+        <source>The tick cost as a fraction of the paper&apos;s previous method&apos;s, measured in the same run on the same mesh, or in microseconds on the machine that ran the bench.</source>
+        <translation>Kos tik sebagai pecahan kos kaedah previous kertas kerja, diukur dalam larian yang sama pada jejaring yang sama, atau dalam mikrosaat pada mesin yang menjalankan penanda aras.</translation>
+    </message>
+    <message>
+        <source>Loaded %1: %2 of %3 points above the goal (step ≤ %4 % of the mean force).</source>
+        <translation>%1 dimuatkan: %2 daripada %3 titik di atas sasaran (lompatan ≤ %4 % daripada daya purata).</translation>
+    </message>
+    <message>
+        <source>%1: cannot be read (%2)</source>
+        <translation>%1: tidak dapat dibaca (%2)</translation>
+    </message>
+    <message>
+        <source>%1: no rows (only the header)</source>
+        <translation>%1: tiada baris (hanya pengepala)</translation>
+    </message>
+    <message>
+        <source>Open feel CSV</source>
+        <translation>Buka CSV rasa</translation>
+    </message>
+    <message>
+        <source>Feel bench CSV (*.csv);;All files (*)</source>
+        <translation>CSV penanda aras rasa (*.csv);;Semua fail (*)</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,7 @@
 
 #include "engine/accuracy/SweepCsv.h"
 #include "app/report/SpeedAccuracyChart.h"
+#include "widgets/FeelPanel.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -19,6 +20,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QTabWidget>
 #include <QThread>
 #include <QVBoxLayout>
 
@@ -120,14 +122,27 @@ ChartsPanel::ChartsPanel(QWidget* parent) : QWidget(parent) {
     fileRow->addWidget(mSaveButton);
     fileRow->addStretch(1);
 
+    // The sweep's chart and the feel chart on two tabs: a dock is narrow and short, and stacked the
+    // two charts (each with its legend and buttons) had less than their minimum height.
+    auto* sweep = new QWidget(this);
+    sweep->setObjectName(QStringLiteral("sweepSection"));
+    auto* sweepLayout = new QVBoxLayout(sweep);
+    sweepLayout->addWidget(mChart, 1);
+    sweepLayout->addWidget(mLegendLabel);
+    sweepLayout->addWidget(mCurrentLabel);
+    sweepLayout->addLayout(runRow);
+    sweepLayout->addWidget(mProgress);
+    sweepLayout->addWidget(mStatusLabel);
+    sweepLayout->addLayout(fileRow);
+    mFeelPanel = new FeelPanel(this);
+    mTabs = new QTabWidget(this);
+    mTabs->setObjectName(QStringLiteral("chartsTabs"));
+    mTabs->setDocumentMode(true);
+    mTabs->addTab(sweep, QString());
+    mTabs->addTab(mFeelPanel, QString());
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(mChart, 1);
-    layout->addWidget(mLegendLabel);
-    layout->addWidget(mCurrentLabel);
-    layout->addLayout(runRow);
-    layout->addWidget(mProgress);
-    layout->addWidget(mStatusLabel);
-    layout->addLayout(fileRow);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(mTabs);
 
     retranslateUi();
     updateShapeCombo();
@@ -161,6 +176,11 @@ void ChartsPanel::retranslateUi() {
     mShapeCombo->setToolTip(tr("The shape whose points are drawn (each shape has its own Pareto front)."));
     mChart->setEmptyHint(tr("No sweep loaded: press Run sweep"));
     mProgress->setFormat(tr("%p %"));
+    mTabs->setTabText(0, tr("&Speed vs. accuracy"));
+    mTabs->setTabToolTip(0, tr("Every model's tick cost against its displacement error (the sweep)."));
+    mTabs->setTabText(1, tr("&Feel"));
+    mTabs->setTabToolTip(1, tr("Every model's largest force step while sliding at constant depth, against its tick cost "
+                               "(palpate-cli bench feel)."));
     for (int i = 0; i < mShapeCombo->count(); ++i)
         mShapeCombo->setItemText(i, SpeedAccuracyChart::shapeTitle(GeneratedShape(mShapeCombo->itemData(i).toInt())));
     updateHighlight();
@@ -189,6 +209,7 @@ void ChartsPanel::showEvent(QShowEvent* event) {
 void ChartsPanel::loadDefaultCsvOnce() {
     if (mDefaultTried) return;
     mDefaultTried = true;
+    mFeelPanel->loadDefaultCsvOnce();
     if (!mDefaultCsv.isEmpty() && points().empty() && !isRunning() && QFileInfo::exists(mDefaultCsv)) loadCsv(mDefaultCsv);
 }
 

@@ -3,6 +3,8 @@
 // a sweep that runs off the GUI thread (progress, cancel) and the sweep CSV, so that a committed
 // sweep (docs/bench/sweep.csv) is shown without measuring again. Measuring a sweep takes minutes;
 // the window stays responsive and the haptic loop is not touched (the sweep builds its own models).
+// On a second tab, the feel chart (FeelPanel: force step against tick cost, from the feel bench's
+// CSV, docs/bench/feel.csv).
 
 #include "engine/models/slopering/SlopeRingMethod.h"
 #include "engine/scene/TissuePreset.h"
@@ -21,10 +23,12 @@ class QComboBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QTabWidget;
 class QThread;
 
 namespace palpate {
 
+class FeelPanel;
 class SpeedAccuracyChart;
 
 class ChartsPanel final : public QWidget {
@@ -35,6 +39,10 @@ public:
     ~ChartsPanel() override;
 
     SpeedAccuracyChart* chart() const { return mChart; }
+    /// The feel chart on the second tab (its own CSV and default file).
+    FeelPanel* feelPanel() const { return mFeelPanel; }
+    /// The two tabs: the sweep's chart (0) and the feel chart (1).
+    QTabWidget* tabs() const { return mTabs; }
     const std::vector<SweepPoint>& points() const;
 
     /// The configuration in use: highlighted on the chart (its series on `meshVertices` vertices),
@@ -56,7 +64,8 @@ public:
     bool saveCsv(const QString& path, QString* error = nullptr);
     /// Loaded when the panel is first seen (in a dock: its tab in front), if it exists and nothing is shown yet.
     void setDefaultCsv(const QString& path) { mDefaultCsv = path; }
-    /// Loads the default CSV the first time this is called (when the panel can first be seen).
+    /// Loads the default CSV (and the feel panel's) the first time this is called (when the panel
+    /// can first be seen).
     void loadDefaultCsvOnce();
 
     /// The line under the chart: what is shown, the run's progress or the last problem.
@@ -93,6 +102,8 @@ private:
     void onFinished(const SweepResult& result, const QString& error);
 
     SpeedAccuracyChart* mChart = nullptr;
+    FeelPanel* mFeelPanel = nullptr;
+    QTabWidget* mTabs = nullptr;
     QPushButton* mRunButton = nullptr;
     QCheckBox* mQuickCheck = nullptr;
     QPushButton* mCancelButton = nullptr;

@@ -136,8 +136,9 @@ void writeCsv(const std::vector<Table1Row>& rows, std::ostream& out) {
 
 int benchCommand(const std::vector<std::string>& words) {
     if (!words.empty() && words.front() == "models") return benchModelsCommand({words.begin() + 1, words.end()});
+    if (!words.empty() && words.front() == "feel") return benchFeelCommand({words.begin() + 1, words.end()});
     if (words.empty() || words.front() != "table1") {
-        std::cerr << "bench: needs a subcommand: table1 or models\n";
+        std::cerr << "bench: needs a subcommand: table1, models or feel\n";
         return 2;
     }
     Args args({words.begin() + 1, words.end()}, {"json", "quick"}, {"csv", "repeats"});

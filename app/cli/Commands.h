@@ -9,6 +9,8 @@ int meshCommand(const std::vector<std::string>& words);
 int benchCommand(const std::vector<std::string>& words);
 /// bench models: every deformation model's tick at the Table 1 sizes and 100k (BenchModelsCommand.cpp).
 int benchModelsCommand(const std::vector<std::string>& words);
+/// bench feel: what the hand feels of a slide at constant depth, every model (BenchFeelCommand.cpp).
+int benchFeelCommand(const std::vector<std::string>& words);
 int demoCommand(const std::vector<std::string>& words);
 int loopCommand(const std::vector<std::string>& words);
 int runCommand(const std::vector<std::string>& words);

@@ -14,6 +14,8 @@ void usage(std::ostream& out) {
            "  palpate-cli mesh check FILE\n"
            "  palpate-cli bench table1 [--json] [--csv FILE] [--quick] [--repeats N]\n"
            "  palpate-cli bench models [--json] [--csv FILE] [--quick] [--sizes N,..] [--models NAME,..] [--repeats N] [--budget-s S]\n"
+           "  palpate-cli bench feel [--json] [--csv FILE] [--png FILE] [--quick] [--models NAME,..] [--load N]\n"
+           "                         [--loop-models NAME,..|all|none] [--preset FILE] [--repeats N]\n"
            "  palpate-cli demo [--mesh FILE] [--method previous|hybrid|proposed|coherent] [--json]\n"
            "  palpate-cli loop [--seconds S] [--rate HZ] [--observer-hz 60] [--device URI] [--mesh FILE]\n"
            "                   [--spin-fraction F] [--no-fifo] [--json] [--csv FILE]\n"

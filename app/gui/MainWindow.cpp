@@ -7,6 +7,7 @@
 #include "app/gui/ExerciseController.h"
 #include "app/gui/FirstRun.h"
 #include "widgets/ChartsPanel.h"
+#include "widgets/FeelPanel.h"
 #include "widgets/ExerciseEditorPanel.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/LodPanel.h"
@@ -184,6 +185,7 @@ void MainWindow::createDocks() {
     // The committed sweep (docs/ beside resources/), shown without measuring again when the dock is
     // first shown; without it the chart says how to make one.
     mChartsPanel->setDefaultCsv(QString::fromStdString(cli::findResource("../docs/bench/sweep.csv")));
+    mChartsPanel->feelPanel()->setDefaultCsv(QString::fromStdString(cli::findResource("../docs/bench/feel.csv")));
     updateChartsConfiguration();
     createRecorderDock();
     createExerciseDocks();

@@ -8,10 +8,12 @@
 #include "widgets/RecorderPanel.h"
 
 #include <QApplication>
+#include <QDockWidget>
 #include <QCommandLineParser>
 #include <QIcon>
 #include <QMessageBox>
 #include <QPointer>
+#include <QTabWidget>
 #include <QTimer>
 
 #include <cstdio>
@@ -136,6 +138,15 @@ int main(int argc, char** argv) {
                                         QStringLiteral("NAME"));
     showDialogOption.setFlags(QCommandLineOption::HiddenFromHelp);
     parser.addOption(showDialogOption);
+    // Hidden, for screenshots of a dock tabbed behind another: brings the dock whose object name is
+    // NAME + "Dock" to the front, and with NAME:TAB the tab of its tab widget whose page's object name
+    // starts with TAB (charts:feel: the feel chart).
+    QCommandLineOption showDockOption(QStringLiteral("show-dock"),
+                                      QStringLiteral("Bring a dock (and a tab in it) to the front: parameters, device, "
+                                                     "charts, charts:feel, ... (for screenshots)."),
+                                      QStringLiteral("NAME[:TAB]"));
+    showDockOption.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(showDockOption);
     parser.process(app);  // exits with 0 on --help/--version and with 1 on unknown options
     if (parser.isSet(benchmarkOption))
         return palpate::runViewportBenchmark(parser.value(secondsOption), parser.isSet(softwareOption));
@@ -271,6 +282,28 @@ int main(int argc, char** argv) {
     window.resize(kWindowWidthPx, kWindowHeightPx);
     window.show();
     if (interactive) palpate::maybeShowWelcome(window);
+    if (parser.isSet(showDockOption)) {
+        const QStringList parts = parser.value(showDockOption).split(QLatin1Char(':'));
+        auto* dock = window.findChild<QDockWidget*>(parts.front() + QStringLiteral("Dock"));
+        if (!dock) {
+            std::fprintf(stderr, "palpate: --show-dock: no dock named '%s'\n", qPrintable(parts.front()));
+            return 2;
+        }
+        dock->show();
+        dock->raise();
+        if (parts.size() > 1) {
+            auto* tabs = dock->findChild<QTabWidget*>();
+            int page = -1;
+            for (int i = 0; tabs && i < tabs->count(); ++i)
+                if (tabs->widget(i)->objectName().startsWith(parts[1])) page = i;
+            if (page < 0) {
+                std::fprintf(stderr, "palpate: --show-dock: the %s dock has no tab '%s'\n", qPrintable(parts.front()),
+                             qPrintable(parts[1]));
+                return 2;
+            }
+            tabs->setCurrentIndex(page);
+        }
+    }
     const QPointer<QWidget> shownDialog =
         parser.isSet(showDialogOption) ? palpate::showFirstRunDialog(window, parser.value(showDialogOption)) : nullptr;
     if (parser.isSet(openRecordingOption)) {

@@ -1,5 +1,6 @@
 #include "app/report/SweepChartImage.h"
 
+#include "app/report/ChartApplication.h"
 #include "app/report/SpeedAccuracyChart.h"
 
 #include <QApplication>
@@ -20,39 +21,6 @@ namespace {
 constexpr int kMinSidePx = 200;
 constexpr int kMaxSidePx = 16000;
 
-/// A QApplication for a process that has none (palpate-cli). Rendering to a file needs no window:
-/// unless QT_QPA_PLATFORM chooses a platform, the offscreen one is used, so that a PNG is the same
-/// with or without a display and never opens a connection to one.
-std::unique_ptr<QApplication> makeApplication() {
-    static int argc = 1;
-    static char name[] = "palpate-cli";
-    static char platformFlag[] = "-platform";
-    static char offscreen[] = "offscreen";
-    static char* argv[] = {name, platformFlag, offscreen, nullptr};
-    argc = qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") ? 3 : 1;
-    return std::make_unique<QApplication>(argc, argv);
-}
-
-/// While palpate-cli's own QApplication draws: drops the offscreen platform's notices that say
-/// nothing about the PNG (no XDG_RUNTIME_DIR, no window size hints); every other message passes.
-class QuietQt {
-public:
-    QuietQt() { sPrevious = qInstallMessageHandler(&QuietQt::handle); }
-    ~QuietQt() { qInstallMessageHandler(sPrevious); }
-    QuietQt(const QuietQt&) = delete;
-    QuietQt& operator=(const QuietQt&) = delete;
-
-private:
-    static void handle(QtMsgType type, const QMessageLogContext& context, const QString& message) {
-        if (type != QtCriticalMsg && type != QtFatalMsg &&
-            (message.contains(QLatin1String("XDG_RUNTIME_DIR")) || message.contains(QLatin1String("propagateSizeHints"))))
-            return;
-        if (sPrevious) sPrevious(type, context, message);
-        else std::fprintf(stderr, "%s\n", qPrintable(message));
-    }
-    static inline QtMessageHandler sPrevious = nullptr;
-};
-
 }  // namespace
 
 bool renderSweepChartPng(const std::vector<SweepPoint>& points, const std::string& path, std::string* error, int widthPx,
@@ -70,14 +38,8 @@ bool renderSweepChartPng(const std::vector<SweepPoint>& points, const std::optio
         return fail("image size " + std::to_string(widthPx) + "x" + std::to_string(heightPx) + " px is outside " +
                     std::to_string(kMinSidePx) + ".." + std::to_string(kMaxSidePx) + " px");
     if (path.empty()) return fail("no file name");
-    std::optional<QuietQt> quiet;  // declared first: outlives the application below
-    std::unique_ptr<QApplication> ownApplication;
-    if (!QCoreApplication::instance()) {
-        quiet.emplace();
-        ownApplication = makeApplication();
-    } else if (!qobject_cast<QApplication*>(QCoreApplication::instance())) {
-        return fail("the chart needs a QApplication (widgets); this process runs a non-widget Qt application");
-    }
+    const ChartApplication application;
+    if (!application.problem().empty()) return fail(application.problem());
 
     QImage image(widthPx, heightPx, QImage::Format_RGB32);
     image.fill(Qt::white);
