@@ -66,7 +66,7 @@ struct FeelRow {
     FeelMetrics metrics;
     /// The dynamic friction coefficient the model renders (renderedFriction); nullopt: none.
     std::optional<double> dynamicFriction;
-    double tickNs = 0.0;          ///< mean step() + positionsMm(), as the loop's tick uses the model
+    double tickNs = 0.0;          ///< mean tick as the loop runs it: step, divergence guard, snapshot copy
     double previousTickNs = 0.0;  ///< the same for "previous" on the same mesh, same run
     int timingPasses = 0;
     std::optional<LoopFeel> quiet;   ///< threaded, nothing beside it

@@ -17,14 +17,6 @@ SurfaceWalk::SurfaceWalk(const TissueMesh& mesh) : mMesh(mesh) {
     const auto& triangles = mesh.triangles();
     const std::size_t n = mesh.vertexCount();
     mAcross.assign(3 * triangles.size(), kNoTriangle);
-    mFanStart.assign(n + 1, 0);
-    for (const auto& t : triangles)
-        for (VertexId v : t) ++mFanStart[v + 1];
-    for (std::size_t v = 0; v < n; ++v) mFanStart[v + 1] += mFanStart[v];
-    mFan.resize(mFanStart[n]);
-    std::vector<std::uint32_t> fill(mFanStart.begin(), mFanStart.end() - 1);
-    for (TriangleId t = 0; t < triangles.size(); ++t)
-        for (VertexId v : triangles[t]) mFan[fill[v]++] = t;
     // Edge (i, j), i < j -> the first triangle seen with it and its corner opposite the edge. A
     // non-manifold edge (three or more triangles) keeps the first pair.
     std::unordered_map<std::uint64_t, std::pair<TriangleId, int>> open;

@@ -46,8 +46,8 @@ public:
     /// The triangle across the edge opposite corner k of triangle t (kNoTriangle on a boundary).
     TriangleId across(TriangleId t, int k) const { return mAcross[3 * std::size_t(t) + std::size_t(k)]; }
     /// The triangles around vertex v.
-    const TriangleId* fanBegin(VertexId v) const { return mFan.data() + mFanStart[v]; }
-    const TriangleId* fanEnd(VertexId v) const { return mFan.data() + mFanStart[v + 1]; }
+    const TriangleId* fanBegin(VertexId v) const { return mMesh.fanTriangles().data() + mMesh.fanStart()[v]; }
+    const TriangleId* fanEnd(VertexId v) const { return mMesh.fanTriangles().data() + mMesh.fanStart()[v + 1]; }
 
     static constexpr int kMaxSteps = 64;
 
@@ -55,9 +55,7 @@ private:
     TrianglePoint closest(const glm::vec3& p, TriangleId t) const;
 
     const TissueMesh& mMesh;
-    std::vector<TriangleId> mAcross;          // 3 per triangle
-    std::vector<std::uint32_t> mFanStart;     // CSR over vertices
-    std::vector<TriangleId> mFan;
+    std::vector<TriangleId> mAcross;  // 3 per triangle
 };
 
 }  // namespace palpate

@@ -415,6 +415,18 @@ TissueMesh::LoadResult MeshBuilder::build(std::vector<glm::vec3> positions,
     mesh.mNeighbours.reserve(mesh.mNeighbourStart.back());
     for (auto& a : adjacency) mesh.mNeighbours.insert(mesh.mNeighbours.end(), a.begin(), a.end());
 
+    // The triangles around each vertex (CSR), in triangle order.
+    mesh.mFanStart.assign(n + 1, 0);
+    for (const auto& t : mesh.mTriangles)
+        for (VertexId v : t) ++mesh.mFanStart[v + 1];
+    for (std::size_t v = 0; v < n; ++v) mesh.mFanStart[v + 1] += mesh.mFanStart[v];
+    mesh.mFanTriangles.resize(mesh.mFanStart[n]);
+    {
+        std::vector<std::uint32_t> fill(mesh.mFanStart.begin(), mesh.mFanStart.end() - 1);
+        for (std::uint32_t t = 0; t < mesh.mTriangles.size(); ++t)
+            for (VertexId v : mesh.mTriangles[t]) mesh.mFanTriangles[fill[v]++] = t;
+    }
+
     mesh.mBoundsMin = glm::vec3(lo);
     mesh.mBoundsMax = glm::vec3(hi);
     report.vertexCount = n;

@@ -58,6 +58,9 @@ public:
     /// Compressed adjacency: neighbours of v are mNeighbours[mNeighbourStart[v] .. mNeighbourStart[v+1]).
     const std::vector<std::uint32_t>& neighbourStart() const { return mNeighbourStart; }
     const std::vector<VertexId>& neighbours() const { return mNeighbours; }
+    /// The triangles around each vertex (CSR): those of v are fanTriangles()[fanStart()[v] .. [v + 1]).
+    const std::vector<std::uint32_t>& fanStart() const { return mFanStart; }
+    const std::vector<std::uint32_t>& fanTriangles() const { return mFanTriangles; }
     const std::vector<VertexId>& originalIndex() const { return mOriginalIndex; }
     const MeshReport& report() const { return mReport; }
     std::size_t maxValence() const { return mMaxValence; }
@@ -75,6 +78,8 @@ private:
     std::vector<std::array<VertexId, 3>> mTriangles;
     std::vector<std::uint32_t> mNeighbourStart;
     std::vector<VertexId> mNeighbours;
+    std::vector<std::uint32_t> mFanStart;
+    std::vector<std::uint32_t> mFanTriangles;
     std::vector<VertexId> mOriginalIndex;
     MeshReport mReport;
     std::size_t mMaxValence = 0;

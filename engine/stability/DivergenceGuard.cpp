@@ -27,21 +27,16 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 template <typename PositionOf>
 bool fanInvertedWith(const TissueMesh& mesh, const PositionOf& positionOf, VertexId v) {
     if (v >= mesh.vertexCount()) return false;
-    const auto& start = mesh.neighbourStart();
-    const auto& nb = mesh.neighbours();
+    const auto& start = mesh.fanStart();
+    const auto& fan = mesh.fanTriangles();
     const auto& rest = mesh.restPositionsMm();
-    const auto adjacent = [&](VertexId a, VertexId b) {
-        return std::binary_search(nb.begin() + start[a], nb.begin() + start[a + 1], b);  // sorted per vertex
-    };
-    const glm::vec3 pv = positionOf(v);
-    for (std::uint32_t i = start[v]; i < start[v + 1]; ++i)
-        for (std::uint32_t k = i + 1; k < start[v + 1]; ++k) {
-            const VertexId a = nb[i], b = nb[k];
-            if (!adjacent(a, b)) continue;  // (v, a, b) is a triangle of v's fan
-            const glm::vec3 restNormal = glm::cross(rest[a] - rest[v], rest[b] - rest[v]);
-            const glm::vec3 nowNormal = glm::cross(positionOf(a) - pv, positionOf(b) - pv);
-            if (glm::dot(restNormal, nowNormal) <= 0.0f) return true;
-        }
+    for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
+        const auto& t = mesh.triangles()[fan[i]];
+        const glm::vec3 restNormal = glm::cross(rest[t[1]] - rest[t[0]], rest[t[2]] - rest[t[0]]);
+        const glm::vec3 p0 = positionOf(t[0]);
+        const glm::vec3 nowNormal = glm::cross(positionOf(t[1]) - p0, positionOf(t[2]) - p0);
+        if (glm::dot(restNormal, nowNormal) <= 0.0f) return true;
+    }
     return false;
 }
 

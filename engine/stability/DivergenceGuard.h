@@ -60,7 +60,7 @@ public:
 
     /// True when a triangle (t, j, k) of v's fan has turned over: its normal from the current
     /// positions points against the one from the rest positions (orientation-free: the same vertex
-    /// order on both sides). The fan is found from the adjacency alone. Real-time safe.
+    /// order on both sides). The fan is the mesh's triangles around v. Real-time safe.
     static bool fanInverted(const TissueMesh& mesh, std::span<const glm::vec3> positionsMm, VertexId v);
 
     const DivergenceGuardDef& def() const { return mDef; }
