@@ -2913,10 +2913,6 @@ Pausiert: %13</translation>
         <translation>α·(1 + Verstärkung) = %1 ≥ 2: instabil (die Oberfläche schwingt und wächst)</translation>
     </message>
     <message>
-        <source>α·(1 + gain) = %1 &lt; 2: stability margin %2&#xa0;%</source>
-        <translation>α·(1 + Verstärkung) = %1 &lt; 2: Stabilitätsreserve %2&#xa0;%</translation>
-    </message>
-    <message>
         <source>Stability margin: needs the mesh (the mass-spring step bound depends on its springs)</source>
         <translation>Stabilitätsreserve: braucht das Netz (die Schrittgrenze des Masse-Feder-Modells hängt von seinen Federn ab)</translation>
     </message>
@@ -2927,14 +2923,6 @@ Pausiert: %13</translation>
     <message>
         <source>Stability margin %1&#xa0;%</source>
         <translation>Stabilitätsreserve %1&#xa0;%</translation>
-    </message>
-    <message>
-        <source>How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the explicit mass-spring integrators&apos; step bound h·ω_max &lt; 2 (RK4 2.78), ω_max from Gershgorin&apos;s bound and the sub-steps the model takes; for radius of influence and FFD the rendered stiffness k_s against the device&apos;s passive stiffness (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has none.</source>
-        <translation>Wie weit der Satz von seiner hergeleiteten Stabilitätsgrenze bei der Haptikrate entfernt ist (docs/stability.md): die Schrittgrenze der expliziten Masse-Feder-Integratoren h·ω_max &lt; 2 (RK4 2,78), ω_max aus der Gerschgorin-Schranke und den Teilschritten des Modells; für Einflussradius und FFD die dargestellte Steifigkeit k_s gegenüber der passiven Steifigkeit des Geräts (Colgate und Brown, 1 N/mm bei 1 kHz). Impliziter Euler hat keine.</translation>
-    </message>
-    <message>
-        <source>The contact force iteration converges while α·(1 + gain) &lt; 2, with the loop gain |m1| × k_c (docs/method.md). The margin is how far below 2 it stays: 1 − α·(1 + gain) / 2.</source>
-        <translation>Die Iteration der Kontaktkraft konvergiert, solange α·(1 + Verstärkung) &lt; 2, mit der Schleifenverstärkung |m1| × k_c (docs/method.md). Die Reserve gibt an, wie weit sie unter 2 bleibt: 1 − α·(1 + Verstärkung) / 2.</translation>
     </message>
     <message>
         <source>%1 is outside the paper&apos;s range (0, 1) mm/N: allowed by the slope limit %2 mm/N and the loop-gain bound.</source>
@@ -3173,6 +3161,26 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
     <message>
         <source>While the tool slides, the sideways force is μd times the normal force (0..5, at most μs).</source>
         <translation>Während das Werkzeug gleitet, ist die seitliche Kraft μd mal die Normalkraft (0..5, höchstens μs).</translation>
+    </message>
+    <message>
+        <source>α·(1 + gain) = %1 &lt; 2: loop-gain margin %2&#xa0;%</source>
+        <translation>α·(1 + Verstärkung) = %1 &lt; 2: Reserve der Schleifenverstärkung %2&#xa0;%</translation>
+    </message>
+    <message>
+        <source>Far beyond the stability margin: Apply asks for confirmation</source>
+        <translation>Weit jenseits der Stabilitätsreserve: „Übernehmen“ fragt nach einer Bestätigung</translation>
+    </message>
+    <message>
+        <source>Close to the stability margin: %1&#xa0;% left (warning below %2&#xa0;%)</source>
+        <translation>Nahe an der Stabilitätsgrenze: %1&#xa0;% Reserve (Warnung unter %2&#xa0;%)</translation>
+    </message>
+    <message>
+        <source>The contact force iteration converges while α·(1 + gain) &lt; 2, with the loop gain |m1| × k_c (docs/method.md): the loop-gain margin is 1 − α·(1 + gain) / 2. What the model renders, k_s·|m1|·k_c / (1 + gain) (and, for ours with friction, the proxy&apos;s spring), must stay below the stiffness the device renders passively at the haptic rate (1 N/mm at 1 kHz); a lagging or alternating relaxation (α away from 1 / (1 + gain)) asks more of it (docs/stability.md).</source>
+        <translation>Die Iteration der Kontaktkraft konvergiert, solange α·(1 + Verstärkung) &lt; 2, mit der Schleifenverstärkung |m1| × k_c (docs/method.md): die Reserve der Schleifenverstärkung ist 1 − α·(1 + Verstärkung) / 2. Was das Modell darstellt, k_s·|m1|·k_c / (1 + Verstärkung) (und bei unserem Modell mit Reibung die Feder des Proxys), muss unter der Steifigkeit bleiben, die das Gerät bei der Haptikrate passiv darstellt (1 N/mm bei 1 kHz); eine nachlaufende oder alternierende Relaxation (α abseits von 1 / (1 + Verstärkung)) verlangt mehr davon (docs/stability.md).</translation>
+    </message>
+    <message>
+        <source>How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the explicit mass-spring integrators&apos; step bound h·ω_max &lt; 2 (RK4 2.78), ω_max from Gershgorin&apos;s bound and the sub-steps the model takes; and for every model the stiffness it renders (for mass-spring measured on the mesh) against the stiffness the device renders passively (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has no step bound.</source>
+        <translation>Wie weit der Satz von seiner hergeleiteten Stabilitätsgrenze bei der Haptikrate entfernt ist (docs/stability.md): die Schrittgrenze der expliziten Masse-Feder-Integratoren h·ω_max &lt; 2 (RK4 2,78), ω_max aus der Gerschgorin-Schranke und den Teilschritten des Modells; und für jedes Modell die dargestellte Steifigkeit (bei Masse-Feder am Netz gemessen) gegenüber der Steifigkeit, die das Gerät passiv darstellt (Colgate und Brown, 1 N/mm bei 1 kHz). Impliziter Euler hat keine Schrittgrenze.</translation>
     </message>
 </context>
 <context>

@@ -2912,10 +2912,6 @@ pemapar %4</translation>
         <translation>α·(1 + gandaan) = %1 ≥ 2: tidak stabil (permukaan berayun dan membesar)</translation>
     </message>
     <message>
-        <source>α·(1 + gain) = %1 &lt; 2: stability margin %2&#xa0;%</source>
-        <translation>α·(1 + gandaan) = %1 &lt; 2: margin kestabilan %2&#xa0;%</translation>
-    </message>
-    <message>
         <source>Stability margin: needs the mesh (the mass-spring step bound depends on its springs)</source>
         <translation>Margin kestabilan: memerlukan jejaring (had langkah jisim-spring bergantung pada springnya)</translation>
     </message>
@@ -2926,14 +2922,6 @@ pemapar %4</translation>
     <message>
         <source>Stability margin %1&#xa0;%</source>
         <translation>Margin kestabilan %1&#xa0;%</translation>
-    </message>
-    <message>
-        <source>How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the explicit mass-spring integrators&apos; step bound h·ω_max &lt; 2 (RK4 2.78), ω_max from Gershgorin&apos;s bound and the sub-steps the model takes; for radius of influence and FFD the rendered stiffness k_s against the device&apos;s passive stiffness (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has none.</source>
-        <translation>Sejauh mana set ini daripada had kestabilan terbitannya pada kadar haptik (docs/stability.md): had langkah pengamir jisim-spring eksplisit h·ω_max &lt; 2 (RK4 2.78), ω_max daripada had Gershgorin dan sub-langkah yang diambil oleh model; bagi jejari pengaruh dan FFD, kekakuan k_s yang dipaparkan berbanding kekakuan pasif peranti (Colgate dan Brown, 1 N/mm pada 1 kHz). Euler ke belakang tiada had.</translation>
-    </message>
-    <message>
-        <source>The contact force iteration converges while α·(1 + gain) &lt; 2, with the loop gain |m1| × k_c (docs/method.md). The margin is how far below 2 it stays: 1 − α·(1 + gain) / 2.</source>
-        <translation>Lelaran daya sentuhan menumpu selagi α·(1 + gandaan) &lt; 2, dengan gandaan gelung |m1| × k_c (docs/method.md). Margin ialah sejauh mana ia kekal di bawah 2: 1 − α·(1 + gandaan) / 2.</translation>
     </message>
     <message>
         <source>%1 is outside the paper&apos;s range (0, 1) mm/N: allowed by the slope limit %2 mm/N and the loop-gain bound.</source>
@@ -3172,6 +3160,26 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
     <message>
         <source>While the tool slides, the sideways force is μd times the normal force (0..5, at most μs).</source>
         <translation>Semasa alat menggelongsor, daya sisi ialah μd kali daya normal (0..5, paling banyak μs).</translation>
+    </message>
+    <message>
+        <source>α·(1 + gain) = %1 &lt; 2: loop-gain margin %2&#xa0;%</source>
+        <translation>α·(1 + gandaan) = %1 &lt; 2: margin gandaan gelung %2&#xa0;%</translation>
+    </message>
+    <message>
+        <source>Far beyond the stability margin: Apply asks for confirmation</source>
+        <translation>Jauh melepasi margin kestabilan: Guna meminta pengesahan</translation>
+    </message>
+    <message>
+        <source>Close to the stability margin: %1&#xa0;% left (warning below %2&#xa0;%)</source>
+        <translation>Hampir dengan had kestabilan: tinggal %1&#xa0;% (amaran di bawah %2&#xa0;%)</translation>
+    </message>
+    <message>
+        <source>The contact force iteration converges while α·(1 + gain) &lt; 2, with the loop gain |m1| × k_c (docs/method.md): the loop-gain margin is 1 − α·(1 + gain) / 2. What the model renders, k_s·|m1|·k_c / (1 + gain) (and, for ours with friction, the proxy&apos;s spring), must stay below the stiffness the device renders passively at the haptic rate (1 N/mm at 1 kHz); a lagging or alternating relaxation (α away from 1 / (1 + gain)) asks more of it (docs/stability.md).</source>
+        <translation>Lelaran daya sentuhan menumpu selagi α·(1 + gandaan) &lt; 2, dengan gandaan gelung |m1| × k_c (docs/method.md): margin gandaan gelung ialah 1 − α·(1 + gandaan) / 2. Apa yang dipaparkan oleh model, k_s·|m1|·k_c / (1 + gandaan) (dan, bagi model kami dengan geseran, spring proksi), mesti kekal di bawah kekakuan yang dipaparkan secara pasif oleh peranti pada kadar haptik (1 N/mm pada 1 kHz); pengenduran yang lewat atau berselang-seli (α jauh daripada 1 / (1 + gandaan)) memerlukan lebih daripadanya (docs/stability.md).</translation>
+    </message>
+    <message>
+        <source>How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the explicit mass-spring integrators&apos; step bound h·ω_max &lt; 2 (RK4 2.78), ω_max from Gershgorin&apos;s bound and the sub-steps the model takes; and for every model the stiffness it renders (for mass-spring measured on the mesh) against the stiffness the device renders passively (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has no step bound.</source>
+        <translation>Sejauh mana set ini daripada had kestabilan terbitannya pada kadar haptik (docs/stability.md): had langkah pengamir jisim-spring eksplisit h·ω_max &lt; 2 (RK4 2.78), ω_max daripada had Gershgorin dan sub-langkah yang diambil oleh model; dan bagi setiap model kekakuan yang dipaparkannya (bagi jisim-spring diukur pada jejaring) berbanding kekakuan yang dipaparkan secara pasif oleh peranti (Colgate dan Brown, 1 N/mm pada 1 kHz). Euler ke belakang tiada had langkah.</translation>
     </message>
 </context>
 <context>

@@ -211,7 +211,8 @@ QAbstractSpinBox[invalid="true"]::up-button, QAbstractSpinBox[invalid="true"]::d
 QAbstractSpinBox[outsidePaperRange="true"]::up-button, QAbstractSpinBox[outsidePaperRange="true"]::down-button { width: 16px; }
 QLabel#messageLabel { color: #c62828; }
 QLabel#noteLabel { color: #8a5a00; }
-QLabel#stabilityLabel[unstable="true"] { color: #c62828; }
+QLabel#stabilityLabel[nearLimit="true"] { color: #8a5a00; background-color: #fff3d6; border: 1px solid #e69500; border-radius: 3px; padding: 2px; }
+QLabel#stabilityLabel[unstable="true"] { color: #c62828; background-color: #fff0f0; border: 1px solid #d32f2f; border-radius: 3px; padding: 2px; }
 QLabel#presetTitleLabel { font-weight: bold; }
 )";
 
@@ -876,9 +877,13 @@ void ParameterPanel::setConfirmFunction(ConfirmFunction confirm) { mConfirm = st
 
 std::optional<StabilityMargin> ParameterPanel::stabilityMargin() const {
     const TissuePreset p = presetFromFields();
-    const double dtS = p.hapticRateHz > 0.0 ? 1.0 / p.hapticRateHz : 1e-3;
     const TissueMesh* mesh = mMeshProvider ? mMeshProvider() : nullptr;
-    return stabilityMarginIfKnown(presetModelDef(p), mesh, dtS);
+    if (mMarginOf && mesh == mMarginMesh && samePreset(p, *mMarginOf)) return mMargin;
+    const double dtS = p.hapticRateHz > 0.0 ? 1.0 / p.hapticRateHz : 1e-3;
+    mMargin = stabilityMarginIfKnown(presetModelDef(p), mesh, dtS);
+    mMarginOf = p;
+    mMarginMesh = mesh;
+    return mMargin;
 }
 
 void ParameterPanel::updateModelRows() {
@@ -959,39 +964,60 @@ void ParameterPanel::validate() {
         invalid.insert(mContactSpin);
         invalid.insert(mRelaxationSpin);
     } else {
-        stability += QLatin1Char('\n') + tr("α·(1 + gain) = %1 < 2: stability margin %2\u00a0%")
+        stability += QLatin1Char('\n') + tr("α·(1 + gain) = %1 < 2: loop-gain margin %2\u00a0%")
                                              .arg(number(product))
                                              .arg(locale.toString(100.0 * (1.0 - product / 2.0), 'f', 0));
     }
-    mStabilityLabel->setText(stability);
-    markField(mStabilityLabel, "unstable", unstable);
-    // The other models: their own margin (step bound, or the rendered stiffness against the
-    // device). Beyond it the set is not refused (the validators allow it): Apply asks first.
-    if (!presetUsesSlopeRingParams(p)) {
-        const std::optional<StabilityMargin> margin = stabilityMargin();
-        QString text;
-        bool beyond = false;
-        if (!margin) {
-            text = tr("Stability margin: needs the mesh (the mass-spring step bound depends on its springs)");
-        } else {
-            beyond = !(margin->margin > 0.0);
-            text = (beyond ? tr("Beyond the stability margin (%1 %): Apply asks for confirmation")
-                           : tr("Stability margin %1 %"))
-                       .arg(locale.toString(100.0 * margin->margin, 'f', 0)) +
-                   QLatin1Char('\n') + QString::fromStdString(margin->text);
+    // Every model's margin: the smaller of its own bound and the passivity of what it renders
+    // (docs/stability.md section 7). Beyond it a set the validators allow is not refused: Apply
+    // asks first; below kStabilityMarginWarning the label warns.
+    const bool slopeRing = presetUsesSlopeRingParams(p);
+    const std::optional<StabilityMargin> margin = stabilityMargin();
+    QStringList lines;
+    bool beyond = slopeRing && unstable;
+    bool nearLimit = false;
+    if (!margin) {
+        lines << tr("Stability margin: needs the mesh (the mass-spring step bound depends on its springs)");
+    } else {
+        const QString percent = locale.toString(100.0 * margin->margin, 'f', 0);
+        beyond = beyond || !(margin->margin > 0.0);
+        nearLimit = !beyond && margin->margin < kStabilityMarginWarning;
+        // (A slope-ring set beyond its loop gain says so below, and is refused.)
+        if (beyond && !(slopeRing && unstable)) {
+            // Far beyond (more than twice the limit) a percentage says little; the lines below say how far.
+            lines << (margin->margin >= -1.0
+                          ? tr("Beyond the stability margin (%1\u00a0%): Apply asks for confirmation").arg(percent)
+                          : tr("Far beyond the stability margin: Apply asks for confirmation"));
+        } else if (nearLimit) {
+            lines << tr("Close to the stability margin: %1\u00a0% left (warning below %2\u00a0%)")
+                         .arg(percent, locale.toString(100.0 * kStabilityMarginWarning, 'f', 0));
+        } else if (!beyond) {
+            lines << tr("Stability margin %1\u00a0%").arg(percent);
         }
-        mStabilityLabel->setText(text);
+    }
+    if (slopeRing) lines << stability;  // the loop gain and its bound, shown whether or not the rest is valid
+    if (margin) {
+        QStringList engine = QString::fromStdString(margin->text).split(QLatin1Char('\n'));
+        if (slopeRing && !engine.isEmpty()) engine.removeFirst();  // the loop gain, said above
+        lines << engine;
+    }
+    mStabilityLabel->setText(lines.join(QLatin1Char('\n')));
+    markField(mStabilityLabel, "unstable", beyond);
+    markField(mStabilityLabel, "nearLimit", nearLimit);
+    if (slopeRing) {
+        mStabilityLabel->setToolTip(
+            tr("The contact force iteration converges while α·(1 + gain) < 2, with the loop "
+               "gain |m1| × k_c (docs/method.md): the loop-gain margin is 1 − α·(1 + gain) / 2. What the model "
+               "renders, k_s·|m1|·k_c / (1 + gain) (and, for ours with friction, the proxy's spring), must stay "
+               "below the stiffness the device renders passively at the haptic rate (1 N/mm at 1 kHz); a lagging "
+               "or alternating relaxation (α away from 1 / (1 + gain)) asks more of it (docs/stability.md)."));
+    } else {
         mStabilityLabel->setToolTip(tr(
             "How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the "
             "explicit mass-spring integrators' step bound h·ω_max < 2 (RK4 2.78), ω_max from Gershgorin's bound "
-            "and the sub-steps the model takes; for radius of influence and FFD the rendered stiffness k_s "
-            "against the device's passive stiffness (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has none."));
-        markField(mStabilityLabel, "unstable", beyond);
-    } else {
-        mStabilityLabel->setToolTip(
-            tr("The contact force iteration converges while α·(1 + gain) < 2, with the loop "
-               "gain |m1| × k_c (docs/method.md). The margin is how far below 2 it stays: "
-               "1 − α·(1 + gain) / 2."));
+            "and the sub-steps the model takes; and for every model the stiffness it renders (for mass-spring "
+            "measured on the mesh) against the stiffness the device renders passively (Colgate and Brown, 1 N/mm "
+            "at 1 kHz). Backward Euler has no step bound."));
     }
 
     // Allowed, but not the paper's: slopes above 1 mm/N under a raised limit.
@@ -1043,9 +1069,9 @@ void ParameterPanel::apply() {
     validate();
     if (!mValid) return;
     const TissuePreset p = preset();
-    // Beyond the margin the slope-ring set is invalid (above); the others ask (docs/stability.md section 7).
-    if (!presetUsesSlopeRingParams(p))
-        if (const auto margin = stabilityMargin(); margin && !(margin->margin > 0.0)) {
+    // A slope-ring set beyond its loop gain is invalid (above); beyond the margin otherwise (the
+    // passivity of any model, a mass-spring step bound) Apply asks (docs/stability.md section 7).
+    if (const auto margin = stabilityMargin(); margin && !(margin->margin > 0.0)) {
             const QString title = tr("Beyond the stability margin");
             const QString text =
                 tr("This parameter set is beyond its stability margin:\n%1\n\nThe model may diverge (or the device "

@@ -85,12 +85,17 @@ public:
     /// Replaces how Apply asks for confirmation of a set beyond its stability margin (null: the default box).
     void setConfirmFunction(ConfirmFunction confirm);
     /// The stability margin of the fields' set at the fields' haptic rate (engine/stability/
-    /// StabilityMargin.h), for every model; nullopt when it needs the mesh (mass-spring) and the
-    /// mesh provider gives none. The slope-ring methods and volumetric-rings: 1 - alpha (1 + g) / 2.
+    /// StabilityMargin.h), for every model: the smaller of the model's own bound (the slope-ring
+    /// methods and volumetric-rings: 1 - alpha (1 + g) / 2) and the passivity of what it renders
+    /// against the device; nullopt when it needs the mesh (mass-spring) and the mesh provider gives
+    /// none. Kept while the set and the mesh stay the same (a mass-spring margin measures the model).
     std::optional<StabilityMargin> stabilityMargin() const;
     /// Recomputes the shown margin (call when the mesh provider's mesh changed: a mass-spring
     /// margin depends on it). Records no undo step.
-    void refreshStabilityMargin() { validate(); }
+    void refreshStabilityMargin() {
+        mMarginOf.reset();
+        validate();
+    }
     /// Fills the tissue preset combo from the *.json presets in `directory` (name, source as tooltip).
     void setTissuePresetDirectory(const QString& directory);
     /// The tissue and tool the fields show (E in N/mm^2 as the engine wants it).
@@ -111,8 +116,9 @@ signals:
     void validityChanged(bool valid);
 
 public slots:
-    /// Emits applyRequested if the fields are valid and, beyond the stability margin (a model whose
-    /// validator allows it: mass-spring, radius of influence, FFD), the user confirms.
+    /// Emits applyRequested if the fields are valid and, beyond the stability margin (a set the
+    /// validators allow: any model beyond its passivity; mass-spring beyond its step bound), the
+    /// user confirms.
     void apply();
     void openPresetDialog();
     void savePresetDialog();
@@ -215,6 +221,10 @@ private:
 
     MeshProvider mMeshProvider;
     ConfirmFunction mConfirm;
+    /// The last margin stabilityMargin() computed, for the set and mesh it was computed for.
+    mutable std::optional<TissuePreset> mMarginOf;
+    mutable const TissueMesh* mMarginMesh = nullptr;
+    mutable std::optional<StabilityMargin> mMargin;
     /// The last calibration: what it set, and its result text (error and notes).
     std::optional<SlopeRingParams> mCalibratedParams;
     QString mCalibrationText;

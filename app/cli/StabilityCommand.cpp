@@ -36,8 +36,17 @@ nlohmann::json toJson(const StabilityMap& map) {
         measured.push_back({{"x", b.x}, {"y", number(b.measuredY)}});
         gaps.push_back(number(b.relativeGap));
     }
-    for (const auto& c : map.cells)
-        cells.push_back({{"x", c.x}, {"y", c.y}, {"bounded", c.bounded}, {"growth", number(c.growth)}});
+    for (const auto& c : map.cells) {
+        nlohmann::json cell = {{"x", c.x}, {"y", c.y}, {"bounded", c.bounded}, {"growth", number(c.growth)}};
+        if (map.hasPassivity) {
+            cell["passivity_ratio"] = number(c.passivityRatio);
+            cell["passive"] = c.passivityRatio < 1.0;
+        }
+        cells.push_back(cell);
+    }
+    nlohmann::json passivity = nullptr;
+    if (map.hasPassivity)
+        passivity = {{"formula", map.passivityFormula}, {"ratio", "K_eq / K_device, > 1: not passive"}};
     return {{"model", map.model},
             {"registry_models", stabilityMapModels(map.model)},
             {"description", map.description},
@@ -50,16 +59,21 @@ nlohmann::json toJson(const StabilityMap& map) {
             {"measured_boundary", measured},
             {"relative_gaps", gaps},
             {"relative_gap", number(map.relativeGap)},
+            {"passivity", passivity},
             {"cells", cells}};
 }
 
 std::string csvText(const StabilityMap& map) {
     std::ostringstream out;
-    out << std::setprecision(9) << "kind," << map.x.name << "," << map.y.name << ",bounded,growth,derived_y\n";
-    for (const auto& c : map.cells) out << "cell," << c.x << "," << c.y << "," << (c.bounded ? 1 : 0) << "," << c.growth << ",\n";
+    out << std::setprecision(9) << "kind," << map.x.name << "," << map.y.name
+        << ",bounded,growth,derived_y,passivity_ratio\n";
+    for (const auto& c : map.cells) {
+        out << "cell," << c.x << "," << c.y << "," << (c.bounded ? 1 : 0) << "," << c.growth << ",,";
+        if (map.hasPassivity) out << c.passivityRatio;
+        out << "\n";
+    }
     for (const auto& b : map.boundary)
-        out << "boundary," << b.x << "," << b.measuredY << ",,"
-            << b.relativeGap << "," << b.derivedY << "\n";
+        out << "boundary," << b.x << "," << b.measuredY << ",," << b.relativeGap << "," << b.derivedY << ",\n";
     return out.str();
 }
 
@@ -73,6 +87,12 @@ void printTable(std::ostream& out, const StabilityMap& map) {
             << b.measuredY << std::setw(8) << std::fixed << std::setprecision(2) << 100.0 * b.relativeGap << "%\n"
             << std::defaultfloat;
     out << "  largest gap: " << std::setprecision(3) << 100.0 * map.relativeGap << " %\n";
+    if (map.hasPassivity) {
+        std::size_t passive = 0;
+        for (const auto& c : map.cells) passive += c.passivityRatio < 1.0 ? 1 : 0;
+        out << "  passivity: " << map.passivityFormula << "\n  passive cells: " << passive << " of " << map.cells.size()
+            << "\n";
+    }
 }
 
 }  // namespace

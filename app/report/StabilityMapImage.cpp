@@ -96,7 +96,8 @@ bool renderStabilityMapPng(const StabilityMap& map, const std::string& path, std
         QFont font = p.font();
         font.setPixelSize(std::max(12, heightPx / 50));
         p.setFont(font);
-        const int left = widthPx / 9, right = widthPx / 40, top = heightPx * 2 / 13, bottom = heightPx / 9;
+        const int left = widthPx / 9, right = widthPx / 40, bottom = heightPx / 9;
+        const int top = map.hasPassivity ? heightPx * 2 / 11 : heightPx * 2 / 13;  // one more legend line
         const QRectF plot(left, top, widthPx - left - right, heightPx - top - bottom);
         const auto px = [&](double x) { return plot.left() + fraction(map.x, x) * plot.width(); };
         const auto py = [&](double y) { return plot.bottom() - fraction(map.y, y) * plot.height(); };
@@ -127,6 +128,42 @@ bool renderStabilityMapPng(const StabilityMap& map, const std::string& path, std
             const auto j = std::size_t(std::find(ys.begin(), ys.end(), c.y) - ys.begin());
             const QRectF r(QPointF(xe[i], ye[j + 1]), QPointF(xe[i + 1], ye[j]));
             p.fillRect(r.normalized(), c.bounded ? boundedColour : divergentColour);
+        }
+
+        // Passivity: the part of the plane the device cannot render passively, hatched, and its
+        // boundary (where K_eq crosses the device's passive stiffness) as a dashed line along the
+        // fine grid's cell edges.
+        const QColor passivityColour(200, 90, 0);
+        if (map.hasPassivity && map.passivity.columns > 1 && map.passivity.rows > 1) {
+            const PassivityGrid& g = map.passivity;
+            std::vector<double> gx, gy;
+            for (int i = 0; i < g.columns; ++i) gx.push_back(axisValue(map.x, i, g.columns));
+            for (int j = 0; j < g.rows; ++j) gy.push_back(axisValue(map.y, j, g.rows));
+            const auto gxe = edges(gx, px, plot.left(), plot.right());
+            const auto gye = edges(gy, py, plot.bottom(), plot.top());
+            const auto beyond = [&](int i, int j) { return !(g.ratio[std::size_t(j * g.columns + i)] < 1.0); };
+            QPainterPath region;
+            for (int j = 0; j < g.rows; ++j)
+                for (int i = 0; i < g.columns; ++i)
+                    if (beyond(i, j))
+                        region.addRect(QRectF(QPointF(gxe[std::size_t(i)], gye[std::size_t(j + 1)]),
+                                              QPointF(gxe[std::size_t(i + 1)], gye[std::size_t(j)]))
+                                           .normalized());
+            p.setPen(Qt::NoPen);
+            p.setBrush(QBrush(QColor(passivityColour.red(), passivityColour.green(), passivityColour.blue(), 150),
+                              Qt::BDiagPattern));
+            p.drawPath(region.simplified());
+            p.setBrush(Qt::NoBrush);
+            p.setPen(QPen(passivityColour, 2.5, Qt::DashLine));
+            for (int j = 0; j < g.rows; ++j)
+                for (int i = 0; i < g.columns; ++i) {
+                    const auto x0 = gxe[std::size_t(i)], x1 = gxe[std::size_t(i + 1)];
+                    const auto y0 = gye[std::size_t(j)], y1 = gye[std::size_t(j + 1)];
+                    if (i + 1 < g.columns && beyond(i, j) != beyond(i + 1, j))
+                        p.drawLine(QPointF(x1, y0), QPointF(x1, y1));
+                    if (j + 1 < g.rows && beyond(i, j) != beyond(i, j + 1))
+                        p.drawLine(QPointF(x0, y1), QPointF(x1, y1));
+                }
         }
 
         // Grid and axes.
@@ -217,6 +254,18 @@ bool renderStabilityMapPng(const StabilityMap& map, const std::string& path, std
         p.drawText(QPointF(lx + 24, ly),
                    fm.elidedText(QStringLiteral("derived: ") + QString::fromStdString(map.derivedFormula), Qt::ElideRight,
                                  int(widthPx - left - right - 24)));
+        if (map.hasPassivity) {
+            ly += lineHeight;
+            const QRectF swatchRect(lx, ly - fm.ascent() + 2, 18, fm.ascent() - 2);
+            p.fillRect(swatchRect, QBrush(passivityColour, Qt::BDiagPattern));
+            p.setPen(QPen(passivityColour, 2.5, Qt::DashLine));
+            p.setBrush(Qt::NoBrush);
+            p.drawRect(swatchRect);
+            p.setPen(Qt::black);
+            p.drawText(QPointF(lx + 24, ly),
+                       fm.elidedText(QStringLiteral("not passive: ") + QString::fromStdString(map.passivityFormula),
+                                     Qt::ElideRight, int(widthPx - left - right - 24)));
+        }
     }
     QImageWriter writer(QString::fromStdString(path), "png");
     const bool written = writer.write(image);

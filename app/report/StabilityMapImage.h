@@ -1,7 +1,8 @@
 #pragma once
 // A stability map as a PNG, for palpate-cli stability --png (a process with no QApplication): the
 // cells coloured bounded/divergent, the derived boundary drawn over them as a line and the measured
-// one as markers, log axes where the map's axes are log.
+// one as markers, the region the device cannot render passively hatched (where the map has
+// passivity), log axes where the map's axes are log.
 
 #include "engine/stability/StabilityMap.h"
 

@@ -105,6 +105,41 @@ double sampledWallMaxStiffnessNPerMm(double m, double b, double T) {
     return std::min(fromDeterminant, fromMass) / 1000.0;  // N/m -> N/mm
 }
 
+bool slopeRingDeviceLoopStable(double K, double lambda, double m, double b, double T) {
+    // Exact discretisation of m x'' + b x' = -R over a period (R held): x' = x + a v - (R / b)(T - a),
+    // v' = delta v - (1 - delta) R / b, a = tau (1 - delta); R_n = lambda R_{n-1} + c x_n, c = K (1 - lambda).
+    const double tau = m / b;
+    const double oneMinusDelta = -std::expm1(-T / tau), delta = 1.0 - oneMinusDelta;
+    const double a = tau * oneMinusDelta;
+    const double c = K * (1.0 - lambda);
+    const double px = (T - a) / b, pv = oneMinusDelta / b;  // x and v per unit of held force
+    const double A[3][3] = {{1.0 - px * c, a, -px * lambda}, {-pv * c, delta, -pv * lambda}, {c, 0.0, lambda}};
+    const auto minor = [&](int i, int j) { return A[i][i] * A[j][j] - A[i][j] * A[j][i]; };
+    const double trace = A[0][0] + A[1][1] + A[2][2];
+    const double minors = minor(0, 1) + minor(0, 2) + minor(1, 2);
+    const double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
+                       A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+                       A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+    // z^3 + a2 z^2 + a1 z + a0; Jury: |a0| < 1, p(1) > 0, p(-1) < 0, |a0^2 - 1| > |a0 a2 - a1|.
+    const double a2 = -trace, a1 = minors, a0 = -det;
+    return std::abs(a0) < 1.0 && 1.0 + a2 + a1 + a0 > 0.0 && -1.0 + a2 - a1 + a0 < 0.0 &&
+           std::abs(a0 * a0 - 1.0) > std::abs(a0 * a2 - a1);
+}
+
+double slopeRingDeviceLoopMaxStiffnessNPerMm(double lambda, double m, double b, double T) {
+    if (!(m > 0.0) || !(b > 0.0) || !(T > 0.0) || !(std::abs(lambda) < 1.0)) return 0.0;
+    // Stable for small K (the device's own damping), unstable for large: bisect in log K (N/m),
+    // starting from a bracket around Colgate's 2 b / T.
+    double lo = 1e-3 * 2.0 * b / T, hi = 1e4 * 2.0 * b / T;
+    if (!slopeRingDeviceLoopStable(lo, lambda, m, b, T)) return 0.0;
+    if (slopeRingDeviceLoopStable(hi, lambda, m, b, T)) return kNoBound;
+    for (int i = 0; i < 80; ++i) {
+        const double mid = std::sqrt(lo * hi);
+        (slopeRingDeviceLoopStable(mid, lambda, m, b, T) ? lo : hi) = mid;
+    }
+    return lo / 1000.0;  // N/m -> N/mm
+}
+
 double inversionMaxTangentialForceN(double m1, double m2, double height) {
     const double relative = std::abs(std::abs(m1) - std::abs(m2));
     return relative > 0.0 ? height / relative : kNoBound;

@@ -56,6 +56,18 @@ double passiveMaxStiffnessNPerMm(double deviceDampingNsPerMm, double periodS, do
 /// while b T / m is small). The smaller one, in N/mm (inputs SI).
 double sampledWallMaxStiffnessNPerMm(double deviceMassKg, double deviceDampingNsPerM, double periodS);
 
+/// The same loop with the slope ring's rendered force instead of a spring: H(z) = K_r (1 - lambda) /
+/// (1 - lambda z^-1) (RenderedStiffness.h), the force from the position sampled at the start of the
+/// period. State (x, v, F_{n-1}); Jury's test on the 3 x 3 step matrix's characteristic cubic,
+/// bisected in K_r. The largest stable static stiffness K_r, N/mm (inputs SI). lambda = 0 gives
+/// sampledWallMaxStiffnessNPerMm; for lambda > 0 it is close to the passivity bound
+/// (2 b / T)(1 - lambda) / (1 + lambda), for lambda < 0 far above it (docs/stability.md).
+double slopeRingDeviceLoopMaxStiffnessNPerMm(double lambda, double deviceMassKg, double deviceDampingNsPerM,
+                                             double periodS);
+/// Jury's test for the loop above at one K_r (N/m): true when every pole is inside the unit circle.
+bool slopeRingDeviceLoopStable(double renderedStiffnessNPerM, double lambda, double deviceMassKg,
+                               double deviceDampingNsPerM, double periodS);
+
 /// As massSpringOmegaMaxRadPerS, for the local variant: only the vertices with simulated[v] != 0
 /// move, every other vertex is pinned at rest (its edge springs still pull: the row keeps the
 /// vertex's full degree). Not real-time.

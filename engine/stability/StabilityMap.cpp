@@ -37,6 +37,7 @@ StabilityMap runStabilityMap(const StabilityMapSpec& spec, const StabilityMapDef
             const CellOutcome outcome = spec.runCell(cell.x, cell.y);
             cell.bounded = outcome.bounded;
             cell.growth = outcome.growth;
+            cell.passivityRatio = spec.passivityRatio ? spec.passivityRatio(cell.x, cell.y) : std::nan("");
             map.cells.push_back(cell);
         }
 
@@ -69,6 +70,17 @@ StabilityMap runStabilityMap(const StabilityMapSpec& spec, const StabilityMapDef
     for (int s = 0; s <= kCurveSamples; ++s) {
         const double x = axisValue(spec.x, s, kCurveSamples + 1);
         map.derivedCurve.emplace_back(x, spec.derivedBoundaryY(x));
+    }
+    if (spec.passivityRatio) {
+        constexpr int kGrid = 120;
+        map.hasPassivity = true;
+        map.passivityFormula = spec.passivityFormula;
+        map.passivity.columns = map.passivity.rows = kGrid;
+        map.passivity.ratio.reserve(std::size_t(kGrid * kGrid));
+        for (int j = 0; j < kGrid; ++j)
+            for (int i = 0; i < kGrid; ++i)
+                map.passivity.ratio.push_back(spec.passivityRatio(axisValue(spec.x, i, kGrid),
+                                                                  axisValue(spec.y, j, kGrid)));
     }
     return map;
 }

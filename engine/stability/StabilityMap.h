@@ -1,8 +1,9 @@
 #pragma once
 // A stability map: a model's two governing parameters swept over a grid, each cell run long enough
 // to tell bounded from divergent, with the derived boundary drawn over the measured one (found by
-// bisection along the y axis, one row per x value). The models' cell runners are in
-// StabilityModels.h; this file knows none of them.
+// bisection along the y axis, one row per x value), and where the map has one, the passivity of
+// the rendered stiffness over the same axes (docs/stability.md, "Rendered stiffness and
+// passivity"). The models' cell runners are in StabilityModels.h; this file knows none of them.
 
 #include <functional>
 #include <string>
@@ -37,6 +38,10 @@ struct StabilityMapSpec {
     std::function<CellOutcome(double x, double y)> runCell;
     /// y on the boundary for this x; kNoBound (infinity) when every y is stable.
     std::function<double(double x)> derivedBoundaryY;
+    /// Passivity over the same axes: K_eq / K_device at (x, y), > 1 where the device cannot render
+    /// the set passively (SampledPassivity.h); empty when the map has none.
+    std::function<double(double x, double y)> passivityRatio;
+    std::string passivityFormula;  ///< what passivityRatio computes, as in docs/stability.md
 };
 
 struct StabilityMapDef {
@@ -49,6 +54,13 @@ struct StabilityCell {
     double x = 0.0, y = 0.0;
     bool bounded = true;
     double growth = 0.0;
+    double passivityRatio = 0.0;  ///< K_eq / K_device (NaN when the map has no passivity)
+};
+
+/// The passivity ratio sampled on a finer grid than the cells, for drawing its boundary.
+struct PassivityGrid {
+    int columns = 0, rows = 0;
+    std::vector<double> ratio;  ///< row-major: y outer, x inner; values at axisValue(i, columns), (j, rows)
 };
 
 /// The boundary at one x: derived, measured (infinity when no y in range diverges), and their gap.
@@ -68,6 +80,9 @@ struct StabilityMap {
     std::vector<std::pair<double, double>> derivedCurve;
     bool hasDerivedBoundary = false;                ///< false: unconditionally stable (no line)
     double relativeGap = 0.0;                       ///< largest over the columns
+    bool hasPassivity = false;                      ///< the spec gave a passivity ratio
+    std::string passivityFormula;
+    PassivityGrid passivity;  ///< 120 x 120 when hasPassivity
 };
 
 /// The i-th of `count` values spanning the axis (log or linear).

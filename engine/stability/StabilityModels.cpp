@@ -8,6 +8,7 @@
 #include "engine/models/VolumetricFill.h"
 #include "engine/models/VolumetricRingsModel.h"
 #include "engine/models/slopering/SlopeRingModel.h"
+#include "engine/stability/RenderedStiffness.h"
 #include "engine/stability/StabilityBounds.h"
 
 #include <glm/geometric.hpp>
@@ -60,6 +61,16 @@ SlopeRingParams slopeRingCellParams(double slope1MmPerN, double contactNPerMm, d
     return p;
 }
 
+/// Passivity of a slope-ring set rendered at 1 kHz (the slope-ring maps' tick) to the simulated
+/// device: K_eq / (2 b / T), K_eq in closed form (RenderedStiffness.h; the sweep gives the same).
+double slopeRingPassivityRatio(const SlopeRingParams& p, const StabilityDeviceDef& device = {}) {
+    return slopeRingPassiveEquivalentNPerMm(p) / passiveMaxStiffnessNPerMm(device.dampingNsPerM / 1000.0, 1e-3);
+}
+
+constexpr const char* kSlopeRingPassivityFormula =
+    "K_eq = k_s |m1| k_c / (1 + g) x (1 + |lambda|) / (1 - |lambda|), lambda = 1 - alpha (1 + g), above the "
+    "device's passive 2 b / T = 1 N/mm at 1 kHz (k_s = 1.5 N/mm)";
+
 /// Runs `ticks` presses of a model whose contact force is `force()` and classifies the tail.
 template <class Model>
 CellOutcome settles(const PressScene& scene, Model& model, double slope1MmPerN, double contactNPerMm, int ticks) {
@@ -109,10 +120,12 @@ CellOutcome runVolumetricRingsCell(const PressScene& scene, double slope1MmPerN,
 /// the oscillation), or the device leaves the sphere. growth = that ratio. (Beyond the bound the
 /// oscillation grows until the device leaves the surface and bounces, a limit cycle at least d*
 /// from d*; inside it decays as |lambda|^t.)
-CellOutcome runDeviceCell(const PressScene& scene, const ModelDef& def, double rateHz, int ticks,
-                          const StabilityDeviceDef& device) {
+/// `stiffnessNPerMm` is the model's static rendered stiffness (k_s for the geometric models, K_r for
+/// the slope ring), which sets the hand's force.
+CellOutcome runDeviceCell(const PressScene& scene, const ModelDef& def, double stiffnessNPerMm, double rateHz,
+                          int ticks, const StabilityDeviceDef& device) {
     const auto model = makeModel(def, scene.mesh, scene.octree);
-    const double stiffness = def.kind == ModelKind::Ffd ? def.ffd.stiffnessNPerMm : def.radiusOfInfluence.stiffnessNPerMm;
+    const double stiffness = stiffnessNPerMm;
     const glm::vec3 rest = scene.mesh.restPositionsMm()[scene.touched];
     const glm::vec3 n = scene.mesh.restNormals()[scene.touched];
     const double periodS = 1.0 / rateHz;
@@ -261,6 +274,10 @@ StabilityMapSpec slopeGainSpec(const std::string& name, const std::string& what,
     spec.y = {"|m1|", "mm/N", 0.1, 100.0, true};
     spec.derivedBoundaryY = [](double kc) { return slopeRingMaxGain(kAlpha) / kc; };
     spec.runCell = [scene, cell](double kc, double m1) { return cell(kc, m1); };
+    spec.passivityRatio = [](double kc, double m1) {
+        return slopeRingPassivityRatio(slopeRingCellParams(m1, kc, kAlpha));
+    };
+    spec.passivityFormula = kSlopeRingPassivityFormula;
     (void)scene;
     return spec;
 }
@@ -286,12 +303,68 @@ StabilityMapSpec deviceSpec(const std::string& name, ModelKind kind, std::shared
     spec.y = {"k_s", "N/mm", 0.01, 100.0, true};
     const double b = device.dampingNsPerM;
     spec.derivedBoundaryY = [b](double rate) { return passiveMaxStiffnessNPerMm(b / 1000.0, 1.0 / rate); };
+    // A pure spring: K_eq = k_s, so passivity is the derived boundary itself.
+    spec.passivityRatio = [b](double rate, double ks) {
+        return ks / passiveMaxStiffnessNPerMm(b / 1000.0, 1.0 / rate);
+    };
+    spec.passivityFormula = "K_eq = k_s (a pure spring) above the device's passive 2 b / T";
     spec.runCell = [scene, kind, ticks, device](double rate, double ks) {
         ModelDef model;
         model.kind = kind;
         model.radiusOfInfluence.stiffnessNPerMm = ks;
         model.ffd.stiffnessNPerMm = ks;
-        return runDeviceCell(*scene, model, rate, ticks, device);
+        return runDeviceCell(*scene, model, ks, rate, ticks, device);
+    };
+    return spec;
+}
+
+/// The slope ring's rendered force against the simulated device: relaxation alpha against the
+/// return-spring stiffness k_s, the default slopes and k_c = 1 N/mm held (g = 0.6), at 1 kHz. The
+/// derived boundary is the exact stability limit of the linearised loop (device, zero-order hold,
+/// H(z) with the relaxation pole); the passivity boundary is drawn over it.
+StabilityMapSpec slopeRingPassivitySpec(const std::string& name, std::shared_ptr<PressScene> scene,
+                                        const StabilitySceneDef& def, const StabilityDeviceDef& device = {}) {
+    constexpr double kPeriodS = 1e-3;
+    const SlopeRingParams held;  // |m1| = 0.6 mm/N, k_c = 1 N/mm
+    const double gain = held.loopGain();
+    const double perSpring = held.slopeMagnitudeMmPerN[0] * held.contactStiffnessNPerMm / (1.0 + gain);  // K_r / k_s
+    const auto params = [held](double alpha, double ks) {
+        SlopeRingParams p = held;
+        p.forceRelaxation = alpha;
+        p.springStiffnessNPerMm = ks;
+        return p;
+    };
+    StabilityMapSpec spec;
+    spec.model = name;
+    const int ticks = def.deviceTicks;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "coherent slope ring (|m1| = %.2g mm/N, k_c = %.2g N/mm, g = %.2g) on a %zu-vertex sphere rendering "
+                  "to a 1-DOF device (m = %.3g kg, b = %.3g N s/m, zero-order hold, 1 kHz), hand force holding d* = "
+                  "%.2g mm, started %.0f %% deeper, %d ticks",
+                  held.slopeMagnitudeMmPerN[0], held.contactStiffnessNPerMm, gain, scene->mesh.vertexCount(),
+                  device.massKg, device.dampingNsPerM, device.equilibriumMm, 100.0 * device.perturbation, ticks);
+    spec.description = text;
+    spec.criterion =
+        "energy growth: divergent when the largest deviation from d* over the last tenth exceeds the "
+        "initial one";
+    spec.derivedFormula =
+        "k_s at the stability limit of device + H(z) = K_r (1 - lambda) / (1 - lambda z^-1) "
+        "(Jury's test on the 3 x 3 loop)";
+    spec.x = {"alpha (forceRelaxation)", "", 0.05, 1.0, false};
+    spec.y = {"k_s", "N/mm", 0.02, 50.0, true};
+    const double m = device.massKg, b = device.dampingNsPerM;
+    spec.derivedBoundaryY = [params, perSpring, m, b](double alpha) {
+        const double lambda = slopeRingRelaxationPole(params(alpha, 1.0));
+        return slopeRingDeviceLoopMaxStiffnessNPerMm(lambda, m, b, kPeriodS) / perSpring;
+    };
+    spec.passivityRatio = [params, device](double alpha, double ks) {
+        return slopeRingPassivityRatio(params(alpha, ks), device);
+    };
+    spec.passivityFormula = "K_eq = K_r (1 + |lambda|) / (1 - |lambda|) above the device's passive 2 b / T = 1 N/mm";
+    spec.runCell = [scene, params, perSpring, ticks, device](double alpha, double ks) {
+        const ModelDef model = slopeRingModelDef(params(alpha, ks));
+        return runDeviceCell(*scene, model, perSpring * ks, 1.0 / kPeriodS, ticks, device);
     };
     return spec;
 }
@@ -299,14 +372,26 @@ StabilityMapSpec deviceSpec(const std::string& name, ModelKind kind, std::shared
 }  // namespace
 
 std::vector<std::string> stabilityModelNames() {
-    return {"slope-ring-gain",   "slope-ring-relaxation", "mass-spring-symplectic", "mass-spring-symplectic-vertex",
-            "mass-spring-rk4",   "mass-spring-implicit",  "mass-spring-local",      "coherent",
-            "proposed",          "hybrid",                "previous",               "volumetric-rings",
-            "radius-of-influence", "ffd"};
+    return {"slope-ring-gain",
+            "slope-ring-relaxation",
+            "mass-spring-symplectic",
+            "mass-spring-symplectic-vertex",
+            "mass-spring-rk4",
+            "mass-spring-implicit",
+            "mass-spring-local",
+            "coherent",
+            "proposed",
+            "hybrid",
+            "previous",
+            "volumetric-rings",
+            "radius-of-influence",
+            "ffd",
+            "slope-ring-passivity"};
 }
 
 std::vector<std::string> stabilityMapModels(std::string_view map) {
-    if (map == "slope-ring-gain" || map == "slope-ring-relaxation") return {"coherent"};
+    if (map == "slope-ring-gain" || map == "slope-ring-relaxation" || map == "slope-ring-passivity")
+        return {"coherent"};
     if (map == "mass-spring-symplectic" || map == "mass-spring-symplectic-vertex") return {"mass-spring-symplectic"};
     const auto names = stabilityModelNames();
     if (std::find(names.begin(), names.end(), map) == names.end()) return {};
@@ -339,6 +424,7 @@ std::optional<StabilityMapSpec> stabilityMapSpec(std::string_view nameGiven, con
     if (name == "radius-of-influence") return deviceSpec(std::string(name), ModelKind::RadiusOfInfluence, scene, def);
     if (name == "ffd") return deviceSpec(std::string(name), ModelKind::Ffd, scene, def);
     if (name == "mass-spring-local") return massSpringLocalSpec(std::string(name), scene, def);
+    if (name == "slope-ring-passivity") return slopeRingPassivitySpec(std::string(name), scene, def);
     if (name == "slope-ring-gain") {
         constexpr double kAlpha = 0.5;
         StabilityMapSpec spec;
@@ -351,6 +437,10 @@ std::optional<StabilityMapSpec> stabilityMapSpec(std::string_view nameGiven, con
         spec.y = {"|m1|", "mm/N", 0.1, 100.0, true};
         spec.derivedBoundaryY = [](double kc) { return slopeRingMaxGain(kAlpha) / kc; };
         spec.runCell = [scene, ticks](double kc, double m1) { return runSlopeRingCell(*scene, m1, kc, kAlpha, ticks); };
+        spec.passivityRatio = [](double kc, double m1) {
+            return slopeRingPassivityRatio(slopeRingCellParams(m1, kc, kAlpha));
+        };
+        spec.passivityFormula = kSlopeRingPassivityFormula;
         return spec;
     }
     if (name == "slope-ring-relaxation") {
@@ -367,6 +457,10 @@ std::optional<StabilityMapSpec> stabilityMapSpec(std::string_view nameGiven, con
         spec.runCell = [scene, ticks](double alpha, double gain) {
             return runSlopeRingCell(*scene, gain / kContact, kContact, alpha, ticks);
         };
+        spec.passivityRatio = [](double alpha, double gain) {
+            return slopeRingPassivityRatio(slopeRingCellParams(gain / kContact, kContact, alpha));
+        };
+        spec.passivityFormula = kSlopeRingPassivityFormula;
         return spec;
     }
     if (name == "mass-spring-symplectic")

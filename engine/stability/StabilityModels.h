@@ -40,7 +40,8 @@ std::vector<std::string> stabilityMapModels(std::string_view mapName);
 
 /// slope-ring-gain, slope-ring-relaxation, mass-spring-symplectic, mass-spring-symplectic-vertex,
 /// mass-spring-rk4, mass-spring-implicit, mass-spring-local, coherent, proposed, hybrid, previous
-/// (the gain map on each slope-ring method), volumetric-rings, radius-of-influence, ffd.
+/// (the gain map on each slope-ring method), volumetric-rings, radius-of-influence, ffd,
+/// slope-ring-passivity (the slope ring's rendered force against the simulated device).
 std::vector<std::string> stabilityModelNames();
 /// The map's definition for a name; nullopt for an unknown one. Builds the scene (not real-time).
 std::optional<StabilityMapSpec> stabilityMapSpec(std::string_view name, const StabilitySceneDef& scene = {});

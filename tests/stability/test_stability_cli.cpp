@@ -73,6 +73,35 @@ TEST(StabilityCli, EveryNewMapRunsQuicklyFromTheCli) {
     }
 }
 
+TEST(StabilityCli, PassivityIsInTheJsonAndTheCsvOfTheMapsThatHaveIt) {
+    const std::string csv = ::testing::TempDir() + "stability_passivity.csv";
+    const CliRun r = run("stability --model slope-ring-passivity --quick --json --csv " + csv);
+    ASSERT_EQ(r.status, 0);
+    const auto json = nlohmann::json::parse(r.out);
+    ASSERT_TRUE(json["passivity"].is_object());
+    EXPECT_NE(json["passivity"]["formula"].get<std::string>().find("K_eq"), std::string::npos);
+    int passive = 0, not_passive = 0;
+    for (const auto& cell : json["cells"]) {
+        ASSERT_TRUE(cell.contains("passivity_ratio"));
+        (cell["passive"].get<bool>() ? passive : not_passive) += 1;
+        // Passivity is sufficient: a passive cell is a bounded one.
+        if (cell["passive"].get<bool>()) {
+            EXPECT_TRUE(cell["bounded"].get<bool>()) << cell.dump();
+        }
+    }
+    EXPECT_GT(passive, 0);
+    EXPECT_GT(not_passive, 0);
+    EXPECT_LT(json["relative_gap"].get<double>(), 0.08);
+    std::ifstream in(csv);
+    std::string header;
+    std::getline(in, header);
+    EXPECT_NE(header.find(",passivity_ratio"), std::string::npos) << header;
+    // A map without passivity says so.
+    const CliRun plain = run("stability --model mass-spring-implicit --quick --json");
+    ASSERT_EQ(plain.status, 0);
+    EXPECT_TRUE(nlohmann::json::parse(plain.out)["passivity"].is_null());
+}
+
 // The models bench (docs/models.md): bench models --csv writes one row per model and size (here a small sphere).
 TEST(BenchModelsCli, CsvHasOneRowPerModelAndSize) {
     const std::string csv = ::testing::TempDir() + "bench_models.csv";

@@ -38,7 +38,11 @@ TEST(MainWindowDocks, ApplyReachesTheEngineInTheNextSnapshot) {
     preset.params.springStiffnessNPerMm *= 2.0;  // the rendered force is k |m1| F: doubles
     window->parameterPanel()->setPreset(preset);
     ASSERT_TRUE(window->parameterPanel()->isValid());
+    // 3 N/mm renders 1.125 N/mm, beyond the device's passive 1 N/mm at 1 kHz: Apply asks; yes.
+    int asked = 0;
+    window->parameterPanel()->setConfirmFunction([&](const QString&, const QString&) { return ++asked > 0; });
     window->parameterPanel()->apply();
+    EXPECT_EQ(asked, 1);
     window->advanceTicks(1);
     EXPECT_NEAR(glm::length(window->session().observed().commandedForceN), 2.0f * before, 0.05f * before);
 }

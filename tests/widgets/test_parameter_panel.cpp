@@ -59,7 +59,7 @@ TEST(ParameterPanel, DefaultPresetIsValidAndApplyEnabled) {
     EXPECT_FALSE(visibleIn(label(panel, "messageLabel"), panel));
     EXPECT_EQ(panel.undoStack()->count(), 0);
     // Automatic relaxation solves the contact in one tick: alpha (1 + gain) = 1, margin 50 %.
-    EXPECT_TRUE(label(panel, "stabilityLabel")->text().contains(QStringLiteral("< 2: stability margin 50")))
+    EXPECT_TRUE(label(panel, "stabilityLabel")->text().contains(QStringLiteral("< 2: loop-gain margin 50")))
         << label(panel, "stabilityLabel")->text().toStdString();
 }
 
@@ -137,9 +137,14 @@ TEST(ParameterPanel, UnstableLoopGainIsRejectedAndTheStableSideAccepted) {
 
     doubleField(panel, "slopeRingContactStiffnessNPerMmSpin")->setValue(1.0);  // gain 0.9, alpha (1 + gain) = 1.9 < 2
     EXPECT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
-    EXPECT_TRUE(stability->text().contains(QStringLiteral("stability margin 5")))  // 1 - 1.9 / 2 = 5 %
+    EXPECT_TRUE(stability->text().contains(QStringLiteral("loop-gain margin 5")))  // 1 - 1.9 / 2 = 5 %
         << stability->text().toStdString();
-    EXPECT_FALSE(stability->property("unstable").toBool());
+    // Accepted, but the force alternates (lambda = 1 - 1.9 = -0.9): it renders 0.71 N/mm whose
+    // passive-equivalent is 19x that, beyond the device (docs/stability.md): the label says so.
+    EXPECT_TRUE(stability->text().contains(QStringLiteral("alternation"))) << stability->text().toStdString();
+    EXPECT_TRUE(stability->property("unstable").toBool());
+    doubleField(panel, "slopeRingForceRelaxationSpin")->setValue(0.0);  // automatic: exact in one tick
+    EXPECT_FALSE(stability->property("unstable").toBool()) << stability->text().toStdString();
 }
 
 TEST(ParameterPanel, SlopeOutsideThePapersRangeIsAllowedUnderARaisedLimit) {
@@ -179,6 +184,9 @@ TEST(ParameterPanel, OctreeAndRateAreValidated) {
 
 TEST(ParameterPanel, ApplyEmitsExactlyTheFieldValues) {
     ParameterPanel panel;
+    // This set renders 1.1 N/mm at 500 Hz, beyond the device's passive 0.5 N/mm: Apply asks; yes.
+    int asked = 0;
+    panel.setConfirmFunction([&](const QString&, const QString&) { return ++asked > 0; });
     std::vector<TissuePreset> applied;
     QObject::connect(&panel, &ParameterPanel::applyRequested, [&](const TissuePreset& p) { applied.push_back(p); });
 
@@ -201,6 +209,7 @@ TEST(ParameterPanel, ApplyEmitsExactlyTheFieldValues) {
     ASSERT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
 
     QTest::mouseClick(applyButton(panel), Qt::LeftButton);
+    EXPECT_EQ(asked, 1);
     ASSERT_EQ(applied.size(), 1u);
     const TissuePreset& p = applied.front();
     EXPECT_EQ(p.method, SlopeRingMethod::Hybrid);
@@ -585,6 +594,72 @@ TEST(ParameterPanelStability, SlopeRingBeyondItsBoundIsStillRefusedNotAsked) {
     panel.apply();
     EXPECT_EQ(int(applied.size()), 0);
     EXPECT_EQ(asked, 0);
+}
+
+TEST(ParameterPanelStability, PassivityWarnsBeforeTheLimitAndAsksBeyondIt) {
+    ParameterPanel panel;
+    std::vector<TissuePreset> applied;
+    QObject::connect(&panel, &ParameterPanel::applyRequested, [&](const TissuePreset& p) { applied.push_back(p); });
+    int asked = 0;
+    bool answer = false;
+    QString question;
+    panel.setConfirmFunction([&](const QString&, const QString& text) {
+        ++asked;
+        question = text;
+        return answer;
+    });
+    QLabel* stability = label(panel, "stabilityLabel");
+    QDoubleSpinBox* spring = doubleField(panel, "slopeRingSpringStiffnessNPerMmSpin");
+    // The default: K_r = 1.5 x 0.6 x 1 / 1.6 = 0.5625 N/mm of the device's passive 1 N/mm, 44 % left.
+    EXPECT_NEAR(panel.stabilityMargin()->margin, 0.4375, 1e-9);
+    EXPECT_FALSE(stability->property("nearLimit").toBool());
+    EXPECT_FALSE(stability->property("unstable").toBool());
+    EXPECT_TRUE(stability->text().contains(QStringLiteral("passivity margin 44"))) << stability->text().toStdString();
+
+    // k_s = 2.4 N/mm: K_r = 0.9 N/mm, 10 % left: the label warns, Apply does not ask.
+    spring->setValue(2.4);
+    EXPECT_NEAR(panel.stabilityMargin()->margin, 0.1, 1e-9);
+    EXPECT_TRUE(stability->property("nearLimit").toBool());
+    EXPECT_FALSE(stability->property("unstable").toBool());
+    EXPECT_TRUE(stability->text().contains(QStringLiteral("Close to the stability margin"))) << stability->text().toStdString();
+    panel.apply();
+    EXPECT_EQ(asked, 0);
+    EXPECT_EQ(int(applied.size()), 1);
+
+    // k_s = 2.75 N/mm: K_r = 1.03 N/mm, beyond: the label names the parameter and Apply asks.
+    spring->setValue(2.75);
+    EXPECT_LT(panel.stabilityMargin()->margin, 0.0);
+    EXPECT_TRUE(panel.isValid()) << "the validators allow it";
+    EXPECT_TRUE(stability->property("unstable").toBool());
+    EXPECT_FALSE(stability->property("nearLimit").toBool());
+    EXPECT_TRUE(stability->text().contains(QStringLiteral("springStiffness (k_s)"))) << stability->text().toStdString();
+    panel.apply();
+    EXPECT_EQ(asked, 1);
+    EXPECT_EQ(int(applied.size()), 1) << "No keeps the set back";
+    EXPECT_TRUE(question.contains(QStringLiteral("passive"))) << question.toStdString();
+    answer = true;
+    panel.apply();
+    EXPECT_EQ(asked, 2);
+    ASSERT_EQ(int(applied.size()), 2);
+    EXPECT_DOUBLE_EQ(applied.back().params.springStiffnessNPerMm, 2.75);
+
+    // Twice the rate, twice the passive stiffness: well inside again.
+    doubleField(panel, "hapticRateSpin")->setValue(2000.0);
+    EXPECT_GT(panel.stabilityMargin()->margin, kStabilityMarginWarning);
+    EXPECT_FALSE(stability->property("unstable").toBool());
+    EXPECT_FALSE(stability->property("nearLimit").toBool());
+
+    // The default mass spring, measured on the sphere: 0.66 N/mm static but K_eq ~ 0.9 N/mm (the
+    // touched vertex's mass cannot follow at high frequency): close to the limit at 1 kHz.
+    panel.setMeshProvider([] { return &sphere242(); });
+    doubleField(panel, "hapticRateSpin")->setValue(1000.0);
+    choose(panel, "mass-spring-implicit");
+    const auto margin = panel.stabilityMargin();
+    ASSERT_TRUE(margin);
+    EXPECT_GT(margin->margin, 0.0);
+    EXPECT_LT(margin->margin, kStabilityMarginWarning);
+    EXPECT_TRUE(stability->property("nearLimit").toBool()) << stability->text().toStdString();
+    EXPECT_TRUE(stability->text().contains(QStringLiteral("measured"))) << stability->text().toStdString();
 }
 
 TEST(ParameterPanelStability, SavedPresetsStoreTheMarginAndItsPeriod) {
