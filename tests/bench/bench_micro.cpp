@@ -5,7 +5,10 @@
 #include "engine/core/MeshGenerator.h"
 #include "engine/core/Octree.h"
 #include "engine/models/slopering/SlopeRingModel.h"
+#include "engine/core/SceneTarget.h"
 #include "engine/core/ToolPath.h"
+#include "engine/loop/HapticSnapshot.h"
+#include "engine/stability/DivergenceGuard.h"
 
 #include <benchmark/benchmark.h>
 
@@ -100,6 +103,32 @@ void BM_Step(benchmark::State& state) {
     state.SetLabel(std::string(methodName(method)));
 }
 
+// Ours as the loop runs it, in parts: the step (a sphere of the default tool radius on the same
+// press, its centre the radius further out), the divergence guard, the snapshot's copy of the
+// displaced vertices (range(1): 0 step only, 1 + guard, 2 + guard + copy).
+void BM_LoopTickOurs(benchmark::State& state) {
+    const Scene& scene = sphereScene(std::size_t(state.range(0)));
+    const auto modelOwner = makeSlopeRing(scene.mesh, *scene.octree, SlopeRingParams{}, SlopeRingMethod::Coherent);
+    SlopeRingModel& model = *modelOwner;
+    model.setContact({.toolRadiusMm = 5.0, .staticFriction = 0.3, .dynamicFriction = 0.2});
+    const glm::vec3 out = 5.0f * scene.mesh.restNormals()[defaultTargetVertex(scene.mesh)];
+    DivergenceGuard guard;
+    std::vector<VertexId> ids(HapticSnapshot::kMaxDisplaced);
+    std::vector<glm::vec3> positions(HapticSnapshot::kMaxDisplaced);
+    std::vector<std::uint8_t> rings(HapticSnapshot::kMaxDisplaced);
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const TickResult r = model.step(scene.path[i] + out, 1e-3);
+        benchmark::DoNotOptimize(r);
+        if (state.range(1) >= 1) benchmark::DoNotOptimize(guard.check(scene.mesh, model, r));
+        if (state.range(1) >= 2)
+            benchmark::DoNotOptimize(model.copyDisplaced(ids.data(), positions.data(), rings.data(), ids.size()));
+        if (++i == scene.path.size()) i = 0;
+    }
+    setCounters(state, scene);
+}
+
+BENCHMARK(BM_LoopTickOurs)->ArgsProduct({{8664}, {0, 1, 2}})->ArgNames({"vertices", "parts"});
 BENCHMARK(BM_SearchLinear)->Arg(1442)->Arg(8664)->Arg(100000);
 BENCHMARK(BM_SearchNodeFaithful)->Arg(1442)->Arg(8664)->Arg(100000);
 BENCHMARK(BM_SearchExactWarm)->Arg(1442)->Arg(8664)->Arg(100000);
