@@ -88,22 +88,35 @@ SurfaceHit SurfaceWalk::walk(const glm::vec3& p, TriangleId from, bool* converge
 namespace {
 // Newton's method on P(w) + h N(w) = x over one triangle's plane of weights (w1, w2 free, w0 =
 // 1 - w1 - w2), started from the plane's foot. Weights may leave [0, 1]: the caller walks on.
-bool shadedWeights(const glm::vec3& x, const glm::vec3* P, const glm::vec3* N, float* w) {
+bool shadedWeights(const glm::vec3& x, const glm::vec3* P, const glm::vec3* N, float* w, const float* start) {
     const glm::vec3 e1 = P[1] - P[0], e2 = P[2] - P[0], d1 = N[1] - N[0], d2 = N[2] - N[0];
-    const glm::vec3 facet = glm::cross(e1, e2);
-    const float area2 = glm::dot(facet, facet);
-    if (!(area2 > 0.0f)) return false;
     const glm::vec3 r = x - P[0];
-    float u = glm::dot(glm::cross(r, e2), facet) / area2;  // the foot on the plane
-    float v = glm::dot(glm::cross(e1, r), facet) / area2;
-    const glm::vec3 unit = facet / std::sqrt(area2);
-    const glm::vec3 n0 = N[0] + u * d1 + v * d2;
-    const float along = glm::dot(n0, unit);
-    if (!(std::fabs(along) > 1e-6f)) return false;
-    float h = glm::dot(r - u * e1 - v * e2, unit) / along;
+    float u, v, h;
+    if (start) {
+        // Warm: last tick's weights on this triangle (the tool moved a few µm), h along N there.
+        u = start[1];
+        v = start[2];
+        const glm::vec3 n = N[0] + u * d1 + v * d2;
+        const float nn = glm::dot(n, n);
+        if (!(nn > 0.0f)) return false;
+        h = glm::dot(r - u * e1 - v * e2, n) / nn;
+    } else {
+        const glm::vec3 facet = glm::cross(e1, e2);
+        const float area2 = glm::dot(facet, facet);
+        if (!(area2 > 0.0f)) return false;
+        u = glm::dot(glm::cross(r, e2), facet) / area2;  // the foot on the plane
+        v = glm::dot(glm::cross(e1, r), facet) / area2;
+        const glm::vec3 unit = facet / std::sqrt(area2);
+        const glm::vec3 n0 = N[0] + u * d1 + v * d2;
+        const float along = glm::dot(n0, unit);
+        if (!(std::fabs(along) > 1e-6f)) return false;
+        h = glm::dot(r - u * e1 - v * e2, unit) / along;
+    }
     for (int iteration = 0; iteration < 8; ++iteration) {
         const glm::vec3 n = N[0] + u * d1 + v * d2;
         const glm::vec3 f = P[0] + u * e1 + v * e2 + h * n - x;
+        // Solved to 10 nm: done (a warm start from last tick usually gets here after one step).
+        if (iteration > 0 && glm::dot(f, f) < 1e-10f) break;
         const glm::vec3 c0 = e1 + h * d1, c1 = e2 + h * d2;
         const float det = glm::dot(c0, glm::cross(c1, n));
         if (!(std::fabs(det) > 1e-12f)) return false;
@@ -114,7 +127,7 @@ bool shadedWeights(const glm::vec3& x, const glm::vec3* P, const glm::vec3* N, f
         u -= du;
         v -= dv;
         h -= dh;
-        if (std::fabs(du) + std::fabs(dv) < 1e-7f) break;
+        if (std::fabs(du) + std::fabs(dv) < 1e-6f) break;  // a few nm on a mm triangle; float noise is ~1e-7
     }
     if (!std::isfinite(u) || !std::isfinite(v)) return false;
     w[0] = 1.0f - u - v;
@@ -124,7 +137,7 @@ bool shadedWeights(const glm::vec3& x, const glm::vec3* P, const glm::vec3* N, f
 }
 }  // namespace
 
-SurfaceHit SurfaceWalk::project(const glm::vec3& p, TriangleId from, bool* converged) const {
+SurfaceHit SurfaceWalk::project(const glm::vec3& p, TriangleId from, bool* converged, const float* startWeights) const {
     const auto& rest = mMesh.restPositionsMm();
     const auto& normals = mMesh.restNormals();
     // Weights this far below 0 leave the triangle; closer ones are rounding, clamped.
@@ -135,7 +148,7 @@ SurfaceHit SurfaceWalk::project(const glm::vec3& p, TriangleId from, bool* conve
         const glm::vec3 P[3] = {rest[tri[0]], rest[tri[1]], rest[tri[2]]};
         const glm::vec3 N[3] = {normals[tri[0]], normals[tri[1]], normals[tri[2]]};
         float w[3];
-        if (!shadedWeights(p, P, N, w)) break;
+        if (!shadedWeights(p, P, N, w, t == from ? startWeights : nullptr)) break;
         int k = 0;
         for (int i = 1; i < 3; ++i)
             if (w[i] < w[k]) k = i;

@@ -41,7 +41,10 @@ public:
     /// point, across edges and vertices alike (docs/method.md, "Our contact"). `converged` false
     /// when no triangle solves it within kMaxSteps (the closest point is returned instead).
     /// Real-time safe.
-    SurfaceHit project(const glm::vec3& pointMm, TriangleId from, bool* converged = nullptr) const;
+    /// `startWeights` (optional): a first guess on `from` (last tick's weights), which Newton's
+    /// method refines in a step or two instead of starting from the plane's foot.
+    SurfaceHit project(const glm::vec3& pointMm, TriangleId from, bool* converged = nullptr,
+                       const float* startWeights = nullptr) const;
 
     /// The triangle across the edge opposite corner k of triangle t (kNoTriangle on a boundary).
     TriangleId across(TriangleId t, int k) const { return mAcross[3 * std::size_t(t) + std::size_t(k)]; }

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -425,6 +426,15 @@ TissueMesh::LoadResult MeshBuilder::build(std::vector<glm::vec3> positions,
         std::vector<std::uint32_t> fill(mesh.mFanStart.begin(), mesh.mFanStart.end() - 1);
         for (std::uint32_t t = 0; t < mesh.mTriangles.size(); ++t)
             for (VertexId v : mesh.mTriangles[t]) mesh.mFanTriangles[fill[v]++] = t;
+    }
+    // The smallest height of each vertex's fan triangles at rest.
+    mesh.mFanMinHeightMm.assign(n, std::numeric_limits<float>::infinity());
+    for (const auto& t : mesh.mTriangles) {
+        const glm::vec3 a = mesh.mRestMm[t[0]], b = mesh.mRestMm[t[1]], c = mesh.mRestMm[t[2]];
+        const float doubleArea = glm::length(glm::cross(b - a, c - a));
+        const float longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+        const float height = longest > 0.0f ? doubleArea / longest : 0.0f;
+        for (VertexId v : t) mesh.mFanMinHeightMm[v] = std::min(mesh.mFanMinHeightMm[v], height);
     }
 
     mesh.mBoundsMin = glm::vec3(lo);

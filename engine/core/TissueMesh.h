@@ -61,6 +61,9 @@ public:
     /// The triangles around each vertex (CSR): those of v are fanTriangles()[fanStart()[v] .. [v + 1]).
     const std::vector<std::uint32_t>& fanStart() const { return mFanStart; }
     const std::vector<std::uint32_t>& fanTriangles() const { return mFanTriangles; }
+    /// The smallest height of v's fan triangles at rest, mm: while no corner of the fan moves by
+    /// half of it, none of those triangles can turn over (the divergence guard skips the test).
+    const std::vector<float>& fanMinHeightMm() const { return mFanMinHeightMm; }
     const std::vector<VertexId>& originalIndex() const { return mOriginalIndex; }
     const MeshReport& report() const { return mReport; }
     std::size_t maxValence() const { return mMaxValence; }
@@ -80,6 +83,7 @@ private:
     std::vector<VertexId> mNeighbours;
     std::vector<std::uint32_t> mFanStart;
     std::vector<std::uint32_t> mFanTriangles;
+    std::vector<float> mFanMinHeightMm;
     std::vector<VertexId> mOriginalIndex;
     MeshReport mReport;
     std::size_t mMaxValence = 0;

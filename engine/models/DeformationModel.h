@@ -45,6 +45,10 @@ public:
         const std::span<const glm::vec3> all = positionsMm();
         for (std::size_t k = 0; k < ids.size(); ++k) out[k] = all[ids[k]];
     }
+    /// True when every vertex copyDisplaced does not report is exactly at its rest position (the
+    /// model moves only the vertices it lists): the loop's guard then need not sample the rest of
+    /// the mesh for a blow-up. Models that integrate the whole mesh return false.
+    virtual bool movesOnlyDisplaced() const { return false; }
     /// Back to the rest shape, no contact.
     virtual void reset() = 0;
     virtual std::string name() const = 0;

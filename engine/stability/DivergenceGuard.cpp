@@ -56,7 +56,8 @@ DivergenceVerdict DivergenceGuard::check(const TissueMesh& mesh, std::span<const
         }
     };
     const bool whole = positions.size() == mesh.vertexCount();
-    return checkWith(mesh, n, sample, whole, [&](VertexId v) { return positions[v]; }, result);
+    const auto positionOf = [&](VertexId v) { return positions[v]; };
+    return checkWith(mesh, n, sample, whole, positionOf, [&](int, VertexId v) { return positions[v]; }, result);
 }
 
 DivergenceVerdict DivergenceGuard::check(const TissueMesh& mesh, const DeformationModel& model,
@@ -84,18 +85,25 @@ DivergenceVerdict DivergenceGuard::check(const TissueMesh& mesh, const Deformati
         model.copyPositionsMm({mFanIds, std::size_t(mFanCount)}, mFanPositions);
     }
     const auto positionOf = [&](VertexId v) {
-        for (int i = 0; i < mFanCount; ++i)
-            if (mFanIds[i] == v) return mFanPositions[i];
+        // The touched vertex first, then its neighbours, sorted (the mesh keeps them so).
+        if (mFanCount > 0 && mFanIds[0] == v) return mFanPositions[0];
+        const VertexId* begin = mFanIds + 1;
+        const VertexId* end = mFanIds + std::max(mFanCount, 1);
+        const VertexId* found = std::lower_bound(begin, end, v);
+        if (found != end && *found == v) return mFanPositions[found - mFanIds];
         glm::vec3 p;
         model.copyPositionsMm({&v, 1}, &p);
         return p;
     };
-    return checkWith(mesh, n, sample, true, positionOf, result);
+    // A model that moves only the vertices it lists has nothing to sample elsewhere.
+    const auto fanAt = [&](int i, VertexId v) { return i < mFanCount ? mFanPositions[i] : positionOf(v); };
+    return checkWith(mesh, model.movesOnlyDisplaced() ? 0 : n, sample, true, positionOf, fanAt, result);
 }
 
-template <typename Sample, typename PositionOf>
+template <typename Sample, typename PositionOf, typename FanAt>
 DivergenceVerdict DivergenceGuard::checkWith(const TissueMesh& mesh, std::size_t n, const Sample& sample,
-                                             bool whole, const PositionOf& positionOf, const TickResult& result) {
+                                             bool whole, const PositionOf& positionOf, const FanAt& fanAt,
+                                             const TickResult& result) {
     const glm::vec3 force = result.forceN;
     if (!finite(force)) return {DivergenceKind::NonFinite};
 
@@ -120,16 +128,19 @@ DivergenceVerdict DivergenceGuard::checkWith(const TissueMesh& mesh, std::size_t
         const auto& start = mesh.neighbourStart();
         const auto& nb = mesh.neighbours();
         const auto& rest = mesh.restPositionsMm();
-        auto visit = [&](VertexId v) {
-            const glm::vec3 p = positionOf(v);
-            if (!finite(p)) return false;
+        // The fan in order: the touched vertex, then its neighbours (fanAt(i, v) is the i-th).
+        float largest2 = 0.0f;
+        bool allFinite = true;
+        auto visit = [&](int i, VertexId v) {
+            const glm::vec3 p = fanAt(i, v);
+            allFinite = allFinite && finite(p);
             const glm::vec3 u = p - rest[v];
-            displacement2 = std::max(displacement2, double(glm::dot(u, u)));
-            return true;
+            largest2 = std::max(largest2, glm::dot(u, u));
         };
-        if (!visit(t)) return {DivergenceKind::NonFinite};
-        for (std::uint32_t i = start[t]; i < start[t + 1]; ++i)
-            if (!visit(nb[i])) return {DivergenceKind::NonFinite};
+        visit(0, t);
+        for (std::uint32_t i = start[t]; i < start[t + 1]; ++i) visit(int(i - start[t]) + 1, nb[i]);
+        if (!allFinite || !std::isfinite(largest2)) return {DivergenceKind::NonFinite};
+        displacement2 = double(largest2);
     }
     // Energy growth: the peak activity of each window against the previous window's.
     const double activity = double(glm::dot(force, force)) + displacement2;
@@ -147,17 +158,26 @@ DivergenceVerdict DivergenceGuard::checkWith(const TissueMesh& mesh, std::size_t
     }
 
     // Oscillation: the force's change reverses every tick with a swing that is not noise.
+    // (Compared squared: no square root per tick.)
     const glm::vec3 delta = force - mLastForce;
-    const float size = std::max(glm::length(force), glm::length(mLastForce));
-    const bool swing = glm::length(delta) > float(mDef.oscillationFraction) * size && size > 1e-4f;
+    const float size2 = std::max(glm::dot(force, force), glm::dot(mLastForce, mLastForce));
+    const float fraction = float(mDef.oscillationFraction);
+    const float delta2 = glm::dot(delta, delta);
+    const bool swing = delta2 > fraction * fraction * size2 && size2 > 1e-8f;
     mAlternatingTicks = swing && glm::dot(delta, mLastDelta) < 0.0f ? mAlternatingTicks + 1 : 0;
-    if (mAlternatingTicks == 1) mFirstSwing = glm::length(delta);
+    if (mAlternatingTicks == 1) mFirstSwing = std::sqrt(delta2);
     mLastForce = force;
     mLastDelta = delta;
-    if (mAlternatingTicks >= mDef.oscillationTicks && glm::length(delta) >= 0.5f * mFirstSwing)
+    if (mAlternatingTicks >= mDef.oscillationTicks && delta2 >= 0.25f * mFirstSwing * mFirstSwing)
         return {DivergenceKind::Oscillation};
 
-    if (mDef.checkInversion && fan && fanInvertedWith(mesh, positionOf, t)) return {DivergenceKind::Inversion};
+    // A fan whose vertices all moved less than a quarter of its smallest rest height cannot have
+    // turned over: a corner would have to cross its opposite edge's line (distance >= h, changed by
+    // at most the two displacements), or the triangle turn rigidly by 90 degrees (its corners
+    // moving by about its height or more). The test is skipped then (docs/stability.md, "Guards").
+    const double height = fan ? double(mesh.fanMinHeightMm()[t]) : 0.0;
+    const bool couldInvert = fan && 16.0 * displacement2 >= height * height;
+    if (mDef.checkInversion && couldInvert && fanInvertedWith(mesh, positionOf, t)) return {DivergenceKind::Inversion};
     return {};
 }
 

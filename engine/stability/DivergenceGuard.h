@@ -5,7 +5,8 @@
 // range: a non-finite force or position, activity (force^2 + fan displacement^2) growing by orders
 // of magnitude window after window, a contact force that alternates every tick (the slope model
 // beyond alpha (1 + g) = 2), or a triangle of the touched vertex's fan inverted against its rest
-// orientation; and a few vertices per tick, round robin, for NaN anywhere. Real-time safe: no
+// orientation; and a few vertices per tick, round robin, for NaN anywhere (not for a model that
+// moves only the vertices it lists, DeformationModel::movesOnlyDisplaced). Real-time safe: no
 // allocation, O(valence^2 + sampled) work, messages are static strings.
 
 #include "engine/models/DeformationModel.h"
@@ -68,9 +69,9 @@ public:
 private:
     static constexpr int kMaxSampled = 256;  // sampledVerticesPerTick is capped at this
     static constexpr int kMaxFan = 64;       // fan vertices read at once (more are read one by one)
-    template <typename Sample, typename PositionOf>
+    template <typename Sample, typename PositionOf, typename FanAt>
     DivergenceVerdict checkWith(const TissueMesh& mesh, std::size_t n, const Sample& sample, bool whole,
-                                const PositionOf& positionOf, const TickResult& result);
+                                const PositionOf& positionOf, const FanAt& fanAt, const TickResult& result);
 
     DivergenceGuardDef mDef;
     VertexId mFanIds[kMaxFan] = {};

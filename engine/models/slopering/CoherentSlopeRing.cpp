@@ -32,6 +32,7 @@ CoherentSlopeRing::CoherentSlopeRing(const TissueMesh& mesh, const Octree& octre
     mActiveRestY.resize(2 * n);
     mActiveRestZ.resize(2 * n);
     mActiveRing.resize(6 * n);
+    mActiveSlope.resize(6 * n);
     mActiveStamp.assign(n, 0);
     mActiveIndex.assign(n, 0);
     mRelaxing.resize(n);
@@ -85,10 +86,9 @@ void CoherentSlopeRing::releaseActiveSet() {
 }
 
 glm::vec3 CoherentSlopeRing::activeDisplacementMm(std::uint32_t i) const {
-    const std::uint8_t* ring = &mActiveRing[3 * std::size_t(i)];
-    const float slope = mFieldWeight[0] * mSlopeByRing[ring[0]] + mFieldWeight[1] * mSlopeByRing[ring[1]] +
-                        mFieldWeight[2] * mSlopeByRing[ring[2]];
-    return (-slope * mFieldForceN) * mFieldNormal;
+    const float* slope = &mActiveSlope[3 * std::size_t(i)];
+    const float blended = mFieldWeight[0] * slope[0] + mFieldWeight[1] * slope[1] + mFieldWeight[2] * slope[2];
+    return (-blended * mFieldForceN) * mFieldNormal;
 }
 
 std::size_t CoherentSlopeRing::copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::uint8_t* rings,
@@ -183,7 +183,7 @@ SurfaceHit CoherentSlopeRing::findContactPoint(const glm::vec3& tool, bool walkF
     // with the tool where the closest point of the facets would rest on a vertex.
     if (walkFromLast && mContactPoint.triangle != kNoTriangle) {
         bool converged = false;
-        const SurfaceHit p = mWalk.project(tool, mContactPoint.triangle, &converged);
+        const SurfaceHit p = mWalk.project(tool, mContactPoint.triangle, &converged, mContactPoint.at.weight);
         if (converged) return p;
     }
     const VertexId v = nearestRestVertex(tool);
@@ -313,6 +313,9 @@ void CoherentSlopeRing::changeActiveSet(TriangleId triangle, bool contact) {
         }
         for (std::uint32_t j = 0; j < count; ++j) {
             const VertexId v = list[base + j];
+            for (int k = 0; k < 3; ++k)
+                mActiveSlope[3 * std::size_t(base + j) + std::size_t(k)] =
+                    mSlopeByRing[mActiveRing[3 * std::size_t(base + j) + std::size_t(k)]];
             removeRelaxing(v);  // its velocity is not read while it is active; zeroed when it leaves
             mActiveRestX[base + j] = rest[v].x;
             mActiveRestY[base + j] = rest[v].y;
@@ -333,8 +336,10 @@ void CoherentSlopeRing::changeActiveSet(TriangleId triangle, bool contact) {
             mActiveRestX[j] = mActiveRestX[base + j];
             mActiveRestY[j] = mActiveRestY[base + j];
             mActiveRestZ[j] = mActiveRestZ[base + j];
-            for (int k = 0; k < 3; ++k) mActiveRing[3 * std::size_t(j) + std::size_t(k)] =
-                mActiveRing[3 * std::size_t(base + j) + std::size_t(k)];
+            for (int k = 0; k < 3; ++k) {
+                mActiveRing[3 * std::size_t(j) + std::size_t(k)] = mActiveRing[3 * std::size_t(base + j) + std::size_t(k)];
+                mActiveSlope[3 * std::size_t(j) + std::size_t(k)] = mActiveSlope[3 * std::size_t(base + j) + std::size_t(k)];
+            }
         }
     mActiveCount = count;
     mActiveTriangle = triangle;

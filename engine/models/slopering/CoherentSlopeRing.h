@@ -32,6 +32,9 @@ public:
     /// the thread that steps, at display rate).
     std::span<const glm::vec3> positionsMm() const override;
     void copyPositionsMm(std::span<const VertexId> ids, glm::vec3* out) const override;
+    /// Only the active set and the relaxing vertices leave rest (and relax by backward Euler,
+    /// unconditionally stable): the rest of the mesh is exactly at rest.
+    bool movesOnlyDisplaced() const override { return true; }
     void reset() override;
     std::size_t copyDisplaced(VertexId* ids, glm::vec3* positionsMm, std::uint8_t* rings,
                               std::size_t capacity) const override;
@@ -96,6 +99,7 @@ private:
     std::uint32_t mActiveCount = 0;
     std::vector<float> mActiveRestX, mActiveRestY, mActiveRestZ;
     std::vector<std::uint8_t> mActiveRing;  // 3 per active vertex
+    std::vector<float> mActiveSlope;        // 3 per active vertex: s[ring from each corner]
     std::vector<std::uint32_t> mActiveStamp;  // == mActiveGeneration: in the active set...
     std::vector<std::uint32_t> mActiveIndex;  // ...at this index
     std::uint32_t mActiveGeneration = 1;
