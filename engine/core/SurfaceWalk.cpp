@@ -121,9 +121,10 @@ bool shadedWeights(const glm::vec3& x, const glm::vec3* P, const glm::vec3* N, f
         const float det = glm::dot(c0, glm::cross(c1, n));
         if (!(std::fabs(det) > 1e-12f)) return false;
         // Cramer's rule for J [du dv dh] = f.
-        const float du = glm::dot(f, glm::cross(c1, n)) / det;
-        const float dv = glm::dot(c0, glm::cross(f, n)) / det;
-        const float dh = glm::dot(c0, glm::cross(c1, f)) / det;
+        const float inverse = 1.0f / det;
+        const float du = glm::dot(f, glm::cross(c1, n)) * inverse;
+        const float dv = glm::dot(c0, glm::cross(f, n)) * inverse;
+        const float dh = glm::dot(c0, glm::cross(c1, f)) * inverse;
         u -= du;
         v -= dv;
         h -= dh;

@@ -17,6 +17,7 @@ void DivergenceGuard::reset() {
     mAlternatingTicks = 0;
     mFirstSwing = 0.0f;
     mLastTouched = kNoVertex;
+    mFanTrianglesOf = kNoVertex;  // the next mesh may number its vertices otherwise
 }
 
 namespace {
@@ -57,7 +58,8 @@ DivergenceVerdict DivergenceGuard::check(const TissueMesh& mesh, std::span<const
     };
     const bool whole = positions.size() == mesh.vertexCount();
     const auto positionOf = [&](VertexId v) { return positions[v]; };
-    return checkWith(mesh, n, sample, whole, positionOf, [&](int, VertexId v) { return positions[v]; }, result);
+    const auto inverted = [&](VertexId t) { return fanInvertedWith(mesh, positionOf, t); };
+    return checkWith(mesh, n, sample, whole, inverted, [&](int, VertexId v) { return positions[v]; }, result);
 }
 
 DivergenceVerdict DivergenceGuard::check(const TissueMesh& mesh, const DeformationModel& model,
@@ -97,12 +99,49 @@ DivergenceVerdict DivergenceGuard::check(const TissueMesh& mesh, const Deformati
     };
     // A model that moves only the vertices it lists has nothing to sample elsewhere.
     const auto fanAt = [&](int i, VertexId v) { return i < mFanCount ? mFanPositions[i] : positionOf(v); };
-    return checkWith(mesh, model.movesOnlyDisplaced() ? 0 : n, sample, true, positionOf, fanAt, result);
+    // The fan's triangles as indices into the fan read above, with their rest normals, taken again
+    // only when the touched vertex changes: the test is then a cross product per triangle.
+    if (mLastTouched != mFanTrianglesOf && mLastTouched != kNoVertex && mLastTouched < n) {
+        mFanTrianglesOf = mLastTouched;
+        mFanTriangleCount = 0;
+        const auto& start = mesh.fanStart();
+        const auto& rest = mesh.restPositionsMm();
+        for (std::uint32_t i = start[mLastTouched]; i < start[mLastTouched + 1]; ++i) {
+            const auto& tri = mesh.triangles()[mesh.fanTriangles()[i]];
+            FanTriangle f;
+            bool complete = mFanTriangleCount < kMaxFan;
+            for (int k = 0; k < 3 && complete; ++k) {
+                const VertexId* first = mFanIds + 1;
+                const VertexId* end = mFanIds + mFanCount;
+                const VertexId v = tri[std::size_t(k)];
+                const VertexId* found = v == mFanIds[0] ? mFanIds : std::lower_bound(first, end, v);
+                complete = found != end && *found == v;
+                if (complete) f.corner[k] = std::uint8_t(found - mFanIds);
+            }
+            if (!complete) {  // a fan beyond kMaxFan: the generic test below
+                mFanTriangleCount = -1;
+                break;
+            }
+            f.restNormal = glm::cross(rest[tri[1]] - rest[tri[0]], rest[tri[2]] - rest[tri[0]]);
+            mFanTriangles[mFanTriangleCount++] = f;
+        }
+    }
+    const auto inverted = [&](VertexId t) {
+        if (mFanTriangleCount < 0 || t != mFanTrianglesOf) return fanInvertedWith(mesh, positionOf, t);
+        for (int i = 0; i < mFanTriangleCount; ++i) {
+            const FanTriangle& f = mFanTriangles[i];
+            const glm::vec3 p0 = mFanPositions[f.corner[0]];
+            const glm::vec3 now = glm::cross(mFanPositions[f.corner[1]] - p0, mFanPositions[f.corner[2]] - p0);
+            if (glm::dot(f.restNormal, now) <= 0.0f) return true;
+        }
+        return false;
+    };
+    return checkWith(mesh, model.movesOnlyDisplaced() ? 0 : n, sample, true, inverted, fanAt, result);
 }
 
-template <typename Sample, typename PositionOf, typename FanAt>
+template <typename Sample, typename Inverted, typename FanAt>
 DivergenceVerdict DivergenceGuard::checkWith(const TissueMesh& mesh, std::size_t n, const Sample& sample,
-                                             bool whole, const PositionOf& positionOf, const FanAt& fanAt,
+                                             bool whole, const Inverted& inverted, const FanAt& fanAt,
                                              const TickResult& result) {
     const glm::vec3 force = result.forceN;
     if (!finite(force)) return {DivergenceKind::NonFinite};
@@ -177,7 +216,7 @@ DivergenceVerdict DivergenceGuard::checkWith(const TissueMesh& mesh, std::size_t
     // moving by about its height or more). The test is skipped then (docs/stability.md, "Guards").
     const double height = fan ? double(mesh.fanMinHeightMm()[t]) : 0.0;
     const bool couldInvert = fan && 16.0 * displacement2 >= height * height;
-    if (mDef.checkInversion && couldInvert && fanInvertedWith(mesh, positionOf, t)) return {DivergenceKind::Inversion};
+    if (mDef.checkInversion && couldInvert && inverted(t)) return {DivergenceKind::Inversion};
     return {};
 }
 

@@ -69,14 +69,21 @@ public:
 private:
     static constexpr int kMaxSampled = 256;  // sampledVerticesPerTick is capped at this
     static constexpr int kMaxFan = 64;       // fan vertices read at once (more are read one by one)
-    template <typename Sample, typename PositionOf, typename FanAt>
+    template <typename Sample, typename Inverted, typename FanAt>
     DivergenceVerdict checkWith(const TissueMesh& mesh, std::size_t n, const Sample& sample, bool whole,
-                                const PositionOf& positionOf, const FanAt& fanAt, const TickResult& result);
+                                const Inverted& inverted, const FanAt& fanAt, const TickResult& result);
 
     DivergenceGuardDef mDef;
     VertexId mFanIds[kMaxFan] = {};
     glm::vec3 mFanPositions[kMaxFan] = {};
     int mFanCount = 0;
+    struct FanTriangle {
+        std::uint8_t corner[3] = {};  // indices into mFanIds / mFanPositions
+        glm::vec3 restNormal{0.0f};
+    };
+    FanTriangle mFanTriangles[kMaxFan];
+    int mFanTriangleCount = 0;              // -1: the fan does not fit (the generic test runs)
+    VertexId mFanTrianglesOf = kNoVertex;   // the touched vertex they belong to
     int mWindowTick = 0;
     double mWindowPeak = 0.0;
     double mPreviousPeak = -1.0;  // < 0: no completed window yet

@@ -49,6 +49,19 @@ TissueMesh hexagonPatch() {
     return std::move(*loaded.mesh);
 }
 
+/// A model that only holds positions: the guard's model variant (what the loop calls) reads them
+/// through copyPositionsMm.
+class HeldPositions final : public DeformationModel {
+public:
+    explicit HeldPositions(std::vector<glm::vec3> p) : mPositions(std::move(p)) {}
+    TickResult step(const glm::vec3&, double) override { return {}; }
+    std::span<const glm::vec3> positionsMm() const override { return mPositions; }
+    void reset() override {}
+    std::string name() const override { return "held"; }
+    std::size_t copyDisplaced(VertexId*, glm::vec3*, std::uint8_t*, std::size_t) const override { return 0; }
+    std::vector<glm::vec3> mPositions;
+};
+
 TickResult touching(VertexId v, glm::vec3 force = glm::vec3(0.0f, 0.0f, 1.0f)) {
     TickResult r;
     r.touched = v;
@@ -75,6 +88,16 @@ TEST(DivergenceGuard, InversionOnAHandBuiltPatch) {
     EXPECT_TRUE(DivergenceGuard::fanInverted(mesh, positions, 0));
     DivergenceGuard guard;
     EXPECT_EQ(guard.check(mesh, positions, touching(0)).kind, DivergenceKind::Inversion);
+    // The loop's variant, which caches the fan's triangles per touched vertex, agrees, before and
+    // after the fan is cached, and on the side where nothing flips.
+    DivergenceGuard loopGuard;
+    HeldPositions held(mesh.restPositionsMm());
+    held.mPositions[0] = 8.0f * towardsEdge;
+    EXPECT_FALSE(loopGuard.check(mesh, held, touching(0)));
+    held.mPositions[0] = 9.5f * towardsEdge;
+    EXPECT_EQ(loopGuard.check(mesh, held, touching(0)).kind, DivergenceKind::Inversion);
+    loopGuard.reset();
+    EXPECT_EQ(loopGuard.check(mesh, held, touching(0)).kind, DivergenceKind::Inversion);
     // The derived bound: |m1 - m2| |F_t| = height over the opposite edge.
     EXPECT_NEAR(minHeightOverOppositeEdgeMm(mesh, 0), 8.660254, 1e-4);
     const double maxForce = inversionMaxTangentialForceN(0.6, 0.35, minHeightOverOppositeEdgeMm(mesh, 0));

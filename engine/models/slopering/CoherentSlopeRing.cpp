@@ -33,6 +33,7 @@ CoherentSlopeRing::CoherentSlopeRing(const TissueMesh& mesh, const Octree& octre
     mActiveRestZ.resize(2 * n);
     mActiveRing.resize(6 * n);
     mActiveSlope.resize(6 * n);
+    mActiveNearestRing.resize(2 * n);
     mActiveStamp.assign(n, 0);
     mActiveIndex.assign(n, 0);
     mRelaxing.resize(n);
@@ -98,10 +99,8 @@ std::size_t CoherentSlopeRing::copyDisplaced(VertexId* ids, glm::vec3* positions
         for (std::uint32_t i = 0; i < mActiveCount; ++i) {
             // The ring of the touched corner (the largest weight), as the paper's methods report
             // it; a vertex only in another corner's rings gets its nearest ring from any corner.
-            const std::uint8_t* ring = &mActiveRing[3 * std::size_t(i)];
-            const std::uint8_t nearest = ring[mFieldTouchedCorner] != kBeyondRings
-                                             ? ring[mFieldTouchedCorner]
-                                             : std::min({ring[0], ring[1], ring[2]});
+            const std::uint8_t touchedRing = mActiveRing[3 * std::size_t(i) + std::size_t(mFieldTouchedCorner)];
+            const std::uint8_t nearest = touchedRing != kBeyondRings ? touchedRing : mActiveNearestRing[i];
             out.put(mActive[i],
                     glm::vec3(mActiveRestX[i], mActiveRestY[i], mActiveRestZ[i]) + activeDisplacementMm(i), nearest);
         }
@@ -121,6 +120,7 @@ void CoherentSlopeRing::reset() {
     mFieldForceN = 0.0f;
     mContactPoint = {};
     mContactNormal = glm::vec3(0.0f);
+    mLastClearanceMm = std::numeric_limits<float>::infinity();
     mFriction.release(glm::vec3(0.0f));
     mCache.clear();
 }
@@ -195,6 +195,16 @@ SurfaceHit CoherentSlopeRing::findContactPoint(const glm::vec3& tool, bool walkF
     return converged ? p : closest;
 }
 
+bool CoherentSlopeRing::walksFromLast(const glm::vec3& tool) const {
+    // In contact the proxy walks. Out of contact too while the tool hovers near the surface and
+    // moves a little per tick (the projection is then the same local solution, found in a step);
+    // after a jump, or far from the surface, the surface is found afresh.
+    if (mContactPoint.triangle == kNoTriangle) return false;
+    if (mContact) return true;
+    const glm::vec3 moved = tool - mLastToolMm;
+    return glm::dot(moved, moved) < kHoverWalkStepMm * kHoverWalkStepMm && mLastClearanceMm < kHoverWalkClearanceMm;
+}
+
 float CoherentSlopeRing::blendedCompliance(TriangleId t, const float* w) const {
     if (mCompliance.empty()) return 1.0f;
     const auto& tri = mMesh.triangles()[t];
@@ -206,14 +216,14 @@ float CoherentSlopeRing::blendedCompliance(TriangleId t, const float* w) const {
 
 void CoherentSlopeRing::warm(const glm::vec3& lastToolMm) const {
     if (!isFinite(lastToolMm)) return;
-    volatile float sink = findContactPoint(lastToolMm, mContact).at.pointMm.x;
+    volatile float sink = findContactPoint(lastToolMm, walksFromLast(lastToolMm)).at.pointMm.x;
     if (mActiveCount > 0) sink = sink + mActiveRestX[0] + mActiveRestX[mActiveCount - 1];
     (void)sink;
 }
 
 VertexId CoherentSlopeRing::findTouched(const glm::vec3& tool) const {
     if (!isFinite(tool)) return kNoVertex;
-    const SurfaceHit p = findContactPoint(tool, mContact);
+    const SurfaceHit p = findContactPoint(tool, walksFromLast(tool));
     if (p.triangle == kNoTriangle) return kNoVertex;
     const float* w = p.at.weight;
     const int k = largestWeightCorner(w);
@@ -225,7 +235,7 @@ TickResult CoherentSlopeRing::step(const glm::vec3& tool, double dtS) {
     const bool toolValid = isFinite(tool);
     SurfaceHit contact = mContactPoint;
     if (toolValid) {
-        const SurfaceHit found = findContactPoint(tool, mContact);
+        const SurfaceHit found = findContactPoint(tool, walksFromLast(tool));
         if (found.triangle != kNoTriangle) contact = found;
     }
     const bool touching = toolValid && contact.triangle != kNoTriangle;
@@ -241,7 +251,9 @@ TickResult CoherentSlopeRing::step(const glm::vec3& tool, double dtS) {
         const glm::vec3 blended = w[0] * normals[tri[0]] + w[1] * normals[tri[1]] + w[2] * normals[tri[2]];
         const float length = glm::length(blended);
         if (length > 0.0f) normal = blended / length;
-        depth = mToolRadiusMm - glm::dot(tool - contact.at.pointMm, normal);
+        const float clearance = glm::dot(tool - contact.at.pointMm, normal);
+        depth = mToolRadiusMm - clearance;
+        mLastClearanceMm = clearance - mToolRadiusMm;
         compliance = blendedCompliance(contact.triangle, w);
         const int k = largestWeightCorner(w);
         touched = tri[std::size_t(k)];
@@ -250,6 +262,7 @@ TickResult CoherentSlopeRing::step(const glm::vec3& tool, double dtS) {
     mTouched = touched;
     mContactPoint = contact;
     mContactNormal = normal;
+    if (toolValid) mLastToolMm = tool;
     stepRings(contact, mContact);
 
     TickResult result;
@@ -313,9 +326,9 @@ void CoherentSlopeRing::changeActiveSet(TriangleId triangle, bool contact) {
         }
         for (std::uint32_t j = 0; j < count; ++j) {
             const VertexId v = list[base + j];
-            for (int k = 0; k < 3; ++k)
-                mActiveSlope[3 * std::size_t(base + j) + std::size_t(k)] =
-                    mSlopeByRing[mActiveRing[3 * std::size_t(base + j) + std::size_t(k)]];
+            const std::uint8_t* ring = &mActiveRing[3 * std::size_t(base + j)];
+            for (int k = 0; k < 3; ++k) mActiveSlope[3 * std::size_t(base + j) + std::size_t(k)] = mSlopeByRing[ring[k]];
+            mActiveNearestRing[base + j] = std::min({ring[0], ring[1], ring[2]});
             removeRelaxing(v);  // its velocity is not read while it is active; zeroed when it leaves
             mActiveRestX[base + j] = rest[v].x;
             mActiveRestY[base + j] = rest[v].y;
@@ -340,6 +353,7 @@ void CoherentSlopeRing::changeActiveSet(TriangleId triangle, bool contact) {
                 mActiveRing[3 * std::size_t(j) + std::size_t(k)] = mActiveRing[3 * std::size_t(base + j) + std::size_t(k)];
                 mActiveSlope[3 * std::size_t(j) + std::size_t(k)] = mActiveSlope[3 * std::size_t(base + j) + std::size_t(k)];
             }
+            mActiveNearestRing[j] = mActiveNearestRing[base + j];
         }
     mActiveCount = count;
     mActiveTriangle = triangle;

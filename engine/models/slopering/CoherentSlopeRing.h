@@ -15,6 +15,7 @@
 #include "engine/models/slopering/SlopeRingModel.h"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace palpate {
@@ -70,6 +71,7 @@ protected:
 
 private:
     SurfaceHit findContactPoint(const glm::vec3& tool, bool walkFromLast) const;
+    bool walksFromLast(const glm::vec3& tool) const;
     VertexId nearestRestVertex(const glm::vec3& tool) const;
     glm::vec3 activeDisplacementMm(std::uint32_t i) const;
     void writeActivePositions() const;
@@ -90,6 +92,12 @@ private:
     // The contact: where the proxy stands on the rest surface, and the shaded normal there.
     SurfaceHit mContactPoint;
     glm::vec3 mContactNormal{0.0f};
+    // Out of contact the proxy walks while the tool moved less than this per tick and its sphere
+    // is nearer the surface than this (walksFromLast).
+    static constexpr float kHoverWalkStepMm = 1.0f;
+    static constexpr float kHoverWalkClearanceMm = 10.0f;
+    glm::vec3 mLastToolMm{0.0f};
+    float mLastClearanceMm = std::numeric_limits<float>::infinity();  // sphere to surface, last tick
 
     // The active set: the union of the rings of the contact triangle's corners, with a copy of
     // each vertex's rest position and its ring from each corner (kBeyondRings when outside).
@@ -100,6 +108,7 @@ private:
     std::vector<float> mActiveRestX, mActiveRestY, mActiveRestZ;
     std::vector<std::uint8_t> mActiveRing;  // 3 per active vertex
     std::vector<float> mActiveSlope;        // 3 per active vertex: s[ring from each corner]
+    std::vector<std::uint8_t> mActiveNearestRing;  // per active vertex: its nearest ring from any corner
     std::vector<std::uint32_t> mActiveStamp;  // == mActiveGeneration: in the active set...
     std::vector<std::uint32_t> mActiveIndex;  // ...at this index
     std::uint32_t mActiveGeneration = 1;
