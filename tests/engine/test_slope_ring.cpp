@@ -284,10 +284,14 @@ TEST(SlopeRingRobustness, LongRandomToolPathsStayFinite) {
     const auto& normals = mesh.restNormals();
     constexpr float kNaNf = std::numeric_limits<float>::quiet_NaN();
     constexpr float kInff = std::numeric_limits<float>::infinity();
-    for (SlopeRingMethod method : kMethods) {
-        SCOPED_TRACE(nameOf(method));
+    // Every method with a point tool, and ours again with the product's sphere and friction.
+    for (int pass = 0; pass < int(std::size(kMethods)) + 1; ++pass) {
+        const bool sphereTool = pass == int(std::size(kMethods));
+        const SlopeRingMethod method = sphereTool ? SlopeRingMethod::Coherent : kMethods[pass];
+        SCOPED_TRACE(nameOf(method) + (sphereTool ? " (sphere, friction)" : ""));
         const auto modelOwner = makeSlopeRing(mesh, tree, SlopeRingParams{}, method);
         SlopeRingModel& model = *modelOwner;
+        if (sphereTool) model.setContact({.toolRadiusMm = 5.0, .staticFriction = 0.3, .dynamicFriction = 0.2});
         std::mt19937 rng(4242);
         std::uniform_real_distribution<float> u01(0.0f, 1.0f);
         std::normal_distribution<float> gauss(0.0f, 1.0f);
