@@ -1,5 +1,7 @@
 #include "app/report/FeelChart.h"
 
+#include "app/report/ChartImage.h"
+
 #include "app/report/SpeedAccuracyChart.h"
 
 #include <QChart>
@@ -103,22 +105,7 @@ void FeelChart::changeEvent(QEvent* event) {
     QChartView::changeEvent(event);
 }
 
-void FeelChart::applyFonts() {
-    QChart* c = chart();
-    const QFont base = font();
-    auto sized = [&](double factor, bool bold) {
-        QFont f = base;
-        f.setPointSizeF(base.pointSizeF() * factor * mTextScale);
-        f.setBold(bold);
-        return f;
-    };
-    c->setTitleFont(sized(1.25, false));
-    c->legend()->setFont(sized(1.0, false));
-    for (QAbstractAxis* axis : c->axes()) {
-        axis->setLabelsFont(sized(1.0, false));
-        axis->setTitleFont(sized(1.05, true));
-    }
-}
+void FeelChart::applyFonts() { applyChartFonts(*chart(), font(), mTextScale); }
 
 bool FeelChart::narrow() const { return width() < kNarrowBelowPx; }
 

@@ -1,5 +1,7 @@
 #include "app/report/SpeedAccuracyChart.h"
 
+#include "app/report/ChartImage.h"
+
 #include <QChart>
 #include <QCursor>
 #include <QEvent>
@@ -139,22 +141,7 @@ void SpeedAccuracyChart::setTextScale(double scale) {
     rebuild();
 }
 
-void SpeedAccuracyChart::applyFonts() {
-    QChart* c = chart();
-    const QFont base = font();
-    auto sized = [&](double factor, bool bold) {
-        QFont f = base;
-        f.setPointSizeF(base.pointSizeF() * factor * mTextScale);
-        f.setBold(bold);
-        return f;
-    };
-    c->setTitleFont(sized(1.25, false));
-    c->legend()->setFont(sized(1.0, false));
-    for (QAbstractAxis* axis : c->axes()) {
-        axis->setLabelsFont(sized(1.0, false));
-        axis->setTitleFont(sized(1.05, true));
-    }
-}
+void SpeedAccuracyChart::applyFonts() { applyChartFonts(*chart(), font(), mTextScale); }
 
 QStringList SpeedAccuracyChart::seriesNames() const {
     QStringList names;

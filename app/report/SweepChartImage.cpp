@@ -1,13 +1,11 @@
 #include "app/report/SweepChartImage.h"
 
 #include "app/report/ChartApplication.h"
+#include "app/report/ChartImage.h"
 #include "app/report/SpeedAccuracyChart.h"
 
 #include <QApplication>
 #include <QVBoxLayout>
-#include <QImage>
-#include <QImageWriter>
-#include <QPainter>
 #include <QWidget>
 
 #include <algorithm>
@@ -15,13 +13,6 @@
 #include <memory>
 
 namespace palpate {
-
-namespace {
-
-constexpr int kMinSidePx = 200;
-constexpr int kMaxSidePx = 16000;
-
-}  // namespace
 
 bool renderSweepChartPng(const std::vector<SweepPoint>& points, const std::string& path, std::string* error, int widthPx,
                          int heightPx) {
@@ -34,20 +25,14 @@ bool renderSweepChartPng(const std::vector<SweepPoint>& points, const std::optio
         if (error) *error = message;
         return false;
     };
-    if (widthPx < kMinSidePx || heightPx < kMinSidePx || widthPx > kMaxSidePx || heightPx > kMaxSidePx)
-        return fail("image size " + std::to_string(widthPx) + "x" + std::to_string(heightPx) + " px is outside " +
-                    std::to_string(kMinSidePx) + ".." + std::to_string(kMaxSidePx) + " px");
-    if (path.empty()) return fail("no file name");
+    if (const std::string problem = chartImageProblem(widthPx, heightPx, path); !problem.empty()) return fail(problem);
     const ChartApplication application;
     if (!application.problem().empty()) return fail(application.problem());
 
-    QImage image(widthPx, heightPx, QImage::Format_RGB32);
-    image.fill(Qt::white);
     {
         // One chart per shape, one above the other (the log tick axis needs the width); the axes span
         // every point, so the two compare directly.
         QWidget canvas;
-        canvas.setAttribute(Qt::WA_DontShowOnScreen);
         canvas.setAutoFillBackground(true);
         canvas.setPalette(QPalette(Qt::white));
         auto* layout = new QVBoxLayout(&canvas);
@@ -67,15 +52,9 @@ bool renderSweepChartPng(const std::vector<SweepPoint>& points, const std::optio
             chart->setTextScale(std::clamp(widthPx / 1000.0, 1.0, 3.0));
             layout->addWidget(chart, 1);
         }
-        canvas.resize(widthPx, heightPx);
-        canvas.show();  // not on screen (WA_DontShowOnScreen): lays out and sends the resize events
-        QCoreApplication::processEvents();
-        QPainter painter(&image);
-        painter.setRenderHint(QPainter::Antialiasing);
-        canvas.render(&painter);
+        if (const std::string problem = renderWidgetPng(canvas, widthPx, heightPx, path); !problem.empty())
+            return fail(problem);
     }
-    QImageWriter writer(QString::fromStdString(path), "png");
-    if (!writer.write(image)) return fail("cannot be written (" + writer.errorString().toStdString() + ")");
     return true;
 }
 
