@@ -1,5 +1,7 @@
 #include "app/cli/Args.h"
 
+#include <sstream>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -59,6 +61,14 @@ std::optional<double> parseNumber(const std::string& text) {
     } catch (...) {
         return std::nullopt;
     }
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    std::stringstream s(text);
+    for (std::string item; std::getline(s, item, ',');)
+        if (!item.empty()) items.push_back(item);
+    return items;
 }
 
 }  // namespace palpate::cli

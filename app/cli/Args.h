@@ -25,6 +25,8 @@ private:
 
 /// Parses a positive integer, or returns nullopt.
 std::optional<long long> parsePositiveInt(const std::string& text);
+/// "a,b,,c" -> {"a", "b", "c"}: an option's comma-separated list, empty items dropped.
+std::vector<std::string> splitList(const std::string& text);
 /// Parses a whole finite number ("1.5", "2e3"), or returns nullopt.
 std::optional<double> parseNumber(const std::string& text);
 

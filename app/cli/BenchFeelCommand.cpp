@@ -28,14 +28,6 @@ namespace palpate::cli {
 
 namespace {
 
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream s(text);
-    for (std::string item; std::getline(s, item, ',');)
-        if (!item.empty()) items.push_back(item);
-    return items;
-}
-
 std::string fixed(double v, int precision) {
     if (!std::isfinite(v)) return "-";
     std::ostringstream s;

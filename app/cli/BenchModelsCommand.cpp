@@ -40,14 +40,6 @@ struct ModelRow {
     int repeats = 0;     ///< passes over the path the median is of (0: not timed)
 };
 
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream s(text);
-    for (std::string item; std::getline(s, item, ',');)
-        if (!item.empty()) items.push_back(item);
-    return items;
-}
-
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

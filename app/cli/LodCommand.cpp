@@ -34,14 +34,6 @@ void lodUsage(std::ostream& out) {
            "      Without --error/--budget-us the exercise's, then the preset's, \"needs\" are used.\n";
 }
 
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream s(text);
-    for (std::string item; std::getline(s, item, ',');)
-        if (!item.empty()) items.push_back(item);
-    return items;
-}
-
 /// --min-vertices, --max-levels, --ratio into `options`; "" or the problem naming the option.
 std::string levelOptionsFromArgs(const Args& args, LevelDef& options) {
     if (const auto text = args.option("min-vertices")) {

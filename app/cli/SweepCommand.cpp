@@ -18,14 +18,6 @@ namespace palpate::cli {
 
 namespace {
 
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream s(text);
-    for (std::string item; std::getline(s, item, ',');)
-        if (!item.empty()) items.push_back(item);
-    return items;
-}
-
 void printTable(std::ostream& out, const SweepResult& result) {
     out << std::left << std::setw(9) << "shape" << std::right << std::setw(9) << "vertices" << "  " << std::left
         << std::setw(20) << "model" << std::right << std::setw(10) << "tick us" << std::setw(12) << "displ err"
