@@ -57,6 +57,13 @@ public:
     /// only; must not block or allocate.
     virtual void setTimeS(double /*loopTimeS*/) {}
 
+    /// Devices that play a script (simulated trajectories, waypoint paths, a recorded tool) start
+    /// it again from its beginning at the next setTimeS. The loop calls it when a recording
+    /// attaches, so that a recording starts where the script starts and a scripted run's score
+    /// does not depend on how long the GUI took to start recording (docs/haptic-loop.md). Hardware
+    /// ignores it. Haptic thread only; must not block or allocate.
+    virtual void restartScript() {}
+
     /// Where the scene wants to be touched: a target point, its outward normal and a tangent (all
     /// in the scene's frame). Devices that script their motion relative to the target (simulated)
     /// use it; others ignore it. Call before the loop starts or from the haptic thread at a tick

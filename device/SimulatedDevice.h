@@ -78,6 +78,8 @@ public:
     /// Advances the device to the loop's time: the next read() returns the position at timeS with
     /// a new sequence number (unless unplugged or stalled). Non-finite times are ignored.
     void setTimeS(double timeS) override;
+    /// The script starts again at the next setTimeS (as after open()).
+    void restartScript() override { mEpochSet = false; }
     /// Moves the scripted trajectory to a new target frame. The normal is normalised; the tangent
     /// is made perpendicular to it (any perpendicular if it is parallel). Non-finite input is
     /// ignored. No allocation.

@@ -79,8 +79,8 @@ QLabel* addStatusField(QStatusBar* bar, const char* objectName, const QString& t
 
 }  // namespace
 
-MainWindow::MainWindow(RendererChoice renderer, LoopMode mode, QWidget* parent)
-    : QMainWindow(parent), mSession(std::make_unique<HapticSession>(mode)) {
+MainWindow::MainWindow(RendererChoice renderer, LoopMode mode, const HapticLoopDef& loopDef, QWidget* parent)
+    : QMainWindow(parent), mSession(std::make_unique<HapticSession>(mode, loopDef)) {
     setWindowTitle(QStringLiteral("Palpate"));
     mViewport = createViewport(renderer, this, &mRendererReason);
     setCentralWidget(mViewport->widget());

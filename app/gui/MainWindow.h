@@ -49,7 +49,9 @@ public:
 
     /// `mode`: Threaded runs the haptic loop's real-time thread (the interactive window); Stepped
     /// runs ticks only in advanceTicks(), on the GUI thread (screenshots, tests: deterministic).
-    MainWindow(RendererChoice renderer, LoopMode mode, QWidget* parent = nullptr);
+    /// `loopDef`: the haptic loop's definition (e.g. trySchedFifo off, as for a desktop user
+    /// without real-time rights: `palpate --no-fifo`).
+    MainWindow(RendererChoice renderer, LoopMode mode, const HapticLoopDef& loopDef = {}, QWidget* parent = nullptr);
     /// Stops the haptic thread before anything is destroyed.
     ~MainWindow() override;
 

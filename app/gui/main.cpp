@@ -95,6 +95,10 @@ int main(int argc, char** argv) {
                                          QStringLiteral("Haptic ticks (1 ms) before the screenshot (default %1).")
                                              .arg(kDefaultScreenshotTicks),
                                          QStringLiteral("N"), QString::number(kDefaultScreenshotTicks));
+    const QCommandLineOption noFifoOption(
+        QStringLiteral("no-fifo"),
+        QStringLiteral("Run the haptic thread with normal scheduling, as a desktop user without real-time rights does."));
+    parser.addOption(noFifoOption);
     const QCommandLineOption headlessOption(QStringLiteral("headless"),
                                             QStringLiteral("No window: load the mesh, print what was loaded, exit."));
     // Hidden, for documentation and checks: `--grab-after-ms MS FILE` runs the interactive window
@@ -234,7 +238,9 @@ int main(int argc, char** argv) {
     // Screenshots step the loop on this thread (deterministic); everything else runs its thread.
     const auto mode = screenshot ? palpate::LoopMode::Stepped : palpate::LoopMode::Threaded;
     const auto renderer = parser.isSet(softwareOption) ? palpate::RendererChoice::Software : palpate::RendererChoice::Auto;
-    palpate::MainWindow window(renderer, mode);
+    palpate::HapticLoopDef loopDef;
+    loopDef.trySchedFifo = !parser.isSet(noFifoOption);
+    palpate::MainWindow window(renderer, mode, loopDef);
     palpate::applyPreferences(window);  // data folder, haptic rate; --preset below still wins
     if (const QString error = window.setDeviceUri(deviceUri); !error.isEmpty()) return fail(error);
     if (const QString error = window.loadMesh(meshPath); !error.isEmpty()) return fail(error);

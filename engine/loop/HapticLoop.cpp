@@ -326,6 +326,9 @@ void HapticLoop::pickUpRecorder() {
         mSafety.rearm();
         mHaveSample = false;
         mLastSample = DeviceSample{};
+        // A scripted device starts its script with the recording, so a scripted trainee's run
+        // is scored from its first move however late the recording attached.
+        mDevice->restartScript();
     }
     mRecorder = wanted;
     mRecorderAck.store(request, std::memory_order_release);

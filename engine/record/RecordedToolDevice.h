@@ -31,6 +31,11 @@ public:
     void writeForce(const glm::vec3& forceN) override { mLastForceN = forceN; }
     void emergencyStop() override { mLastForceN = glm::vec3(0.0f); }
     void setTimeS(double loopTimeS) override { mNowS = loopTimeS; }
+    /// The recorded motion plays again from its first sample at the next read.
+    void restartScript() override {
+        mStartS = -1.0;
+        mCursor = 0;
+    }
     std::string lastError() const override { return mError; }
 
     std::size_t sampleCount() const { return mSamples.size(); }

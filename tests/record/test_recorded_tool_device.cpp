@@ -104,3 +104,26 @@ TEST(RecordedToolDevice, BadFilesAreNamedNotCrashedOn) {
     EXPECT_FALSE(createDeviceFromUri("replay:" + garbage, error));
     EXPECT_NE(error.find("replay"), std::string::npos) << error;
 }
+
+TEST(RecordedToolDevice, RestartScriptPlaysTheRecordingAgainFromItsStart) {
+    TempDir dir;
+    const std::string path = recordStroke(dir, 2000);
+    const RecordingReader reader = RecordingReader::open(path);
+    std::vector<RecordedTick> ticks = reader.ticks();
+    std::size_t firstRead = 0;
+    while (!ticks[firstRead].readOk) ++firstRead;
+    registerReplayDeviceScheme();
+    std::string error;
+    auto device = openDeviceUri("replay:" + path, error);
+    ASSERT_TRUE(device) << error;
+    DeviceSample sample;
+    device->setTimeS(1.0);
+    ASSERT_TRUE(device->read(sample));
+    device->setTimeS(2.9);  // near the end
+    ASSERT_TRUE(device->read(sample));
+    ASSERT_NE(sample.positionMm, ticks[firstRead].sample.positionMm);
+    device->restartScript();
+    device->setTimeS(7.0);
+    ASSERT_TRUE(device->read(sample));
+    EXPECT_EQ(sample.positionMm, ticks[firstRead].sample.positionMm);
+}

@@ -314,3 +314,27 @@ TEST(Recorder, SizeGoalOf40BytesPerTickHolds) {
                   << " bytes, " << s.bytesPerTick() << " bytes/tick, " << s.chunks << " chunks\n";
     }
 }
+
+// A scripted device's script starts with the recording: the first recorded sample is where the
+// script begins however long the loop ran before, so a scripted run's score does not depend on how
+// soon the recording attached (docs/haptic-loop.md).
+TEST(Recorder, AScriptedDeviceStartsItsScriptWithTheRecording) {
+    TempDir dir;
+    RecordRig rig = makeRecordRig(SimTrajectory::Stroke);
+    for (int i = 0; i < 2500; ++i) rig.loop->stepOnce();  // 2.5 s into the stroke: pressing
+    const glm::vec3 startMm = rig.device->positionAtMm(0.0);
+    std::string error;
+    auto writer = RecordingWriter::create(dir.file("late.palprec"), rig.header, error);
+    ASSERT_TRUE(writer) << error;
+    TeeSink tee(*writer);
+    rig.loop->attachRecorder(&tee);
+    for (int i = 0; i < 1200; ++i) rig.loop->stepOnce();
+    rig.loop->detachRecorder();
+    ASSERT_EQ(writer->close(), "");
+    ASSERT_FALSE(tee.ticks.empty());
+    ASSERT_TRUE(tee.ticks.front().readOk);
+    EXPECT_EQ(tee.ticks.front().sample.positionMm, startMm);
+    // and the script goes on from there on the recording's clock
+    const RecordedTick& later = tee.ticks[1000];
+    EXPECT_EQ(later.sample.positionMm, rig.device->positionAtMm(later.nowS - tee.ticks.front().nowS));
+}

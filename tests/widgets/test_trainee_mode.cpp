@@ -17,6 +17,7 @@
 #include "widgets/RecorderPanel.h"
 #include "widgets/ScoreCard.h"
 #include "widgets/TraineePanel.h"
+#include "widgets/DevicePanel.h"
 #include "widgets/Viewport.h"
 
 #include <gtest/gtest.h>
@@ -141,6 +142,40 @@ TEST(TraineeMode, PressTargetsRunsGuidesScoresAndStores) {
     EXPECT_TRUE(results[0].metricsJson.contains(QStringLiteral("target_error_mm")));
     EXPECT_EQ(window->historyPanel()->results().size(), 1u);
     EXPECT_EQ(window->historyPanel()->plottedPointCount(), 1);
+}
+
+// The score depends only on what the trainee did: a scripted trainee's path starts with the
+// exercise's recording, so a window that is slow to start recording (a busy machine: here 5 s of
+// ticks pass before the window looks) scores as a prompt one does, and so does a second run.
+TEST(TraineeMode, AScriptedPathStartsWithTheExerciseHoweverLateTheWindowLooks) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+    window->setMode(MainWindow::Mode::Trainee);
+    ASSERT_EQ(window->exercises().addTrainee(QStringLiteral("Ada")), QString());
+    ASSERT_EQ(window->exercises().addExerciseFile(resource("exercises/press_targets.json")), QString());
+    window->advanceTicks(3000);  // the device was connected a while before Start
+    auto scoreWithDelay = [&](int delayTicks) {
+        EXPECT_EQ(window->exercises().start(), QString());
+        EXPECT_FALSE(window->devicePanel()->isEnabled());  // no device switch within a run
+        window->session().step(delayTicks);  // the loop runs on; the window has not looked yet
+        runToEnd(*window, 45000);
+        EXPECT_EQ(window->exercises().phase(), ExerciseController::Phase::Finished);
+        return window->exercises().lastReport() ? window->exercises().lastReport()->score : -1.0;
+    };
+    const double first = scoreWithDelay(0);
+    const double late = scoreWithDelay(5000);
+    // Between runs the device can be switched (the Device dock is the trainee's again) ...
+    EXPECT_TRUE(window->devicePanel()->isEnabled());
+    ASSERT_EQ(window->setDeviceUri(QStringLiteral("sim:stroke")), QString());
+    ASSERT_EQ(window->setDeviceUri(QStringLiteral("sim:path:") + resource("exercises/press_targets.good.path")), QString());
+    // ... and the path, connected again, still starts with the next run.
+    window->advanceTicks(4000);
+    const double prompt = scoreWithDelay(0);
+    EXPECT_GE(first, 90.0);
+    EXPECT_GE(late, 90.0);
+    EXPECT_GE(prompt, 90.0);
+    EXPECT_NEAR(late, prompt, 0.5);
 }
 
 TEST(TraineeMode, ResultsSurviveReopeningAndTheHistoryChartsEachSession) {
