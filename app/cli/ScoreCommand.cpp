@@ -60,7 +60,9 @@ int scoreCommand(const std::vector<std::string>& words) {
     }
     if (pdf) {
         // The report never replaces what it is made from.
-        for (const auto& [input, what] : {std::pair{*recording, "recording"}, {args.option("exercise").value_or(""), "exercise"}})
+        for (const auto& [input, what] : {std::pair{*recording, "recording"},
+                                          {args.option("exercise").value_or(""), "exercise"},
+                                          {args.option("mesh").value_or(""), "mesh"}})
             if (!input.empty() && sameFile(*pdf, input)) {
                 std::cerr << "score: --pdf " << *pdf << " is the " << what
                           << " file: the report is never written over an input; choose another file\n";

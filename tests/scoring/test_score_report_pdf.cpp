@@ -157,6 +157,28 @@ TEST(ScoreReportPdf, ScoredRecordingIsReadable) {
     EXPECT_NE(text.find("Press three targets"), std::string::npos) << text;
     EXPECT_NE(text.find("sim:path:"), std::string::npos) << text;  // the device
     for (const auto& [name, value] : j["metrics"].items()) EXPECT_NE(text.find(name), std::string::npos) << name;
+
+    // The plot labels each target's own window (not only the last one's) over its own time: the
+    // labels go left to right in target order, and a higher window's label sits higher.
+    const auto exercise = nlohmann::json::parse(test::readBytes(exampleFile("press_targets.json")))["press_targets"];
+    std::vector<const TextLine*> labels;
+    for (std::size_t i = 0; i < exercise["targets"].size(); ++i) {
+        const auto& t = exercise["targets"][i];
+        char label[96];
+        std::snprintf(label, sizeof label, "Target %zu: %.1f – %.1f N", i + 1,
+                      t.value("force_min_n", exercise["force_min_n"].get<double>()),
+                      t.value("force_max_n", exercise["force_max_n"].get<double>()));
+        const TextLine* found = nullptr;
+        for (const PdfPage& page : pages)
+            for (const TextLine& l : page.lines)
+                if (l.text == label) found = &l;
+        EXPECT_TRUE(found) << "no plot label '" << label << "'";
+        if (found) labels.push_back(found);
+    }
+    ASSERT_EQ(labels.size(), 3u);
+    EXPECT_LT(labels[0]->xMax, labels[1]->xMin);
+    EXPECT_LT(labels[1]->xMax, labels[2]->xMin);
+    EXPECT_LT(labels[2]->yMax, labels[1]->yMin);  // [1.5, 2.5] N above [1, 2] N
     // Nothing left beside the report (it is written to a temporary file and renamed).
     std::vector<std::string> files;
     for (const auto& e : std::filesystem::directory_iterator(dir.path())) files.push_back(e.path().filename().string());
