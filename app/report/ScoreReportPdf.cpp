@@ -60,7 +60,8 @@ struct Column {
 /// screen are a fraction of the PDF's at its resolution, which once put every line on the last.
 class ReportLayout {
 public:
-    explicit ReportLayout(QPdfWriter& writer) : mWriter(writer) {
+    /// `pageCount`: the document's pages, for the footer (0: not known yet, the first pass).
+    ReportLayout(QPdfWriter& writer, int pageCount) : mWriter(writer), mPageCount(pageCount) {
         mBody.setFamily(QStringLiteral("DejaVu Sans"));
         mBody.setPointSizeF(9.5);
         mSmall = mBody;
@@ -87,6 +88,7 @@ public:
         return true;
     }
     bool end() { return mPainter.end(); }
+    int pageNumber() const { return mPageNumber; }
 
     double mm(double v) const { return v * mWriter.resolution() / 25.4; }
     QPainter& painter() { return mPainter; }
@@ -230,7 +232,8 @@ private:
         const QFontMetricsF fm = metrics(mSmall);
         mPainter.setFont(mSmall);
         mPainter.setPen(QColor(90, 90, 90));
-        const QString text = Tr::tr("Palpate score report, page %1").arg(mPageNumber);
+        const QString text = mPageCount > 0 ? Tr::tr("Palpate score report, page %1 of %2").arg(mPageNumber).arg(mPageCount)
+                                            : Tr::tr("Palpate score report, page %1").arg(mPageNumber);
         mPainter.drawText(QPointF(mWriter.width() - fm.horizontalAdvance(text), mWriter.height() - fm.descent()), text);
     }
 
@@ -241,6 +244,7 @@ private:
     double mFooterH = 0.0;
     double mY = 0.0;
     int mPageNumber = 1;
+    int mPageCount = 0;
 };
 
 /// Colours for the force windows of consecutive targets (so that two side by side differ).
@@ -271,7 +275,7 @@ void drawForcePlot(ReportLayout& layout, const QRectF& area, const ScoreReportCo
     if (t1 <= t0) t1 = t0 + 1.0;
     if (fMax <= 0.0) fMax = 1.0;
     fMax *= 1.05;
-    const double fStep = niceStep(fMax, 5), tStep = niceStep(t1 - t0, 8);
+    const double fStep = niceStep(fMax, 5), tStep = niceStep(t1 - t0, 10);
     fMax = std::ceil(fMax / fStep - 1e-9) * fStep;
     const int tDecimals = tStep < 1.0 ? 1 : 0, fDecimals = fStep < 1.0 ? (fStep < 0.1 ? 2 : 1) : 0;
 
@@ -474,8 +478,12 @@ bool writeScoreReportPdf(const QString& path, const ScoreReportContent& content,
     if (!application.problem().empty()) return fail(QString::fromStdString(application.problem()));
 
     // Drawn into memory first, then written whole to a temporary file that replaces the target.
+    // Twice: the first pass counts the pages for the footers of the second (the footer's text
+    // does not move anything).
     QByteArray bytes;
-    {
+    int pageCount = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+        bytes.clear();
         QBuffer buffer(&bytes);
         buffer.open(QIODevice::WriteOnly);
         QPdfWriter writer(&buffer);
@@ -484,10 +492,11 @@ bool writeScoreReportPdf(const QString& path, const ScoreReportContent& content,
         writer.setResolution(300);
         writer.setTitle(Tr::tr("Palpate score report"));
         writer.setCreator(QStringLiteral("Palpate"));
-        ReportLayout layout(writer);
+        ReportLayout layout(writer, pageCount);
         if (!layout.begin()) return fail(Tr::tr("cannot be drawn (the PDF writer did not start)"));
         drawReport(layout, content);
         if (!layout.end()) return fail(Tr::tr("cannot be drawn"));
+        pageCount = layout.pageNumber();
     }
     if (bytes.isEmpty()) return fail(Tr::tr("cannot be drawn (empty document)"));
     QSaveFile file(path);
