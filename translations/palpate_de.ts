@@ -544,10 +544,6 @@
         <source>This result has no recording to report from.</source>
         <translation>Dieses Ergebnis hat keine Aufnahme für einen Bericht.</translation>
     </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
 </context>
 <context>
     <name>palpate::ExerciseEditorPanel</name>
@@ -3787,10 +3783,6 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
 <context>
     <name>palpate::ScoreReportPdf</name>
     <message>
-        <source>force window</source>
-        <translation>Kraftfenster</translation>
-    </message>
-    <message>
         <source>Time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
@@ -3809,38 +3801,6 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
     <message>
         <source>Palpate score report</source>
         <translation>Palpate-Bewertungsbericht</translation>
-    </message>
-    <message>
-        <source>cannot be written (permission denied or disk full)</source>
-        <translation>kann nicht geschrieben werden (Zugriff verweigert oder Datenträger voll)</translation>
-    </message>
-    <message>
-        <source>Trainee: %1</source>
-        <translation>Trainee: %1</translation>
-    </message>
-    <message>
-        <source>Exercise: %1</source>
-        <translation>Übung: %1</translation>
-    </message>
-    <message>
-        <source>Date: %1</source>
-        <translation>Datum: %1</translation>
-    </message>
-    <message>
-        <source>completed</source>
-        <translation>abgeschlossen</translation>
-    </message>
-    <message>
-        <source>time limit reached</source>
-        <translation>Zeitlimit erreicht</translation>
-    </message>
-    <message>
-        <source>not finished</source>
-        <translation>nicht beendet</translation>
-    </message>
-    <message>
-        <source>Result: %1</source>
-        <translation>Ergebnis: %1</translation>
     </message>
     <message>
         <source>Score: %1 / 100</source>
@@ -3879,12 +3839,152 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <translation>Kraft über die Zeit</translation>
     </message>
     <message>
-        <source>cannot be written</source>
-        <translation>kann nicht geschrieben werden</translation>
+        <source>%1 – %2 N</source>
+        <translation>%1 – %2 N</translation>
     </message>
     <message>
-        <source>cannot be written (empty file)</source>
-        <translation>kann nicht geschrieben werden (leere Datei)</translation>
+        <source>%1 (continued)</source>
+        <translation>%1 (Fortsetzung)</translation>
+    </message>
+    <message>
+        <source>Palpate score report, page %1</source>
+        <translation>Palpate-Bewertungsbericht, Seite %1</translation>
+    </message>
+    <message>
+        <source>Target %1</source>
+        <translation>Ziel %1</translation>
+    </message>
+    <message>
+        <source>Force band</source>
+        <translation>Kraftband</translation>
+    </message>
+    <message>
+        <source>T%1</source>
+        <translation>Z%1</translation>
+    </message>
+    <message>
+        <source>completed in %1 s</source>
+        <translation>abgeschlossen in %1 s</translation>
+    </message>
+    <message>
+        <source>time limit reached (%1 s)</source>
+        <translation>Zeitlimit erreicht (%1 s)</translation>
+    </message>
+    <message>
+        <source>not finished (%1 s scored)</source>
+        <translation>nicht beendet (%1 s bewertet)</translation>
+    </message>
+    <message>
+        <source>not recorded</source>
+        <translation>nicht aufgezeichnet</translation>
+    </message>
+    <message>
+        <source>Exercise:</source>
+        <translation>Übung:</translation>
+    </message>
+    <message>
+        <source>(unnamed)</source>
+        <translation>(ohne Namen)</translation>
+    </message>
+    <message>
+        <source>Trainee:</source>
+        <translation>Trainee:</translation>
+    </message>
+    <message>
+        <source>Date:</source>
+        <translation>Datum:</translation>
+    </message>
+    <message>
+        <source>Device:</source>
+        <translation>Gerät:</translation>
+    </message>
+    <message>
+        <source>Result:</source>
+        <translation>Ergebnis:</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>achieved at %1 s</source>
+        <translation>erreicht bei %1 s</translation>
+    </message>
+    <message>
+        <source>not achieved</source>
+        <translation>nicht erreicht</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>Targets</source>
+        <translation>Ziele</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Force window</source>
+        <translation>Kraftfenster</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Halten</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Abweichung</translation>
+    </message>
+    <message>
+        <source>On target</source>
+        <translation>Auf dem Ziel</translation>
+    </message>
+    <message>
+        <source>In window</source>
+        <translation>Im Fenster</translation>
+    </message>
+    <message>
+        <source>Shaded: each target&apos;s own force window, over the time it was the target to press.</source>
+        <translation>Schattiert: das Kraftfenster jedes Ziels, über die Zeit, in der es das zu drückende Ziel war.</translation>
+    </message>
+    <message>
+        <source>Shaded: the force band to keep while tracing.</source>
+        <translation>Schattiert: das beim Nachfahren einzuhaltende Kraftband.</translation>
+    </message>
+    <message>
+        <source>Breakdown</source>
+        <translation>Aufschlüsselung</translation>
+    </message>
+    <message>
+        <source>cannot be written: it is a folder</source>
+        <translation>kann nicht geschrieben werden: es ist ein Ordner</translation>
+    </message>
+    <message>
+        <source>cannot be drawn (the PDF writer did not start)</source>
+        <translation>kann nicht gezeichnet werden (der PDF-Schreiber startete nicht)</translation>
+    </message>
+    <message>
+        <source>cannot be drawn</source>
+        <translation>kann nicht gezeichnet werden</translation>
+    </message>
+    <message>
+        <source>cannot be drawn (empty document)</source>
+        <translation>kann nicht gezeichnet werden (leeres Dokument)</translation>
+    </message>
+    <message>
+        <source>cannot be written: %1</source>
+        <translation>kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>Palpate score report, page %1 of %2</source>
+        <translation>Palpate-Bewertungsbericht, Seite %1 von %2</translation>
     </message>
 </context>
 <context>

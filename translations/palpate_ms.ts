@@ -544,10 +544,6 @@
         <source>This result has no recording to report from.</source>
         <translation>Keputusan ini tiada rakaman untuk dilaporkan.</translation>
     </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
 </context>
 <context>
     <name>palpate::ExerciseEditorPanel</name>
@@ -3786,10 +3782,6 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
 <context>
     <name>palpate::ScoreReportPdf</name>
     <message>
-        <source>force window</source>
-        <translation>tetingkap daya</translation>
-    </message>
-    <message>
         <source>Time (s)</source>
         <translation>Masa (s)</translation>
     </message>
@@ -3808,38 +3800,6 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
     <message>
         <source>Palpate score report</source>
         <translation>Laporan markah Palpate</translation>
-    </message>
-    <message>
-        <source>cannot be written (permission denied or disk full)</source>
-        <translation>tidak dapat ditulis (kebenaran ditolak atau cakera penuh)</translation>
-    </message>
-    <message>
-        <source>Trainee: %1</source>
-        <translation>Pelatih: %1</translation>
-    </message>
-    <message>
-        <source>Exercise: %1</source>
-        <translation>Latihan: %1</translation>
-    </message>
-    <message>
-        <source>Date: %1</source>
-        <translation>Tarikh: %1</translation>
-    </message>
-    <message>
-        <source>completed</source>
-        <translation>selesai</translation>
-    </message>
-    <message>
-        <source>time limit reached</source>
-        <translation>had masa dicapai</translation>
-    </message>
-    <message>
-        <source>not finished</source>
-        <translation>tidak selesai</translation>
-    </message>
-    <message>
-        <source>Result: %1</source>
-        <translation>Keputusan: %1</translation>
     </message>
     <message>
         <source>Score: %1 / 100</source>
@@ -3878,12 +3838,152 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <translation>Daya mengikut masa</translation>
     </message>
     <message>
-        <source>cannot be written</source>
-        <translation>tidak dapat ditulis</translation>
+        <source>%1 – %2 N</source>
+        <translation>%1 – %2 N</translation>
     </message>
     <message>
-        <source>cannot be written (empty file)</source>
-        <translation>tidak dapat ditulis (fail kosong)</translation>
+        <source>%1 (continued)</source>
+        <translation>%1 (sambungan)</translation>
+    </message>
+    <message>
+        <source>Palpate score report, page %1</source>
+        <translation>Laporan markah Palpate, halaman %1</translation>
+    </message>
+    <message>
+        <source>Target %1</source>
+        <translation>Sasaran %1</translation>
+    </message>
+    <message>
+        <source>Force band</source>
+        <translation>Jalur daya</translation>
+    </message>
+    <message>
+        <source>T%1</source>
+        <translation>S%1</translation>
+    </message>
+    <message>
+        <source>completed in %1 s</source>
+        <translation>selesai dalam %1 s</translation>
+    </message>
+    <message>
+        <source>time limit reached (%1 s)</source>
+        <translation>had masa dicapai (%1 s)</translation>
+    </message>
+    <message>
+        <source>not finished (%1 s scored)</source>
+        <translation>tidak selesai (%1 s dinilai)</translation>
+    </message>
+    <message>
+        <source>not recorded</source>
+        <translation>tidak direkodkan</translation>
+    </message>
+    <message>
+        <source>Exercise:</source>
+        <translation>Latihan:</translation>
+    </message>
+    <message>
+        <source>(unnamed)</source>
+        <translation>(tanpa nama)</translation>
+    </message>
+    <message>
+        <source>Trainee:</source>
+        <translation>Pelatih:</translation>
+    </message>
+    <message>
+        <source>Date:</source>
+        <translation>Tarikh:</translation>
+    </message>
+    <message>
+        <source>Device:</source>
+        <translation>Peranti:</translation>
+    </message>
+    <message>
+        <source>Result:</source>
+        <translation>Keputusan:</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>achieved at %1 s</source>
+        <translation>dicapai pada %1 s</translation>
+    </message>
+    <message>
+        <source>not achieved</source>
+        <translation>tidak dicapai</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>Targets</source>
+        <translation>Sasaran</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Sasaran</translation>
+    </message>
+    <message>
+        <source>Force window</source>
+        <translation>Tetingkap daya</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Tahan</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Keputusan</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Ralat</translation>
+    </message>
+    <message>
+        <source>On target</source>
+        <translation>Pada sasaran</translation>
+    </message>
+    <message>
+        <source>In window</source>
+        <translation>Dalam tetingkap</translation>
+    </message>
+    <message>
+        <source>Shaded: each target&apos;s own force window, over the time it was the target to press.</source>
+        <translation>Berlorek: tetingkap daya setiap sasaran, sepanjang masa ia menjadi sasaran untuk ditekan.</translation>
+    </message>
+    <message>
+        <source>Shaded: the force band to keep while tracing.</source>
+        <translation>Berlorek: jalur daya yang perlu dikekalkan semasa menjejak.</translation>
+    </message>
+    <message>
+        <source>Breakdown</source>
+        <translation>Pecahan</translation>
+    </message>
+    <message>
+        <source>cannot be written: it is a folder</source>
+        <translation>tidak boleh ditulis: ia ialah folder</translation>
+    </message>
+    <message>
+        <source>cannot be drawn (the PDF writer did not start)</source>
+        <translation>tidak boleh dilukis (penulis PDF tidak bermula)</translation>
+    </message>
+    <message>
+        <source>cannot be drawn</source>
+        <translation>tidak boleh dilukis</translation>
+    </message>
+    <message>
+        <source>cannot be drawn (empty document)</source>
+        <translation>tidak boleh dilukis (dokumen kosong)</translation>
+    </message>
+    <message>
+        <source>cannot be written: %1</source>
+        <translation>tidak boleh ditulis: %1</translation>
+    </message>
+    <message>
+        <source>Palpate score report, page %1 of %2</source>
+        <translation>Laporan markah Palpate, halaman %1 daripada %2</translation>
     </message>
 </context>
 <context>

@@ -1,18 +1,38 @@
 // palpate-cli score: the score of a recorded exercise session, with its breakdown. The recording
 // is replayed through the engine (the exercise's physics from the recording's note) and scored
-// tick by tick by the same scorer the live session uses (docs/scoring.md).
+// tick by tick by the same scorer the live session uses (docs/scoring.md). --pdf writes the
+// printable report the GUI exports, through the same app/report code.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/common/DefaultScene.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
+#ifdef PALPATE_HAVE_CHARTS
+#include "app/report/ScoreReportFromRecording.h"
+#include "app/report/ScoreReportPdf.h"
+#endif
 
+#include <filesystem>
 #include <iostream>
 
 namespace palpate::cli {
 
+namespace {
+
+/// Whether `output` names the same file as `input` (through links or another spelling).
+bool sameFile(const std::string& output, const std::string& input) {
+    std::error_code ec;
+    if (std::filesystem::exists(output, ec) && std::filesystem::exists(input, ec))
+        return std::filesystem::equivalent(output, input, ec);
+    const auto a = std::filesystem::weakly_canonical(output, ec);
+    const auto b = std::filesystem::weakly_canonical(input, ec);
+    return !ec && a == b;
+}
+
+}  // namespace
+
 int scoreCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"exercise", "recording", "mesh"});
+    Args args(words, {"json"}, {"exercise", "recording", "mesh", "pdf", "trainee"});
     if (!args.ok()) {
         std::cerr << "score: " << args.error() << "\n";
         return 2;
@@ -27,6 +47,28 @@ int scoreCommand(const std::vector<std::string>& words) {
         std::cerr << "score: --recording FILE is required (and --exercise FILE, unless the recording carries it)\n";
         return 2;
     }
+    const std::optional<std::string> pdf = args.option("pdf");
+#ifndef PALPATE_HAVE_CHARTS
+    if (pdf) {
+        std::cerr << "score: --pdf needs a build with the GUI (Qt); this one has none\n";
+        return 2;
+    }
+#endif
+    if (args.option("trainee") && !pdf) {
+        std::cerr << "score: --trainee names the trainee on the --pdf report; give --pdf FILE\n";
+        return 2;
+    }
+    if (pdf) {
+        // The report never replaces what it is made from.
+        for (const auto& [input, what] : {std::pair{*recording, "recording"},
+                                          {args.option("exercise").value_or(""), "exercise"},
+                                          {args.option("mesh").value_or(""), "mesh"}})
+            if (!input.empty() && sameFile(*pdf, input)) {
+                std::cerr << "score: --pdf " << *pdf << " is the " << what
+                          << " file: the report is never written over an input; choose another file\n";
+                return 2;
+            }
+    }
     std::optional<Exercise> exercise;
     if (auto path = args.option("exercise")) {
         const auto loaded = loadExercise(*path);
@@ -36,15 +78,36 @@ int scoreCommand(const std::vector<std::string>& words) {
         }
         exercise = *loaded.exercise;
     }
-    const RecordingReader reader = RecordingReader::open(*recording);
     ReplayScorerDef options;
     options.findResource = findResource;
     options.meshPath = args.option("mesh").value_or("");
-    std::string error;
-    const ScoreReport report = scoreRecording(reader, exercise ? &*exercise : nullptr, error, options);
-    if (!error.empty()) {
-        std::cerr << "score: " << error << "\n";
-        return 1;
+    ScoreReport report;
+#ifdef PALPATE_HAVE_CHARTS
+    if (pdf) {
+        // One replay gives the printed breakdown and the report's content.
+        ScoreReportContent content;
+        QString error;
+        if (!scoreReportFromRecording(QString::fromStdString(*recording), exercise ? &*exercise : nullptr,
+                                      QString::fromStdString(args.option("trainee").value_or("")), options, content,
+                                      &error)) {
+            std::cerr << "score: " << error.toStdString() << "\n";
+            return 1;
+        }
+        if (!writeScoreReportPdf(QString::fromStdString(*pdf), content, &error)) {
+            std::cerr << "score: " << error.toStdString() << "\n";
+            return 1;
+        }
+        report = content.report;
+    }
+#endif
+    if (!pdf) {
+        const RecordingReader reader = RecordingReader::open(*recording);
+        std::string error;
+        report = scoreRecording(reader, exercise ? &*exercise : nullptr, error, options);
+        if (!error.empty()) {
+            std::cerr << "score: " << error << "\n";
+            return 1;
+        }
     }
     if (args.flag("json")) std::cout << scoreReportToJson(report) << "\n";
     else std::cout << scoreReportToText(report);

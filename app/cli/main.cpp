@@ -25,7 +25,7 @@ void usage(std::ostream& out) {
            "  palpate-cli record info|verify FILE [--json]\n"
            "  palpate-cli record export-csv FILE [--out CSV]\n"
            "  palpate-cli record replay FILE [--mesh FILE] [--json]\n"
-           "  palpate-cli score --recording FILE [--exercise FILE] [--mesh FILE] [--json]\n"
+           "  palpate-cli score --recording FILE [--exercise FILE] [--mesh FILE] [--json] [--pdf FILE [--trainee NAME]]\n"
            "  palpate-cli sweep [--json] [--csv FILE] [--png FILE] [--quick] [--shapes sphere,stomach] [--sizes N,..]\n"
            "                    [--max-rings N] [--no-paper] [--no-others] [--repeats N] [TISSUE]\n"
            "  palpate-cli accuracy --reference punch|hertz [--json] [--quick] [--nu LIST] [--levels LIST]\n"

@@ -5,6 +5,7 @@
 #include "engine/scoring/ReplayScorer.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/ScoreCard.h"
+#include "app/report/ScoreReportFromRecording.h"
 #include "app/report/ScoreReportPdf.h"
 #include "widgets/TraineePanel.h"
 #include "widgets/Viewport.h"
@@ -13,8 +14,6 @@
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QStandardPaths>
-
-#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -313,54 +312,28 @@ void ExerciseController::finish(const QString& why) {
     emit finished();
 }
 
-std::vector<std::pair<double, double>> ExerciseController::forceTimeSeries(const QString& recordingPath, std::size_t maxPoints) {
-    std::vector<std::pair<double, double>> all;
-    const RecordingReader reader = RecordingReader::open(recordingPath.toStdString());
-    if (!reader.headerOk()) return all;
-    double firstS = -1.0;
-    reader.forEachTick([&](const RecordedTick& t) {
-        if (firstS < 0.0) firstS = t.nowS;
-        all.emplace_back(t.nowS - firstS, double(glm::length(t.forceN)));
-        return true;
-    });
-    if (maxPoints < 2 || all.size() <= maxPoints) return all;
-    // Thin by buckets, keeping each bucket's largest force: peaks are what a plot must not lose.
-    std::vector<std::pair<double, double>> thin;
-    const std::size_t bucket = (all.size() + maxPoints - 1) / maxPoints;
-    for (std::size_t i = 0; i < all.size(); i += bucket) {
-        auto best = all[i];
-        for (std::size_t j = i; j < std::min(all.size(), i + bucket); ++j)
-            if (all[j].second > best.second) best = all[j];
-        thin.push_back(best);
-    }
-    return thin;
-}
-
 QString ExerciseController::exportLastReportPdf(const QString& path) {
     if (!mLastReport) return tr("There is no score to export yet.");
-    QString error;
-    if (!writeScoreReportPdf(path, mTraineeName, QString::fromStdString(mLastReport->exerciseName), *mLastReport,
-                             forceTimeSeries(mRecordingPath), &error))
-        return error;
-    return {};
+    return exportReportPdf(mRecordingPath, mTraineeName, path);
 }
 
 QString ExerciseController::exportResultPdf(const ResultRecord& result, const QString& path) {
     if (result.recordingPath.isEmpty()) return tr("This result has no recording to report from.");
-    const RecordingReader reader = RecordingReader::open(result.recordingPath.toStdString());
-    if (!reader.headerOk())
-        return tr("%1: %2").arg(result.recordingPath, QString::fromStdString(reader.headerError()));
-    std::string error;
-    ReplayScorerDef options;
-    options.findResource = cli::findResource;
-    const ScoreReport report = scoreRecording(reader, nullptr, error, options);
-    if (!error.empty()) return QString::fromStdString(error);
     QString trainee;
     for (const TraineeRecord& t : mDatabase.trainees())
         if (t.id == result.traineeId) trainee = t.name;
-    QString writeError;
-    if (!writeScoreReportPdf(path, trainee, result.exerciseName, report, forceTimeSeries(result.recordingPath), &writeError))
-        return writeError;
+    return exportReportPdf(result.recordingPath, trainee, path);
+}
+
+QString ExerciseController::exportReportPdf(const QString& recordingPath, const QString& trainee, const QString& path) {
+    // The same report as `palpate-cli score --pdf`: the recording re-scored (app/report).
+    ReplayScorerDef options;
+    options.findResource = cli::findResource;
+    ScoreReportContent content;
+    QString error;
+    if (!scoreReportFromRecording(recordingPath, nullptr, trainee, options, content, &error) ||
+        !writeScoreReportPdf(path, content, &error))
+        return error;
     return {};
 }
 

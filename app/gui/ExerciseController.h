@@ -78,8 +78,6 @@ public:
     QString exportLastReportPdf(const QString& path);
     /// Re-scores a stored result's recording and writes its PDF. "" or the error.
     QString exportResultPdf(const ResultRecord& result, const QString& path);
-    /// (time s, |F| N) of a recording, thinned to at most `maxPoints`, for the PDF's plot.
-    static std::vector<std::pair<double, double>> forceTimeSeries(const QString& recordingPath, std::size_t maxPoints = 4000);
 
 signals:
     /// The window disables what must not change during a run (parameters, mesh) and back.
@@ -96,6 +94,7 @@ private:
     void startRecording();
     void finish(const QString& why);
     void fail(const QString& why);
+    QString exportReportPdf(const QString& recordingPath, const QString& trainee, const QString& path);
     void refreshTrainees(qint64 select);
     void showExerciseDescription(const QString& path);
     void updateMarkers();

@@ -1,7 +1,9 @@
 #include "app/report/ScoreReportPdf.h"
 
+#include "app/report/ChartApplication.h"
+
+#include <QBuffer>
 #include <QCoreApplication>
-#include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
 #include <QFont>
@@ -12,6 +14,7 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPdfWriter>
+#include <QSaveFile>
 
 #include <algorithm>
 #include <cmath>
@@ -25,6 +28,10 @@ struct Tr {
 };
 
 QString number(double v, int decimals) { return QLocale().toString(v, 'f', decimals); }
+QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), qsizetype(s.size())); }
+/// A force with one decimal, or two when it has them (a window of 0.65 – 1.65 N).
+QString forceText(double n) { return number(n, std::abs(n * 10.0 - std::round(n * 10.0)) < 1e-6 ? 1 : 2); }
+QString window(double minN, double maxN) { return Tr::tr("%1 – %2 N").arg(forceText(minN), forceText(maxN)); }
 
 /// A tick step of 1, 2 or 5 times a power of ten giving about `count` ticks over `range`.
 double niceStep(double range, int count) {
@@ -36,187 +43,469 @@ double niceStep(double range, int count) {
     return 10.0 * power;
 }
 
-void drawForcePlot(QPainter& p, const QRectF& area, const ScoreReport& report,
-                   const std::vector<std::pair<double, double>>& series) {
-    QFont font = p.font();
-    const QFontMetricsF fm(font);
-    const double lh = fm.height();
-    // Room for the tick labels and the axis titles.
-    const QRectF plot(area.left() + 5 * lh, area.top() + lh, area.width() - 6 * lh, area.height() - 4 * lh);
+/// One table cell: its text and, below it in small grey type, an optional note.
+struct Cell {
+    QString text;
+    QString note;
+};
 
-    double t0 = series.front().first, t1 = series.front().first, fMax = 0.0;
-    for (const auto& [t, f] : series) {
-        t0 = std::min(t0, t);
-        t1 = std::max(t1, t);
-        if (std::isfinite(f)) fMax = std::max(fMax, f);
+struct Column {
+    QString title;
+    double widthFraction = 0.0;  ///< of the page's width
+    bool alignRight = false;
+};
+
+/// Lays the report out top to bottom on A4 pages and starts a new page when the next piece does
+/// not fit. Every size comes from the font metrics of the PDF device itself: metrics taken for the
+/// screen are a fraction of the PDF's at its resolution, which once put every line on the last.
+class ReportLayout {
+public:
+    /// `pageCount`: the document's pages, for the footer (0: not known yet, the first pass).
+    ReportLayout(QPdfWriter& writer, int pageCount) : mWriter(writer), mPageCount(pageCount) {
+        mBody.setFamily(QStringLiteral("DejaVu Sans"));
+        mBody.setPointSizeF(9.5);
+        mSmall = mBody;
+        mSmall.setPointSizeF(7.5);
+        mBold = mBody;
+        mBold.setBold(true);
+        mHeading = mBody;
+        mHeading.setPointSizeF(12);
+        mHeading.setBold(true);
+        mTitle = mBody;
+        mTitle.setPointSizeF(18);
+        mTitle.setBold(true);
+        mScore = mBody;
+        mScore.setPointSizeF(30);
+        mScore.setBold(true);
     }
-    const bool window = report.guidance.forceMaxN > report.guidance.forceMinN && report.guidance.forceMaxN > 0.0;
-    if (window) fMax = std::max(fMax, report.guidance.forceMaxN);
+
+    bool begin() {
+        if (!mPainter.begin(&mWriter)) return false;
+        const QFontMetricsF small(mSmall, &mWriter);
+        mFooterH = small.height() * 1.8;
+        mPage = QRectF(0, 0, mWriter.width(), mWriter.height() - mFooterH);
+        drawFooter();
+        return true;
+    }
+    bool end() { return mPainter.end(); }
+    int pageNumber() const { return mPageNumber; }
+
+    double mm(double v) const { return v * mWriter.resolution() / 25.4; }
+    QPainter& painter() { return mPainter; }
+    const QRectF& page() const { return mPage; }
+    double y() const { return mY; }
+    double spaceLeft() const { return mPage.bottom() - mY; }
+    void skip(double height) { mY += height; }
+    QFontMetricsF metrics(const QFont& font) const { return QFontMetricsF(font, &mWriter); }
+    const QFont& body() const { return mBody; }
+    const QFont& small() const { return mSmall; }
+    const QFont& bold() const { return mBold; }
+    const QFont& heading() const { return mHeading; }
+    const QFont& title() const { return mTitle; }
+    const QFont& score() const { return mScore; }
+
+    void newPage() {
+        mWriter.newPage();
+        ++mPageNumber;
+        mY = 0;
+        drawFooter();
+    }
+    /// A new page unless `height` fits below the current position (a piece taller than a page
+    /// starts at the top of one).
+    void ensure(double height) {
+        if (mY > 0 && mY + height > mPage.bottom()) newPage();
+    }
+
+    /// The text with a break opportunity (a zero-width space) between the letters of each word
+    /// wider than `width` (a long file name), so that word wrap breaks only those anywhere.
+    QString wrappable(const QFont& font, double width, const QString& text) const {
+        const QFontMetricsF fm = metrics(font);
+        QStringList words = text.split(QLatin1Char(' '));
+        for (QString& word : words) {
+            if (fm.horizontalAdvance(word) <= width) continue;
+            QString broken;
+            for (qsizetype i = 0; i < word.size(); ++i) {
+                broken += word[i];
+                if (i + 1 < word.size() && !word[i].isHighSurrogate()) broken += QChar(0x200B);
+            }
+            word = broken;
+        }
+        return words.join(QLatin1Char(' '));
+    }
+    double textHeight(const QFont& font, double width, const QString& text) const {
+        if (text.isEmpty()) return 0.0;
+        return metrics(font).boundingRect(QRectF(0, 0, width, 1e9), Qt::TextWordWrap, wrappable(font, width, text)).height();
+    }
+    /// Draws wrapped text in [x, x + width] from `top`; returns its height.
+    double drawText(const QFont& font, double x, double top, double width, const QString& text, bool alignRight = false,
+                    const QColor& color = Qt::black) {
+        if (text.isEmpty()) return 0.0;
+        const double height = textHeight(font, width, text);
+        mPainter.setFont(font);
+        mPainter.setPen(color);
+        mPainter.drawText(QRectF(x, top, width, height),
+                          Qt::TextWordWrap | (alignRight ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop,
+                          wrappable(font, width, text));
+        return height;
+    }
+    /// A paragraph across the page, on a new page when it does not fit.
+    void paragraph(const QFont& font, const QString& text, const QColor& color = Qt::black) {
+        const double height = textHeight(font, mPage.width(), text);
+        ensure(height);
+        mY += drawText(font, 0, mY, mPage.width(), text, false, color);
+    }
+
+    /// "Label: value" rows, the labels in a column of their own, the values wrapped beside them.
+    void fields(const std::vector<std::pair<QString, QString>>& rows) {
+        double labelW = 0.0;
+        for (const auto& [label, value] : rows) labelW = std::max(labelW, metrics(mBold).horizontalAdvance(label));
+        labelW += mm(3);
+        const double gap = metrics(mBody).height() * 0.25;
+        for (const auto& [label, value] : rows) {
+            const double valueW = mPage.width() - labelW;
+            const double height = std::max(textHeight(mBold, labelW, label), textHeight(mBody, valueW, value));
+            ensure(height);
+            drawText(mBold, 0, mY, labelW, label);
+            drawText(mBody, labelW, mY, valueW, value);
+            mY += height + gap;
+        }
+    }
+
+    /// A table under its heading, with a header row, each cell wrapped in its column: on the next
+    /// page when it fits on a page but not on what is left of this one; continued (heading and
+    /// header again) on the next page when it is longer than a page.
+    void table(const QString& heading, const std::vector<Column>& columns, const std::vector<std::vector<Cell>>& rows) {
+        const double pad = mm(1.2);
+        std::vector<double> left, width;
+        double x = 0.0;
+        for (const Column& c : columns) {
+            left.push_back(x + pad);
+            width.push_back(c.widthFraction * mPage.width() - 2 * pad);
+            x += c.widthFraction * mPage.width();
+        }
+        auto rowHeight = [&](const std::vector<Cell>& row, const QFont& font) {
+            double h = 0.0;
+            for (std::size_t c = 0; c < row.size() && c < columns.size(); ++c) {
+                double cell = textHeight(font, width[c], row[c].text);
+                if (!row[c].note.isEmpty()) cell += pad * 0.4 + textHeight(mSmall, width[c], row[c].note);
+                h = std::max(h, cell);
+            }
+            return h + 2 * pad;
+        };
+        std::vector<Cell> header;
+        for (const Column& c : columns) header.push_back({c.title, {}});
+        const double headerH = rowHeight(header, mBold);
+        const double headingH = textHeight(mHeading, mPage.width(), heading) + metrics(mBody).height() * 0.3;
+        double total = headingH + headerH;
+        for (const auto& row : rows) total += rowHeight(row, mBody);
+        if (total <= mPage.height() && total > spaceLeft()) newPage();
+        auto drawHeader = [&](const QString& title) {
+            mY += drawText(mHeading, 0, mY, mPage.width(), title) + metrics(mBody).height() * 0.3;
+            for (std::size_t c = 0; c < columns.size(); ++c)
+                drawText(mBold, left[c], mY + pad, width[c], header[c].text, columns[c].alignRight);
+            mY += headerH;
+            mPainter.setPen(QPen(Qt::black, mm(0.3)));
+            mPainter.drawLine(QPointF(0, mY), QPointF(mPage.width(), mY));
+        };
+        ensure(headingH + headerH + (rows.empty() ? 0.0 : rowHeight(rows.front(), mBody)));
+        drawHeader(heading);
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            const double height = rowHeight(rows[r], mBody);
+            if (mY + height > mPage.bottom()) {
+                newPage();
+                drawHeader(Tr::tr("%1 (continued)").arg(heading));
+            }
+            if (r % 2 == 1) mPainter.fillRect(QRectF(0, mY, mPage.width(), height), QColor(243, 243, 243));
+            for (std::size_t c = 0; c < rows[r].size() && c < columns.size(); ++c) {
+                const double h = drawText(mBody, left[c], mY + pad, width[c], rows[r][c].text, columns[c].alignRight);
+                drawText(mSmall, left[c], mY + pad + h + (h > 0 ? pad * 0.4 : 0.0), width[c], rows[r][c].note,
+                         columns[c].alignRight, QColor(90, 90, 90));
+            }
+            mY += height;
+        }
+        mPainter.setPen(QPen(Qt::black, mm(0.3)));
+        mPainter.drawLine(QPointF(0, mY), QPointF(mPage.width(), mY));
+    }
+
+private:
+    void drawFooter() {
+        const QFontMetricsF fm = metrics(mSmall);
+        mPainter.setFont(mSmall);
+        mPainter.setPen(QColor(90, 90, 90));
+        const QString text = mPageCount > 0 ? Tr::tr("Palpate score report, page %1 of %2").arg(mPageNumber).arg(mPageCount)
+                                            : Tr::tr("Palpate score report, page %1").arg(mPageNumber);
+        mPainter.drawText(QPointF(mWriter.width() - fm.horizontalAdvance(text), mWriter.height() - fm.descent()), text);
+    }
+
+    QPdfWriter& mWriter;
+    QPainter mPainter;
+    QFont mBody, mSmall, mBold, mHeading, mTitle, mScore;
+    QRectF mPage;
+    double mFooterH = 0.0;
+    double mY = 0.0;
+    int mPageNumber = 1;
+    int mPageCount = 0;
+};
+
+/// Colours for the force windows of consecutive targets (so that two side by side differ).
+QColor windowColor(int index, int alpha) {
+    static const QColor colors[] = {QColor(90, 180, 90), QColor(230, 160, 40), QColor(80, 150, 220), QColor(200, 90, 170)};
+    QColor c = colors[std::size_t(std::max(index, 0)) % std::size(colors)];
+    c.setAlpha(alpha);
+    return c;
+}
+
+/// The force over time in `area`: time and force axes, each force window shaded over its own
+/// stretch of time and labelled with its target, the curve on top.
+void drawForcePlot(ReportLayout& layout, const QRectF& area, const ScoreReportContent& content) {
+    QPainter& p = layout.painter();
+    const QFont& font = layout.small();
+    const QFontMetricsF fm = layout.metrics(font);
+    const double lh = fm.height();
+    const QString fTitle = Tr::tr("|F| (N)"), tTitle = Tr::tr("Time (s)");
+    const auto& series = content.force;
+
+    double t0 = series.front().timeS, t1 = series.front().timeS, fMax = 0.0;
+    for (const ForceSample& s : series) {
+        t0 = std::min(t0, s.timeS);
+        t1 = std::max(t1, s.timeS);
+        if (std::isfinite(s.forceN)) fMax = std::max(fMax, s.forceN);
+    }
+    for (const ForceWindowSpan& w : content.windows) fMax = std::max(fMax, w.forceMaxN);
     if (t1 <= t0) t1 = t0 + 1.0;
     if (fMax <= 0.0) fMax = 1.0;
-    fMax *= 1.1;
-    auto x = [&](double t) { return plot.left() + (t - t0) / (t1 - t0) * plot.width(); };
-    auto y = [&](double f) { return plot.bottom() - f / fMax * plot.height(); };
+    fMax *= 1.05;
+    const double fStep = niceStep(fMax, 5), tStep = niceStep(t1 - t0, 10);
+    fMax = std::ceil(fMax / fStep - 1e-9) * fStep;
+    const int tDecimals = tStep < 1.0 ? 1 : 0, fDecimals = fStep < 1.0 ? (fStep < 0.1 ? 2 : 1) : 0;
 
-    if (window) {
-        const QRectF band(QPointF(plot.left(), y(report.guidance.forceMaxN)),
-                          QPointF(plot.right(), y(report.guidance.forceMinN)));
-        p.fillRect(band, QColor(120, 200, 120, 90));
-        p.setPen(QColor(40, 120, 40));
-        p.drawText(QPointF(plot.right() - fm.horizontalAdvance(Tr::tr("force window")) - lh * 0.3,
-                           band.top() - lh * 0.2),
-                   Tr::tr("force window"));
+    // Room for the force labels at the left, the time labels and title below, the force title
+    // above; and a line inside the top of the plot for the window labels.
+    double labelW = fm.horizontalAdvance(fTitle);
+    for (double f = 0.0; f <= fMax + 1e-9; f += fStep) labelW = std::max(labelW, fm.horizontalAdvance(number(f, fDecimals)));
+    const QRectF plot(area.left() + labelW + lh * 0.5, area.top() + lh * 1.5, area.width() - labelW - lh * 1.0,
+                      area.height() - lh * 4.0);
+    const double headroom = lh * 1.4;
+    auto x = [&](double t) { return plot.left() + (t - t0) / (t1 - t0) * plot.width(); };
+    auto y = [&](double f) { return plot.bottom() - f / fMax * (plot.height() - headroom); };
+
+    // Grid.
+    p.setPen(QPen(QColor(225, 225, 225), 0));
+    for (double t = std::ceil(t0 / tStep) * tStep; t <= t1 + 1e-9; t += tStep)
+        p.drawLine(QPointF(x(t), plot.top()), QPointF(x(t), plot.bottom()));
+    for (double f = 0.0; f <= fMax + 1e-9; f += fStep) p.drawLine(QPointF(plot.left(), y(f)), QPointF(plot.right(), y(f)));
+
+    // Each window over its own stretch, its label above it where it fits (the target table
+    // lists every window in full).
+    double labelRight = plot.left();
+    for (const ForceWindowSpan& w : content.windows) {
+        const double left = std::max(plot.left(), x(w.startS)), right = std::min(plot.right(), x(w.endS));
+        if (right <= left) continue;
+        const QRectF band(QPointF(left, y(w.forceMaxN)), QPointF(right, y(w.forceMinN)));
+        p.fillRect(band, windowColor(w.targetIndex, 70));
+        p.setPen(QPen(windowColor(w.targetIndex, 255).darker(140), layout.mm(0.25)));
+        p.drawLine(band.topLeft(), band.topRight());
+        p.drawLine(band.bottomLeft(), band.bottomRight());
+        const QString name = w.targetIndex >= 0 ? Tr::tr("Target %1").arg(w.targetIndex + 1) : Tr::tr("Force band");
+        const QString shortName = w.targetIndex >= 0 ? Tr::tr("T%1").arg(w.targetIndex + 1) : QString();
+        const QString range = window(w.forceMinN, w.forceMaxN);
+        const double room = right - std::max(left, labelRight) - lh * 0.4;
+        QString label;
+        for (const QString& candidate : {name + QStringLiteral(": ") + range, name, shortName})
+            if (!candidate.isEmpty() && fm.horizontalAdvance(candidate) <= room) {
+                label = candidate;
+                break;
+            }
+        if (label.isEmpty()) continue;
+        const double labelLeft = std::max(left, labelRight) + lh * 0.2;
+        p.setFont(font);
+        p.setPen(windowColor(w.targetIndex, 255).darker(170));
+        p.drawText(QPointF(labelLeft, band.top() - fm.descent() - lh * 0.15), label);
+        labelRight = labelLeft + fm.horizontalAdvance(label);
     }
 
-    // Axes, ticks and grid.
+    // Axes, tick labels, titles.
     p.setPen(QPen(Qt::black, 0));
     p.drawRect(plot);
-    const double tStep = niceStep(t1 - t0, 8), fStep = niceStep(fMax, 5);
-    const int tDecimals = tStep < 1.0 ? 1 : 0, fDecimals = fStep < 1.0 ? (fStep < 0.1 ? 2 : 1) : 0;
+    p.setFont(font);
+    double lastLabelRight = -1e18;
     for (double t = std::ceil(t0 / tStep) * tStep; t <= t1 + 1e-9; t += tStep) {
-        p.setPen(QPen(QColor(220, 220, 220), 0));
-        p.drawLine(QPointF(x(t), plot.top()), QPointF(x(t), plot.bottom()));
-        p.setPen(Qt::black);
         const QString label = number(t, tDecimals);
-        p.drawText(QPointF(x(t) - fm.horizontalAdvance(label) / 2, plot.bottom() + lh), label);
+        const double w = fm.horizontalAdvance(label);
+        const double left = std::clamp(x(t) - w / 2, plot.left() - w / 2, area.right() - w);
+        if (left < lastLabelRight + lh * 0.5) continue;
+        p.drawText(QPointF(left, plot.bottom() + lh * 0.2 + fm.ascent()), label);
+        lastLabelRight = left + w;
     }
     for (double f = 0.0; f <= fMax + 1e-9; f += fStep) {
-        p.setPen(QPen(QColor(220, 220, 220), 0));
-        p.drawLine(QPointF(plot.left(), y(f)), QPointF(plot.right(), y(f)));
-        p.setPen(Qt::black);
         const QString label = number(f, fDecimals);
-        p.drawText(QPointF(plot.left() - fm.horizontalAdvance(label) - lh * 0.3, y(f) + fm.ascent() / 3), label);
+        p.drawText(QPointF(plot.left() - fm.horizontalAdvance(label) - lh * 0.3, y(f) + (fm.ascent() - fm.descent()) / 2),
+                   label);
     }
-    const QString tTitle = Tr::tr("Time (s)"), fTitle = Tr::tr("|F| (N)");
-    p.drawText(QPointF(plot.center().x() - fm.horizontalAdvance(tTitle) / 2, plot.bottom() + 2.3 * lh), tTitle);
-    p.save();
-    p.translate(area.left() + lh, plot.center().y() + fm.horizontalAdvance(fTitle) / 2);
-    p.rotate(-90);
-    p.drawText(QPointF(0, 0), fTitle);
-    p.restore();
+    p.drawText(QPointF(plot.center().x() - fm.horizontalAdvance(tTitle) / 2, plot.bottom() + lh * 1.4 + fm.ascent()),
+               tTitle);
+    p.drawText(QPointF(area.left(), plot.top() - lh * 0.4 - fm.descent()), fTitle);
 
     QPainterPath curve;
     bool started = false;
-    for (const auto& [t, f] : series) {
-        if (!std::isfinite(t) || !std::isfinite(f)) continue;
-        const QPointF pt(x(t), y(f));
+    for (const ForceSample& s : series) {
+        if (!std::isfinite(s.timeS) || !std::isfinite(s.forceN)) continue;
+        const QPointF pt(x(s.timeS), y(s.forceN));
         if (started)
             curve.lineTo(pt);
         else
             curve.moveTo(pt), started = true;
     }
-    p.setPen(QPen(QColor(30, 80, 200), lh * 0.12));
+    p.setPen(QPen(QColor(30, 60, 170), layout.mm(0.35)));
     p.setClipRect(plot);
     p.drawPath(curve);
     p.setClipping(false);
 }
 
+QString resultText(const ScoreReport& report) {
+    const ScoreGuidance& g = report.guidance;
+    if (g.completed) return Tr::tr("completed in %1 s").arg(number(g.exerciseTimeS, 1));
+    if (g.timeUp) return Tr::tr("time limit reached (%1 s)").arg(number(g.exerciseTimeS, 1));
+    return Tr::tr("not finished (%1 s scored)").arg(number(g.exerciseTimeS, 1));
+}
+
+void drawReport(ReportLayout& layout, const ScoreReportContent& content) {
+    const ScoreReport& report = content.report;
+    const double line = layout.metrics(layout.body()).height();
+
+    layout.paragraph(layout.title(), Tr::tr("Palpate score report"));
+    layout.skip(line * 0.5);
+    const QString device = content.device.isEmpty() ? Tr::tr("not recorded") : content.device;
+    layout.fields({
+        {Tr::tr("Exercise:"), content.exerciseName.isEmpty() ? Tr::tr("(unnamed)") : content.exerciseName},
+        {Tr::tr("Trainee:"), content.traineeName.isEmpty() ? Tr::tr("not recorded") : content.traineeName},
+        {Tr::tr("Date:"), content.sessionStart.isValid()
+                              ? QLocale().toString(content.sessionStart.toLocalTime(), QLocale::LongFormat)
+                              : Tr::tr("not recorded")},
+        {Tr::tr("Device:"), device},
+        {Tr::tr("Result:"), resultText(report)},
+    });
+    layout.skip(line * 0.6);
+    layout.paragraph(layout.score(), Tr::tr("Score: %1 / 100").arg(number(report.score, 1)));
+    layout.skip(line * 0.8);
+
+    if (!report.targets.empty()) {
+        std::vector<std::vector<Cell>> rows;
+        for (std::size_t i = 0; i < report.targets.size(); ++i) {
+            const TargetResult& t = report.targets[i];
+            const PressTarget* def = i < content.targets.size() ? &content.targets[i] : nullptr;
+            rows.push_back({{Tr::tr("Target %1").arg(i + 1), {}},
+                            {def ? window(def->forceMinN, def->forceMaxN) : QString(), {}},
+                            {def ? Tr::tr("%1 s").arg(number(def->holdS, 1)) : QString(), {}},
+                            {t.achieved ? Tr::tr("achieved at %1 s").arg(number(t.achievedAtS, 1)) : Tr::tr("not achieved"), {}},
+                            {t.errorMeasured ? Tr::tr("%1 mm").arg(number(t.errorMm, 2)) : Tr::tr("n/a"), {}},
+                            {Tr::tr("%1 s").arg(number(t.onTargetS, 2)), {}},
+                            {Tr::tr("%1 s").arg(number(t.inWindowS, 2)), {}}});
+        }
+        layout.table(Tr::tr("Targets"),
+                     {{Tr::tr("Target"), 0.13, false},
+                      {Tr::tr("Force window"), 0.17, false},
+                      {Tr::tr("Hold"), 0.09, false},
+                      {Tr::tr("Result"), 0.22, false},
+                      {Tr::tr("Error"), 0.12, true},
+                      {Tr::tr("On target"), 0.13, true},
+                      {Tr::tr("In window"), 0.14, true}},
+                     rows);
+        layout.skip(line * 1.2);
+    }
+
+    if (!content.force.empty()) {
+        // Below the summary when there is room enough for it, else at the top of the next page.
+        const double heading = layout.textHeight(layout.heading(), layout.page().width(), Tr::tr("Force over time")) + line * 0.3;
+        const double caption = layout.textHeight(layout.small(), layout.page().width(), QStringLiteral("x")) * 2;
+        const double wanted = layout.mm(105), least = layout.mm(75);
+        layout.ensure(heading + caption + std::min(wanted, std::max(least, layout.spaceLeft() - heading - caption)));
+        layout.paragraph(layout.heading(), Tr::tr("Force over time"));
+        layout.skip(line * 0.3);
+        const double height = std::min(wanted, layout.spaceLeft() - caption);
+        drawForcePlot(layout, QRectF(0, layout.y(), layout.page().width(), height), content);
+        layout.skip(height);
+        if (!content.windows.empty())
+            layout.paragraph(layout.small(),
+                             content.windows.front().targetIndex >= 0
+                                 ? Tr::tr("Shaded: each target's own force window, over the time it was the target to press.")
+                                 : Tr::tr("Shaded: the force band to keep while tracing."),
+                             QColor(90, 90, 90));
+        layout.skip(line * 1.2);
+    }
+
+    std::vector<std::vector<Cell>> rows;
+    for (const MetricResult& m : report.metrics) {
+        const QString unit = fromView(metricUnit(m.metric));
+        const QString value = m.measured ? number(m.value, 2) + (unit.isEmpty() ? QString() : QStringLiteral(" ") + unit)
+                                         : Tr::tr("n/a");
+        rows.push_back({{fromView(metricName(m.metric)), fromView(metricDescription(m.metric))},
+                        {value, {}},
+                        {number(m.subScore, 2), {}},
+                        {number(m.weight, 1), {}},
+                        {number(m.contribution, 1), {}}});
+    }
+    layout.table(Tr::tr("Breakdown"),
+                 {{Tr::tr("Metric"), 0.46, false},
+                  {Tr::tr("Value"), 0.16, true},
+                  {Tr::tr("Sub-score"), 0.12, true},
+                  {Tr::tr("Weight"), 0.11, true},
+                  {Tr::tr("Contribution"), 0.15, true}},
+                 rows);
+    if (!report.warnings.empty()) {
+        layout.skip(line * 0.8);
+        for (const std::string& w : report.warnings) {
+            layout.paragraph(layout.body(), Tr::tr("Warning: %1").arg(QString::fromStdString(w)), QColor(150, 60, 0));
+            layout.skip(line * 0.3);
+        }
+    }
+}
+
 }  // namespace
 
-bool writeScoreReportPdf(const QString& path, const QString& traineeName, const QString& exerciseName,
-                         const ScoreReport& report,
-                         const std::vector<std::pair<double, double>>& forceTimeSeries, QString* error) {
+bool writeScoreReportPdf(const QString& path, const ScoreReportContent& content, QString* error) {
     auto fail = [&](const QString& why) {
         if (error) *error = Tr::tr("%1: %2").arg(QDir::toNativeSeparators(path), why);
         return false;
     };
-    const QFileInfo folder(QFileInfo(path).absolutePath());
+    const QFileInfo info(path);
+    const QFileInfo folder(info.absolutePath());
     if (!folder.isDir())
         return fail(Tr::tr("cannot be written: folder %1 does not exist")
                         .arg(QDir::toNativeSeparators(folder.absoluteFilePath())));
+    if (info.isDir()) return fail(Tr::tr("cannot be written: it is a folder"));
+    const ChartApplication application;
+    if (!application.problem().empty()) return fail(QString::fromStdString(application.problem()));
 
-    QPdfWriter writer(path);
-    writer.setPageSize(QPageSize(QPageSize::A4));
-    writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
-    writer.setResolution(300);
-    writer.setTitle(Tr::tr("Palpate score report"));
-    writer.setCreator(QStringLiteral("Palpate"));
-    QPainter p;
-    if (!p.begin(&writer)) return fail(Tr::tr("cannot be written (permission denied or disk full)"));
-
-    const QRectF page(QPointF(0, 0), QSizeF(writer.width(), writer.height()));
-    QFont body(QStringLiteral("DejaVu Sans"));
-    body.setPointSizeF(10);
-    QFont title = body, big = body, bold = body;
-    title.setPointSizeF(18);
-    title.setBold(true);
-    big.setPointSizeF(40);
-    big.setBold(true);
-    bold.setBold(true);
-
-    double yPos = 0;
-    auto line = [&](const QFont& font, const QString& text, double x = 0) {
-        p.setFont(font);
-        const QFontMetricsF fm(font);
-        yPos += fm.ascent();
-        p.drawText(QPointF(x, yPos), text);
-        yPos += fm.descent() + fm.leading() + fm.height() * 0.25;
-    };
-
-    p.setPen(Qt::black);
-    line(title, Tr::tr("Palpate score report"));
-    line(body, Tr::tr("Trainee: %1").arg(traineeName));
-    line(body, Tr::tr("Exercise: %1").arg(exerciseName));
-    line(body, Tr::tr("Date: %1").arg(QLocale().toString(QDateTime::currentDateTime(), QLocale::LongFormat)));
-    QString state = report.guidance.completed ? Tr::tr("completed")
-                    : report.guidance.timeUp  ? Tr::tr("time limit reached")
-                                              : Tr::tr("not finished");
-    line(body, Tr::tr("Result: %1").arg(state));
-    yPos += QFontMetricsF(body).height() * 0.5;
-    line(big, Tr::tr("Score: %1 / 100").arg(number(report.score, 1)));
-    yPos += QFontMetricsF(body).height() * 0.5;
-
-    // The breakdown table.
-    const QFontMetricsF fm(body);
-    const double rowH = fm.height() * 1.3;
-    const double cols[] = {0.0, 0.36, 0.56, 0.72, 0.85};  // fractions of the page width
-    auto cell = [&](int c, const QString& text, bool rightAlign) {
-        const double left = cols[c] * page.width();
-        const double right = (c + 1 < 5 ? cols[c + 1] : 1.0) * page.width() - fm.height() * 0.5;
-        const double xText = rightAlign ? right - QFontMetricsF(p.font()).horizontalAdvance(text) : left;
-        p.drawText(QPointF(xText, yPos + fm.ascent()), text);
-    };
-    p.setFont(bold);
-    cell(0, Tr::tr("Metric"), false);
-    cell(1, Tr::tr("Value"), true);
-    cell(2, Tr::tr("Sub-score"), true);
-    cell(3, Tr::tr("Weight"), true);
-    cell(4, Tr::tr("Contribution"), true);
-    yPos += rowH;
-    p.drawLine(QPointF(0, yPos - rowH * 0.15), QPointF(page.width(), yPos - rowH * 0.15));
-    p.setFont(body);
-    for (const MetricResult& m : report.metrics) {
-        const QString unit = QString::fromUtf8(metricUnit(m.metric).data(), qsizetype(metricUnit(m.metric).size()));
-        const QString value = m.measured ? (number(m.value, 2) + (unit.isEmpty() ? QString() : QStringLiteral(" ") + unit))
-                                         : Tr::tr("n/a");
-        cell(0, QString::fromUtf8(metricName(m.metric).data(), qsizetype(metricName(m.metric).size())), false);
-        cell(1, value, true);
-        cell(2, number(m.subScore, 2), true);
-        cell(3, number(m.weight, 2), true);
-        cell(4, number(m.contribution, 1), true);
-        yPos += rowH;
+    // Drawn into memory first, then written whole to a temporary file that replaces the target.
+    // Twice: the first pass counts the pages for the footers of the second (the footer's text
+    // does not move anything).
+    QByteArray bytes;
+    int pageCount = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+        bytes.clear();
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        QPdfWriter writer(&buffer);
+        writer.setPageSize(QPageSize(QPageSize::A4));
+        writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+        writer.setResolution(300);
+        writer.setTitle(Tr::tr("Palpate score report"));
+        writer.setCreator(QStringLiteral("Palpate"));
+        ReportLayout layout(writer, pageCount);
+        if (!layout.begin()) return fail(Tr::tr("cannot be drawn (the PDF writer did not start)"));
+        drawReport(layout, content);
+        if (!layout.end()) return fail(Tr::tr("cannot be drawn"));
+        pageCount = layout.pageNumber();
     }
-    p.drawLine(QPointF(0, yPos - rowH * 0.15), QPointF(page.width(), yPos - rowH * 0.15));
-    for (const std::string& w : report.warnings) {
-        yPos += rowH * 0.2;
-        line(body, Tr::tr("Warning: %1").arg(QString::fromStdString(w)));
+    if (bytes.isEmpty()) return fail(Tr::tr("cannot be drawn (empty document)"));
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) return fail(Tr::tr("cannot be written: %1").arg(file.errorString()));
+    if (file.write(bytes) != bytes.size()) {
+        file.cancelWriting();
+        return fail(Tr::tr("cannot be written: %1").arg(file.errorString()));
     }
-    yPos += rowH;
-
-    // The force-time plot in what is left of the page (at least a third of it).
-    if (!forceTimeSeries.empty()) {
-        line(bold, Tr::tr("Force over time"));
-        const double height = std::max(page.height() - yPos, page.height() / 3);
-        if (page.height() - yPos < page.height() / 3) {
-            writer.newPage();
-            yPos = 0;
-        }
-        p.setFont(body);
-        drawForcePlot(p, QRectF(0, yPos, page.width(), std::min(height, page.height() - yPos)), report,
-                      forceTimeSeries);
-    }
-    if (!p.end()) return fail(Tr::tr("cannot be written"));
-    if (QFileInfo(path).size() <= 0) return fail(Tr::tr("cannot be written (empty file)"));
+    if (!file.commit()) return fail(Tr::tr("cannot be written: %1").arg(file.errorString()));
     return true;
 }
 

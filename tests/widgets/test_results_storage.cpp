@@ -232,16 +232,17 @@ TEST(ResultsDatabase, RefusesGarbageAndForeignFiles) {
 TEST(ScoreReportPdf, WritesReadableText) {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("report.pdf"));
-    std::vector<std::pair<double, double>> series;
+    ScoreReportContent content;
     for (int i = 0; i <= 400; ++i) {
         const double t = i * 0.05;
-        series.emplace_back(t, 1.5 + std::sin(t) * 0.8);
+        content.force.push_back({t, 1.5 + std::sin(t) * 0.8});
     }
-    const ScoreReport report = sampleReport(72.5);
+    content.windows.push_back({0.0, 20.0, 1.0, 2.0, 0});
+    content.report = sampleReport(72.5);
+    content.traineeName = QStringLiteral("Erika Mustermann");
+    content.exerciseName = QStringLiteral("Press two targets");
     QString error;
-    ASSERT_TRUE(writeScoreReportPdf(path, QStringLiteral("Erika Mustermann"), QStringLiteral("Press two targets"),
-                                    report, series, &error))
-        << error.toStdString();
+    ASSERT_TRUE(writeScoreReportPdf(path, content, &error)) << error.toStdString();
     ASSERT_TRUE(QFileInfo::exists(path));
     EXPECT_GT(QFileInfo(path).size(), 1000);
     QFile f(path);
@@ -250,12 +251,11 @@ TEST(ScoreReportPdf, WritesReadableText) {
 
     // Without a series the plot is left out; still a valid file.
     const QString noPlot = dir.filePath(QStringLiteral("noplot.pdf"));
-    ASSERT_TRUE(writeScoreReportPdf(noPlot, QStringLiteral("X"), QStringLiteral("Y"), ScoreReport{}, {}, &error))
-        << error.toStdString();
+    ASSERT_TRUE(writeScoreReportPdf(noPlot, ScoreReportContent{}, &error)) << error.toStdString();
     EXPECT_GT(QFileInfo(noPlot).size(), 0);
 
     const QString nowhere = dir.filePath(QStringLiteral("no/such/report.pdf"));
-    EXPECT_FALSE(writeScoreReportPdf(nowhere, QStringLiteral("X"), QStringLiteral("Y"), report, series, &error));
+    EXPECT_FALSE(writeScoreReportPdf(nowhere, content, &error));
     EXPECT_TRUE(error.contains(nowhere)) << error.toStdString();
 
     const QString pdftotext = QStandardPaths::findExecutable(QStringLiteral("pdftotext"));

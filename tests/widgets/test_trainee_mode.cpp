@@ -6,6 +6,7 @@
 // it; the score report PDF holds the score; errors are reported, not crashed on.
 #include "app/common/DefaultScene.h"
 #include "app/gui/ExerciseController.h"
+#include "app/report/ScoreReportFromRecording.h"
 #include "app/gui/MainWindow.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
@@ -266,10 +267,11 @@ TEST(TraineeMode, ScoreReportPdfHoldsTheScore) {
     ASSERT_TRUE(window->exercises().lastReport());
     const double score = window->exercises().lastReport()->score;
     // The force-time series comes from the recording: one point per tick up to the thinning.
-    const auto series = ExerciseController::forceTimeSeries(window->exercises().lastRecordingPath(), 100000);
+    const RecordingReader reader = RecordingReader::open(window->exercises().lastRecordingPath().toStdString());
+    const auto series = recordedForceSeries(reader, 100000);
     EXPECT_GT(series.size(), 1000u);
-    EXPECT_GT(std::max_element(series.begin(), series.end(), [](auto a, auto b) { return a.second < b.second; })->second, 0.5);
-    const auto thin = ExerciseController::forceTimeSeries(window->exercises().lastRecordingPath(), 500);
+    EXPECT_GT(std::max_element(series.begin(), series.end(), [](auto a, auto b) { return a.forceN < b.forceN; })->forceN, 0.5);
+    const auto thin = recordedForceSeries(reader, 500);
     EXPECT_LE(thin.size(), 500u);
 
     const QString pdf = dir.filePath(QStringLiteral("score.pdf"));
