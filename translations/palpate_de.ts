@@ -880,10 +880,6 @@
         <translation>Die Steigungen des Einschlusses werden damit multipliziert, in (0, 1]: kleiner ist steifer (find_lump.inclusion.stiffness_factor).</translation>
     </message>
     <message>
-        <source>While on, each click on the mesh appends a path point there (Esc stops).</source>
-        <translation>Solange aktiv, hängt jeder Klick auf das Netz dort einen Pfadpunkt an (Esc beendet).</translation>
-    </message>
-    <message>
         <source>The next click on the mesh moves the selected path point there.</source>
         <translation>Der nächste Klick auf das Netz verschiebt den gewählten Pfadpunkt dorthin.</translation>
     </message>
@@ -1160,10 +1156,6 @@
         <translation>Auf das Netz klicken, wo der Mittelpunkt der Verhärtung liegen soll; Esc bricht ab.</translation>
     </message>
     <message>
-        <source>Click the mesh to add path points in order; Esc stops.</source>
-        <translation>Auf das Netz klicken, um Pfadpunkte der Reihe nach hinzuzufügen; Esc beendet.</translation>
-    </message>
-    <message>
         <source>Click the mesh where the selected point goes; Esc cancels.</source>
         <translation>Auf das Netz klicken, wohin der gewählte Punkt soll; Esc bricht ab.</translation>
     </message>
@@ -1310,6 +1302,26 @@
     <message>
         <source>%1: target %2 cannot be reached with the mouse: pressing %3 mm deep (the deepest) gives %4 N, below its window&apos;s %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.</source>
         <translation>%1: Ziel %2 ist mit der Maus nicht erreichbar: %3 mm tief gedrückt (am tiefsten) ergibt %4 N, unter den %5 N seines Fensters. Das Fenster auf höchstens %4 N senken%6 oder ein steiferes Gewebe-Preset wählen.</translation>
+    </message>
+    <message>
+        <source>While on, each click on the tissue appends a path point there; the first sets a band the tissue reaches with the mouse, if the band is still the default (Esc stops).</source>
+        <translation>Solange aktiv, hängt jeder Klick auf das Gewebe dort einen Pfadpunkt an; der erste setzt ein Band, das das Gewebe mit der Maus erreicht, solange das Band noch das voreingestellte ist (Esc beendet).</translation>
+    </message>
+    <message>
+        <source>Click the tissue to add path points in order; Esc to stop.</source>
+        <translation>Auf das Gewebe klicken, um Pfadpunkte der Reihe nach hinzuzufügen; Esc beendet.</translation>
+    </message>
+    <message>
+        <source>tissue_preset: whether the band can be reached with the mouse is not known: %1</source>
+        <translation>tissue_preset: ob das Band mit der Maus erreichbar ist, ist nicht bekannt: %1</translation>
+    </message>
+    <message>
+        <source>trace.force_min_n: the band cannot be reached with the mouse at path point %1: pressing %2 mm deep (the deepest) gives as little as %3 N there, below the band&apos;s %4 N. Lower the band to at most %3 N%5, or choose a stiffer tissue preset.</source>
+        <translation>trace.force_min_n: das Band ist mit der Maus an Pfadpunkt %1 nicht erreichbar: %2 mm tief gedrückt (am tiefsten) ergibt dort nur %3 N, unter den %4 N des Bands. Das Band auf höchstens %3 N senken%5 oder ein steiferes Gewebe-Preset wählen.</translation>
+    </message>
+    <message>
+        <source>trace.force_min_n: the band %1–%2 N lies between the forces of two turns of the wheel at path point %3: widen it.</source>
+        <translation>trace.force_min_n: das Band %1–%2 N liegt an Pfadpunkt %3 zwischen den Kräften zweier Raststufen des Mausrads: verbreitern.</translation>
     </message>
 </context>
 <context>

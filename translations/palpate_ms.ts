@@ -880,10 +880,6 @@
         <translation>Cerun rangkuman didarab dengan nilai ini, dalam (0, 1]: lebih kecil lebih keras (find_lump.inclusion.stiffness_factor).</translation>
     </message>
     <message>
-        <source>While on, each click on the mesh appends a path point there (Esc stops).</source>
-        <translation>Semasa hidup, setiap klik pada jejaring menambah titik laluan di situ (Esc menghentikan).</translation>
-    </message>
-    <message>
         <source>The next click on the mesh moves the selected path point there.</source>
         <translation>Klik seterusnya pada jejaring mengalihkan titik laluan yang dipilih ke situ.</translation>
     </message>
@@ -1160,10 +1156,6 @@
         <translation>Klik jejaring di tempat pusat ketulan; Esc membatalkan.</translation>
     </message>
     <message>
-        <source>Click the mesh to add path points in order; Esc stops.</source>
-        <translation>Klik jejaring untuk menambah titik laluan mengikut urutan; Esc menghentikan.</translation>
-    </message>
-    <message>
         <source>Click the mesh where the selected point goes; Esc cancels.</source>
         <translation>Klik jejaring di tempat titik yang dipilih; Esc membatalkan.</translation>
     </message>
@@ -1310,6 +1302,26 @@
     <message>
         <source>%1: target %2 cannot be reached with the mouse: pressing %3 mm deep (the deepest) gives %4 N, below its window&apos;s %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.</source>
         <translation>%1: sasaran %2 tidak boleh dicapai dengan tetikus: menekan sedalam %3 mm (paling dalam) memberi %4 N, di bawah %5 N tetingkapnya. Turunkan tetingkap kepada paling banyak %4 N%6, atau pilih praset tisu yang lebih keras.</translation>
+    </message>
+    <message>
+        <source>While on, each click on the tissue appends a path point there; the first sets a band the tissue reaches with the mouse, if the band is still the default (Esc stops).</source>
+        <translation>Semasa aktif, setiap klik pada tisu menambah titik laluan di situ; yang pertama menetapkan jalur yang dicapai tisu dengan tetikus, jika jalur masih lalai (Esc menghentikan).</translation>
+    </message>
+    <message>
+        <source>Click the tissue to add path points in order; Esc to stop.</source>
+        <translation>Klik tisu untuk menambah titik laluan mengikut urutan; Esc untuk berhenti.</translation>
+    </message>
+    <message>
+        <source>tissue_preset: whether the band can be reached with the mouse is not known: %1</source>
+        <translation>tissue_preset: sama ada jalur boleh dicapai dengan tetikus tidak diketahui: %1</translation>
+    </message>
+    <message>
+        <source>trace.force_min_n: the band cannot be reached with the mouse at path point %1: pressing %2 mm deep (the deepest) gives as little as %3 N there, below the band&apos;s %4 N. Lower the band to at most %3 N%5, or choose a stiffer tissue preset.</source>
+        <translation>trace.force_min_n: jalur tidak boleh dicapai dengan tetikus pada titik laluan %1: menekan sedalam %2 mm (paling dalam) memberi serendah %3 N di situ, di bawah %4 N jalur. Turunkan jalur kepada paling banyak %3 N%5, atau pilih praset tisu yang lebih keras.</translation>
+    </message>
+    <message>
+        <source>trace.force_min_n: the band %1–%2 N lies between the forces of two turns of the wheel at path point %3: widen it.</source>
+        <translation>trace.force_min_n: jalur %1–%2 N terletak antara daya dua pusingan roda pada titik laluan %3: lebarkannya.</translation>
     </message>
 </context>
 <context>

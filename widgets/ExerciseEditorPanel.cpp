@@ -667,9 +667,9 @@ void ExerciseEditorPanel::buildTypePages() {
                                        mPointDownButton, "pathPoint"));
     auto* traceForm = new QFormLayout;
     traceForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    mTraceMinSpin = doubleSpin(tracePage, "traceForceMinSpin", 0.0, 1000.0, 2, 0.1);
+    mTraceMinSpin = doubleSpin(tracePage, "traceForceMinSpin", 0.0, 1000.0, 3, 0.05);
     traceForm->addRow(rowLabel(QT_TR_NOOP("Band from:")), mTraceMinSpin);
-    mTraceMaxSpin = doubleSpin(tracePage, "traceForceMaxSpin", 0.0, 1000.0, 2, 0.1);
+    mTraceMaxSpin = doubleSpin(tracePage, "traceForceMaxSpin", 0.0, 1000.0, 3, 0.05);
     traceForm->addRow(rowLabel(QT_TR_NOOP("Band to:")), mTraceMaxSpin);
     mTraceToleranceSpin = doubleSpin(tracePage, "traceToleranceSpin", 0.0, 1000.0, 2, 0.5);
     traceForm->addRow(rowLabel(QT_TR_NOOP("Tolerance:")), mTraceToleranceSpin);
@@ -778,7 +778,8 @@ void ExerciseEditorPanel::retranslateUi() {
                                       "(find_lump.inclusion.stiffness_factor)."));
 
     mAddPointButton->setText(tr("Add by clicking"));
-    mAddPointButton->setToolTip(tr("While on, each click on the mesh appends a path point there (Esc stops)."));
+    mAddPointButton->setToolTip(tr("While on, each click on the tissue appends a path point there; the first sets a band "
+                                   "the tissue reaches with the mouse, if the band is still the default (Esc stops)."));
     mMovePointButton->setText(tr("Move"));
     mMovePointButton->setToolTip(tr("The next click on the mesh moves the selected path point there."));
     mRemovePointButton->setText(tr("Remove"));
@@ -1354,7 +1355,7 @@ void ExerciseEditorPanel::updatePlacingUi() {
         case Placing::None: break;
         case Placing::AddTarget: hint = tr("Click the tissue to place a target; Esc to stop."); break;
         case Placing::PlaceInclusion: hint = tr("Click the mesh where the lump's centre goes; Esc cancels."); break;
-        case Placing::AddPathPoint: hint = tr("Click the mesh to add path points in order; Esc stops."); break;
+        case Placing::AddPathPoint: hint = tr("Click the tissue to add path points in order; Esc to stop."); break;
         case Placing::MoveSelected: hint = tr("Click the mesh where the selected point goes; Esc cancels."); break;
     }
     if (!hint.isEmpty() && !drawnMeshMatches())
@@ -1403,6 +1404,15 @@ void ExerciseEditorPanel::vertexPicked(VertexId engineVertex) {
             return;
         }
         case Placing::AddPathPoint:
+            // A path's first point, with the band as a new exercise has it: the band becomes one
+            // the tissue reaches there (as a first target's window).
+            if (e.trace.path.empty() && e.trace.forceMinN == TraceDef{}.forceMinN &&
+                e.trace.forceMaxN == TraceDef{}.forceMaxN)
+                if (const auto* forces = touchForces(resolved(e, e.meshPath), *mDrawnMesh, engineVertex))
+                    if (const auto window = comfortableWindow(*forces, touchReach())) {
+                        e.trace.forceMinN = window->minN;
+                        e.trace.forceMaxN = window->maxN;
+                    }
             e.trace.path.push_back(at);
             mSelected = int(e.trace.path.size()) - 1;
             pushEdit(e, tr("Add path point %1").arg(mSelected + 1));
@@ -1456,7 +1466,7 @@ void ExerciseEditorPanel::refresh() {
         if (!geometry && !shortPath) blocking << qs(placementError);
     }
     mWarnings.clear();
-    if (geometry && mesh && e.type == ExerciseType::PressTargets)
+    if (geometry && mesh && (e.type == ExerciseType::PressTargets || e.type == ExerciseType::Trace))
         for (const QString& warning : reachWarnings(*geometry, meshFile, *mesh)) {
             // A target with a problem (a window upside down) is named by the problem alone.
             const QString target = problemKey(warning).section(QLatin1Char('.'), 0, 1);
@@ -1607,6 +1617,51 @@ QStringList ExerciseEditorPanel::reachWarnings(const ExerciseGeometry& geometry,
     const TouchReach touch = touchReach();
     const QLocale l = locale();
     const auto n = [&l](double v) { return l.toString(v, 'g', 3); };
+    if (geometry.exercise().type == ExerciseType::Trace) {
+        // The band at every path point, as a target's window (pressed, not slid: a slide at the
+        // same depth renders about the same force, plus friction).
+        PressTarget band;
+        band.forceMinN = geometry.exercise().trace.forceMinN;
+        band.forceMaxN = geometry.exercise().trace.forceMaxN;
+        QStringList tooSoft, between;
+        double leastN = 0.0, deepestMm = 0.0;
+        std::optional<ForceWindow> suggested;
+        const auto& vertices = geometry.pathVertices();
+        for (std::size_t i = 0; i < vertices.size(); ++i) {
+            const std::vector<double>* forces = touchForces(meshFile, mesh, vertices[i]);
+            if (!forces) {
+                if (!mReachError.isEmpty())
+                    out << tr("tissue_preset: whether the band can be reached with the mouse is not known: %1").arg(mReachError);
+                return out;
+            }
+            const TargetReach reach = judgeTarget(band, *forces, touch);
+            if (reach.reachable) continue;
+            if (reach.belowForceN) {
+                between << QString::number(i + 1);
+                continue;
+            }
+            if (tooSoft.isEmpty() || reach.maxForceN < leastN) {
+                leastN = reach.maxForceN;
+                suggested = comfortableWindow(*forces, touch);
+            }
+            deepestMm = reach.maxDepthMm;
+            tooSoft << QString::number(i + 1);
+        }
+        if (!tooSoft.isEmpty()) {
+            const QString instead = suggested ? tr(" (%1–%2 N is met between a third and two thirds of that depth)")
+                                                    .arg(n(suggested->minN), n(suggested->maxN))
+                                              : QString();
+            out << tr("trace.force_min_n: the band cannot be reached with the mouse at path point %1: pressing %2 mm "
+                      "deep (the deepest) gives as little as %3 N there, below the band's %4 N. Lower the band to at "
+                      "most %3 N%5, or choose a stiffer tissue preset.")
+                       .arg(tooSoft.join(QStringLiteral(", ")), n(deepestMm), n(leastN), n(band.forceMinN), instead);
+        } else if (!between.isEmpty()) {
+            out << tr("trace.force_min_n: the band %1–%2 N lies between the forces of two turns of the wheel at path "
+                      "point %3: widen it.")
+                       .arg(n(band.forceMinN), n(band.forceMaxN), between.join(QStringLiteral(", ")));
+        }
+        return out;
+    }
     for (std::size_t i = 0; i < geometry.targets().size(); ++i) {
         const ResolvedTarget& target = geometry.targets()[i];
         const std::vector<double>* forces = touchForces(meshFile, mesh, target.vertex);

@@ -108,8 +108,9 @@ public:
     /// Problems of the current exercise (validateExercise, files that cannot be found, placement
     /// on the drawn mesh, a drawn mesh that is not the exercise's); empty: valid.
     QStringList problems() const { return mProblems; }
-    /// Targets whose force window cannot be reached pressing with the mouse (touch mode's deepest
-    /// press, the exercise's tissue and tool), each naming the target's key and what to change.
+    /// Targets whose force window (or a trace whose band) cannot be reached pressing with the mouse
+    /// (touch mode's deepest press, the exercise's tissue and tool), each naming the key and what
+    /// to change.
     /// They do not block saving or Try it: a device in the hand may press harder.
     QStringList warnings() const { return mWarnings; }
     /// How deep touch mode presses: the viewport's depths.
@@ -220,7 +221,8 @@ private:
     /// The rendered force at each touch depth at an engine vertex of the exercise's mesh with its
     /// tissue (cached per mesh, preset and vertex); null with mReachError set when it cannot be had.
     const std::vector<double>* touchForces(const QString& meshFile, const TissueMesh& mesh, VertexId vertex);
-    /// The reachability warnings of the press targets placed on `geometry`'s mesh.
+    /// The reachability warnings of the press targets (each) or the trace's band (at every path
+    /// point) placed on `geometry`'s mesh.
     QStringList reachWarnings(const ExerciseGeometry& geometry, const QString& meshFile, const TissueMesh& mesh);
     /// A label registered for retranslation.
     QLabel* rowLabel(const char* text);

@@ -860,6 +860,37 @@ TEST(ExerciseEditor, AWindowTheMouseCannotReachIsWarnedAboutUntilItIsFixed) {
     EXPECT_TRUE(s.editor.panel.warnings().isEmpty()) << s.editor.panel.warnings().join('\n').toStdString();
 }
 
+TEST(ExerciseEditor, ATraceBandTheMouseCannotReachIsWarnedAboutAndANewOneCan) {
+    const DrawnMesh drawn = loadMesh(cli::kDefaultMesh);
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    editor.panel.newExercise(ExerciseType::Trace);
+    ASSERT_EQ(editor.panel.exercise().tissuePresetPath, "presets/tissues/stomach_wall.json");
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddPathPoint);
+    for (VertexId v : {VertexId(1200), VertexId(1210), VertexId(1220)}) editor.panel.vertexPicked(v);
+    ASSERT_EQ(editor.panel.exercise().trace.path.size(), 3u);
+    EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
+    // The first point set a band the stomach wall reaches; the later ones kept it.
+    EXPECT_LT(editor.panel.exercise().trace.forceMaxN, TraceDef{}.forceMinN);
+    EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
+
+    // The engine's default band, 0.5-1.5 N, is more than the stomach wall gives.
+    auto* low = child<QDoubleSpinBox>(editor.panel, "traceForceMinSpin");
+    auto* high = child<QDoubleSpinBox>(editor.panel, "traceForceMaxSpin");
+    high->setValue(TraceDef{}.forceMaxN);
+    low->setValue(TraceDef{}.forceMinN);
+    ASSERT_EQ(editor.panel.warnings().size(), 1);
+    EXPECT_TRUE(editor.panel.warnings()[0].startsWith(QStringLiteral("trace.force_min_n"))) << editor.panel.warnings()[0].toStdString();
+    EXPECT_TRUE(editor.panel.warnings()[0].contains(QStringLiteral("path point 1, 2, 3")))
+        << editor.panel.warnings()[0].toStdString();
+    EXPECT_TRUE(child<QLabel>(editor.panel, "warningsLabel")->isVisibleTo(&editor.panel));
+    // Muscle reaches it (the shipped trace's tissue).
+    auto* preset = child<QComboBox>(editor.panel, "tissuePresetCombo");
+    preset->setEditText(QStringLiteral("presets/tissues/muscle.json"));
+    emit preset->lineEdit()->editingFinished();
+    EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
+}
+
 TEST(ExerciseEditor, EveryShippedExampleCanBeDoneWithTheMouse) {
     int targets = 0;
     for (const char* name : {"press_targets", "find_lump", "trace"}) {
