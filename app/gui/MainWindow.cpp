@@ -996,7 +996,7 @@ void MainWindow::createEditorDock() {
             statusBar()->showMessage(tr("Click the tissue to place; drag orbits; Esc stops placing"), 6000);
         } else {
             mViewport->setPickHandler({});
-            setTouchMode(mTouchBeforePlacing && mSession->touchAvailable());
+            setTouchMode(mTouchBeforePlacing && mSession->touchAvailable() && !mPlayback);
         }
     });
     connect(mEditor, &ExerciseEditorPanel::markersChanged, this, [this](const ExerciseMarkers&) { showEditorMarkers(); });
