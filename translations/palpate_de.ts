@@ -840,10 +840,6 @@
         <translation>Per Klick hinzufügen</translation>
     </message>
     <message>
-        <source>While on, each click on the mesh appends a target there, with the last target&apos;s window, hold and tolerance (Esc stops).</source>
-        <translation>Solange aktiv, hängt jeder Klick auf das Netz dort ein Ziel an, mit Fenster, Haltezeit und Toleranz des letzten Ziels (Esc beendet).</translation>
-    </message>
-    <message>
         <source>Move</source>
         <translation>Verschieben</translation>
     </message>
@@ -878,10 +874,6 @@
     <message>
         <source>The inclusion&apos;s slopes are multiplied by this, in (0, 1]: smaller is stiffer (find_lump.inclusion.stiffness_factor).</source>
         <translation>Die Steigungen des Einschlusses werden damit multipliziert, in (0, 1]: kleiner ist steifer (find_lump.inclusion.stiffness_factor).</translation>
-    </message>
-    <message>
-        <source>While on, each click on the mesh appends a path point there (Esc stops).</source>
-        <translation>Solange aktiv, hängt jeder Klick auf das Netz dort einen Pfadpunkt an (Esc beendet).</translation>
     </message>
     <message>
         <source>The next click on the mesh moves the selected path point there.</source>
@@ -1156,16 +1148,8 @@
         <translation>Pfadpunkt %1 nach unten</translation>
     </message>
     <message>
-        <source>Click the mesh to add targets; Esc stops.</source>
-        <translation>Auf das Netz klicken, um Ziele hinzuzufügen; Esc beendet.</translation>
-    </message>
-    <message>
         <source>Click the mesh where the lump&apos;s centre goes; Esc cancels.</source>
         <translation>Auf das Netz klicken, wo der Mittelpunkt der Verhärtung liegen soll; Esc bricht ab.</translation>
-    </message>
-    <message>
-        <source>Click the mesh to add path points in order; Esc stops.</source>
-        <translation>Auf das Netz klicken, um Pfadpunkte der Reihe nach hinzuzufügen; Esc beendet.</translation>
     </message>
     <message>
         <source>Click the mesh where the selected point goes; Esc cancels.</source>
@@ -1290,6 +1274,50 @@
     <message>
         <source>tick budget</source>
         <translation>Tick-Budget</translation>
+    </message>
+    <message>
+        <source>While on, each click on the tissue appends a target there, with the last target&apos;s window, hold and tolerance; the first gets a window the tissue reaches with the mouse (Esc stops).</source>
+        <translation>Solange aktiv, hängt jeder Klick auf das Gewebe dort ein Ziel an, mit Fenster, Haltezeit und Toleranz des letzten Ziels; das erste bekommt ein Fenster, das das Gewebe mit der Maus erreicht (Esc beendet).</translation>
+    </message>
+    <message>
+        <source>Click the tissue to place a target; Esc to stop.</source>
+        <translation>Auf das Gewebe klicken, um ein Ziel zu setzen; Esc beendet.</translation>
+    </message>
+    <message>
+        <source>tissue_preset: whether the targets can be reached with the mouse is not known: %1</source>
+        <translation>tissue_preset: ob die Ziele mit der Maus erreichbar sind, ist nicht bekannt: %1</translation>
+    </message>
+    <message>
+        <source>%1: target %2 cannot be held with the mouse: its window %3–%4 N lies between %5 N at %6 mm and %7 N at %8 mm deep (one turn of the wheel apart). Widen the window to take in one of them.</source>
+        <translation>%1: Ziel %2 lässt sich mit der Maus nicht halten: sein Fenster %3–%4 N liegt zwischen %5 N bei %6 mm und %7 N bei %8 mm Tiefe (eine Raststufe des Mausrads auseinander). Das Fenster so verbreitern, dass es einen der beiden Werte einschließt.</translation>
+    </message>
+    <message>
+        <source> (%1–%2 N is met between a third and two thirds of that depth)</source>
+        <translation> (%1–%2 N wird zwischen einem Drittel und zwei Dritteln dieser Tiefe erreicht)</translation>
+    </message>
+    <message>
+        <source>%1: target %2 cannot be reached with the mouse: pressing %3 mm deep (the deepest) gives %4 N, below its window&apos;s %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.</source>
+        <translation>%1: Ziel %2 ist mit der Maus nicht erreichbar: %3 mm tief gedrückt (am tiefsten) ergibt %4 N, unter den %5 N seines Fensters. Das Fenster auf höchstens %4 N senken%6 oder ein steiferes Gewebe-Preset wählen.</translation>
+    </message>
+    <message>
+        <source>While on, each click on the tissue appends a path point there; the first sets a band the tissue reaches with the mouse, if the band is still the default (Esc stops).</source>
+        <translation>Solange aktiv, hängt jeder Klick auf das Gewebe dort einen Pfadpunkt an; der erste setzt ein Band, das das Gewebe mit der Maus erreicht, solange das Band noch das voreingestellte ist (Esc beendet).</translation>
+    </message>
+    <message>
+        <source>Click the tissue to add path points in order; Esc to stop.</source>
+        <translation>Auf das Gewebe klicken, um Pfadpunkte der Reihe nach hinzuzufügen; Esc beendet.</translation>
+    </message>
+    <message>
+        <source>tissue_preset: whether the band can be reached with the mouse is not known: %1</source>
+        <translation>tissue_preset: ob das Band mit der Maus erreichbar ist, ist nicht bekannt: %1</translation>
+    </message>
+    <message>
+        <source>trace.force_min_n: the band cannot be reached with the mouse at path point %1: pressing %2 mm deep (the deepest) gives as little as %3 N there, below the band&apos;s %4 N. Lower the band to at most %3 N%5, or choose a stiffer tissue preset.</source>
+        <translation>trace.force_min_n: das Band ist mit der Maus an Pfadpunkt %1 nicht erreichbar: %2 mm tief gedrückt (am tiefsten) ergibt dort nur %3 N, unter den %4 N des Bands. Das Band auf höchstens %3 N senken%5 oder ein steiferes Gewebe-Preset wählen.</translation>
+    </message>
+    <message>
+        <source>trace.force_min_n: the band %1–%2 N lies between the forces of two turns of the wheel at path point %3: widen it.</source>
+        <translation>trace.force_min_n: das Band %1–%2 N liegt an Pfadpunkt %3 zwischen den Kräften zweier Raststufen des Mausrads: verbreitern.</translation>
     </message>
 </context>
 <context>
@@ -2302,10 +2330,6 @@ Pausiert: %13</translation>
         <translation>Übungseditor</translation>
     </message>
     <message>
-        <source>Click the mesh to place; drag still orbits; Esc stops placing</source>
-        <translation>Auf das Netz klicken zum Platzieren; Ziehen dreht weiterhin; Esc beendet das Platzieren</translation>
-    </message>
-    <message>
         <source>An exercise is running: the mesh cannot change now.</source>
         <translation>Eine Übung läuft: das Netz kann jetzt nicht geändert werden.</translation>
     </message>
@@ -2448,6 +2472,10 @@ Pausiert: %13</translation>
     <message>
         <source>force %1</source>
         <translation>Kraft %1</translation>
+    </message>
+    <message>
+        <source>Click the tissue to place; drag orbits; Esc stops placing</source>
+        <translation>Auf das Gewebe klicken zum Platzieren; Ziehen dreht; Esc beendet das Platzieren</translation>
     </message>
 </context>
 <context>

@@ -840,10 +840,6 @@
         <translation>Tambah dengan mengklik</translation>
     </message>
     <message>
-        <source>While on, each click on the mesh appends a target there, with the last target&apos;s window, hold and tolerance (Esc stops).</source>
-        <translation>Semasa hidup, setiap klik pada jejaring menambah sasaran di situ, dengan tetingkap, tempoh tahan dan toleransi sasaran terakhir (Esc menghentikan).</translation>
-    </message>
-    <message>
         <source>Move</source>
         <translation>Alih</translation>
     </message>
@@ -878,10 +874,6 @@
     <message>
         <source>The inclusion&apos;s slopes are multiplied by this, in (0, 1]: smaller is stiffer (find_lump.inclusion.stiffness_factor).</source>
         <translation>Cerun rangkuman didarab dengan nilai ini, dalam (0, 1]: lebih kecil lebih keras (find_lump.inclusion.stiffness_factor).</translation>
-    </message>
-    <message>
-        <source>While on, each click on the mesh appends a path point there (Esc stops).</source>
-        <translation>Semasa hidup, setiap klik pada jejaring menambah titik laluan di situ (Esc menghentikan).</translation>
     </message>
     <message>
         <source>The next click on the mesh moves the selected path point there.</source>
@@ -1156,16 +1148,8 @@
         <translation>Turunkan titik laluan %1</translation>
     </message>
     <message>
-        <source>Click the mesh to add targets; Esc stops.</source>
-        <translation>Klik jejaring untuk menambah sasaran; Esc menghentikan.</translation>
-    </message>
-    <message>
         <source>Click the mesh where the lump&apos;s centre goes; Esc cancels.</source>
         <translation>Klik jejaring di tempat pusat ketulan; Esc membatalkan.</translation>
-    </message>
-    <message>
-        <source>Click the mesh to add path points in order; Esc stops.</source>
-        <translation>Klik jejaring untuk menambah titik laluan mengikut urutan; Esc menghentikan.</translation>
     </message>
     <message>
         <source>Click the mesh where the selected point goes; Esc cancels.</source>
@@ -1290,6 +1274,50 @@
     <message>
         <source>tick budget</source>
         <translation>bajet tik</translation>
+    </message>
+    <message>
+        <source>While on, each click on the tissue appends a target there, with the last target&apos;s window, hold and tolerance; the first gets a window the tissue reaches with the mouse (Esc stops).</source>
+        <translation>Semasa aktif, setiap klik pada tisu menambah sasaran di situ, dengan tetingkap, masa tahan dan toleransi sasaran terakhir; yang pertama mendapat tetingkap yang dicapai tisu dengan tetikus (Esc menghentikan).</translation>
+    </message>
+    <message>
+        <source>Click the tissue to place a target; Esc to stop.</source>
+        <translation>Klik tisu untuk meletakkan sasaran; Esc untuk berhenti.</translation>
+    </message>
+    <message>
+        <source>tissue_preset: whether the targets can be reached with the mouse is not known: %1</source>
+        <translation>tissue_preset: sama ada sasaran boleh dicapai dengan tetikus tidak diketahui: %1</translation>
+    </message>
+    <message>
+        <source>%1: target %2 cannot be held with the mouse: its window %3–%4 N lies between %5 N at %6 mm and %7 N at %8 mm deep (one turn of the wheel apart). Widen the window to take in one of them.</source>
+        <translation>%1: sasaran %2 tidak boleh ditahan dengan tetikus: tetingkapnya %3–%4 N terletak antara %5 N pada %6 mm dan %7 N pada kedalaman %8 mm (satu pusingan roda). Lebarkan tetingkap supaya merangkumi salah satunya.</translation>
+    </message>
+    <message>
+        <source> (%1–%2 N is met between a third and two thirds of that depth)</source>
+        <translation> (%1–%2 N dicapai antara satu pertiga dan dua pertiga kedalaman itu)</translation>
+    </message>
+    <message>
+        <source>%1: target %2 cannot be reached with the mouse: pressing %3 mm deep (the deepest) gives %4 N, below its window&apos;s %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.</source>
+        <translation>%1: sasaran %2 tidak boleh dicapai dengan tetikus: menekan sedalam %3 mm (paling dalam) memberi %4 N, di bawah %5 N tetingkapnya. Turunkan tetingkap kepada paling banyak %4 N%6, atau pilih praset tisu yang lebih keras.</translation>
+    </message>
+    <message>
+        <source>While on, each click on the tissue appends a path point there; the first sets a band the tissue reaches with the mouse, if the band is still the default (Esc stops).</source>
+        <translation>Semasa aktif, setiap klik pada tisu menambah titik laluan di situ; yang pertama menetapkan jalur yang dicapai tisu dengan tetikus, jika jalur masih lalai (Esc menghentikan).</translation>
+    </message>
+    <message>
+        <source>Click the tissue to add path points in order; Esc to stop.</source>
+        <translation>Klik tisu untuk menambah titik laluan mengikut urutan; Esc untuk berhenti.</translation>
+    </message>
+    <message>
+        <source>tissue_preset: whether the band can be reached with the mouse is not known: %1</source>
+        <translation>tissue_preset: sama ada jalur boleh dicapai dengan tetikus tidak diketahui: %1</translation>
+    </message>
+    <message>
+        <source>trace.force_min_n: the band cannot be reached with the mouse at path point %1: pressing %2 mm deep (the deepest) gives as little as %3 N there, below the band&apos;s %4 N. Lower the band to at most %3 N%5, or choose a stiffer tissue preset.</source>
+        <translation>trace.force_min_n: jalur tidak boleh dicapai dengan tetikus pada titik laluan %1: menekan sedalam %2 mm (paling dalam) memberi serendah %3 N di situ, di bawah %4 N jalur. Turunkan jalur kepada paling banyak %3 N%5, atau pilih praset tisu yang lebih keras.</translation>
+    </message>
+    <message>
+        <source>trace.force_min_n: the band %1–%2 N lies between the forces of two turns of the wheel at path point %3: widen it.</source>
+        <translation>trace.force_min_n: jalur %1–%2 N terletak antara daya dua pusingan roda pada titik laluan %3: lebarkannya.</translation>
     </message>
 </context>
 <context>
@@ -2301,10 +2329,6 @@ pemapar %4</translation>
         <translation>Editor Latihan</translation>
     </message>
     <message>
-        <source>Click the mesh to place; drag still orbits; Esc stops placing</source>
-        <translation>Klik jejaring untuk meletak; seret masih memutar; Esc menghentikan peletakan</translation>
-    </message>
-    <message>
         <source>An exercise is running: the mesh cannot change now.</source>
         <translation>Latihan sedang berjalan: jejaring tidak boleh diubah sekarang.</translation>
     </message>
@@ -2447,6 +2471,10 @@ pemapar %4</translation>
     <message>
         <source>force %1</source>
         <translation>daya %1</translation>
+    </message>
+    <message>
+        <source>Click the tissue to place; drag orbits; Esc stops placing</source>
+        <translation>Klik tisu untuk meletakkan; seret memutar; Esc menghentikan peletakan</translation>
     </message>
 </context>
 <context>

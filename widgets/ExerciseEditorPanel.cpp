@@ -1,12 +1,16 @@
 #include "widgets/ExerciseEditorPanel.h"
 
 #include "widgets/ExerciseEditCommands.h"
+#include "widgets/Viewport.h"
 
 #include "engine/exercise/ExerciseGeometry.h"
+#include "engine/scene/TissuePreset.h"
+#include "engine/scoring/TargetReachability.h"
 
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDateTime>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -167,6 +171,7 @@ const char* const kStyleSheet = R"(
 QAbstractSpinBox[invalid="true"], QLineEdit[invalid="true"], QComboBox[invalid="true"] {
   border: 2px solid #d32f2f; border-radius: 3px; background-color: #fff0f0; }
 QLabel#problemsLabel { color: #c62828; }
+QLabel#warningsLabel { color: #8a5a00; background-color: #fff8e1; border: 1px solid #ffcc80; border-radius: 3px; padding: 3px; }
 QLabel#messageLabel[error="true"] { color: #c62828; }
 QLabel#messageLabel[error="false"] { color: #2e7d32; }
 QLabel#placingLabel { background-color: #e3f2fd; border: 1px solid #90caf9; border-radius: 3px; padding: 3px; }
@@ -174,6 +179,7 @@ QLabel#exerciseTitleLabel { font-weight: bold; }
 )";
 
 const QColor kInvalidCell(255, 224, 224);
+const QColor kWarningCell(255, 236, 179);
 const QColor kDefaultRubricText(120, 120, 120);
 
 }  // namespace
@@ -270,6 +276,9 @@ void ExerciseEditorPanel::buildUi() {
         action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
         addAction(action);
     }
+    // The click that placed a point gave the viewport the focus: Esc still stops (the action is
+    // enabled only while placing, so it takes Esc from nothing else).
+    mStopPlacingAction->setShortcutContext(Qt::WindowShortcut);
     // Remove and move act on the selected row of the table or list that has the focus.
     mRemoveAction = new QAction(this);
     mRemoveAction->setShortcut(QKeySequence::Delete);
@@ -469,6 +478,12 @@ void ExerciseEditorPanel::buildUi() {
     mProblemsLabel->setWordWrap(true);
     mProblemsLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
     mProblemsLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    mWarningsLabel = new QLabel(this);
+    mWarningsLabel->setObjectName(QStringLiteral("warningsLabel"));
+    mWarningsLabel->setWordWrap(true);
+    mWarningsLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    mWarningsLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    mWarningsLabel->setVisible(false);
     mMessageLabel = new QLabel(this);
     mMessageLabel->setObjectName(QStringLiteral("messageLabel"));
     mMessageLabel->setWordWrap(true);
@@ -489,6 +504,7 @@ void ExerciseEditorPanel::buildUi() {
     layout->addWidget(scroll, 1);
     layout->addWidget(mPlacingLabel);
     layout->addWidget(mProblemsLabel);
+    layout->addWidget(mWarningsLabel);
     layout->addWidget(mMessageLabel);
     layout->addLayout(previewRow);
 
@@ -651,9 +667,9 @@ void ExerciseEditorPanel::buildTypePages() {
                                        mPointDownButton, "pathPoint"));
     auto* traceForm = new QFormLayout;
     traceForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    mTraceMinSpin = doubleSpin(tracePage, "traceForceMinSpin", 0.0, 1000.0, 2, 0.1);
+    mTraceMinSpin = doubleSpin(tracePage, "traceForceMinSpin", 0.0, 1000.0, 3, 0.05);
     traceForm->addRow(rowLabel(QT_TR_NOOP("Band from:")), mTraceMinSpin);
-    mTraceMaxSpin = doubleSpin(tracePage, "traceForceMaxSpin", 0.0, 1000.0, 2, 0.1);
+    mTraceMaxSpin = doubleSpin(tracePage, "traceForceMaxSpin", 0.0, 1000.0, 3, 0.05);
     traceForm->addRow(rowLabel(QT_TR_NOOP("Band to:")), mTraceMaxSpin);
     mTraceToleranceSpin = doubleSpin(tracePage, "traceToleranceSpin", 0.0, 1000.0, 2, 0.5);
     traceForm->addRow(rowLabel(QT_TR_NOOP("Tolerance:")), mTraceToleranceSpin);
@@ -744,8 +760,9 @@ void ExerciseEditorPanel::retranslateUi() {
     for (int c = 0; c < kTargetColumns; ++c)
         if (QTableWidgetItem* header = mTargetTable->horizontalHeaderItem(c)) header->setToolTip(targetTips[c]);
     mAddTargetButton->setText(tr("Add by clicking"));
-    mAddTargetButton->setToolTip(tr("While on, each click on the mesh appends a target there, with the last target's "
-                                    "window, hold and tolerance (Esc stops)."));
+    mAddTargetButton->setToolTip(tr("While on, each click on the tissue appends a target there, with the last target's "
+                                    "window, hold and tolerance; the first gets a window the tissue reaches with the "
+                                    "mouse (Esc stops)."));
     mMoveTargetButton->setText(tr("Move"));
     mMoveTargetButton->setToolTip(tr("The next click on the mesh moves the selected target there."));
     mRemoveTargetButton->setText(tr("Remove"));
@@ -761,7 +778,8 @@ void ExerciseEditorPanel::retranslateUi() {
                                       "(find_lump.inclusion.stiffness_factor)."));
 
     mAddPointButton->setText(tr("Add by clicking"));
-    mAddPointButton->setToolTip(tr("While on, each click on the mesh appends a path point there (Esc stops)."));
+    mAddPointButton->setToolTip(tr("While on, each click on the tissue appends a path point there; the first sets a band "
+                                   "the tissue reaches with the mouse, if the band is still the default (Esc stops)."));
     mMovePointButton->setText(tr("Move"));
     mMovePointButton->setToolTip(tr("The next click on the mesh moves the selected path point there."));
     mRemovePointButton->setText(tr("Remove"));
@@ -1335,9 +1353,9 @@ void ExerciseEditorPanel::updatePlacingUi() {
     QString hint;
     switch (mPlacing) {
         case Placing::None: break;
-        case Placing::AddTarget: hint = tr("Click the mesh to add targets; Esc stops."); break;
+        case Placing::AddTarget: hint = tr("Click the tissue to place a target; Esc to stop."); break;
         case Placing::PlaceInclusion: hint = tr("Click the mesh where the lump's centre goes; Esc cancels."); break;
-        case Placing::AddPathPoint: hint = tr("Click the mesh to add path points in order; Esc stops."); break;
+        case Placing::AddPathPoint: hint = tr("Click the tissue to add path points in order; Esc to stop."); break;
         case Placing::MoveSelected: hint = tr("Click the mesh where the selected point goes; Esc cancels."); break;
     }
     if (!hint.isEmpty() && !drawnMeshMatches())
@@ -1370,8 +1388,15 @@ void ExerciseEditorPanel::vertexPicked(VertexId engineVertex) {
         case Placing::None: return;
         case Placing::AddTarget: {
             // The new target takes the last one's window, hold and tolerance: targets of one
-            // exercise are usually alike.
+            // exercise are usually alike. The first gets a window its tissue reaches at a third to
+            // two thirds of the deepest touch (docs/scoring.md, "Reachable targets").
             PressTarget t = e.pressTargets.targets.empty() ? PressTarget{} : e.pressTargets.targets.back();
+            if (e.pressTargets.targets.empty())
+                if (const auto* forces = touchForces(resolved(e, e.meshPath), *mDrawnMesh, engineVertex))
+                    if (const auto window = comfortableWindow(*forces, touchReach())) {
+                        t.forceMinN = window->minN;
+                        t.forceMaxN = window->maxN;
+                    }
             t.at = at;
             e.pressTargets.targets.push_back(t);
             mSelected = int(e.pressTargets.targets.size()) - 1;
@@ -1379,6 +1404,15 @@ void ExerciseEditorPanel::vertexPicked(VertexId engineVertex) {
             return;
         }
         case Placing::AddPathPoint:
+            // A path's first point, with the band as a new exercise has it: the band becomes one
+            // the tissue reaches there (as a first target's window).
+            if (e.trace.path.empty() && e.trace.forceMinN == TraceDef{}.forceMinN &&
+                e.trace.forceMaxN == TraceDef{}.forceMaxN)
+                if (const auto* forces = touchForces(resolved(e, e.meshPath), *mDrawnMesh, engineVertex))
+                    if (const auto window = comfortableWindow(*forces, touchReach())) {
+                        e.trace.forceMinN = window->minN;
+                        e.trace.forceMaxN = window->maxN;
+                    }
             e.trace.path.push_back(at);
             mSelected = int(e.trace.path.size()) - 1;
             pushEdit(e, tr("Add path point %1").arg(mSelected + 1));
@@ -1431,6 +1465,15 @@ void ExerciseEditorPanel::refresh() {
         const bool shortPath = e.type == ExerciseType::Trace && e.trace.path.size() < 2;
         if (!geometry && !shortPath) blocking << qs(placementError);
     }
+    mWarnings.clear();
+    if (geometry && mesh && (e.type == ExerciseType::PressTargets || e.type == ExerciseType::Trace))
+        for (const QString& warning : reachWarnings(*geometry, meshFile, *mesh)) {
+            // A target with a problem (a window upside down) is named by the problem alone.
+            const QString target = problemKey(warning).section(QLatin1Char('.'), 0, 1);
+            const bool named = std::any_of(blocking.begin(), blocking.end(),
+                                           [&](const QString& p) { return problemKey(p).startsWith(target); });
+            if (!named) mWarnings << warning;
+        }
     mBlocking = blocking;
     mProblems = blocking;
     if (!meshFile.isEmpty() && !drawnMeshMatches()) {
@@ -1472,8 +1515,13 @@ void ExerciseEditorPanel::refresh() {
         for (const QString& p : mProblems) lines << QStringLiteral("• ") + p.toHtmlEscaped();
         mProblemsLabel->setText(lines.join(QStringLiteral("<br>")));
         mProblemsLabel->setVisible(!mProblems.isEmpty());
-        QSet<QString> keys;
+        lines.clear();
+        for (const QString& w : mWarnings) lines << QStringLiteral("⚠ ") + w.toHtmlEscaped();
+        mWarningsLabel->setText(lines.join(QStringLiteral("<br>")));
+        mWarningsLabel->setVisible(!mWarnings.isEmpty());
+        QSet<QString> keys, warned;
         for (const QString& p : mProblems) keys.insert(problemKey(p));
+        for (const QString& w : mWarnings) warned.insert(problemKey(w));
         const std::pair<QWidget*, const char*> fields[] = {
             {mNameEdit, "name"},
             {mMeshCombo, "mesh"},
@@ -1499,9 +1547,11 @@ void ExerciseEditorPanel::refresh() {
         for (int r = 0; r < mTargetTable->rowCount(); ++r)
             for (int c = kTargetVertex; c < kTargetColumns; ++c) {
                 const QString key = QStringLiteral("press_targets.targets[%1]").arg(r);
-                const bool invalid = keys.contains(key + QLatin1Char('.') + QLatin1String(kTargetKeys[c])) ||
-                                     (c == kTargetVertex && keys.contains(key));
-                const QVariant background = invalid ? QVariant(QBrush(kInvalidCell)) : QVariant();
+                const QString cellKey = key + QLatin1Char('.') + QLatin1String(kTargetKeys[c]);
+                const bool invalid = keys.contains(cellKey) || (c == kTargetVertex && keys.contains(key));
+                const QVariant background = invalid                   ? QVariant(QBrush(kInvalidCell))
+                                            : warned.contains(cellKey) ? QVariant(QBrush(kWarningCell))
+                                                                       : QVariant();
                 if (QTableWidgetItem* it = mTargetTable->item(r, c); it && it->data(Qt::BackgroundRole) != background)
                     it->setData(Qt::BackgroundRole, background);
             }
@@ -1533,6 +1583,114 @@ void ExerciseEditorPanel::refresh() {
     updatePlacingUi();
     updateTitle();
     emit markersChanged(mMarkers);
+}
+
+TouchReach ExerciseEditorPanel::touchReach() { return TouchReach{Viewport::kMaxTouchDepthMm, Viewport::kTouchDepthStepMm}; }
+
+const std::vector<double>* ExerciseEditorPanel::touchForces(const QString& meshFile, const TissueMesh& mesh,
+                                                            VertexId vertex) {
+    const QString presetFile = resolved(mExercise, mExercise.tissuePresetPath);
+    if (meshFile.isEmpty() || presetFile.isEmpty()) return nullptr;  // a problem says so already
+    const auto stamp = [](const QString& file) { return QFileInfo(file).lastModified().toString(Qt::ISODateWithMs); };
+    const QString key = meshFile + QLatin1Char('\n') + stamp(meshFile) + QLatin1Char('\n') + presetFile +
+                        QLatin1Char('\n') + stamp(presetFile);
+    if (key != mProbeKey) {
+        mProbeKey = key;
+        mProbe.reset();
+        mProbeForces.clear();
+        mReachError.clear();
+        const PresetLoadResult loaded = loadTissuePreset(ss(presetFile));
+        std::string error = loaded.errors.empty() ? std::string("not a tissue preset") : loaded.errors.front();
+        // Press targets have no physics of their own: the scene is the tissue's as it is.
+        if (loaded.preset) mProbe = TouchForceProbe::create(mesh, *loaded.preset, nullptr, touchReach(), error);
+        if (!mProbe) mReachError = qs(error);
+    }
+    if (!mProbe) return nullptr;
+    auto it = mProbeForces.find(vertex);
+    if (it == mProbeForces.end()) it = mProbeForces.insert(vertex, mProbe->forcesN(vertex));
+    return it->empty() ? nullptr : &*it;
+}
+
+QStringList ExerciseEditorPanel::reachWarnings(const ExerciseGeometry& geometry, const QString& meshFile,
+                                               const TissueMesh& mesh) {
+    QStringList out;
+    const TouchReach touch = touchReach();
+    const QLocale l = locale();
+    const auto n = [&l](double v) { return l.toString(v, 'g', 3); };
+    if (geometry.exercise().type == ExerciseType::Trace) {
+        // The band at every path point, as a target's window (pressed, not slid: a slide at the
+        // same depth renders about the same force, plus friction).
+        PressTarget band;
+        band.forceMinN = geometry.exercise().trace.forceMinN;
+        band.forceMaxN = geometry.exercise().trace.forceMaxN;
+        QStringList tooSoft, between;
+        double leastN = 0.0, deepestMm = 0.0;
+        std::optional<ForceWindow> suggested;
+        const auto& vertices = geometry.pathVertices();
+        for (std::size_t i = 0; i < vertices.size(); ++i) {
+            const std::vector<double>* forces = touchForces(meshFile, mesh, vertices[i]);
+            if (!forces) {
+                if (!mReachError.isEmpty())
+                    out << tr("tissue_preset: whether the band can be reached with the mouse is not known: %1").arg(mReachError);
+                return out;
+            }
+            const TargetReach reach = judgeTarget(band, *forces, touch);
+            if (reach.reachable) continue;
+            if (reach.belowForceN) {
+                between << QString::number(i + 1);
+                continue;
+            }
+            if (tooSoft.isEmpty() || reach.maxForceN < leastN) {
+                leastN = reach.maxForceN;
+                suggested = comfortableWindow(*forces, touch);
+            }
+            deepestMm = reach.maxDepthMm;
+            tooSoft << QString::number(i + 1);
+        }
+        if (!tooSoft.isEmpty()) {
+            const QString instead = suggested ? tr(" (%1–%2 N is met between a third and two thirds of that depth)")
+                                                    .arg(n(suggested->minN), n(suggested->maxN))
+                                              : QString();
+            out << tr("trace.force_min_n: the band cannot be reached with the mouse at path point %1: pressing %2 mm "
+                      "deep (the deepest) gives as little as %3 N there, below the band's %4 N. Lower the band to at "
+                      "most %3 N%5, or choose a stiffer tissue preset.")
+                       .arg(tooSoft.join(QStringLiteral(", ")), n(deepestMm), n(leastN), n(band.forceMinN), instead);
+        } else if (!between.isEmpty()) {
+            out << tr("trace.force_min_n: the band %1–%2 N lies between the forces of two turns of the wheel at path "
+                      "point %3: widen it.")
+                       .arg(n(band.forceMinN), n(band.forceMaxN), between.join(QStringLiteral(", ")));
+        }
+        return out;
+    }
+    for (std::size_t i = 0; i < geometry.targets().size(); ++i) {
+        const ResolvedTarget& target = geometry.targets()[i];
+        const std::vector<double>* forces = touchForces(meshFile, mesh, target.vertex);
+        if (!forces) {
+            if (!mReachError.isEmpty())
+                out << tr("tissue_preset: whether the targets can be reached with the mouse is not known: %1").arg(mReachError);
+            break;
+        }
+        const TargetReach reach = judgeTarget(target.def, *forces, touch);
+        if (reach.reachable) continue;
+        const QString key = QStringLiteral("press_targets.targets[%1].force_min_n").arg(i);
+        if (reach.belowForceN) {
+            out << tr("%1: target %2 cannot be held with the mouse: its window %3–%4 N lies between %5 N at %6 mm and "
+                      "%7 N at %8 mm deep (one turn of the wheel apart). Widen the window to take in one of them.")
+                       .arg(key).arg(i + 1)
+                       .arg(n(target.def.forceMinN), n(target.def.forceMaxN), n(*reach.belowForceN), n(*reach.belowDepthMm),
+                            n(*reach.aboveForceN), n(*reach.aboveDepthMm));
+            continue;
+        }
+        const auto suggested = comfortableWindow(*forces, touch);
+        const QString instead = suggested ? tr(" (%1–%2 N is met between a third and two thirds of that depth)")
+                                                .arg(n(suggested->minN), n(suggested->maxN))
+                                          : QString();
+        out << tr("%1: target %2 cannot be reached with the mouse: pressing %3 mm deep (the deepest) gives %4 N, below "
+                  "its window's %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.")
+                   .arg(key).arg(i + 1)
+                   .arg(n(reach.maxDepthMm), n(reach.maxForceN), n(target.def.forceMinN), instead);
+    }
+    return out;
 }
 
 void ExerciseEditorPanel::updateTitle() {

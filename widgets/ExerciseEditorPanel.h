@@ -4,7 +4,9 @@
 // targets: a table of targets; find the lump: the inclusion; trace: the path points), the rubric
 // of the metrics that apply to the type, and the problems of the exercise, live. Points are placed
 // by clicking the drawn mesh: the window forwards the viewport's picks to vertexPicked() while
-// placingChanged(true) says the panel wants them. Every edit is one step on a QUndoStack (typing
+// placingChanged(true) says the panel wants them. Each press target is checked, live, for whether
+// its force window can be reached pressing with the mouse (TargetReachability.h): a warning per
+// target that cannot, saying what to change; a first target gets a window the tissue reaches. Every edit is one step on a QUndoStack (typing
 // into one field merges). Files are the engine's exercise JSON (ExerciseFile.h); saving writes
 // mesh and preset paths relative to resources/ when they are under it, as the shipped examples do.
 // A plain QWidget, meant for a QDockWidget (about 380 px wide: the form scrolls).
@@ -14,6 +16,7 @@
 #include "engine/exercise/ExerciseFile.h"
 #include "widgets/ExerciseMarkers.h"
 
+#include <QHash>
 #include <QList>
 #include <QString>
 #include <QStringList>
@@ -41,6 +44,9 @@ class QToolButton;
 class QUndoStack;
 
 namespace palpate {
+
+class TouchForceProbe;
+struct TouchReach;
 
 class ExerciseEditorPanel final : public QWidget {
     Q_OBJECT
@@ -102,6 +108,13 @@ public:
     /// Problems of the current exercise (validateExercise, files that cannot be found, placement
     /// on the drawn mesh, a drawn mesh that is not the exercise's); empty: valid.
     QStringList problems() const { return mProblems; }
+    /// Targets whose force window (or a trace whose band) cannot be reached pressing with the mouse
+    /// (touch mode's deepest press, the exercise's tissue and tool), each naming the key and what
+    /// to change.
+    /// They do not block saving or Try it: a device in the hand may press harder.
+    QStringList warnings() const { return mWarnings; }
+    /// How deep touch mode presses: the viewport's depths.
+    static TouchReach touchReach();
     /// The markers the viewport should draw (what markersChanged last sent).
     const ExerciseMarkers& markers() const { return mMarkers; }
 
@@ -205,6 +218,12 @@ private:
     /// The mesh the exercise's points are checked on: the drawn one when it is the exercise's,
     /// else the exercise's file (loaded once per path); null when there is none.
     const TissueMesh* checkMesh(const QString& meshPath);
+    /// The rendered force at each touch depth at an engine vertex of the exercise's mesh with its
+    /// tissue (cached per mesh, preset and vertex); null with mReachError set when it cannot be had.
+    const std::vector<double>* touchForces(const QString& meshFile, const TissueMesh& mesh, VertexId vertex);
+    /// The reachability warnings of the press targets (each) or the trace's band (at every path
+    /// point) placed on `geometry`'s mesh.
+    QStringList reachWarnings(const ExerciseGeometry& geometry, const QString& meshFile, const TissueMesh& mesh);
     /// A label registered for retranslation.
     QLabel* rowLabel(const char* text);
 
@@ -214,6 +233,12 @@ private:
     std::shared_ptr<const TissueMesh> mCheckMesh;
     QString mCheckMeshPath;
     QString mCheckMeshError;
+    /// The force probe of the exercise's mesh and tissue, and what it found per vertex.
+    std::unique_ptr<TouchForceProbe> mProbe;
+    QString mProbeKey;  ///< mesh file, preset file and its modification time: a new one rebuilds
+    QHash<VertexId, std::vector<double>> mProbeForces;
+    QString mReachError;
+    QStringList mWarnings;
 
     ResourceFinder mFindResource;
     QString mResourceRoot;  ///< resources/ as found through mFindResource ("" if not)
@@ -305,6 +330,7 @@ private:
     // Feedback.
     QLabel* mPlacingLabel = nullptr;
     QLabel* mProblemsLabel = nullptr;
+    QLabel* mWarningsLabel = nullptr;
     QLabel* mMessageLabel = nullptr;
 };
 

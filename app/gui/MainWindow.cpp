@@ -3,6 +3,7 @@
 #include "device/open/DeviceUri.h"
 #include "engine/loop/HapticSnapshot.h"
 #include "engine/scene/TissuePreset.h"
+#include "engine/scoring/TargetReachability.h"
 #include "app/common/DefaultScene.h"
 #include "app/gui/ExerciseController.h"
 #include "app/gui/FirstRun.h"
@@ -66,6 +67,16 @@ bool isMouseUri(const std::string& uri) {
     DeviceUri parsed;
     std::string ignored;
     return parseDeviceUri(uri, parsed, ignored) && parsed.kind == DeviceKind::Mouse;
+}
+
+/// A device that plays a script or a recording: nobody's hand is on it.
+bool isScriptedUri(const std::string& uri) {
+    DeviceUri parsed;
+    std::string ignored;
+    if (!parseDeviceUri(uri, parsed, ignored)) return false;
+    return parsed.kind == DeviceKind::SimPress || parsed.kind == DeviceKind::SimStroke ||
+           parsed.kind == DeviceKind::SimScan || parsed.kind == DeviceKind::SimSine ||
+           parsed.kind == DeviceKind::SimPath || parsed.kind == DeviceKind::Replay;
 }
 
 QLabel* addStatusField(QStatusBar* bar, const char* objectName, const QString& toolTip) {
@@ -539,6 +550,9 @@ QString MainWindow::restartSimulation() {
 }
 
 void MainWindow::setTouchMode(bool on) {
+    // Touch mode takes the left button back from the editor's placing (which then ends).
+    if (on && mEditor && mEditor->placing() != ExerciseEditorPanel::Placing::None)
+        mEditor->setPlacing(ExerciseEditorPanel::Placing::None);
     mViewport->setTouchMode(on);  // releases a touch in progress when turned off
     if (mTouchAction) mTouchAction->setChecked(on);
 }
@@ -547,10 +561,9 @@ void MainWindow::touchVertex(VertexId v) {
     const auto& mesh = mSession->drawnMesh();
     if (!mSession->touchAvailable() || !mesh || v >= mesh->vertexCount()) return;
     mTouchVertex = v;
-    // The tool's lowest point `depth` below the surface: a sphere's centre is its radius above that.
-    const float depthMm = float(touchDepthMm());
-    const float radiusMm = float(mSession->toolRadiusMm());
-    mSession->setTouchTarget(mesh->restPositionsMm()[v] + (radiusMm - depthMm) * mesh->restNormals()[v]);
+    // The editor's reachability check presses the same way (touchToolPositionMm).
+    mSession->setTouchTarget(touchToolPositionMm(mesh->restPositionsMm()[v], mesh->restNormals()[v],
+                                                 float(mSession->toolRadiusMm()), float(touchDepthMm())));
 }
 
 void MainWindow::releaseTouch() {
@@ -974,11 +987,16 @@ void MainWindow::createEditorDock() {
     });
 
     connect(mEditor, &ExerciseEditorPanel::placingChanged, this, [this](bool clickToPlace) {
+        // Touch mode would take the left clicks (docs/user-guide.md): it waits while the editor
+        // places points, and comes back after.
         if (clickToPlace) {
+            mTouchBeforePlacing = touchMode();
+            setTouchMode(false);
             mViewport->setPickHandler([this](VertexId v) { mEditor->vertexPicked(v); });
-            statusBar()->showMessage(tr("Click the mesh to place; drag still orbits; Esc stops placing"), 6000);
+            statusBar()->showMessage(tr("Click the tissue to place; drag orbits; Esc stops placing"), 6000);
         } else {
             mViewport->setPickHandler({});
+            setTouchMode(mTouchBeforePlacing && mSession->touchAvailable() && !mPlayback);
         }
     });
     connect(mEditor, &ExerciseEditorPanel::markersChanged, this, [this](const ExerciseMarkers&) { showEditorMarkers(); });
@@ -990,10 +1008,16 @@ void MainWindow::createEditorDock() {
         if (const QString error = loadMesh(path); !error.isEmpty()) QMessageBox::warning(this, tr("Cannot open mesh"), error);
     });
     connect(mEditor, &ExerciseEditorPanel::previewRequested, this, [this](const Exercise& exercise) {
+        // Trying it is pressing as a trainee would: with the mouse in touch mode, unless a device
+        // in someone's hand is connected (a script would press on its own).
+        if (isScriptedUri(mSession->deviceUri()))
+            if (const QString error = setDeviceUri(QLatin1String(HapticSession::kInteractiveDeviceUri)); !error.isEmpty())
+                statusBar()->showMessage(error, 8000);
         if (const QString error = mExercises->startPreview(exercise); !error.isEmpty()) {
             QMessageBox::warning(this, tr("Cannot try the exercise"), error);
             return;
         }
+        if (mSession->touchAvailable()) setTouchMode(true);
         mExerciseDock->show();
         mExerciseDock->raise();
     });

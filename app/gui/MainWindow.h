@@ -247,6 +247,7 @@ private:
     bool mPlayback = false;
     bool mPlayingBeforePlayback = true;  // the live session's state to go back to
     bool mTouchBeforePlayback = false;
+    bool mTouchBeforePlacing = false;  // touch mode waits while the exercise editor places points
     std::unique_ptr<HapticSnapshot> mPanelSnapshot;
     TraineePanel* mTraineePanel = nullptr;
     ExerciseEditorPanel* mEditor = nullptr;

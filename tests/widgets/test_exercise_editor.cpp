@@ -3,13 +3,21 @@
 // clicks (stored in the mesh file's numbering, drawn at the engine vertex's rest position); undo
 // and redo; problems naming the key; save writes resources-relative paths that load back the
 // same; the rubric; a mesh mismatch; Try it; malformed files; the modified flag and the discard
-// question.
+// question; targets whose window the mouse cannot reach are warned about, the first target gets a
+// window it can, and every shipped example can be done with the mouse; in the main window,
+// clicking places targets while touch mode is on, and Try it leaves touch mode on.
+#include "app/common/DefaultScene.h"
+#include "app/gui/ExerciseController.h"
+#include "app/gui/HapticSession.h"
+#include "app/gui/MainWindow.h"
 #include "widgets/ExerciseEditCommands.h"
 #include "widgets/ExerciseEditorPanel.h"
+#include "widgets/Viewport.h"
 
 #include "engine/core/TissueMesh.h"
 #include "engine/exercise/ExerciseFile.h"
 #include "engine/exercise/ExerciseGeometry.h"
+#include "engine/scoring/TargetReachability.h"
 
 #include <QAction>
 #include <QApplication>
@@ -23,6 +31,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMouseEvent>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSignalSpy>
@@ -179,8 +188,9 @@ TEST(ExerciseEditor, TargetsAddedByClickingAreStoredInFileNumberingAndUndoable) 
         ASSERT_TRUE(targets[i].at.vertex);
         EXPECT_EQ(*targets[i].at.vertex, drawn.mesh->originalIndex()[picks[i]]);
     }
-    EXPECT_EQ(targets[0].forceMinN, PressTarget{}.forceMinN);  // the defaults
-    EXPECT_EQ(targets[0].toleranceMm, PressTarget{}.toleranceMm);
+    EXPECT_EQ(targets[0].toleranceMm, PressTarget{}.toleranceMm);  // the defaults
+    EXPECT_EQ(targets[1].forceMinN, targets[0].forceMinN);  // the first target's window
+    EXPECT_EQ(targets[2].forceMaxN, targets[0].forceMaxN);
     EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::AddTarget);  // stays on for more
     EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
 
@@ -283,8 +293,10 @@ TEST(ExerciseEditor, ATargetWindowUpsideDownIsNamedByItsKey) {
     ASSERT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
 
     auto* table = child<QTableWidget>(editor.panel, "targetTable");
-    table->item(0, 3)->setData(Qt::EditRole, 0.5);  // Fmax 0.5 N below Fmin 1 N, as typed in the cell
-    EXPECT_EQ(editor.panel.exercise().pressTargets.targets[0].forceMaxN, 0.5);
+    const PressTarget placed = editor.panel.exercise().pressTargets.targets[0];
+    const double upsideDownN = 0.5 * placed.forceMinN;
+    table->item(0, 3)->setData(Qt::EditRole, upsideDownN);  // Fmax below Fmin, as typed in the cell
+    EXPECT_EQ(editor.panel.exercise().pressTargets.targets[0].forceMaxN, upsideDownN);
     EXPECT_TRUE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("press_targets.targets[0].force_max_n")))
         << editor.panel.problems().join('\n').toStdString();
     EXPECT_TRUE(table->item(0, 3)->data(Qt::BackgroundRole).isValid());  // the cell is marked
@@ -304,7 +316,7 @@ TEST(ExerciseEditor, ATargetWindowUpsideDownIsNamedByItsKey) {
 
     editor.panel.undoStack()->undo();
     EXPECT_TRUE(editor.panel.problems().isEmpty());
-    EXPECT_EQ(table->item(0, 3)->data(Qt::EditRole).toDouble(), 2.0);  // the form shows the undone value
+    EXPECT_EQ(table->item(0, 3)->data(Qt::EditRole).toDouble(), placed.forceMaxN);  // the form shows the undone value
 }
 
 TEST(ExerciseEditor, SaveWritesResourceRelativePathsThatLoadBackTheSame) {
@@ -760,4 +772,268 @@ TEST(ExerciseEditor, LevelOfDetailTargetsAreOptionalUndoableAndSaved) {
     EXPECT_FALSE(editor.panel.exercise().needs);
     EXPECT_FALSE(check->isChecked());
     EXPECT_FALSE(error->isEnabled());
+}
+
+// ---- Reachable with the mouse (docs/scoring.md, "Reachable targets") ------------------------------
+
+namespace {
+
+/// The stomach drawn, a new press-targets exercise on it with its default tissue, one target placed.
+struct StomachWithATarget {
+    DrawnMesh drawn = loadMesh(cli::kDefaultMesh);
+    Editor editor;
+    VertexId vertex = 1200;
+    StomachWithATarget() {
+        editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+        editor.panel.newExercise(ExerciseType::PressTargets);
+        editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+        editor.panel.vertexPicked(vertex);
+        editor.panel.setPlacing(ExerciseEditorPanel::Placing::None);
+    }
+    /// What the engine's check says of the exercise as it is now (the viewport's touch depths).
+    std::vector<TargetReach> check() const {
+        std::vector<std::string> errors;
+        const auto assets = loadExerciseAssets(editor.panel.exercise(), findInSource, errors);
+        EXPECT_TRUE(assets) << (errors.empty() ? "" : errors.front());
+        std::string error;
+        auto reach = assets ? checkTargetReachability(*assets, ExerciseEditorPanel::touchReach(), error)
+                            : std::vector<TargetReach>{};
+        EXPECT_EQ(error, "");
+        return reach;
+    }
+};
+
+}  // namespace
+
+TEST(ExerciseEditor, ANewExercisesFirstTargetCanBeReachedWithTheMouse) {
+    StomachWithATarget s;
+    ASSERT_EQ(s.editor.panel.exercise().tissuePresetPath, "presets/tissues/stomach_wall.json");  // the default tissue
+    ASSERT_EQ(s.editor.panel.exercise().pressTargets.targets.size(), 1u);
+    const PressTarget& t = s.editor.panel.exercise().pressTargets.targets[0];
+    std::printf("[ figures  ] the first target's window on the stomach wall: %.3g to %.3g N\n", t.forceMinN, t.forceMaxN);
+    const auto reach = s.check();
+    ASSERT_EQ(reach.size(), 1u);
+    EXPECT_TRUE(reach[0].reachable) << "the deepest touch gives " << reach[0].maxForceN << " N";
+    EXPECT_TRUE(s.editor.panel.warnings().isEmpty()) << s.editor.panel.warnings().join('\n').toStdString();
+    EXPECT_FALSE(child<QLabel>(s.editor.panel, "warningsLabel")->isVisibleTo(&s.editor.panel));
+}
+
+TEST(ExerciseEditor, AWindowTheMouseCannotReachIsWarnedAboutUntilItIsFixed) {
+    StomachWithATarget s;
+    auto* table = child<QTableWidget>(s.editor.panel, "targetTable");
+    // 1-2 N on the stomach wall: far more than its deepest touch gives.
+    table->item(0, 3)->setData(Qt::EditRole, 2.0);
+    table->item(0, 2)->setData(Qt::EditRole, 1.0);
+    const auto reach = s.check();
+    ASSERT_EQ(reach.size(), 1u);
+    ASSERT_FALSE(reach[0].reachable);
+    const QStringList warnings = s.editor.panel.warnings();
+    ASSERT_EQ(warnings.size(), 1);
+    EXPECT_TRUE(warnings[0].startsWith(QStringLiteral("press_targets.targets[0].force_min_n"))) << warnings[0].toStdString();
+    const QString most = QLocale().toString(reach[0].maxForceN, 'g', 3);
+    EXPECT_TRUE(warnings[0].contains(QStringLiteral("at most %1 N").arg(most))) << warnings[0].toStdString();
+    EXPECT_TRUE(warnings[0].contains(QStringLiteral("stiffer tissue"))) << warnings[0].toStdString();
+    auto* label = child<QLabel>(s.editor.panel, "warningsLabel");
+    EXPECT_TRUE(label->isVisibleTo(&s.editor.panel));
+    EXPECT_TRUE(label->text().contains(QStringLiteral("target 1")));
+    EXPECT_TRUE(table->item(0, 2)->data(Qt::BackgroundRole).isValid());  // the cell to change is marked
+    // A warning, not a problem: it is saved and tried (a device in the hand may press harder).
+    EXPECT_TRUE(s.editor.panel.problems().isEmpty()) << s.editor.panel.problems().join('\n').toStdString();
+    EXPECT_TRUE(s.editor.panel.previewAction()->isEnabled());
+
+    // A stiffer tissue reaches 1 N: the warning goes.
+    auto* preset = child<QComboBox>(s.editor.panel, "tissuePresetCombo");
+    preset->setEditText(QStringLiteral("presets/tissues/skin.json"));
+    emit preset->lineEdit()->editingFinished();
+    ASSERT_EQ(s.editor.panel.exercise().tissuePresetPath, "presets/tissues/skin.json");
+    EXPECT_TRUE(s.check()[0].reachable);
+    EXPECT_TRUE(s.editor.panel.warnings().isEmpty()) << s.editor.panel.warnings().join('\n').toStdString();
+    EXPECT_FALSE(label->isVisibleTo(&s.editor.panel));
+    EXPECT_FALSE(table->item(0, 2)->data(Qt::BackgroundRole).isValid());
+
+    // Back to the stomach wall (undo), then the window lowered as the warning says: it goes too.
+    s.editor.panel.undoStack()->undo();
+    ASSERT_EQ(s.editor.panel.warnings().size(), 1);
+    table->item(0, 2)->setData(Qt::EditRole, 0.5 * reach[0].maxForceN);
+    table->item(0, 3)->setData(Qt::EditRole, reach[0].maxForceN);
+    EXPECT_TRUE(s.check()[0].reachable);
+    EXPECT_TRUE(s.editor.panel.warnings().isEmpty()) << s.editor.panel.warnings().join('\n').toStdString();
+}
+
+TEST(ExerciseEditor, ATraceBandTheMouseCannotReachIsWarnedAboutAndANewOneCan) {
+    const DrawnMesh drawn = loadMesh(cli::kDefaultMesh);
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    editor.panel.newExercise(ExerciseType::Trace);
+    ASSERT_EQ(editor.panel.exercise().tissuePresetPath, "presets/tissues/stomach_wall.json");
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddPathPoint);
+    for (VertexId v : {VertexId(1200), VertexId(1210), VertexId(1220)}) editor.panel.vertexPicked(v);
+    ASSERT_EQ(editor.panel.exercise().trace.path.size(), 3u);
+    EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
+    // The first point set a band the stomach wall reaches; the later ones kept it.
+    EXPECT_LT(editor.panel.exercise().trace.forceMaxN, TraceDef{}.forceMinN);
+    EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
+
+    // The engine's default band, 0.5-1.5 N, is more than the stomach wall gives.
+    auto* low = child<QDoubleSpinBox>(editor.panel, "traceForceMinSpin");
+    auto* high = child<QDoubleSpinBox>(editor.panel, "traceForceMaxSpin");
+    high->setValue(TraceDef{}.forceMaxN);
+    low->setValue(TraceDef{}.forceMinN);
+    ASSERT_EQ(editor.panel.warnings().size(), 1);
+    EXPECT_TRUE(editor.panel.warnings()[0].startsWith(QStringLiteral("trace.force_min_n"))) << editor.panel.warnings()[0].toStdString();
+    EXPECT_TRUE(editor.panel.warnings()[0].contains(QStringLiteral("path point 1, 2, 3")))
+        << editor.panel.warnings()[0].toStdString();
+    EXPECT_TRUE(child<QLabel>(editor.panel, "warningsLabel")->isVisibleTo(&editor.panel));
+    // Muscle reaches it (the shipped trace's tissue).
+    auto* preset = child<QComboBox>(editor.panel, "tissuePresetCombo");
+    preset->setEditText(QStringLiteral("presets/tissues/muscle.json"));
+    emit preset->lineEdit()->editingFinished();
+    EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
+}
+
+TEST(ExerciseEditor, EveryShippedExampleCanBeDoneWithTheMouse) {
+    int targets = 0;
+    for (const char* name : {"press_targets", "find_lump", "trace"}) {
+        const std::string path = findInSource(std::string("exercises/") + name + ".json");
+        const auto loaded = loadExercise(path);
+        ASSERT_TRUE(loaded.exercise) << loaded.error();
+        std::vector<std::string> errors;
+        const auto assets = loadExerciseAssets(*loaded.exercise, findInSource, errors);
+        ASSERT_TRUE(assets) << name << ": " << (errors.empty() ? "" : errors.front());
+        std::string error;
+        const auto reach = checkTargetReachability(*assets, ExerciseEditorPanel::touchReach(), error);
+        ASSERT_EQ(error, "") << name;
+        for (std::size_t i = 0; i < reach.size(); ++i) {
+            ++targets;
+            EXPECT_TRUE(reach[i].reachable) << name << " target " << i + 1 << ": "
+                                            << reachAdvice(assets->geometry->targets()[i].def, reach[i]);
+        }
+        // The editor agrees.
+        Editor editor;
+        ASSERT_EQ(editor.panel.openExercise(QString::fromStdString(path)), QString());
+        EXPECT_TRUE(editor.panel.warnings().isEmpty()) << name << ": " << editor.panel.warnings().join('\n').toStdString();
+    }
+    EXPECT_GT(targets, 0);
+}
+
+// ---- In the main window: placing while touch mode is on, and Try it ---------------------------
+
+namespace {
+
+void sendMouse(QWidget& widget, QEvent::Type type, QPointF at, Qt::MouseButton button, Qt::MouseButtons buttons) {
+    QMouseEvent event(type, at, widget.mapToGlobal(at), button, buttons, Qt::NoModifier);
+    QApplication::sendEvent(&widget, &event);
+}
+
+/// A stepped window on the stomach with the mouse device (touch mode on, as at start), the editor
+/// on a new press-targets exercise.
+class EditorInTheWindow : public ::testing::Test {
+protected:
+    void SetUp() override {
+        window = std::make_unique<MainWindow>(RendererChoice::Software, LoopMode::Stepped);
+        ASSERT_EQ(window->loadMesh(QString::fromStdString(cli::findResource(cli::kDefaultMesh))), QString());
+        ASSERT_EQ(window->setDeviceUri(QLatin1String(HapticSession::kInteractiveDeviceUri)), QString());
+        window->setMode(MainWindow::Mode::Instructor);
+        window->resize(1100, 700);
+        window->show();
+        QApplication::processEvents();
+        window->advanceTicks(10);
+        editor = window->exerciseEditor();
+        editor->newExercise(ExerciseType::PressTargets);
+        viewport = window->viewport()->widget();
+        centre = QPointF(viewport->width() / 2.0, viewport->height() / 2.0);
+        const auto picked = window->viewport()->pickVertexAt(centre, viewport->size());
+        ASSERT_TRUE(picked) << "the mesh is framed in the middle of the viewport";
+        vertex = *picked;
+    }
+    void click() {
+        sendMouse(*viewport, QEvent::MouseButtonPress, centre, Qt::LeftButton, Qt::LeftButton);
+        sendMouse(*viewport, QEvent::MouseButtonRelease, centre, Qt::LeftButton, Qt::NoButton);
+    }
+    /// Adds a target at the middle of the viewport with Add by clicking, then Esc.
+    void addTargetByClicking() {
+        child<QToolButton>(*editor, "targetAddButton")->click();
+        click();
+        editor->findChild<QAction*>(QStringLiteral("stopPlacingAction"))->trigger();
+    }
+    double force() const { return double(glm::length(window->session().observed().forceN)); }
+
+    std::unique_ptr<MainWindow> window;
+    ExerciseEditorPanel* editor = nullptr;
+    QWidget* viewport = nullptr;
+    QPointF centre;
+    VertexId vertex = kNoVertex;
+};
+
+}  // namespace
+
+TEST_F(EditorInTheWindow, AddByClickingAddsATargetWhileTouchModeIsOn) {
+    ASSERT_TRUE(window->touchMode());
+    child<QToolButton>(*editor, "targetAddButton")->click();
+    ASSERT_EQ(editor->placing(), ExerciseEditorPanel::Placing::AddTarget);
+    // The editor says what to do.
+    auto* hint = child<QLabel>(*editor, "placingLabel");
+    EXPECT_TRUE(hint->isVisibleTo(editor));
+    EXPECT_EQ(hint->text(), QStringLiteral("Click the tissue to place a target; Esc to stop."));
+
+    click();
+    ASSERT_EQ(editor->exercise().pressTargets.targets.size(), 1u);
+    EXPECT_EQ(editor->exercise().pressTargets.targets[0].at.vertex.value_or(~0u),
+              window->session().drawnMesh()->originalIndex().empty() ? vertex
+                                                                     : window->session().drawnMesh()->originalIndex()[vertex]);
+    // The click placed; it did not press the tissue.
+    EXPECT_FALSE(window->viewport()->touching());
+    window->advanceTicks(200);
+    EXPECT_FALSE(window->session().observed().contact);
+    click();
+    EXPECT_EQ(editor->exercise().pressTargets.targets.size(), 2u);  // stays on for more
+
+    // Esc stops placing, and touch mode is back: a press presses again.
+    editor->findChild<QAction*>(QStringLiteral("stopPlacingAction"))->trigger();
+    EXPECT_EQ(editor->placing(), ExerciseEditorPanel::Placing::None);
+    EXPECT_TRUE(window->touchMode());
+    EXPECT_TRUE(window->touchModeAction()->isChecked());
+    sendMouse(*viewport, QEvent::MouseButtonPress, centre, Qt::LeftButton, Qt::LeftButton);
+    window->advanceTicks(300);
+    EXPECT_TRUE(window->session().observed().contact);
+    EXPECT_GT(force(), 0.0);
+    sendMouse(*viewport, QEvent::MouseButtonRelease, centre, Qt::LeftButton, Qt::NoButton);
+    EXPECT_EQ(editor->exercise().pressTargets.targets.size(), 2u);
+
+    // Turning touch mode on (T) while placing ends the placing: the click is the tool's.
+    child<QToolButton>(*editor, "targetAddButton")->click();
+    EXPECT_FALSE(window->touchMode());
+    window->touchModeAction()->trigger();
+    EXPECT_TRUE(window->touchMode());
+    EXPECT_EQ(editor->placing(), ExerciseEditorPanel::Placing::None);
+}
+
+TEST_F(EditorInTheWindow, TryItLeavesTouchModeOnSoThatPressingPresses) {
+    addTargetByClicking();
+    ASSERT_EQ(editor->exercise().pressTargets.targets.size(), 1u);
+    window->touchModeAction()->trigger();  // the instructor had turned touch mode off
+    ASSERT_FALSE(window->touchMode());
+
+    child<QPushButton>(*editor, "previewButton")->click();
+    ASSERT_TRUE(window->exercises().running());
+    EXPECT_TRUE(window->touchMode());
+    EXPECT_TRUE(window->touchModeAction()->isChecked());
+    EXPECT_EQ(window->session().deviceUri(), HapticSession::kInteractiveDeviceUri);
+    window->advanceTicks(200);
+    sendMouse(*viewport, QEvent::MouseButtonPress, centre, Qt::LeftButton, Qt::LeftButton);
+    window->advanceTicks(300);
+    EXPECT_TRUE(window->session().observed().contact);
+    EXPECT_GT(force(), 0.0);
+    sendMouse(*viewport, QEvent::MouseButtonRelease, centre, Qt::LeftButton, Qt::NoButton);
+}
+
+TEST_F(EditorInTheWindow, TryItWithAScriptedDeviceHandsTheToolToTheMouse) {
+    addTargetByClicking();
+    ASSERT_EQ(window->setDeviceUri(QStringLiteral("sim:stroke")), QString());
+    ASSERT_FALSE(window->touchMode());
+    child<QPushButton>(*editor, "previewButton")->click();
+    ASSERT_TRUE(window->exercises().running());
+    EXPECT_EQ(window->session().deviceUri(), HapticSession::kInteractiveDeviceUri);
+    EXPECT_TRUE(window->session().touchAvailable());
+    EXPECT_TRUE(window->touchMode());
 }

@@ -1,0 +1,208 @@
+#include "engine/scoring/TargetReachability.h"
+
+#include "device/MouseDevice.h"
+#include "engine/loop/HapticLoop.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace palpate {
+
+namespace {
+
+/// A depth is held until |F| changes by less than this from one tick to the next, kSettledTicks in
+/// a row: well below what a window of the editor (3 decimals) can tell.
+constexpr double kSettledForceChangeN = 1e-5;
+constexpr int kSettledTicks = 10;
+/// At most this long per depth: a tissue that still creeps then is judged where it is.
+constexpr double kMaxSettleS = 0.5;
+/// The tool's height above the surface before and between presses (no contact).
+constexpr float kLiftMm = 20.0f;
+
+std::string newtons(double forceN) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g N", forceN);
+    return text;
+}
+
+std::string millimetres(double mm) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g mm", mm);
+    return text;
+}
+
+}  // namespace
+
+std::vector<double> TouchReach::depthsMm() const {
+    std::vector<double> out;
+    if (!(maxDepthMm >= 0.0) || !std::isfinite(maxDepthMm)) return out;
+    if (depthStepMm > 0.0 && std::isfinite(depthStepMm))
+        for (int k = 0; double(k) * depthStepMm < maxDepthMm - 1e-9; ++k) out.push_back(double(k) * depthStepMm);
+    out.push_back(maxDepthMm);
+    return out;
+}
+
+glm::vec3 touchToolPositionMm(const glm::vec3& restMm, const glm::vec3& normal, float toolRadiusMm, float depthMm) {
+    return restMm + (toolRadiusMm - depthMm) * normal;
+}
+
+std::unique_ptr<TouchForceProbe> TouchForceProbe::create(const TissueMesh& mesh, const TissuePreset& preset,
+                                                         const ExerciseGeometry* physics, const TouchReach& touch,
+                                                         std::string& error) {
+    std::unique_ptr<TouchForceProbe> probe(new TouchForceProbe);
+    probe->mTouch = touch;
+    probe->mDepthsMm = touch.depthsMm();
+    if (probe->mDepthsMm.empty()) {
+        error = "the touch depth must be a number >= 0 mm";
+        return nullptr;
+    }
+    std::unique_ptr<HapticScene> scene;
+    try {
+        scene = HapticScene::create(mesh, preset);
+    } catch (const std::exception& e) {
+        error = std::string("the scene cannot be built: ") + e.what();
+        return nullptr;
+    }
+    if (physics && !(error = applyExercisePhysics(*physics, *scene)).empty()) return nullptr;
+    probe->mRestMm = scene->mesh().restPositionsMm();
+    probe->mNormals = scene->mesh().restNormals();
+    probe->mToolRadiusMm = scene->model().toolRadiusMm();
+    // The device touch mode steers, with its spec: the safety filter shapes (and caps) the force as
+    // it does in the window.
+    auto mouse = std::make_unique<MouseDevice>();
+    mouse->open();
+    probe->mMouse = mouse.get();
+    HapticLoopDef def;
+    def.rateHz = preset.hapticRateHz;
+    try {
+        probe->mLoop = std::make_unique<HapticLoop>(def, std::move(scene), std::move(mouse));
+    } catch (const std::exception& e) {
+        error = std::string("the haptic loop cannot be made: ") + e.what();
+        return nullptr;
+    }
+    probe->mMaxSettleTicks = std::max(kSettledTicks, int(std::ceil(kMaxSettleS * def.rateHz)));
+    // Off the surface until the safety filter has armed and ramped in (as a fresh device does).
+    if (!probe->mRestMm.empty()) probe->mMouse->setTargetMm(probe->mRestMm[0] + kLiftMm * probe->mNormals[0]);
+    const int armTicks = int(std::ceil((def.safety.rampTimeS + 0.01) * def.rateHz));
+    for (int i = 0; i < armTicks; ++i) probe->mLoop->stepOnce();
+    return probe;
+}
+
+TouchForceProbe::~TouchForceProbe() = default;
+
+double TouchForceProbe::settle() {
+    double last = -1.0;
+    int quiet = 0;
+    for (int i = 0; i < mMaxSettleTicks; ++i) {
+        mLoop->stepOnce();
+        const double f = double(glm::length(mMouse->lastForceN()));
+        quiet = std::abs(f - last) < kSettledForceChangeN ? quiet + 1 : 0;
+        last = f;
+        if (quiet >= kSettledTicks) break;
+    }
+    return last;
+}
+
+std::vector<double> TouchForceProbe::forcesN(VertexId v) {
+    if (v >= mRestMm.size() || v >= mNormals.size()) return {};
+    // From rest, above the vertex, then in as the wheel presses: one step at a time.
+    mLoop->scene().model().reset();
+    mMouse->setTargetMm(touchToolPositionMm(mRestMm[v], mNormals[v], mToolRadiusMm, -kLiftMm));
+    settle();
+    std::vector<double> out;
+    out.reserve(mDepthsMm.size());
+    for (const double depthMm : mDepthsMm) {
+        mMouse->setTargetMm(touchToolPositionMm(mRestMm[v], mNormals[v], mToolRadiusMm, float(depthMm)));
+        out.push_back(settle());
+    }
+    mMouse->setTargetMm(touchToolPositionMm(mRestMm[v], mNormals[v], mToolRadiusMm, -kLiftMm));
+    settle();
+    return out;
+}
+
+TargetReach judgeTarget(const PressTarget& target, const std::vector<double>& forcesN, const TouchReach& touch) {
+    TargetReach r;
+    const std::vector<double> depths = touch.depthsMm();
+    const std::size_t n = std::min(depths.size(), forcesN.size());
+    if (n == 0) return r;
+    r.maxDepthMm = depths[n - 1];
+    for (std::size_t i = 0; i < n; ++i) {
+        r.maxForceN = std::max(r.maxForceN, forcesN[i]);
+        if (!r.depthMm && forcesN[i] >= target.forceMinN && forcesN[i] <= target.forceMaxN) r.depthMm = depths[i];
+    }
+    r.reachable = r.depthMm.has_value();
+    if (!r.reachable && r.maxForceN > target.forceMaxN)
+        // Reached and passed: the window lies between two neighbouring depths' forces.
+        for (std::size_t i = 0; i + 1 < n; ++i)
+            if (forcesN[i] < target.forceMinN && forcesN[i + 1] > target.forceMaxN) {
+                r.belowForceN = forcesN[i];
+                r.aboveForceN = forcesN[i + 1];
+                r.belowDepthMm = depths[i];
+                r.aboveDepthMm = depths[i + 1];
+                break;
+            }
+    return r;
+}
+
+namespace {
+
+/// The force at `depthMm`, linear between the probed depths.
+double forceAt(const std::vector<double>& forcesN, const std::vector<double>& depthsMm, double depthMm) {
+    const std::size_t n = std::min(forcesN.size(), depthsMm.size());
+    if (n == 0) return 0.0;
+    if (depthMm <= depthsMm[0]) return forcesN[0];
+    for (std::size_t i = 1; i < n; ++i)
+        if (depthMm <= depthsMm[i]) {
+            const double t = (depthMm - depthsMm[i - 1]) / (depthsMm[i] - depthsMm[i - 1]);
+            return forcesN[i - 1] + t * (forcesN[i] - forcesN[i - 1]);
+        }
+    return forcesN[n - 1];
+}
+
+/// `value` rounded to two significant digits, up or down.
+double roundTwoDigits(double value, bool up) {
+    if (!(value > 0.0)) return value;
+    const double unit = std::pow(10.0, std::floor(std::log10(value)) - 1.0);
+    return (up ? std::ceil(value / unit - 1e-9) : std::floor(value / unit + 1e-9)) * unit;
+}
+
+}  // namespace
+
+std::optional<ForceWindow> comfortableWindow(const std::vector<double>& forcesN, const TouchReach& touch) {
+    const std::vector<double> depths = touch.depthsMm();
+    const double lo = forceAt(forcesN, depths, touch.maxDepthMm / 3.0);
+    const double hi = forceAt(forcesN, depths, 2.0 * touch.maxDepthMm / 3.0);
+    // Below a millinewton nothing is felt, and the editor's three decimals cannot hold it.
+    if (!(lo >= 1e-3) || !(hi > lo)) return std::nullopt;
+    ForceWindow w{roundTwoDigits(lo, true), roundTwoDigits(hi, false)};
+    if (!(w.maxN > w.minN)) w = ForceWindow{lo, hi};
+    return w;
+}
+
+std::string reachAdvice(const PressTarget& target, const TargetReach& reach) {
+    if (reach.reachable) return {};
+    const std::string window = newtons(target.forceMinN) + " to " + newtons(target.forceMaxN);
+    if (reach.belowForceN)
+        return "the window " + window + " lies between the force at " + millimetres(*reach.belowDepthMm) + " (" +
+               newtons(*reach.belowForceN) + ") and at " + millimetres(*reach.aboveDepthMm) + " (" +
+               newtons(*reach.aboveForceN) + "): widen it to take in one of them";
+    return "the window " + window + " cannot be reached with the mouse: pressing " + millimetres(reach.maxDepthMm) +
+           " deep (the deepest) gives " + newtons(reach.maxForceN) + "; lower force_min_n to at most " +
+           newtons(reach.maxForceN) + ", or choose a stiffer tissue preset";
+}
+
+std::vector<TargetReach> checkTargetReachability(const ExerciseAssets& assets, const TouchReach& touch,
+                                                 std::string& error) {
+    std::vector<TargetReach> out;
+    if (!assets.mesh || !assets.geometry || assets.geometry->targets().empty()) return out;
+    auto probe = TouchForceProbe::create(*assets.mesh, assets.preset, assets.geometry.get(), touch, error);
+    if (!probe) return out;
+    for (const ResolvedTarget& t : assets.geometry->targets())
+        out.push_back(judgeTarget(t.def, probe->forcesN(t.vertex), touch));
+    return out;
+}
+
+}  // namespace palpate
