@@ -103,6 +103,7 @@ TraineePanel::TraineePanel(QWidget* parent) : QWidget(parent) {
     connect(mMark, &QPushButton::clicked, this, &TraineePanel::markRequested);
     connect(mTrainees, &QComboBox::currentIndexChanged, this, [this] { emit traineeChanged(traineeId()); });
     connect(mExercises, &QComboBox::currentIndexChanged, this, [this] { emit exerciseChanged(exercisePath()); });
+    connect(mExercises, &QComboBox::activated, this, &TraineePanel::exercisePicked);
     setState(State::Idle);
 }
 
@@ -143,6 +144,31 @@ void TraineePanel::addExercise(const QString& title, const QString& path) {
     }
     if (index == mExercises->currentIndex()) emit exerciseChanged(path);
     else mExercises->setCurrentIndex(index);
+}
+
+void TraineePanel::showRunningExercise(const QString& title, const QString& path) {
+    if (!path.isEmpty()) {
+        addExercise(title, path);
+        return;
+    }
+    // One entry stands for whatever unsaved exercise is being tried: it has no file to start.
+    const QString text = tr("%1 (preview, not saved)").arg(title);
+    int index = mExercises->findData(QString());
+    const QSignalBlocker block(mExercises);
+    if (index < 0) {
+        mExercises->addItem(text, QString());
+        index = mExercises->count() - 1;
+    }
+    mExercises->setItemText(index, text);
+    mExercises->setCurrentIndex(index);
+}
+
+QString TraineePanel::exerciseTitle() const { return mExercises->currentText(); }
+
+QList<QPair<QString, QString>> TraineePanel::exercises() const {
+    QList<QPair<QString, QString>> out;
+    for (int i = 0; i < mExercises->count(); ++i) out.append({mExercises->itemText(i), mExercises->itemData(i).toString()});
+    return out;
 }
 
 QString TraineePanel::exercisePath() const { return mExercises->currentIndex() < 0 ? QString() : mExercises->currentData().toString(); }

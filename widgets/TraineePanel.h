@@ -39,7 +39,14 @@ public:
     void setExercises(const QList<QPair<QString, QString>>& exercises, const QString& select = {});
     /// Adds (or selects, if listed) one exercise file.
     void addExercise(const QString& title, const QString& path);
+    /// Shows the exercise that runs in the combo: its file's entry (added if missing), or, for an
+    /// exercise that has no file (the editor's unsaved preview), one entry marked as a preview.
+    void showRunningExercise(const QString& title, const QString& path);
     QString exercisePath() const;
+    /// The combo's title of the selected entry.
+    QString exerciseTitle() const;
+    /// The listed exercises (title, path), in the combo's order.
+    QList<QPair<QString, QString>> exercises() const;
     void setExerciseDescription(const QString& text);
 
     void setState(State state);
@@ -65,6 +72,8 @@ signals:
     void markRequested();
     void traineeChanged(qint64 traineeId);
     void exerciseChanged(const QString& path);
+    /// The trainee chose an exercise in the combo (not a programmatic selection).
+    void exercisePicked();
 
 private:
     State mState = State::Idle;

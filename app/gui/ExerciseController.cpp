@@ -1,6 +1,7 @@
 #include "app/gui/ExerciseController.h"
 
 #include "app/common/DefaultScene.h"
+#include "engine/exercise/ExerciseFile.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
 #include "widgets/HistoryPanel.h"
@@ -50,6 +51,7 @@ ExerciseController::ExerciseController(HapticSession& session, Viewport& viewpor
     connect(&mPanel, &TraineePanel::stopRequested, this, [this] { stop(); });
     connect(&mPanel, &TraineePanel::markRequested, this, [this] { mark(); });
     connect(&mPanel, &TraineePanel::exerciseChanged, this, [this](const QString& path) { showExerciseDescription(path); });
+    connect(&mPanel, &TraineePanel::exercisePicked, this, [this] { mExercisePicked = true; });
     connect(&mPanel, &TraineePanel::traineeChanged, this, [this](qint64 id) {
         if (id >= 0) mHistory.setTrainee(id);
     });
@@ -109,7 +111,22 @@ QString ExerciseController::addExerciseFile(const QString& path) {
     const auto loaded = loadExercise(path.toStdString());
     if (!loaded.exercise) return joined(loaded.errors);
     mPanel.addExercise(QString::fromStdString(loaded.exercise->name), QFileInfo(path).absoluteFilePath());
+    mExercisePicked = true;
     return {};
+}
+
+void ExerciseController::followMesh(const QString& meshPath) {
+    if (running() || mExercisePicked || meshPath.isEmpty()) return;
+    const QString shown = QFileInfo(meshPath).canonicalFilePath();
+    for (const auto& [title, path] : mPanel.exercises()) {
+        const auto loaded = loadExercise(path.toStdString());
+        if (!loaded.exercise) continue;
+        const std::string mesh = resolveExercisePath(*loaded.exercise, loaded.exercise->meshPath, cli::findResource);
+        if (!mesh.empty() && QFileInfo(QString::fromStdString(mesh)).canonicalFilePath() == shown) {
+            if (path != mPanel.exercisePath()) mPanel.addExercise(title, path);
+            return;
+        }
+    }
 }
 
 void ExerciseController::showExerciseDescription(const QString& path) {
@@ -155,6 +172,10 @@ QString ExerciseController::begin(const Exercise& exercise, bool preview) {
     mPanel.setState(TraineePanel::State::Starting);
     mPanel.setMessage(preview ? tr("Preview of \"%1\": not stored.").arg(QString::fromStdString(exercise.name)) : QString());
     mPanel.setExerciseDescription(QString::fromStdString(exercise.description));
+    // The combo names what runs (a preview from the welcome page or the editor too).
+    mPanel.showRunningExercise(QString::fromStdString(exercise.name),
+                               exercise.sourcePath.empty() ? QString()
+                                                           : QFileInfo(QString::fromStdString(exercise.sourcePath)).absoluteFilePath());
     updateMarkers();
     emit runningChanged(true);
     poll();  // the first scene of a new loop is the loop's at once

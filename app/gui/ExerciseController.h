@@ -51,6 +51,10 @@ public:
     void listExampleExercises();
     /// Adds an exercise file to the dock's list and selects it. "" or the errors naming the keys.
     QString addExerciseFile(const QString& path);
+    /// The window shows `meshPath` now: while nothing runs and the trainee has not picked an
+    /// exercise themselves, the dock selects the first listed exercise on that mesh (its text then
+    /// speaks of what is on screen).
+    void followMesh(const QString& meshPath);
 
     /// Starts the exercise selected in the dock for the selected trainee. "" or why not.
     QString start();
@@ -116,6 +120,7 @@ private:
     QString mTraineeName;
     std::optional<ScoreReport> mLastReport;
     qint64 mLastResultId = -1;
+    bool mExercisePicked = false;  // the trainee chose an exercise (the dock no longer follows the mesh)
     int mLastMarkers = -1;  // guidance state the markers were built for (target index; -2: finished)
 };
 

@@ -619,6 +619,7 @@ void MainWindow::showDrawnMesh() {
     if (!mExercises->running()) {
         mViewport->setExerciseMarkers({});
         showEditorMarkers();
+        mExercises->followMesh(QString::fromStdString(mSession->drawnPath()));
     }
     updateChartsConfiguration();  // the highlight follows the mesh size
     setWindowTitle(QStringLiteral("Palpate - %1").arg(QFileInfo(QString::fromStdString(mSession->drawnPath())).fileName()));
@@ -1139,9 +1140,11 @@ void MainWindow::setMode(Mode mode) {
     mChartsDock->setVisible(instructor);
     mEditorDock->setVisible(instructor);
     mLodDock->setVisible(instructor);
-    mExerciseDock->setVisible(true);
-    mHistoryDock->setVisible(true);
+    // The Exercise dock is the trainee's; an instructor sees it while trying an exercise (Try it).
+    mExerciseDock->setVisible(!instructor || mExercises->running());
+    mHistoryDock->setVisible(!instructor);
     if (!instructor) mExerciseDock->raise();
+    else mParameterDock->raise();  // the instructor's first tool
     if (mInstructorAction) mInstructorAction->setChecked(instructor);
     if (mTraineeAction) mTraineeAction->setChecked(!instructor);
 }

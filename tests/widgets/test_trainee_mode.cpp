@@ -18,6 +18,7 @@
 #include "widgets/RecorderPanel.h"
 #include "widgets/ScoreCard.h"
 #include "widgets/TraineePanel.h"
+#include "engine/exercise/ExerciseFile.h"
 #include "widgets/DevicePanel.h"
 #include "widgets/Viewport.h"
 
@@ -322,6 +323,93 @@ TEST(TraineeMode, ErrorsAreReportedNotCrashedOn) {
     // Stop and mark with nothing running do nothing.
     window->exercises().stop();
     EXPECT_FALSE(window->exercises().mark());
+}
+
+namespace {
+
+/// The mesh an exercise file names, as a canonical path.
+QString exerciseMesh(const QString& exercisePath) {
+    const auto loaded = loadExercise(exercisePath.toStdString());
+    if (!loaded.exercise) return {};
+    return QFileInfo(QString::fromStdString(
+                         resolveExercisePath(*loaded.exercise, loaded.exercise->meshPath, cli::findResource)))
+        .canonicalFilePath();
+}
+
+}  // namespace
+
+// The Exercise dock offers an exercise on the mesh on screen (its text speaks of what is shown)
+// until the trainee picks one; then it keeps theirs.
+TEST(ExerciseDock, SelectsAnExerciseOnTheShownMeshUntilTheTraineePicks) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+    TraineePanel* panel = window->traineePanel();
+    const QString stomach = QFileInfo(resource("meshes/stomach_3970.off")).canonicalFilePath();
+    const QString sphere = QFileInfo(resource("meshes/sphere_1442.off")).canonicalFilePath();
+    ASSERT_EQ(window->loadMesh(stomach), QString());
+    window->advanceTicks(2);
+    EXPECT_EQ(exerciseMesh(panel->exercisePath()), stomach) << panel->exercisePath().toStdString();
+    ASSERT_EQ(window->loadMesh(sphere), QString());
+    window->advanceTicks(2);
+    EXPECT_EQ(exerciseMesh(panel->exercisePath()), sphere) << panel->exercisePath().toStdString();
+    // The trainee picks one on the stomach; loading the sphere again keeps it.
+    auto* combo = panel->findChildren<QComboBox*>().at(1);
+    int stomachIndex = -1;
+    for (int i = 0; i < combo->count(); ++i)
+        if (exerciseMesh(combo->itemData(i).toString()) == stomach) stomachIndex = i;
+    ASSERT_GE(stomachIndex, 0);
+    combo->setCurrentIndex(stomachIndex);
+    emit combo->activated(stomachIndex);
+    ASSERT_EQ(window->loadMesh(stomach), QString());
+    window->advanceTicks(2);
+    ASSERT_EQ(window->loadMesh(sphere), QString());
+    window->advanceTicks(2);
+    EXPECT_EQ(exerciseMesh(panel->exercisePath()), stomach);
+}
+
+// A preview (the welcome page's example, the editor's Try it) shows its own exercise in the combo
+// above the score card, not whichever was selected before.
+TEST(ExerciseDock, APreviewShowsTheExerciseThatRuns) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+    TraineePanel* panel = window->traineePanel();
+    ASSERT_EQ(window->loadMesh(resource("meshes/sphere_1442.off")), QString());
+    window->advanceTicks(2);
+    ASSERT_TRUE(panel->exercisePath().endsWith(QStringLiteral("find_lump.json"))) << panel->exercisePath().toStdString();
+    const QString pressTargets = QFileInfo(resource("exercises/press_targets.json")).absoluteFilePath();
+    ASSERT_EQ(window->runExercise(pressTargets, QString()), QString());
+    EXPECT_EQ(panel->exercisePath(), pressTargets);
+    window->exercises().stop();
+    // An exercise with no file (the editor's, unsaved) is shown as such.
+    auto loaded = loadExercise(pressTargets.toStdString());
+    ASSERT_TRUE(loaded.exercise);
+    Exercise unsaved = *loaded.exercise;
+    unsaved.name = "My new exercise";
+    unsaved.meshPath = resolveExercisePath(unsaved, unsaved.meshPath, cli::findResource);
+    unsaved.tissuePresetPath = resolveExercisePath(unsaved, unsaved.tissuePresetPath, cli::findResource);
+    unsaved.sourcePath.clear();
+    ASSERT_EQ(window->exercises().startPreview(unsaved), QString());
+    EXPECT_TRUE(panel->exerciseTitle().contains(QStringLiteral("My new exercise"))) << panel->exerciseTitle().toStdString();
+    EXPECT_TRUE(panel->exercisePath().isEmpty());
+}
+
+// Instructor mode is the instructor's tools: the trainee's Exercise and History docks are not shown
+// (the Exercise dock comes while an exercise is tried); trainee mode shows them.
+TEST(InstructorMode, HidesTheTraineesDocks) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+    auto* exerciseDock = window->findChild<QDockWidget*>(QStringLiteral("exerciseDock"));
+    auto* historyDock = window->findChild<QDockWidget*>(QStringLiteral("historyDock"));
+    ASSERT_TRUE(exerciseDock && historyDock);
+    window->setMode(MainWindow::Mode::Instructor);
+    EXPECT_TRUE(exerciseDock->isHidden());
+    EXPECT_TRUE(historyDock->isHidden());
+    window->setMode(MainWindow::Mode::Trainee);
+    EXPECT_FALSE(exerciseDock->isHidden());
+    EXPECT_FALSE(historyDock->isHidden());
 }
 
 TEST(InstructorMode, ClickingTheMeshPlacesTargetsTheViewportShowsAndUndoRemoves) {
