@@ -196,6 +196,7 @@ void MainWindow::createDocks() {
 
 QString MainWindow::applyPreset(const TissuePreset& preset) {
     const QString error = QString::fromStdString(mSession->applyPreset(preset));
+    if (error.isEmpty()) mParameterPanel->showApplied(mSession->preset());  // clears its "Not applied" marks
     if (error.isEmpty()) updateChartsConfiguration();
     if (error.isEmpty() && mLodPanel) updateLodScene();
     return error;
