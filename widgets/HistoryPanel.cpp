@@ -33,6 +33,7 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
 
     mChart = new QChart();
     mChart->legend()->setAlignment(Qt::AlignBottom);
+    mChart->legend()->setShowToolTips(true);  // an entry elided in a narrow dock shows its name on hover
     mChart->setMargins(QMargins(4, 4, 4, 4));
     mChartView = new QChartView(mChart, this);
     mChartView->setRenderHint(QPainter::Antialiasing);
@@ -40,6 +41,7 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(mChartView, 2);
 
     mSummary = new QLabel(this);
+    mSummary->setWordWrap(true);
     layout->addWidget(mSummary);
     mTable = new QTableWidget(0, 4, this);
     mTable->setHorizontalHeaderLabels({tr("When"), tr("Exercise"), tr("Score"), tr("Time (s)")});
@@ -129,15 +131,7 @@ void HistoryPanel::rebuild() {
         }
     sessionAxis->setTickInterval(step);
     sessionAxis->setMinorTickCount(0);
-    if (sessions > 0) {
-        const QString format = QStringLiteral("yyyy-MM-dd HH:mm");  // 24-hour clock, with the date
-        const QString first = mResults.front().startedUtc.toLocalTime().toString(format);
-        const QString last = mResults.back().startedUtc.toLocalTime().toString(format);
-        sessionAxis->setTitleText(sessions == 1 ? tr("Session (%1)").arg(first)
-                                                : tr("Session (%1 to %2)").arg(first, last));
-    } else {
-        sessionAxis->setTitleText(tr("Session"));
-    }
+    sessionAxis->setTitleText(tr("Session"));
     auto* scoreAxis = new QValueAxis();
     scoreAxis->setRange(0.0, 100.0);
     scoreAxis->setTitleText(tr("Score"));
@@ -159,7 +153,7 @@ void HistoryPanel::rebuild() {
         const double x = i + 1;
         if (!isScored(r.outcome)) {
             auto* mark = new QLineSeries();
-            mark->setName(tr("Stopped (not scored)"));
+            mark->setName(tr("Stopped"));
             QPen pen(QColor(150, 150, 150));
             pen.setStyle(Qt::DashLine);
             pen.setWidthF(1.5);
@@ -225,10 +219,20 @@ void HistoryPanel::rebuild() {
         for (const auto& r : mResults)
             if (isScored(r.outcome)) best = std::max(best, r.score), sum += r.score, ++scored;
         const int stopped = sessions - scored;
-        QString text = scored > 0 ? tr("%n session(s); best %1, mean %2", "", sessions)
+        // When: the first and the last session, on a 24-hour clock (the day once when it is one day).
+        const QDateTime first = mResults.front().startedUtc.toLocalTime();
+        const QDateTime last = mResults.back().startedUtc.toLocalTime();
+        const QString day = QStringLiteral("yyyy-MM-dd"), time = QStringLiteral("HH:mm");
+        const QString when = sessions == 1 ? first.toString(day + QLatin1Char(' ') + time)
+                             : first.date() == last.date()
+                                 ? tr("%1, %2 to %3").arg(first.toString(day), first.toString(time), last.toString(time))
+                                 : tr("%1 to %2").arg(first.toString(day + QLatin1Char(' ') + time),
+                                                      last.toString(day + QLatin1Char(' ') + time));
+        QString text = scored > 0 ? tr("%n session(s) (%1); best %2, mean %3", "", sessions)
+                                        .arg(when)
                                         .arg(best, 0, 'f', 0)
                                         .arg(sum / double(scored), 0, 'f', 0)
-                                  : tr("%n session(s); none scored", "", sessions);
+                                  : tr("%n session(s) (%1); none scored", "", sessions).arg(when);
         if (stopped > 0) text += QLatin1Char(' ') + tr("(%n stopped, not counted)", "", stopped);
         mSummary->setText(text);
     }

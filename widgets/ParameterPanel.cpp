@@ -241,7 +241,8 @@ QPushButton#applyButton[pending="true"] { font-weight: bold; }
 QAbstractSpinBox[invalid="true"] { border: 2px solid #d32f2f; border-radius: 3px; background-color: #fff0f0; }
 QAbstractSpinBox[outsidePaperRange="true"] { border: 2px solid #e69500; border-radius: 3px; background-color: #fff8e6; }
 QAbstractSpinBox[invalid="true"]::up-button, QAbstractSpinBox[invalid="true"]::down-button,
-QAbstractSpinBox[outsidePaperRange="true"]::up-button, QAbstractSpinBox[outsidePaperRange="true"]::down-button { width: 16px; }
+QAbstractSpinBox[outsidePaperRange="true"]::up-button, QAbstractSpinBox[outsidePaperRange="true"]::down-button,
+QAbstractSpinBox[modified="true"]::up-button, QAbstractSpinBox[modified="true"]::down-button { width: 16px; }
 QLabel#messageLabel { color: #c62828; }
 QLabel#noteLabel { color: #8a5a00; }
 QLabel#stabilityLabel[nearLimit="true"] { color: #8a5a00; background-color: #fff3d6; border: 1px solid #e69500; border-radius: 3px; padding: 2px; }
