@@ -1,6 +1,7 @@
 #include "app/gui/MainWindow.h"
 
 #include "device/open/DeviceUri.h"
+#include "device/SafetyFilter.h"
 #include "engine/loop/HapticSnapshot.h"
 #include "engine/scene/TissuePreset.h"
 #include "app/common/DefaultScene.h"
@@ -680,7 +681,9 @@ void MainWindow::showStatus() {
                               .arg(QString::fromStdString(mSession->deviceUri()),
                                    observed ? QString::fromLatin1(deviceStateName(o.deviceState)) : tr("not started")));
     mContactLabel->setText(tr("contact: %1").arg(o.contact ? tr("yes") : tr("no")));
-    mForceLabel->setText(tr("force %1").arg(formatForce(double(glm::length(o.forceN)))));  // N or gf (Preferences)
+    // N or gf (Preferences); clamped to the device's maximum, the force felt is not the model's (docs/devices.md).
+    mForceLabel->setText((o.safetyFlags & kSafetyClamped ? tr("force %1 (clipped at device max)") : tr("force %1"))
+                             .arg(formatForce(double(glm::length(o.forceN)))));
 }
 
 QString MainWindow::statusText() const {

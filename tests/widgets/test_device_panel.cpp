@@ -9,6 +9,7 @@
 #include "device/SafetyFilter.h"
 #include "engine/loop/HapticSnapshot.h"
 #include "widgets/DevicePanel.h"
+#include "widgets/ParameterPanel.h"
 
 #include <QDir>
 #include <QImage>
@@ -430,6 +431,30 @@ private:
 };
 
 }  // namespace
+
+// End to end: a tissue stiff enough that the stroke's press asks more than sim:stroke's 3.3 N; the
+// safety filter clamps it, and the Device dock and the status bar say the force was clipped.
+TEST(DevicePanelWindow, AForceClampedToTheDeviceMaximumIsShownAsClipped) {
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    ASSERT_EQ(window.setDeviceUri(QStringLiteral("sim:stroke")), QString());
+    ASSERT_EQ(window.loadMesh(QString::fromStdString(cli::findResource(cli::kDefaultMesh))), QString());
+    TissuePreset stiff = window.session().preset();
+    stiff.params.springStiffnessNPerMm *= 4.0;  // rendered stiffness x4: several newtons at the press's depth
+    window.parameterPanel()->setPreset(stiff);
+    ASSERT_EQ(window.applyPreset(stiff), QString());
+    bool clipped = false, statusSaidSo = true;
+    for (int ticks = 0; ticks < 8000 && !clipped; ticks += 50) {
+        window.advanceTicks(50);
+        if (window.devicePanel()->forceClipped()) {
+            clipped = true;
+            statusSaidSo = window.statusText().contains(QStringLiteral("clipped at device max"));
+        }
+    }
+    ASSERT_TRUE(clipped) << window.devicePanel()->forceText().toStdString();
+    EXPECT_TRUE(window.devicePanel()->forceText().contains(QStringLiteral("clipped at device max 3.30 N")))
+        << window.devicePanel()->forceText().toStdString();
+    EXPECT_TRUE(statusSaidSo) << window.statusText().toStdString();
+}
 
 TEST(DevicePanelWindow, HardwareOpensOffTheGuiThreadAndFailuresAreShown) {
     auto release = std::make_shared<std::atomic<bool>>(false);
