@@ -153,23 +153,23 @@ DevicePanel::DevicePanel(QWidget* parent) : QWidget(parent) {
     mDisconnectButton->setObjectName(QStringLiteral("deviceDisconnectButton"));
     mDisconnectButton->setToolTip(tr("Stop sending forces and release the device"));
 
+    // The buttons keep their place whichever entry is chosen: the URI and the button row come right
+    // after the list (the file button shares the row, so showing it moves nothing), and the texts
+    // that vary in length, the error and the wrapped description, come below them.
     auto* uriRow = new QHBoxLayout;
     uriRow->addWidget(uriLabel);
     uriRow->addWidget(mUriEdit, 1);
-    auto* fileRow = new QHBoxLayout;
-    fileRow->addWidget(mChooseFileButton);
-    fileRow->addStretch(1);
     auto* buttonRow = new QHBoxLayout;
+    buttonRow->addWidget(mChooseFileButton);
     buttonRow->addStretch(1);
     buttonRow->addWidget(mConnectButton);
     buttonRow->addWidget(mDisconnectButton);
     auto* chooseLayout = new QVBoxLayout(chooseBox);
     chooseLayout->addWidget(mList);
-    chooseLayout->addWidget(mDescriptionLabel);
-    chooseLayout->addLayout(fileRow);
     chooseLayout->addLayout(uriRow);
-    chooseLayout->addWidget(mErrorLabel);
     chooseLayout->addLayout(buttonRow);
+    chooseLayout->addWidget(mErrorLabel);
+    chooseLayout->addWidget(mDescriptionLabel);
 
     // What the connected device can do.
     auto* specBox = new QGroupBox(tr("Connected Device"), this);
@@ -202,7 +202,8 @@ DevicePanel::DevicePanel(QWidget* parent) : QWidget(parent) {
     mStateLabel->setToolTip(tr("The device's state as the haptic loop last saw it"));
     mPhaseLabel->setToolTip(tr("The safety filter: holding forces off until the command is small, ramping in, or armed"));
     mFlagsLabel->setToolTip(tr("Why the force sent differs from the force the model asked for"));
-    mForceLabel->setToolTip(tr("Force sent to the device (after the safety filter)"));
+    mForceLabel->setToolTip(tr("Force sent to the device (after the safety filter); marked when the model asked "
+                               "for more than the device's maximum force and the filter clipped it"));
     mToolLabel->setToolTip(tr("Tool tip position in the scene's frame"));
     auto* stateLayout = new QFormLayout(stateBox);
     stateLayout->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
@@ -387,6 +388,7 @@ void DevicePanel::setConnected(const QString& uri, const DeviceSpec& spec) {
     setUri(uri);
     markConnectedEntry();
     mConnectionLabel->setText(uri);
+    mDeviceMaxForceN = std::isfinite(spec.maxForceN) && spec.maxForceN > 0.0 ? spec.maxForceN : 0.0;
     showSpec(&spec);
     if (mLossLatched) showBanner(tr("%1 is connected again: forces stay off until the safety filter has armed.").arg(uri));
     updateButtons();
@@ -395,6 +397,7 @@ void DevicePanel::setConnected(const QString& uri, const DeviceSpec& spec) {
 void DevicePanel::setDisconnected() {
     mConnected = false;
     mConnectedUri.clear();
+    mDeviceMaxForceN = 0.0;
     mLossLatched = false;
     hideBanner();
     markConnectedEntry();
@@ -417,6 +420,8 @@ bool DevicePanel::errorShown() const { return !mErrorLabel->isHidden(); }
 QString DevicePanel::errorText() const { return mErrorLabel->text(); }
 bool DevicePanel::warningShown() const { return !mBanner->isHidden(); }
 QString DevicePanel::warningText() const { return mBanner->text(); }
+QString DevicePanel::forceText() const { return mForceLabel->text(); }
+bool DevicePanel::forceClipped() const { return mForceLabel->property("clipped").toBool(); }
 
 void DevicePanel::showSpec(const DeviceSpec* spec) {
     const QString none = QStringLiteral("—");
@@ -472,9 +477,23 @@ void DevicePanel::updateFromSnapshot(const HapticSnapshot& snapshot) {
     mPhaseLabel->setText(translated(safetyPhaseName(phase)));
     mFlagsLabel->setText(safetyFlagsText(snapshot.safetyFlags));
     const glm::vec3 f = snapshot.forceN;
-    mForceLabel->setText(tr("%1 N  (%2, %3, %4)")
-                             .arg(liveNumber(glm::length(f), 2), liveNumber(f.x, 2), liveNumber(f.y, 2),
-                                  liveNumber(f.z, 2)));
+    QString force = tr("%1 N  (%2, %3, %4)")
+                        .arg(liveNumber(glm::length(f), 2), liveNumber(f.x, 2), liveNumber(f.y, 2), liveNumber(f.z, 2));
+    // The safety filter clamps a command above the device's maximum: the user feels the maximum,
+    // not what the model asked for, and the readout says so.
+    const double askedN = glm::length(snapshot.commandedForceN);
+    const bool clipped = (snapshot.safetyFlags & kSafetyClamped) != 0 ||
+                         (mDeviceMaxForceN > 0.0 && askedN > mDeviceMaxForceN);
+    if (clipped)
+        force += QLatin1Char('\n') + (mDeviceMaxForceN > 0.0
+                                          ? tr("clipped at device max %1 N (the model asked %2 N)")
+                                                .arg(liveNumber(mDeviceMaxForceN, 2), liveNumber(askedN, 2))
+                                          : tr("clipped (the model asked %1 N)").arg(liveNumber(askedN, 2)));
+    mForceLabel->setText(force);
+    if (mForceLabel->property("clipped").toBool() != clipped) {
+        mForceLabel->setProperty("clipped", clipped);
+        mForceLabel->setStyleSheet(clipped ? QStringLiteral("color: #b71c1c; font-weight: bold;") : QString());
+    }
     const glm::vec3 p = snapshot.toolTipMm;
     mToolLabel->setText(tr("(%1, %2, %3) mm").arg(liveNumber(p.x, 1), liveNumber(p.y, 1), liveNumber(p.z, 1)));
 

@@ -47,7 +47,8 @@ public:
     void showError(const QString& message);
     void clearError();
 
-    /// Shows the device state, the safety filter's phase and flags, the force and the tool from one
+    /// Shows the device state, the safety filter's phase and flags, the force (marked "clipped at
+    /// device max" when the model asked for more than the device's maximum) and the tool from one
     /// snapshot, and raises or clears the warning banner. Cheap enough for every frame.
     void updateFromSnapshot(const HapticSnapshot& snapshot);
 
@@ -57,6 +58,9 @@ public:
     QString warningText() const;
     bool errorShown() const;
     QString errorText() const;
+    /// The force readout as shown (for tests and the accessibility tree).
+    QString forceText() const;
+    bool forceClipped() const;
 
     /// The SafetyFlag bits in words ("held off, ramping"), or "none".
     static QString safetyFlagsText(std::uint32_t flags);
@@ -114,6 +118,7 @@ private:
     bool mConnected = false;       ///< the main window said a device is connected
     QString mConnectedUri;
     bool mLossLatched = false;     ///< the device was lost while connected; cleared at Ready+Armed
+    double mDeviceMaxForceN = 0.0;  ///< the connected device's spec; 0: none known
 };
 
 }  // namespace palpate

@@ -3,7 +3,6 @@
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
-#include <QDateTimeAxis>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -11,6 +10,7 @@
 #include <QLegend>
 #include <QLegendMarker>
 #include <QLineSeries>
+#include <QPen>
 #include <QPushButton>
 #include <QScatterSeries>
 #include <QTableWidget>
@@ -33,6 +33,7 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
 
     mChart = new QChart();
     mChart->legend()->setAlignment(Qt::AlignBottom);
+    mChart->legend()->setShowToolTips(true);  // an entry elided in a narrow dock shows its name on hover
     mChart->setMargins(QMargins(4, 4, 4, 4));
     mChartView = new QChartView(mChart, this);
     mChartView->setRenderHint(QPainter::Antialiasing);
@@ -40,6 +41,7 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(mChartView, 2);
 
     mSummary = new QLabel(this);
+    mSummary->setWordWrap(true);
     layout->addWidget(mSummary);
     mTable = new QTableWidget(0, 4, this);
     mTable->setHorizontalHeaderLabels({tr("When"), tr("Exercise"), tr("Score"), tr("Time (s)")});
@@ -111,60 +113,98 @@ void HistoryPanel::rebuild() {
         mChart->removeAxis(axis);
         delete axis;
     }
-    auto* timeAxis = new QDateTimeAxis();
-    timeAxis->setTickCount(3);
-    timeAxis->setTitleText(tr("Date"));
+    // The x axis counts sessions, oldest first: sessions a minute apart and sessions a month apart
+    // are equally far apart, and the dates are in the table (and the axis title gives their span).
+    const int sessions = int(mResults.size());
+    auto* sessionAxis = new QValueAxis();
+    sessionAxis->setObjectName(QStringLiteral("sessionAxis"));
+    sessionAxis->setRange(0.5, std::max(sessions, 1) + 0.5);
+    sessionAxis->setLabelFormat(QStringLiteral("%d"));
+    sessionAxis->setTickType(QValueAxis::TicksDynamic);
+    sessionAxis->setTickAnchor(1.0);
+    // A label per session up to 8, then every 2nd, 5th, 10th, ...: never more than about 8 labels.
+    double step = 1.0;
+    for (const double s : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0})
+        if (sessions / s <= 8.0) {
+            step = s;
+            break;
+        }
+    sessionAxis->setTickInterval(step);
+    sessionAxis->setMinorTickCount(0);
+    sessionAxis->setTitleText(tr("Session"));
     auto* scoreAxis = new QValueAxis();
     scoreAxis->setRange(0.0, 100.0);
     scoreAxis->setTitleText(tr("Score"));
     scoreAxis->setLabelFormat(QStringLiteral("%.0f"));
-    mChart->addAxis(timeAxis, Qt::AlignBottom);
+    mChart->addAxis(sessionAxis, Qt::AlignBottom);
     mChart->addAxis(scoreAxis, Qt::AlignLeft);
+    auto attach = [&](QAbstractSeries* s) {
+        mChart->addSeries(s);
+        s->attachAxis(sessionAxis);
+        s->attachAxis(scoreAxis);
+    };
 
-    // One line per exercise, in the order exercises first appear.
+    // One line per exercise, in the order exercises first appear; a stopped session is no point of
+    // it (its partial score is not a score) but a grey dashed mark across the chart at its place.
     std::map<QString, std::pair<QLineSeries*, QScatterSeries*>> byExercise;
-    qint64 firstMs = 0, lastMs = 0;
-    for (const ResultRecord& r : mResults) {
+    mStoppedSeries.clear();
+    for (int i = 0; i < sessions; ++i) {
+        const ResultRecord& r = mResults[std::size_t(i)];
+        const double x = i + 1;
+        if (!isScored(r.outcome)) {
+            auto* mark = new QLineSeries();
+            mark->setName(tr("Stopped"));
+            QPen pen(QColor(150, 150, 150));
+            pen.setStyle(Qt::DashLine);
+            pen.setWidthF(1.5);
+            mark->setPen(pen);
+            mark->append(x, 0.0);
+            mark->append(x, 100.0);
+            attach(mark);
+            // One legend entry for all of them.
+            if (!mStoppedSeries.empty())
+                for (QLegendMarker* m : mChart->legend()->markers(mark)) m->setVisible(false);
+            mStoppedSeries.push_back(mark);
+            continue;
+        }
         auto& pair = byExercise[r.exerciseName];
         if (!pair.first) {
             pair.first = new QLineSeries();
             pair.first->setName(r.exerciseName);
             pair.second = new QScatterSeries();
             pair.second->setMarkerSize(8.0);
-            mChart->addSeries(pair.first);
-            mChart->addSeries(pair.second);
-            for (QAbstractSeries* s : {static_cast<QAbstractSeries*>(pair.first), static_cast<QAbstractSeries*>(pair.second)}) {
-                s->attachAxis(timeAxis);
-                s->attachAxis(scoreAxis);
-            }
+            attach(pair.first);
+            attach(pair.second);
             pair.second->setColor(pair.first->color());
             // The dots carry no legend entry of their own: the line's names the exercise.
             for (QLegendMarker* m : mChart->legend()->markers(pair.second)) m->setVisible(false);
         }
-        const qint64 ms = r.startedUtc.toMSecsSinceEpoch();
-        pair.first->append(double(ms), r.score);
-        pair.second->append(double(ms), r.score);
-        firstMs = firstMs == 0 ? ms : std::min(firstMs, ms);
-        lastMs = std::max(lastMs, ms);
-    }
-    if (!mResults.empty()) {
-        // Some room either side, and at least a day, so a single session is not on the frame's edge.
-        const qint64 padMs = std::max<qint64>((lastMs - firstMs) / 20, 12 * 3600 * 1000);
-        timeAxis->setRange(QDateTime::fromMSecsSinceEpoch(firstMs - padMs), QDateTime::fromMSecsSinceEpoch(lastMs + padMs));
-        timeAxis->setFormat(lastMs - firstMs > 2LL * 24 * 3600 * 1000 ? QStringLiteral("dd MMM") : QStringLiteral("hh:mm"));
+        pair.first->append(x, r.score);
+        pair.second->append(x, r.score);
     }
     mChart->setTitle(mTrainees->currentIndex() >= 0 ? tr("Scores of %1").arg(mTrainees->currentText()) : tr("No trainee yet"));
 
-    mTable->setRowCount(int(mResults.size()));
+    mTable->setRowCount(sessions);
     // Newest first in the table: that is what one looks for.
-    for (int row = 0; row < int(mResults.size()); ++row) {
+    for (int row = 0; row < sessions; ++row) {
         const ResultRecord& r = mResults[mResults.size() - 1 - std::size_t(row)];
-        auto* when = new QTableWidgetItem(r.startedUtc.toLocalTime().toString(QStringLiteral("yyyy-MM-dd hh:mm")));
+        auto* when = new QTableWidgetItem(r.startedUtc.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")));
         when->setData(Qt::UserRole, r.id);
         mTable->setItem(row, 0, when);
         mTable->setItem(row, 1, new QTableWidgetItem(r.exerciseName));
         auto* score = new QTableWidgetItem(QString::number(r.score, 'f', 0));
         score->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        if (!isScored(r.outcome)) {
+            score->setText(tr("stopped"));
+            score->setForeground(QColor(120, 120, 120));
+            QFont italic = score->font();
+            italic.setItalic(true);
+            score->setFont(italic);
+            score->setToolTip(tr("Stopped before the end: %1 points so far, not a score (not in the best or "
+                                 "the mean)").arg(r.score, 0, 'f', 0));
+        } else if (r.outcome == ResultOutcome::TimeUp) {
+            score->setToolTip(tr("The time limit passed before the task was done"));
+        }
         mTable->setItem(row, 2, score);
         auto* time = new QTableWidgetItem(QString::number(r.durationS, 'f', 1));
         time->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -175,10 +215,26 @@ void HistoryPanel::rebuild() {
                                                   : tr("No results yet."));
     } else {
         double best = 0.0, sum = 0.0;
-        for (const auto& r : mResults) best = std::max(best, r.score), sum += r.score;
-        mSummary->setText(tr("%n session(s); best %1, mean %2", "", int(mResults.size()))
-                              .arg(best, 0, 'f', 0)
-                              .arg(sum / double(mResults.size()), 0, 'f', 0));
+        int scored = 0;
+        for (const auto& r : mResults)
+            if (isScored(r.outcome)) best = std::max(best, r.score), sum += r.score, ++scored;
+        const int stopped = sessions - scored;
+        // When: the first and the last session, on a 24-hour clock (the day once when it is one day).
+        const QDateTime first = mResults.front().startedUtc.toLocalTime();
+        const QDateTime last = mResults.back().startedUtc.toLocalTime();
+        const QString day = QStringLiteral("yyyy-MM-dd"), time = QStringLiteral("HH:mm");
+        const QString when = sessions == 1 ? first.toString(day + QLatin1Char(' ') + time)
+                             : first.date() == last.date()
+                                 ? tr("%1, %2 to %3").arg(first.toString(day), first.toString(time), last.toString(time))
+                                 : tr("%1 to %2").arg(first.toString(day + QLatin1Char(' ') + time),
+                                                      last.toString(day + QLatin1Char(' ') + time));
+        QString text = scored > 0 ? tr("%n session(s) (%1); best %2, mean %3", "", sessions)
+                                        .arg(when)
+                                        .arg(best, 0, 'f', 0)
+                                        .arg(sum / double(scored), 0, 'f', 0)
+                                  : tr("%n session(s) (%1); none scored", "", sessions).arg(when);
+        if (stopped > 0) text += QLatin1Char(' ') + tr("(%n stopped, not counted)", "", stopped);
+        mSummary->setText(text);
     }
     updateButtons();
 }
@@ -186,9 +242,14 @@ void HistoryPanel::rebuild() {
 int HistoryPanel::plottedPointCount() const {
     int n = 0;
     for (QAbstractSeries* s : mChart->series())
-        if (auto* line = qobject_cast<QLineSeries*>(s); line && !qobject_cast<QScatterSeries*>(s)) n += line->count();
+        if (auto* line = qobject_cast<QLineSeries*>(s); line && !qobject_cast<QScatterSeries*>(s) &&
+                                                        std::find(mStoppedSeries.begin(), mStoppedSeries.end(), line) ==
+                                                            mStoppedSeries.end())
+            n += line->count();
     return n;
 }
+
+QString HistoryPanel::summaryText() const { return mSummary->text(); }
 
 std::optional<ResultRecord> HistoryPanel::selectedResult() const {
     const auto rows = mTable->selectionModel()->selectedRows();

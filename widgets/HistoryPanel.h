@@ -1,6 +1,6 @@
 #pragma once
-// A trainee's history: their scores over time, one line per exercise (Qt Charts), and the results
-// as a table below. A result with a recording can be exported as a PDF report or replayed: the
+// A trainee's history: their scores session by session, one line per exercise (Qt Charts), a stopped
+// session marked but not scored, and the results as a table below. A result with a recording can be exported as a PDF report or replayed: the
 // window re-scores the recording (the same score bit for bit) or opens it in the Recorder.
 
 #include "app/report/ResultsDatabase.h"
@@ -8,11 +8,13 @@
 #include <QWidget>
 
 #include <optional>
+#include <vector>
 
 class QChart;
 class QChartView;
 class QComboBox;
 class QLabel;
+class QLineSeries;
 class QPushButton;
 class QTableWidget;
 
@@ -33,9 +35,14 @@ public:
 
     /// The results shown, oldest first.
     const std::vector<ResultRecord>& results() const { return mResults; }
-    /// The chart's series (one per exercise) and their point counts, for tests.
+    /// The chart's series (one line per exercise, one dashed mark per stopped session) and the
+    /// scored points the lines hold, for tests.
     QChart* chart() const { return mChart; }
     int plottedPointCount() const;
+    /// The stopped sessions' marks on the chart (not points of a line).
+    int stoppedMarkCount() const { return int(mStoppedSeries.size()); }
+    /// The line under the chart: sessions, best and mean of the scored ones, stopped ones.
+    QString summaryText() const;
     QTableWidget* table() const { return mTable; }
     QComboBox* traineeBox() const { return mTrainees; }
     /// The result selected in the table (nullopt: none).
@@ -57,6 +64,7 @@ private:
     QChartView* mChartView = nullptr;
     QTableWidget* mTable = nullptr;
     QLabel* mSummary = nullptr;
+    std::vector<QLineSeries*> mStoppedSeries;  ///< owned by mChart
     QPushButton* mReport = nullptr;
     QPushButton* mReplay = nullptr;
 };

@@ -10,12 +10,14 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QGraphicsOpacityEffect>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QKeyEvent>
@@ -23,12 +25,15 @@
 #include <QLineEdit>
 #include <QLocale>
 #include <QMessageBox>
+#include <QPropertyAnimation>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QSequentialAnimationGroup>
 #include <QSet>
 #include <QSpinBox>
 #include <QStyle>
+#include <QTime>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -153,14 +158,15 @@ QString camelCase(const std::string& section) {
 
 QString modelData(std::string_view name) { return QString::fromLatin1(name.data(), qsizetype(name.size())); }
 
-/// A double spin box that shows as many decimals as the value needs ("0.6", "0.0025", "1000"),
-/// so that small slopes and masses keep their precision without a wall of zeros.
+/// A double spin box that shows as many decimals as the value needs ("0.6", "0.0025", "1000") up to
+/// its field's significant digits (FieldSpec::shownDigits): a calibrated slope reads "14.07", not
+/// "14.072222222", while the value keeps every decimal.
 class CompactDoubleSpinBox final : public QDoubleSpinBox {
 public:
-    using QDoubleSpinBox::QDoubleSpinBox;
+    CompactDoubleSpinBox(QWidget* parent, int shownDigits) : QDoubleSpinBox(parent), mShownDigits(shownDigits) {}
 
     QString textFromValue(double value) const override {
-        QString text = locale().toString(value, 'f', decimals());
+        QString text = locale().toString(value, 'f', shownDecimals(value));
         if (std::abs(value) >= 1000.0) text.remove(locale().groupSeparator());
         const QString point = locale().decimalPoint();
         if (text.contains(point)) {
@@ -169,10 +175,30 @@ public:
         }
         return text;
     }
+
+    /// The text the held value shows stands for that value with all its decimals: leaving the field
+    /// (which reads its text back) must not round it to the digits shown.
+    double valueFromText(const QString& text) const override {
+        QString core = text;
+        if (!prefix().isEmpty() && core.startsWith(prefix())) core.remove(0, prefix().size());
+        if (!suffix().isEmpty() && core.endsWith(suffix())) core.chop(suffix().size());
+        if (core.trimmed() == textFromValue(value())) return value();
+        return QDoubleSpinBox::valueFromText(text);
+    }
+
+private:
+    int shownDecimals(double value) const {
+        if (mShownDigits <= 0 || value == 0.0 || !std::isfinite(value)) return decimals();
+        const int magnitude = int(std::floor(std::log10(std::abs(value))));
+        return std::clamp(mShownDigits - 1 - magnitude, 0, decimals());
+    }
+
+    int mShownDigits;
 };
 
-QDoubleSpinBox* doubleSpin(QWidget* parent, const char* objectName, double lo, double hi, int decimals, double step) {
-    auto* spin = new CompactDoubleSpinBox(parent);
+QDoubleSpinBox* doubleSpin(QWidget* parent, const char* objectName, double lo, double hi, int decimals, double step,
+                           int shownDigits = 0) {
+    auto* spin = new CompactDoubleSpinBox(parent, shownDigits);
     spin->setObjectName(QLatin1String(objectName));
     spin->setDecimals(decimals);
     spin->setRange(lo, hi);
@@ -204,11 +230,19 @@ void setRowLabel(QFormLayout* form, QWidget* field, const QString& text) {
 
 /// Problems and stability are shown in colour; a field is framed red when a problem names it and
 /// amber when it is allowed but outside the paper's range.
+/// A field that differs from what runs is framed blue, its label blue (a problem's red still wins).
 const char* const kStyleSheet = R"(
+QAbstractSpinBox[modified="true"], QComboBox[modified="true"] { border: 2px solid #1e88e5; border-radius: 3px; background-color: #eef5fd; }
+QLabel[modified="true"] { color: #1565c0; }
+QWidget#unappliedBar { background-color: #e3f2fd; border: 1px solid #64b5f6; border-radius: 3px; }
+QLabel#unappliedLabel { color: #0d47a1; }
+QLabel#appliedLabel { color: #2e7d32; }
+QPushButton#applyButton[pending="true"] { font-weight: bold; }
 QAbstractSpinBox[invalid="true"] { border: 2px solid #d32f2f; border-radius: 3px; background-color: #fff0f0; }
 QAbstractSpinBox[outsidePaperRange="true"] { border: 2px solid #e69500; border-radius: 3px; background-color: #fff8e6; }
 QAbstractSpinBox[invalid="true"]::up-button, QAbstractSpinBox[invalid="true"]::down-button,
-QAbstractSpinBox[outsidePaperRange="true"]::up-button, QAbstractSpinBox[outsidePaperRange="true"]::down-button { width: 16px; }
+QAbstractSpinBox[outsidePaperRange="true"]::up-button, QAbstractSpinBox[outsidePaperRange="true"]::down-button,
+QAbstractSpinBox[modified="true"]::up-button, QAbstractSpinBox[modified="true"]::down-button { width: 16px; }
 QLabel#messageLabel { color: #c62828; }
 QLabel#noteLabel { color: #8a5a00; }
 QLabel#stabilityLabel[nearLimit="true"] { color: #8a5a00; background-color: #fff3d6; border: 1px solid #e69500; border-radius: 3px; padding: 2px; }
@@ -404,6 +438,39 @@ void ParameterPanel::buildUi() {
     mApplyButton->setObjectName(QStringLiteral("applyButton"));
     connect(mApplyButton, &QPushButton::clicked, this, &ParameterPanel::apply);
 
+    // What runs against what the fields say: a bar while they differ, a confirmation after Apply.
+    mUnappliedBar = new QWidget(this);
+    mUnappliedBar->setObjectName(QStringLiteral("unappliedBar"));
+    mUnappliedBar->setAttribute(Qt::WA_StyledBackground, true);
+    mUnappliedLabel = new QLabel(mUnappliedBar);
+    mUnappliedLabel->setObjectName(QStringLiteral("unappliedLabel"));
+    mUnappliedLabel->setWordWrap(true);
+    mUnappliedLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);  // wraps, never widens the dock
+    mRevertButton = new QPushButton(mUnappliedBar);
+    mRevertButton->setObjectName(QStringLiteral("revertButton"));
+    connect(mRevertButton, &QPushButton::clicked, this, &ParameterPanel::revertToRunning);
+    auto* barLayout = new QHBoxLayout(mUnappliedBar);
+    barLayout->setContentsMargins(6, 4, 4, 4);
+    barLayout->addWidget(mUnappliedLabel, 1);
+    barLayout->addWidget(mRevertButton, 0, Qt::AlignVCenter);
+    mUnappliedBar->hide();
+    mAppliedLabel = new QLabel(this);
+    mAppliedLabel->setObjectName(QStringLiteral("appliedLabel"));
+    mAppliedLabel->setWordWrap(true);
+    mAppliedLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    mAppliedOpacity = new QGraphicsOpacityEffect(mAppliedLabel);
+    mAppliedLabel->setGraphicsEffect(mAppliedOpacity);
+    mAppliedLabel->hide();
+    // Read for a few seconds, then faded out: a confirmation, not a state.
+    mAppliedFade = new QSequentialAnimationGroup(this);
+    mAppliedFade->addPause(4000);
+    auto* fade = new QPropertyAnimation(mAppliedOpacity, "opacity", mAppliedFade);
+    fade->setDuration(1500);
+    fade->setStartValue(1.0);
+    fade->setEndValue(0.0);
+    mAppliedFade->addAnimation(fade);
+    connect(mAppliedFade, &QAbstractAnimation::finished, mAppliedLabel, &QWidget::hide);
+
     auto* fileRow = new QHBoxLayout;
     fileRow->addWidget(mOpenButton);
     fileRow->addWidget(mSaveButton);
@@ -420,6 +487,8 @@ void ParameterPanel::buildUi() {
     layout->addWidget(mMessageLabel);
     layout->addWidget(mNoteLabel);
     layout->addLayout(fileRow);
+    layout->addWidget(mUnappliedBar);
+    layout->addWidget(mAppliedLabel);
     layout->addLayout(applyRow);
 
     // Every field: an edit records an undo step and revalidates.
@@ -443,6 +512,13 @@ void ParameterPanel::buildUi() {
     connect(mCalibrateButton, &QPushButton::clicked, this, [this] { calibrateSlopes(); });
 
     for (QAbstractSpinBox* spin : findChildren<QAbstractSpinBox*>()) watchEdits(spin);
+    // The wheel scrolls the fields; a spin box or combo takes it only once clicked or tabbed into,
+    // so that one passing under the cursor is not changed (eventFilter).
+    for (QWidget* field : mScroll->widget()->findChildren<QWidget*>())
+        if (qobject_cast<QAbstractSpinBox*>(field) || qobject_cast<QComboBox*>(field)) {
+            field->setFocusPolicy(Qt::StrongFocus);
+            field->installEventFilter(this);
+        }
 }
 
 void ParameterPanel::watchEdits(QWidget* spin) {
@@ -453,6 +529,13 @@ void ParameterPanel::watchEdits(QWidget* spin) {
 }
 
 bool ParameterPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::Wheel) {
+        auto* field = qobject_cast<QWidget*>(watched);
+        if (field && (qobject_cast<QAbstractSpinBox*>(field) || qobject_cast<QComboBox*>(field)) && !field->hasFocus()) {
+            QCoreApplication::sendEvent(mScroll->viewport(), event);  // the scroll area scrolls instead
+            return true;
+        }
+    }
     if (event->type() == QEvent::ShortcutOverride) {
         const QKeySequence pressed(static_cast<QKeyEvent*>(event)->keyCombination());
         if (mUndoAction->shortcuts().contains(pressed) || mRedoAction->shortcuts().contains(pressed)) {
@@ -481,7 +564,7 @@ QWidget* ParameterPanel::createFieldWidget(PanelField& f, QWidget* parent) {
     } else if (f.type == FieldType::Whole) {
         widget = intSpin(parent, "", int(entryLowOf(spec)), int(entryHighOf(spec)));
     } else {
-        widget = doubleSpin(parent, "", entryLowOf(spec), entryHighOf(spec), spec.decimals, spec.step);
+        widget = doubleSpin(parent, "", entryLowOf(spec), entryHighOf(spec), spec.decimals, spec.step, spec.shownDigits);
     }
     widget->setObjectName(name);
     f.widget = widget;
@@ -600,6 +683,8 @@ void ParameterPanel::retranslateUi() {
     mOpenButton->setToolTip(mOpenAction->toolTip());
     mSaveButton->setText(mSaveAction->text());
     mSaveButton->setToolTip(mSaveAction->toolTip());
+    mRevertButton->setText(tr("&Revert"));
+    mRevertButton->setToolTip(tr("Set the fields back to what the haptic loop runs (one undoable step)."));
     mApplyButton->setText(tr("Apply"));
     mApplyButton->setToolTip(tr("Send these parameters to the haptic loop (enabled while they are valid)."));
 
@@ -818,6 +903,7 @@ TissuePreset ParameterPanel::preset() const { return presetFromFields(); }
 
 void ParameterPanel::setPreset(const TissuePreset& preset) {
     mUndoStack->clear();
+    mRunning = preset;
     showPreset(preset);
     mUndoStack->setClean();
 }
@@ -871,6 +957,67 @@ void ParameterPanel::onEdited(int field) {
 void ParameterPanel::updateSlopeRows() {
     const int rings = mRingSpin->value();
     for (int r = 0; r <= kMaxRings; ++r) mSlopeForm->setRowVisible(mSlopeSpins[std::size_t(r)], r <= rings);
+}
+
+void ParameterPanel::showApplied(const TissuePreset& running) {
+    mRunning = running;
+    validate();
+    mAppliedLabel->setText(
+        tr("Applied to the running tissue at %1").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss"))));
+    mAppliedFade->stop();
+    mAppliedOpacity->setOpacity(1.0);
+    mAppliedLabel->show();
+    mAppliedFade->start();
+}
+
+void ParameterPanel::revertToRunning() {
+    const TissuePreset before = presetFromFields();
+    if (mUnapplied.isEmpty()) return;
+    mUndoStack->push(new ParameterEditCommand(before, mRunning, tr("Revert to the running tissue"),
+                                              ParameterEditCommand::kNoMerge, /*alreadyShown=*/false,
+                                              [this](const TissuePreset& preset) { showPreset(preset); }));
+}
+
+QLabel* ParameterPanel::rowLabelOf(QWidget* field) const {
+    auto* form = qobject_cast<QFormLayout*>(field->parentWidget() ? field->parentWidget()->layout() : nullptr);
+    return form ? qobject_cast<QLabel*>(form->labelForField(field)) : nullptr;
+}
+
+void ParameterPanel::updateUnappliedMarks() {
+    QStringList names;
+    auto mark = [&](QWidget* field, bool differs, int edit) {
+        markField(field, "modified", differs);
+        if (QLabel* label = rowLabelOf(field)) markField(label, "modified", differs);
+        if (differs) names << fieldName(edit);
+    };
+    mark(mModelCombo,
+         mModelCombo->currentData().toString() != QString::fromStdString(presetModelName(mRunning)), kModelEdit);
+    mark(mRateSpin, mRateSpin->value() != shownAs(mRateSpin, mRunning.hapticRateHz), kRateEdit);
+    const int rings = mRingSpin->value();
+    for (int i = 0; i < int(mFields.size()); ++i) {
+        const PanelField& f = mFields[std::size_t(i)];
+        const double running = f.get(mRunning);
+        bool differs = false;
+        if (auto* spin = qobject_cast<QDoubleSpinBox*>(f.widget)) differs = spin->value() != shownAs(spin, running);
+        else if (auto* ints = qobject_cast<QSpinBox*>(f.widget)) differs = ints->value() != int(running);
+        else if (auto* combo = qobject_cast<QComboBox*>(f.widget)) differs = combo->currentData().toInt() != int(running);
+        // A slope beyond the ring count is hidden and not used: the ring count says the difference.
+        if (f.section == "slope_ring" && f.index > rings) differs = false;
+        mark(f.widget, differs, kFieldEdit0 + i);
+    }
+    mUnapplied = names;
+    if (!names.isEmpty()) {
+        constexpr int kNamed = 4;
+        QStringList shown = names.mid(0, kNamed);
+        if (names.size() > kNamed) shown << tr("%n more", "", int(names.size() - kNamed));
+        mUnappliedLabel->setText(tr("Not applied: %1 differ from the running tissue. Apply (Ctrl+Return) sends "
+                                    "them; Revert goes back to what runs.")
+                                     .arg(locale().createSeparatedList(shown)));
+        mAppliedFade->stop();
+        mAppliedLabel->hide();
+    }
+    mUnappliedBar->setVisible(!names.isEmpty());
+    markField(mApplyButton, "pending", !names.isEmpty());
 }
 
 void ParameterPanel::setConfirmFunction(ConfirmFunction confirm) { mConfirm = std::move(confirm); }
@@ -1059,6 +1206,7 @@ void ParameterPanel::validate() {
     mProblems = problems;
     const bool valid = problems.isEmpty();
     mApplyButton->setEnabled(valid);
+    updateUnappliedMarks();
     if (valid != mValid) {
         mValid = valid;
         emit validityChanged(valid);

@@ -27,10 +27,12 @@ class QAction;
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
+class QGraphicsOpacityEffect;
 class QGroupBox;
 class QLabel;
 class QPushButton;
 class QScrollArea;
+class QSequentialAnimationGroup;
 class QSpinBox;
 class QUndoStack;
 
@@ -56,9 +58,21 @@ public:
 
     /// The preset the fields show (name, description and tissue properties carried through).
     TissuePreset preset() const;
-    /// Shows `preset` as a new baseline: no undo entry, and the undo history is cleared (its steps
-    /// belong to the preset that was shown before).
+    /// Shows `preset` as a new baseline that is also what runs: no undo entry, and the undo history
+    /// is cleared (its steps belong to the preset that was shown before).
     void setPreset(const TissuePreset& preset);
+
+    /// The main window's answer to applyRequested once the haptic loop runs `running`: fields equal
+    /// to it lose their "changed" mark, and "Applied to the running tissue at HH:MM:SS" shows for a
+    /// few seconds. The fields and the undo history stay as they are (docs/user-guide.md, Parameters).
+    void showApplied(const TissuePreset& running);
+    /// What the haptic loop runs, as the panel was last told (setPreset or showApplied).
+    const TissuePreset& runningPreset() const { return mRunning; }
+    /// True when a field differs from what runs: the "Not applied" bar is shown and each such field
+    /// and its label carry the `modified` property.
+    bool hasUnappliedChanges() const { return !mUnapplied.isEmpty(); }
+    /// The fields that differ from what runs, as their rows name them.
+    const QStringList& unappliedFields() const { return mUnapplied; }
 
     /// True when the fields pass every check (what enables Apply).
     bool isValid() const { return mValid; }
@@ -122,6 +136,8 @@ public slots:
     void apply();
     void openPresetDialog();
     void savePresetDialog();
+    /// Sets the fields back to what runs, as one undoable step.
+    void revertToRunning();
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -150,6 +166,10 @@ private:
     void updateModelRows();
     void validate();
     void markField(QWidget* field, const char* property, bool on);
+    /// Marks the fields (and their labels) that differ from mRunning, and shows or hides the bar.
+    void updateUnappliedMarks();
+    /// The label of `field`'s row, or null.
+    QLabel* rowLabelOf(QWidget* field) const;
     /// The tissue the fields hold, or the shown preset's when they still show it (its source kept).
     /// The tissue the tissue fields show, with this source.
     TissueProperties tissueInFields(const std::string& source) const;
@@ -203,6 +223,14 @@ private:
     QPushButton* mOpenButton = nullptr;
     QPushButton* mSaveButton = nullptr;
     QPushButton* mApplyButton = nullptr;
+    /// "Not applied — Apply (Ctrl+Return) / Revert", shown while a field differs from what runs.
+    QWidget* mUnappliedBar = nullptr;
+    QLabel* mUnappliedLabel = nullptr;
+    QPushButton* mRevertButton = nullptr;
+    /// "Applied to the running tissue at HH:MM:SS", faded out a few seconds after an Apply.
+    QLabel* mAppliedLabel = nullptr;
+    QGraphicsOpacityEffect* mAppliedOpacity = nullptr;
+    QSequentialAnimationGroup* mAppliedFade = nullptr;
 
     QUndoStack* mUndoStack = nullptr;
     QAction* mUndoAction = nullptr;
@@ -212,6 +240,9 @@ private:
 
     /// What the fields show; the `before` of the next edit's undo step.
     TissuePreset mShown;
+    /// What the haptic loop runs (setPreset, showApplied): the fields that differ are marked.
+    TissuePreset mRunning;
+    QStringList mUnapplied;
     bool mShowing = false;  ///< fields being set by showPreset: their signals are not edits
     bool mValid = false;
     QStringList mProblems;

@@ -4,9 +4,11 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QStyle>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace palpate {
@@ -57,6 +59,15 @@ ScoreCard::ScoreCard(QWidget* parent) : QWidget(parent) {
     mTable->setHorizontalHeaderLabels({tr("Metric"), tr("Value"), tr("Sub-score"), tr("Points")});
     mTable->verticalHeader()->hide();
     mTable->verticalHeader()->setDefaultSectionSize(mTable->fontMetrics().height() + 6);
+    // A long metric name wraps onto a second line in a narrow dock instead of being cut off: rows
+    // take the height their names need at the column's width.
+    mTable->setWordWrap(true);
+    mTable->setTextElideMode(Qt::ElideNone);
+    mTable->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // A column's new width (the dock resized) does not re-measure the rows by itself.
+    connect(mTable->horizontalHeader(), &QHeaderView::sectionResized, mTable, [this](int column) {
+        if (column == 0) mTable->resizeRowsToContents();
+    });
     mTable->setMinimumHeight(8 * (mTable->fontMetrics().height() + 6));
     mTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
     mTable->setSelectionMode(QAbstractItemView::NoSelection);
@@ -94,6 +105,22 @@ void ScoreCard::clear() {
 
 QString ScoreCard::scoreText() const { return mScore->text(); }
 
+void ScoreCard::fitNameColumn() {
+    // The name column never narrower than its longest word (wrapping cannot split a word), the
+    // others as wide as their contents: the table asks for that much width, the dock gives it.
+    const QFontMetrics metrics = mTable->fontMetrics();
+    const int cellMarginPx = 2 * (mTable->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, mTable) + 1) + 4;
+    int wordPx = metrics.horizontalAdvance(mTable->horizontalHeaderItem(0)->text());
+    for (int row = 0; row < mTable->rowCount(); ++row)
+        for (const QString& word : mTable->item(row, 0)->text().split(QLatin1Char(' '), Qt::SkipEmptyParts))
+            wordPx = std::max(wordPx, metrics.horizontalAdvance(word));
+    mTable->resizeColumnsToContents();
+    int widthPx = wordPx + cellMarginPx + 2 * mTable->frameWidth();
+    for (int c = 1; c < mTable->columnCount(); ++c) widthPx += mTable->horizontalHeader()->sectionSize(c);
+    mTable->setMinimumWidth(widthPx);
+    mTable->resizeRowsToContents();
+}
+
 void ScoreCard::setReport(const ScoreReport& report, const QString& traineeName) {
     mReport = report;
     mHasReport = true;
@@ -108,7 +135,8 @@ void ScoreCard::setReport(const ScoreReport& report, const QString& traineeName)
     for (int row = 0; row < int(report.metrics.size()); ++row) {
         const MetricResult& line = report.metrics[std::size_t(row)];
         auto* name = new QTableWidgetItem(metricLabel(line.metric));
-        name->setToolTip(QString::fromUtf8(metricDescription(line.metric).data(), int(metricDescription(line.metric).size())));
+        name->setToolTip(metricLabel(line.metric) + QStringLiteral(": ") +
+                         QString::fromUtf8(metricDescription(line.metric).data(), int(metricDescription(line.metric).size())));
         mTable->setItem(row, 0, name);
         mTable->setItem(row, 1, new QTableWidgetItem(formatMetricValue(line)));
         mTable->setItem(row, 2, new QTableWidgetItem(line.weight > 0.0 ? QStringLiteral("%1 %").arg(100.0 * line.subScore, 0, 'f', 0)
@@ -116,6 +144,7 @@ void ScoreCard::setReport(const ScoreReport& report, const QString& traineeName)
         mTable->setItem(row, 3, new QTableWidgetItem(QString::number(line.contribution, 'f', 1)));
         for (int c = 1; c < 4; ++c) mTable->item(row, c)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     }
+    fitNameColumn();
     QStringList warnings;
     for (const auto& w : report.warnings) warnings << QString::fromStdString(w);
     mWarnings->setText(warnings.join(QLatin1Char('\n')));

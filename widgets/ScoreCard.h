@@ -35,6 +35,9 @@ signals:
     void historyRequested();
 
 private:
+    /// The table as wide as its longest metric word and its value columns need.
+    void fitNameColumn();
+
     ScoreReport mReport;
     bool mHasReport = false;
     QLabel* mScore = nullptr;

@@ -1,6 +1,7 @@
 #include "app/gui/MainWindow.h"
 
 #include "device/open/DeviceUri.h"
+#include "device/SafetyFilter.h"
 #include "engine/loop/HapticSnapshot.h"
 #include "engine/scene/TissuePreset.h"
 #include "engine/scoring/TargetReachability.h"
@@ -207,6 +208,7 @@ void MainWindow::createDocks() {
 
 QString MainWindow::applyPreset(const TissuePreset& preset) {
     const QString error = QString::fromStdString(mSession->applyPreset(preset));
+    if (error.isEmpty()) mParameterPanel->showApplied(mSession->preset());  // clears its "Not applied" marks
     if (error.isEmpty()) updateChartsConfiguration();
     if (error.isEmpty() && mLodPanel) updateLodScene();
     return error;
@@ -693,7 +695,9 @@ void MainWindow::showStatus() {
                               .arg(QString::fromStdString(mSession->deviceUri()),
                                    observed ? QString::fromLatin1(deviceStateName(o.deviceState)) : tr("not started")));
     mContactLabel->setText(tr("contact: %1").arg(o.contact ? tr("yes") : tr("no")));
-    mForceLabel->setText(tr("force %1").arg(formatForce(double(glm::length(o.forceN)))));  // N or gf (Preferences)
+    // N or gf (Preferences); clamped to the device's maximum, the force felt is not the model's (docs/devices.md).
+    mForceLabel->setText((o.safetyFlags & kSafetyClamped ? tr("force %1 (clipped at device max)") : tr("force %1"))
+                             .arg(formatForce(double(glm::length(o.forceN)))));
 }
 
 QString MainWindow::statusText() const {

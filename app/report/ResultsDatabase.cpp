@@ -9,6 +9,7 @@
 #include <QVariant>
 
 #include <atomic>
+#include <vector>
 
 namespace palpate {
 
@@ -33,6 +34,11 @@ const char* const kSchemaV1[] = {
 const char* const kMigrateV1ToV2[] = {
     "ALTER TABLE results ADD COLUMN recording_path TEXT NOT NULL DEFAULT ''",
     "PRAGMA user_version = 2",
+};
+
+// Version 3: how the session ended (ResultOutcome); '' for the rows stored before.
+const char* const kMigrateV2ToV3[] = {
+    "ALTER TABLE results ADD COLUMN outcome TEXT NOT NULL DEFAULT ''",
 };
 
 QString isoUtc(const QDateTime& t) { return t.toUTC().toString(Qt::ISODateWithMs); }
@@ -62,6 +68,28 @@ QString runInTransaction(QSqlDatabase& db, const char* const* begin, const char*
 }
 
 }  // namespace
+
+ResultOutcome outcomeOf(const ScoreReport& report) {
+    if (report.guidance.completed) return ResultOutcome::Completed;
+    if (report.guidance.timeUp) return ResultOutcome::TimeUp;
+    return ResultOutcome::Stopped;
+}
+
+QString outcomeKey(ResultOutcome outcome) {
+    switch (outcome) {
+        case ResultOutcome::Completed: return QStringLiteral("completed");
+        case ResultOutcome::TimeUp: return QStringLiteral("time_up");
+        case ResultOutcome::Stopped: return QStringLiteral("stopped");
+        case ResultOutcome::Unknown: break;
+    }
+    return {};
+}
+
+ResultOutcome outcomeFromKey(const QString& key) {
+    for (ResultOutcome o : {ResultOutcome::Completed, ResultOutcome::TimeUp, ResultOutcome::Stopped})
+        if (key == outcomeKey(o)) return o;
+    return ResultOutcome::Unknown;
+}
 
 ResultsDatabase::ResultsDatabase()
     : mConnection(QStringLiteral("palpate-results-%1").arg(gConnectionCounter.fetch_add(1))) {}
@@ -155,7 +183,47 @@ bool ResultsDatabase::migrate(int from, QString* error) {
         if (!why.isEmpty()) return fail(tr("cannot migrate from schema version 1 to 2: %1").arg(why), error);
         from = 2;
     }
+    if (from == 2) {
+        const QString why = migrateV2ToV3();
+        if (!why.isEmpty()) return fail(tr("cannot migrate from schema version 2 to 3: %1").arg(why), error);
+        from = 3;
+    }
     return true;
+}
+
+QString ResultsDatabase::migrateV2ToV3() {
+    if (!mDb.transaction()) return mDb.lastError().text();
+    QString why;
+    {
+        QSqlQuery q(mDb);
+        for (const char* statement : kMigrateV2ToV3)
+            if (why.isEmpty() && !q.exec(QString::fromLatin1(statement))) why = q.lastError().text();
+        // A completion of 1 means the task was done; any other old row may have been stopped or
+        // timed out, which version 2 did not record.
+        std::vector<qint64> completed;
+        if (why.isEmpty() && q.exec(QStringLiteral("SELECT id, metrics_json FROM results"))) {
+            while (q.next()) {
+                const QJsonObject metrics = QJsonDocument::fromJson(q.value(1).toString().toUtf8()).object();
+                if (metrics.value(QStringLiteral("completion")).toDouble(0.0) >= 1.0)
+                    completed.push_back(q.value(0).toLongLong());
+            }
+        } else if (why.isEmpty()) {
+            why = q.lastError().text();
+        }
+        q.finish();
+        for (qint64 id : completed) {
+            if (!why.isEmpty()) break;
+            q.prepare(QStringLiteral("UPDATE results SET outcome = ? WHERE id = ?"));
+            q.addBindValue(outcomeKey(ResultOutcome::Completed));
+            q.addBindValue(id);
+            if (!q.exec()) why = q.lastError().text();
+        }
+        if (why.isEmpty() && !q.exec(QStringLiteral("PRAGMA user_version = 3"))) why = q.lastError().text();
+        q.finish();
+    }
+    if (why.isEmpty() && !mDb.commit()) why = mDb.lastError().text();
+    if (!why.isEmpty()) mDb.rollback();
+    return why;
 }
 
 int ResultsDatabase::schemaVersion() const {
@@ -256,9 +324,9 @@ qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, c
             q.finish();
             q.prepare(QStringLiteral(
                 "INSERT INTO results (trainee_id, exercise_name, exercise_path, started_utc, duration_s,"
-                " score, metrics_json, rubric_json, recording_path)"
+                " score, metrics_json, rubric_json, recording_path, outcome)"
                 // A null QString binds as NULL: empty text instead.
-                " VALUES (?, COALESCE(?, ''), COALESCE(?, ''), ?, ?, ?, ?, ?, COALESCE(?, ''))"));
+                " VALUES (?, COALESCE(?, ''), COALESCE(?, ''), ?, ?, ?, ?, ?, COALESCE(?, ''), ?)"));
             q.addBindValue(traineeId);
             q.addBindValue(exerciseName);
             q.addBindValue(exercisePath);
@@ -268,6 +336,7 @@ qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, c
             q.addBindValue(metrics);
             q.addBindValue(rubric);
             q.addBindValue(recordingPath);
+            q.addBindValue(outcomeKey(outcomeOf(report)));
             if (q.exec())
                 id = q.lastInsertId().toLongLong();
             else
@@ -288,7 +357,7 @@ std::vector<ResultRecord> ResultsDatabase::results(qint64 traineeId) const {
     QSqlQuery q(mDb);
     q.prepare(QStringLiteral(
         "SELECT id, trainee_id, exercise_name, exercise_path, started_utc, duration_s, score, metrics_json,"
-        " rubric_json, recording_path FROM results WHERE trainee_id = ? ORDER BY started_utc, id"));
+        " rubric_json, recording_path, outcome FROM results WHERE trainee_id = ? ORDER BY started_utc, id"));
     q.addBindValue(traineeId);
     if (!q.exec()) {
         mLastError = tr("%1: %2").arg(mPath, q.lastError().text());
@@ -306,6 +375,7 @@ std::vector<ResultRecord> ResultsDatabase::results(qint64 traineeId) const {
         r.metricsJson = q.value(7).toString();
         r.rubricJson = q.value(8).toString();
         r.recordingPath = q.value(9).toString();
+        r.outcome = outcomeFromKey(q.value(10).toString());
         out.push_back(std::move(r));
     }
     return out;

@@ -20,6 +20,23 @@ struct TraineeRecord {
     QDateTime created;  ///< UTC
 };
 
+/// How a stored session ended. A stopped one (Stop, or the recording stopped) is kept and listed,
+/// but its partial score is not a score: it counts in neither the best nor the mean.
+enum class ResultOutcome {
+    Unknown,    ///< stored before schema version 3, which did not record it (counted as before)
+    Completed,  ///< the task was done
+    TimeUp,     ///< the time limit passed first: a scored attempt
+    Stopped,    ///< ended before completion or the time limit
+};
+
+/// The outcome `report` describes (its guidance's completed / time_up).
+ResultOutcome outcomeOf(const ScoreReport& report);
+/// "completed", "time_up", "stopped"; "" for Unknown: the `outcome` column's text.
+QString outcomeKey(ResultOutcome outcome);
+ResultOutcome outcomeFromKey(const QString& key);
+/// Whether a result with this outcome is a score (best, mean, the chart's lines): all but Stopped.
+inline bool isScored(ResultOutcome outcome) { return outcome != ResultOutcome::Stopped; }
+
 struct ResultRecord {
     qint64 id = -1;
     qint64 traineeId = -1;
@@ -31,13 +48,14 @@ struct ResultRecord {
     QString metricsJson;    ///< `{name: value|null}`, as in `palpate-cli score --json`
     QString rubricJson;     ///< `{name: {value, sub_score, weight, contribution, full, zero}}`
     QString recordingPath;  ///< empty when the session was not recorded
+    ResultOutcome outcome = ResultOutcome::Unknown;
 };
 
 class ResultsDatabase {
     Q_DECLARE_TR_FUNCTIONS(palpate::ResultsDatabase)
 public:
     /// The version this build writes; files with a newer one are refused, older ones migrated.
-    static constexpr int kSchemaVersion = 2;
+    static constexpr int kSchemaVersion = 3;
 
     ResultsDatabase();
     ~ResultsDatabase();
@@ -56,7 +74,8 @@ public:
     qint64 addTrainee(const QString& name, QString* error = nullptr);
     /// By name.
     std::vector<TraineeRecord> trainees() const;
-    /// Stores a scored session (committed before returning). -1 on error (unknown trainee, ...).
+    /// Stores a scored session with its outcome (outcomeOf(report)), committed before returning.
+    /// -1 on error (unknown trainee, ...).
     qint64 addResult(qint64 traineeId, const ScoreReport& report, const QString& exerciseName,
                      const QString& exercisePath, const QDateTime& startedUtc, double durationS,
                      const QString& recordingPath, QString* error = nullptr);
@@ -71,6 +90,9 @@ public:
 private:
     bool fail(const QString& problem, QString* error) const;
     bool migrate(int from, QString* error);
+    /// Version 2 to 3: the outcome column, and `completed` for the old rows whose completion is 1
+    /// (the rest cannot be told apart from a time-up and stay Unknown).
+    QString migrateV2ToV3();
 
     QString mConnection;
     QString mPath;

@@ -43,7 +43,10 @@ struct FieldSpec {
     const char* label = "";  ///< the panel's row label, English (the panel translates it)
     const char* name = "";   ///< the field in a sentence ("damping ratio"); "": the label without its colon
     const char* tip = "";    ///< the panel's tooltip, English
-    int decimals = 0;        ///< the panel's decimals (Real, RealList)
+    int decimals = 0;        ///< the panel's decimals (Real, RealList): what a value keeps
+    /// The significant digits the panel shows (never more than `decimals`): a calibrated 14.072222222
+    /// mm/N reads 14.07 while it keeps its decimals; 0 shows every decimal.
+    int shownDigits = 4;
     double step = 1.0;       ///< the panel's single step
     bool required = false;   ///< a file's section must hold this key
     std::span<const char* const> choices = {};       ///< Choice: each value's name in files

@@ -9,13 +9,16 @@
 #include "device/SafetyFilter.h"
 #include "engine/loop/HapticSnapshot.h"
 #include "widgets/DevicePanel.h"
+#include "widgets/ParameterPanel.h"
 
 #include <QDir>
 #include <QImage>
 #include <QLabel>
+#include <QLayout>
 #include <QLineEdit>
 #include <QLocale>
 #include <QPushButton>
+#include <QSet>
 #include <QSignalSpy>
 #include <QTest>
 #include <QTreeWidget>
@@ -25,6 +28,7 @@
 #include <atomic>
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <thread>
 
 using namespace palpate;
@@ -275,6 +279,56 @@ TEST_F(DevicePanelTest, SnapshotShowsStatePhaseFlagsForceAndTool) {
               QStringLiteral("held off, ramping, clamped, stale sample, overrun, not ready"));
 }
 
+// The model asked for more than the device can give: the readout says the force was clipped.
+TEST_F(DevicePanelTest, ForceAboveTheDeviceMaximumIsShownAsClipped) {
+    DeviceSpec spec = testSpec();
+    spec.maxForceN = 3.3;
+    panel->setConnected(QStringLiteral("sim:stroke"), spec);
+    auto s = snapshot(DeviceState::Ready, SafetyPhase::Armed, kSafetyClamped);
+    s->commandedForceN = glm::vec3(0.0f, 0.0f, 4.12f);
+    s->forceN = glm::vec3(0.0f, 0.0f, 3.3f);
+    panel->updateFromSnapshot(*s);
+    EXPECT_TRUE(panel->forceClipped());
+    EXPECT_TRUE(panel->forceText().startsWith(QStringLiteral("3.30 N"))) << panel->forceText().toStdString();
+    EXPECT_TRUE(panel->forceText().contains(QStringLiteral("clipped at device max 3.30 N (the model asked 4.12 N)")))
+        << panel->forceText().toStdString();
+
+    // Below the maximum: the plain reading.
+    s = snapshot(DeviceState::Ready, SafetyPhase::Armed, 0);
+    s->commandedForceN = glm::vec3(0.0f, 0.0f, 1.2f);
+    s->forceN = s->commandedForceN;
+    panel->updateFromSnapshot(*s);
+    EXPECT_FALSE(panel->forceClipped());
+    EXPECT_FALSE(panel->forceText().contains(QStringLiteral("clipped"))) << panel->forceText().toStdString();
+
+    // Above the spec's maximum without the filter's flag (a device that clips itself) is clipped too.
+    s->commandedForceN = glm::vec3(0.0f, 0.0f, 5.0f);
+    s->forceN = glm::vec3(0.0f, 0.0f, 3.3f);
+    panel->updateFromSnapshot(*s);
+    EXPECT_TRUE(panel->forceClipped());
+    render(QStringLiteral("clipped"));
+}
+
+// The Connect button keeps its place whichever entry (long or short description, with or without
+// the waypoint file button) is chosen.
+TEST_F(DevicePanelTest, ConnectButtonStaysPutWhicheverEntryIsChosen) {
+    panel->resize(320, 720);  // narrow: the descriptions wrap onto different numbers of lines
+    render(QStringLiteral("narrow"));
+    QPushButton* connect = button("deviceConnectButton");
+    std::optional<QPoint> first;
+    QSet<int> descriptionHeights;
+    for (int i = 0; i < list()->topLevelItemCount(); ++i) {
+        list()->setCurrentItem(list()->topLevelItem(i));
+        panel->layout()->activate();
+        QCoreApplication::processEvents();
+        const QPoint at = connect->mapTo(panel.get(), QPoint(0, 0));
+        descriptionHeights.insert(panel->findChild<QLabel*>(QStringLiteral("deviceDescriptionLabel"))->height());
+        if (!first) first = at;
+        EXPECT_EQ(at, *first) << "entry " << list()->topLevelItem(i)->text(0).toStdString();
+    }
+    EXPECT_GT(descriptionHeights.size(), 1) << "the descriptions should differ in height at this width";
+}
+
 TEST_F(DevicePanelTest, UnplugMidSessionRaisesTheBannerUntilReadyAndArmed) {
     // Not connected: a Disconnected device is no surprise.
     panel->updateFromSnapshot(*snapshot(DeviceState::Disconnected, SafetyPhase::HoldOff, kSafetyNotReady));
@@ -377,6 +431,30 @@ private:
 };
 
 }  // namespace
+
+// End to end: a tissue stiff enough that the stroke's press asks more than sim:stroke's 3.3 N; the
+// safety filter clamps it, and the Device dock and the status bar say the force was clipped.
+TEST(DevicePanelWindow, AForceClampedToTheDeviceMaximumIsShownAsClipped) {
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    ASSERT_EQ(window.setDeviceUri(QStringLiteral("sim:stroke")), QString());
+    ASSERT_EQ(window.loadMesh(QString::fromStdString(cli::findResource(cli::kDefaultMesh))), QString());
+    TissuePreset stiff = window.session().preset();
+    stiff.params.springStiffnessNPerMm *= 4.0;  // rendered stiffness x4: several newtons at the press's depth
+    window.parameterPanel()->setPreset(stiff);
+    ASSERT_EQ(window.applyPreset(stiff), QString());
+    bool clipped = false, statusSaidSo = true;
+    for (int ticks = 0; ticks < 8000 && !clipped; ticks += 50) {
+        window.advanceTicks(50);
+        if (window.devicePanel()->forceClipped()) {
+            clipped = true;
+            statusSaidSo = window.statusText().contains(QStringLiteral("clipped at device max"));
+        }
+    }
+    ASSERT_TRUE(clipped) << window.devicePanel()->forceText().toStdString();
+    EXPECT_TRUE(window.devicePanel()->forceText().contains(QStringLiteral("clipped at device max 3.30 N")))
+        << window.devicePanel()->forceText().toStdString();
+    EXPECT_TRUE(statusSaidSo) << window.statusText().toStdString();
+}
 
 TEST(DevicePanelWindow, HardwareOpensOffTheGuiThreadAndFailuresAreShown) {
     auto release = std::make_shared<std::atomic<bool>>(false);

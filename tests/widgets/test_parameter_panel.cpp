@@ -14,16 +14,19 @@
 #include <QFile>
 #include <QImage>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QPixmap>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <QUndoStack>
+#include <QWheelEvent>
 
 #include <gtest/gtest.h>
 
@@ -770,4 +773,153 @@ TEST(ParameterPanel, EveryFieldComesFromItsEngineTable) {
     expectPanelFollowsTable("mass_spring", massSpringFields(), "mass-spring-symplectic");
     expectPanelFollowsTable("radius_of_influence", radiusOfInfluenceFields(), "radius-of-influence");
     expectPanelFollowsTable("ffd", ffdFields(), "ffd");
+}
+
+// Undo and redo edit the fields; what runs changes only on Apply. A field that differs from what
+// runs is marked (and its label), a bar says "Not applied", Apply confirms and clears the marks,
+// and Revert is one undoable step back to what runs (docs/user-guide.md, Parameters).
+TEST(ParameterPanelApplied, UndoAfterApplyShowsTheFieldsAsNotAppliedAndRevertGoesBack) {
+    ParameterPanel panel;
+    // As the main window does: the loop runs what was applied, and the panel is told.
+    QObject::connect(&panel, &ParameterPanel::applyRequested, &panel,
+                     [&panel](const TissuePreset& p) { panel.showApplied(p); });
+    QWidget* bar = panel.findChild<QWidget*>(QStringLiteral("unappliedBar"));
+    QLabel* applied = label(panel, "appliedLabel");
+    ASSERT_NE(bar, nullptr);
+    ASSERT_NE(applied, nullptr);
+    EXPECT_FALSE(panel.hasUnappliedChanges());
+    EXPECT_FALSE(visibleIn(bar, panel));
+
+    slopeSpin(panel, 0)->setValue(0.5);
+    EXPECT_TRUE(panel.hasUnappliedChanges());
+    EXPECT_TRUE(visibleIn(bar, panel));
+    EXPECT_TRUE(slopeSpin(panel, 0)->property("modified").toBool());
+    EXPECT_TRUE(label(panel, "slopeLabel0")->property("modified").toBool());
+    EXPECT_FALSE(slopeSpin(panel, 1)->property("modified").toBool());
+    EXPECT_EQ(panel.unappliedFields(), QStringList{QStringLiteral("|m1| (touched)")});
+    EXPECT_TRUE(label(panel, "unappliedLabel")->text().contains(QStringLiteral("|m1|")));
+
+    panel.apply();
+    EXPECT_DOUBLE_EQ(panel.runningPreset().params.slopeMagnitudeMmPerN[0], 0.5);
+    EXPECT_FALSE(panel.hasUnappliedChanges());
+    EXPECT_FALSE(visibleIn(bar, panel));
+    EXPECT_FALSE(slopeSpin(panel, 0)->property("modified").toBool());
+    EXPECT_TRUE(visibleIn(applied, panel));
+    EXPECT_TRUE(applied->text().startsWith(QStringLiteral("Applied to the running tissue at ")))
+        << applied->text().toStdString();
+
+    // Undo goes back in the fields, not in the loop: the field is marked as differing from what runs.
+    panel.undoStack()->undo();
+    EXPECT_DOUBLE_EQ(slopeSpin(panel, 0)->value(), 0.6);
+    EXPECT_DOUBLE_EQ(panel.runningPreset().params.slopeMagnitudeMmPerN[0], 0.5);
+    EXPECT_TRUE(panel.hasUnappliedChanges());
+    EXPECT_TRUE(slopeSpin(panel, 0)->property("modified").toBool());
+    EXPECT_TRUE(visibleIn(bar, panel));
+    EXPECT_FALSE(visibleIn(applied, panel));  // a stale confirmation would contradict the bar
+
+    // Revert: back to what runs, as a step of its own.
+    const int steps = panel.undoStack()->index() + 1;
+    QPushButton* revert = panel.findChild<QPushButton*>(QStringLiteral("revertButton"));
+    ASSERT_NE(revert, nullptr);
+    revert->click();
+    EXPECT_DOUBLE_EQ(slopeSpin(panel, 0)->value(), 0.5);
+    EXPECT_FALSE(panel.hasUnappliedChanges());
+    EXPECT_EQ(panel.undoStack()->undoText(), QStringLiteral("Revert to the running tissue"));
+    EXPECT_EQ(panel.undoStack()->index(), steps);  // the undone edit's redo is replaced by the revert
+    panel.undoStack()->undo();
+    EXPECT_DOUBLE_EQ(slopeSpin(panel, 0)->value(), 0.6);
+    EXPECT_TRUE(panel.hasUnappliedChanges());
+
+    // setPreset is a new baseline that runs: nothing marked.
+    panel.setPreset(TissuePreset{});
+    EXPECT_FALSE(panel.hasUnappliedChanges());
+    EXPECT_FALSE(slopeSpin(panel, 0)->property("modified").toBool());
+}
+
+TEST(ParameterPanelApplied, ModelAndHiddenSectionsCountAsNotApplied) {
+    ParameterPanel panel;
+    auto* model = panel.findChild<QComboBox*>(QStringLiteral("modelCombo"));
+    ASSERT_NE(model, nullptr);
+    model->setCurrentIndex(model->findData(QStringLiteral("ffd")));
+    EXPECT_TRUE(model->property("modified").toBool());
+    EXPECT_TRUE(panel.unappliedFields().contains(QStringLiteral("deformation model")));
+    model->setCurrentIndex(0);  // back to what runs
+    EXPECT_FALSE(panel.hasUnappliedChanges());
+}
+
+// The wheel over a field the user did not click scrolls the panel instead of changing the field.
+TEST(ParameterPanelWheel, WheelOverAnUnfocusedFieldScrollsTheDockAndLeavesTheField) {
+    ParameterPanel panel;
+    panel.resize(420, 360);  // shorter than the fields: the scroll area scrolls
+    panel.show();
+    QApplication::processEvents();
+    auto* scroll = panel.findChild<QScrollArea*>(QStringLiteral("parameterScroll"));
+    ASSERT_NE(scroll, nullptr);
+    ASSERT_GT(scroll->verticalScrollBar()->maximum(), 0);
+    QDoubleSpinBox* rate = doubleField(panel, "hapticRateSpin");
+    ASSERT_NE(rate, nullptr);
+    EXPECT_EQ(rate->focusPolicy(), Qt::StrongFocus);
+    const double before = rate->value();
+    const int scrolledBefore = scroll->verticalScrollBar()->value();
+
+    // A wheel turn over the field (a sent event is not passed on to parents, so it goes to the field
+    // itself, where the line edit under the cursor passes a real one on).
+    auto wheelOver = [](QWidget* field) {
+        const QPointF local = field->rect().center();
+        QWheelEvent wheel(local, field->mapToGlobal(local), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(field, &wheel);
+    };
+    wheelOver(rate);
+    EXPECT_EQ(rate->value(), before);
+    EXPECT_GT(scroll->verticalScrollBar()->value(), scrolledBefore);
+    EXPECT_EQ(panel.undoStack()->count(), 0);
+
+    auto* model = panel.findChild<QComboBox*>(QStringLiteral("modelCombo"));
+    const int modelBefore = model->currentIndex();
+    wheelOver(model);
+    EXPECT_EQ(model->currentIndex(), modelBefore);
+
+    // Once the user clicked into it, the wheel is the field's.
+    panel.activateWindow();
+    if (QTest::qWaitForWindowActive(&panel)) {
+        rate->setFocus();
+        if (rate->hasFocus()) {
+            wheelOver(rate);
+            EXPECT_NE(rate->value(), before);
+        }
+    }
+}
+
+// A calibrated slope keeps every decimal but shows a readable number, and leaving the field (which
+// reads the shown text back) does not round it.
+TEST(ParameterPanelDigits, CalibratedValuesShowFourSignificantDigitsAndKeepTheirDecimals) {
+    const QLocale saved;
+    QLocale::setDefault(QLocale::c());  // "14.07", not "14,07"
+    ParameterPanel panel;
+    TissuePreset p;
+    p.params.slopeLimitMmPerN = 100.0;
+    p.params.slopeMagnitudeMmPerN[0] = 14.072222222;
+    p.params.slopeMagnitudeMmPerN[1] = 7.123456789;
+    p.params.slopeMagnitudeMmPerN[2] = 0.012345678;
+    p.params.contactStiffnessNPerMm = 0.0125;
+    p.params.springStiffnessNPerMm = 0.071062271;
+    panel.setPreset(p);
+    QDoubleSpinBox* m1 = slopeSpin(panel, 0);
+    EXPECT_EQ(m1->text(), QStringLiteral("14.07 mm/N"));
+    EXPECT_EQ(slopeSpin(panel, 1)->text(), QStringLiteral("7.123 mm/N"));
+    EXPECT_EQ(slopeSpin(panel, 2)->text(), QStringLiteral("0.01235 mm/N"));
+    EXPECT_EQ(doubleField(panel, "slopeRingSpringStiffnessNPerMmSpin")->text(), QStringLiteral("0.07106 N/mm"));
+    EXPECT_DOUBLE_EQ(m1->value(), 14.072222222);
+
+    m1->interpretText();  // what focus-out and Return do
+    EXPECT_DOUBLE_EQ(m1->value(), 14.072222222);
+    EXPECT_EQ(panel.undoStack()->count(), 0);
+    EXPECT_DOUBLE_EQ(panel.preset().params.slopeMagnitudeMmPerN[0], 14.072222222);
+
+    // Typed digits are taken as typed.
+    m1->findChild<QLineEdit*>()->setText(QStringLiteral("14.5 mm/N"));
+    m1->interpretText();
+    EXPECT_DOUBLE_EQ(m1->value(), 14.5);
+    QLocale::setDefault(saved);
 }

@@ -155,7 +155,7 @@ TEST(ResultsDatabase, MigratesVersion1KeepingRows) {
                                  " '2025-01-02T04:00:00.000Z', 42.5, 77.5, '{\"completion\":1}', '{}')")});
     ResultsDatabase db;
     ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
-    EXPECT_EQ(db.schemaVersion(), 2);
+    EXPECT_EQ(db.schemaVersion(), ResultsDatabase::kSchemaVersion);
     const std::vector<TraineeRecord> trainees = db.trainees();
     ASSERT_EQ(trainees.size(), 1u);
     EXPECT_EQ(trainees[0].name, QStringLiteral("Carol"));
@@ -179,6 +179,67 @@ TEST(ResultsDatabase, MigratesVersion1KeepingRows) {
     EXPECT_EQ(rows[1].recordingPath, QStringLiteral("/r.palprec"));
 }
 
+// A session the trainee stopped is stored as stopped, not as a score of its own.
+TEST(ResultsDatabase, StoresHowEachSessionEnded) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("outcomes.sqlite"));
+    const QDateTime t = QDateTime(QDate(2026, 3, 1), QTime(10, 0), Qt::UTC);
+    {
+        ResultsDatabase db;
+        QString error;
+        ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
+        const qint64 eve = db.addTrainee(QStringLiteral("Eve"));
+        ScoreReport stopped = sampleReport(12.0);
+        stopped.guidance.completed = false;
+        ScoreReport timeUp = sampleReport(40.0);
+        timeUp.guidance.completed = false;
+        timeUp.guidance.timeUp = true;
+        ASSERT_GE(db.addResult(eve, sampleReport(80.0), QStringLiteral("Press"), QString(), t, 10.0, QString()), 0);
+        ASSERT_GE(db.addResult(eve, stopped, QStringLiteral("Press"), QString(), t.addSecs(60), 3.0, QString()), 0);
+        ASSERT_GE(db.addResult(eve, timeUp, QStringLiteral("Press"), QString(), t.addSecs(120), 60.0, QString()), 0);
+    }
+    ResultsDatabase db;
+    ASSERT_TRUE(db.open(path));
+    const std::vector<ResultRecord> rows = db.results(db.trainees().at(0).id);
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_EQ(rows[0].outcome, ResultOutcome::Completed);
+    EXPECT_EQ(rows[1].outcome, ResultOutcome::Stopped);
+    EXPECT_EQ(rows[2].outcome, ResultOutcome::TimeUp);
+    EXPECT_TRUE(isScored(rows[0].outcome));
+    EXPECT_FALSE(isScored(rows[1].outcome));
+    EXPECT_TRUE(isScored(rows[2].outcome));
+    EXPECT_DOUBLE_EQ(rows[1].score, 12.0);  // the partial score is kept, for the report
+}
+
+// A version-2 file gains the outcome column: rows whose completion is 1 are completed, the others
+// cannot be told apart (stopped or timed out) and stay unknown, counted as before.
+TEST(ResultsDatabase, MigratesVersion2AddingTheOutcome) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("v2.sqlite"));
+    QString error;
+    ASSERT_TRUE(ResultsDatabase::createVersion1(path, &error)) << error.toStdString();
+    // Version 2 as it shipped: version 1 and the recording path.
+    execOn(path, {QStringLiteral("ALTER TABLE results ADD COLUMN recording_path TEXT NOT NULL DEFAULT ''"),
+                  QStringLiteral("PRAGMA user_version = 2"),
+                  QStringLiteral("INSERT INTO trainees (name, created) VALUES ('Finn', '2025-01-02T03:04:05.000Z')"),
+                  QStringLiteral("INSERT INTO results (trainee_id, exercise_name, exercise_path, started_utc, duration_s,"
+                                 " score, metrics_json, rubric_json, recording_path) VALUES (1, 'Press', '/p.json',"
+                                 " '2025-01-02T04:00:00.000Z', 20, 85, '{\"completion\":1,\"time_s\":20}', '{}', '/a')"),
+                  QStringLiteral("INSERT INTO results (trainee_id, exercise_name, exercise_path, started_utc, duration_s,"
+                                 " score, metrics_json, rubric_json, recording_path) VALUES (1, 'Press', '/p.json',"
+                                 " '2025-01-02T04:01:00.000Z', 4, 0, '{\"completion\":0}', '{}', '')")});
+    ResultsDatabase db;
+    ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
+    EXPECT_EQ(db.schemaVersion(), 3);
+    const std::vector<ResultRecord> rows = db.results(db.trainees().at(0).id);
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows[0].outcome, ResultOutcome::Completed);
+    EXPECT_EQ(rows[0].recordingPath, QStringLiteral("/a"));
+    EXPECT_DOUBLE_EQ(rows[0].score, 85.0);
+    EXPECT_EQ(rows[1].outcome, ResultOutcome::Unknown);
+    EXPECT_TRUE(isScored(rows[1].outcome));
+}
+
 TEST(ResultsDatabase, RefusesNewerSchema) {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("future.sqlite"));
@@ -187,14 +248,15 @@ TEST(ResultsDatabase, RefusesNewerSchema) {
         ASSERT_TRUE(db.open(path));
         ASSERT_GE(db.addTrainee(QStringLiteral("Dan")), 0);
     }
-    execOn(path, {QStringLiteral("PRAGMA user_version = 3")});
+    const int newer = ResultsDatabase::kSchemaVersion + 1;
+    execOn(path, {QStringLiteral("PRAGMA user_version = %1").arg(newer)});
     ResultsDatabase db;
     QString error;
     EXPECT_FALSE(db.open(path, &error));
     EXPECT_FALSE(db.isOpen());
     EXPECT_TRUE(error.contains(path)) << error.toStdString();
     EXPECT_TRUE(error.contains(QStringLiteral("newer"))) << error.toStdString();
-    EXPECT_TRUE(error.contains(QStringLiteral("3"))) << error.toStdString();
+    EXPECT_TRUE(error.contains(QString::number(newer))) << error.toStdString();
     EXPECT_EQ(db.lastError(), error);
 }
 

@@ -30,15 +30,19 @@
 #include <QFileInfo>
 #include <QFile>
 #include <QImage>
+#include <QChart>
+#include <QLineSeries>
 #include <QLocale>
 #include <QProcess>
 #include <QPushButton>
 #include <QStandardPaths>
+#include <QStyle>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoGroup>
 #include <QUndoStack>
+#include <QValueAxis>
 
 #include <algorithm>
 
@@ -192,7 +196,7 @@ TEST(TraineeMode, ResultsSurviveReopeningAndTheHistoryChartsEachSession) {
         runToEnd(*window, 45000);
         ASSERT_TRUE(window->exercises().lastReport());
         firstScore = window->exercises().lastReport()->score;
-        // A second session of the bad path, stopped early: scored and stored too.
+        // A second session of the bad path, stopped early: stored as stopped, not as a score.
         ASSERT_EQ(window->setDeviceUri(QStringLiteral("sim:path:") + resource("exercises/press_targets.bad.path")), QString());
         ASSERT_EQ(window->exercises().start(), QString());
         window->advanceTicks(5000);
@@ -210,8 +214,14 @@ TEST(TraineeMode, ResultsSurviveReopeningAndTheHistoryChartsEachSession) {
     ASSERT_EQ(history->results().size(), 2u);
     EXPECT_EQ(history->results()[0].score, firstScore);
     EXPECT_EQ(history->results()[1].score, secondScore);
-    EXPECT_EQ(history->plottedPointCount(), 2);
+    EXPECT_EQ(history->results()[0].outcome, ResultOutcome::Completed);
+    EXPECT_EQ(history->results()[1].outcome, ResultOutcome::Stopped);
+    EXPECT_EQ(history->plottedPointCount(), 1);  // the stopped session is marked, not plotted as a score
+    EXPECT_EQ(history->stoppedMarkCount(), 1);
     EXPECT_EQ(history->table()->rowCount(), 2);
+    EXPECT_EQ(history->table()->item(0, 2)->text(), QStringLiteral("stopped"));
+    EXPECT_TRUE(history->summaryText().contains(QStringLiteral("mean %1").arg(firstScore, 0, 'f', 0)))
+        << history->summaryText().toStdString();
 
     // The stored result's report: its recording is re-scored (the same score) into a PDF.
     history->selectRow(0);  // newest first in the table: the stopped session
@@ -515,6 +525,106 @@ TEST(ForceGauge, ZonesFollowTheWindowAndTheExcessiveForce) {
     for (int y = 0; y < image.height(); ++y)
         for (int x = 0; x < image.width(); ++x) hits += image.pixelColor(x, y) == inside;
     EXPECT_GT(hits, 50);
+}
+
+namespace {
+
+ScoreReport reportOf(double score, bool completed) {
+    ScoreReport r;
+    r.exerciseName = "Press three targets";
+    r.score = score;
+    r.guidance.completed = completed;
+    return r;
+}
+
+}  // namespace
+
+// Sessions a minute apart are each their own place on the chart; a stopped one is marked, listed
+// as stopped and left out of the best and the mean.
+TEST(HistoryPanelChart, SessionsAMinuteApartAreSpacedAndAStoppedOneIsNotAScore) {
+    QTemporaryDir dir;
+    ResultsDatabase db;
+    ASSERT_TRUE(db.open(dir.filePath(QStringLiteral("h.sqlite"))));
+    const qint64 ada = db.addTrainee(QStringLiteral("Ada"));
+    const QDateTime t = QDateTime(QDate(2026, 12, 2), QTime(9, 36, 41), Qt::UTC);
+    ASSERT_GE(db.addResult(ada, reportOf(100.0, true), QStringLiteral("Press"), QString(), t, 14.4, QString()), 0);
+    ASSERT_GE(db.addResult(ada, reportOf(0.0, false), QStringLiteral("Press"), QString(), t.addSecs(60), 6.2, QString()), 0);
+    ASSERT_GE(db.addResult(ada, reportOf(80.0, true), QStringLiteral("Press"), QString(), t.addSecs(124), 15.0, QString()), 0);
+    ASSERT_GE(db.addResult(ada, reportOf(60.0, true), QStringLiteral("Press"), QString(), t.addSecs(169), 30.0, QString()), 0);
+
+    HistoryPanel history;
+    history.resize(340, 640);
+    history.setDatabase(&db);
+    history.show();
+    QApplication::processEvents();
+    ASSERT_EQ(history.results().size(), 4u);
+    EXPECT_EQ(history.plottedPointCount(), 3);
+    EXPECT_EQ(history.stoppedMarkCount(), 1);
+    EXPECT_TRUE(history.summaryText().contains(QStringLiteral("best 100, mean 80"))) << history.summaryText().toStdString();
+    EXPECT_TRUE(history.summaryText().contains(QStringLiteral("1 stopped"))) << history.summaryText().toStdString();
+    // Newest first: the stopped session is the third row, shown as stopped, not as 0.
+    EXPECT_EQ(history.table()->item(2, 2)->text(), QStringLiteral("stopped"));
+    EXPECT_EQ(history.table()->item(0, 2)->text(), QStringLiteral("60"));
+
+    // The scored points, on screen, are well apart (not a vertical line) and in session order.
+    QLineSeries* line = nullptr;
+    for (QAbstractSeries* s : history.chart()->series())
+        if (s->name() == QStringLiteral("Press")) line = qobject_cast<QLineSeries*>(s);
+    ASSERT_NE(line, nullptr);
+    ASSERT_EQ(line->count(), 3);
+    const QRectF plot = history.chart()->plotArea();
+    double previousX = -1e9;
+    for (const QPointF& p : line->points()) {
+        const double x = history.chart()->mapToPosition(p, line).x();
+        EXPECT_GT(x - previousX, plot.width() / 8.0) << "points closer than an eighth of the plot";
+        EXPECT_GE(x, plot.left());
+        EXPECT_LE(x, plot.right());
+        previousX = x;
+    }
+    // The axis counts sessions; the summary gives their dates on a 24-hour clock.
+    auto* axis = qobject_cast<QValueAxis*>(history.chart()->axes(Qt::Horizontal).value(0));
+    ASSERT_NE(axis, nullptr);
+    EXPECT_LT(axis->min(), 1.0);
+    EXPECT_GT(axis->max(), 4.0);
+    const QDateTime local = t.toLocalTime();
+    EXPECT_TRUE(history.summaryText().contains(local.toString(QStringLiteral("yyyy-MM-dd, HH:mm"))))
+        << history.summaryText().toStdString();
+    EXPECT_TRUE(history.summaryText().contains(local.addSecs(169).toString(QStringLiteral("HH:mm"))))
+        << history.summaryText().toStdString();
+}
+
+// Every metric name is readable in a narrow card: wrapped onto the rows' height, never cut off.
+TEST(ScoreCardLayout, MetricNamesWrapInsteadOfBeingCutOff) {
+    ScoreReport report = reportOf(72.0, true);
+    for (Metric m : {Metric::Completion, Metric::TimeS, Metric::TargetErrorMm, Metric::HoldInWindowFraction,
+                     Metric::ExcessiveForceEvents, Metric::ExcessiveForceFraction, Metric::MaxDisplacementMm,
+                     Metric::PathLengthMm, Metric::Economy}) {
+        MetricResult line;
+        line.metric = m;
+        line.value = 0.5;
+        line.weight = 1.0;
+        report.metrics.push_back(line);
+    }
+    ScoreCard card;
+    card.resize(300, 600);
+    card.setReport(report, QStringLiteral("Ada"));
+    card.show();
+    QApplication::processEvents();
+    QTableWidget* table = card.breakdownTable();
+    const QFontMetrics metrics = table->fontMetrics();
+    // The cell's text margins, as the style lays the text out.
+    const int marginPx = table->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, table) + 1;
+    const int nameWidthPx = table->columnWidth(0) - 2 * marginPx;
+    for (int row = 0; row < table->rowCount(); ++row) {
+        const QString name = table->item(row, 0)->text();
+        for (const QString& word : name.split(QLatin1Char(' ')))
+            EXPECT_LE(metrics.horizontalAdvance(word), nameWidthPx) << name.toStdString();
+        const QRect needed = metrics.boundingRect(QRect(0, 0, nameWidthPx, 10000), Qt::TextWordWrap, name);
+        EXPECT_LE(needed.height(), table->rowHeight(row)) << name.toStdString();
+        EXPECT_TRUE(table->item(row, 0)->toolTip().startsWith(name)) << name.toStdString();
+    }
+    // The name column gets the width it needs: the table is not wider than the card allows.
+    EXPECT_LE(table->width(), std::max(card.width(), table->minimumWidth()));
 }
 
 int main(int argc, char** argv) {
