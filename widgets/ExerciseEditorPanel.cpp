@@ -1,5 +1,7 @@
 #include "widgets/ExerciseEditorPanel.h"
 
+#include "widgets/ScrollWheelGuard.h"
+
 #include "widgets/ExerciseEditCommands.h"
 #include "widgets/Viewport.h"
 
@@ -468,6 +470,7 @@ void ExerciseEditorPanel::buildUi() {
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    guardScrollWheel(*scroll);
 
     mPlacingLabel = new QLabel(this);
     mPlacingLabel->setObjectName(QStringLiteral("placingLabel"));

@@ -1,5 +1,7 @@
 #include "widgets/ParameterPanel.h"
 
+#include "widgets/ScrollWheelGuard.h"
+
 #include "widgets/ParameterCommands.h"
 
 #include "engine/core/HapticRate.h"
@@ -512,13 +514,7 @@ void ParameterPanel::buildUi() {
     connect(mCalibrateButton, &QPushButton::clicked, this, [this] { calibrateSlopes(); });
 
     for (QAbstractSpinBox* spin : findChildren<QAbstractSpinBox*>()) watchEdits(spin);
-    // The wheel scrolls the fields; a spin box or combo takes it only once clicked or tabbed into,
-    // so that one passing under the cursor is not changed (eventFilter).
-    for (QWidget* field : mScroll->widget()->findChildren<QWidget*>())
-        if (qobject_cast<QAbstractSpinBox*>(field) || qobject_cast<QComboBox*>(field)) {
-            field->setFocusPolicy(Qt::StrongFocus);
-            field->installEventFilter(this);
-        }
+    guardScrollWheel(*mScroll);
 }
 
 void ParameterPanel::watchEdits(QWidget* spin) {
@@ -529,13 +525,6 @@ void ParameterPanel::watchEdits(QWidget* spin) {
 }
 
 bool ParameterPanel::eventFilter(QObject* watched, QEvent* event) {
-    if (event->type() == QEvent::Wheel) {
-        auto* field = qobject_cast<QWidget*>(watched);
-        if (field && (qobject_cast<QAbstractSpinBox*>(field) || qobject_cast<QComboBox*>(field)) && !field->hasFocus()) {
-            QCoreApplication::sendEvent(mScroll->viewport(), event);  // the scroll area scrolls instead
-            return true;
-        }
-    }
     if (event->type() == QEvent::ShortcutOverride) {
         const QKeySequence pressed(static_cast<QKeyEvent*>(event)->keyCombination());
         if (mUndoAction->shortcuts().contains(pressed) || mRedoAction->shortcuts().contains(pressed)) {

@@ -20,6 +20,8 @@
 #include "engine/scoring/TargetReachability.h"
 
 #include <QAction>
+#include <QWheelEvent>
+#include <QScrollBar>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
@@ -140,6 +142,28 @@ bool hasProblemStartingWith(const QStringList& problems, const QString& key) {
 }
 
 }  // namespace
+
+// Scrolling the editor's form with the wheel does not change a field that passes under the cursor.
+TEST(ExerciseEditor, WheelOverAnUnfocusedFieldScrollsTheFormAndLeavesTheField) {
+    Editor editor;
+    editor.panel.newExercise(ExerciseType::PressTargets);
+    editor.panel.resize(420, 300);  // shorter than the form: it scrolls
+    editor.panel.show();
+    QApplication::processEvents();
+    auto* scroll = editor.panel.findChild<QScrollArea*>(QStringLiteral("exerciseEditorScroll"));
+    ASSERT_NE(scroll, nullptr);
+    ASSERT_GT(scroll->verticalScrollBar()->maximum(), 0);
+    auto* timeLimit = editor.panel.findChild<QDoubleSpinBox*>(QStringLiteral("timeLimitSpin"));
+    ASSERT_NE(timeLimit, nullptr);
+    const double before = timeLimit->value();
+    const int scrolledBefore = scroll->verticalScrollBar()->value();
+    const QPointF local = timeLimit->rect().center();
+    QWheelEvent wheel(local, timeLimit->mapToGlobal(local), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
+                      Qt::NoScrollPhase, false);
+    QApplication::sendEvent(timeLimit, &wheel);
+    EXPECT_EQ(timeLimit->value(), before);
+    EXPECT_GT(scroll->verticalScrollBar()->value(), scrolledBefore);
+}
 
 TEST(ExerciseEditor, OpensEachShippedExampleAsTheEngineReadsIt) {
     Editor editor;
