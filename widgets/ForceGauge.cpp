@@ -50,10 +50,19 @@ QColor ForceGauge::barColour() const {
     }
 }
 
+double ForceGauge::shownScaleN() const {
+    if (mWindowMaxN <= mWindowMinN) return std::max({mFullScaleN, mExcessiveN * 1.15, 0.1});
+    double scaleN = 2.0 * mWindowMaxN;
+    // An excessive level not far beyond the window shares the scale (1-2 N and 3 N: 0-4 N).
+    if (mExcessiveN > 0.0 && mExcessiveN * 1.15 <= 3.0 * mWindowMaxN) scaleN = std::max(scaleN, mExcessiveN * 1.15);
+    return std::max(scaleN, 0.1);
+}
+
 void ForceGauge::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing, true);
-    const double scaleN = std::max({mFullScaleN, mExcessiveN * 1.15, mWindowMaxN * 1.25, 0.1});
+    const double scaleN = shownScaleN();
+    const bool excessiveShown = mExcessiveN > 0.0 && mExcessiveN < scaleN;
     const QRectF track(4.0, 4.0, width() - 8.0, height() - 22.0);
     const auto xOf = [&](double forceN) { return track.left() + track.width() * std::clamp(forceN / scaleN, 0.0, 1.0); };
 
@@ -64,7 +73,7 @@ void ForceGauge::paintEvent(QPaintEvent*) {
         p.setBrush(QColor(60, 190, 80, 90));
         p.drawRect(QRectF(QPointF(xOf(mWindowMinN), track.top()), QPointF(xOf(mWindowMaxN), track.bottom())));
     }
-    if (mExcessiveN > 0.0) {
+    if (excessiveShown) {
         p.setBrush(QColor(220, 40, 40, 70));
         p.drawRect(QRectF(QPointF(xOf(mExcessiveN), track.top()), QPointF(track.right(), track.bottom())));
     }
@@ -79,8 +88,14 @@ void ForceGauge::paintEvent(QPaintEvent*) {
     font.setPixelSize(10);
     p.setFont(font);
     const double labelY = track.bottom() + 14.0;
+    // Labels that would run into the one before (or into the reading at the right) are left out.
+    const double readingLeft = track.right() - 60.0;
+    double lastRight = -1e9;
     const auto label = [&](double forceN, const QString& text) {
         const double x = xOf(forceN);
+        const double halfWidth = p.fontMetrics().horizontalAdvance(text) / 2.0 + 2.0;
+        if (x - halfWidth < lastRight || x + halfWidth > readingLeft) return;
+        lastRight = x + halfWidth;
         p.drawLine(QPointF(x, track.bottom()), QPointF(x, track.bottom() + 3.0));
         p.drawText(QRectF(x - 30.0, track.bottom() + 3.0, 60.0, 14.0), Qt::AlignHCenter | Qt::AlignTop, text);
     };
@@ -88,12 +103,20 @@ void ForceGauge::paintEvent(QPaintEvent*) {
         label(mWindowMinN, QString::number(mWindowMinN, 'g', 3));
         label(mWindowMaxN, QString::number(mWindowMaxN, 'g', 3));
     }
-    if (mExcessiveN > 0.0) label(mExcessiveN, QString::number(mExcessiveN, 'g', 3));
+    if (excessiveShown) label(mExcessiveN, QString::number(mExcessiveN, 'g', 3));
     // The reading, right-aligned under the track's end, clear of the window's labels.
     font.setBold(true);
     p.setFont(font);
-    p.drawText(QRectF(track.right() - 60.0, labelY - 11.0, 60.0, 14.0), Qt::AlignRight | Qt::AlignTop,
+    p.drawText(QRectF(readingLeft, labelY - 11.0, 60.0, 14.0), Qt::AlignRight | Qt::AlignTop,
                tr("%1 N").arg(mForceN, 0, 'f', 2));
+    if (mExcessiveN > 0.0 && !excessiveShown) {
+        // Off this scale: the track's right end says where excessive begins.
+        font.setBold(false);
+        p.setFont(font);
+        p.setPen(QColor(200, 30, 30));
+        p.drawText(track.adjusted(0.0, 0.0, -4.0, 0.0), Qt::AlignRight | Qt::AlignVCenter,
+                   tr("excessive ≥ %1 N ▸").arg(QString::number(mExcessiveN, 'g', 3)));
+    }
 }
 
 }  // namespace palpate

@@ -26,6 +26,10 @@ public:
     double windowMinN() const { return mWindowMinN; }
     double windowMaxN() const { return mWindowMaxN; }
     double fullScaleN() const { return mFullScaleN; }
+    /// The force at the gauge's right end. With a window it is fitted to the window (twice its
+    /// upper end), so that a small window is not a sliver; the excessive zone is drawn when it falls
+    /// on that scale, else the right end names it. Without a window: the full scale.
+    double shownScaleN() const;
     /// Where the force is: -1 below the window, 0 inside, +1 above it (2 excessive).
     int zone() const;
     /// The bar's colour for the current zone (tests look for it in the picture).

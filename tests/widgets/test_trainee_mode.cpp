@@ -527,6 +527,28 @@ TEST(ForceGauge, ZonesFollowTheWindowAndTheExcessiveForce) {
     EXPECT_GT(hits, 50);
 }
 
+// A small window (what a soft tissue reaches with the mouse) fills a good part of the gauge, not a
+// sliver beside a far-away excessive level; a window near the excessive level shares its scale.
+TEST(ForceGauge, TheScaleFitsTheWindow) {
+    ForceGauge gauge;
+    gauge.resize(300, 44);
+    gauge.setExcessiveN(3.0);
+    gauge.setWindow(0.082, 0.16);
+    EXPECT_GE((gauge.windowMaxN() - gauge.windowMinN()) / gauge.shownScaleN(), 0.2);
+    gauge.setForceN(0.12);
+    EXPECT_EQ(gauge.zone(), 0);
+    gauge.setWindow(1.0, 2.0);
+    EXPECT_GT(gauge.shownScaleN(), 3.0);  // the 3 N excessive zone is on the scale
+    EXPECT_GE((gauge.windowMaxN() - gauge.windowMinN()) / gauge.shownScaleN(), 0.2);
+    if (const QString dir = qEnvironmentVariable("PALPATE_SHOT_DIR"); !dir.isEmpty()) {
+        gauge.setWindow(0.082, 0.16);
+        gauge.grab().save(dir + QStringLiteral("/gauge-small.png"));
+        gauge.setWindow(1.0, 2.0);
+        gauge.setForceN(1.5);
+        gauge.grab().save(dir + QStringLiteral("/gauge-1-2.png"));
+    }
+}
+
 namespace {
 
 ScoreReport reportOf(double score, bool completed) {
