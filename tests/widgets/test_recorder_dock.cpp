@@ -491,6 +491,33 @@ TEST_F(RecorderDock, StatusBarShowsTheRecordingsMeshInPlaybackAndTheLiveOneAfter
     EXPECT_TRUE(meshStatus->toolTip().contains(QStringLiteral("sphere_1442.off"))) << meshStatus->toolTip().toStdString();
 }
 
+TEST_F(RecorderDock, StatusBarFollowsAMeshSwitchInTheRecording) {
+    QTemporaryDir dir;
+    auto window = liveWindow(dir.path());
+    ASSERT_EQ(window->startRecording(), QString());
+    window->advanceTicks(500);
+    ASSERT_EQ(window->loadMesh(QString::fromStdString(cli::findResource("meshes/sphere_1442.off"))), QString());
+    window->advanceTicks(500);
+    ASSERT_EQ(window->stopRecording(), QString());
+    const QString path = window->recorderPanel()->recordingPath();
+
+    window->openRecording(path);
+    RecorderPanel* panel = window->recorderPanel();
+    ASSERT_TRUE(waitIdle(panel));
+    ASSERT_TRUE(window->inPlayback()) << panel->playbackErrorText().toStdString();
+    auto* meshStatus = window->findChild<QLabel*>(QStringLiteral("meshStatus"));
+    ASSERT_NE(meshStatus, nullptr);
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off, 3970 "))) << meshStatus->text().toStdString();
+    ASSERT_TRUE(panel->seekTo(panel->timeline()->lastTick()));
+    ASSERT_TRUE(waitIdle(panel));
+    window->advanceTicks(1);
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("sphere_1442.off, 1442 "))) << meshStatus->text().toStdString();
+    ASSERT_TRUE(panel->seekTo(panel->timeline()->firstTick()));  // back: the first scene again
+    ASSERT_TRUE(waitIdle(panel));
+    window->advanceTicks(1);
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off, 3970 "))) << meshStatus->text().toStdString();
+}
+
 namespace {
 
 /// Triggers `action`, which opens a modal file dialog; answers it with `choose` (rejects it when
