@@ -33,6 +33,7 @@
 
 #include <memory>
 #include <utility>
+#include <vector>
 
 namespace palpate {
 
@@ -105,7 +106,7 @@ public:
 protected:
     void doSetSource(const QUrl& name, QTextDocument::ResourceType type) override {
         QTextBrowser::doSetSource(name, type);
-        addHeadingAnchors(*document());  // a page reloaded needs them again; otherwise the same names
+        addHeadingAnchors(*document());  // a page reloaded needs them again
         // The fragment was looked for before the anchors existed.
         if (!name.fragment().isEmpty()) scrollToAnchor(name.fragment());
     }
@@ -146,13 +147,18 @@ bool migrateOldSettings() {
 
 void addHeadingAnchors(QTextDocument& document) {
     QHash<QString, int> seen;
-    QTextCursor cursor(&document);
-    cursor.beginEditBlock();
+    std::vector<std::pair<QTextBlock, QString>> unnamed;
     for (QTextBlock block = document.begin(); block.isValid(); block = block.next()) {
         if (block.blockFormat().headingLevel() == 0 || block.length() <= 1) continue;
-        QString slug = headingSlug(block.text());
-        if (const int n = seen.value(slug, 0); n > 0) slug += QStringLiteral("-%1").arg(n);
-        seen[headingSlug(block.text())] += 1;
+        const QString base = headingSlug(block.text());
+        const int repeat = seen[base]++;
+        const QString slug = repeat > 0 ? QStringLiteral("%1-%2").arg(base).arg(repeat) : base;
+        if (!block.begin().fragment().charFormat().anchorNames().contains(slug)) unnamed.emplace_back(block, slug);
+    }
+    if (unnamed.empty()) return;  // named already: the document stays as it is
+    QTextCursor cursor(&document);
+    cursor.beginEditBlock();
+    for (const auto& [block, slug] : unnamed) {
         cursor.setPosition(block.position());
         cursor.setPosition(block.position() + block.length() - 1, QTextCursor::KeepAnchor);
         QTextCharFormat anchor;

@@ -308,6 +308,10 @@ TEST(HeadingAnchors, GitHubSlugsAndRepeats) {
     EXPECT_EQ(names, (QStringList{QStringLiteral("palpate-user-guide"), QStringLiteral("the-tissue-parameters-and-presets"),
                                   QStringLiteral("writing-exercises-instructors"), QStringLiteral("notes"),
                                   QStringLiteral("notes-1")}));
+    // Again (a page shown again): nothing changes.
+    const int revision = document.revision();
+    addHeadingAnchors(document);
+    EXPECT_EQ(document.revision(), revision);
 }
 
 /// setApplicationNames() changes where QSettings and QStandardPaths point: put back the test's names.
