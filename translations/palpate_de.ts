@@ -462,11 +462,11 @@
     <name>palpate::ExerciseController</name>
     <message>
         <source>The results database is not open: trainees cannot be stored.</source>
-        <translation>Die Ergebnisdatenbank ist nicht geöffnet: Trainees können nicht gespeichert werden.</translation>
+        <translation>Die Ergebnisdatenbank ist nicht geöffnet: Teilnehmer können nicht gespeichert werden.</translation>
     </message>
     <message>
         <source>Choose a trainee, or add one with New…, before starting.</source>
-        <translation>Wählen Sie einen Trainee, oder legen Sie mit „Neu…“ einen an, bevor Sie beginnen.</translation>
+        <translation>Wählen Sie einen Teilnehmer, oder legen Sie mit „Neu…“ einen an, bevor Sie beginnen.</translation>
     </message>
     <message>
         <source>Choose an exercise first.</source>
@@ -689,7 +689,7 @@
     </message>
     <message>
         <source>Run this exercise now as a trainee would, without saving it (F5).</source>
-        <translation>Diese Übung jetzt wie ein Trainee durchführen, ohne sie zu speichern (F5).</translation>
+        <translation>Diese Übung jetzt wie ein Teilnehmer durchführen, ohne sie zu speichern (F5).</translation>
     </message>
     <message>
         <source>Stop placing</source>
@@ -713,11 +713,11 @@
     </message>
     <message>
         <source>What the trainee does. Each type keeps its own points: switching back restores them.</source>
-        <translation>Was der Trainee tut. Jeder Typ behält seine eigenen Punkte: beim Zurückwechseln sind sie wieder da.</translation>
+        <translation>Was der Teilnehmer tut. Jeder Typ behält seine eigenen Punkte: beim Zurückwechseln sind sie wieder da.</translation>
     </message>
     <message>
         <source>The name trainees and score reports see (name).</source>
-        <translation>Der Name, den Trainees und Bewertungsberichte sehen (name).</translation>
+        <translation>Der Name, den Teilnehmer und Bewertungsberichte sehen (name).</translation>
     </message>
     <message>
         <source>Required</source>
@@ -725,7 +725,7 @@
     </message>
     <message>
         <source>What the trainee is asked to do, shown before the exercise starts (description).</source>
-        <translation>Was der Trainee tun soll, angezeigt vor dem Start der Übung (description).</translation>
+        <translation>Was der Teilnehmer tun soll, angezeigt vor dem Start der Übung (description).</translation>
     </message>
     <message>
         <source>Tissue</source>
@@ -769,7 +769,7 @@
     </message>
     <message>
         <source>Time the trainee has (time_limit_s); what happens after it is not scored.</source>
-        <translation>Die Zeit, die der Trainee hat (time_limit_s); was danach geschieht, wird nicht bewertet.</translation>
+        <translation>Die Zeit, die der Teilnehmer hat (time_limit_s); was danach geschieht, wird nicht bewertet.</translation>
     </message>
     <message>
         <source> mm</source>
@@ -813,7 +813,7 @@
     </message>
     <message>
         <source>The order the trainee presses them in.</source>
-        <translation>Die Reihenfolge, in der der Trainee sie drückt.</translation>
+        <translation>Die Reihenfolge, in der der Teilnehmer sie drückt.</translation>
     </message>
     <message>
         <source>The target&apos;s vertex, in the mesh file&apos;s numbering (vertex).</source>
@@ -1512,11 +1512,11 @@ Tick %7 µs, %8-mal schneller als previous</translation>
     <name>palpate::HistoryPanel</name>
     <message>
         <source>Trainee:</source>
-        <translation>Trainee:</translation>
+        <translation>Teilnehmer:</translation>
     </message>
     <message>
         <source>Trainee</source>
-        <translation>Trainee</translation>
+        <translation>Teilnehmer</translation>
     </message>
     <message>
         <source>When</source>
@@ -1560,11 +1560,11 @@ Tick %7 µs, %8-mal schneller als previous</translation>
     </message>
     <message>
         <source>No trainee yet</source>
-        <translation>Noch kein Trainee</translation>
+        <translation>Noch kein Teilnehmer</translation>
     </message>
     <message>
         <source>No trainees yet: add one in the Exercise dock.</source>
-        <translation>Noch keine Trainees: legen Sie im Dock „Übung“ einen an.</translation>
+        <translation>Noch keine Teilnehmer: legen Sie im Dock „Übung“ einen an.</translation>
     </message>
     <message>
         <source>No results yet.</source>
@@ -2182,10 +2182,6 @@ Pausiert: %13</translation>
         <translation>Die Sitzung wird aufgenommen, oder eine Aufnahme wird wiedergegeben</translation>
     </message>
     <message>
-        <source>&amp;Play</source>
-        <translation>&amp;Fortsetzen</translation>
-    </message>
-    <message>
         <source>No mesh, %1</source>
         <translation>Kein Netz, %1</translation>
     </message>
@@ -2287,7 +2283,7 @@ Pausiert: %13</translation>
     </message>
     <message>
         <source>mark (trainee)</source>
-        <translation>Markierung (Trainee)</translation>
+        <translation>Markierung (Teilnehmer)</translation>
     </message>
     <message>
         <source>Mark added: %1</source>
@@ -2355,7 +2351,7 @@ Pausiert: %13</translation>
     </message>
     <message>
         <source>&amp;New Trainee…</source>
-        <translation>&amp;Neuer Trainee…</translation>
+        <translation>&amp;Neuer Teilnehmer…</translation>
     </message>
     <message>
         <source>&amp;Export Score Report (PDF)…</source>
@@ -2375,11 +2371,11 @@ Pausiert: %13</translation>
     </message>
     <message>
         <source>&amp;Trainee Mode</source>
-        <translation>&amp;Trainee-Modus</translation>
+        <translation>&amp;Teilnehmermodus</translation>
     </message>
     <message>
         <source>New Trainee</source>
-        <translation>Neuer Trainee</translation>
+        <translation>Neuer Teilnehmer</translation>
     </message>
     <message>
         <source>Name:</source>
@@ -2387,7 +2383,7 @@ Pausiert: %13</translation>
     </message>
     <message>
         <source>Trainee not added</source>
-        <translation>Trainee nicht hinzugefügt</translation>
+        <translation>Teilnehmer nicht hinzugefügt</translation>
     </message>
     <message>
         <source>Open Exercise</source>
@@ -2476,6 +2472,10 @@ Pausiert: %13</translation>
     <message>
         <source>Click the tissue to place; drag orbits; Esc stops placing</source>
         <translation>Auf das Gewebe klicken zum Platzieren; Ziehen dreht; Esc beendet das Platzieren</translation>
+    </message>
+    <message>
+        <source>Pause the simulation (ticked: paused; the tissue relaxes and the force is zero)</source>
+        <translation>Simulation anhalten (mit Haken: angehalten; das Gewebe entspannt sich, die Kraft ist null)</translation>
     </message>
 </context>
 <context>
@@ -3262,7 +3262,7 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
     </message>
     <message>
         <source>Recordings (in recordings/) and the trainees&apos; results (results.sqlite) are kept here.</source>
-        <translation>Aufnahmen (in recordings/) und die Ergebnisse der Trainees (results.sqlite) werden hier abgelegt.</translation>
+        <translation>Aufnahmen (in recordings/) und die Ergebnisse der Teilnehmer (results.sqlite) werden hier abgelegt.</translation>
     </message>
     <message>
         <source>&amp;Browse…</source>
@@ -3715,15 +3715,15 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
     </message>
     <message>
         <source>a trainee needs a name</source>
-        <translation>ein Trainee braucht einen Namen</translation>
+        <translation>ein Teilnehmer braucht einen Namen</translation>
     </message>
     <message>
         <source>cannot add trainee &quot;%1&quot;: %2</source>
-        <translation>Trainee „%1“ kann nicht hinzugefügt werden: %2</translation>
+        <translation>Teilnehmer „%1“ kann nicht hinzugefügt werden: %2</translation>
     </message>
     <message>
         <source>no trainee with id %1</source>
-        <translation>kein Trainee mit der ID %1</translation>
+        <translation>kein Teilnehmer mit der ID %1</translation>
     </message>
     <message>
         <source>cannot store the result: %1</source>
@@ -3916,7 +3916,7 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
     </message>
     <message>
         <source>Trainee:</source>
-        <translation>Trainee:</translation>
+        <translation>Teilnehmer:</translation>
     </message>
     <message>
         <source>Date:</source>
@@ -4100,7 +4100,7 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
     <name>palpate::TraineePanel</name>
     <message>
         <source>Trainee</source>
-        <translation>Trainee</translation>
+        <translation>Teilnehmer</translation>
     </message>
     <message>
         <source>New…</source>
@@ -4108,11 +4108,11 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
     </message>
     <message>
         <source>Add a trainee</source>
-        <translation>Einen Trainee hinzufügen</translation>
+        <translation>Einen Teilnehmer hinzufügen</translation>
     </message>
     <message>
         <source>Trainee:</source>
-        <translation>Trainee:</translation>
+        <translation>Teilnehmer:</translation>
     </message>
     <message>
         <source>Exercise</source>
@@ -4156,7 +4156,7 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
     </message>
     <message>
         <source>Choose a trainee and an exercise, then Start (F6).</source>
-        <translation>Einen Trainee und eine Übung wählen, dann „Starten“ (F6).</translation>
+        <translation>Einen Teilnehmer und eine Übung wählen, dann „Starten“ (F6).</translation>
     </message>
     <message>
         <source>Starting…</source>

@@ -2181,10 +2181,6 @@ Dijeda: %13</translation>
         <translation>Sesi sedang dirakam, atau rakaman sedang dimainkan semula</translation>
     </message>
     <message>
-        <source>&amp;Play</source>
-        <translation>&amp;Main</translation>
-    </message>
-    <message>
         <source>No mesh, %1</source>
         <translation>Tiada jejaring, %1</translation>
     </message>
@@ -2475,6 +2471,10 @@ pemapar %4</translation>
     <message>
         <source>Click the tissue to place; drag orbits; Esc stops placing</source>
         <translation>Klik tisu untuk meletakkan; seret memutar; Esc menghentikan peletakan</translation>
+    </message>
+    <message>
+        <source>Pause the simulation (ticked: paused; the tissue relaxes and the force is zero)</source>
+        <translation>Jeda simulasi (bertanda: dijeda; tisu kembali kendur dan daya menjadi sifar)</translation>
     </message>
 </context>
 <context>

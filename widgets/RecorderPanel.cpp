@@ -31,6 +31,7 @@ namespace palpate {
 namespace {
 
 const char* const kFolderKey = "recorder/folder";
+const char* const kOpenFolderKey = "recorder/openFolder";
 const QString kSuffix = QStringLiteral(".palprec");
 /// A frame's stepping stops after this much time: playback falls behind rather than freeze.
 constexpr qint64 kFrameBudgetNs = 12'000'000;
@@ -439,11 +440,21 @@ void RecorderPanel::updateButtons() {
 
 // --- playback --------------------------------------------------------------------------------
 
-void RecorderPanel::chooseRecording() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Recording"), mFolder,
-                                                      tr("Palpate recordings (*.palprec);;All files (*)"));
-    if (!path.isEmpty()) openRecording(path);
+QString RecorderPanel::openDialogFolder() const {
+    const QString last = QSettings().value(kOpenFolderKey).toString();
+    return !last.isEmpty() && QFileInfo(last).isDir() ? last : mFolder;
 }
+
+void RecorderPanel::chooseRecording() {
+    // Its own folder: without one, Qt starts where any file dialog was last (the meshes, say).
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Recording"), openDialogFolder(),
+                                                      tr("Palpate recordings (*.palprec);;All files (*)"));
+    if (path.isEmpty()) return;
+    QSettings().setValue(kOpenFolderKey, QFileInfo(path).absolutePath());
+    openRecording(path);
+}
+
+QString RecorderPanel::playbackMeshPath() const { return mPlayer ? mShownMeshPath : QString(); }
 
 bool RecorderPanel::openRecording(const QString& path) {
     if (mJob == Job::Open) return false;
@@ -792,6 +803,11 @@ void RecorderPanel::presentFrame() {
     if (s.sceneId != mShownSceneId) {
         // A new scene: the recording switched meshes, or a backwards seek rebuilt the same one.
         mShownSceneId = s.sceneId;
+        // The scene's file: the header's, or that of the last switch up to here.
+        std::string meshPath = mReader->header().scene.meshPath;
+        for (const RecordingEvent& e : mReader->events())
+            if (e.kind == EventKind::SceneChanged && e.scene && e.tick <= mPlayer->currentTick()) meshPath = e.scene->meshPath;
+        mShownMeshPath = QString::fromStdString(meshPath);
         const TissueMesh& mesh = mPlayer->mesh();
         const bool same = mShownMesh && mShownMesh->restPositionsMm() == mesh.restPositionsMm() &&
                           mShownMesh->triangles() == mesh.triangles();

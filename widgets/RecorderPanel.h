@@ -84,8 +84,11 @@ public:
     /// scene rebuilt). On success playbackStarted, then the mesh and the first tick. False when an
     /// open is already running.
     bool openRecording(const QString& path);
-    /// The file dialog (in the recordings folder), then openRecording.
+    /// The file dialog, then openRecording. It starts in the folder a recording was last chosen
+    /// from (QSettings "recorder/openFolder"), else in the recordings folder.
     void chooseRecording();
+    /// Where chooseRecording's dialog starts.
+    QString openDialogFolder() const;
     /// Drops the player and the reader (a running seek is stopped first, a file being opened is
     /// dropped when it arrives). Emits nothing.
     void closePlayback();
@@ -116,6 +119,10 @@ public:
     RecordingPlayer* player() { return mJob == Job::Seek ? nullptr : mPlayer.get(); }
     const RecordingReader* reader() const { return mReader.get(); }
     RecordingTimeline* timeline() const { return mTimeline; }
+    /// The mesh the replay shows (null outside playback, before its first frame), and its file as
+    /// the recording names it (the header's, or that of the last scene switch replayed).
+    const TissueMesh* playbackMesh() const { return mPlayer ? mShownMesh.get() : nullptr; }
+    QString playbackMeshPath() const;
     /// The player's tick (0 outside playback).
     std::uint64_t currentTick() const;
     const SceneSnapshot& frame() const { return mFrame; }
@@ -219,6 +226,7 @@ private:
     double mStartTimeS = 0.0;     ///< loop clock at the first recovered tick
     std::vector<ChunkInfo> mTimeChunks;  ///< data chunks by tick: loop time of any tick
     std::uint64_t mShownSceneId = 0;     ///< the replayed scene of the last frame
+    QString mShownMeshPath;  ///< its file, as the recording names it
     std::unique_ptr<TissueMesh> mShownMesh;  ///< copy of the mesh last emitted (a restart rebuilds the scene)
     SceneSnapshot mFrame;
 };

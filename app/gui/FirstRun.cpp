@@ -14,19 +14,26 @@
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
+#include <QHash>
 #include <QLibraryInfo>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPointer>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
+#include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextCursor>
+#include <QTextDocument>
 #include <QTranslator>
 #include <QVBoxLayout>
 
 #include <memory>
 #include <utility>
+#include <vector>
 
 namespace palpate {
 
@@ -90,7 +97,77 @@ void runExampleExercise(MainWindow& window) {
     warn(window, FirstRun::tr("Cannot run the example exercise"), window.runExercise(exercise, QString()));
 }
 
+/// The guide's browser: Qt's Markdown reader names no headings, so every document it loads gets
+/// their anchors (a reload too: a web link's click reloads the page).
+class GuideBrowser final : public QTextBrowser {
+public:
+    using QTextBrowser::QTextBrowser;
+
+protected:
+    void doSetSource(const QUrl& name, QTextDocument::ResourceType type) override {
+        QTextBrowser::doSetSource(name, type);
+        addHeadingAnchors(*document());  // a page reloaded needs them again
+        // The fragment was looked for before the anchors existed.
+        if (!name.fragment().isEmpty()) scrollToAnchor(name.fragment());
+    }
+};
+
+/// GitHub's heading slug: lower case, letters, digits, '-' and '_' kept, spaces to '-', the rest dropped.
+QString headingSlug(const QString& heading) {
+    QString slug;
+    for (const QChar c : heading.trimmed().toLower()) {
+        if (c.isLetterOrNumber() || c == QLatin1Char('-') || c == QLatin1Char('_')) slug += c;
+        else if (c == QLatin1Char(' ')) slug += QLatin1Char('-');
+    }
+    return slug;
+}
+
 }  // namespace
+
+void setApplicationNames() {
+    QCoreApplication::setApplicationName(QStringLiteral("palpate"));
+    // QSettings takes the domain when there is no organization name, QStandardPaths only the name:
+    // the preferences go to ~/.config/palpate/palpate.conf and the data stays in
+    // ~/.local/share/palpate (an organization name would move it to ~/.local/share/palpate/palpate).
+    QCoreApplication::setOrganizationName(QString());
+    QCoreApplication::setOrganizationDomain(QStringLiteral("palpate"));
+}
+
+bool migrateOldSettings() {
+    const QString newPath = QSettings().fileName();
+    const QDir oldFolder(QStandardPaths::writableLocation(QStandardPaths::GenericConfigLocation) +
+                         QStringLiteral("/Unknown Organization"));
+    const QString oldPath = oldFolder.filePath(QCoreApplication::applicationName() + QStringLiteral(".conf"));
+    if (QFileInfo::exists(newPath) || !QFileInfo::exists(oldPath)) return false;
+    QDir().mkpath(QFileInfo(newPath).absolutePath());
+    if (!QFile::rename(oldPath, newPath) && !QFile::copy(oldPath, newPath)) return false;
+    QDir().rmdir(oldFolder.absolutePath());  // only when empty: other programs' files stay
+    return true;
+}
+
+void addHeadingAnchors(QTextDocument& document) {
+    QHash<QString, int> seen;
+    std::vector<std::pair<QTextBlock, QString>> unnamed;
+    for (QTextBlock block = document.begin(); block.isValid(); block = block.next()) {
+        if (block.blockFormat().headingLevel() == 0 || block.length() <= 1) continue;
+        const QString base = headingSlug(block.text());
+        const int repeat = seen[base]++;
+        const QString slug = repeat > 0 ? QStringLiteral("%1-%2").arg(base).arg(repeat) : base;
+        if (!block.begin().fragment().charFormat().anchorNames().contains(slug)) unnamed.emplace_back(block, slug);
+    }
+    if (unnamed.empty()) return;  // named already: the document stays as it is
+    QTextCursor cursor(&document);
+    cursor.beginEditBlock();
+    for (const auto& [block, slug] : unnamed) {
+        cursor.setPosition(block.position());
+        cursor.setPosition(block.position() + block.length() - 1, QTextCursor::KeepAnchor);
+        QTextCharFormat anchor;
+        anchor.setAnchor(true);
+        anchor.setAnchorNames({slug});
+        cursor.mergeCharFormat(anchor);
+    }
+    cursor.endEditBlock();
+}
 
 bool loadLanguage(QCoreApplication& app, const QString& language) {
     for (QTranslator** t : {&gAppTranslator, &gQtTranslator}) {
@@ -163,8 +240,15 @@ WelcomePage* showWelcome(MainWindow& window) {
     return page;
 }
 
-WelcomePage* maybeShowWelcome(MainWindow& window) {
+WelcomePage* maybeShowWelcome(MainWindow& window, const QStringList& commandLineOptions) {
     if (QSettings().value(Preferences::kFirstRunDoneKey, false).toBool()) return nullptr;
+    // `palpate --exercise FILE` and the like: the page would cover what was asked for.
+    static const QStringList kTaskOptions = {
+        QStringLiteral("mesh"),       QStringLiteral("exercise"),       QStringLiteral("trainee"),
+        QStringLiteral("preset"),     QStringLiteral("open-recording"), QStringLiteral("screenshot"),
+        QStringLiteral("grab-after-ms"), QStringLiteral("show-dialog")};
+    for (const QString& option : commandLineOptions)
+        if (kTaskOptions.contains(option)) return nullptr;
     return showWelcome(window);
 }
 
@@ -213,7 +297,7 @@ QWidget* openUserGuide(QWidget* parent) {
     window->setObjectName(QStringLiteral("userGuide"));
     window->setAttribute(Qt::WA_DeleteOnClose);
     window->setWindowTitle(FirstRun::tr("Palpate User Guide"));
-    auto* browser = new QTextBrowser(window);
+    auto* browser = new GuideBrowser(window);
     browser->setObjectName(QStringLiteral("userGuideBrowser"));
     browser->setOpenLinks(true);
     browser->setOpenExternalLinks(false);

@@ -58,6 +58,7 @@ namespace {
 constexpr std::array<const char*, 5> kMenuDevices = {"sim:press", "sim:stroke", "sim:scan", "sim:sine", "mouse:"};
 constexpr int kMaxRecentFiles = 8;
 const char* const kRecentFilesKey = "recentFiles";
+const char* const kMeshFolderKey = "meshes/lastFolder";  // where File > Open Mesh… starts
 
 bool isMeshFile(const QString& path) {
     const QString suffix = QFileInfo(path).suffix().toLower();
@@ -341,11 +342,13 @@ void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QAction* open = file->addAction(tr("&Open Mesh…"), this, &MainWindow::openMeshDialog);
     open->setShortcut(QKeySequence::Open);
+    open->setObjectName(QStringLiteral("openMeshAction"));
     mOpenMeshAction = open;
     mRecentMenu = file->addMenu(tr("Open &Recent"));
     rebuildRecentMenu();
-    file->addAction(tr("Open Recor&ding…"), this, &MainWindow::openRecordingDialog)
-        ->setStatusTip(tr("Play a session recording back (the live session pauses meanwhile)"));
+    QAction* openRecording = file->addAction(tr("Open Recor&ding…"), this, &MainWindow::openRecordingDialog);
+    openRecording->setObjectName(QStringLiteral("openRecordingAction"));
+    openRecording->setStatusTip(tr("Play a session recording back (the live session pauses meanwhile)"));
     file->addSeparator();
     QAction* openPreset = mParameterPanel->openPresetAction();
     openPreset->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
@@ -392,10 +395,13 @@ void MainWindow::createMenus() {
     view->addAction(mHistoryDock->toggleViewAction());
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
+    // One meaning for the tick: paused (the text says what a click does, the tick what is).
     mPlayAction = simulation->addAction(tr("&Pause"), QKeySequence(Qt::Key_Space), this,
-                                        [this](bool on) { setPlaying(on); });
+                                        [this](bool paused) { setPlaying(!paused); });
+    mPlayAction->setObjectName(QStringLiteral("pauseAction"));
     mPlayAction->setCheckable(true);
-    mPlayAction->setChecked(isPlaying());
+    mPlayAction->setChecked(!isPlaying());
+    mPlayAction->setStatusTip(tr("Pause the simulation (ticked: paused; the tissue relaxes and the force is zero)"));
     mRestartAction = simulation->addAction(tr("&Restart"), QKeySequence(Qt::CTRL | Qt::Key_R), this, [this] {
         if (const QString error = restartSimulation(); !error.isEmpty())
             QMessageBox::warning(this, tr("Cannot restart"), error);
@@ -591,8 +597,7 @@ void MainWindow::advanceTicks(int ticks) {
 
 void MainWindow::setPlaying(bool playing) {
     mSession->setPaused(!playing);
-    mPlayAction->setChecked(playing);
-    mPlayAction->setText(playing ? tr("&Pause") : tr("&Play"));
+    mPlayAction->setChecked(!playing);
 }
 
 void MainWindow::observeFrame() {
@@ -651,11 +656,13 @@ void MainWindow::showStatus() {
     updateDocks();
     updateRecorder();
     const QString renderer = rendererName(mViewport->kind());
-    const auto& mesh = mSession->drawnMesh();
+    // In playback the viewport shows the recording's mesh: so does the status bar.
+    const bool replayed = mPlayback && mRecorderPanel->playbackMesh();
+    const TissueMesh* mesh = replayed ? mRecorderPanel->playbackMesh() : mSession->drawnMesh().get();
     if (!mesh) {
         mMeshLabel->setText(tr("No mesh, %1").arg(renderer));
     } else {
-        const QString path = QString::fromStdString(mSession->drawnPath());
+        const QString path = replayed ? mRecorderPanel->playbackMeshPath() : QString::fromStdString(mSession->drawnPath());
         mMeshLabel->setText(
             tr("%1, %2 vertices, %3").arg(QFileInfo(path).fileName()).arg(mesh->vertexCount()).arg(renderer));
         mMeshLabel->setToolTip(tr("%1\n%2 vertices, %3 triangles\n%4 renderer")
@@ -708,11 +715,20 @@ QString MainWindow::statusText() const {
     return parts.join(QStringLiteral("   |   "));
 }
 
+QString MainWindow::meshDialogFolder() const {
+    const QString last = QSettings().value(kMeshFolderKey).toString();
+    if (!last.isEmpty() && QFileInfo(last).isDir()) return last;
+    const std::string bundled = cli::findResource(cli::kDefaultMesh);
+    return bundled.empty() ? QString() : QFileInfo(QString::fromStdString(bundled)).absolutePath();
+}
+
 void MainWindow::openMeshDialog() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Mesh"), QString(),
+    // Its own folder: without one, Qt starts where any file dialog was last (the recordings, say).
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Mesh"), meshDialogFolder(),
                                                       tr("Meshes (*.obj *.off *.ply *.stl *.om);;All files (*)"));
     if (path.isEmpty()) return;
     const QString error = loadMesh(path);
+    if (error.isEmpty()) QSettings().setValue(kMeshFolderKey, QFileInfo(path).absolutePath());
     // The error names the file and every problem found.
     if (!error.isEmpty()) QMessageBox::warning(this, tr("Cannot open mesh"), error);
 }
@@ -730,7 +746,9 @@ void MainWindow::createRecorderDock() {
     connect(mRecorderPanel, &RecorderPanel::markRequested, this, [this](const QString& text) { addRecordingMark(text); });
     connect(mRecorderPanel, &RecorderPanel::playbackStarted, this, &MainWindow::enterPlayback);
     connect(mRecorderPanel, &RecorderPanel::playbackMeshChanged, this, [this](const TissueMesh& mesh) {
-        if (mPlayback) mViewport->setMesh(mesh);
+        if (!mPlayback) return;
+        mViewport->setMesh(mesh);
+        showStatus();  // the recording's mesh in the status bar
     });
     connect(mRecorderPanel, &RecorderPanel::playbackFrame, this, [this](const SceneSnapshot& frame) {
         if (mPlayback) mViewport->setSnapshot(frame);

@@ -114,6 +114,9 @@ public:
     /// preview (nothing stored). What --exercise does. "" or why not.
     QString runExercise(const QString& path, const QString& trainee);
 
+    /// Where File > Open Mesh… starts: the folder a mesh was last opened from with it (QSettings
+    /// "meshes/lastFolder"), else the bundled meshes.
+    QString meshDialogFolder() const;
     /// Recent mesh files, newest first (kept in QSettings).
     QStringList recentFiles() const;
     /// Play/Pause: resumes or pauses the loop (paused, the tissue relaxes and the force is zero).

@@ -65,7 +65,8 @@ int main(int argc, char** argv) {
         qputenv("QT_QPA_PLATFORM", "offscreen");
 
     QApplication app(argc, argv);
-    QApplication::setApplicationName(QStringLiteral("palpate"));
+    palpate::setApplicationNames();  // before the first QSettings (FirstRun.h)
+    palpate::migrateOldSettings();
     QApplication::setApplicationVersion(QStringLiteral(PALPATE_VERSION));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/palpate-256.png")));
     QGuiApplication::setDesktopFileName(QStringLiteral("org.palpate.Palpate"));  // packaging/*.desktop
@@ -287,7 +288,7 @@ int main(int argc, char** argv) {
 
     window.resize(kWindowWidthPx, kWindowHeightPx);
     window.show();
-    if (interactive) palpate::maybeShowWelcome(window);
+    if (interactive) palpate::maybeShowWelcome(window, parser.optionNames());  // not over --exercise etc.
     if (parser.isSet(showDockOption)) {
         const QStringList parts = parser.value(showDockOption).split(QLatin1Char(':'));
         auto* dock = window.findChild<QDockWidget*>(parts.front() + QStringLiteral("Dock"));

@@ -25,9 +25,17 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QAbstractTextDocumentLayout>
+#include <QFile>
+#include <QScrollBar>
+#include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextCursor>
+#include <QTextDocument>
 
+#include <cstdlib>
 #include <memory>
+#include <utility>
 
 using namespace palpate;
 
@@ -224,6 +232,143 @@ TEST_F(FirstRunTest, UserGuideOpensFromHelpWithF1) {
     // The guide's pictures load (the document has images, all of them found next to the guide).
     EXPECT_TRUE(browser->toHtml().contains(QLatin1String("<img")));
     EXPECT_TRUE(mOpened.isEmpty());  // nothing went to a browser
+}
+
+TEST_F(FirstRunTest, WelcomeIsNotShownOverACommandLineTask) {
+    auto window = makeWindow();
+    // `palpate --exercise FILE ...` (and --mesh, --open-recording...): the command line says what to do.
+    for (const char* option : {"exercise", "mesh", "open-recording", "preset", "trainee", "show-dialog"}) {
+        EXPECT_EQ(maybeShowWelcome(*window, {QStringLiteral("mode"), QLatin1String(option)}), nullptr) << option;
+        EXPECT_EQ(window->findChild<WelcomePage*>(QStringLiteral("welcomePage")), nullptr) << option;
+    }
+    // Options that only set something up (the device, the mode) leave the first start as it is.
+    WelcomePage* page = maybeShowWelcome(*window, {QStringLiteral("device"), QStringLiteral("mode")});
+    ASSERT_NE(page, nullptr);
+    EXPECT_TRUE(page->isVisible());
+    page->reject();
+}
+
+TEST_F(FirstRunTest, UserGuideContentsLinksScrollToTheirHeading) {
+    auto window = makeWindow();
+    auto* dialog = openUserGuide(window.get());
+    ASSERT_NE(dialog, nullptr);
+    auto* browser = window->findChild<QTextBrowser*>(QStringLiteral("userGuideBrowser"));
+    ASSERT_NE(browser, nullptr);
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(dialog));
+    QTextDocument* document = browser->document();
+    // The contents' links, and the headings they name.
+    int linksChecked = 0;
+    const std::pair<const char*, const char*> kLinks[] = {{"where-palpate-keeps-things", "Where Palpate keeps things"},
+                                                          {"the-tissue-parameters-and-presets", "The tissue: parameters and presets"},
+                                                          {"installing", "Installing"}};
+    for (const auto& [slug, title] : kLinks) {
+        const QString href = QLatin1Char('#') + QLatin1String(slug);
+        QTextCursor link;
+        for (QTextBlock b = document->begin(); b.isValid() && link.isNull(); b = b.next())
+            for (auto it = b.begin(); !it.atEnd(); ++it)
+                if (it.fragment().charFormat().anchorHref() == href) {
+                    link = QTextCursor(document);
+                    link.setPosition(it.fragment().position() + 1);
+                    break;
+                }
+        ASSERT_FALSE(link.isNull()) << "no contents link to " << slug;
+        QTextBlock heading;
+        for (QTextBlock b = document->begin(); b.isValid(); b = b.next())
+            if (b.blockFormat().headingLevel() > 0 && b.text() == QLatin1String(title)) heading = b;
+        ASSERT_TRUE(heading.isValid()) << "no heading " << title;
+
+        // Back to the top, where the contents are, and click the link.
+        browser->verticalScrollBar()->setValue(0);
+        QApplication::processEvents();
+        const QRect at = browser->cursorRect(link);
+        ASSERT_TRUE(browser->viewport()->rect().contains(at.center())) << slug;
+        QTest::mouseClick(browser->viewport(), Qt::LeftButton, {}, at.center());
+        QApplication::processEvents();
+        const int headingY = int(document->documentLayout()->blockBoundingRect(heading).top());
+        EXPECT_GT(browser->verticalScrollBar()->value(), 0) << slug;
+        // The heading is at the top of the view (or the view is scrolled to its end).
+        EXPECT_TRUE(std::abs(browser->verticalScrollBar()->value() - headingY) <= 2 ||
+                    browser->verticalScrollBar()->value() == browser->verticalScrollBar()->maximum())
+            << slug << ": scrolled to " << browser->verticalScrollBar()->value() << ", heading at " << headingY;
+        EXPECT_TRUE(browser->toPlainText().contains(QLatin1String("Palpate user guide")));  // still the guide
+        ++linksChecked;
+    }
+    EXPECT_EQ(linksChecked, 3);
+    EXPECT_TRUE(mOpened.isEmpty());  // nothing went to a browser
+}
+
+TEST(HeadingAnchors, GitHubSlugsAndRepeats) {
+    QTextDocument document;
+    document.setMarkdown(QStringLiteral("# Palpate user guide\n\n## The tissue: parameters and presets\n\ntext\n\n"
+                                        "## Writing exercises (instructors)\n\n## Notes\n\n## Notes\n"));
+    addHeadingAnchors(document);
+    QStringList names;
+    for (QTextBlock b = document.begin(); b.isValid(); b = b.next())
+        if (b.blockFormat().headingLevel() > 0) names << b.begin().fragment().charFormat().anchorNames();
+    EXPECT_EQ(names, (QStringList{QStringLiteral("palpate-user-guide"), QStringLiteral("the-tissue-parameters-and-presets"),
+                                  QStringLiteral("writing-exercises-instructors"), QStringLiteral("notes"),
+                                  QStringLiteral("notes-1")}));
+    // Again (a page shown again): nothing changes.
+    const int revision = document.revision();
+    addHeadingAnchors(document);
+    EXPECT_EQ(document.revision(), revision);
+}
+
+/// setApplicationNames() changes where QSettings and QStandardPaths point: put back the test's names.
+class ApplicationNames : public ::testing::Test {
+protected:
+    void SetUp() override {
+        mName = QCoreApplication::applicationName();
+        mOrganization = QCoreApplication::organizationName();
+        mDomain = QCoreApplication::organizationDomain();
+    }
+    void TearDown() override {
+        QCoreApplication::setApplicationName(mName);
+        QCoreApplication::setOrganizationName(mOrganization);
+        QCoreApplication::setOrganizationDomain(mDomain);
+    }
+    QString mName, mOrganization, mDomain;
+};
+
+TEST_F(ApplicationNames, SettingsWhereTheGuideSaysAndTheDataFolderStays) {
+    setApplicationNames();
+    // docs/user-guide.md, "Where Palpate keeps things" (test mode: under ~/.qttest instead of ~).
+    const QString config = QStandardPaths::writableLocation(QStandardPaths::GenericConfigLocation);
+    EXPECT_EQ(QSettings().fileName(), config + QStringLiteral("/palpate/palpate.conf"));
+    const QString data = QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation);
+    EXPECT_EQ(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation), data + QStringLiteral("/palpate"));
+    EXPECT_EQ(Preferences::defaultDataFolder(), data + QStringLiteral("/palpate"));
+    EXPECT_EQ(RecorderPanel::defaultRecordingFolder(), data + QStringLiteral("/palpate/recordings"));
+    EXPECT_EQ(ExerciseController::defaultDatabasePath(), data + QStringLiteral("/palpate/results.sqlite"));
+}
+
+TEST_F(ApplicationNames, OldSettingsFileIsMovedOnce) {
+    setApplicationNames();
+    const QString config = QStandardPaths::writableLocation(QStandardPaths::GenericConfigLocation);
+    const QString oldPath = config + QStringLiteral("/Unknown Organization/palpate.conf");
+    const QString newPath = QSettings().fileName();
+    QFile::remove(oldPath);  // a failed run's leftovers
+    QFile::remove(newPath);
+    EXPECT_FALSE(migrateOldSettings());  // nothing to move
+    auto writeOld = [&](const char* mode) {
+        ASSERT_TRUE(QDir().mkpath(QFileInfo(oldPath).absolutePath()));
+        QFile old(oldPath);
+        ASSERT_TRUE(old.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        old.write(QByteArray("[General]\nfirstRunDone=true\n\n[window]\nmode=") + mode + "\n");
+    };
+    writeOld("trainee");
+    ASSERT_TRUE(migrateOldSettings());
+    EXPECT_FALSE(QFileInfo::exists(oldPath));
+    EXPECT_TRUE(QSettings().value(QStringLiteral("firstRunDone")).toBool());
+    EXPECT_EQ(QSettings().value(QStringLiteral("window/mode")).toString(), QStringLiteral("trainee"));
+    // Once: a file that turns up at the old place later does not replace the preferences.
+    writeOld("instructor");
+    EXPECT_FALSE(migrateOldSettings());
+    EXPECT_TRUE(QFileInfo::exists(oldPath));
+    EXPECT_EQ(QSettings().value(QStringLiteral("window/mode")).toString(), QStringLiteral("trainee"));
+    QFile::remove(oldPath);
+    QFile::remove(newPath);
+    QDir(config).rmdir(QStringLiteral("Unknown Organization"));
 }
 
 TEST(FormatForce, NewtonsAndGramForce) {

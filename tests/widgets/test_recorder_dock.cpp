@@ -17,19 +17,26 @@
 #include <QApplication>
 #include <QDir>
 #include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 #include <algorithm>
 #include <cstring>
 
 using namespace palpate;
+
+// QStrings in gtest's messages as text.
+void PrintTo(const QString& text, std::ostream* out) { *out << '"' << text.toStdString() << '"'; }
 
 namespace {
 
@@ -459,6 +466,138 @@ TEST_F(RecorderDock, BackToLiveResumesTheLiveLoop) {
     EXPECT_EQ(window->viewport()->scene().vertexCount(), window->session().drawnMesh()->vertexCount());
     EXPECT_EQ(window->startRecording(), QString());  // and recording works again
     EXPECT_EQ(window->stopRecording(), QString());
+}
+
+TEST_F(RecorderDock, StatusBarShowsTheRecordingsMeshInPlaybackAndTheLiveOneAfter) {
+    auto window = liveWindow(sDir->path());
+    // The live session on another mesh than the recording's (stomach_3970).
+    const QString sphere = QString::fromStdString(cli::findResource("meshes/sphere_1442.off"));
+    ASSERT_EQ(window->loadMesh(sphere), QString());
+    window->advanceTicks(10);
+    auto* meshStatus = window->findChild<QLabel*>(QStringLiteral("meshStatus"));
+    ASSERT_NE(meshStatus, nullptr);
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("sphere_1442.off, 1442 "))) << meshStatus->text().toStdString();
+
+    window->openRecording(sPath);
+    ASSERT_TRUE(waitIdle(window->recorderPanel()));
+    ASSERT_TRUE(window->inPlayback());
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off, 3970 "))) << meshStatus->text().toStdString();
+    EXPECT_TRUE(meshStatus->toolTip().contains(QStringLiteral("stomach_3970.off"))) << meshStatus->toolTip().toStdString();
+    window->advanceTicks(1);  // the status bar's own refresh keeps it
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off, 3970 "))) << meshStatus->text().toStdString();
+
+    window->backToLive();
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("sphere_1442.off, 1442 "))) << meshStatus->text().toStdString();
+    EXPECT_TRUE(meshStatus->toolTip().contains(QStringLiteral("sphere_1442.off"))) << meshStatus->toolTip().toStdString();
+}
+
+TEST_F(RecorderDock, StatusBarFollowsAMeshSwitchInTheRecording) {
+    QTemporaryDir dir;
+    auto window = liveWindow(dir.path());
+    ASSERT_EQ(window->startRecording(), QString());
+    window->advanceTicks(500);
+    ASSERT_EQ(window->loadMesh(QString::fromStdString(cli::findResource("meshes/sphere_1442.off"))), QString());
+    window->advanceTicks(500);
+    ASSERT_EQ(window->stopRecording(), QString());
+    const QString path = window->recorderPanel()->recordingPath();
+
+    window->openRecording(path);
+    RecorderPanel* panel = window->recorderPanel();
+    ASSERT_TRUE(waitIdle(panel));
+    ASSERT_TRUE(window->inPlayback()) << panel->playbackErrorText().toStdString();
+    auto* meshStatus = window->findChild<QLabel*>(QStringLiteral("meshStatus"));
+    ASSERT_NE(meshStatus, nullptr);
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off, 3970 "))) << meshStatus->text().toStdString();
+    ASSERT_TRUE(panel->seekTo(panel->timeline()->lastTick()));
+    ASSERT_TRUE(waitIdle(panel));
+    window->advanceTicks(1);
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("sphere_1442.off, 1442 "))) << meshStatus->text().toStdString();
+    ASSERT_TRUE(panel->seekTo(panel->timeline()->firstTick()));  // back: the first scene again
+    ASSERT_TRUE(waitIdle(panel));
+    window->advanceTicks(1);
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off, 3970 "))) << meshStatus->text().toStdString();
+}
+
+namespace {
+
+/// Triggers `action`, which opens a modal file dialog; answers it with `choose` (rejects it when
+/// empty) and returns the folder the dialog started in ("" when no dialog came).
+QString answerFileDialog(QAction* action, const QString& choose) {
+    QString startedIn;
+    QTimer poll;
+    poll.setInterval(10);
+    QObject::connect(&poll, &QTimer::timeout, [&] {
+        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+        if (!dialog) return;
+        poll.stop();
+        startedIn = dialog->directory().absolutePath();
+        auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+        if (choose.isEmpty() || !name) {
+            dialog->reject();
+        } else {
+            // Typed, as a user would: selectFile() leaves a focused name field alone.
+            name->setText(choose);
+            static_cast<QDialog*>(dialog)->accept();  // QFileDialog::accept, as its Open button
+        }
+    });
+    poll.start();
+    QTimer giveUp;  // no dialog, or one that is not a QFileDialog: do not hang
+    giveUp.setSingleShot(true);
+    giveUp.start(kWaitMs);
+    QObject::connect(&giveUp, &QTimer::timeout, [] {
+        if (QWidget* modal = QApplication::activeModalWidget()) {
+            ADD_FAILURE() << "left open: " << modal->metaObject()->className() << " " << modal->windowTitle().toStdString();
+            modal->close();
+        }
+    });
+    action->trigger();
+    return startedIn;
+}
+
+}  // namespace
+
+TEST_F(RecorderDock, OpenMeshAndOpenRecordingDialogsStartInTheirOwnFolders) {
+    QSettings().remove(QStringLiteral("meshes/lastFolder"));
+    QSettings().remove(QStringLiteral("recorder/openFolder"));
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString meshes = dir.filePath(QStringLiteral("my-meshes"));
+    const QString elsewhere = dir.filePath(QStringLiteral("old-recordings"));
+    ASSERT_TRUE(QDir().mkpath(meshes) && QDir().mkpath(elsewhere));
+    const QString sphere = QDir(meshes).filePath(QStringLiteral("sphere.off"));
+    ASSERT_TRUE(QFile::copy(QString::fromStdString(cli::findResource("meshes/sphere_1442.off")), sphere));
+    const QString recording = QDir(elsewhere).filePath(QStringLiteral("old.palprec"));
+    ASSERT_TRUE(QFile::copy(sPath, recording));
+
+    auto window = liveWindow(dir.filePath(QStringLiteral("recordings")));
+    window->show();
+    auto* openMesh = window->findChild<QAction*>(QStringLiteral("openMeshAction"));
+    auto* openRecording = window->findChild<QAction*>(QStringLiteral("openRecordingAction"));
+    ASSERT_NE(openMesh, nullptr);
+    ASSERT_NE(openRecording, nullptr);
+    const QString bundled = QFileInfo(meshPath()).absolutePath();
+    const QString recordings = QFileInfo(window->recorderPanel()->recordingFolder()).absoluteFilePath();
+    QDir().mkpath(recordings);  // a dialog starts only in a folder that exists
+
+    // First time: the bundled meshes, and the recordings folder.
+    EXPECT_EQ(answerFileDialog(openRecording, {}), recordings);
+    EXPECT_EQ(answerFileDialog(openMesh, sphere), bundled);
+    window->advanceTicks(1);  // the loop takes the new scene
+    EXPECT_EQ(QString::fromStdString(window->session().drawnPath()), sphere);
+    // Each dialog starts where it was last used, whatever the other did in between.
+    EXPECT_EQ(answerFileDialog(openRecording, recording), recordings);
+    ASSERT_TRUE(waitIdle(window->recorderPanel()));
+    EXPECT_TRUE(window->inPlayback()) << window->recorderPanel()->playbackErrorText().toStdString();
+    window->backToLive();
+    EXPECT_EQ(answerFileDialog(openMesh, {}), meshes);
+    EXPECT_EQ(answerFileDialog(openRecording, {}), elsewhere);
+    EXPECT_EQ(answerFileDialog(openMesh, {}), meshes);
+    // Kept for the next start.
+    auto next = liveWindow(dir.filePath(QStringLiteral("recordings")));
+    EXPECT_EQ(next->meshDialogFolder(), meshes);
+    EXPECT_EQ(next->recorderPanel()->openDialogFolder(), elsewhere);
+    QSettings().remove(QStringLiteral("meshes/lastFolder"));
+    QSettings().remove(QStringLiteral("recorder/openFolder"));
 }
 
 TEST_F(RecorderDock, BackToLiveWhileAFileOpensDropsIt) {

@@ -3,11 +3,14 @@
 // back to English gives the English menus. Own main().
 #include "app/gui/FirstRun.h"
 #include "app/gui/MainWindow.h"
+#include "widgets/HistoryPanel.h"
+#include "widgets/TraineePanel.h"
 
 #include <gtest/gtest.h>
 
 #include <QAction>
 #include <QApplication>
+#include <QLabel>
 #include <QMenuBar>
 #include <QSettings>
 #include <QStandardPaths>
@@ -45,6 +48,38 @@ TEST_F(Translations, GermanMainWindow) {
     EXPECT_TRUE(titles.contains(QStringLiteral("&Hilfe"))) << titles.join(QLatin1Char(' ')).toStdString();
     EXPECT_FALSE(titles.contains(QStringLiteral("&File")));
     EXPECT_TRUE(actionTexts(window).contains(QStringLiteral("&Beenden")));
+}
+
+namespace {
+
+/// The field names (labels ending in ':') of the Exercise and History docks: what a trainee reads.
+QStringList traineeFieldNames(const MainWindow& window) {
+    QStringList names;
+    for (const QWidget* dock : {static_cast<const QWidget*>(window.traineePanel()), static_cast<const QWidget*>(window.historyPanel())})
+        for (const QLabel* label : dock->findChildren<QLabel*>())
+            if (label->text().trimmed().endsWith(QLatin1Char(':'))) names << label->text().trimmed();
+    return names;
+}
+
+}  // namespace
+
+TEST_F(Translations, TraineeModeFieldNamesAreGerman) {
+    QStringList english;
+    {
+        MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+        window.setMode(MainWindow::Mode::Trainee);
+        english = traineeFieldNames(window);
+    }
+    ASSERT_TRUE(english.contains(QStringLiteral("Trainee:"))) << english.join(QLatin1Char(' ')).toStdString();
+    ASSERT_TRUE(loadLanguage(*qApp, QStringLiteral("de")));
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    window.setMode(MainWindow::Mode::Trainee);
+    const QStringList german = traineeFieldNames(window);
+    EXPECT_EQ(german.size(), english.size());
+    for (const QString& name : german)
+        EXPECT_FALSE(english.contains(name)) << name.toStdString() << " is the English text";
+    // The mode itself, as the Exercise menu names it.
+    EXPECT_FALSE(actionTexts(window).contains(QStringLiteral("&Trainee-Modus")));
 }
 
 TEST_F(Translations, MalayMainWindow) {

@@ -233,6 +233,32 @@ TEST(MainWindow, PauseGivesAPausedSnapshotWithZeroForce) {
     EXPECT_FALSE(window.session().observed().paused);
 }
 
+TEST(MainWindow, PauseActionsTickMeansPausedAndItsTextSaysWhatAClickDoes) {
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    ASSERT_EQ(window.loadMesh(defaultMeshPath()), QString());
+    auto* pause = window.findChild<QAction*>(QStringLiteral("pauseAction"));
+    ASSERT_NE(pause, nullptr);
+    ASSERT_TRUE(pause->isCheckable());
+    const QString text = pause->text();
+    EXPECT_EQ(text, MainWindow::tr("&Pause"));
+    // Running: no tick (a click pauses).
+    EXPECT_TRUE(window.isPlaying());
+    EXPECT_FALSE(pause->isChecked());
+    pause->trigger();
+    EXPECT_FALSE(window.isPlaying());
+    EXPECT_TRUE(pause->isChecked());
+    EXPECT_EQ(pause->text(), text);
+    pause->trigger();
+    EXPECT_TRUE(window.isPlaying());
+    EXPECT_FALSE(pause->isChecked());
+    // Paused from elsewhere (a recording played back, the welcome page): the tick follows.
+    window.setPlaying(false);
+    EXPECT_TRUE(pause->isChecked());
+    window.setPlaying(true);
+    EXPECT_FALSE(pause->isChecked());
+    EXPECT_EQ(pause->text(), text);
+}
+
 TEST(MainWindow, RestartAndDeviceSwitchSwapTheLoopsSceneAndDevice) {
     MainWindow window(RendererChoice::Software, LoopMode::Stepped);
     ASSERT_EQ(window.loadMesh(defaultMeshPath()), QString());
