@@ -314,10 +314,6 @@
         <translation>Warum die gesendete Kraft von der vom Modell verlangten abweicht</translation>
     </message>
     <message>
-        <source>Force sent to the device (after the safety filter)</source>
-        <translation>An das Gerät gesendete Kraft (nach dem Sicherheitsfilter)</translation>
-    </message>
-    <message>
         <source>Tool tip position in the scene&apos;s frame</source>
         <translation>Position der Werkzeugspitze im Koordinatensystem der Szene</translation>
     </message>
@@ -456,6 +452,18 @@
     <message>
         <source>%1 is back: forces are ramping in.</source>
         <translation>%1 ist zurück: die Kräfte werden eingeblendet.</translation>
+    </message>
+    <message>
+        <source>Force sent to the device (after the safety filter); marked when the model asked for more than the device&apos;s maximum force and the filter clipped it</source>
+        <translation>An das Gerät gesendete Kraft (nach dem Sicherheitsfilter); markiert, wenn das Modell mehr als die Höchstkraft des Geräts verlangte und der Filter sie begrenzte</translation>
+    </message>
+    <message>
+        <source>clipped at device max %1 N (the model asked %2 N)</source>
+        <translation>begrenzt auf das Gerätemaximum %1 N (das Modell verlangte %2 N)</translation>
+    </message>
+    <message>
+        <source>clipped (the model asked %1 N)</source>
+        <translation>begrenzt (das Modell verlangte %1 N)</translation>
     </message>
 </context>
 <context>
@@ -1507,6 +1515,10 @@ Tick %7 µs, %8-mal schneller als previous</translation>
         <source>%1 N</source>
         <translation>%1 N</translation>
     </message>
+    <message>
+        <source>excessive ≥ %1 N ▸</source>
+        <translation>zu stark ≥ %1 N ▸</translation>
+    </message>
 </context>
 <context>
     <name>palpate::HistoryPanel</name>
@@ -1551,10 +1563,6 @@ Tick %7 µs, %8-mal schneller als previous</translation>
         <translation>Öffnet die Aufnahme des Ergebnisses im Rekorder</translation>
     </message>
     <message>
-        <source>Date</source>
-        <translation>Datum</translation>
-    </message>
-    <message>
         <source>Scores of %1</source>
         <translation>Punktzahlen von %1</translation>
     </message>
@@ -1570,11 +1578,53 @@ Tick %7 µs, %8-mal schneller als previous</translation>
         <source>No results yet.</source>
         <translation>Noch keine Ergebnisse.</translation>
     </message>
+    <message>
+        <source>Session</source>
+        <translation>Sitzung</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>Stopped before the end: %1 points so far, not a score (not in the best or the mean)</source>
+        <translation>Vor dem Ende abgebrochen: bis dahin %1 Punkte, kein Ergebnis (nicht im Besten oder im Mittel)</translation>
+    </message>
+    <message>
+        <source>The time limit passed before the task was done</source>
+        <translation>Die Zeit lief ab, bevor die Aufgabe erledigt war</translation>
+    </message>
+    <message>
+        <source>%1, %2 to %3</source>
+        <translation>%1, %2 bis %3</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
     <message numerus="yes">
-        <source>%n session(s); best %1, mean %2</source>
+        <source>%n session(s) (%1); best %2, mean %3</source>
         <translation>
-            <numerusform>%n Sitzung; beste %1, Mittel %2</numerusform>
-            <numerusform>%n Sitzungen; beste %1, Mittel %2</numerusform>
+            <numerusform>%n Sitzung (%1); bestes %2, Mittel %3</numerusform>
+            <numerusform>%n Sitzungen (%1); bestes %2, Mittel %3</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n session(s) (%1); none scored</source>
+        <translation>
+            <numerusform>%n Sitzung (%1); keine bewertet</numerusform>
+            <numerusform>%n Sitzungen (%1); keine bewertet</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>(%n stopped, not counted)</source>
+        <translation>
+            <numerusform>(%n abgebrochen, nicht gezählt)</numerusform>
+            <numerusform>(%n abgebrochen, nicht gezählt)</numerusform>
         </translation>
     </message>
 </context>
@@ -2477,6 +2527,10 @@ Pausiert: %13</translation>
         <source>Pause the simulation (ticked: paused; the tissue relaxes and the force is zero)</source>
         <translation>Simulation anhalten (mit Haken: angehalten; das Gewebe entspannt sich, die Kraft ist null)</translation>
     </message>
+    <message>
+        <source>force %1 (clipped at device max)</source>
+        <translation>Kraft %1 (auf das Gerätemaximum begrenzt)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ParameterPanel</name>
@@ -3206,6 +3260,33 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
         <source>How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the explicit mass-spring integrators&apos; step bound h·ω_max &lt; 2 (RK4 2.78), ω_max from Gershgorin&apos;s bound and the sub-steps the model takes; and for every model the stiffness it renders (for mass-spring measured on the mesh) against the stiffness the device renders passively (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has no step bound.</source>
         <translation>Wie weit der Satz von seiner hergeleiteten Stabilitätsgrenze bei der Haptikrate entfernt ist (docs/stability.md): die Schrittgrenze der expliziten Masse-Feder-Integratoren h·ω_max &lt; 2 (RK4 2,78), ω_max aus der Gerschgorin-Schranke und den Teilschritten des Modells; und für jedes Modell die dargestellte Steifigkeit (bei Masse-Feder am Netz gemessen) gegenüber der Steifigkeit, die das Gerät passiv darstellt (Colgate und Brown, 1 N/mm bei 1 kHz). Impliziter Euler hat keine Schrittgrenze.</translation>
     </message>
+    <message>
+        <source>&amp;Revert</source>
+        <translation>&amp;Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Set the fields back to what the haptic loop runs (one undoable step).</source>
+        <translation>Setzt die Felder auf das zurück, was die Haptikschleife verwendet (ein rückgängig machbarer Schritt).</translation>
+    </message>
+    <message>
+        <source>Applied to the running tissue at %1</source>
+        <translation>Um %1 auf das laufende Gewebe angewendet</translation>
+    </message>
+    <message>
+        <source>Revert to the running tissue</source>
+        <translation>Auf das laufende Gewebe zurücksetzen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more</source>
+        <translation>
+            <numerusform>%n weiteres</numerusform>
+            <numerusform>%n weitere</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not applied: %1 differ from the running tissue. Apply (Ctrl+Return) sends them; Revert goes back to what runs.</source>
+        <translation>Nicht angewendet: %1 weichen vom laufenden Gewebe ab. Anwenden (Strg+Eingabe) sendet sie; Zurücksetzen stellt her, was läuft.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::Preferences</name>
@@ -3729,6 +3810,10 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>cannot store the result: %1</source>
         <translation>das Ergebnis kann nicht gespeichert werden: %1</translation>
     </message>
+    <message>
+        <source>cannot migrate from schema version 2 to 3: %1</source>
+        <translation>Schema-Version 2 kann nicht zu 3 migriert werden: %1</translation>
+    </message>
 </context>
 <context>
     <name>palpate::SceneOverlay</name>
@@ -4225,6 +4310,10 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
     <message>
         <source>Time left %1 s · score so far %2</source>
         <translation>Verbleibende Zeit %1 s · bisherige Punktzahl %2</translation>
+    </message>
+    <message>
+        <source>%1 (preview, not saved)</source>
+        <translation>%1 (Vorschau, nicht gespeichert)</translation>
     </message>
 </context>
 <context>

@@ -314,10 +314,6 @@
         <translation>Mengapa daya yang dihantar berbeza daripada daya yang diminta oleh model</translation>
     </message>
     <message>
-        <source>Force sent to the device (after the safety filter)</source>
-        <translation>Daya yang dihantar ke peranti (selepas penapis keselamatan)</translation>
-    </message>
-    <message>
         <source>Tool tip position in the scene&apos;s frame</source>
         <translation>Kedudukan hujung alat dalam kerangka adegan</translation>
     </message>
@@ -456,6 +452,18 @@
     <message>
         <source>%1 is back: forces are ramping in.</source>
         <translation>%1 telah kembali: daya sedang ditingkatkan.</translation>
+    </message>
+    <message>
+        <source>Force sent to the device (after the safety filter); marked when the model asked for more than the device&apos;s maximum force and the filter clipped it</source>
+        <translation>Daya yang dihantar ke peranti (selepas penapis keselamatan); ditanda apabila model meminta lebih daripada daya maksimum peranti dan penapis mengehadkannya</translation>
+    </message>
+    <message>
+        <source>clipped at device max %1 N (the model asked %2 N)</source>
+        <translation>dihadkan pada maksimum peranti %1 N (model meminta %2 N)</translation>
+    </message>
+    <message>
+        <source>clipped (the model asked %1 N)</source>
+        <translation>dihadkan (model meminta %1 N)</translation>
     </message>
 </context>
 <context>
@@ -1507,6 +1515,10 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
         <source>%1 N</source>
         <translation>%1 N</translation>
     </message>
+    <message>
+        <source>excessive ≥ %1 N ▸</source>
+        <translation>berlebihan ≥ %1 N ▸</translation>
+    </message>
 </context>
 <context>
     <name>palpate::HistoryPanel</name>
@@ -1551,10 +1563,6 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
         <translation>Membuka rakaman keputusan dalam Perakam</translation>
     </message>
     <message>
-        <source>Date</source>
-        <translation>Tarikh</translation>
-    </message>
-    <message>
         <source>Scores of %1</source>
         <translation>Markah %1</translation>
     </message>
@@ -1570,10 +1578,50 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
         <source>No results yet.</source>
         <translation>Belum ada keputusan.</translation>
     </message>
+    <message>
+        <source>Session</source>
+        <translation>Sesi</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Dihentikan</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>dihentikan</translation>
+    </message>
+    <message>
+        <source>Stopped before the end: %1 points so far, not a score (not in the best or the mean)</source>
+        <translation>Dihentikan sebelum tamat: %1 mata setakat ini, bukan skor (tidak dalam terbaik atau purata)</translation>
+    </message>
+    <message>
+        <source>The time limit passed before the task was done</source>
+        <translation>Had masa tamat sebelum tugasan selesai</translation>
+    </message>
+    <message>
+        <source>%1, %2 to %3</source>
+        <translation>%1, %2 hingga %3</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 hingga %2</translation>
+    </message>
     <message numerus="yes">
-        <source>%n session(s); best %1, mean %2</source>
+        <source>%n session(s) (%1); best %2, mean %3</source>
         <translation>
-            <numerusform>%n sesi; terbaik %1, purata %2</numerusform>
+            <numerusform>%n sesi (%1); terbaik %2, purata %3</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n session(s) (%1); none scored</source>
+        <translation>
+            <numerusform>%n sesi (%1); tiada yang diskor</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>(%n stopped, not counted)</source>
+        <translation>
+            <numerusform>(%n dihentikan, tidak dikira)</numerusform>
         </translation>
     </message>
 </context>
@@ -2476,6 +2524,10 @@ pemapar %4</translation>
         <source>Pause the simulation (ticked: paused; the tissue relaxes and the force is zero)</source>
         <translation>Jeda simulasi (bertanda: dijeda; tisu kembali kendur dan daya menjadi sifar)</translation>
     </message>
+    <message>
+        <source>force %1 (clipped at device max)</source>
+        <translation>daya %1 (dihadkan pada maksimum peranti)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ParameterPanel</name>
@@ -3205,6 +3257,32 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
         <source>How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the explicit mass-spring integrators&apos; step bound h·ω_max &lt; 2 (RK4 2.78), ω_max from Gershgorin&apos;s bound and the sub-steps the model takes; and for every model the stiffness it renders (for mass-spring measured on the mesh) against the stiffness the device renders passively (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has no step bound.</source>
         <translation>Sejauh mana set ini daripada had kestabilan terbitannya pada kadar haptik (docs/stability.md): had langkah pengamir jisim-spring eksplisit h·ω_max &lt; 2 (RK4 2.78), ω_max daripada had Gershgorin dan sub-langkah yang diambil oleh model; dan bagi setiap model kekakuan yang dipaparkannya (bagi jisim-spring diukur pada jejaring) berbanding kekakuan yang dipaparkan secara pasif oleh peranti (Colgate dan Brown, 1 N/mm pada 1 kHz). Euler ke belakang tiada had langkah.</translation>
     </message>
+    <message>
+        <source>&amp;Revert</source>
+        <translation>&amp;Kembalikan</translation>
+    </message>
+    <message>
+        <source>Set the fields back to what the haptic loop runs (one undoable step).</source>
+        <translation>Kembalikan medan kepada apa yang dijalankan oleh gelung haptik (satu langkah boleh buat asal).</translation>
+    </message>
+    <message>
+        <source>Applied to the running tissue at %1</source>
+        <translation>Digunakan pada tisu yang berjalan pada %1</translation>
+    </message>
+    <message>
+        <source>Revert to the running tissue</source>
+        <translation>Kembali kepada tisu yang berjalan</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more</source>
+        <translation>
+            <numerusform>%n lagi</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not applied: %1 differ from the running tissue. Apply (Ctrl+Return) sends them; Revert goes back to what runs.</source>
+        <translation>Belum digunakan: %1 berbeza daripada tisu yang berjalan. Guna (Ctrl+Return) menghantarnya; Kembalikan kembali kepada apa yang berjalan.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::Preferences</name>
@@ -3728,6 +3806,10 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>cannot store the result: %1</source>
         <translation>tidak dapat menyimpan keputusan: %1</translation>
     </message>
+    <message>
+        <source>cannot migrate from schema version 2 to 3: %1</source>
+        <translation>tidak dapat memindahkan skema versi 2 ke 3: %1</translation>
+    </message>
 </context>
 <context>
     <name>palpate::SceneOverlay</name>
@@ -4224,6 +4306,10 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
     <message>
         <source>Time left %1 s · score so far %2</source>
         <translation>Baki masa %1 s · markah setakat ini %2</translation>
+    </message>
+    <message>
+        <source>%1 (preview, not saved)</source>
+        <translation>%1 (pratonton, tidak disimpan)</translation>
     </message>
 </context>
 <context>
