@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <initializer_list>
 #include <utility>
@@ -45,12 +46,12 @@ std::unique_ptr<QOpenGLShaderProgram> buildProgram(std::initializer_list<std::pa
 }
 }  // namespace
 
-MeshViewport::MeshViewport(QWidget* parent) : QOpenGLWidget(parent) {
+MeshViewport::MeshViewport(int samples, QWidget* parent) : QOpenGLWidget(parent), mRequestedSamples(std::max(samples, 0)) {
     QSurfaceFormat format;
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
-    format.setSamples(4);
+    format.setSamples(mRequestedSamples);
     setFormat(format);
     setFocusPolicy(Qt::StrongFocus);
     setContextMenuPolicy(Qt::PreventContextMenu);  // right-drag pans; no menu from the window either

@@ -56,7 +56,7 @@ protected:
     /// A shown GL viewport of the test size with the session's mesh (and the session's current
     /// state, if `withSnapshot`, before the first frame).
     std::unique_ptr<MeshViewport> makeViewport(bool withSnapshot = false) {
-        auto viewport = std::make_unique<MeshViewport>();
+        auto viewport = std::make_unique<MeshViewport>(viewportSamplesFor(probeOpenGl33().renderer));
         viewport->resize(kWidthPx, kHeightPx);
         viewport->setMesh(*mSession->drawnMesh());
         if (withSnapshot) viewport->setSnapshot(mSession->view());
@@ -75,12 +75,22 @@ protected:
 
 }  // namespace
 
-TEST_F(GlViewport, TheFactoryPicksOpenGl) {
+TEST_F(GlViewport, TheFactoryPicksOpenGlOnAGpuAndTheSoftwareRendererOnACpuRasteriser) {
     ASSERT_NE(QGuiApplication::platformName(), QStringLiteral("offscreen"));
+    const GlProbe probe = probeOpenGl33();
+    ASSERT_TRUE(probe.available);
+    EXPECT_FALSE(probe.renderer.isEmpty()) << "GL_RENDERER was read";
+    const bool cpu = isSoftwareGlRenderer(probe.renderer);
     QWidget parent;
-    Viewport* viewport = createViewport(RendererChoice::Auto, &parent);
-    EXPECT_EQ(viewport->kind(), RendererKind::OpenGL);
-    EXPECT_NE(dynamic_cast<MeshViewport*>(viewport), nullptr);
+    QString reason;
+    Viewport* viewport = createViewport(RendererChoice::Auto, &parent, &reason);
+    EXPECT_EQ(viewport->kind(), cpu ? RendererKind::Software : RendererKind::OpenGL) << reason.toStdString();
+    EXPECT_TRUE(reason.contains(probe.renderer)) << reason.toStdString();
+    // --opengl-render: OpenGL whatever the rasteriser, without multisampling on a CPU one.
+    auto* forced = dynamic_cast<MeshViewport*>(createViewport(RendererChoice::OpenGL, &parent, &reason));
+    ASSERT_NE(forced, nullptr);
+    EXPECT_EQ(forced->requestedSamples(), cpu ? 0 : 4) << reason.toStdString();
+    EXPECT_EQ(forced->format().samples() > 0, !cpu) << "the widget asks its context for " << forced->format().samples();
     // --software-render still gives the software one.
     EXPECT_EQ(createViewport(RendererChoice::Software, &parent)->kind(), RendererKind::Software);
 }
