@@ -8,11 +8,80 @@
 #include <QWheelEvent>
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace palpate {
+
+namespace {
+
+/// How far (mm) the rest shape must stand in front of the tissue for its ghost to show: where the
+/// two coincide (the barely moved rim of a dent) the tissue wins, as the OpenGL ghost's depth offset does.
+constexpr float kGhostMarginMm = 0.05f;
+
+std::uint32_t packRgb(float r, float g, float b) {
+    auto channel = [](float v) { return std::uint32_t(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); };
+    return 0xff000000u | (channel(r) << 16) | (channel(g) << 8) | channel(b);
+}
+
+/// The wire's weight at `distancePx` from an edge: a pixel wide (each side draws its half), fading
+/// out over the next half pixel, as mesh.frag draws it.
+float wireWeight(float distancePx) {
+    if (distancePx <= 0.5f) return 1.0f;
+    if (distancePx >= 1.0f) return 0.0f;
+    const float t = (distancePx - 0.5f) * 2.0f;
+    return 1.0f - t * t * (3.0f - 2.0f * t);
+}
+
+struct Corner {
+    float x, y, invDepth, diffuse;
+};
+
+/// Calls shade(index, l0, l1, l2, edgePx) for every pixel centre inside triangle abc (clipped to
+/// the `width` x `height` frame): barycentric weights and the distance in pixels to the nearest
+/// edge. Shared edges are filled once (top-left rule): no pinholes, no double blending.
+template <typename Shade>
+void fillTriangle(Corner a, Corner b, Corner c, int width, int height, Shade&& shade) {
+    auto orient = [](const Corner& p, const Corner& q, float x, float y) {
+        return (q.x - p.x) * (y - p.y) - (q.y - p.y) * (x - p.x);
+    };
+    float area = orient(a, b, c.x, c.y);
+    if (area == 0.0f || !std::isfinite(area)) return;
+    if (area < 0.0f) {
+        std::swap(b, c);
+        area = -area;
+    }
+    const int minX = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}))));
+    const int maxX = std::min(width - 1, int(std::ceil(std::max({a.x, b.x, c.x}))));
+    const int minY = std::max(0, int(std::floor(std::min({a.y, b.y, c.y}))));
+    const int maxY = std::min(height - 1, int(std::ceil(std::max({a.y, b.y, c.y}))));
+    if (minX > maxX || minY > maxY) return;
+    // Edge k is opposite corner k. In screen space (y down) with positive area, an edge is "top"
+    // when horizontal with the triangle below it, "left" when it goes up.
+    auto topLeft = [](const Corner& p, const Corner& q) { return (p.y == q.y && q.x < p.x) || q.y < p.y; };
+    const float bias0 = topLeft(b, c) ? 0.0f : -1e-7f, bias1 = topLeft(c, a) ? 0.0f : -1e-7f,
+                bias2 = topLeft(a, b) ? 0.0f : -1e-7f;
+    const float inv0 = 1.0f / std::max(std::hypot(c.x - b.x, c.y - b.y), 1e-6f);
+    const float inv1 = 1.0f / std::max(std::hypot(a.x - c.x, a.y - c.y), 1e-6f);
+    const float inv2 = 1.0f / std::max(std::hypot(b.x - a.x, b.y - a.y), 1e-6f);
+    const float dx0 = b.y - c.y, dx1 = c.y - a.y, dx2 = a.y - b.y;  // per pixel to the right
+    const float invArea = 1.0f / area;
+    for (int y = minY; y <= maxY; ++y) {
+        const float py = float(y) + 0.5f, px = float(minX) + 0.5f;
+        float w0 = orient(b, c, px, py), w1 = orient(c, a, px, py), w2 = orient(a, b, px, py);
+        for (int x = minX; x <= maxX; ++x, w0 += dx0, w1 += dx1, w2 += dx2) {
+            if (w0 + bias0 < 0.0f || w1 + bias1 < 0.0f || w2 + bias2 < 0.0f) continue;
+            if ((w0 == 0.0f && bias0 < 0.0f) || (w1 == 0.0f && bias1 < 0.0f) || (w2 == 0.0f && bias2 < 0.0f)) continue;
+            const float edgePx = std::min({w0 * inv0, w1 * inv1, w2 * inv2});
+            shade(y * width + x, w0 * invArea, w1 * invArea, w2 * invArea, edgePx, a, b, c);
+        }
+    }
+}
+
+}  // namespace
 
 SoftwareViewport::SoftwareViewport(QWidget* parent) : QWidget(parent) {
     setAttribute(Qt::WA_OpaquePaintEvent);  // every pixel is painted: Qt need not clear first
@@ -27,116 +96,130 @@ void SoftwareViewport::sceneChanged(bool) { update(); }
 
 void SoftwareViewport::paintEvent(QPaintEvent*) {
     QPainter painter(this);
-    paintScene(painter, size());
+    paintAll(painter, size(), float(devicePixelRatioF()));
     countFrame();
 }
 
-void SoftwareViewport::paintScene(QPainter& painter, QSize sizePx) {
-    painter.fillRect(QRect(QPoint(0, 0), sizePx), toQColor(style::kBackground));
-    if (mScene.empty() || sizePx.isEmpty()) return;
+void SoftwareViewport::paintAll(QPainter& painter, QSize logicalSize, float devicePixelRatio) {
+    const QSize sizePx(std::max(1, qRound(logicalSize.width() * devicePixelRatio)),
+                       std::max(1, qRound(logicalSize.height() * devicePixelRatio)));
+    rasterScene(sizePx, devicePixelRatio);
+    mFrame.setDevicePixelRatio(devicePixelRatio);
+    painter.drawImage(QPointF(0, 0), mFrame);
+    paintExerciseMarkers(painter, mExerciseMarkers, mCamera, logicalSize);
+    paintSceneOverlay(painter, mScene, mCamera, logicalSize, mShowRestGhost);
+}
 
-    const glm::vec2 size(float(sizePx.width()), float(sizePx.height()));
+void SoftwareViewport::updateNormals() {
+    // Only the normals that the moved vertices can have changed (RenderScene::updateVertexNormals).
+    if (mScene.allDirty() || mNormals.size() != mScene.vertexCount())
+        mScene.computeVertexNormals(mNormals);
+    else if (!mScene.dirtyVertices().empty())
+        mScene.updateVertexNormals(mNormals, mRecomputed);
+    mScene.clearDirty();
+}
+
+void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
+    (void)devicePixelRatio;
+    if (mFrame.size() != sizePx || mFrame.format() != QImage::Format_RGB32) mFrame = QImage(sizePx, QImage::Format_RGB32);
+    const int width = sizePx.width(), height = sizePx.height();
+    const glm::vec3& bg = style::kBackground;
+    mFrame.fill(QColor::fromRgbF(bg.x, bg.y, bg.z));
+    if (mScene.empty()) return;
+    updateNormals();
+
+    mDepth.assign(std::size_t(width) * std::size_t(height), 0.0f);
+    auto* pixels = reinterpret_cast<std::uint32_t*>(mFrame.bits());
+    const int stride = int(mFrame.bytesPerLine() / 4);
+
+    const glm::vec2 size{float(width), float(height)};
     const glm::mat4 view = mCamera.view();
     const glm::mat4 projection = mCamera.projection(size.x / size.y);
-    auto project = [&](const glm::vec3& pointMm, glm::vec3& viewMm) {
+    const glm::mat3 rotation(view);  // rigid: maps normals too
+    const glm::vec3 light = glm::normalize(style::kLightDirView);
+    auto project = [&](const glm::vec3& pointMm, const glm::vec3& normal) {
         const glm::vec4 pv = view * glm::vec4(pointMm, 1.0f);
         const glm::vec4 clip = projection * pv;
-        viewMm = glm::vec3(pv);
         const bool inFront = clip.w > 1e-6f && clip.z > -clip.w;
         const float w = inFront ? clip.w : 1.0f;
-        return ProjectedVertex{(clip.x / w * 0.5f + 0.5f) * size.x, (0.5f - clip.y / w * 0.5f) * size.y, inFront};
+        // Two-sided, whatever the winding: open meshes show their inside.
+        glm::vec3 n = rotation * normal;
+        if (glm::dot(n, -glm::vec3(pv)) < 0.0f) n = -n;
+        return ProjectedVertex{(clip.x / w * 0.5f + 0.5f) * size.x, (0.5f - clip.y / w * 0.5f) * size.y,
+                               inFront ? 1.0f / clip.w : 0.0f, std::max(glm::dot(n, light), 0.0f), inFront};
     };
     const auto positions = mScene.positionsMm();
     mProjected.resize(positions.size());
-    mViewMm.resize(positions.size());
-    for (std::size_t v = 0; v < positions.size(); ++v) mProjected[v] = project(positions[v], mViewMm[v]);
+    for (std::size_t v = 0; v < positions.size(); ++v) mProjected[v] = project(positions[v], mNormals[v]);
 
-    // Painter's algorithm: farthest triangle first. Good enough for one convex-ish organ; a triangle
-    // crossing the near plane is dropped rather than clipped. With the ghost on, the rest shape of
-    // every triangle with a displaced corner joins the sort (flagged by kGhostBit), so that it shows
-    // over the dent and hides behind the tissue in front of it.
     const auto indices = mScene.indices();
     const auto weights = mScene.pressedWeights();
-    const auto rest = mScene.restPositionsMm();
-    auto onScreen = [&](const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c) {
+    const auto rings = mScene.rings();
+    auto corner = [](const ProjectedVertex& p) { return Corner{p.xPx, p.yPx, p.invDepth, p.diffuse}; };
+    // A triangle crossing the near plane is dropped rather than clipped.
+    auto visible = [&](const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c) {
         if (!a.inFront || !b.inFront || !c.inFront) return false;
         const float minX = std::min({a.xPx, b.xPx, c.xPx}), maxX = std::max({a.xPx, b.xPx, c.xPx});
         const float minY = std::min({a.yPx, b.yPx, c.yPx}), maxY = std::max({a.yPx, b.yPx, c.yPx});
         return !(maxX < 0.0f || minX > size.x || maxY < 0.0f || minY > size.y);
     };
-    mOrder.clear();
-    for (std::uint32_t t = 0; 3 * t + 2 < indices.size(); ++t) {
-        const std::uint32_t a = indices[3 * t], b = indices[3 * t + 1], c = indices[3 * t + 2];
-        if (onScreen(mProjected[a], mProjected[b], mProjected[c]))
-            mOrder.emplace_back(mViewMm[a].z + mViewMm[b].z + mViewMm[c].z, t);  // more negative is farther
-        if (mShowRestGhost && (weights[a] > 0.0f || weights[b] > 0.0f || weights[c] > 0.0f)) {
-            glm::vec3 va, vb, vc;
-            const ProjectedVertex pa = project(rest[a], va), pb = project(rest[b], vb), pc = project(rest[c], vc);
-            if (onScreen(pa, pb, pc)) mOrder.emplace_back(va.z + vb.z + vc.z, t | kGhostBit);
-        }
-    }
-    std::sort(mOrder.begin(), mOrder.end());
-
-    const glm::vec3 light = glm::normalize(style::kLightDirView);
-    const auto rings = mScene.rings();
-    const QColor wire = toQColor(style::kWire);
-    const QColor ghostFill = toQColor(style::kGhost, style::kGhostFillAlpha);
-    const QPen ghostPen(toQColor(style::kGhost, style::kGhostWireAlpha), 0);
-    // Without antialiasing, abutting polygons leave pinholes; an outline in the fill colour (or the
-    // wire colour) closes them.
-    painter.setRenderHint(QPainter::Antialiasing, false);
-    QPointF corners[3];
-    for (const auto& [depth, entry] : mOrder) {
-        const std::uint32_t t = entry & ~kGhostBit;
-        const std::uint32_t a = indices[3 * t], b = indices[3 * t + 1], c = indices[3 * t + 2];
-        if (entry & kGhostBit) {
-            glm::vec3 unused;
-            const ProjectedVertex pa = project(rest[a], unused), pb = project(rest[b], unused), pc = project(rest[c], unused);
-            corners[0] = {pa.xPx, pa.yPx};
-            corners[1] = {pb.xPx, pb.yPx};
-            corners[2] = {pc.xPx, pc.yPx};
-            painter.setPen(ghostPen);
-            painter.setBrush(ghostFill);
-            painter.drawConvexPolygon(corners, 3);
-            continue;
-        }
-        glm::vec3 n = glm::cross(mViewMm[b] - mViewMm[a], mViewMm[c] - mViewMm[a]);
-        const float length = glm::length(n);
-        n = length > 0.0f ? n / length : glm::vec3(0.0f, 0.0f, 1.0f);
-        // Two-sided, independent of winding: turn the normal towards the eye (at the origin).
-        const glm::vec3 centre = (mViewMm[a] + mViewMm[b] + mViewMm[c]) / 3.0f;
-        if (glm::dot(n, -centre) < 0.0f) n = -n;
-        const float diffuse = std::max(glm::dot(n, light), 0.0f);
+    const float wireAlpha = mWireframe ? style::kWireAlpha : 0.0f;
+    const glm::vec3 wire = style::kWire;
+    for (std::size_t t = 0; 3 * t + 2 < indices.size(); ++t) {
+        const std::uint32_t ia = indices[3 * t], ib = indices[3 * t + 1], ic = indices[3 * t + 2];
+        const ProjectedVertex &pa = mProjected[ia], &pb = mProjected[ib], &pc = mProjected[ic];
+        if (!visible(pa, pb, pc)) continue;
         // The lowest ring among the corners colours the triangle (as the GL geometry shader does);
         // outside the rings the displacement tints it.
-        const std::uint8_t ring = std::min({rings[a], rings[b], rings[c]});
+        const std::uint8_t ring = std::min({rings[ia], rings[ib], rings[ic]});
         glm::vec3 base;
         float ambient = style::kAmbient;
         if (style::hasRingColour(ring)) {
             base = style::kRingColours[ring];
             ambient = style::kRingAmbient;
         } else {
-            const float pressed = (weights[a] + weights[b] + weights[c]) / 3.0f;
-            base = glm::mix(style::kTissue, style::kPressed, pressed);
+            base = glm::mix(style::kTissue, style::kPressed, (weights[ia] + weights[ib] + weights[ic]) / 3.0f);
         }
-        const glm::vec3 rgb = glm::min(base * (ambient + (1.0f - ambient) * diffuse), glm::vec3(1.0f));
-        const QColor fill = toQColor(rgb);
-        QColor outline = fill;
-        if (mWireframe) {
-            const float alpha = style::kWireAlpha;
-            outline = QColor::fromRgbF((1 - alpha) * fill.redF() + alpha * wire.redF(),
-                                       (1 - alpha) * fill.greenF() + alpha * wire.greenF(),
-                                       (1 - alpha) * fill.blueF() + alpha * wire.blueF());
-        }
-        painter.setPen(QPen(outline, 0));
-        painter.setBrush(fill);
-        corners[0] = {mProjected[a].xPx, mProjected[a].yPx};
-        corners[1] = {mProjected[b].xPx, mProjected[b].yPx};
-        corners[2] = {mProjected[c].xPx, mProjected[c].yPx};
-        painter.drawConvexPolygon(corners, 3);
+        fillTriangle(corner(pa), corner(pb), corner(pc), width, height,
+                     [&](int index, float l0, float l1, float l2, float edgePx, const Corner& a, const Corner& b,
+                         const Corner& c) {
+                         const float depth = l0 * a.invDepth + l1 * b.invDepth + l2 * c.invDepth;
+                         float& stored = mDepth[std::size_t(index)];
+                         if (depth <= stored) return;
+                         stored = depth;
+                         const float diffuse = l0 * a.diffuse + l1 * b.diffuse + l2 * c.diffuse;
+                         glm::vec3 rgb = base * (ambient + (1.0f - ambient) * diffuse);
+                         if (wireAlpha > 0.0f && edgePx < 1.0f) rgb = glm::mix(rgb, wire, wireAlpha * wireWeight(edgePx));
+                         pixels[(index / width) * stride + index % width] = packRgb(rgb.x, rgb.y, rgb.z);
+                     });
     }
-    paintExerciseMarkers(painter, mExerciseMarkers, mCamera, sizePx);
-    paintSceneOverlay(painter, mScene, mCamera, sizePx, mShowRestGhost);
+
+    if (!mShowRestGhost) return;
+    // The rest shape of every triangle with a displaced corner, translucent, where it stands in
+    // front of the tissue (over a dent); its edges brighter.
+    const auto rest = mScene.restPositionsMm();
+    const glm::vec3 ghost = style::kGhost;
+    for (std::size_t t = 0; 3 * t + 2 < indices.size(); ++t) {
+        const std::uint32_t ia = indices[3 * t], ib = indices[3 * t + 1], ic = indices[3 * t + 2];
+        if (!(weights[ia] > 0.0f || weights[ib] > 0.0f || weights[ic] > 0.0f)) continue;
+        const ProjectedVertex pa = project(rest[ia], mNormals[ia]), pb = project(rest[ib], mNormals[ib]),
+                              pc = project(rest[ic], mNormals[ic]);
+        if (!visible(pa, pb, pc)) continue;
+        fillTriangle(corner(pa), corner(pb), corner(pc), width, height,
+                     [&](int index, float l0, float l1, float l2, float edgePx, const Corner& a, const Corner& b,
+                         const Corner& c) {
+                         const float depth = l0 * a.invDepth + l1 * b.invDepth + l2 * c.invDepth;
+                         const float stored = mDepth[std::size_t(index)];
+                         if (depth <= 0.0f) return;
+                         if (stored > 0.0f && 1.0f / depth > 1.0f / stored - kGhostMarginMm) return;
+                         const float alpha = edgePx < 1.0f ? style::kGhostWireAlpha : style::kGhostFillAlpha;
+                         std::uint32_t& pixel = pixels[(index / width) * stride + index % width];
+                         const glm::vec3 under(float((pixel >> 16) & 0xff) / 255.0f, float((pixel >> 8) & 0xff) / 255.0f,
+                                               float(pixel & 0xff) / 255.0f);
+                         const glm::vec3 rgb = glm::mix(under, ghost, alpha);
+                         pixel = packRgb(rgb.x, rgb.y, rgb.z);
+                     });
+    }
 }
 
 void SoftwareViewport::mousePressEvent(QMouseEvent* event) {
