@@ -18,6 +18,7 @@
 #include <QImage>
 #include <QMouseEvent>
 #include <QTest>
+#include <QWheelEvent>
 
 #include <gtest/gtest.h>
 
@@ -358,6 +359,110 @@ TEST(SoftwareViewportFeatures, ShowsTheRestGhostOnlyWhereTheTissueMoved) {
         for (int x = 0; x < masked.width(); ++x)
             if (around.contains(QPointF(x + 0.5, y + 0.5))) masked.setPixel(x, y, withoutGhost.pixel(x, y));
     EXPECT_EQ(countDifferent(masked, withoutGhost, 3, legend), 0) << "ghost drawn away from the dent";
+}
+
+TEST(SoftwareViewportFeatures, ShadesTheDentWithNormalsRecomputedAroundIt) {
+    auto session = steppedSession(0);
+    SoftwareViewport viewport;
+    viewport.resize(640, 480);
+    viewport.setMesh(*session->drawnMesh());
+    (void)viewport.grabImage();
+    const std::vector<glm::vec3> atRest = viewport.vertexNormals();
+    ASSERT_EQ(atRest.size(), viewport.scene().vertexCount());
+
+    const float kCos5Deg = std::cos(5.0f * 3.14159265f / 180.0f);
+    // Several frames into the press, each taking only the vertices that changed.
+    for (int frame = 0; frame < 10; ++frame) {
+        session->step(kTicksIntoContact / 10);
+        session->observe();
+        viewport.setSnapshot(session->view());
+        (void)viewport.grabImage();
+    }
+    ASSERT_TRUE(session->view().contact);
+    const VertexId touched = session->view().touched;
+    // The drawn normals are the deformed shape's, everywhere (as if all were recomputed) ...
+    std::vector<glm::vec3> expected;
+    viewport.scene().computeVertexNormals(expected);
+    ASSERT_EQ(viewport.vertexNormals().size(), expected.size());
+    std::size_t turned = 0;
+    for (VertexId v = 0; v < expected.size(); ++v) {
+        ASSERT_EQ(viewport.vertexNormals()[v], expected[v]) << "vertex " << v;
+        if (glm::dot(expected[v], atRest[v]) < kCos5Deg) ++turned;
+    }
+    // ... so in the dent they turned away from the rest normals: the dent shades as a dent.
+    EXPECT_GT(turned, 5u);
+    bool ringTurned = false;
+    for (const std::uint32_t t : viewport.scene().vertexTriangles(touched))
+        for (int k = 0; k < 3; ++k) {
+            const VertexId w = viewport.scene().indices()[3 * t + k];
+            if (glm::dot(expected[w], atRest[w]) < kCos5Deg) ringTurned = true;
+        }
+    EXPECT_TRUE(ringTurned) << "the normals around the touched vertex";
+}
+
+TEST(SoftwareViewportFeatures, TheForceLabelSitsOnAnOpaquePlateWithReadableContrast) {
+    auto session = steppedSession(kTicksIntoContact);
+    SoftwareViewport viewport;
+    viewport.resize(640, 480);
+    viewport.setMesh(*session->drawnMesh());
+    viewport.setSnapshot(session->view());
+    ASSERT_GT(glm::length(viewport.scene().forceN()), 0.0f);
+    const QImage image = viewport.grabImage();
+    const QRectF plate = forceLabelRect(viewport.scene(), viewport.camera(), viewport.size());
+    ASSERT_FALSE(plate.isEmpty());
+    EXPECT_TRUE(QRectF(0, 0, 640, 480).contains(plate)) << "kept inside the viewport";
+    EXPECT_GE(plate.height(), double(style::kLabelFontPx)) << "a larger font than the legend's";
+    // The plate is opaque: its colour whatever lies under it (tissue, rings, background).
+    const QColor plateColour = toQColor(style::kLabelPlate);
+    const QRect inner = plate.toAlignedRect().adjusted(2, 2, -2, -2);
+    int platePixels = 0, all = 0;
+    double bestContrast = 1.0;
+    for (int y = inner.top(); y <= inner.bottom(); ++y)
+        for (int x = inner.left(); x <= inner.right(); ++x) {
+            ++all;
+            const QRgb pixel = image.pixel(x, y);
+            if (nearRgb(pixel, plateColour.rgb(), 2)) ++platePixels;
+            bestContrast = std::max(bestContrast, contrastRatio(QColor(pixel), plateColour));
+        }
+    EXPECT_GT(platePixels, all / 2) << "the plate shows between the letters";
+    // The text on it: the pixels most unlike the plate are the letters' cores.
+    EXPECT_GE(bestContrast, 4.5);
+    EXPECT_GE(contrastRatio(toQColor(style::kForceArrow), plateColour), 4.5);
+    // The formula itself: black on white is 21, a colour against itself 1.
+    EXPECT_NEAR(contrastRatio(Qt::black, Qt::white), 21.0, 1e-9);
+    EXPECT_NEAR(contrastRatio(plateColour, plateColour), 1.0, 1e-9);
+}
+
+TEST(SoftwareViewportFeatures, OutlinesTheDisplacedPatchAndMarksItWhenSmall) {
+    auto session = steppedSession(kTicksIntoContact);
+    SoftwareViewport viewport;
+    viewport.resize(640, 480);
+    viewport.setMesh(*session->drawnMesh());
+    const QRgb outline = toQColor(style::kPatchOutline).rgb();
+    auto outlinePixels = [&](const QImage& image, const QRectF& exclude) {
+        int count = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                if (!exclude.contains(QPointF(x + 0.5, y + 0.5)) && nearRgb(image.pixel(x, y), outline, 12)) ++count;
+        return count;
+    };
+    EXPECT_EQ(outlinePixels(viewport.grabImage(), {}), 0) << "no outline at rest";
+
+    viewport.setSnapshot(session->view());
+    const QRectF legend = sceneLegendRect(viewport.scene(), viewport.size());
+    const int near = outlinePixels(viewport.grabImage(), legend);
+    EXPECT_GT(near, 40) << "the patch's border";
+    EXPECT_GT(deepestDisplacementMm(viewport.scene()), style::kOutlineDisplacementMm);
+
+    // Far away (as a fine mesh's patch looks) the patch is a few pixels: a circle still marks it.
+    viewport.resetCamera();
+    for (int step = 0; step < 12; ++step) {
+        QWheelEvent wheel(QPointF(320, 240), QPointF(320, 240), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(&viewport, &wheel);
+    }
+    const int far = outlinePixels(viewport.grabImage(), sceneLegendRect(viewport.scene(), viewport.size()));
+    EXPECT_GT(far, int(style::kPatchMarkerMinRadiusPx * 2.0f)) << "a circle of at least the minimum radius";
 }
 
 TEST(SoftwareViewportFeatures, RightAndMiddleDragPanLeftDragOrbits) {
