@@ -42,14 +42,17 @@ struct Corner {
 
 /// Calls shade(index, l0, l1, l2, edgePx) for every pixel centre inside triangle abc (clipped to
 /// the `width` x `height` frame): barycentric weights and the distance in pixels to the nearest
-/// edge. Shared edges are filled once (top-left rule): no pinholes, no double blending.
+/// edge (only computed when `edges`; else a large number). Shared edges are filled once (top-left
+/// rule): no pinholes, no double blending. `backSign` != 0: a triangle whose screen-space area has
+/// that sign faces away and is skipped.
 template <typename Shade>
-void fillTriangle(Corner a, Corner b, Corner c, int width, int height, Shade&& shade) {
+void fillTriangle(Corner a, Corner b, Corner c, int width, int height, int backSign, bool edges, Shade&& shade) {
     auto orient = [](const Corner& p, const Corner& q, float x, float y) {
         return (q.x - p.x) * (y - p.y) - (q.y - p.y) * (x - p.x);
     };
     float area = orient(a, b, c.x, c.y);
     if (area == 0.0f || !std::isfinite(area)) return;
+    if (backSign != 0 && (area > 0.0f) == (backSign > 0)) return;
     if (area < 0.0f) {
         std::swap(b, c);
         area = -area;
@@ -64,18 +67,35 @@ void fillTriangle(Corner a, Corner b, Corner c, int width, int height, Shade&& s
     auto topLeft = [](const Corner& p, const Corner& q) { return (p.y == q.y && q.x < p.x) || q.y < p.y; };
     const float bias0 = topLeft(b, c) ? 0.0f : -1e-7f, bias1 = topLeft(c, a) ? 0.0f : -1e-7f,
                 bias2 = topLeft(a, b) ? 0.0f : -1e-7f;
-    const float inv0 = 1.0f / std::max(std::hypot(c.x - b.x, c.y - b.y), 1e-6f);
-    const float inv1 = 1.0f / std::max(std::hypot(a.x - c.x, a.y - c.y), 1e-6f);
-    const float inv2 = 1.0f / std::max(std::hypot(b.x - a.x, b.y - a.y), 1e-6f);
+    auto inverseLength = [edges](float dx, float dy) { return edges ? 1.0f / std::max(std::sqrt(dx * dx + dy * dy), 1e-6f) : 0.0f; };
+    const float inv0 = inverseLength(c.x - b.x, c.y - b.y);
+    const float inv1 = inverseLength(a.x - c.x, a.y - c.y);
+    const float inv2 = inverseLength(b.x - a.x, b.y - a.y);
     const float dx0 = b.y - c.y, dx1 = c.y - a.y, dx2 = a.y - b.y;  // per pixel to the right
     const float invArea = 1.0f / area;
     for (int y = minY; y <= maxY; ++y) {
         const float py = float(y) + 0.5f, px = float(minX) + 0.5f;
         float w0 = orient(b, c, px, py), w1 = orient(c, a, px, py), w2 = orient(a, b, px, py);
-        for (int x = minX; x <= maxX; ++x, w0 += dx0, w1 += dx1, w2 += dx2) {
+        // The row's span from the three edges (a pixel of slack each side: the exact test below decides).
+        float first = 0.0f, last = float(maxX - minX);
+        bool empty = false;
+        auto clip = [&](float w, float dx) {
+            if (dx > 0.0f) first = std::max(first, std::floor(-w / dx) - 1.0f);
+            else if (dx < 0.0f) last = std::min(last, std::ceil(-w / dx) + 1.0f);
+            else if (w < 0.0f) empty = true;
+        };
+        clip(w0, dx0);
+        clip(w1, dx1);
+        clip(w2, dx2);
+        if (empty || first > last) continue;
+        const int skip = int(first);
+        w0 += dx0 * float(skip);
+        w1 += dx1 * float(skip);
+        w2 += dx2 * float(skip);
+        for (int x = minX + skip, end = minX + int(last); x <= end; ++x, w0 += dx0, w1 += dx1, w2 += dx2) {
             if (w0 + bias0 < 0.0f || w1 + bias1 < 0.0f || w2 + bias2 < 0.0f) continue;
             if ((w0 == 0.0f && bias0 < 0.0f) || (w1 == 0.0f && bias1 < 0.0f) || (w2 == 0.0f && bias2 < 0.0f)) continue;
-            const float edgePx = std::min({w0 * inv0, w1 * inv1, w2 * inv2});
+            const float edgePx = edges ? std::min({w0 * inv0, w1 * inv1, w2 * inv2}) : 1e9f;
             shade(y * width + x, w0 * invArea, w1 * invArea, w2 * invArea, edgePx, a, b, c);
         }
     }
@@ -164,6 +184,11 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
         return !(maxX < 0.0f || minX > size.x || maxY < 0.0f || minY > size.y);
     };
     const float wireAlpha = mWireframe ? style::kWireAlpha : 0.0f;
+    // Seen from outside a closed surface only front faces are nearest: skip the rest. An outward
+    // counter-clockwise triangle facing the eye has a negative area in y-down screen coordinates.
+    const int backSign = mBackFaceCulling && mScene.closedAndConsistent() && mScene.outside(mCamera.eyeMm())
+                             ? mScene.outwardWinding()
+                             : 0;
     const glm::vec3 wire = style::kWire;
     for (std::size_t t = 0; 3 * t + 2 < indices.size(); ++t) {
         const std::uint32_t ia = indices[3 * t], ib = indices[3 * t + 1], ic = indices[3 * t + 2];
@@ -180,7 +205,7 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
         } else {
             base = glm::mix(style::kTissue, style::kPressed, (weights[ia] + weights[ib] + weights[ic]) / 3.0f);
         }
-        fillTriangle(corner(pa), corner(pb), corner(pc), width, height,
+        fillTriangle(corner(pa), corner(pb), corner(pc), width, height, backSign, wireAlpha > 0.0f,
                      [&](int index, float l0, float l1, float l2, float edgePx, const Corner& a, const Corner& b,
                          const Corner& c) {
                          const float depth = l0 * a.invDepth + l1 * b.invDepth + l2 * c.invDepth;
@@ -205,7 +230,7 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
         const ProjectedVertex pa = project(rest[ia], mNormals[ia]), pb = project(rest[ib], mNormals[ib]),
                               pc = project(rest[ic], mNormals[ic]);
         if (!visible(pa, pb, pc)) continue;
-        fillTriangle(corner(pa), corner(pb), corner(pc), width, height,
+        fillTriangle(corner(pa), corner(pb), corner(pc), width, height, 0, true,
                      [&](int index, float l0, float l1, float l2, float edgePx, const Corner& a, const Corner& b,
                          const Corner& c) {
                          const float depth = l0 * a.invDepth + l1 * b.invDepth + l2 * c.invDepth;

@@ -7,8 +7,9 @@
 // widget tests, remote sessions), where OpenGL is itself a software rasteriser and this is faster
 // (ViewportFactory), or when --software-render is given.
 //
-// Per frame it transforms every vertex once and fills every triangle once against the depth
-// buffer: no sort, no QPainter call per triangle (docs/bench/README.md, "Viewport").
+// Per frame it transforms every vertex once and fills every front-facing triangle once against the
+// depth buffer (a closed mesh seen from outside: its back faces are skipped), scanning each row only
+// over the triangle's span: no sort, no QPainter call per triangle (docs/bench/README.md, "Viewport").
 
 #include "widgets/Viewport.h"
 
@@ -32,6 +33,13 @@ public:
     QImage grabImage() override;
 
     QSize sizeHint() const override { return {800, 600}; }
+
+    /// Skipping the back faces of a closed mesh seen from outside (on by default). Off, every
+    /// triangle is filled: the same picture, slower (the tests compare the two).
+    void setBackFaceCulling(bool on) {
+        mBackFaceCulling = on;
+        update();
+    }
 
     /// Per-vertex normals as last drawn (the shape's, area-weighted; RenderScene::computeVertexNormals).
     const std::vector<glm::vec3>& vertexNormals() const { return mNormals; }
@@ -62,6 +70,7 @@ private:
     std::vector<VertexId> mRecomputed;
     std::vector<float> mDepth;  // per pixel: invDepth of the nearest surface, 0 for none
     QImage mFrame;
+    bool mBackFaceCulling = true;
 };
 
 }  // namespace palpate

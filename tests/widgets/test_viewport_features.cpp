@@ -400,6 +400,34 @@ TEST(SoftwareViewportFeatures, ShadesTheDentWithNormalsRecomputedAroundIt) {
     EXPECT_TRUE(ringTurned) << "the normals around the touched vertex";
 }
 
+TEST(SoftwareViewportFeatures, SkippingTheBackFacesOfAClosedMeshDrawsTheSamePicture) {
+    auto session = steppedSession(kTicksIntoContact);
+    SoftwareViewport viewport;
+    viewport.resize(640, 480);
+    viewport.setMesh(*session->drawnMesh());
+    ASSERT_TRUE(viewport.scene().closedAndConsistent()) << "the default organ is a closed surface";
+    EXPECT_NE(viewport.scene().outwardWinding(), 0);
+    EXPECT_TRUE(viewport.scene().outside(viewport.camera().eyeMm()));
+    viewport.setSnapshot(session->view());
+    for (const bool wireframe : {true, false}) {
+        viewport.setWireframe(wireframe);
+        viewport.setBackFaceCulling(true);
+        const QImage culled = viewport.grabImage();
+        viewport.setBackFaceCulling(false);
+        const QImage all = viewport.grabImage();
+        // Pixel centres exactly on a silhouette edge may pick the other face: a handful at most.
+        EXPECT_LE(countDifferent(culled, all, 2), 20) << "wireframe " << wireframe;
+        EXPECT_GT(countNotNear(culled, toQColor(style::kBackground).rgb(), 6), 640 * 480 / 5);
+    }
+    // An open surface (two triangles) is not closed: both its sides are drawn.
+    auto open = TissueMesh::fromTriangles({{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {10, 10, 0}}, {{0, 1, 2}, {1, 3, 2}}, "open");
+    ASSERT_TRUE(open.mesh) << open.report.text();
+    RenderScene openScene;
+    openScene.setMesh(*open.mesh);
+    EXPECT_FALSE(openScene.closedAndConsistent());
+    EXPECT_EQ(openScene.outwardWinding(), 0);
+}
+
 TEST(SoftwareViewportFeatures, TheForceLabelSitsOnAnOpaquePlateWithReadableContrast) {
     auto session = steppedSession(kTicksIntoContact);
     SoftwareViewport viewport;
