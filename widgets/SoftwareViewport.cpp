@@ -40,13 +40,19 @@ struct Corner {
     float x, y, invDepth, diffuse;
 };
 
-/// Calls shade(index, l0, l1, l2, edgePx) for every pixel centre inside triangle abc (clipped to
-/// the `width` x `height` frame): barycentric weights and the distance in pixels to the nearest
+/// Pixels [x0, x1] x [y0, y1], inclusive.
+struct PixelRect {
+    int x0, y0, x1, y1;
+    bool empty() const { return x0 > x1 || y0 > y1; }
+};
+
+/// Calls shade(x, y, l0, l1, l2, edgePx, a, b, c) for every pixel centre inside triangle abc and
+/// inside `clip`: barycentric weights and the distance in pixels to the nearest
 /// edge (only computed when `edges`; else a large number). Shared edges are filled once (top-left
 /// rule): no pinholes, no double blending. `backSign` != 0: a triangle whose screen-space area has
 /// that sign faces away and is skipped.
 template <typename Shade>
-void fillTriangle(Corner a, Corner b, Corner c, int width, int height, int backSign, bool edges, Shade&& shade) {
+void fillTriangle(Corner a, Corner b, Corner c, const PixelRect& clip, int backSign, bool edges, Shade&& shade) {
     auto orient = [](const Corner& p, const Corner& q, float x, float y) {
         return (q.x - p.x) * (y - p.y) - (q.y - p.y) * (x - p.x);
     };
@@ -57,10 +63,10 @@ void fillTriangle(Corner a, Corner b, Corner c, int width, int height, int backS
         std::swap(b, c);
         area = -area;
     }
-    const int minX = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}))));
-    const int maxX = std::min(width - 1, int(std::ceil(std::max({a.x, b.x, c.x}))));
-    const int minY = std::max(0, int(std::floor(std::min({a.y, b.y, c.y}))));
-    const int maxY = std::min(height - 1, int(std::ceil(std::max({a.y, b.y, c.y}))));
+    const int minX = std::max(clip.x0, int(std::floor(std::min({a.x, b.x, c.x}))));
+    const int maxX = std::min(clip.x1, int(std::ceil(std::max({a.x, b.x, c.x}))));
+    const int minY = std::max(clip.y0, int(std::floor(std::min({a.y, b.y, c.y}))));
+    const int maxY = std::min(clip.y1, int(std::ceil(std::max({a.y, b.y, c.y}))));
     if (minX > maxX || minY > maxY) return;
     // Edge k is opposite corner k. In screen space (y down) with positive area, an edge is "top"
     // when horizontal with the triangle below it, "left" when it goes up.
@@ -79,14 +85,14 @@ void fillTriangle(Corner a, Corner b, Corner c, int width, int height, int backS
         // The row's span from the three edges (a pixel of slack each side: the exact test below decides).
         float first = 0.0f, last = float(maxX - minX);
         bool empty = false;
-        auto clip = [&](float w, float dx) {
+        auto span = [&](float w, float dx) {
             if (dx > 0.0f) first = std::max(first, std::floor(-w / dx) - 1.0f);
             else if (dx < 0.0f) last = std::min(last, std::ceil(-w / dx) + 1.0f);
             else if (w < 0.0f) empty = true;
         };
-        clip(w0, dx0);
-        clip(w1, dx1);
-        clip(w2, dx2);
+        span(w0, dx0);
+        span(w1, dx1);
+        span(w2, dx2);
         if (empty || first > last) continue;
         const int skip = int(first);
         w0 += dx0 * float(skip);
@@ -96,7 +102,7 @@ void fillTriangle(Corner a, Corner b, Corner c, int width, int height, int backS
             if (w0 + bias0 < 0.0f || w1 + bias1 < 0.0f || w2 + bias2 < 0.0f) continue;
             if ((w0 == 0.0f && bias0 < 0.0f) || (w1 == 0.0f && bias1 < 0.0f) || (w2 == 0.0f && bias2 < 0.0f)) continue;
             const float edgePx = edges ? std::min({w0 * inv0, w1 * inv1, w2 * inv2}) : 1e9f;
-            shade(y * width + x, w0 * invArea, w1 * invArea, w2 * invArea, edgePx, a, b, c);
+            shade(x, y, w0 * invArea, w1 * invArea, w2 * invArea, edgePx, a, b, c);
         }
     }
 }
@@ -130,31 +136,37 @@ void SoftwareViewport::paintAll(QPainter& painter, QSize logicalSize, float devi
     paintSceneOverlay(painter, mScene, mCamera, logicalSize, mShowRestGhost);
 }
 
-void SoftwareViewport::updateNormals() {
-    // Only the normals that the moved vertices can have changed (RenderScene::updateVertexNormals).
-    if (mScene.allDirty() || mNormals.size() != mScene.vertexCount())
-        mScene.computeVertexNormals(mNormals);
-    else if (!mScene.dirtyVertices().empty())
-        mScene.updateVertexNormals(mNormals, mRecomputed);
-    mScene.clearDirty();
-}
-
 void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
     (void)devicePixelRatio;
-    if (mFrame.size() != sizePx || mFrame.format() != QImage::Format_RGB32) mFrame = QImage(sizePx, QImage::Format_RGB32);
     const int width = sizePx.width(), height = sizePx.height();
-    const glm::vec3& bg = style::kBackground;
-    mFrame.fill(QColor::fromRgbF(bg.x, bg.y, bg.z));
-    if (mScene.empty()) return;
-    updateNormals();
-
-    mDepth.assign(std::size_t(width) * std::size_t(height), 0.0f);
-    auto* pixels = reinterpret_cast<std::uint32_t*>(mFrame.bits());
-    const int stride = int(mFrame.bytesPerLine() / 4);
-
     const glm::vec2 size{float(width), float(height)};
     const glm::mat4 view = mCamera.view();
     const glm::mat4 projection = mCamera.projection(size.x / size.y);
+    // Seen from outside a closed surface only front faces are nearest: skip the rest. An outward
+    // counter-clockwise triangle facing the eye has a negative area in y-down screen coordinates.
+    const int backSign = mBackFaceCulling && mScene.closedAndConsistent() && mScene.outside(mCamera.eyeMm())
+                             ? mScene.outwardWinding()
+                             : 0;
+    const FrameKey key{sizePx, view, projection, mWireframe, mShowRestGhost, backSign};
+    // Only the vertices that changed since the last frame (and the corners around them, whose
+    // normals moved) are drawn again, inside the rectangle they cover, when nothing else changed.
+    // The ghost blends over what is there, so it is always drawn whole.
+    const bool whole = mScene.empty() || mScene.allDirty() || mNormals.size() != mScene.vertexCount() ||
+                       mFrame.size() != sizePx || !mFrameValid || !(key == mLastKey) || mShowRestGhost;
+    mLastKey = key;
+    mLastRaster = RasterStats{};
+    mLastRaster.whole = whole;
+    if (mFrame.size() != sizePx || mFrame.format() != QImage::Format_RGB32) mFrame = QImage(sizePx, QImage::Format_RGB32);
+    const std::uint32_t background = packRgb(style::kBackground.x, style::kBackground.y, style::kBackground.z);
+    auto* pixels = reinterpret_cast<std::uint32_t*>(mFrame.bits());
+    const int stride = int(mFrame.bytesPerLine() / 4);
+    mFrameValid = !mScene.empty();
+    if (mScene.empty()) {
+        mFrame.fill(background);
+        return;
+    }
+    if (!whole && mScene.dirtyVertices().empty()) return;  // the same picture as last time
+
     const glm::mat3 rotation(view);  // rigid: maps normals too
     const glm::vec3 light = glm::normalize(style::kLightDirView);
     auto project = [&](const glm::vec3& pointMm, const glm::vec3& normal) {
@@ -169,31 +181,70 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
                                inFront ? 1.0f / clip.w : 0.0f, std::max(glm::dot(n, light), 0.0f), inFront};
     };
     const auto positions = mScene.positionsMm();
-    mProjected.resize(positions.size());
-    for (std::size_t v = 0; v < positions.size(); ++v) mProjected[v] = project(positions[v], mNormals[v]);
-
     const auto indices = mScene.indices();
+    PixelRect region{0, 0, width - 1, height - 1};
+    if (whole) {
+        mScene.computeVertexNormals(mNormals);
+        mProjected.resize(positions.size());
+        for (std::size_t v = 0; v < positions.size(); ++v) mProjected[v] = project(positions[v], mNormals[v]);
+    } else {
+        // The region: where the changed triangles were and are now, plus the wire's pixel.
+        mScene.updateVertexNormals(mNormals, mRecomputed);
+        float x0 = size.x, y0 = size.y, x1 = -1.0f, y1 = -1.0f;
+        auto include = [&](const ProjectedVertex& p) {
+            x0 = std::min(x0, p.xPx);
+            y0 = std::min(y0, p.yPx);
+            x1 = std::max(x1, p.xPx);
+            y1 = std::max(y1, p.yPx);
+        };
+        bool behind = false;
+        for (const VertexId w : mRecomputed) {
+            include(mProjected[w]);
+            behind = behind || !mProjected[w].inFront;
+        }
+        for (const VertexId w : mRecomputed) mProjected[w] = project(positions[w], mNormals[w]);
+        for (const VertexId w : mRecomputed)
+            for (const std::uint32_t t : mScene.vertexTriangles(w))
+                for (int k = 0; k < 3; ++k) {
+                    const ProjectedVertex& p = mProjected[indices[3 * t + std::size_t(k)]];
+                    include(p);
+                    behind = behind || !p.inFront;
+                }
+        if (behind) {
+            region = PixelRect{0, 0, width - 1, height - 1};  // a projection across the eye bounds nothing
+        } else {
+            region = PixelRect{std::max(0, int(std::floor(x0)) - 2), std::max(0, int(std::floor(y0)) - 2),
+                               std::min(width - 1, int(std::ceil(x1)) + 2), std::min(height - 1, int(std::ceil(y1)) + 2)};
+        }
+    }
+    mScene.clearDirty();
+    if (region.empty()) return;
+    mDepth.resize(std::size_t(width) * std::size_t(height));
+    for (int y = region.y0; y <= region.y1; ++y) {
+        std::fill(pixels + std::ptrdiff_t(y) * stride + region.x0, pixels + std::ptrdiff_t(y) * stride + region.x1 + 1, background);
+        std::fill(mDepth.begin() + std::ptrdiff_t(y) * width + region.x0, mDepth.begin() + std::ptrdiff_t(y) * width + region.x1 + 1, 0.0f);
+    }
+    mLastRaster.regionPx = std::size_t(region.x1 - region.x0 + 1) * std::size_t(region.y1 - region.y0 + 1);
+
     const auto weights = mScene.pressedWeights();
     const auto rings = mScene.rings();
     auto corner = [](const ProjectedVertex& p) { return Corner{p.xPx, p.yPx, p.invDepth, p.diffuse}; };
     // A triangle crossing the near plane is dropped rather than clipped.
+    const float rx0 = float(region.x0) - 1.0f, ry0 = float(region.y0) - 1.0f, rx1 = float(region.x1) + 1.0f,
+                ry1 = float(region.y1) + 1.0f;
     auto visible = [&](const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c) {
         if (!a.inFront || !b.inFront || !c.inFront) return false;
         const float minX = std::min({a.xPx, b.xPx, c.xPx}), maxX = std::max({a.xPx, b.xPx, c.xPx});
         const float minY = std::min({a.yPx, b.yPx, c.yPx}), maxY = std::max({a.yPx, b.yPx, c.yPx});
-        return !(maxX < 0.0f || minX > size.x || maxY < 0.0f || minY > size.y);
+        return !(maxX < rx0 || minX > rx1 || maxY < ry0 || minY > ry1);
     };
     const float wireAlpha = mWireframe ? style::kWireAlpha : 0.0f;
-    // Seen from outside a closed surface only front faces are nearest: skip the rest. An outward
-    // counter-clockwise triangle facing the eye has a negative area in y-down screen coordinates.
-    const int backSign = mBackFaceCulling && mScene.closedAndConsistent() && mScene.outside(mCamera.eyeMm())
-                             ? mScene.outwardWinding()
-                             : 0;
     const glm::vec3 wire = style::kWire;
     for (std::size_t t = 0; 3 * t + 2 < indices.size(); ++t) {
         const std::uint32_t ia = indices[3 * t], ib = indices[3 * t + 1], ic = indices[3 * t + 2];
         const ProjectedVertex &pa = mProjected[ia], &pb = mProjected[ib], &pc = mProjected[ic];
         if (!visible(pa, pb, pc)) continue;
+        ++mLastRaster.triangles;
         // The lowest ring among the corners colours the triangle (as the GL geometry shader does);
         // outside the rings the displacement tints it.
         const std::uint8_t ring = std::min({rings[ia], rings[ib], rings[ic]});
@@ -205,17 +256,17 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
         } else {
             base = glm::mix(style::kTissue, style::kPressed, (weights[ia] + weights[ib] + weights[ic]) / 3.0f);
         }
-        fillTriangle(corner(pa), corner(pb), corner(pc), width, height, backSign, wireAlpha > 0.0f,
-                     [&](int index, float l0, float l1, float l2, float edgePx, const Corner& a, const Corner& b,
+        fillTriangle(corner(pa), corner(pb), corner(pc), region, backSign, wireAlpha > 0.0f,
+                     [&](int x, int y, float l0, float l1, float l2, float edgePx, const Corner& a, const Corner& b,
                          const Corner& c) {
                          const float depth = l0 * a.invDepth + l1 * b.invDepth + l2 * c.invDepth;
-                         float& stored = mDepth[std::size_t(index)];
+                         float& stored = mDepth[std::size_t(y) * std::size_t(width) + std::size_t(x)];
                          if (depth <= stored) return;
                          stored = depth;
                          const float diffuse = l0 * a.diffuse + l1 * b.diffuse + l2 * c.diffuse;
                          glm::vec3 rgb = base * (ambient + (1.0f - ambient) * diffuse);
                          if (wireAlpha > 0.0f && edgePx < 1.0f) rgb = glm::mix(rgb, wire, wireAlpha * wireWeight(edgePx));
-                         pixels[(index / width) * stride + index % width] = packRgb(rgb.x, rgb.y, rgb.z);
+                         pixels[std::ptrdiff_t(y) * stride + x] = packRgb(rgb.x, rgb.y, rgb.z);
                      });
     }
 
@@ -230,15 +281,15 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
         const ProjectedVertex pa = project(rest[ia], mNormals[ia]), pb = project(rest[ib], mNormals[ib]),
                               pc = project(rest[ic], mNormals[ic]);
         if (!visible(pa, pb, pc)) continue;
-        fillTriangle(corner(pa), corner(pb), corner(pc), width, height, 0, true,
-                     [&](int index, float l0, float l1, float l2, float edgePx, const Corner& a, const Corner& b,
+        fillTriangle(corner(pa), corner(pb), corner(pc), region, 0, true,
+                     [&](int x, int y, float l0, float l1, float l2, float edgePx, const Corner& a, const Corner& b,
                          const Corner& c) {
                          const float depth = l0 * a.invDepth + l1 * b.invDepth + l2 * c.invDepth;
-                         const float stored = mDepth[std::size_t(index)];
+                         const float stored = mDepth[std::size_t(y) * std::size_t(width) + std::size_t(x)];
                          if (depth <= 0.0f) return;
                          if (stored > 0.0f && 1.0f / depth > 1.0f / stored - kGhostMarginMm) return;
                          const float alpha = edgePx < 1.0f ? style::kGhostWireAlpha : style::kGhostFillAlpha;
-                         std::uint32_t& pixel = pixels[(index / width) * stride + index % width];
+                         std::uint32_t& pixel = pixels[std::ptrdiff_t(y) * stride + x];
                          const glm::vec3 under(float((pixel >> 16) & 0xff) / 255.0f, float((pixel >> 8) & 0xff) / 255.0f,
                                                float(pixel & 0xff) / 255.0f);
                          const glm::vec3 rgb = glm::mix(under, ghost, alpha);

@@ -7,15 +7,18 @@
 // widget tests, remote sessions), where OpenGL is itself a software rasteriser and this is faster
 // (ViewportFactory), or when --software-render is given.
 //
-// Per frame it transforms every vertex once and fills every front-facing triangle once against the
+// A whole frame transforms every vertex once and fills every front-facing triangle once against the
 // depth buffer (a closed mesh seen from outside: its back faces are skipped), scanning each row only
-// over the triangle's span: no sort, no QPainter call per triangle (docs/bench/README.md, "Viewport").
+// over the triangle's span: no sort, no QPainter call per triangle. While only a dent changes (same
+// camera, size and options), only the rectangle around the changed triangles is cleared and drawn
+// again, from the kept picture and depth buffer (docs/bench/README.md, "Viewport").
 
 #include "widgets/Viewport.h"
 
 #include <QImage>
 #include <QWidget>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -41,6 +44,14 @@ public:
         update();
     }
 
+    /// What the last frame drew: the whole picture, or only the rectangle around what changed.
+    struct RasterStats {
+        bool whole = false;
+        std::size_t regionPx = 0;   ///< pixels cleared and drawn again (0: the picture was kept)
+        std::size_t triangles = 0;  ///< triangles filled (before back faces are skipped)
+    };
+    const RasterStats& lastRaster() const { return mLastRaster; }
+
     /// Per-vertex normals as last drawn (the shape's, area-weighted; RenderScene::computeVertexNormals).
     const std::vector<glm::vec3>& vertexNormals() const { return mNormals; }
 
@@ -55,7 +66,6 @@ protected:
 private:
     /// Draws the scene (not the markers) into mFrame, of `sizePx` device pixels.
     void rasterScene(QSize sizePx, float devicePixelRatio);
-    void updateNormals();
     void paintAll(QPainter& painter, QSize logicalSize, float devicePixelRatio);
 
     // Kept between frames so that painting does not allocate.
@@ -70,7 +80,18 @@ private:
     std::vector<VertexId> mRecomputed;
     std::vector<float> mDepth;  // per pixel: invDepth of the nearest surface, 0 for none
     QImage mFrame;
+    bool mFrameValid = false;
     bool mBackFaceCulling = true;
+    /// What the picture in mFrame depends on besides the scene: when it changes, all is drawn again.
+    struct FrameKey {
+        QSize sizePx;
+        glm::mat4 view{1.0f}, projection{1.0f};
+        bool wireframe = false, ghost = false;
+        int backSign = 0;
+        bool operator==(const FrameKey&) const = default;
+    };
+    FrameKey mLastKey;
+    RasterStats mLastRaster;
 };
 
 }  // namespace palpate

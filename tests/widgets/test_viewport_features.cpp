@@ -428,6 +428,48 @@ TEST(SoftwareViewportFeatures, SkippingTheBackFacesOfAClosedMeshDrawsTheSamePict
     EXPECT_EQ(openScene.outwardWinding(), 0);
 }
 
+TEST(SoftwareViewportFeatures, RedrawingOnlyAroundTheDentGivesTheSamePictureAsAWholeFrame) {
+    auto session = steppedSession(kTicksIntoContact / 2);
+    SoftwareViewport incremental;
+    incremental.resize(640, 480);
+    incremental.setMesh(*session->drawnMesh());
+    incremental.setSnapshot(session->view());
+    (void)incremental.grabImage();
+    EXPECT_TRUE(incremental.lastRaster().whole) << "a new mesh is drawn whole";
+    std::size_t partialFrames = 0;
+    for (int frame = 0; frame < 20; ++frame) {
+        session->step(kTicksIntoContact / 20);
+        session->observe();
+        incremental.setSnapshot(session->view());
+        (void)incremental.grabImage();
+        if (!incremental.lastRaster().whole) {
+            ++partialFrames;
+            EXPECT_LT(incremental.lastRaster().regionPx, std::size_t(640 * 480 / 4)) << "frame " << frame;
+        }
+    }
+    EXPECT_GT(partialFrames, 15u) << "while only the dent changes, only its rectangle is drawn again";
+    ASSERT_TRUE(session->view().contact);
+
+    SoftwareViewport whole;
+    whole.resize(640, 480);
+    whole.setMesh(*session->drawnMesh());
+    whole.setSnapshot(session->view());
+    const QImage expected = whole.grabImage();
+    EXPECT_TRUE(whole.lastRaster().whole);
+    EXPECT_EQ(countDifferent(incremental.grabImage(), expected, 0), 0);
+    // Nothing new: the picture is kept, nothing is drawn again.
+    (void)incremental.grabImage();
+    EXPECT_EQ(incremental.lastRaster().regionPx, 0u);
+    // A camera move draws all again.
+    incremental.resetCamera();
+    incremental.fitCamera();
+    QWheelEvent wheel(QPointF(320, 240), QPointF(320, 240), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                      Qt::NoScrollPhase, false);
+    QApplication::sendEvent(&incremental, &wheel);
+    (void)incremental.grabImage();
+    EXPECT_TRUE(incremental.lastRaster().whole);
+}
+
 TEST(SoftwareViewportFeatures, TheForceLabelSitsOnAnOpaquePlateWithReadableContrast) {
     auto session = steppedSession(kTicksIntoContact);
     SoftwareViewport viewport;
