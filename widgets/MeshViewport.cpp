@@ -211,7 +211,15 @@ void MeshViewport::paintGL() {
 
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
-        glDisable(GL_CULL_FACE);  // open meshes are allowed: their inside must show
+        // Open meshes are allowed: their inside must show. Seen from outside a closed, consistently
+        // wound surface, only its front faces can be nearest: the back half is not drawn.
+        if (mBackFaceCulling && mScene.closedAndConsistent() && mScene.outside(mCamera.eyeMm())) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_BACK);
+            glFrontFace(mScene.outwardWinding() > 0 ? GL_CCW : GL_CW);
+        } else {
+            glDisable(GL_CULL_FACE);
+        }
         mMeshProgram->bind();
         glUniformMatrix4fv(mMeshProgram->uniformLocation("uView"), 1, GL_FALSE, glm::value_ptr(view));
         glUniformMatrix4fv(mMeshProgram->uniformLocation("uProjection"), 1, GL_FALSE, glm::value_ptr(projection));
@@ -239,6 +247,7 @@ void MeshViewport::paintGL() {
         vaoBinder.release();
         mMeshProgram->release();
 
+        glDisable(GL_CULL_FACE);
         if (mShowRestGhost) {
             mFlatProgram->bind();
             glUniformMatrix4fv(mFlatProgram->uniformLocation("uView"), 1, GL_FALSE, glm::value_ptr(view));

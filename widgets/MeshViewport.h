@@ -54,6 +54,13 @@ public:
     /// False when the shaders did not build (then only the markers are drawn); set by the first paint.
     bool glReady() const { return mGlReady; }
     const UploadStats& lastUpload() const { return mLastUpload; }
+    /// Skipping the back faces of a closed mesh seen from outside (on by default). Off, every
+    /// triangle is drawn: the same picture, slower (the tests compare the two).
+    void setBackFaceCulling(bool on) {
+        mBackFaceCulling = on;
+        update();
+    }
+
     /// The multisampling asked for at construction (the context may give more or fewer).
     int requestedSamples() const { return mRequestedSamples; }
     /// Whole-buffer uploads so far (one per mesh or context, when all is well).
@@ -92,6 +99,7 @@ private:
     QOpenGLBuffer mIndexBuffer{QOpenGLBuffer::IndexBuffer};
     int mIndexCount = 0;
     int mRequestedSamples = 0;
+    bool mBackFaceCulling = true;
     bool mTopologyDirty = true;
     bool mGlReady = false;  // false if the shaders failed: then only the markers are drawn
 

@@ -176,6 +176,20 @@ TEST_F(GlViewport, PartialUploadsDrawTheSamePictureAsAWholeUpload) {
     EXPECT_EQ(countDifferent(fromRanges, fromWhole, 0), 0) << "partial uploads left stale vertices or normals";
 }
 
+TEST_F(GlViewport, SkippingTheBackFacesOfAClosedMeshDrawsTheSamePicture) {
+    stepTo(kTicksIntoContact);
+    auto viewport = makeViewport(true);
+    ASSERT_TRUE(viewport->scene().closedAndConsistent());
+    const QImage culled = viewport->grabImage();
+    viewport->setBackFaceCulling(false);
+    const QImage all = viewport->grabImage();
+    keep(culled, "culled");
+    // Along the silhouette a back face's wire can win the LEQUAL depth test by a hair: a thin line
+    // of pixels at most (a wrong winding would differ over the whole organ).
+    EXPECT_LE(countDifferent(culled, all, 2), 300);
+    EXPECT_GT(countNotNear(culled, toQColor(style::kBackground).rgb(), 6), kWidthPx * kHeightPx / 5);
+}
+
 TEST_F(GlViewport, ShowsTheRestGhostOverTheDentOnly) {
     auto viewport = makeViewport();
     const QImage plain = viewport->grabImage();
