@@ -15,6 +15,8 @@
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include <time.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -54,6 +56,14 @@ double loadAverage() {
     bool ok = false;
     const double load = QString::fromLatin1(file.readLine()).section(QLatin1Char(' '), 0, 0).toDouble(&ok);
     return ok ? load : -1.0;
+}
+
+/// CPU seconds this (the GUI) thread has used: with other work on the machine, the wall-clock frame
+/// time grows, this much less.
+double threadCpuS() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
 }
 
 /// Calls `painted` after each paint event of the watched widget.
@@ -134,6 +144,7 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
     enum class Phase { WaitingForContact, Settling, Measuring, Done } phase = Phase::WaitingForContact;
     double contactAtS = 0.0, measureStartS = 0.0, lastPaintS = 0.0, measureEndS = 0.0;
     std::uint64_t framesAtStart = 0, framesAtEnd = 0;
+    double cpuAtStartS = 0.0, cpuAtEndS = 0.0;
     std::vector<double> frameMs;
     frameMs.reserve(std::size_t(options.seconds * 1000.0) + 16);
     std::size_t paints = 0, contactPaints = 0, fullUploads = 0, partialUploads = 0, uploadedVertices = 0, uploadRanges = 0;
@@ -183,12 +194,14 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
                     phase = Phase::Measuring;
                     measureStartS = nowS;
                     framesAtStart = viewport->framesDrawn();
+                    cpuAtStartS = threadCpuS();
                 }
                 break;
             case Phase::Measuring:
                 if (nowS - measureStartS >= options.seconds) {
                     measureEndS = nowS;
                     framesAtEnd = viewport->framesDrawn();
+                    cpuAtEndS = threadCpuS();
                     finish(false);
                 }
                 break;
@@ -230,9 +243,11 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
 
     std::printf("viewport %dx%d px%s%s; measured %.2f s in contact; haptic loop %.0f Hz\n", sizePx.width(),
                 sizePx.height(), glInfo.isEmpty() ? "" : ", GL: ", qPrintable(glInfo), elapsedS, loopRateHz);
-    std::printf("frames=%llu mean_frame_ms=%.2f p95_frame_ms=%.2f fps=%.1f renderer=%s samples=%d vertices=%zu load=%.2f\n",
-                static_cast<unsigned long long>(frames), meanMs, p95Ms, fps, qPrintable(rendererName(kind)), samples,
-                vertexCount, loadAtEnd);
+    const double guiCpuMsPerFrame = (cpuAtEndS - cpuAtStartS) * 1e3 / double(frames);
+    std::printf("frames=%llu mean_frame_ms=%.2f p95_frame_ms=%.2f fps=%.1f gui_cpu_ms_per_frame=%.2f renderer=%s "
+                "samples=%d vertices=%zu load=%.2f\n",
+                static_cast<unsigned long long>(frames), meanMs, p95Ms, fps, guiCpuMsPerFrame,
+                qPrintable(rendererName(kind)), samples, vertexCount, loadAtEnd);
     std::printf("contact in %zu of %zu frames", contactPaints, paints);
     if (kind == RendererKind::OpenGL && paints > 0) {
         const double perFrame = double(uploadedVertices) / double(paints);
