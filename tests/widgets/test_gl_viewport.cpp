@@ -6,6 +6,7 @@
 
 #include "app/common/DefaultScene.h"
 #include "app/gui/HapticSession.h"
+#include "app/gui/ViewportBenchmark.h"
 #include "widgets/MeshViewport.h"
 #include "widgets/SceneOverlay.h"
 #include "widgets/SceneStyle.h"
@@ -261,6 +262,17 @@ TEST_F(GlViewport, PicksAndPansLikeTheSoftwareViewport) {
     EXPECT_EQ(gl->pickVertex(QPoint(int(std::floor(p->x)), int(std::floor(p->y)))), touched);
     // And the picture after the pan is still the mesh, drawn.
     EXPECT_GT(countNotNear(gl->grabImage(), toQColor(style::kBackground).rgb(), 6), kWidthPx * kHeightPx / 5);
+}
+
+TEST_F(GlViewport, TheBenchmarkPrintsFpsWithOpenGlForced) {
+    testing::internal::CaptureStdout();
+    const int code = runViewportBenchmark(QStringLiteral("0.5"), defaultMeshPath(), RendererChoice::OpenGL);
+    const std::string out = testing::internal::GetCapturedStdout();
+    EXPECT_EQ(code, 0) << out;
+    EXPECT_NE(out.find("fps="), std::string::npos) << out;
+    EXPECT_NE(out.find("renderer=OpenGL"), std::string::npos) << out;
+    const bool cpu = isSoftwareGlRenderer(probeOpenGl33().renderer);
+    EXPECT_NE(out.find(cpu ? "samples=0" : "samples=4"), std::string::npos) << out;
 }
 
 int main(int argc, char** argv) {
