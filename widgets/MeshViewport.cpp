@@ -229,6 +229,8 @@ void MeshViewport::paintGL() {
         mMeshProgram->setUniformValue("uLightDirView", light.x, light.y, light.z);
         mMeshProgram->setUniformValue("uAmbient", style::kAmbient);
         mMeshProgram->setUniformValue("uRingAmbient", style::kRingAmbient);
+        mMeshProgram->setUniformValue("uSpecular", style::kSpecular);
+        mMeshProgram->setUniformValue("uShininess", style::kShininess);
         glUniform3fv(mMeshProgram->uniformLocation("uRingColors"), GLsizei(style::kRingColours.size()),
                      glm::value_ptr(style::kRingColours[0]));
 

@@ -49,6 +49,9 @@ inline constexpr float kWireAlpha = 0.22f;
 /// Key light, camera space, pointing from the surface towards the light (upper left, in front).
 inline constexpr glm::vec3 kLightDirView{-0.35f, 0.55f, 0.76f};
 inline constexpr float kAmbient = 0.28f;
+/// The key light's highlight (Blinn-Phong): its strength and exponent, the same in both renderers.
+inline constexpr float kSpecular = 0.18f;
+inline constexpr float kShininess = 40.0f;
 /// Ring colours are lit with more ambient light than the tissue, so that a ring on a face turned away
 /// from the light still reads as its colour.
 inline constexpr float kRingAmbient = 0.28f;

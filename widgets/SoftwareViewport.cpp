@@ -37,7 +37,7 @@ float wireWeight(float distancePx) {
 }
 
 struct Corner {
-    float x, y, invDepth, diffuse;
+    float x, y, invDepth, diffuse, specular;
 };
 
 /// Pixels [x0, x1] x [y0, y1], inclusive.
@@ -177,8 +177,13 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
         // Two-sided, whatever the winding: open meshes show their inside.
         glm::vec3 n = rotation * normal;
         if (glm::dot(n, -glm::vec3(pv)) < 0.0f) n = -n;
+        // The key light and its highlight (as mesh.frag, per vertex): the highlight moving over a
+        // dent's walls shows its shape.
+        const glm::vec3 toEye = glm::normalize(-glm::vec3(pv));
+        const float specular = style::kSpecular * std::pow(std::max(glm::dot(n, glm::normalize(light + toEye)), 0.0f),
+                                                           style::kShininess);
         return ProjectedVertex{(clip.x / w * 0.5f + 0.5f) * size.x, (0.5f - clip.y / w * 0.5f) * size.y,
-                               inFront ? 1.0f / clip.w : 0.0f, std::max(glm::dot(n, light), 0.0f), inFront};
+                               inFront ? 1.0f / clip.w : 0.0f, std::max(glm::dot(n, light), 0.0f), specular, inFront};
     };
     const auto positions = mScene.positionsMm();
     const auto indices = mScene.indices();
@@ -228,7 +233,7 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
 
     const auto weights = mScene.pressedWeights();
     const auto rings = mScene.rings();
-    auto corner = [](const ProjectedVertex& p) { return Corner{p.xPx, p.yPx, p.invDepth, p.diffuse}; };
+    auto corner = [](const ProjectedVertex& p) { return Corner{p.xPx, p.yPx, p.invDepth, p.diffuse, p.specular}; };
     // A triangle crossing the near plane is dropped rather than clipped.
     const float rx0 = float(region.x0) - 1.0f, ry0 = float(region.y0) - 1.0f, rx1 = float(region.x1) + 1.0f,
                 ry1 = float(region.y1) + 1.0f;
@@ -264,7 +269,8 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
                          if (depth <= stored) return;
                          stored = depth;
                          const float diffuse = l0 * a.diffuse + l1 * b.diffuse + l2 * c.diffuse;
-                         glm::vec3 rgb = base * (ambient + (1.0f - ambient) * diffuse);
+                         const float specular = l0 * a.specular + l1 * b.specular + l2 * c.specular;
+                         glm::vec3 rgb = base * (ambient + (1.0f - ambient) * diffuse) + glm::vec3(specular);
                          if (wireAlpha > 0.0f && edgePx < 1.0f) rgb = glm::mix(rgb, wire, wireAlpha * wireWeight(edgePx));
                          pixels[std::ptrdiff_t(y) * stride + x] = packRgb(rgb.x, rgb.y, rgb.z);
                      });

@@ -73,6 +73,7 @@ private:
         float xPx, yPx;
         float invDepth;   // 1 / (distance along the view axis, mm): linear across the screen
         float diffuse;    // key light on the vertex normal, turned towards the eye
+        float specular;   // its highlight
         bool inFront;     // in front of the near plane
     };
     std::vector<ProjectedVertex> mProjected;
