@@ -73,7 +73,9 @@ void fillTriangle(Corner a, Corner b, Corner c, const PixelRect& clip, int backS
     auto topLeft = [](const Corner& p, const Corner& q) { return (p.y == q.y && q.x < p.x) || q.y < p.y; };
     const float bias0 = topLeft(b, c) ? 0.0f : -1e-7f, bias1 = topLeft(c, a) ? 0.0f : -1e-7f,
                 bias2 = topLeft(a, b) ? 0.0f : -1e-7f;
-    auto inverseLength = [edges](float dx, float dy) { return edges ? 1.0f / std::max(std::sqrt(dx * dx + dy * dy), 1e-6f) : 0.0f; };
+    auto inverseLength = [edges](float dx, float dy) {
+        return edges ? 1.0f / std::max(std::sqrt(dx * dx + dy * dy), 1e-6f) : 0.0f;
+    };
     const float inv0 = inverseLength(c.x - b.x, c.y - b.y);
     const float inv1 = inverseLength(a.x - c.x, a.y - c.y);
     const float inv2 = inverseLength(b.x - a.x, b.y - a.y);
@@ -156,7 +158,8 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
     mLastKey = key;
     mLastRaster = RasterStats{};
     mLastRaster.whole = whole;
-    if (mFrame.size() != sizePx || mFrame.format() != QImage::Format_RGB32) mFrame = QImage(sizePx, QImage::Format_RGB32);
+    if (mFrame.size() != sizePx || mFrame.format() != QImage::Format_RGB32)
+        mFrame = QImage(sizePx, QImage::Format_RGB32);
     const std::uint32_t background = packRgb(style::kBackground.x, style::kBackground.y, style::kBackground.z);
     auto* pixels = reinterpret_cast<std::uint32_t*>(mFrame.bits());
     const int stride = int(mFrame.bytesPerLine() / 4);
@@ -180,10 +183,14 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
         // The key light and its highlight (as mesh.frag, per vertex): the highlight moving over a
         // dent's walls shows its shape.
         const glm::vec3 toEye = glm::normalize(-glm::vec3(pv));
-        const float specular = style::kSpecular * std::pow(std::max(glm::dot(n, glm::normalize(light + toEye)), 0.0f),
-                                                           style::kShininess);
-        return ProjectedVertex{(clip.x / w * 0.5f + 0.5f) * size.x, (0.5f - clip.y / w * 0.5f) * size.y,
-                               inFront ? 1.0f / clip.w : 0.0f, std::max(glm::dot(n, light), 0.0f), specular, inFront};
+        const float specular = style::kSpecular *
+                               std::pow(std::max(glm::dot(n, glm::normalize(light + toEye)), 0.0f), style::kShininess);
+        return ProjectedVertex{(clip.x / w * 0.5f + 0.5f) * size.x,
+                               (0.5f - clip.y / w * 0.5f) * size.y,
+                               inFront ? 1.0f / clip.w : 0.0f,
+                               std::max(glm::dot(n, light), 0.0f),
+                               specular,
+                               inFront};
     };
     const auto positions = mScene.positionsMm();
     const auto indices = mScene.indices();
@@ -219,15 +226,18 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
             region = PixelRect{0, 0, width - 1, height - 1};  // a projection across the eye bounds nothing
         } else {
             region = PixelRect{std::max(0, int(std::floor(x0)) - 2), std::max(0, int(std::floor(y0)) - 2),
-                               std::min(width - 1, int(std::ceil(x1)) + 2), std::min(height - 1, int(std::ceil(y1)) + 2)};
+                               std::min(width - 1, int(std::ceil(x1)) + 2),
+                               std::min(height - 1, int(std::ceil(y1)) + 2)};
         }
     }
     mScene.clearDirty();
     if (region.empty()) return;
     mDepth.resize(std::size_t(width) * std::size_t(height));
     for (int y = region.y0; y <= region.y1; ++y) {
-        std::fill(pixels + std::ptrdiff_t(y) * stride + region.x0, pixels + std::ptrdiff_t(y) * stride + region.x1 + 1, background);
-        std::fill(mDepth.begin() + std::ptrdiff_t(y) * width + region.x0, mDepth.begin() + std::ptrdiff_t(y) * width + region.x1 + 1, 0.0f);
+        std::fill(pixels + std::ptrdiff_t(y) * stride + region.x0, pixels + std::ptrdiff_t(y) * stride + region.x1 + 1,
+                  background);
+        std::fill(mDepth.begin() + std::ptrdiff_t(y) * width + region.x0,
+                  mDepth.begin() + std::ptrdiff_t(y) * width + region.x1 + 1, 0.0f);
     }
     mLastRaster.regionPx = std::size_t(region.x1 - region.x0 + 1) * std::size_t(region.y1 - region.y0 + 1);
 
@@ -271,7 +281,8 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
                          const float diffuse = l0 * a.diffuse + l1 * b.diffuse + l2 * c.diffuse;
                          const float specular = l0 * a.specular + l1 * b.specular + l2 * c.specular;
                          glm::vec3 rgb = base * (ambient + (1.0f - ambient) * diffuse) + glm::vec3(specular);
-                         if (wireAlpha > 0.0f && edgePx < 1.0f) rgb = glm::mix(rgb, wire, wireAlpha * wireWeight(edgePx));
+                         if (wireAlpha > 0.0f && edgePx < 1.0f)
+                             rgb = glm::mix(rgb, wire, wireAlpha * wireWeight(edgePx));
                          pixels[std::ptrdiff_t(y) * stride + x] = packRgb(rgb.x, rgb.y, rgb.z);
                      });
     }
@@ -296,8 +307,8 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
                          if (stored > 0.0f && 1.0f / depth > 1.0f / stored - kGhostMarginMm) return;
                          const float alpha = edgePx < 1.0f ? style::kGhostWireAlpha : style::kGhostFillAlpha;
                          std::uint32_t& pixel = pixels[std::ptrdiff_t(y) * stride + x];
-                         const glm::vec3 under(float((pixel >> 16) & 0xff) / 255.0f, float((pixel >> 8) & 0xff) / 255.0f,
-                                               float(pixel & 0xff) / 255.0f);
+                         const glm::vec3 under(float((pixel >> 16) & 0xff) / 255.0f,
+                                               float((pixel >> 8) & 0xff) / 255.0f, float(pixel & 0xff) / 255.0f);
                          const glm::vec3 rgb = glm::mix(under, ghost, alpha);
                          pixel = packRgb(rgb.x, rgb.y, rgb.z);
                      });

@@ -71,10 +71,10 @@ private:
     // Kept between frames so that painting does not allocate.
     struct ProjectedVertex {
         float xPx, yPx;
-        float invDepth;   // 1 / (distance along the view axis, mm): linear across the screen
-        float diffuse;    // key light on the vertex normal, turned towards the eye
-        float specular;   // its highlight
-        bool inFront;     // in front of the near plane
+        float invDepth;  // 1 / (distance along the view axis, mm): linear across the screen
+        float diffuse;   // key light on the vertex normal, turned towards the eye
+        float specular;  // its highlight
+        bool inFront;    // in front of the near plane
     };
     std::vector<ProjectedVertex> mProjected;
     std::vector<glm::vec3> mNormals;

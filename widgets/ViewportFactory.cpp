@@ -83,14 +83,16 @@ RendererDecision decideRenderer(RendererChoice choice, const GlProbe& probe, int
     }
     const QString renderer = probe.renderer.isEmpty() ? QStringLiteral("unknown renderer") : probe.renderer;
     if (choice == RendererChoice::Auto && isSoftwareGlRenderer(probe.renderer)) {
-        decision.reason = QStringLiteral("OpenGL here is %1, a CPU rasteriser: the software renderer is faster").arg(renderer);
+        decision.reason = QStringLiteral("OpenGL here is %1, a CPU rasteriser: the software renderer is faster")
+                              .arg(renderer);
         return decision;
     }
     decision.kind = RendererKind::OpenGL;
     decision.samples = viewportSamplesFor(probe.renderer, overrideSamples);
     decision.reason = QStringLiteral("OpenGL 3.3 core is available (%1; %2)")
-                          .arg(renderer, decision.samples > 0 ? QStringLiteral("%1x multisampling").arg(decision.samples)
-                                                              : QStringLiteral("no multisampling"));
+                          .arg(renderer, decision.samples > 0
+                                             ? QStringLiteral("%1x multisampling").arg(decision.samples)
+                                             : QStringLiteral("no multisampling"));
     return decision;
 }
 

@@ -43,7 +43,8 @@ QString glRendererString(QOpenGLWidget* widget) {
         QOpenGLFunctions* f = context->functions();
         const auto* renderer = reinterpret_cast<const char*>(f->glGetString(GL_RENDERER));
         const auto* version = reinterpret_cast<const char*>(f->glGetString(GL_VERSION));
-        text = QStringLiteral("%1, %2").arg(QLatin1String(renderer ? renderer : "?"), QLatin1String(version ? version : "?"));
+        text = QStringLiteral("%1, %2").arg(QLatin1String(renderer ? renderer : "?"),
+                                            QLatin1String(version ? version : "?"));
     }
     widget->doneCurrent();
     return text;
@@ -147,7 +148,8 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
     double cpuAtStartS = 0.0, cpuAtEndS = 0.0;
     std::vector<double> frameMs;
     frameMs.reserve(std::size_t(options.seconds * 1000.0) + 16);
-    std::size_t paints = 0, contactPaints = 0, fullUploads = 0, partialUploads = 0, uploadedVertices = 0, uploadRanges = 0;
+    std::size_t paints = 0, contactPaints = 0, fullUploads = 0, partialUploads = 0, uploadedVertices = 0,
+                uploadRanges = 0;
     bool failed = false;
 
     auto finish = [&](bool failure) {
@@ -244,16 +246,17 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
     std::printf("viewport %dx%d px%s%s; measured %.2f s in contact; haptic loop %.0f Hz\n", sizePx.width(),
                 sizePx.height(), glInfo.isEmpty() ? "" : ", GL: ", qPrintable(glInfo), elapsedS, loopRateHz);
     const double guiCpuMsPerFrame = (cpuAtEndS - cpuAtStartS) * 1e3 / double(frames);
-    std::printf("frames=%llu mean_frame_ms=%.2f p95_frame_ms=%.2f fps=%.1f gui_cpu_ms_per_frame=%.2f renderer=%s "
-                "samples=%d vertices=%zu load=%.2f\n",
-                static_cast<unsigned long long>(frames), meanMs, p95Ms, fps, guiCpuMsPerFrame,
-                qPrintable(rendererName(kind)), samples, vertexCount, loadAtEnd);
+    std::printf(
+        "frames=%llu mean_frame_ms=%.2f p95_frame_ms=%.2f fps=%.1f gui_cpu_ms_per_frame=%.2f renderer=%s "
+        "samples=%d vertices=%zu load=%.2f\n",
+        static_cast<unsigned long long>(frames), meanMs, p95Ms, fps, guiCpuMsPerFrame, qPrintable(rendererName(kind)),
+        samples, vertexCount, loadAtEnd);
     std::printf("contact in %zu of %zu frames", contactPaints, paints);
     if (kind == RendererKind::OpenGL && paints > 0) {
         const double perFrame = double(uploadedVertices) / double(paints);
         std::printf("; uploads: %zu partial, %zu full, mean %.0f vertices (%.1f kB, %.1f ranges) per frame of %zu",
-                    partialUploads, fullUploads, perFrame, perFrame * 32.0 / 1024.0, double(uploadRanges) / double(paints),
-                    vertexCount);
+                    partialUploads, fullUploads, perFrame, perFrame * 32.0 / 1024.0,
+                    double(uploadRanges) / double(paints), vertexCount);
     }
     std::printf("\n");
     std::fflush(stdout);

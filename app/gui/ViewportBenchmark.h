@@ -18,7 +18,7 @@ namespace palpate {
 
 struct ViewportBenchmarkDef {
     double seconds = 5.0;
-    QString meshPath;                   ///< empty: a generated sphere of `vertexCount` vertices
+    QString meshPath;  ///< empty: a generated sphere of `vertexCount` vertices
     std::size_t vertexCount = 100000;
     RendererChoice renderer = RendererChoice::Auto;
     QString deviceUri = QStringLiteral("sim:sine");
