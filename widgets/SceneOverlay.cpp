@@ -68,9 +68,9 @@ bool displaced(const RenderScene& scene, VertexId v) {
 }
 
 /// The boundary of the displaced patch: the edges between triangles with a displaced corner and
-/// triangles without one (or the mesh's own border), projected. Returns the patch's pixel bounds.
-QRectF paintPatchOutline(QPainter& painter, const RenderScene& scene, const OrbitCamera& camera, const glm::vec2& size) {
-    static std::vector<QLineF> lines;  // GUI thread only; kept so that a frame does not allocate
+/// triangles without one (or the mesh's own border), projected, into `lines`. Returns the patch's
+/// pixel bounds (empty when nothing is displaced).
+QRectF patchOutline(const RenderScene& scene, const OrbitCamera& camera, const glm::vec2& size, std::vector<QLineF>& lines) {
     lines.clear();
     const auto indices = scene.indices();
     const auto positions = scene.positionsMm();
@@ -106,6 +106,13 @@ QRectF paintPatchOutline(QPainter& painter, const RenderScene& scene, const Orbi
             }
         }
     }
+    return lines.empty() ? QRectF() : bounds;
+}
+
+/// Draws the patch's outline; returns its pixel bounds.
+QRectF paintPatchOutline(QPainter& painter, const RenderScene& scene, const OrbitCamera& camera, const glm::vec2& size) {
+    static std::vector<QLineF> lines;  // GUI thread only; kept so that a frame does not allocate
+    const QRectF bounds = patchOutline(scene, camera, size, lines);
     if (lines.empty()) return {};
     const QColor outline = toQColor(style::kPatchOutline);
     painter.setPen(QPen(QColor(0, 0, 0, 170), 4.0, Qt::SolidLine, Qt::RoundCap));
@@ -256,10 +263,33 @@ std::optional<ForceLabel> forceLabel(const RenderScene& scene, const OrbitCamera
     topLeft.setX(std::clamp(topLeft.x(), 2.0, std::max(2.0, sizePx.width() - box.width() - 2.0)));
     topLeft.setY(std::clamp(topLeft.y(), 2.0, std::max(2.0, sizePx.height() - box.height() - 2.0)));
     label.plate = QRectF(topLeft, box);
+    // Beside the dent, never over it: when the force points at the viewer the arrow is short and
+    // its end lies on the patch.
+    static std::vector<QLineF> lines;  // GUI thread only
+    QRectF patch = patchOutline(scene, camera, size, lines);
+    if (!patch.isEmpty()) {
+        const double minRadius = style::kPatchMarkerMinRadiusPx;
+        if (std::max(patch.width(), patch.height()) < 2.0 * minRadius)
+            patch = QRectF(patch.center() - QPointF(minRadius, minRadius), QSizeF(2 * minRadius, 2 * minRadius));
+        patch.adjust(-4.0, -4.0, 4.0, 4.0);
+        if (label.plate.intersects(patch)) {
+            // To the right of the patch, or to its left where the viewport ends.
+            double x = patch.right() + kOffsetPx;
+            if (x + box.width() > sizePx.width() - 2.0) x = patch.left() - kOffsetPx - box.width();
+            label.plate.moveLeft(std::max(2.0, x));
+            label.plate.moveTop(std::clamp(patch.center().y() - 0.5 * box.height(), 2.0,
+                                           std::max(2.0, sizePx.height() - box.height() - 2.0)));
+        }
+    }
     return label;
 }
 
 }  // namespace
+
+QRectF displacedPatchRect(const RenderScene& scene, const OrbitCamera& camera, QSize sizePx) {
+    std::vector<QLineF> lines;
+    return patchOutline(scene, camera, glm::vec2(float(sizePx.width()), float(sizePx.height())), lines);
+}
 
 QRectF forceLabelRect(const RenderScene& scene, const OrbitCamera& camera, QSize sizePx) {
     const auto label = forceLabel(scene, camera, sizePx);

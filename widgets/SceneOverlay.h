@@ -29,8 +29,12 @@ double contrastRatio(const QColor& a, const QColor& b);
 float deepestDisplacementMm(const RenderScene& scene);
 
 /// Where the force label's plate goes in a viewport of `sizePx` (logical pixels), or an empty
-/// rectangle when there is no force to show.
+/// rectangle when there is no force to show. Beside the displaced patch, never over it.
 QRectF forceLabelRect(const RenderScene& scene, const OrbitCamera& camera, QSize sizePx);
+
+/// The pixel bounds of the displaced patch's outline in a viewport of `sizePx` (logical pixels),
+/// empty when nothing is displaced.
+QRectF displacedPatchRect(const RenderScene& scene, const OrbitCamera& camera, QSize sizePx);
 
 /// Where the legend goes in a viewport of `sizePx` (bottom left), or an empty rectangle when there
 /// is none: it lists the touched vertex and the rings up to the highest one present (and the ghost

@@ -503,6 +503,27 @@ TEST(SoftwareViewportFeatures, TheForceLabelSitsOnAnOpaquePlateWithReadableContr
     EXPECT_NEAR(contrastRatio(plateColour, plateColour), 1.0, 1e-9);
 }
 
+TEST(SoftwareViewportFeatures, TheForceLabelStaysOffTheDentWhenTheForcePointsAtTheViewer) {
+    auto session = steppedSession(kTicksIntoContact);
+    SoftwareViewport viewport;
+    viewport.resize(640, 480);
+    viewport.setMesh(*session->drawnMesh());
+    viewport.setSnapshot(session->view());
+    // The same press with the force turned towards the eye: its arrow is seen end-on, a few pixels.
+    SceneSnapshot towards = session->view();
+    const glm::vec3 at = towards.toolRadiusMm > 0.0f ? towards.proxyMm : towards.toolTipMm;
+    towards.forceN = 2.0f * glm::normalize(viewport.camera().eyeMm() - at);
+    viewport.setSnapshot(towards);
+    const QRectF patch = displacedPatchRect(viewport.scene(), viewport.camera(), viewport.size());
+    const QRectF label = forceLabelRect(viewport.scene(), viewport.camera(), viewport.size());
+    ASSERT_FALSE(patch.isEmpty());
+    ASSERT_FALSE(label.isEmpty());
+    EXPECT_FALSE(label.intersects(patch)) << "label (" << label.x() << ", " << label.y() << ", " << label.width() << " x "
+                                          << label.height() << ") over the dent (" << patch.x() << ", " << patch.y()
+                                          << ", " << patch.width() << " x " << patch.height() << ")";
+    EXPECT_TRUE(QRectF(0, 0, 640, 480).contains(label));
+}
+
 TEST(SoftwareViewportFeatures, OutlinesTheDisplacedPatchAndMarksItWhenSmall) {
     auto session = steppedSession(kTicksIntoContact);
     SoftwareViewport viewport;
