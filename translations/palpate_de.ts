@@ -3829,6 +3829,10 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>ring %1</source>
         <translation>Ring %1</translation>
     </message>
+    <message>
+        <source>dent %1 mm deep</source>
+        <translation>Delle %1 mm tief</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ScoreCard</name>

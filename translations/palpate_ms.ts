@@ -3825,6 +3825,10 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>ring %1</source>
         <translation>gelang %1</translation>
     </message>
+    <message>
+        <source>dent %1 mm deep</source>
+        <translation>lekuk sedalam %1 mm</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ScoreCard</name>

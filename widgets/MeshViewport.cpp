@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <initializer_list>
 #include <utility>
@@ -45,12 +46,12 @@ std::unique_ptr<QOpenGLShaderProgram> buildProgram(std::initializer_list<std::pa
 }
 }  // namespace
 
-MeshViewport::MeshViewport(QWidget* parent) : QOpenGLWidget(parent) {
+MeshViewport::MeshViewport(int samples, QWidget* parent) : QOpenGLWidget(parent), mRequestedSamples(std::max(samples, 0)) {
     QSurfaceFormat format;
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
-    format.setSamples(4);
+    format.setSamples(mRequestedSamples);
     setFormat(format);
     setFocusPolicy(Qt::StrongFocus);
     setContextMenuPolicy(Qt::PreventContextMenu);  // right-drag pans; no menu from the window either
@@ -210,7 +211,15 @@ void MeshViewport::paintGL() {
 
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
-        glDisable(GL_CULL_FACE);  // open meshes are allowed: their inside must show
+        // Open meshes are allowed: their inside must show. Seen from outside a closed, consistently
+        // wound surface, only its front faces can be nearest: the back half is not drawn.
+        if (mBackFaceCulling && mScene.closedAndConsistent() && mScene.outside(mCamera.eyeMm())) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_BACK);
+            glFrontFace(mScene.outwardWinding() > 0 ? GL_CCW : GL_CW);
+        } else {
+            glDisable(GL_CULL_FACE);
+        }
         mMeshProgram->bind();
         glUniformMatrix4fv(mMeshProgram->uniformLocation("uView"), 1, GL_FALSE, glm::value_ptr(view));
         glUniformMatrix4fv(mMeshProgram->uniformLocation("uProjection"), 1, GL_FALSE, glm::value_ptr(projection));
@@ -220,6 +229,8 @@ void MeshViewport::paintGL() {
         mMeshProgram->setUniformValue("uLightDirView", light.x, light.y, light.z);
         mMeshProgram->setUniformValue("uAmbient", style::kAmbient);
         mMeshProgram->setUniformValue("uRingAmbient", style::kRingAmbient);
+        mMeshProgram->setUniformValue("uSpecular", style::kSpecular);
+        mMeshProgram->setUniformValue("uShininess", style::kShininess);
         glUniform3fv(mMeshProgram->uniformLocation("uRingColors"), GLsizei(style::kRingColours.size()),
                      glm::value_ptr(style::kRingColours[0]));
 
@@ -238,6 +249,7 @@ void MeshViewport::paintGL() {
         vaoBinder.release();
         mMeshProgram->release();
 
+        glDisable(GL_CULL_FACE);
         if (mShowRestGhost) {
             mFlatProgram->bind();
             glUniformMatrix4fv(mFlatProgram->uniformLocation("uView"), 1, GL_FALSE, glm::value_ptr(view));

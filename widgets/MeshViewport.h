@@ -41,7 +41,8 @@ public:
         std::size_t bytes = 0;
     };
 
-    explicit MeshViewport(QWidget* parent = nullptr);
+    /// `samples`: the multisampling to ask for (0: none; ViewportFactory picks it per GL_RENDERER).
+    explicit MeshViewport(int samples = 4, QWidget* parent = nullptr);
     ~MeshViewport() override;
 
     QWidget* widget() override { return this; }
@@ -53,6 +54,15 @@ public:
     /// False when the shaders did not build (then only the markers are drawn); set by the first paint.
     bool glReady() const { return mGlReady; }
     const UploadStats& lastUpload() const { return mLastUpload; }
+    /// Skipping the back faces of a closed mesh seen from outside (on by default). Off, every
+    /// triangle is drawn: the same picture, slower (the tests compare the two).
+    void setBackFaceCulling(bool on) {
+        mBackFaceCulling = on;
+        update();
+    }
+
+    /// The multisampling asked for at construction (the context may give more or fewer).
+    int requestedSamples() const { return mRequestedSamples; }
     /// Whole-buffer uploads so far (one per mesh or context, when all is well).
     std::uint64_t fullUploadCount() const { return mFullUploads; }
 
@@ -88,6 +98,8 @@ private:
     QOpenGLBuffer mRestBuffer{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer mIndexBuffer{QOpenGLBuffer::IndexBuffer};
     int mIndexCount = 0;
+    int mRequestedSamples = 0;
+    bool mBackFaceCulling = true;
     bool mTopologyDirty = true;
     bool mGlReady = false;  // false if the shaders failed: then only the markers are drawn
 

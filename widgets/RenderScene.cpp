@@ -65,6 +65,7 @@ void RenderScene::setMesh(const TissueMesh& mesh) {
 
     mBoundsMinMm = mesh.boundsMinMm();
     mBoundsMaxMm = mesh.boundsMaxMm();
+    mOutwardWinding = computeOutwardWinding();
     mVersion = 0;
     mDirty.clear();
     mDirtyStamp.assign(n, 0);
@@ -80,6 +81,40 @@ void RenderScene::setMesh(const TissueMesh& mesh) {
 }
 
 void RenderScene::clear() { *this = RenderScene(); }
+
+int RenderScene::computeOutwardWinding() const {
+    if (mIndices.empty()) return 0;
+    for (std::size_t t = 0; 3 * t + 2 < mIndices.size(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = mIndices[3 * t + std::size_t(k)], b = mIndices[3 * t + std::size_t((k + 1) % 3)];
+            // Exactly one other triangle has this edge, and it runs b -> a.
+            int reversed = 0, others = 0;
+            for (const std::uint32_t u : vertexTriangles(a)) {
+                if (u == t) continue;
+                const std::uint32_t* c = &mIndices[3 * u];
+                for (int j = 0; j < 3; ++j) {
+                    if (c[j] != b) continue;
+                    ++others;
+                    if (c[(j + 1) % 3] == a) ++reversed;
+                }
+            }
+            if (others != 1 || reversed != 1) return 0;
+        }
+    }
+    double volume = 0.0;  // six times the enclosed volume, by the divergence theorem
+    for (std::size_t t = 0; 3 * t + 2 < mIndices.size(); ++t) {
+        const glm::dvec3 a(mRestMm[mIndices[3 * t]]), b(mRestMm[mIndices[3 * t + 1]]), c(mRestMm[mIndices[3 * t + 2]]);
+        volume += glm::dot(a, glm::cross(b, c));
+    }
+    return volume > 0.0 ? 1 : volume < 0.0 ? -1 : 0;
+}
+
+bool RenderScene::outside(const glm::vec3& eyeMm) const {
+    // The tissue may bulge past its rest bounds; a margin of a tenth of the diagonal covers it.
+    const glm::vec3 margin(0.1f * diagonalMm());
+    const glm::vec3 lo = mBoundsMinMm - margin, hi = mBoundsMaxMm + margin;
+    return eyeMm.x < lo.x || eyeMm.y < lo.y || eyeMm.z < lo.z || eyeMm.x > hi.x || eyeMm.y > hi.y || eyeMm.z > hi.z;
+}
 
 void RenderScene::markDirty(VertexId v) {
     if (mAllDirty || mDirtyStamp[v] == mDirtyGeneration) return;

@@ -86,6 +86,16 @@ public:
     glm::vec3 proxyMm() const { return mProxyMm; }
     glm::vec3 forceN() const { return mForceN; }
 
+    /// Whether every edge joins exactly two triangles that run it in opposite directions (a closed,
+    /// consistently wound surface). Seen from outside, only its front faces can be nearest: the
+    /// renderers skip the back faces (half the triangles) on such a mesh.
+    bool closedAndConsistent() const { return mOutwardWinding != 0; }
+    /// +1 when the triangles wind counter-clockwise seen from outside (positive enclosed volume),
+    /// -1 when clockwise, 0 when the mesh is not closedAndConsistent().
+    int outwardWinding() const { return mOutwardWinding; }
+    /// Whether `eyeMm` is outside the rest and current bounds (with a margin): then back faces are hidden.
+    bool outside(const glm::vec3& eyeMm) const;
+
     glm::vec3 boundsMinMm() const { return mBoundsMinMm; }
     glm::vec3 boundsMaxMm() const { return mBoundsMaxMm; }
     float diagonalMm() const;
@@ -95,6 +105,7 @@ private:
     void markAllDirty();
     void setRing(VertexId v, std::uint8_t ring);
     glm::vec3 vertexNormal(VertexId v) const;
+    int computeOutwardWinding() const;
 
     std::vector<std::uint32_t> mIndices;
     std::vector<glm::vec3> mRestMm;
@@ -105,6 +116,7 @@ private:
     // Triangles around each vertex, compressed: those of v are mVertexTriangles[start[v] .. start[v+1]).
     std::vector<std::uint32_t> mVertexTriangleStart;
     std::vector<std::uint32_t> mVertexTriangles;
+    int mOutwardWinding = 0;
     glm::vec3 mBoundsMinMm{0.0f};
     glm::vec3 mBoundsMaxMm{0.0f};
     std::uint64_t mVersion = 0;  // of the last snapshot taken; 0: none (read the next one whole)

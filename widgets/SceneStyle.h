@@ -49,9 +49,12 @@ inline constexpr float kWireAlpha = 0.22f;
 /// Key light, camera space, pointing from the surface towards the light (upper left, in front).
 inline constexpr glm::vec3 kLightDirView{-0.35f, 0.55f, 0.76f};
 inline constexpr float kAmbient = 0.28f;
+/// The key light's highlight (Blinn-Phong): its strength and exponent, the same in both renderers.
+inline constexpr float kSpecular = 0.18f;
+inline constexpr float kShininess = 40.0f;
 /// Ring colours are lit with more ambient light than the tissue, so that a ring on a face turned away
 /// from the light still reads as its colour.
-inline constexpr float kRingAmbient = 0.55f;
+inline constexpr float kRingAmbient = 0.28f;
 
 /// Displacement (mm) at which the pressed tint is full; smaller displacements blend.
 inline constexpr float kFullTintDisplacementMm = 0.5f;
@@ -61,6 +64,19 @@ inline constexpr float kToolMarkerRadiusPx = 3.5f;
 /// Force arrow length per newton as a fraction of the scene's bounding-box diagonal, and its cap.
 inline constexpr float kArrowDiagonalsPerN = 0.04f;
 inline constexpr float kArrowMaxDiagonals = 0.3f;
+
+/// The outline of the displaced patch (both renderers, on top): the boundary between triangles
+/// with a corner moved more than kOutlineDisplacementMm and the rest, a light line on a dark halo,
+/// so that the dent reads on any tissue colour. On a fine mesh the patch can be a few pixels wide:
+/// then a circle of at least kPatchMarkerMinRadiusPx marks where it is.
+inline constexpr float kOutlineDisplacementMm = 0.05f;
+inline constexpr glm::vec3 kPatchOutline{1.0f, 1.0f, 1.0f};
+inline constexpr float kPatchMarkerMinRadiusPx = 36.0f;
+
+/// The force label: text in the arrow's colour on an opaque dark plate (contrast ratio well above
+/// the 4.5 that WCAG asks for text), in pixels so it is the same size on every paint device.
+inline constexpr glm::vec3 kLabelPlate{0.06f, 0.07f, 0.08f};
+inline constexpr int kLabelFontPx = 15;
 
 /// The ring legend (bottom left): swatch size and margins in logical pixels.
 inline constexpr int kLegendSwatchPx = 10;

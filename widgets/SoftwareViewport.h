@@ -1,13 +1,24 @@
 #pragma once
-// The viewport drawn with QPainter: flat-shaded triangles sorted back to front (painter's algorithm),
-// each in the colour of its lowest ring, the rest-shape ghost on request, with the same camera,
-// colours, markers and picking as MeshViewport. Used where OpenGL is missing (Qt's
-// offscreen platform, widget tests, remote sessions) or when --software-render is given.
+// The viewport drawn on the CPU without OpenGL: a small z-buffered rasteriser into an image, with
+// per-vertex normals (recomputed only around the vertices that moved, as the OpenGL viewport does)
+// so that a dent shades as a dent, each triangle in the colour of its lowest ring, the wireframe
+// blended in near the edges, the rest-shape ghost on request, and the same camera, colours,
+// markers and picking as MeshViewport. Used where OpenGL is missing (Qt's offscreen platform,
+// widget tests, remote sessions), where OpenGL is itself a software rasteriser and this is faster
+// (ViewportFactory), or when --software-render is given.
+//
+// A whole frame transforms every vertex once and fills every front-facing triangle once against the
+// depth buffer (a closed mesh seen from outside: its back faces are skipped), scanning each row only
+// over the triangle's span: no sort, no QPainter call per triangle. While only a dent changes (same
+// camera, size and options), only the rectangle around the changed triangles is cleared and drawn
+// again, from the kept picture and depth buffer (docs/bench/README.md, "Viewport").
 
 #include "widgets/Viewport.h"
 
+#include <QImage>
 #include <QWidget>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -26,6 +37,24 @@ public:
 
     QSize sizeHint() const override { return {800, 600}; }
 
+    /// Skipping the back faces of a closed mesh seen from outside (on by default). Off, every
+    /// triangle is filled: the same picture, slower (the tests compare the two).
+    void setBackFaceCulling(bool on) {
+        mBackFaceCulling = on;
+        update();
+    }
+
+    /// What the last frame drew: the whole picture, or only the rectangle around what changed.
+    struct RasterStats {
+        bool whole = false;
+        std::size_t regionPx = 0;   ///< pixels cleared and drawn again (0: the picture was kept)
+        std::size_t triangles = 0;  ///< triangles filled (before back faces are skipped)
+    };
+    const RasterStats& lastRaster() const { return mLastRaster; }
+
+    /// Per-vertex normals as last drawn (the shape's, area-weighted; RenderScene::computeVertexNormals).
+    const std::vector<glm::vec3>& vertexNormals() const { return mNormals; }
+
 protected:
     void sceneChanged(bool topologyChanged) override;
     void paintEvent(QPaintEvent* event) override;
@@ -35,18 +64,35 @@ protected:
     void wheelEvent(QWheelEvent* event) override;
 
 private:
-    void paintScene(QPainter& painter, QSize sizePx);
+    /// Draws the scene (not the markers) into mFrame, of `sizePx` device pixels.
+    void rasterScene(QSize sizePx, float devicePixelRatio);
+    void paintAll(QPainter& painter, QSize logicalSize, float devicePixelRatio);
 
-    // Scratch kept between frames so that painting does not allocate.
+    // Kept between frames so that painting does not allocate.
     struct ProjectedVertex {
         float xPx, yPx;
-        bool inFront;  // in front of the near plane
+        float invDepth;  // 1 / (distance along the view axis, mm): linear across the screen
+        float diffuse;   // key light on the vertex normal, turned towards the eye
+        float specular;  // its highlight
+        bool inFront;    // in front of the near plane
     };
     std::vector<ProjectedVertex> mProjected;
-    std::vector<glm::vec3> mViewMm;
-    /// Marks a ghost (rest-shape) triangle in mOrder.
-    static constexpr std::uint32_t kGhostBit = 0x80000000u;
-    std::vector<std::pair<float, std::uint32_t>> mOrder;  // (camera-space depth, triangle | kGhostBit)
+    std::vector<glm::vec3> mNormals;
+    std::vector<VertexId> mRecomputed;
+    std::vector<float> mDepth;  // per pixel: invDepth of the nearest surface, 0 for none
+    QImage mFrame;
+    bool mFrameValid = false;
+    bool mBackFaceCulling = true;
+    /// What the picture in mFrame depends on besides the scene: when it changes, all is drawn again.
+    struct FrameKey {
+        QSize sizePx;
+        glm::mat4 view{1.0f}, projection{1.0f};
+        bool wireframe = false, ghost = false;
+        int backSign = 0;
+        bool operator==(const FrameKey&) const = default;
+    };
+    FrameKey mLastKey;
+    RasterStats mLastRaster;
 };
 
 }  // namespace palpate

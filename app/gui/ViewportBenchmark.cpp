@@ -1,22 +1,26 @@
 #include "app/gui/ViewportBenchmark.h"
 
-#include "app/gui/HapticSession.h"
+#include "app/gui/MainWindow.h"
 #include "engine/core/MeshGenerator.h"
 #include "widgets/MeshViewport.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QEvent>
+#include <QFile>
+#include <QFileInfo>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QOpenGLWidget>
-#include <QScreen>
 #include <QTemporaryDir>
 #include <QTimer>
+
+#include <time.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <memory>
+#include <functional>
 #include <numeric>
 #include <vector>
 
@@ -24,10 +28,13 @@ namespace palpate {
 
 namespace {
 
-/// Longest wait for the stroke to press before measuring anyway.
-constexpr double kMaxWarmUpS = 3.0;
-/// Frames drawn before measuring in any case (the first one uploads the whole mesh).
-constexpr int kMinWarmUpFrames = 5;
+/// The interactive window's size (app/gui/main.cpp): what a user sees at start.
+constexpr int kWindowWidthPx = 1280;
+constexpr int kWindowHeightPx = 860;
+/// Longest wait for the device to touch the tissue before giving up.
+constexpr double kMaxWaitForContactS = 10.0;
+/// After the first contact: the dent forms and the first whole upload is behind us.
+constexpr double kSettleS = 0.5;
 
 QString glRendererString(QOpenGLWidget* widget) {
     widget->makeCurrent();
@@ -36,15 +43,46 @@ QString glRendererString(QOpenGLWidget* widget) {
         QOpenGLFunctions* f = context->functions();
         const auto* renderer = reinterpret_cast<const char*>(f->glGetString(GL_RENDERER));
         const auto* version = reinterpret_cast<const char*>(f->glGetString(GL_VERSION));
-        text = QStringLiteral("%1, %2").arg(QLatin1String(renderer ? renderer : "?"), QLatin1String(version ? version : "?"));
+        text = QStringLiteral("%1, %2").arg(QLatin1String(renderer ? renderer : "?"),
+                                            QLatin1String(version ? version : "?"));
     }
     widget->doneCurrent();
     return text;
 }
 
+/// The machine's 1-minute load average (other processes compete for the cores), or -1.
+double loadAverage() {
+    QFile file(QStringLiteral("/proc/loadavg"));
+    if (!file.open(QIODevice::ReadOnly)) return -1.0;
+    bool ok = false;
+    const double load = QString::fromLatin1(file.readLine()).section(QLatin1Char(' '), 0, 0).toDouble(&ok);
+    return ok ? load : -1.0;
+}
+
+/// CPU seconds this (the GUI) thread has used: with other work on the machine, the wall-clock frame
+/// time grows, this much less.
+double threadCpuS() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
+}
+
+/// Calls `painted` after each paint event of the watched widget.
+class PaintWatcher final : public QObject {
+public:
+    explicit PaintWatcher(std::function<void()> painted) : mPainted(std::move(painted)) {}
+    bool eventFilter(QObject*, QEvent* event) override {
+        if (event->type() == QEvent::Paint) mPainted();
+        return false;
+    }
+
+private:
+    std::function<void()> mPainted;
+};
+
 }  // namespace
 
-int runViewportBenchmark(const QString& secondsText, bool softwareRender) {
+int runViewportBenchmark(const QString& secondsText, const QString& meshPath, RendererChoice renderer) {
     bool ok = false;
     const double seconds = secondsText.toDouble(&ok);
     if (!ok || !(seconds > 0.0) || !std::isfinite(seconds)) {
@@ -53,7 +91,8 @@ int runViewportBenchmark(const QString& secondsText, bool softwareRender) {
     }
     ViewportBenchmarkDef options;
     options.seconds = seconds;
-    options.renderer = softwareRender ? RendererChoice::Software : RendererChoice::Auto;
+    options.meshPath = meshPath;
+    options.renderer = renderer;
     return runViewportBenchmark(options);
 }
 
@@ -63,156 +102,161 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
     defaultFormat.setSwapInterval(0);
     QSurfaceFormat::setDefaultFormat(defaultFormat);
 
-    // The sphere goes through a file so that the session loads it like any mesh (validation,
-    // Morton order, the scene and a sim:stroke device aimed at it, the loop thread).
-    auto generated = generateMesh(GeneratedShape::Sphere, options.vertexCount);
-    if (!generated.mesh) {
-        std::fprintf(stderr, "palpate: the %zu-vertex sphere could not be generated\n", options.vertexCount);
-        return 1;
-    }
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("sphere_%1.off").arg(options.vertexCount));
-    if (!dir.isValid()) {
-        std::fprintf(stderr, "palpate: no temporary directory for the benchmark mesh\n");
+    QString path = options.meshPath;
+    if (path.isEmpty()) {
+        // The sphere goes through a file so that the window loads it like any mesh.
+        auto generated = generateMesh(GeneratedShape::Sphere, options.vertexCount);
+        if (!generated.mesh) {
+            std::fprintf(stderr, "palpate: the %zu-vertex sphere could not be generated\n", options.vertexCount);
+            return 1;
+        }
+        if (!dir.isValid()) {
+            std::fprintf(stderr, "palpate: no temporary directory for the benchmark mesh\n");
+            return 1;
+        }
+        path = dir.filePath(QStringLiteral("sphere_%1.off").arg(options.vertexCount));
+        if (const std::string error = generated.mesh->save(path.toStdString()); !error.empty()) {
+            std::fprintf(stderr, "palpate: %s\n", error.c_str());
+            return 1;
+        }
+    }
+
+    MainWindow window(options.renderer, LoopMode::Threaded);
+    if (const QString error = window.setDeviceUri(options.deviceUri); !error.isEmpty()) {
+        std::fprintf(stderr, "palpate: %s\n", qPrintable(error));
         return 1;
     }
-    if (const std::string error = generated.mesh->save(path.toStdString()); !error.empty()) {
-        std::fprintf(stderr, "palpate: %s\n", error.c_str());
+    if (const QString error = window.loadMesh(path); !error.isEmpty()) {
+        std::fprintf(stderr, "palpate: %s\n", qPrintable(error));
         return 1;
     }
-    generated.mesh.reset();
+    Viewport* viewport = window.viewport();
+    const auto mesh = window.session().drawnMesh();
+    const std::size_t vertexCount = mesh ? mesh->vertexCount() : 0, triangleCount = mesh ? mesh->triangleCount() : 0;
+    window.resize(kWindowWidthPx, kWindowHeightPx);
+    window.show();
 
-    HapticSession session(LoopMode::Threaded);
-    if (const std::string error = session.loadMesh(path.toStdString()); !error.empty()) {
-        std::fprintf(stderr, "palpate: %s\n", error.c_str());
-        return 1;
-    }
-    const TissueMesh& mesh = *session.drawnMesh();
-
-    QString reason;
-    std::unique_ptr<QWidget> owner;  // the viewport's widget, top level
-    Viewport* viewport = createViewport(options.renderer, nullptr, &reason);
-    QWidget* widget = viewport->widget();
-    owner.reset(widget);
-    widget->setWindowTitle(QStringLiteral("Palpate viewport benchmark"));
-    viewport->setMesh(mesh);
-    // Maximised; without a window manager (Xvfb) showMaximized alone may not resize.
-    if (QScreen* screen = QGuiApplication::primaryScreen()) widget->setGeometry(screen->availableGeometry());
-    widget->showMaximized();
-
-    auto* glWidget = qobject_cast<QOpenGLWidget*>(widget);
+    auto* glWidget = qobject_cast<QOpenGLWidget*>(viewport->widget());
     auto* meshViewport = dynamic_cast<MeshViewport*>(viewport);
 
     QElapsedTimer clock;
     clock.start();
-    bool measuring = false;
-    int warmUpFrames = 0;
-    double measureStartS = 0.0, lastFrameS = 0.0;
+    enum class Phase { WaitingForContact, Settling, Measuring, Done } phase = Phase::WaitingForContact;
+    double contactAtS = 0.0, measureStartS = 0.0, lastPaintS = 0.0, measureEndS = 0.0;
+    std::uint64_t framesAtStart = 0, framesAtEnd = 0;
+    double cpuAtStartS = 0.0, cpuAtEndS = 0.0;
     std::vector<double> frameMs;
-    frameMs.reserve(std::size_t(options.seconds * 2000.0) + 16);
-    std::size_t contactFrames = 0, fullUploads = 0, partialUploads = 0, uploadedVertices = 0, uploadRanges = 0;
-    bool finished = false;
+    frameMs.reserve(std::size_t(options.seconds * 1000.0) + 16);
+    std::size_t paints = 0, contactPaints = 0, fullUploads = 0, partialUploads = 0, uploadedVertices = 0,
+                uploadRanges = 0;
+    bool failed = false;
 
-    auto finish = [&] {
-        if (finished) return;
-        finished = true;
+    auto finish = [&](bool failure) {
+        if (phase == Phase::Done) return;
+        failed = failure;
+        phase = Phase::Done;
         QApplication::exit(0);
     };
-    auto nextSnapshot = [&] {
-        if (session.observe() != HapticSession::Observation::Nothing) viewport->setSnapshot(session.view());
-        session.collectRetired();
-    };
-    // Called when a frame has been finished (swapped, or painted in software).
-    auto frameDone = [&] {
-        if (finished) return;
+    // A paint of the viewport has just finished (its event filter runs before the paint, so the
+    // interval between two calls is a frame either way).
+    PaintWatcher watcher([&] {
+        if (phase != Phase::Measuring) return;
         const double nowS = double(clock.nsecsElapsed()) * 1e-9;
-        if (!measuring) {
-            ++warmUpFrames;
-            if (warmUpFrames >= kMinWarmUpFrames && (session.observed().contact || nowS > kMaxWarmUpS)) {
-                measuring = true;
-                measureStartS = nowS;
-            }
-        } else {
-            frameMs.push_back((nowS - lastFrameS) * 1e3);
-            if (session.view().contact) ++contactFrames;
-            if (meshViewport) {
-                const auto& upload = meshViewport->lastUpload();
-                (upload.full ? fullUploads : partialUploads) += 1;
-                uploadedVertices += upload.vertices;
-                uploadRanges += upload.ranges;
-            }
-            if (nowS - measureStartS >= options.seconds) {
-                lastFrameS = nowS;
-                finish();
-                return;
-            }
+        if (paints > 0) frameMs.push_back((nowS - lastPaintS) * 1e3);
+        lastPaintS = nowS;
+        ++paints;
+        if (window.session().view().contact) ++contactPaints;
+        if (meshViewport) {
+            const auto& upload = meshViewport->lastUpload();
+            (upload.full ? fullUploads : partialUploads) += 1;
+            uploadedVertices += upload.vertices;
+            uploadRanges += upload.ranges;
         }
-        lastFrameS = nowS;
-        nextSnapshot();
-    };
-
-    QTimer softwareTimer;
-    if (glWidget) {
-        QObject::connect(glWidget, &QOpenGLWidget::frameSwapped, glWidget, [&] {
-            frameDone();
-            if (!finished) glWidget->update();  // the next frame at once
-        });
-        glWidget->update();
-    } else {
-        softwareTimer.setInterval(0);
-        QObject::connect(&softwareTimer, &QTimer::timeout, widget, [&] {
-            nextSnapshot();
-            widget->repaint();  // paints now
-            frameDone();
-        });
-        softwareTimer.start();
-    }
-    // Should frames stop coming (a window that is never exposed), give up rather than hang.
-    const int watchdogMs = int((options.seconds + kMaxWarmUpS + 30.0) * 1000.0);
-    bool timedOut = false;
-    QTimer::singleShot(watchdogMs, widget, [&] {
-        timedOut = !finished;
-        finish();
     });
+    viewport->widget()->installEventFilter(&watcher);
 
-    std::printf("viewport benchmark: generated sphere, %zu vertices, %zu triangles; %s renderer (%s)\n",
-                mesh.vertexCount(), mesh.triangleCount(), qPrintable(rendererName(viewport->kind())), qPrintable(reason));
+    QTimer poll;
+    poll.setInterval(20);
+    QObject::connect(&poll, &QTimer::timeout, &window, [&] {
+        const double nowS = double(clock.nsecsElapsed()) * 1e-9;
+        switch (phase) {
+            case Phase::WaitingForContact:
+                if (window.session().view().contact) {
+                    phase = Phase::Settling;
+                    contactAtS = nowS;
+                } else if (nowS > kMaxWaitForContactS) {
+                    std::fprintf(stderr, "palpate: %s did not touch the mesh within %.0f s\n",
+                                 qPrintable(options.deviceUri), kMaxWaitForContactS);
+                    finish(true);
+                }
+                break;
+            case Phase::Settling:
+                if (nowS - contactAtS >= kSettleS) {
+                    phase = Phase::Measuring;
+                    measureStartS = nowS;
+                    framesAtStart = viewport->framesDrawn();
+                    cpuAtStartS = threadCpuS();
+                }
+                break;
+            case Phase::Measuring:
+                if (nowS - measureStartS >= options.seconds) {
+                    measureEndS = nowS;
+                    framesAtEnd = viewport->framesDrawn();
+                    cpuAtEndS = threadCpuS();
+                    finish(false);
+                }
+                break;
+            case Phase::Done: break;
+        }
+    });
+    poll.start();
+    // Should nothing happen (a window that is never exposed), give up rather than hang.
+    QTimer::singleShot(int((options.seconds + kMaxWaitForContactS + kSettleS + 30.0) * 1000.0), &window,
+                       [&] { finish(true); });
+
+    std::printf("viewport benchmark: %s, %zu vertices, %zu triangles; device %s; %s renderer (%s); load %.2f\n",
+                qPrintable(QFileInfo(path).fileName()), vertexCount, triangleCount, qPrintable(options.deviceUri),
+                qPrintable(rendererName(viewport->kind())), qPrintable(window.rendererReason()), loadAverage());
     std::fflush(stdout);
     QApplication::exec();
-    softwareTimer.stop();
+    poll.stop();
+    viewport->widget()->removeEventFilter(&watcher);
     const QString glInfo = glWidget ? glRendererString(glWidget) : QString();
-    const QSize sizePx = widget->size() * widget->devicePixelRatioF();
+    const QSize sizePx = viewport->widget()->size() * viewport->widget()->devicePixelRatioF();
     const RendererKind kind = viewport->kind();
-    session.stop();
-    const double loopRateHz = session.observed().counters.achievedRateHz;
-    owner.reset();  // the viewport goes with its widget
-    viewport = nullptr;
-    meshViewport = nullptr;
-    glWidget = nullptr;
+    const int samples = meshViewport ? meshViewport->requestedSamples() : 0;
+    const double loopRateHz = window.hapticRateHz();
+    const double loadAtEnd = loadAverage();
+    window.close();  // stops the haptic thread
 
-    if (timedOut || frameMs.empty()) {
-        std::fprintf(stderr, "palpate: the viewport drew %zu frames in the benchmark (was the window shown?)\n", frameMs.size());
+    const std::uint64_t frames = framesAtEnd - framesAtStart;
+    const double elapsedS = measureEndS - measureStartS;
+    if (failed || frames == 0 || frameMs.empty() || !(elapsedS > 0.0)) {
+        std::fprintf(stderr, "palpate: the viewport drew %llu frames in the benchmark (was the window shown?)\n",
+                     static_cast<unsigned long long>(frames));
         return 1;
     }
-    const double elapsedS = lastFrameS - measureStartS;
     const double meanMs = std::accumulate(frameMs.begin(), frameMs.end(), 0.0) / double(frameMs.size());
     std::vector<double> sorted = frameMs;
     std::sort(sorted.begin(), sorted.end());
     const double p95Ms = sorted[std::min(sorted.size() - 1, std::size_t(std::ceil(0.95 * double(sorted.size()))) - 1)];
-    const double fps = elapsedS > 0.0 ? double(frameMs.size()) / elapsedS : 0.0;
-    const std::size_t frames = frameMs.size();
+    const double fps = double(frames) / elapsedS;
 
-    std::printf("window %dx%d px%s%s; measured %.2f s from %s; haptic loop %.0f Hz\n", sizePx.width(), sizePx.height(),
-                glInfo.isEmpty() ? "" : ", GL: ", qPrintable(glInfo), elapsedS,
-                contactFrames > 0 ? "the stroke's contact" : "the warm-up", loopRateHz);
-    std::printf("frames=%zu mean_frame_ms=%.2f p95_frame_ms=%.2f fps=%.1f renderer=%s\n", frames, meanMs, p95Ms, fps,
-                qPrintable(rendererName(kind)));
-    std::printf("contact in %zu of %zu frames", contactFrames, frames);
-    if (kind == RendererKind::OpenGL) {
-        const double perFrame = double(uploadedVertices) / double(frames);
+    std::printf("viewport %dx%d px%s%s; measured %.2f s in contact; haptic loop %.0f Hz\n", sizePx.width(),
+                sizePx.height(), glInfo.isEmpty() ? "" : ", GL: ", qPrintable(glInfo), elapsedS, loopRateHz);
+    const double guiCpuMsPerFrame = (cpuAtEndS - cpuAtStartS) * 1e3 / double(frames);
+    std::printf(
+        "frames=%llu mean_frame_ms=%.2f p95_frame_ms=%.2f fps=%.1f gui_cpu_ms_per_frame=%.2f renderer=%s "
+        "samples=%d vertices=%zu load=%.2f\n",
+        static_cast<unsigned long long>(frames), meanMs, p95Ms, fps, guiCpuMsPerFrame, qPrintable(rendererName(kind)),
+        samples, vertexCount, loadAtEnd);
+    std::printf("contact in %zu of %zu frames", contactPaints, paints);
+    if (kind == RendererKind::OpenGL && paints > 0) {
+        const double perFrame = double(uploadedVertices) / double(paints);
         std::printf("; uploads: %zu partial, %zu full, mean %.0f vertices (%.1f kB, %.1f ranges) per frame of %zu",
-                    partialUploads, fullUploads, perFrame, perFrame * 32.0 / 1024.0, double(uploadRanges) / double(frames),
-                    mesh.vertexCount());
+                    partialUploads, fullUploads, perFrame, perFrame * 32.0 / 1024.0,
+                    double(uploadRanges) / double(paints), vertexCount);
     }
     std::printf("\n");
     std::fflush(stdout);

@@ -1,11 +1,12 @@
 #pragma once
-// `palpate --benchmark-viewport [--seconds S] [--software-render]`: frame times of the viewport
-// while the haptic loop (its real-time thread, sim:stroke) deforms a generated 100 000-vertex
-// sphere. The viewport is shown maximised and redrawn as fast as it can: under OpenGL the next
-// frame is requested as soon as the last one was swapped (frameSwapped), in software each repaint
-// follows the last. Frame time is the time between consecutive finished frames, measured once the
-// stroke presses (or after a short warm-up). Prints what was measured, one line of key=value
-// results (frames, mean and p95 frame ms, fps, renderer) and the uploads per frame.
+// `palpate --benchmark-viewport [--mesh FILE] [--seconds S] [--software-render | --opengl-render]`: the frame rate a
+// user gets. The real main window (its docks, its ~60 Hz observer timer, the renderer the factory
+// picks) shows the mesh while the haptic loop's real-time thread runs a device that keeps pressing
+// (sim:sine: a press, then the depth swings, so every frame has a new dent to draw). Frames are
+// counted once the tool is in contact, after a short settling time; the figures are the status
+// bar's (frames painted over wall time) plus the spread of the frame intervals. Without --mesh a
+// generated 100 000-vertex sphere. PALPATE_GL_SAMPLES=N forces the OpenGL viewport's multisampling
+// (the baseline with the old 4x: docs/bench/README.md).
 
 #include "widgets/ViewportFactory.h"
 
@@ -17,14 +18,16 @@ namespace palpate {
 
 struct ViewportBenchmarkDef {
     double seconds = 5.0;
+    QString meshPath;  ///< empty: a generated sphere of `vertexCount` vertices
     std::size_t vertexCount = 100000;
     RendererChoice renderer = RendererChoice::Auto;
+    QString deviceUri = QStringLiteral("sim:sine");
 };
 
 /// Runs the benchmark in the running QApplication. Returns the process exit code (0, or 1 on failure).
 int runViewportBenchmark(const ViewportBenchmarkDef& options);
 
 /// The command line's entry: `secondsText` from --seconds (a number > 0); 2 on a bad value.
-int runViewportBenchmark(const QString& secondsText, bool softwareRender);
+int runViewportBenchmark(const QString& secondsText, const QString& meshPath, RendererChoice renderer);
 
 }  // namespace palpate

@@ -81,7 +81,10 @@ int main(int argc, char** argv) {
     // No default here: it depends on the mode (below).
     const QCommandLineOption deviceOption(QStringLiteral("device"), deviceHelp(), QStringLiteral("URI"));
     const QCommandLineOption softwareOption(QStringLiteral("software-render"),
-                                            QStringLiteral("Draw with QPainter instead of OpenGL."));
+                                            QStringLiteral("Draw on the CPU instead of with OpenGL."));
+    // Where OpenGL is a CPU rasteriser (llvmpipe) the window draws on the CPU unless asked (ViewportFactory.h).
+    const QCommandLineOption openGlOption(QStringLiteral("opengl-render"),
+                                          QStringLiteral("Draw with OpenGL even where it is a CPU rasteriser (llvmpipe)."));
     const QCommandLineOption screenshotOption(
         QStringLiteral("screenshot"),
         QStringLiteral("Run the loop with the device for --after-ms, save a PNG of the main window, exit. With "
@@ -108,7 +111,7 @@ int main(int argc, char** argv) {
                                   QStringLiteral("Run interactively, save the whole window to FILE after MS ms, exit."),
                                   QStringLiteral("MS"));
     grabOption.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOptions({meshOption, deviceOption, presetOption, softwareOption, screenshotOption, afterMsOption, ticksOption,
+    parser.addOptions({meshOption, deviceOption, presetOption, softwareOption, openGlOption, screenshotOption, afterMsOption, ticksOption,
                        headlessOption, grabOption});
     const QCommandLineOption exerciseOption(QStringLiteral("exercise"),
                                             QStringLiteral("Start this exercise (JSON) at once: for --trainee, else as a preview."),
@@ -121,11 +124,12 @@ int main(int argc, char** argv) {
     const QCommandLineOption wholeWindowOption(QStringLiteral("whole-window"),
                                                QStringLiteral("--screenshot saves the whole window, not only the viewport."));
     parser.addOptions({exerciseOption, traineeOption, modeOption, wholeWindowOption});
-    // --benchmark-viewport [--seconds S]: frame times while deforming a 100k-vertex sphere (ViewportBenchmark.h).
+    // --benchmark-viewport [--mesh FILE] [--seconds S] [--software-render]: the window's frame rate
+    // while a device keeps pressing (ViewportBenchmark.h).
     const QCommandLineOption benchmarkOption(
         QStringLiteral("benchmark-viewport"),
-        QStringLiteral("Deform a generated 100 000-vertex sphere with sim:stroke, redraw the viewport as fast as it "
-                       "goes for --seconds, print frame times, exit."));
+        QStringLiteral("Show --mesh (default: a generated 100 000-vertex sphere) in the window while sim:sine keeps "
+                       "pressing, count the frames painted for --seconds, print fps= and frame times, exit."));
     const QCommandLineOption secondsOption(QStringLiteral("seconds"),
                                            QStringLiteral("Length of --benchmark-viewport (default 5)."),
                                            QStringLiteral("S"), QStringLiteral("5"));
@@ -153,8 +157,11 @@ int main(int argc, char** argv) {
     showDockOption.setFlags(QCommandLineOption::HiddenFromHelp);
     parser.addOption(showDockOption);
     parser.process(app);  // exits with 0 on --help/--version and with 1 on unknown options
+    const auto renderer = parser.isSet(softwareOption) ? palpate::RendererChoice::Software
+                          : parser.isSet(openGlOption) ? palpate::RendererChoice::OpenGL
+                                                       : palpate::RendererChoice::Auto;
     if (parser.isSet(benchmarkOption))
-        return palpate::runViewportBenchmark(parser.value(secondsOption), parser.isSet(softwareOption));
+        return palpate::runViewportBenchmark(parser.value(secondsOption), parser.value(meshOption), renderer);
 
     bool ticksOk = false;
     const int ticks = parser.value(ticksOption).toInt(&ticksOk);
@@ -238,7 +245,6 @@ int main(int argc, char** argv) {
 
     // Screenshots step the loop on this thread (deterministic); everything else runs its thread.
     const auto mode = screenshot ? palpate::LoopMode::Stepped : palpate::LoopMode::Threaded;
-    const auto renderer = parser.isSet(softwareOption) ? palpate::RendererChoice::Software : palpate::RendererChoice::Auto;
     palpate::HapticLoopDef loopDef;
     loopDef.trySchedFifo = !parser.isSet(noFifoOption);
     palpate::MainWindow window(renderer, mode, loopDef);

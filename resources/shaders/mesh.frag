@@ -12,6 +12,8 @@ uniform vec3 uTissueColor;
 uniform vec3 uPressedColor;
 uniform vec3 uLightDirView;  // normalised, towards the light
 uniform float uAmbient;
+uniform float uSpecular;     // the highlight's strength and exponent (SceneStyle.h)
+uniform float uShininess;
 uniform float uRingAmbient;  // more ambient inside the rings: their colours must read on any face
 uniform bool uWireframe;
 uniform vec4 uWireColor;     // rgb, and the opacity of a line's centre
@@ -23,7 +25,7 @@ void main() {
     vec3 n = normalize(fNormalView);
     if (dot(n, toEye) < 0.0) n = -n;  // two-sided, whatever the winding: open meshes show their inside
     float diffuse = max(dot(n, uLightDirView), 0.0);
-    float specular = 0.18 * pow(max(dot(n, normalize(uLightDirView + toEye)), 0.0), 40.0);
+    float specular = uSpecular * pow(max(dot(n, normalize(uLightDirView + toEye)), 0.0), uShininess);
     vec3 base = mix(uTissueColor, uPressedColor, clamp(fPressed, 0.0, 1.0));
     base = mix(base, fRingColor.rgb, fRingColor.a);
     float ambient = mix(uAmbient, uRingAmbient, fRingColor.a);

@@ -6,6 +6,7 @@
 
 #include "app/common/DefaultScene.h"
 #include "app/gui/HapticSession.h"
+#include "app/gui/ViewportBenchmark.h"
 #include "widgets/MeshViewport.h"
 #include "widgets/SceneOverlay.h"
 #include "widgets/SceneStyle.h"
@@ -56,7 +57,7 @@ protected:
     /// A shown GL viewport of the test size with the session's mesh (and the session's current
     /// state, if `withSnapshot`, before the first frame).
     std::unique_ptr<MeshViewport> makeViewport(bool withSnapshot = false) {
-        auto viewport = std::make_unique<MeshViewport>();
+        auto viewport = std::make_unique<MeshViewport>(viewportSamplesFor(probeOpenGl33().renderer));
         viewport->resize(kWidthPx, kHeightPx);
         viewport->setMesh(*mSession->drawnMesh());
         if (withSnapshot) viewport->setSnapshot(mSession->view());
@@ -75,12 +76,22 @@ protected:
 
 }  // namespace
 
-TEST_F(GlViewport, TheFactoryPicksOpenGl) {
+TEST_F(GlViewport, TheFactoryPicksOpenGlOnAGpuAndTheSoftwareRendererOnACpuRasteriser) {
     ASSERT_NE(QGuiApplication::platformName(), QStringLiteral("offscreen"));
+    const GlProbe probe = probeOpenGl33();
+    ASSERT_TRUE(probe.available);
+    EXPECT_FALSE(probe.renderer.isEmpty()) << "GL_RENDERER was read";
+    const bool cpu = isSoftwareGlRenderer(probe.renderer);
     QWidget parent;
-    Viewport* viewport = createViewport(RendererChoice::Auto, &parent);
-    EXPECT_EQ(viewport->kind(), RendererKind::OpenGL);
-    EXPECT_NE(dynamic_cast<MeshViewport*>(viewport), nullptr);
+    QString reason;
+    Viewport* viewport = createViewport(RendererChoice::Auto, &parent, &reason);
+    EXPECT_EQ(viewport->kind(), cpu ? RendererKind::Software : RendererKind::OpenGL) << reason.toStdString();
+    EXPECT_TRUE(reason.contains(probe.renderer)) << reason.toStdString();
+    // --opengl-render: OpenGL whatever the rasteriser, without multisampling on a CPU one.
+    auto* forced = dynamic_cast<MeshViewport*>(createViewport(RendererChoice::OpenGL, &parent, &reason));
+    ASSERT_NE(forced, nullptr);
+    EXPECT_EQ(forced->requestedSamples(), cpu ? 0 : 4) << reason.toStdString();
+    EXPECT_EQ(forced->format().samples() > 0, !cpu) << "the widget asks its context for " << forced->format().samples();
     // --software-render still gives the software one.
     EXPECT_EQ(createViewport(RendererChoice::Software, &parent)->kind(), RendererKind::Software);
 }
@@ -166,6 +177,20 @@ TEST_F(GlViewport, PartialUploadsDrawTheSamePictureAsAWholeUpload) {
     EXPECT_EQ(countDifferent(fromRanges, fromWhole, 0), 0) << "partial uploads left stale vertices or normals";
 }
 
+TEST_F(GlViewport, SkippingTheBackFacesOfAClosedMeshDrawsTheSamePicture) {
+    stepTo(kTicksIntoContact);
+    auto viewport = makeViewport(true);
+    ASSERT_TRUE(viewport->scene().closedAndConsistent());
+    const QImage culled = viewport->grabImage();
+    viewport->setBackFaceCulling(false);
+    const QImage all = viewport->grabImage();
+    keep(culled, "culled");
+    // Along the silhouette a back face's wire can win the LEQUAL depth test by a hair: a thin line
+    // of pixels at most (a wrong winding would differ over the whole organ).
+    EXPECT_LE(countDifferent(culled, all, 2), 300);
+    EXPECT_GT(countNotNear(culled, toQColor(style::kBackground).rgb(), 6), kWidthPx * kHeightPx / 5);
+}
+
 TEST_F(GlViewport, ShowsTheRestGhostOverTheDentOnly) {
     auto viewport = makeViewport();
     const QImage plain = viewport->grabImage();
@@ -237,6 +262,17 @@ TEST_F(GlViewport, PicksAndPansLikeTheSoftwareViewport) {
     EXPECT_EQ(gl->pickVertex(QPoint(int(std::floor(p->x)), int(std::floor(p->y)))), touched);
     // And the picture after the pan is still the mesh, drawn.
     EXPECT_GT(countNotNear(gl->grabImage(), toQColor(style::kBackground).rgb(), 6), kWidthPx * kHeightPx / 5);
+}
+
+TEST_F(GlViewport, TheBenchmarkPrintsFpsWithOpenGlForced) {
+    testing::internal::CaptureStdout();
+    const int code = runViewportBenchmark(QStringLiteral("0.5"), defaultMeshPath(), RendererChoice::OpenGL);
+    const std::string out = testing::internal::GetCapturedStdout();
+    EXPECT_EQ(code, 0) << out;
+    EXPECT_NE(out.find("fps="), std::string::npos) << out;
+    EXPECT_NE(out.find("renderer=OpenGL"), std::string::npos) << out;
+    const bool cpu = isSoftwareGlRenderer(probeOpenGl33().renderer);
+    EXPECT_NE(out.find(cpu ? "samples=0" : "samples=4"), std::string::npos) << out;
 }
 
 int main(int argc, char** argv) {

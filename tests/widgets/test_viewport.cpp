@@ -6,6 +6,7 @@
 #include "app/gui/HapticSession.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/SnapshotObserver.h"
+#include "app/gui/ViewportBenchmark.h"
 #include "widgets/SceneOverlay.h"
 #include "widgets/SceneStyle.h"
 #include "widgets/SoftwareViewport.h"
@@ -380,6 +381,69 @@ TEST(MainWindow, InteractiveRunsTheLoopThreadAndOnlyObservesIt) {
     window->close();
     EXPECT_FALSE(window->session().threadRunning());
     window.reset();
+}
+
+// --- the renderer for the GL_RENDERER found (a pure function: strings in, decision out) ---
+
+TEST(ViewportFactory, NoMultisamplingAndTheSoftwareRendererOnACpuRasteriser) {
+    const QString llvmpipe = QStringLiteral("llvmpipe (LLVM 15.0.6, 256 bits)");
+    const QString gpu = QStringLiteral("Mesa Intel(R) UHD Graphics 620 (KBL GT2)");
+    for (const char* cpu : {"llvmpipe (LLVM 15.0.6, 256 bits)", "softpipe", "Software Rasterizer", "swrast"})
+        EXPECT_TRUE(isSoftwareGlRenderer(QLatin1String(cpu))) << cpu;
+    for (const char* hardware : {"Mesa Intel(R) UHD Graphics 620 (KBL GT2)", "NVIDIA GeForce RTX 3060/PCIe/SSE2",
+                                 "AMD Radeon RX 6600 (navi23, LLVM 15.0.6, DRM 3.49)", "Apple M1"})
+        EXPECT_FALSE(isSoftwareGlRenderer(QLatin1String(hardware))) << hardware;
+
+    EXPECT_EQ(viewportSamplesFor(llvmpipe), 0) << "4x costs a CPU rasteriser up to four times the fragments";
+    EXPECT_EQ(viewportSamplesFor(QStringLiteral("softpipe")), 0);
+    EXPECT_EQ(viewportSamplesFor(gpu), 4);
+    EXPECT_EQ(viewportSamplesFor(llvmpipe, 4), 4) << "the benchmark's baseline forces the old 4x";
+    EXPECT_EQ(viewportSamplesFor(gpu, 0), 0);
+
+    const GlProbe onLlvmpipe{true, QString(), llvmpipe};
+    const GlProbe onGpu{true, QString(), gpu};
+    const GlProbe none{false, QStringLiteral("no OpenGL context could be created"), QString()};
+    // Auto: the software renderer on a CPU rasteriser (it is faster there), OpenGL with 4x on a GPU.
+    const RendererDecision autoCpu = decideRenderer(RendererChoice::Auto, onLlvmpipe);
+    EXPECT_EQ(autoCpu.kind, RendererKind::Software);
+    EXPECT_TRUE(autoCpu.reason.contains(QStringLiteral("llvmpipe"))) << autoCpu.reason.toStdString();
+    const RendererDecision autoGpu = decideRenderer(RendererChoice::Auto, onGpu);
+    EXPECT_EQ(autoGpu.kind, RendererKind::OpenGL);
+    EXPECT_EQ(autoGpu.samples, 4);
+    // --opengl-render on llvmpipe: OpenGL, without multisampling.
+    const RendererDecision forcedCpu = decideRenderer(RendererChoice::OpenGL, onLlvmpipe);
+    EXPECT_EQ(forcedCpu.kind, RendererKind::OpenGL);
+    EXPECT_EQ(forcedCpu.samples, 0);
+    EXPECT_TRUE(forcedCpu.reason.contains(QStringLiteral("no multisampling"))) << forcedCpu.reason.toStdString();
+    // No OpenGL: software, saying why; --software-render: software whatever is there.
+    for (const auto choice : {RendererChoice::Auto, RendererChoice::OpenGL}) {
+        const RendererDecision without = decideRenderer(choice, none);
+        EXPECT_EQ(without.kind, RendererKind::Software);
+        EXPECT_EQ(without.reason, none.whyNot);
+    }
+    EXPECT_EQ(decideRenderer(RendererChoice::Software, onGpu).kind, RendererKind::Software);
+}
+
+// --- palpate --benchmark-viewport (what main() calls; no frame rate is asserted: machines are noisy) ---
+
+TEST(ViewportBenchmark, PrintsFpsForAMeshWithTheSoftwareRenderer) {
+    testing::internal::CaptureStdout();
+    const int code = runViewportBenchmark(QStringLiteral("0.5"), defaultMeshPath(), RendererChoice::Software);
+    const std::string out = testing::internal::GetCapturedStdout();
+    EXPECT_EQ(code, 0) << out;
+    EXPECT_NE(out.find("fps="), std::string::npos) << out;
+    EXPECT_NE(out.find("renderer=software"), std::string::npos) << out;
+    EXPECT_NE(out.find("vertices=3970"), std::string::npos) << "the --mesh given, not the generated sphere\n" << out;
+    EXPECT_NE(out.find("device sim:sine"), std::string::npos) << "a device that keeps pressing\n" << out;
+}
+
+TEST(ViewportBenchmark, BadArgumentsGiveAMessageAndNoHang) {
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(runViewportBenchmark(QStringLiteral("-1"), defaultMeshPath(), RendererChoice::Software), 2);
+    EXPECT_EQ(runViewportBenchmark(QStringLiteral("0.5"), QStringLiteral("/no/such/mesh.off"), RendererChoice::Software), 1);
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("--seconds"), std::string::npos) << err;
+    EXPECT_NE(err.find("/no/such/mesh.off"), std::string::npos) << err;
 }
 
 int main(int argc, char** argv) {

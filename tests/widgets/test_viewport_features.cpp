@@ -18,6 +18,7 @@
 #include <QImage>
 #include <QMouseEvent>
 #include <QTest>
+#include <QWheelEvent>
 
 #include <gtest/gtest.h>
 
@@ -358,6 +359,201 @@ TEST(SoftwareViewportFeatures, ShowsTheRestGhostOnlyWhereTheTissueMoved) {
         for (int x = 0; x < masked.width(); ++x)
             if (around.contains(QPointF(x + 0.5, y + 0.5))) masked.setPixel(x, y, withoutGhost.pixel(x, y));
     EXPECT_EQ(countDifferent(masked, withoutGhost, 3, legend), 0) << "ghost drawn away from the dent";
+}
+
+TEST(SoftwareViewportFeatures, ShadesTheDentWithNormalsRecomputedAroundIt) {
+    auto session = steppedSession(0);
+    SoftwareViewport viewport;
+    viewport.resize(640, 480);
+    viewport.setMesh(*session->drawnMesh());
+    (void)viewport.grabImage();
+    const std::vector<glm::vec3> atRest = viewport.vertexNormals();
+    ASSERT_EQ(atRest.size(), viewport.scene().vertexCount());
+
+    const float kCos5Deg = std::cos(5.0f * 3.14159265f / 180.0f);
+    // Several frames into the press, each taking only the vertices that changed.
+    for (int frame = 0; frame < 10; ++frame) {
+        session->step(kTicksIntoContact / 10);
+        session->observe();
+        viewport.setSnapshot(session->view());
+        (void)viewport.grabImage();
+    }
+    ASSERT_TRUE(session->view().contact);
+    const VertexId touched = session->view().touched;
+    // The drawn normals are the deformed shape's, everywhere (as if all were recomputed) ...
+    std::vector<glm::vec3> expected;
+    viewport.scene().computeVertexNormals(expected);
+    ASSERT_EQ(viewport.vertexNormals().size(), expected.size());
+    std::size_t turned = 0;
+    for (VertexId v = 0; v < expected.size(); ++v) {
+        ASSERT_EQ(viewport.vertexNormals()[v], expected[v]) << "vertex " << v;
+        if (glm::dot(expected[v], atRest[v]) < kCos5Deg) ++turned;
+    }
+    // ... so in the dent they turned away from the rest normals: the dent shades as a dent.
+    EXPECT_GT(turned, 5u);
+    bool ringTurned = false;
+    for (const std::uint32_t t : viewport.scene().vertexTriangles(touched))
+        for (int k = 0; k < 3; ++k) {
+            const VertexId w = viewport.scene().indices()[3 * t + k];
+            if (glm::dot(expected[w], atRest[w]) < kCos5Deg) ringTurned = true;
+        }
+    EXPECT_TRUE(ringTurned) << "the normals around the touched vertex";
+}
+
+TEST(SoftwareViewportFeatures, SkippingTheBackFacesOfAClosedMeshDrawsTheSamePicture) {
+    auto session = steppedSession(kTicksIntoContact);
+    SoftwareViewport viewport;
+    viewport.resize(640, 480);
+    viewport.setMesh(*session->drawnMesh());
+    ASSERT_TRUE(viewport.scene().closedAndConsistent()) << "the default organ is a closed surface";
+    EXPECT_NE(viewport.scene().outwardWinding(), 0);
+    EXPECT_TRUE(viewport.scene().outside(viewport.camera().eyeMm()));
+    viewport.setSnapshot(session->view());
+    for (const bool wireframe : {true, false}) {
+        viewport.setWireframe(wireframe);
+        viewport.setBackFaceCulling(true);
+        const QImage culled = viewport.grabImage();
+        viewport.setBackFaceCulling(false);
+        const QImage all = viewport.grabImage();
+        // Pixel centres exactly on a silhouette edge may pick the other face: a handful at most.
+        EXPECT_LE(countDifferent(culled, all, 2), 20) << "wireframe " << wireframe;
+        EXPECT_GT(countNotNear(culled, toQColor(style::kBackground).rgb(), 6), 640 * 480 / 5);
+    }
+    // An open surface (two triangles) is not closed: both its sides are drawn.
+    auto open = TissueMesh::fromTriangles({{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {10, 10, 0}}, {{0, 1, 2}, {1, 3, 2}}, "open");
+    ASSERT_TRUE(open.mesh) << open.report.text();
+    RenderScene openScene;
+    openScene.setMesh(*open.mesh);
+    EXPECT_FALSE(openScene.closedAndConsistent());
+    EXPECT_EQ(openScene.outwardWinding(), 0);
+}
+
+TEST(SoftwareViewportFeatures, RedrawingOnlyAroundTheDentGivesTheSamePictureAsAWholeFrame) {
+    auto session = steppedSession(kTicksIntoContact / 2);
+    SoftwareViewport incremental;
+    incremental.resize(640, 480);
+    incremental.setMesh(*session->drawnMesh());
+    incremental.setSnapshot(session->view());
+    (void)incremental.grabImage();
+    EXPECT_TRUE(incremental.lastRaster().whole) << "a new mesh is drawn whole";
+    std::size_t partialFrames = 0;
+    for (int frame = 0; frame < 20; ++frame) {
+        session->step(kTicksIntoContact / 20);
+        session->observe();
+        incremental.setSnapshot(session->view());
+        (void)incremental.grabImage();
+        if (!incremental.lastRaster().whole) {
+            ++partialFrames;
+            EXPECT_LT(incremental.lastRaster().regionPx, std::size_t(640 * 480 / 4)) << "frame " << frame;
+        }
+    }
+    EXPECT_GT(partialFrames, 15u) << "while only the dent changes, only its rectangle is drawn again";
+    ASSERT_TRUE(session->view().contact);
+
+    SoftwareViewport whole;
+    whole.resize(640, 480);
+    whole.setMesh(*session->drawnMesh());
+    whole.setSnapshot(session->view());
+    const QImage expected = whole.grabImage();
+    EXPECT_TRUE(whole.lastRaster().whole);
+    EXPECT_EQ(countDifferent(incremental.grabImage(), expected, 0), 0);
+    // Nothing new: the picture is kept, nothing is drawn again.
+    (void)incremental.grabImage();
+    EXPECT_EQ(incremental.lastRaster().regionPx, 0u);
+    // A camera move draws all again.
+    incremental.resetCamera();
+    incremental.fitCamera();
+    QWheelEvent wheel(QPointF(320, 240), QPointF(320, 240), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                      Qt::NoScrollPhase, false);
+    QApplication::sendEvent(&incremental, &wheel);
+    (void)incremental.grabImage();
+    EXPECT_TRUE(incremental.lastRaster().whole);
+}
+
+TEST(SoftwareViewportFeatures, TheForceLabelSitsOnAnOpaquePlateWithReadableContrast) {
+    auto session = steppedSession(kTicksIntoContact);
+    SoftwareViewport viewport;
+    viewport.resize(640, 480);
+    viewport.setMesh(*session->drawnMesh());
+    viewport.setSnapshot(session->view());
+    ASSERT_GT(glm::length(viewport.scene().forceN()), 0.0f);
+    const QImage image = viewport.grabImage();
+    const QRectF plate = forceLabelRect(viewport.scene(), viewport.camera(), viewport.size());
+    ASSERT_FALSE(plate.isEmpty());
+    EXPECT_TRUE(QRectF(0, 0, 640, 480).contains(plate)) << "kept inside the viewport";
+    EXPECT_GE(plate.height(), double(style::kLabelFontPx)) << "a larger font than the legend's";
+    // The plate is opaque: its colour whatever lies under it (tissue, rings, background).
+    const QColor plateColour = toQColor(style::kLabelPlate);
+    const QRect inner = plate.toAlignedRect().adjusted(2, 2, -2, -2);
+    int platePixels = 0, all = 0;
+    double bestContrast = 1.0;
+    for (int y = inner.top(); y <= inner.bottom(); ++y)
+        for (int x = inner.left(); x <= inner.right(); ++x) {
+            ++all;
+            const QRgb pixel = image.pixel(x, y);
+            if (nearRgb(pixel, plateColour.rgb(), 2)) ++platePixels;
+            bestContrast = std::max(bestContrast, contrastRatio(QColor(pixel), plateColour));
+        }
+    EXPECT_GT(platePixels, all / 2) << "the plate shows between the letters";
+    // The text on it: the pixels most unlike the plate are the letters' cores.
+    EXPECT_GE(bestContrast, 4.5);
+    EXPECT_GE(contrastRatio(toQColor(style::kForceArrow), plateColour), 4.5);
+    // The formula itself: black on white is 21, a colour against itself 1.
+    EXPECT_NEAR(contrastRatio(Qt::black, Qt::white), 21.0, 1e-9);
+    EXPECT_NEAR(contrastRatio(plateColour, plateColour), 1.0, 1e-9);
+}
+
+TEST(SoftwareViewportFeatures, TheForceLabelStaysOffTheDentWhenTheForcePointsAtTheViewer) {
+    auto session = steppedSession(kTicksIntoContact);
+    SoftwareViewport viewport;
+    viewport.resize(640, 480);
+    viewport.setMesh(*session->drawnMesh());
+    viewport.setSnapshot(session->view());
+    // The same press with the force turned towards the eye: its arrow is seen end-on, a few pixels.
+    SceneSnapshot towards = session->view();
+    const glm::vec3 at = towards.toolRadiusMm > 0.0f ? towards.proxyMm : towards.toolTipMm;
+    towards.forceN = 2.0f * glm::normalize(viewport.camera().eyeMm() - at);
+    viewport.setSnapshot(towards);
+    const QRectF patch = displacedPatchRect(viewport.scene(), viewport.camera(), viewport.size());
+    const QRectF label = forceLabelRect(viewport.scene(), viewport.camera(), viewport.size());
+    ASSERT_FALSE(patch.isEmpty());
+    ASSERT_FALSE(label.isEmpty());
+    EXPECT_FALSE(label.intersects(patch)) << "label (" << label.x() << ", " << label.y() << ", " << label.width() << " x "
+                                          << label.height() << ") over the dent (" << patch.x() << ", " << patch.y()
+                                          << ", " << patch.width() << " x " << patch.height() << ")";
+    EXPECT_TRUE(QRectF(0, 0, 640, 480).contains(label));
+}
+
+TEST(SoftwareViewportFeatures, OutlinesTheDisplacedPatchAndMarksItWhenSmall) {
+    auto session = steppedSession(kTicksIntoContact);
+    SoftwareViewport viewport;
+    viewport.resize(640, 480);
+    viewport.setMesh(*session->drawnMesh());
+    const QRgb outline = toQColor(style::kPatchOutline).rgb();
+    auto outlinePixels = [&](const QImage& image, const QRectF& exclude) {
+        int count = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                if (!exclude.contains(QPointF(x + 0.5, y + 0.5)) && nearRgb(image.pixel(x, y), outline, 12)) ++count;
+        return count;
+    };
+    EXPECT_EQ(outlinePixels(viewport.grabImage(), {}), 0) << "no outline at rest";
+
+    viewport.setSnapshot(session->view());
+    const QRectF legend = sceneLegendRect(viewport.scene(), viewport.size());
+    const int near = outlinePixels(viewport.grabImage(), legend);
+    EXPECT_GT(near, 40) << "the patch's border";
+    EXPECT_GT(deepestDisplacementMm(viewport.scene()), style::kOutlineDisplacementMm);
+
+    // Far away (as a fine mesh's patch looks) the patch is a few pixels: a circle still marks it.
+    viewport.resetCamera();
+    for (int step = 0; step < 12; ++step) {
+        QWheelEvent wheel(QPointF(320, 240), QPointF(320, 240), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(&viewport, &wheel);
+    }
+    const int far = outlinePixels(viewport.grabImage(), sceneLegendRect(viewport.scene(), viewport.size()));
+    EXPECT_GT(far, int(style::kPatchMarkerMinRadiusPx * 2.0f)) << "a circle of at least the minimum radius";
 }
 
 TEST(SoftwareViewportFeatures, RightAndMiddleDragPanLeftDragOrbits) {
