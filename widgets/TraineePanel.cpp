@@ -42,6 +42,7 @@ TraineePanel::TraineePanel(QWidget* parent) : QWidget(parent) {
     who->addRow(tr("Trainee:"), traineeRow);
     auto* exerciseRow = new QHBoxLayout();
     mExercises = new QComboBox(this);
+    mExercises->setObjectName(QStringLiteral("exerciseCombo"));
     mExercises->setAccessibleName(tr("Exercise"));
     mExercises->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     auto* openExercise = new QPushButton(tr("Open…"), this);

@@ -64,6 +64,13 @@ std::unique_ptr<MainWindow> traineeWindow(const QTemporaryDir& dir, const char* 
     return window;
 }
 
+/// Trainee mode, the trainee Ada selected and "press the targets" chosen.
+void readyAdaForPressTargets(MainWindow& window) {
+    window.setMode(MainWindow::Mode::Trainee);
+    ASSERT_EQ(window.exercises().addTrainee(QStringLiteral("Ada")), QString());
+    ASSERT_EQ(window.exercises().addExerciseFile(resource("exercises/press_targets.json")), QString());
+}
+
 /// Steps until the exercise is over (or `maxTicks`), 100 ticks a frame as the window would poll.
 void runToEnd(MainWindow& window, int maxTicks) {
     for (int done = 0; done < maxTicks && window.exercises().running(); done += 100) window.advanceTicks(100);
@@ -90,9 +97,7 @@ TEST(TraineeMode, PressTargetsRunsGuidesScoresAndStores) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     auto window = traineeWindow(dir, "exercises/press_targets.good.path");
-    window->setMode(MainWindow::Mode::Trainee);
-    ASSERT_EQ(window->exercises().addTrainee(QStringLiteral("Ada")), QString());
-    ASSERT_EQ(window->exercises().addExerciseFile(resource("exercises/press_targets.json")), QString());
+    ASSERT_NO_FATAL_FAILURE(readyAdaForPressTargets(*window));
     TraineePanel* panel = window->traineePanel();
     EXPECT_EQ(panel->traineeName(), QStringLiteral("Ada"));
     ASSERT_EQ(window->exercises().start(), QString());
@@ -157,9 +162,7 @@ TEST(TraineeMode, AScriptedPathStartsWithTheExerciseHoweverLateTheWindowLooks) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     auto window = traineeWindow(dir, "exercises/press_targets.good.path");
-    window->setMode(MainWindow::Mode::Trainee);
-    ASSERT_EQ(window->exercises().addTrainee(QStringLiteral("Ada")), QString());
-    ASSERT_EQ(window->exercises().addExerciseFile(resource("exercises/press_targets.json")), QString());
+    ASSERT_NO_FATAL_FAILURE(readyAdaForPressTargets(*window));
     window->advanceTicks(3000);  // the device was connected a while before Start
     auto scoreWithDelay = [&](int delayTicks) {
         EXPECT_EQ(window->exercises().start(), QString());
@@ -364,7 +367,8 @@ TEST(ExerciseDock, SelectsAnExerciseOnTheShownMeshUntilTheTraineePicks) {
     window->advanceTicks(2);
     EXPECT_EQ(exerciseMesh(panel->exercisePath()), sphere) << panel->exercisePath().toStdString();
     // The trainee picks one on the stomach; loading the sphere again keeps it.
-    auto* combo = panel->findChildren<QComboBox*>().at(1);
+    auto* combo = panel->findChild<QComboBox*>(QStringLiteral("exerciseCombo"));
+    ASSERT_NE(combo, nullptr);
     int stomachIndex = -1;
     for (int i = 0; i < combo->count(); ++i)
         if (exerciseMesh(combo->itemData(i).toString()) == stomach) stomachIndex = i;
