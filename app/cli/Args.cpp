@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 namespace palpate::cli {
@@ -43,6 +44,29 @@ std::optional<std::string> Args::option(const std::string& name) const {
     for (const auto& [k, v] : mOptions)
         if (k == name) return v;
     return std::nullopt;
+}
+
+bool sameFile(const std::string& a, const std::string& b) {
+    if (a.empty() || b.empty()) return false;
+    std::error_code ec;
+    if (std::filesystem::exists(a, ec) && std::filesystem::exists(b, ec)) {
+        const bool same = std::filesystem::equivalent(a, b, ec);
+        return !ec && same;
+    }
+    // One of them does not exist yet: compare what they would be.
+    const auto ca = std::filesystem::weakly_canonical(a, ec);
+    if (ec) return false;
+    const auto cb = std::filesystem::weakly_canonical(b, ec);
+    return !ec && ca == cb;
+}
+
+std::string outputIsAnInput(const std::string& option, const std::string& output,
+                            const std::vector<std::pair<std::string, std::string>>& inputs) {
+    for (const auto& [input, what] : inputs)
+        if (sameFile(output, input))
+            return "--" + option + " " + output + " is the " + what +
+                   " file: an output is never written over an input; choose another file";
+    return "";
 }
 
 std::optional<long long> parsePositiveInt(const std::string& text) {

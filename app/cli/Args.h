@@ -2,6 +2,7 @@
 // Minimal command-line options: "--name value" and "--flag", with clear errors.
 
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,14 @@ private:
     std::vector<std::string> mPositional;
     std::string mError;
 };
+
+/// Whether two paths name the same file (through links or another spelling); false when either is "".
+bool sameFile(const std::string& a, const std::string& b);
+/// An output is never one of the inputs: "" when `output` is none of `inputs` (pairs of a path and
+/// what it is, e.g. {"m.off", "mesh"}), else the message for `option` ("--record r.rec is the
+/// mesh file: ...").
+std::string outputIsAnInput(const std::string& option, const std::string& output,
+                            const std::vector<std::pair<std::string, std::string>>& inputs);
 
 /// Parses a positive integer, or returns nullopt.
 std::optional<long long> parsePositiveInt(const std::string& text);

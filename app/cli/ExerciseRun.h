@@ -26,6 +26,7 @@ public:
     const Exercise& exercise() const { return mAssets.exercise; }
     const TissuePreset& preset() const { return mAssets.preset; }
     const std::string& meshPath() const { return mAssets.meshPath; }
+    const std::string& presetPath() const { return mAssets.presetPath; }
     /// The exercise's physics on the loop's scene (before the loop starts). "" or the problem.
     std::string applyTo(HapticScene& scene) const;
     /// The recording note: `text`, then the exercise. "" with `error` if it does not fit.

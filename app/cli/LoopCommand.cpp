@@ -14,6 +14,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <system_error>
 #include <thread>
 
 namespace palpate::cli {
@@ -52,6 +53,12 @@ int loopCommand(const std::vector<std::string>& words) {
         return 1;
     }
     const std::string uri = args.option("device").value_or("sim:sine");
+    if (const auto csvPath = args.option("csv")) {
+        if (const std::string problem = outputIsAnInput("csv", *csvPath, {{meshPath, "mesh"}}); !problem.empty()) {
+            std::cerr << "loop: " << problem << "\n";
+            return 2;
+        }
+    }
     std::string error;
     auto device = openDeviceUri(uri, error);
     if (!device) {
@@ -63,23 +70,30 @@ int loopCommand(const std::vector<std::string>& words) {
     HapticLoop loop(def, HapticScene::create(std::move(*loaded.mesh), ModelDef{}), std::move(device));
     std::atomic<bool> observing{true};
     std::uint64_t snapshotsSeen = 0, torn = 0, contactSnapshots = 0, lastPublish = 0;
-    std::thread observer([&] {
-        const auto period = std::chrono::duration<double>(1.0 / *observerHz);
-        auto next = std::chrono::steady_clock::now();
-        while (observing.load(std::memory_order_acquire)) {
-            const HapticSnapshot& s = loop.newestSnapshot();
-            if (s.publishCount != lastPublish) {
-                ++snapshotsSeen;
-                if (s.closingTick != s.tick || s.publishCount < lastPublish ||
-                    s.displacedCount > HapticSnapshot::kMaxDisplaced)
-                    ++torn;
-                if (s.contact) ++contactSnapshots;
-                lastPublish = s.publishCount;
+    // A thread that cannot be created (a process or memory limit) is a message, not an abort.
+    std::thread observer;
+    try {
+        observer = std::thread([&] {
+            const auto period = std::chrono::duration<double>(1.0 / *observerHz);
+            auto next = std::chrono::steady_clock::now();
+            while (observing.load(std::memory_order_acquire)) {
+                const HapticSnapshot& s = loop.newestSnapshot();
+                if (s.publishCount != lastPublish) {
+                    ++snapshotsSeen;
+                    if (s.closingTick != s.tick || s.publishCount < lastPublish ||
+                        s.displacedCount > HapticSnapshot::kMaxDisplaced)
+                        ++torn;
+                    if (s.contact) ++contactSnapshots;
+                    lastPublish = s.publishCount;
+                }
+                next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
+                std::this_thread::sleep_until(next);
             }
-            next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
-            std::this_thread::sleep_until(next);
-        }
-    });
+        });
+    } catch (const std::system_error& e) {
+        std::cerr << "loop: could not start the observer thread: " << e.what() << "\n";
+        return 1;
+    }
     if (error = loop.start(); !error.empty()) {
         observing = false;
         observer.join();

@@ -7,7 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <iostream>
@@ -148,11 +152,14 @@ int verify(const RecordingReader& reader, bool json) {
 }
 
 int exportCsv(const RecordingReader& reader, const std::optional<std::string>& outPath) {
+    // Written beside the target and renamed at the end: a failed export leaves no half file, and
+    // what was at --out stays until the new CSV is whole.
+    const std::string tempPath = outPath ? *outPath + ".partial-" + std::to_string(::getpid()) : std::string();
     std::ofstream file;
     if (outPath) {
-        file.open(*outPath);
+        file.open(tempPath, std::ios::binary | std::ios::trunc);
         if (!file) {
-            std::cerr << "record export-csv: cannot write " << *outPath << "\n";
+            std::cerr << "record export-csv: " << *outPath << ": cannot write: " << std::strerror(errno) << "\n";
             return 1;
         }
     }
@@ -180,8 +187,17 @@ int exportCsv(const RecordingReader& reader, const std::optional<std::string>& o
         return bool(out);
     });
     out.flush();
-    if (!out) {
-        std::cerr << "record export-csv: writing failed\n";
+    if (outPath) file.close();
+    if (!out || (outPath && !file)) {
+        const int why = errno;
+        std::cerr << "record export-csv: " << (outPath ? *outPath : std::string("standard output"))
+                  << ": writing failed: " << std::strerror(why) << "\n";
+        if (outPath) std::remove(tempPath.c_str());
+        return 1;
+    }
+    if (outPath && std::rename(tempPath.c_str(), outPath->c_str()) != 0) {
+        std::cerr << "record export-csv: " << *outPath << ": cannot write: " << std::strerror(errno) << "\n";
+        std::remove(tempPath.c_str());
         return 1;
     }
     if (!reader.summary().intact)
@@ -251,9 +267,25 @@ int recordCommand(const std::vector<std::string>& words) {
         std::cerr << "record: unknown action '" << action << "' (use info, verify, export-csv or replay)\n";
         return 2;
     }
+    if (const auto out = args.option("out")) {
+        if (action != "export-csv") {
+            std::cerr << "record: --out is for export-csv\n";
+            return 2;
+        }
+        if (const std::string problem = outputIsAnInput("out", *out, {{pos[1], "recording"}}); !problem.empty()) {
+            std::cerr << "record export-csv: " << problem << "\n";
+            return 2;
+        }
+    }
     const RecordingReader reader = RecordingReader::open(pos[1]);
     if (!reader.fileError().empty()) {
         std::cerr << "record " << action << ": " << reader.fileError() << "\n";
+        return 1;
+    }
+    // Nothing recovered and no header: not a recording at all (verify says so in its own report).
+    if (action != "verify" && !reader.headerOk() && reader.summary().chunks == 0) {
+        std::cerr << "record " << action << ": " << reader.name() << ": not a Palpate recording ("
+                  << reader.headerError() << ")\n";
         return 1;
     }
     if (action == "info") return info(reader, args.flag("json"));

@@ -30,7 +30,7 @@ extern "C" void onInterrupt(int) { gInterrupted.store(true); }
 }  // namespace
 
 int runCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json", "no-fifo"}, {"mesh", "device", "seconds", "record", "rate", "method", "model", "preset", "note",
+    Args args(words, {"json", "no-fifo", "overwrite"}, {"mesh", "device", "seconds", "record", "rate", "method", "model", "preset", "note",
                                                    "exercise", "mark-at"});
     if (!args.ok()) {
         std::cerr << "run: " << args.error() << "\n";
@@ -129,6 +129,30 @@ int runCommand(const std::vector<std::string>& words) {
     }
     const std::string uri = args.option("device").value_or("sim:sine");
     std::string error;
+    const auto recordPath = args.option("record");
+    if (recordPath) {
+        // The recording is never written over an input, nor over another recording unasked.
+        std::vector<std::pair<std::string, std::string>> inputs{{meshPath, "mesh"},
+                                                                {args.option("preset").value_or(""), "preset"}};
+        if (exerciseRun) {
+            inputs.push_back({*args.option("exercise"), "exercise"});
+            inputs.push_back({exerciseRun->presetPath(), "exercise's tissue preset"});
+        }
+        DeviceUri parsedUri;
+        std::string ignored;
+        if (parseDeviceUri(uri, parsedUri, ignored) && !parsedUri.path.empty())
+            inputs.push_back({parsedUri.path, parsedUri.kind == DeviceKind::Replay ? "replayed recording" : "waypoint"});
+        if (const std::string problem = outputIsAnInput("record", *recordPath, inputs); !problem.empty()) {
+            std::cerr << "run: " << problem << "\n";
+            return 2;
+        }
+        std::error_code exists;
+        if (!args.flag("overwrite") && std::filesystem::exists(*recordPath, exists)) {
+            std::cerr << "run: " << *recordPath
+                      << " already exists; give --overwrite to replace it (or choose another file)\n";
+            return 2;
+        }
+    }
     auto device = openDeviceUri(uri, error);
     if (!device) {
         std::cerr << "run: " << error << "\n";
@@ -145,6 +169,11 @@ int runCommand(const std::vector<std::string>& words) {
             return 1;
         }
     }
+    // Refused before the session starts: what the reader would refuse is never recorded.
+    if (const std::string problem = validateRecordingHeader(header); recordPath && !problem.empty()) {
+        std::cerr << "run: " << *recordPath << ": not recorded: " << problem << "\n";
+        return 1;
+    }
 
     std::unique_ptr<HapticLoop> loop;
     try {
@@ -160,22 +189,25 @@ int runCommand(const std::vector<std::string>& words) {
             return 1;
         }
     }
-    std::unique_ptr<RecordingSession> session;
-    const auto recordPath = args.option("record");
-    if (recordPath) {
-        session = RecordingSession::start(*loop, *recordPath, header, error);
-        if (!session) {
-            std::cerr << "run: " << error << "\n";
-            return 1;
-        }
-    }
-
+    // The haptic thread first, then the recorder: a thread that cannot start costs no file (the
+    // recording begins at the tick that picks the recorder up, HapticLoop::attachRecorder).
     gInterrupted = false;
     auto previousInt = std::signal(SIGINT, onInterrupt);
     auto previousTerm = std::signal(SIGTERM, onInterrupt);
     if (error = loop->start(); !error.empty()) {
         std::cerr << "run: " << error << "\n";
         return 1;
+    }
+    std::unique_ptr<RecordingSession> session;
+    if (recordPath) {
+        RecordingWriterDef writerDef;
+        writerDef.replaceExisting = args.flag("overwrite");
+        session = RecordingSession::start(*loop, *recordPath, header, error, writerDef);
+        if (!session) {
+            loop->stop();
+            std::cerr << "run: " << error << "\n";
+            return 1;
+        }
     }
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(*seconds);
     if (exerciseRun && session) exerciseRun->follow(*recordPath);
@@ -185,6 +217,7 @@ int runCommand(const std::vector<std::string>& words) {
             exerciseRun->poll(*loop, session.get());
             if (exerciseRun->over()) break;  // completed or out of time
         }
+        if (session && !session->stats().error.empty()) break;  // a full disk: nothing more is recorded
     }
     loop->stop();
     std::signal(SIGINT, previousInt);
@@ -236,7 +269,10 @@ int runCommand(const std::vector<std::string>& words) {
             std::cout << "recorded " << stats.ticks << " ticks (" << stats.elapsedS << " s) to " << *recordPath << ": "
                       << stats.bytes << " bytes, " << stats.bytesPerTick() << " bytes/tick, " << stats.chunks
                       << " chunks, " << stats.events << " events, " << stats.droppedTicks << " ticks dropped\n";
-            if (!recordError.empty()) std::cerr << "run: " << recordError << "\n";
+            if (!recordError.empty())
+                std::cerr << "run: " << recordError << "\n"
+                          << "run: " << *recordPath << " holds the " << stats.ticks
+                          << " ticks above (whole chunks; it has no end chunk)\n";
         }
         if (score) std::cout << scoreReportToText(*score);
         else if (exerciseRun) std::cerr << "run: no score: " << scoreError << "\n";

@@ -12,24 +12,9 @@
 #include "app/report/ScoreReportPdf.h"
 #endif
 
-#include <filesystem>
 #include <iostream>
 
 namespace palpate::cli {
-
-namespace {
-
-/// Whether `output` names the same file as `input` (through links or another spelling).
-bool sameFile(const std::string& output, const std::string& input) {
-    std::error_code ec;
-    if (std::filesystem::exists(output, ec) && std::filesystem::exists(input, ec))
-        return std::filesystem::equivalent(output, input, ec);
-    const auto a = std::filesystem::weakly_canonical(output, ec);
-    const auto b = std::filesystem::weakly_canonical(input, ec);
-    return !ec && a == b;
-}
-
-}  // namespace
 
 int scoreCommand(const std::vector<std::string>& words) {
     Args args(words, {"json"}, {"exercise", "recording", "mesh", "pdf", "trainee"});

@@ -2,6 +2,7 @@
 #include "app/cli/Commands.h"
 #include "engine/record/RecordedToolDevice.h"
 
+#include <csignal>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -21,7 +22,7 @@ void usage(std::ostream& out) {
            "                   [--spin-fraction F] [--no-fifo] [--json] [--csv FILE]\n"
            "  palpate-cli run [--mesh FILE] [--device URI] [--seconds S] [--record FILE] [--rate HZ]\n"
            "                  [--method M] [--preset FILE] [--note TEXT] [--no-fifo] [--json]\n"
-           "                  [--exercise FILE [--mark-at S,..]]\n"
+           "                  [--exercise FILE [--mark-at S,..]] [--overwrite]\n"
            "  palpate-cli record info|verify FILE [--json]\n"
            "  palpate-cli record export-csv FILE [--out CSV]\n"
            "  palpate-cli record replay FILE [--mesh FILE] [--json]\n"
@@ -41,6 +42,9 @@ void usage(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Past a file-size limit (ulimit -f) write(2) then fails with EFBIG, which the writers report
+    // with the file's name, instead of the signal killing the process without a word.
+    std::signal(SIGXFSZ, SIG_IGN);
     palpate::registerReplayDeviceScheme();  // replay:FILE, like every other device URI
     std::vector<std::string> words(argv + 1, argv + argc);
     if (words.empty()) {

@@ -306,9 +306,9 @@ std::string exerciseRecordingNote(const Exercise& exercise, const std::string& t
     if (!note.empty() && note.back() != '\n') note += '\n';
     note += kNoteMarker;
     note += exerciseToJson(exercise, -1);
-    if (note.size() > kMaxEventTextBytes) {
+    if (note.size() > kMaxNoteBytes) {
         error = "the exercise '" + exercise.name + "' is too large to go into a recording's note (" +
-                std::to_string(note.size()) + " bytes, at most " + std::to_string(kMaxEventTextBytes) + ")";
+                std::to_string(note.size()) + " bytes, at most " + std::to_string(kMaxNoteBytes) + ")";
         return {};
     }
     return note;

@@ -165,6 +165,39 @@ RecordedDevice decodeDevice(ByteReader& r, const std::string& field) {
 
 // --- header ---
 
+namespace {
+
+std::string tooLong(const std::string& field, std::size_t bytes, std::size_t limit, const std::string& what) {
+    return "header." + field + ": " + what + " is " + std::to_string(bytes) + " bytes; a recording holds at most " +
+           std::to_string(limit);
+}
+
+}  // namespace
+
+std::string validateRecordingHeader(const RecordingHeader& h) {
+    // The same limits decodeRecordingHeader, decodeScene and decodeDevice read with.
+    const struct {
+        const char* field;
+        const std::string& text;
+        std::size_t limit;
+        const char* what;
+    } texts[] = {
+        {"engineVersion", h.engineVersion, kMaxNameBytes, "the engine version"},
+        {"scene.meshPath", h.scene.meshPath, kMaxPathBytes, "the mesh path"},
+        {"scene.presetJson", h.scene.presetJson, kMaxPresetJsonBytes, "the tissue preset (as JSON)"},
+        {"device.uri", h.device.uri, kMaxPathBytes, "the device URI"},
+        {"device.spec.name", h.device.spec.name, kMaxNameBytes, "the device name"},
+        {"note", h.note, kMaxNoteBytes, "the note"},
+    };
+    for (const auto& t : texts)
+        if (t.text.size() > t.limit) return tooLong(t.field, t.text.size(), t.limit, t.what);
+    std::vector<std::uint8_t> bytes;
+    encodeRecordingHeader(h, bytes);
+    if (bytes.size() - kPreambleBytes - 4 > kMaxHeaderBytes)
+        return tooLong("length", bytes.size() - kPreambleBytes - 4, kMaxHeaderBytes, "the header");
+    return "";
+}
+
 void encodeRecordingHeader(const RecordingHeader& h, std::vector<std::uint8_t>& out) {
     std::vector<std::uint8_t> body;
     ByteWriter b(body);
@@ -236,7 +269,7 @@ bool decodeRecordingHeader(const std::uint8_t* data, std::size_t size, Recording
     h.safety.staleSampleTimeoutS = r.f64("safety.staleSampleTimeoutS");
     h.safety.maxSampleAgeS = r.f64("safety.maxSampleAgeS");
     h.safety.rearmAfterStale = r.u8("safety.rearmAfterStale") != 0;
-    h.note = r.str("note", kMaxEventTextBytes);
+    h.note = r.str("note", kMaxNoteBytes);
     // Format 3 appends the contact (older files end here: a point tool without friction).
     if (const auto contact = decodeContact(r, "scene.contact")) h.scene.contact = *contact;
     // Bytes after the known fields are allowed: later minor revisions append fields.

@@ -36,13 +36,24 @@ inline constexpr std::size_t kChunkHeaderBytes = 36;
 /// Chunk header + payload CRC: what a chunk costs besides its payload.
 inline constexpr std::size_t kChunkOverheadBytes = kChunkHeaderBytes + 4;
 
-// Limits a reader enforces, so that garbage never makes it allocate or loop without bound.
-inline constexpr std::uint32_t kMaxHeaderBytes = 1u << 20;
-inline constexpr std::uint32_t kMaxChunkPayloadBytes = 64u << 20;
+// The format's limits, stated once: the reader refuses anything larger (so that garbage never
+// makes it allocate or loop without bound) and the writer refuses to write it (validateRecordingHeader,
+// the event texts), so that every file the recorder writes reads back. They are sized so that the
+// documented exercise limits (docs/scoring.md: 1000 targets, 10 000 path points) fit in a note.
 inline constexpr std::size_t kMaxPathBytes = 4096;
 inline constexpr std::size_t kMaxNameBytes = 256;
-inline constexpr std::size_t kMaxPresetJsonBytes = 256 * 1024;
+/// The tissue preset as JSON (its description included).
+inline constexpr std::size_t kMaxPresetJsonBytes = 4u << 20;
+/// The header's free-text note (an exercise session carries its whole exercise there).
+inline constexpr std::size_t kMaxNoteBytes = 4u << 20;
+/// A mark's or an exercise event's text.
 inline constexpr std::size_t kMaxEventTextBytes = 64 * 1024;
+/// The header body: its texts at their limits plus the fixed fields, with room to spare.
+inline constexpr std::uint32_t kMaxHeaderBytes =
+    std::uint32_t(kMaxPresetJsonBytes + kMaxNoteBytes + 4 * kMaxPathBytes + 4 * kMaxNameBytes + 64 * 1024);
+inline constexpr std::uint32_t kMaxChunkPayloadBytes = 64u << 20;
+/// A whole recording (the reader holds it in memory): about 70 hours at 1 kHz.
+inline constexpr std::uint64_t kMaxRecordingBytes = std::uint64_t(4) << 30;
 
 enum class ChunkType : std::uint8_t {
     Data = 1,  ///< `count` ticks from `firstTick` (delta coded), then the events of that stretch
@@ -98,6 +109,10 @@ struct RecordingHeader {
     /// The engine's version (PALPATE version) as stored in new recordings.
     static std::string recordingEngineVersion();
 };
+
+/// "" when the writer may write `header` (every text within its limit, the body within
+/// kMaxHeaderBytes), else the problem naming the field ("header.note: 100000 bytes, at most ...").
+std::string validateRecordingHeader(const RecordingHeader& header);
 
 /// Preamble, body and CRC, appended to `out`.
 void encodeRecordingHeader(const RecordingHeader& header, std::vector<std::uint8_t>& out);

@@ -2,14 +2,57 @@
 
 #include "engine/record/TickCodec.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 
 namespace palpate {
 
 namespace {
+
+/// Reads `path` from byte `from` on into `bytes` (which holds what came before): regular files only,
+/// at most kMaxRecordingBytes, so that a FIFO, a device (/dev/zero) or a directory is a message
+/// instead of a hang, runaway memory or std::bad_alloc. "" or the problem, naming the path.
+std::string readRecordingFile(const std::string& path, std::vector<std::uint8_t>& bytes) {
+    // O_NONBLOCK: opening a FIFO must not wait for a writer (it is refused below).
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) return path + ": cannot open: " + std::strerror(errno);
+    struct stat st {};
+    std::string error;
+    if (::fstat(fd, &st) != 0) {
+        error = path + ": cannot read: " + std::strerror(errno);
+    } else if (S_ISDIR(st.st_mode)) {
+        error = path + ": is a directory, not a Palpate recording";
+    } else if (!S_ISREG(st.st_mode)) {
+        error = path + ": is not a regular file (a FIFO or a device?); a Palpate recording is a regular file";
+    } else if (std::uint64_t(st.st_size) > kMaxRecordingBytes) {
+        error = path + ": " + std::to_string(st.st_size) + " bytes is more than a recording holds (at most " +
+                std::to_string(kMaxRecordingBytes) + ")";
+    } else if (std::size_t(st.st_size) < bytes.size()) {
+        error = path + ": the file shrank while it was being read live";
+    } else {
+        const std::size_t old = bytes.size();
+        bytes.resize(std::size_t(st.st_size));
+        std::size_t done = old;
+        while (done < bytes.size()) {
+            const ssize_t n = ::pread(fd, bytes.data() + done, bytes.size() - done, off_t(done));
+            if (n < 0 && errno == EINTR) continue;
+            if (n < 0) {
+                error = path + ": read failed: " + std::strerror(errno);
+                break;
+            }
+            if (n == 0) break;  // shorter than fstat said (cut meanwhile): keep what is there
+            done += std::size_t(n);
+        }
+        bytes.resize(error.empty() ? done : old);
+    }
+    ::close(fd);
+    return error;
+}
 
 /// Decodes the ticks of a data chunk into `out`; `after` is where its events start.
 bool decodeTicks(const ChunkHeader& h, const std::uint8_t* payload, std::vector<RecordedTick>& out,
@@ -131,21 +174,8 @@ bool parseEvents(const std::uint8_t* cursor, const std::uint8_t* end, std::uint6
 RecordingReader RecordingReader::open(const std::string& path) {
     RecordingReader reader;
     reader.mName = path;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        reader.mFileError = path + ": cannot open: " + std::strerror(errno);
-        return reader;
-    }
-    in.seekg(0, std::ios::end);
-    const std::streamoff size = in.tellg();
-    if (size < 0) {
-        reader.mFileError = path + ": cannot read (not a regular file?)";
-        return reader;
-    }
-    in.seekg(0, std::ios::beg);
-    reader.mBytes.resize(std::size_t(size));
-    if (size > 0 && !in.read(reinterpret_cast<char*>(reader.mBytes.data()), size)) {
-        reader.mFileError = path + ": read failed";
+    reader.mFileError = readRecordingFile(path, reader.mBytes);
+    if (!reader.mFileError.empty()) {
         reader.mBytes.clear();
         return reader;
     }
@@ -245,31 +275,9 @@ RecordingReader RecordingReader::openLive(const std::string& path) {
 
 bool RecordingReader::refresh() {
     if (!mLive) return false;
-    std::ifstream in(mName, std::ios::binary);
-    if (!in) {
-        mFileError = mName + ": cannot open: " + std::strerror(errno);
-        return false;
-    }
-    in.seekg(0, std::ios::end);
-    const std::streamoff size = in.tellg();
-    if (size < 0) {
-        mFileError = mName + ": cannot read (not a regular file?)";
-        return false;
-    }
-    if (std::size_t(size) < mBytes.size()) {
-        mFileError = mName + ": the file shrank while it was being read live";
-        return false;
-    }
-    mFileError.clear();
-    if (std::size_t(size) == mBytes.size()) return false;
     const std::size_t old = mBytes.size();
-    mBytes.resize(std::size_t(size));
-    in.seekg(std::streamoff(old), std::ios::beg);
-    if (!in.read(reinterpret_cast<char*>(mBytes.data() + old), size - std::streamoff(old))) {
-        mBytes.resize(old);
-        mFileError = mName + ": read failed";
-        return false;
-    }
+    mFileError = readRecordingFile(mName, mBytes);
+    if (!mFileError.empty() || mBytes.size() == old) return false;
     if (old == 0 || mScan.headerPending) {
         scan();  // nothing was scanned yet
     } else {

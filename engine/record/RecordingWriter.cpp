@@ -1,6 +1,10 @@
 #include "engine/record/RecordingWriter.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/types.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -8,7 +12,11 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <sstream>
+#include <system_error>
 
 namespace palpate {
 
@@ -20,19 +28,98 @@ double monotonicS() {
     return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
-/// write(2) until everything is written (or a real error).
-bool writeAll(int fd, const std::uint8_t* data, std::size_t size, std::string& error) {
-    while (size > 0) {
-        const ssize_t n = ::write(fd, data, size);
+/// write(2) until everything is written or a real error; returns the bytes written.
+std::size_t writeAll(int fd, const std::uint8_t* data, std::size_t size, int& error) {
+    std::size_t written = 0;
+    while (written < size) {
+        const ssize_t n = ::write(fd, data + written, size - written);
         if (n < 0) {
             if (errno == EINTR) continue;
-            error = std::strerror(errno);
-            return false;
+            error = errno;
+            return written;
         }
-        data += n;
-        size -= std::size_t(n);
+        written += std::size_t(n);
     }
-    return true;
+    error = 0;
+    return written;
+}
+
+/// The process holding a flock on the file `fd` is open on, from /proc/locks (0 when unknown).
+long lockHolderPid(int fd) {
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) return 0;
+    std::ifstream locks("/proc/locks");
+    std::string line;
+    while (std::getline(locks, line)) {
+        // "1: FLOCK  ADVISORY  WRITE 1234 08:01:56789 0 EOF"
+        std::istringstream fields(line);
+        std::string id, type, mode, access, device;
+        long pid = 0;
+        if (!(fields >> id >> type >> mode >> access >> pid >> device) || type != "FLOCK") continue;
+        unsigned devMajor = 0, devMinor = 0;
+        unsigned long long inode = 0;
+        if (std::sscanf(device.c_str(), "%x:%x:%llu", &devMajor, &devMinor, &inode) != 3) continue;
+        if (inode == st.st_ino && devMajor == major(st.st_dev) && devMinor == minor(st.st_dev)) return pid;
+    }
+    return 0;
+}
+
+std::string beingWritten(const std::string& path, int fd) {
+    const long pid = lockHolderPid(fd);
+    return path + ": is being written by another Palpate (" +
+           (pid > 0 ? "process " + std::to_string(pid) : std::string("another process")) +
+           "); a recording has one writer: choose another file";
+}
+
+/// A new file at `path`, locked, ready for the header: created in place when nothing is there,
+/// else (replacing) created beside it as `tempPath`, to be renamed over the old file once the new
+/// recording has started. -1 with `error` on failure (nothing left behind).
+int openOutput(const std::string& path, bool replace, std::string& tempPath, std::string& error) {
+    struct stat st {};
+    const bool exists = ::stat(path.c_str(), &st) == 0;
+    if (exists && !S_ISREG(st.st_mode)) {
+        error = path + ": is not a regular file; a recording is written to a regular file";
+        return -1;
+    }
+    if (exists && !replace) {
+        error = path + ": already exists; a recording replaces a file only when asked to";
+        return -1;
+    }
+    if (exists) {
+        // Refuse before anything is written: the old file may be a session still being recorded.
+        const int old = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+        if (old >= 0) {
+            const bool locked = ::flock(old, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+            if (locked) error = beingWritten(path, old);
+            ::close(old);  // also releases the probe's own lock
+            if (locked) return -1;
+        }
+        tempPath = path + ".partial-" + std::to_string(::getpid());
+    }
+    const std::string& target = exists ? tempPath : path;
+    const int fd = ::open(target.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        if (errno == EEXIST && !exists)  // created by someone else since stat
+            error = path + ": already exists; a recording replaces a file only when asked to";
+        else
+            error = target + ": cannot create the recording: " + std::strerror(errno);
+        return -1;
+    }
+    // Held until close: a second recorder on this path is refused (see beingWritten).
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+        error = errno == EWOULDBLOCK ? beingWritten(path, fd) : target + ": cannot lock: " + std::strerror(errno);
+        ::close(fd);
+        return -1;  // O_EXCL made it ours, but another process locked it at once: theirs now
+    }
+    return fd;
+}
+
+std::string writeErrorText(const std::string& path, int error, std::uint64_t ticksOnDisk) {
+    if (error == EFBIG)
+        return path + ": file size limit reached after " + std::to_string(ticksOnDisk) +
+               " ticks; the recording stops there";
+    return path + ": writing the recording failed after " + std::to_string(ticksOnDisk) +
+           " ticks: " + std::strerror(error);
 }
 
 }  // namespace
@@ -60,23 +147,49 @@ std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path
         error = "recording header: rateHz " + std::to_string(header.rateHz) + " is outside 10..10000";
         return nullptr;
     }
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) {
-        error = path + ": cannot create the recording: " + std::strerror(errno);
+    // What the reader would refuse is never written (RecordingFormat.h states the limits).
+    if (const std::string problem = validateRecordingHeader(header); !problem.empty()) {
+        error = path + ": not recorded: " + problem;
         return nullptr;
     }
     std::vector<std::uint8_t> bytes;
     encodeRecordingHeader(header, bytes);
-    std::string why;
-    if (!writeAll(fd, bytes.data(), bytes.size(), why)) {
-        ::close(fd);
-        error = path + ": cannot write the recording header: " + why;
+
+    std::string tempPath;
+    const int fd = openOutput(path, def.replaceExisting, tempPath, error);
+    if (fd < 0) return nullptr;
+    const std::string& written = tempPath.empty() ? path : tempPath;
+    auto abandon = [&](std::unique_ptr<RecordingWriter> writer, const std::string& why) {
+        if (writer) {
+            writer->close();  // joins the thread; the fd is closed there
+        } else {
+            ::close(fd);
+        }
+        ::unlink(written.c_str());
+        error = why;
         return nullptr;
-    }
+    };
     std::unique_ptr<RecordingWriter> writer(new RecordingWriter(path, header, def, fd));
-    writer->mWorking.bytes = bytes.size();
-    writer->mStats = writer->mWorking;
-    writer->mThread = std::thread([w = writer.get()] { w->threadMain(); });
+    try {
+        writer->mThread = std::thread([w = writer.get()] { w->threadMain(); });
+    } catch (const std::system_error& e) {
+        writer->mFd = -1;
+        writer.reset();
+        return abandon(nullptr, path + ": cannot start the recording's writer thread: " + e.what());
+    }
+    int why = 0;
+    if (writeAll(fd, bytes.data(), bytes.size(), why) != bytes.size())
+        return abandon(std::move(writer), path + ": cannot write the recording header: " + std::strerror(why));
+    if (!tempPath.empty() && ::rename(tempPath.c_str(), path.c_str()) != 0)
+        return abandon(std::move(writer), path + ": cannot replace it with the new recording: " + std::strerror(errno));
+    {
+        std::lock_guard lock(writer->mMutex);
+        writer->mWorking.bytes = bytes.size();
+        writer->mWritten = writer->mWorking;
+        writer->mStats = writer->mWritten;
+        writer->mHeaderWritten = true;
+    }
+    writer->mWake.notify_all();
     return writer;
 }
 
@@ -97,7 +210,9 @@ RecordingWriter::RecordingWriter(std::string path, const RecordingHeader& header
     mEventBytes.reserve(4096);
     mOut.reserve(256 * 1024);
     mScratch.reserve(1024);
+    mEncoded.reserve(64);
     mWorking.hash = kHashSeed;
+    mWritten = mWorking;
     mLastSyncS = monotonicS();
 }
 
@@ -169,15 +284,15 @@ std::string RecordingWriter::close() {
     mWake.notify_all();
     if (mThread.joinable()) mThread.join();
     mFlushed.notify_all();
-    std::string error = mWorking.error;
+    std::string error = mWritten.error;
     if (mFd >= 0) {
         if (::fsync(mFd) != 0 && error.empty()) error = mPath + ": fsync failed: " + std::strerror(errno);
         if (::close(mFd) != 0 && error.empty()) error = mPath + ": close failed: " + std::strerror(errno);
         mFd = -1;
     }
     std::lock_guard lock(mMutex);
-    mStats = mWorking;
-    mStats.error = error;
+    mWritten.error = error;
+    mStats = mWritten;
     return error;
 }
 
@@ -185,6 +300,9 @@ std::string RecordingWriter::close() {
 
 void RecordingWriter::threadMain() {
     std::unique_lock lock(mMutex);
+    // Started before the header is written (so that a thread that cannot start costs no file).
+    mWake.wait(lock, [&] { return mHeaderWritten || mStop; });
+    if (!mHeaderWritten) return;  // abandoned: nothing of ours is in the file
     for (;;) {
         mWake.wait_for(lock, std::chrono::duration<double>(mDef.drainPeriodS),
                        [&] { return mStop || mFlushRequested != mFlushDone; });
@@ -194,7 +312,7 @@ void RecordingWriter::threadMain() {
         lock.unlock();
         drain(stop);
         lock.lock();
-        mStats = mWorking;
+        mStats = mWritten;
         mFlushDone = flushTarget;
         mFlushed.notify_all();
         if (stop) return;
@@ -221,9 +339,9 @@ void RecordingWriter::drain(bool final) {
         gap.count = dropped;
         gap.hash = mWorking.hash;
         mPayload.clear();
-        emitChunk(gap, mPayload);
         ++mWorking.gaps;
         mWorking.droppedTicks += dropped;
+        emitChunk(gap, mPayload);
         begin = i;
     }
     emitTicks(begin, mDrained.size());
@@ -238,9 +356,9 @@ void RecordingWriter::drain(bool final) {
             gap.count = dropped;
             gap.hash = mWorking.hash;
             mPayload.clear();
-            emitChunk(gap, mPayload);
             ++mWorking.gaps;
             mWorking.droppedTicks += dropped;
+            emitChunk(gap, mPayload);
         }
     }
     // Events no tick chunk took (controller events while the loop is stopped; at the end, also
@@ -322,10 +440,10 @@ void RecordingWriter::emitTicks(std::size_t begin, std::size_t end) {
         data.firstTick = firstTick;
         data.count = std::uint32_t(take);
         data.hash = mWorking.hash;
-        emitChunk(data, mPayload);
         mWorking.ticks += take;
         mWorking.lastTick = lastTick;
         mWorking.elapsedS = mLastTick.nowS - mFirstNowS + mPeriodS;
+        emitChunk(data, mPayload);
         begin += take;
     }
 }
@@ -403,18 +521,37 @@ void RecordingWriter::addEvent(EventKind kind, std::uint64_t tick, std::uint64_t
 void RecordingWriter::emitChunk(const ChunkHeader& header, const std::vector<std::uint8_t>& payload) {
     encodeChunk(header, payload.data(), payload.size(), mOut);
     ++mWorking.chunks;
+    mEncoded.push_back({mOut.size(), mWorking});
 }
 
 void RecordingWriter::writeOut() {
     if (mOut.empty()) return;
-    if (mWorking.error.empty()) {
-        std::string why;
-        if (writeAll(mFd, mOut.data(), mOut.size(), why))
-            mWorking.bytes += mOut.size();
-        else
-            mWorking.error = mPath + ": writing the recording failed: " + why;  // later chunks are dropped
+    if (mWritten.error.empty() && mWritten.bytes + mOut.size() > kMaxRecordingBytes) {
+        // The reader refuses a larger file: the recording ends here, readable.
+        mWritten.error = mPath + ": the recording reached the format's limit of " + std::to_string(kMaxRecordingBytes) +
+                         " bytes after " + std::to_string(mWritten.ticks) + " ticks; it stops there";
+    }
+    if (mWritten.error.empty()) {
+        int why = 0;
+        const std::size_t written = writeAll(mFd, mOut.data(), mOut.size(), why);
+        // The figures say what a reader will find: the whole chunks that reached the file.
+        std::size_t whole = 0;
+        const RecordingStats before = mWritten;
+        for (const Encoded& e : mEncoded) {
+            if (e.endBytes > written) break;
+            whole = e.endBytes;
+            mWritten = e.figures;
+        }
+        mWritten.bytes = before.bytes + whole;
+        if (why != 0) {
+            // A chunk cut short would read as damage: cut the file back to the last whole chunk
+            // (shrinking works on a full disk and under a file-size limit). Later chunks are dropped.
+            if (written != whole) (void)::ftruncate(mFd, off_t(mWritten.bytes));
+            mWritten.error = writeErrorText(mPath, why, mWritten.ticks);
+        }
     }
     mOut.clear();
+    mEncoded.clear();
     const double nowS = monotonicS();
     if (nowS - mLastSyncS >= mDef.syncPeriodS) {
         ::fdatasync(mFd);

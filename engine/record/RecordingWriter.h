@@ -39,6 +39,10 @@ struct RecordingWriterDef {
     double syncPeriodS = 1.0;
     /// Ticks per chunk when a drain holds many (stepped runs); 0: one drain period at the rate.
     std::size_t ticksPerChunk = 0;
+    /// A file already at the path is replaced, once the new recording has started (its header
+    /// written to a file beside it, then renamed over the old one). False: such a path is refused,
+    /// so that a recording is never lost to a new one nobody asked to replace it.
+    bool replaceExisting = false;
 };
 
 /// "" when usable, else a message naming the field.
@@ -46,7 +50,7 @@ std::string validateRecordingWriterDef(const RecordingWriterDef& def);
 
 /// Figures of a recording so far (any thread).
 struct RecordingStats {
-    std::uint64_t ticks = 0;         ///< ticks written to the file
+    std::uint64_t ticks = 0;         ///< ticks in whole chunks written to the file (what a reader finds)
     std::uint64_t droppedTicks = 0;  ///< ticks lost to a full ring (each run is a gap chunk)
     std::uint64_t gaps = 0;
     std::uint64_t events = 0;
@@ -62,8 +66,11 @@ struct RecordingStats {
 
 class RecordingWriter final : public RecorderSink {
 public:
-    /// Creates (truncates) the file, writes the header and starts the writer thread. Null with
-    /// `error` naming the path on failure.
+    /// Creates the file, locks it against a second writer, writes the header and starts the writer
+    /// thread. Null with `error` naming the path on failure: an existing file (unless
+    /// def.replaceExisting), one another process is writing, a path that is not a regular file, a
+    /// header the reader would refuse (validateRecordingHeader), no thread. A failed start leaves
+    /// no file behind and the file it would have replaced untouched.
     static std::unique_ptr<RecordingWriter> create(const std::string& path, const RecordingHeader& header,
                                                    std::string& error, const RecordingWriterDef& def = {});
     ~RecordingWriter() override;
@@ -112,6 +119,7 @@ private:
     void drain(bool final);
     void emitTicks(std::size_t begin, std::size_t end);
     void emitChunk(const ChunkHeader& header, const std::vector<std::uint8_t>& payload);
+    void waitForHeader();
     void appendEventsUpTo(std::uint64_t lastTick, std::uint64_t firstTick);
     void addEvent(EventKind kind, std::uint64_t tick, std::uint64_t firstTick, const std::uint8_t* payload,
                   std::size_t bytes);
@@ -151,7 +159,15 @@ private:
     std::vector<std::uint8_t> mPayload, mEventBytes, mOut, mScratch;
     std::uint32_t mEventCount = 0;
     TickEncoder mEncoder;
-    RecordingStats mWorking;  // the writer's running figures
+    RecordingStats mWorking;  // the writer's running figures (what was encoded)
+    /// The figures after each chunk in mOut, so that a failed write reports what did reach the file.
+    struct Encoded {
+        std::size_t endBytes;  // where the chunk ends in mOut
+        RecordingStats figures;
+    };
+    std::vector<Encoded> mEncoded;
+    RecordingStats mWritten;  // the figures of the whole chunks in the file
+    bool mHeaderWritten = false;  // under mMutex: the thread waits for it
     std::uint64_t mLostCommandsReported = 0;
     bool mHaveLastTick = false;
     RecordedTick mLastTick;

@@ -183,7 +183,8 @@ TEST(Recorder, SteppedTickWithRecorderDoesNotAllocate) {
         preset.method = method;
         RecordRig rig = makeRecordRig(SimTrajectory::Stroke, preset);
         std::string error;
-        auto session = RecordingSession::start(*rig.loop, dir.file("alloc.palprec"), rig.header, error);
+        auto session = RecordingSession::start(*rig.loop, dir.file("alloc-" + std::string(methodName(method)) + ".palprec"),
+                                               rig.header, error);
         ASSERT_TRUE(session) << error;
         const auto atAttach = threadAllocationCount();
         for (int i = 0; i < 50; ++i) rig.loop->stepOnce();  // the first picks the recorder up (and resets)
@@ -296,7 +297,7 @@ TEST(Recorder, SizeGoalOf40BytesPerTickHolds) {
     TempDir dir;
     for (auto trajectory : {SimTrajectory::Stroke, SimTrajectory::Sine}) {
         RecordRig rig = makeRecordRig(trajectory);
-        const std::string path = dir.file("size.palprec");
+        const std::string path = dir.file("size-" + std::to_string(int(trajectory)) + ".palprec");
         std::string error;
         auto session = RecordingSession::start(*rig.loop, path, rig.header, error);
         ASSERT_TRUE(session) << error;
