@@ -1,7 +1,7 @@
 #include "engine/exercise/ExerciseFile.h"
 
 #include "engine/io/AtomicFile.h"
-#include "engine/io/TextFile.h"
+#include "engine/io/InputFile.h"
 #include "engine/io/JsonReader.h"
 #include "engine/record/RecordingFormat.h"
 
@@ -217,7 +217,7 @@ ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& s
 
 ExerciseLoadResult loadExercise(const std::string& path) {
     std::string error;
-    const auto text = readTextFile(path, "an exercise file", error);
+    const auto text = readInputFile(path, kExerciseFile, error);
     if (!text) return {std::nullopt, {error}};
     return parseExercise(*text, path);
 }

@@ -2,7 +2,7 @@
 
 #include "engine/io/AtomicFile.h"
 #include "engine/core/HapticRate.h"
-#include "engine/io/TextFile.h"
+#include "engine/io/InputFile.h"
 #include "engine/io/JsonFields.h"
 
 #include <algorithm>
@@ -275,7 +275,7 @@ PresetLoadResult parseTissuePreset(const std::string& textIn, const std::string&
 
 PresetLoadResult loadTissuePreset(const std::string& path) {
     std::string error;
-    const auto text = readTextFile(path, "a preset file", error);
+    const auto text = readInputFile(path, kPresetFile, error);
     if (!text) return {std::nullopt, {error}};
     return parseTissuePreset(*text, path);
 }
