@@ -284,8 +284,10 @@ int recordCommand(const std::vector<std::string>& words) {
     }
     // Nothing recovered and no header: not a recording at all (verify says so in its own report).
     if (action != "verify" && !reader.headerOk() && reader.summary().chunks == 0) {
+        const bool noMagic = reader.headerError().rfind("header.magic", 0) == 0;
         std::cerr << "record " << action << ": " << reader.name() << ": not a Palpate recording ("
-                  << reader.headerError() << ")\n";
+                  << (noMagic ? "it does not start with \"PALPREC\"" : reader.headerError())
+                  << ", and no intact chunk)\n";
         return 1;
     }
     if (action == "info") return info(reader, args.flag("json"));

@@ -15,6 +15,7 @@
 #include "engine/models/slopering/SlopeRingMethod.h"
 #include "engine/models/ContactDef.h"
 #include "engine/models/slopering/SlopeRingParams.h"
+#include "engine/io/FileLimits.h"
 #include "engine/record/ByteIo.h"
 
 #include <cstdint>
@@ -38,22 +39,25 @@ inline constexpr std::size_t kChunkOverheadBytes = kChunkHeaderBytes + 4;
 
 // The format's limits, stated once: the reader refuses anything larger (so that garbage never
 // makes it allocate or loop without bound) and the writer refuses to write it (validateRecordingHeader,
-// the event texts), so that every file the recorder writes reads back. They are sized so that the
-// documented exercise limits (docs/scoring.md: 1000 targets, 10 000 path points) fit in a note.
+// the event texts), so that every file the recorder writes reads back. They are sized from the
+// input files a session embeds (engine/io/FileLimits.h), so that every preset that loads and the
+// documented exercise limits (docs/scoring.md: 1000 targets, 10 000 path points) fit.
 inline constexpr std::size_t kMaxPathBytes = 4096;
 inline constexpr std::size_t kMaxNameBytes = 256;
-/// The tissue preset as JSON (its description included).
-inline constexpr std::size_t kMaxPresetJsonBytes = 4u << 20;
-/// The header's free-text note (an exercise session carries its whole exercise there).
-inline constexpr std::size_t kMaxNoteBytes = 4u << 20;
+/// The tissue preset as JSON (its description included): whatever a preset file may hold.
+inline constexpr std::size_t kMaxPresetJsonBytes = std::size_t(kPresetFile.maxBytes);
 /// A mark's or an exercise event's text.
 inline constexpr std::size_t kMaxEventTextBytes = 64 * 1024;
+/// The header's note: a person's text (up to 1 MiB) and, for an exercise session, the whole
+/// exercise as JSON (an exercise file's limit).
+inline constexpr std::size_t kMaxNoteBytes = std::size_t(kExerciseFile.maxBytes + kMiB);
 /// The header body: its texts at their limits plus the fixed fields, with room to spare.
 inline constexpr std::uint32_t kMaxHeaderBytes =
     std::uint32_t(kMaxPresetJsonBytes + kMaxNoteBytes + 4 * kMaxPathBytes + 4 * kMaxNameBytes + 64 * 1024);
 inline constexpr std::uint32_t kMaxChunkPayloadBytes = 64u << 20;
 /// A whole recording (the reader holds it in memory): about 70 hours at 1 kHz.
 inline constexpr std::uint64_t kMaxRecordingBytes = std::uint64_t(4) << 30;
+inline constexpr InputKind kRecordingFile{"a Palpate recording", kMaxRecordingBytes};
 
 enum class ChunkType : std::uint8_t {
     Data = 1,  ///< `count` ticks from `firstTick` (delta coded), then the events of that stretch

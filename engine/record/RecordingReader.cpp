@@ -1,9 +1,8 @@
 #include "engine/record/RecordingReader.h"
 
+#include "engine/io/InputFile.h"
 #include "engine/record/TickCodec.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -14,44 +13,30 @@ namespace palpate {
 
 namespace {
 
-/// Reads `path` from byte `from` on into `bytes` (which holds what came before): regular files only,
-/// at most kMaxRecordingBytes, so that a FIFO, a device (/dev/zero) or a directory is a message
-/// instead of a hang, runaway memory or std::bad_alloc. "" or the problem, naming the path.
+/// Reads `path` into `bytes`, which holds what an earlier look read (a live reader reads only what
+/// was appended). Through the bounded reader (engine/io/InputFile.h): a FIFO, a device (/dev/zero)
+/// or a directory is a message naming the path, never a hang, runaway memory or std::bad_alloc.
 std::string readRecordingFile(const std::string& path, std::vector<std::uint8_t>& bytes) {
-    // O_NONBLOCK: opening a FIFO must not wait for a writer (it is refused below).
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-    if (fd < 0) return path + ": cannot open: " + std::strerror(errno);
-    struct stat st {};
     std::string error;
-    if (::fstat(fd, &st) != 0) {
-        error = path + ": cannot read: " + std::strerror(errno);
-    } else if (S_ISDIR(st.st_mode)) {
-        error = path + ": is a directory, not a Palpate recording";
-    } else if (!S_ISREG(st.st_mode)) {
-        error = path + ": is not a regular file (a FIFO or a device?); a Palpate recording is a regular file";
-    } else if (std::uint64_t(st.st_size) > kMaxRecordingBytes) {
-        error = path + ": " + std::to_string(st.st_size) + " bytes is more than a recording holds (at most " +
-                std::to_string(kMaxRecordingBytes) + ")";
-    } else if (std::size_t(st.st_size) < bytes.size()) {
-        error = path + ": the file shrank while it was being read live";
-    } else {
-        const std::size_t old = bytes.size();
-        bytes.resize(std::size_t(st.st_size));
-        std::size_t done = old;
-        while (done < bytes.size()) {
-            const ssize_t n = ::pread(fd, bytes.data() + done, bytes.size() - done, off_t(done));
-            if (n < 0 && errno == EINTR) continue;
-            if (n < 0) {
-                error = path + ": read failed: " + std::strerror(errno);
-                break;
-            }
-            if (n == 0) break;  // shorter than fstat said (cut meanwhile): keep what is there
-            done += std::size_t(n);
+    const std::optional<InputFd> file = openInputFile(path, kRecordingFile, error);
+    if (!file) return error;
+    if (file->sizeBytes() < bytes.size()) return path + ": the file shrank while it was being read live";
+    const std::size_t old = bytes.size();
+    bytes.resize(std::size_t(file->sizeBytes()));
+    std::size_t done = old;
+    while (done < bytes.size()) {
+        const ssize_t n = ::pread(file->fd(), bytes.data() + done, bytes.size() - done, off_t(done));
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            error = path + ": cannot be read: " + std::strerror(errno);
+            bytes.resize(old);
+            return error;
         }
-        bytes.resize(error.empty() ? done : old);
+        if (n == 0) break;  // shorter than fstat said (cut meanwhile): keep what is there
+        done += std::size_t(n);
     }
-    ::close(fd);
-    return error;
+    bytes.resize(done);
+    return "";
 }
 
 /// Decodes the ticks of a data chunk into `out`; `after` is where its events start.

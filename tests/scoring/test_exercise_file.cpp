@@ -193,9 +193,9 @@ TEST(ExerciseFile, RecordingNoteCarriesTheExercise) {
     EXPECT_TRUE(errors.empty());
     EXPECT_FALSE(exerciseFromRecordingNote("palpate-exercise: {\"format\": 1}", errors));
     EXPECT_FALSE(errors.empty());
-    // Too large for a note (64 KiB).
+    // Too large for a note (RecordingFormat.h).
     Exercise huge = e;
-    huge.description.assign(70000, 'x');
+    huge.description.assign(kMaxNoteBytes, 'x');
     EXPECT_EQ(exerciseRecordingNote(huge, "", error), "");
     EXPECT_NE(error.find("too large"), std::string::npos);
 }
