@@ -1,7 +1,7 @@
 // Hostile cases for the recorder and the commands that write or read recordings: headers at the
 // format's limits, a second writer, a file that is already there, an output that is an input, a
 // file-size limit, threads that cannot be created, and inputs that are not recordings at all
-// (docs/recording.md, "Limits and refusals").
+// (docs/recording.md, "Format limits and refusals").
 #include "engine/record/RecordingReader.h"
 #include "engine/record/RecordingWriter.h"
 #include "tests/record/RecordTestRig.h"
