@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -11,6 +12,9 @@ JsonReader::JsonReader(std::vector<std::string>& errors, std::string source)
     : mErrors(errors), mSource(std::move(source)) {}
 
 namespace {
+
+/// Objects and arrays within one another; Palpate's files nest four or five levels.
+constexpr int kMaxJsonDepth = 64;
 
 /// Where the parser is: one frame per open object or array, so that a problem the parser meets
 /// (a number beyond a double, a key given twice) names its key path ("slope_ring.spring_k").
@@ -30,12 +34,19 @@ public:
     }
     /// The first key that appeared twice in one object, by path; "" when none.
     const std::string& duplicate() const { return mDuplicate; }
+    /// Where the text first nests deeper than kMaxJsonDepth; nullopt when it never does.
+    const std::optional<std::string>& tooDeep() const { return mTooDeep; }
 
-    bool event(nlohmann::detail::parse_event_t event, const Json& parsed) {
+    bool event(int depth, nlohmann::detail::parse_event_t event, const Json& parsed) {
         using E = nlohmann::detail::parse_event_t;
         switch (event) {
-            case E::object_start: push(false); break;
-            case E::array_start: push(true); break;
+            case E::object_start:
+            case E::array_start:
+                // Deeper values are discarded as they are parsed (no file of ours nests past a few
+                // levels; writing or comparing a deep value recurses once per level).
+                if (depth >= kMaxJsonDepth && !mTooDeep) mTooDeep = path();
+                push(event == E::array_start);
+                return depth < kMaxJsonDepth;
             case E::key: {
                 Frame& f = mFrames.back();
                 f.key = parsed.get<std::string>();
@@ -68,6 +79,7 @@ private:
     }
     std::vector<Frame> mFrames;
     std::string mDuplicate;
+    std::optional<std::string> mTooDeep;
 };
 
 /// The text between the first pair of single quotes of nlohmann's message ("number overflow
@@ -84,9 +96,13 @@ std::string quotedToken(const std::string& what) {
 std::optional<Json> JsonReader::parse(const std::string& text) {
     KeyPathTracker tracker;
     try {
-        Json j = Json::parse(text, [&tracker](int, nlohmann::detail::parse_event_t event, Json& parsed) {
-            return tracker.event(event, parsed);
+        Json j = Json::parse(text, [&tracker](int depth, nlohmann::detail::parse_event_t event, Json& parsed) {
+            return tracker.event(depth, event, parsed);
         });
+        if (tracker.tooDeep()) {
+            error(*tracker.tooDeep(), "nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
+            return std::nullopt;
+        }
         if (!tracker.duplicate().empty()) {
             error(tracker.duplicate(), "appears twice");
             return std::nullopt;
@@ -99,7 +115,9 @@ std::optional<Json> JsonReader::parse(const std::string& text) {
     } catch (const Json::out_of_range& e) {
         // nlohmann refuses a number beyond a double's range (1e400) while parsing; the tracker
         // knows at which key.
-        error(tracker.path(), quotedToken(e.what()) + " is too large for a double (at most about 1.8e308)");
+        if (tracker.tooDeep())
+            error(*tracker.tooDeep(), "nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
+        else error(tracker.path(), quotedToken(e.what()) + " is too large for a double (at most about 1.8e308)");
     } catch (const Json::exception& e) {
         mErrors.push_back(mSource + ": not valid JSON: " + e.what());
     }
