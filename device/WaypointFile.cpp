@@ -1,9 +1,10 @@
 #include "device/WaypointFile.h"
 
+#include "engine/io/InputFile.h"
+
 #include <charconv>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
+#include <optional>
 #include <sstream>
 #include <system_error>
 
@@ -119,50 +120,15 @@ bool parseWaypoints(std::string_view text, std::string_view sourceName, std::vec
 }
 
 bool loadWaypointFile(const std::string& path, std::vector<Waypoint>& out, std::string& error) {
-    namespace fs = std::filesystem;
     out.clear();
-    const std::string name = "waypoint file '" + path + "'";
     if (path.empty()) {
         error = "waypoint file: no path given";
         return false;
     }
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (ec || !fs::exists(status)) {
-        error = name + ": does not exist";
-        return false;
-    }
-    if (fs::is_directory(status)) {
-        error = name + ": is a directory, not a file";
-        return false;
-    }
-    if (!fs::is_regular_file(status)) {
-        error = name + ": is not a regular file";
-        return false;
-    }
-    const std::uintmax_t size = fs::file_size(path, ec);
-    if (ec) {
-        error = name + ": cannot get its size (" + ec.message() + ")";
-        return false;
-    }
-    if (size > kMaxWaypointFileBytes) {
-        error = name + ": is " + std::to_string(size) + " bytes, more than the " +
-                std::to_string(kMaxWaypointFileBytes) + " allowed";
-        return false;
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = name + ": cannot be opened for reading";
-        return false;
-    }
-    std::string text(static_cast<std::size_t>(size), '\0');
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    text.resize(static_cast<std::size_t>(in.gcount()));
-    if (in.bad()) {
-        error = name + ": read error";
-        return false;
-    }
-    return parseWaypoints(text, path, out, error);
+    // The one bounded reader: a FIFO, a device or a directory is refused before a byte is read.
+    const std::optional<std::string> text = readInputFile(path, kWaypointFile, error);
+    if (!text) return false;
+    return parseWaypoints(*text, path, out, error);
 }
 
 }  // namespace palpate

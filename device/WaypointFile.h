@@ -17,8 +17,6 @@ struct Waypoint {
     glm::vec3 positionMm{0.0f};
 };
 
-/// Files above this are refused rather than read into memory (a path is a few thousand lines).
-inline constexpr std::size_t kMaxWaypointFileBytes = std::size_t(64) << 20;
 /// Coordinates beyond this are a units mistake (metres for millimetres) or garbage.
 inline constexpr double kMaxWaypointCoordinateMm = 1.0e6;
 
@@ -28,8 +26,9 @@ inline constexpr double kMaxWaypointCoordinateMm = 1.0e6;
 bool parseWaypoints(std::string_view text, std::string_view sourceName, std::vector<Waypoint>& out,
                     std::string& error);
 
-/// Reads and parses a waypoint file. Missing paths, directories, unreadable or oversized files are
-/// errors that name the path.
+/// Reads and parses a waypoint file through the bounded reader (engine/io/InputFile.h): missing
+/// paths, FIFOs, devices, directories, unreadable files and files beyond kWaypointFile's limit
+/// (engine/io/FileLimits.h) are errors that name the path.
 bool loadWaypointFile(const std::string& path, std::vector<Waypoint>& out, std::string& error);
 
 }  // namespace palpate

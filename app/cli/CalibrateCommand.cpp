@@ -32,6 +32,16 @@ int calibrateCommand(const std::vector<std::string>& words) {
         std::cerr << "palpate-cli calibrate: " << choice.error << "\n";
         return 2;
     }
+    // A contact whose slopes a slope-ring cannot render is the user's value, not the slopes' fault:
+    // name the option that set it (Young's modulus first, the usual culprit).
+    if (const std::string problem = calibrationRangeProblem(choice.contact); !problem.empty()) {
+        std::string culprit = "the tissue";
+        for (const char* o : {"youngs-kpa", "tool-radius", "poisson"})
+            if (const auto text = args.option(o); text && culprit == "the tissue") culprit = "--" + std::string(o) + " " + *text;
+        if (culprit == "the tissue" && args.option("preset")) culprit = *args.option("preset") + ": tissue";
+        std::cerr << "palpate-cli calibrate: " << culprit << " is out of range: " << problem << "\n";
+        return 2;
+    }
     TissuePreset preset;
     if (const auto path = args.option("preset")) preset = *loadTissuePreset(*path).preset;  // checked above
     if (const auto rings = args.option("rings")) {

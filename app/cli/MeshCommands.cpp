@@ -28,9 +28,10 @@ int generate(const std::vector<std::string>& words) {
         return 2;
     }
     const auto count = parsePositiveInt(*countText);
-    if (!count || *count < static_cast<long long>(kMinGeneratedVertices) || *count > 50'000'000) {
+    if (!count || *count < static_cast<long long>(kMinGeneratedVertices) ||
+        std::uint64_t(*count) > kMaxMeshVertices) {
         std::cerr << "mesh generate: --vertices '" << *countText << "' must be a whole number from "
-                  << kMinGeneratedVertices << " to 50000000\n";
+                  << kMinGeneratedVertices << " to " << kMaxMeshVertices << " (the most a mesh may have)\n";
         return 2;
     }
     auto result = generateMesh(*shape, std::size_t(*count));

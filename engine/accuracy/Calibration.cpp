@@ -36,7 +36,7 @@ void enforceDecrease(SlopeCalibration& c, const char* why) {
     auto& m = c.params.slopeMagnitudeMmPerN;
     for (int r = 1; r <= c.params.ringCount; ++r) {
         if (m[std::size_t(r)] < m[std::size_t(r - 1)] && m[std::size_t(r)] > 0.0) continue;
-        m[std::size_t(r)] = std::max(m[std::size_t(r - 1)] * 0.999, 1e-9);
+        m[std::size_t(r)] = std::max(m[std::size_t(r - 1)] * 0.999, kMinCalibratedSlopeMmPerN);
         c.notes.push_back("ring " + std::to_string(r) + " " + why + "; its slope is set just below ring " +
                           std::to_string(r - 1) + "'s so the slopes still decrease");
     }
@@ -64,6 +64,34 @@ std::string validateToolContact(const ToolContact& contact) {
     return {};
 }
 
+double punchFirstSlopeMmPerN(const ToolContact& contact) {
+    return 1.0 / (2.0 * contact.toolRadiusMm * planeStrainModulusNPerMm2(contact.material));
+}
+
+std::string calibrationRangeProblem(const ToolContact& contact) {
+    if (std::string e = validateToolContact(contact); !e.empty()) return e;
+    // finish() sets the slope limit just above |m1|; the limit's own range bounds |m1|.
+    const FieldDef<SlopeRingParams>* limit = findField(slopeRingFields(), "slopeLimitMmPerN");
+    const double maxSlope = (limit ? limit->spec.hi : 100.0) / 1.0001;
+    const double m1 = punchFirstSlopeMmPerN(contact);
+    if (std::isfinite(m1) && m1 >= kMinCalibratedSlopeMmPerN && m1 <= maxSlope) return {};
+    const double a = contact.toolRadiusMm;
+    const double nu = contact.material.poissonRatio;
+    // E (kPa) between which |m1| = 1 / (2 a E / (1 - nu^2)) stays in [min, max] for this tool.
+    const double loKPa = (1.0 - nu * nu) / (2.0 * a * maxSlope) * 1000.0;
+    const double hiKPa = (1.0 - nu * nu) / (2.0 * a * kMinCalibratedSlopeMmPerN) * 1000.0;
+    const double eStar = planeStrainModulusNPerMm2(contact.material);
+    const double loMm = 1.0 / (2.0 * eStar * maxSlope), hiMm = 1.0 / (2.0 * eStar * kMinCalibratedSlopeMmPerN);
+    std::ostringstream s;
+    s << "Young's modulus " << contact.material.youngsModulusNPerMm2 * 1000.0 << " kPa with a " << a
+      << " mm tool gives a first-ring slope of " << m1 << " mm/N, "
+      << (std::isfinite(m1) && m1 < kMinCalibratedSlopeMmPerN ? "below the smallest" : "above the largest")
+      << " a slope-ring renders (" << kMinCalibratedSlopeMmPerN << " to " << maxSlope
+      << " mm/N): for this tool and Poisson's ratio, Young's modulus must be " << loKPa << " to " << hiKPa
+      << " kPa; for this material, the tool radius " << loMm << " to " << hiMm << " mm";
+    return s.str();
+}
+
 std::vector<double> ringMeanRadiiMm(const TissueMesh& mesh, VertexId touched, int ringCount) {
     const RingSet rings = ringsOf(mesh, touched, ringCount);
     std::vector<double> radii;
@@ -78,7 +106,7 @@ std::vector<double> ringMeanRadiiMm(const TissueMesh& mesh, VertexId touched, in
 
 SlopeCalibration calibrateSlopesFromPunch(const TissueMesh& mesh, VertexId touched, const ToolContact& contact,
                                           const SlopeRingParams& base) {
-    if (const std::string e = validateToolContact(contact); !e.empty()) throw std::invalid_argument(e);
+    if (const std::string e = calibrationRangeProblem(contact); !e.empty()) throw std::invalid_argument(e);
     SlopeCalibration c;
     c.params = base;
     c.ringRadiiMm = ringMeanRadiiMm(mesh, touched, base.ringCount);

@@ -23,6 +23,18 @@ struct ToolContact {
 /// "" when usable, else a message naming the field.
 std::string validateToolContact(const ToolContact& contact);
 
+/// The smallest slope calibration sets (a ring the punch leaves still is set to it).
+inline constexpr double kMinCalibratedSlopeMmPerN = 1e-9;
+
+/// The first ring's slope the flat punch gives: |m1| = 1 / (2 a E*), in mm/N.
+double punchFirstSlopeMmPerN(const ToolContact& contact);
+
+/// "" when the punch calibration of `contact` gives slopes a slope-ring can render, else why not,
+/// naming the Young's modulus and tool radius and the range that would work for them: |m1| must
+/// lie between kMinCalibratedSlopeMmPerN and the slope limit's maximum (a contact far too stiff,
+/// 1e308 kPa, or far too soft).
+std::string calibrationRangeProblem(const ToolContact& contact);
+
 /// Mean distance of each ring 1..ringCount from `touched`, measured in the touched vertex's tangent
 /// plane (the half-space's surface). Element 0 is ring 1.
 std::vector<double> ringMeanRadiiMm(const TissueMesh& mesh, VertexId touched, int ringCount);

@@ -1,11 +1,14 @@
 #include "engine/core/MeshFileProbe.h"
 
+#include "engine/io/InputFile.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -21,13 +24,16 @@ std::string lowerExtension(const std::string& path) {
     return ext;
 }
 
-bool readAll(const std::string& path, std::string& bytes) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
-    std::ostringstream s;
-    s << in.rdbuf();
-    bytes = s.str();
-    return true;
+/// "N vertices, more than the M a mesh may have" when a declared count is beyond the limits of
+/// engine/io/FileLimits.h (checked before anything is sized by it); "" otherwise.
+std::string countProblem(long long vertices, long long faces) {
+    if (vertices > 0 && std::uint64_t(vertices) > kMaxMeshVertices)
+        return "declares " + std::to_string(vertices) + " vertices, more than the " +
+               std::to_string(kMaxMeshVertices) + " a mesh may have";
+    if (faces > 0 && std::uint64_t(faces) > kMaxMeshFaces)
+        return "declares " + std::to_string(faces) + " faces, more than the " + std::to_string(kMaxMeshFaces) +
+               " a mesh may have";
+    return {};
 }
 
 /// Lines with content, comments ('#') removed.
@@ -43,8 +49,16 @@ std::vector<std::string> contentLines(const std::string& text) {
     return lines;
 }
 
-/// Counts the leading numbers of a record; sets `nonFinite` if one of them is NaN or infinite.
-std::size_t countNumbers(const std::string& line, bool* nonFinite = nullptr) {
+/// What is wrong with a record's coordinates, if anything: "" for finite coordinates a float holds.
+struct CoordinateCheck {
+    bool nonFinite = false;
+    std::string outOfRange;  ///< the first coordinate beyond a float, as written
+};
+
+/// Counts the leading numbers of a record and checks them as coordinates: the mesh library reads
+/// them into floats, and a value beyond a float's range (1e308) would make it lose its place in
+/// the file silently.
+std::size_t countNumbers(const std::string& line, CoordinateCheck* check = nullptr) {
     std::istringstream in(line);
     std::size_t n = 0;
     std::string token;
@@ -52,10 +66,24 @@ std::size_t countNumbers(const std::string& line, bool* nonFinite = nullptr) {
         char* end = nullptr;
         const double value = std::strtod(token.c_str(), &end);
         if (end == token.c_str()) break;
-        if (!std::isfinite(value) && nonFinite) *nonFinite = true;
+        if (check && n < 3) {
+            if (!std::isfinite(value)) check->nonFinite = true;
+            else if (std::fabs(value) > double(std::numeric_limits<float>::max()) && check->outOfRange.empty())
+                check->outOfRange = token.substr(0, 40);
+        }
         ++n;
     }
     return n;
+}
+
+/// "" or the problem of a vertex record's coordinates, `where` naming the record.
+std::string coordinateProblem(const CoordinateCheck& c, const std::string& where) {
+    if (c.nonFinite) return "has NaN or infinite coordinates at " + where;
+    if (!c.outOfRange.empty())
+        return "has a coordinate out of range at " + where + ": " + c.outOfRange +
+               " (a coordinate must be within +-3.4e38, a float's range; a tissue mesh is at most " +
+               "100 m across anyway)";
+    return {};
 }
 
 std::string probeOff(const std::string& text) {
@@ -77,16 +105,18 @@ std::string probeOff(const std::string& text) {
         at = 1;
     }
     if (nv < 0 || nf < 0) return "has a malformed OFF header: negative counts";
+    if (const std::string problem = countProblem(nv, nf); !problem.empty()) return problem;
     const std::size_t available = lines.size() - at;
     if (available < std::size_t(nv) + std::size_t(nf)) {
         return "is truncated: the OFF header declares " + std::to_string(nv) + " vertices and " +
                std::to_string(nf) + " faces, but only " + std::to_string(available) + " records follow";
     }
     for (long long i = 0; i < nv; ++i) {
-        bool nonFinite = false;
-        if (countNumbers(lines[at + std::size_t(i)], &nonFinite) < 3)
+        CoordinateCheck check;
+        if (countNumbers(lines[at + std::size_t(i)], &check) < 3)
             return "has a malformed vertex record at OFF vertex " + std::to_string(i);
-        if (nonFinite) return "has NaN or infinite coordinates at OFF vertex " + std::to_string(i);
+        if (std::string problem = coordinateProblem(check, "OFF vertex " + std::to_string(i)); !problem.empty())
+            return problem;
     }
     return {};
 }
@@ -104,11 +134,14 @@ std::string probeObj(const std::string& text) {
             ++vertices;
             std::string rest;
             std::getline(words, rest);
-            bool nonFinite = false;
-            if (countNumbers(rest, &nonFinite) < 3) return "has a malformed vertex at line " + std::to_string(lineNo);
-            if (nonFinite) return "has NaN or infinite coordinates at line " + std::to_string(lineNo);
+            if (vertices > kMaxMeshVertices) return countProblem((long long)vertices, 0);
+            CoordinateCheck check;
+            if (countNumbers(rest, &check) < 3) return "has a malformed vertex at line " + std::to_string(lineNo);
+            if (std::string problem = coordinateProblem(check, "line " + std::to_string(lineNo)); !problem.empty())
+                return problem;
         } else if (key == "f") {
             ++faces;
+            if (faces > kMaxMeshFaces) return countProblem(0, (long long)faces);
             std::size_t corners = 0;
             std::string token;
             while (words >> token) {
@@ -134,6 +167,7 @@ std::string probeStl(const std::string& bytes) {
     if (bytes.size() < 84) return "is truncated: shorter than a binary STL header (84 bytes)";
     std::uint32_t count = 0;
     std::memcpy(&count, bytes.data() + 80, 4);
+    if (const std::string problem = countProblem(0, count); !problem.empty()) return problem;
     const std::uint64_t expected = 84ull + 50ull * count;
     if (bytes.size() < expected)
         return "is truncated: binary STL declares " + std::to_string(count) + " triangles (" +
@@ -183,6 +217,7 @@ std::string probePly(const std::string& bytes) {
         }
     }
     if (nv < 0 || nf < 0) return "has a PLY header without vertex or face elements";
+    if (const std::string problem = countProblem(nv, nf); !problem.empty()) return problem;
     std::size_t bodyStart = bytes.find('\n', endHeader);
     bodyStart = bodyStart == std::string::npos ? bytes.size() : bodyStart + 1;
     if (format == "ascii") {
@@ -191,9 +226,10 @@ std::string probePly(const std::string& bytes) {
             return "is truncated: the PLY header declares " + std::to_string(nv) + " vertices and " +
                    std::to_string(nf) + " faces, but only " + std::to_string(lines.size()) + " records follow";
         for (long long i = 0; i < nv; ++i) {
-            bool nonFinite = false;
-            countNumbers(lines[std::size_t(i)], &nonFinite);
-            if (nonFinite) return "has NaN or infinite coordinates at PLY vertex " + std::to_string(i);
+            CoordinateCheck check;
+            countNumbers(lines[std::size_t(i)], &check);
+            if (std::string problem = coordinateProblem(check, "PLY vertex " + std::to_string(i)); !problem.empty())
+                return problem;
         }
         return {};
     }
@@ -208,9 +244,13 @@ std::string probePly(const std::string& bytes) {
 }  // namespace
 
 std::string probeMeshFile(const std::string& path) {
-    std::string bytes;
-    if (!readAll(path, bytes)) return "cannot be opened for reading";
-    const std::string ext = lowerExtension(path);
+    std::string error;
+    const std::optional<std::string> bytes = readInputFile(path, kMeshFile, error);
+    if (!bytes) return error.compare(0, path.size() + 2, path + ": ") == 0 ? error.substr(path.size() + 2) : error;
+    return probeMeshBytes(*bytes, lowerExtension(path));
+}
+
+std::string probeMeshBytes(const std::string& bytes, const std::string& ext) {
     const bool textFormat = ext == "obj" || ext == "off";
     if (textFormat && bytes.find('\0') != std::string::npos)
         return "contains binary data where a text " + ext + " file was expected (corrupt or not a mesh)";

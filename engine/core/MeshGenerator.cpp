@@ -75,6 +75,13 @@ TissueMesh::LoadResult generateMesh(GeneratedShape shape, std::size_t vertexCoun
         r.report.errors.push_back(source + ": needs at least " + std::to_string(kMinGeneratedVertices) + " vertices");
         return r;
     }
+    if (vertexCount > kMaxMeshVertices) {
+        TissueMesh::LoadResult r;
+        r.report.source = source;
+        r.report.errors.push_back(source + ": more than the " + std::to_string(kMaxMeshVertices) +
+                                  " vertices a mesh may have (engine/io/FileLimits.h)");
+        return r;
+    }
     const TubeShape tube = shape == GeneratedShape::Sphere ? sphereShape() : stomachShape();
     const std::size_t inner = vertexCount - 2;
 

@@ -4,6 +4,7 @@
 // count >= 8 is reachable and the surface is closed, manifold and genus 0 (F = 2V - 4).
 
 #include "engine/core/TissueMesh.h"
+#include "engine/io/FileLimits.h"
 
 #include <optional>
 #include <string>
@@ -18,7 +19,8 @@ std::string_view shapeName(GeneratedShape shape);
 
 inline constexpr std::size_t kMinGeneratedVertices = 8;
 
-/// Generates the shape with exactly `vertexCount` vertices (>= kMinGeneratedVertices). The sphere
+/// Generates the shape with exactly `vertexCount` vertices (kMinGeneratedVertices to
+/// kMaxMeshVertices, the most a mesh may have). The sphere
 /// has radius 50 mm; the stomach is about 230 mm long. Returns the load result (validated).
 TissueMesh::LoadResult generateMesh(GeneratedShape shape, std::size_t vertexCount);
 

@@ -2,6 +2,8 @@
 
 #include "engine/core/MeshFileProbe.h"
 #include "engine/core/SpaceFillingCurve.h"
+#include "engine/io/AtomicFile.h"
+#include "engine/io/InputFile.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -10,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <limits>
 #include <cmath>
 #include <filesystem>
@@ -24,7 +27,6 @@ namespace {
 
 using OmMesh = OpenMesh::TriMesh_ArrayKernelT<>;
 
-constexpr std::size_t kMaxVertices = 50'000'000;
 constexpr double kMinDiagonalMm = 1e-3;
 constexpr double kMaxDiagonalMm = 1e5;
 
@@ -103,14 +105,15 @@ TissueMesh::LoadResult TissueMesh::load(const std::string& path) {
         return LoadResult{std::nullopt, report};
     };
 
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (ec || !fs::exists(status)) return fail("no such file");
-    if (fs::is_directory(status)) return fail("is a directory, not a mesh file");
-    if (!fs::is_regular_file(status)) return fail("is not a regular file");
-    const auto bytes = fs::file_size(path, ec);
-    if (ec) return fail("cannot read its size: " + ec.message());
-    if (bytes == 0) return fail("is empty (0 bytes)");
+    // The bounded reader's checks before OpenMesh opens the path: a FIFO would block it, a device
+    // or a 2 GB file would be read whole.
+    std::string inputError;
+    const std::optional<InputFd> input = openInputFile(path, kMeshFile, inputError);
+    if (!input) {
+        report.errors.push_back(inputError);
+        return LoadResult{std::nullopt, report};
+    }
+    if (input->sizeBytes() == 0) return fail("is empty (0 bytes)");
 
     const std::string probeError = probeMeshFile(path);
     if (!probeError.empty()) return fail(probeError);
@@ -199,9 +202,14 @@ TissueMesh::LoadResult MeshBuilder::build(std::vector<glm::vec3> positions,
         error(nv == 0 ? "has no vertices" : "has no triangles");
         return {std::nullopt, report};
     }
-    if (nv > kMaxVertices) {
-        error("has " + std::to_string(nv) + " vertices, more than the supported " +
-              std::to_string(kMaxVertices));
+    if (nv > kMaxMeshVertices) {
+        error("has " + std::to_string(nv) + " vertices, more than the " + std::to_string(kMaxMeshVertices) +
+              " a mesh may have");
+        return {std::nullopt, report};
+    }
+    if (triangles.size() > kMaxMeshFaces) {
+        error("has " + std::to_string(triangles.size()) + " triangles, more than the " +
+              std::to_string(kMaxMeshFaces) + " a mesh may have");
         return {std::nullopt, report};
     }
 
@@ -450,13 +458,36 @@ std::string TissueMesh::save(const std::string& path) const {
     for (std::size_t v = 0; v < mRestMm.size(); ++v)
         handles[v] = om.add_vertex(OmMesh::Point(mRestMm[v].x, mRestMm[v].y, mRestMm[v].z));
     for (const auto& t : mTriangles) om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
-    OmErrCapture capture;
-    OpenMesh::IO::Options options;
-    if (!OpenMesh::IO::write_mesh(om, path, options, 9)) {
-        const std::string text = capture.text();
-        return path + ": cannot write mesh" + (text.empty() ? "" : ": " + text.substr(0, text.find('\n')));
+    // Written in memory first, then atomically (engine/io/AtomicFile.h): a full disk or a write
+    // error leaves the target as it was and is reported with its reason, never a truncated file.
+    std::ostringstream bytes(std::ios::out | std::ios::binary);
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    bool written = false;
+    std::string writerText;
+    {
+        OmErrCapture capture;
+        OpenMesh::IO::Options options;
+        try {
+            written = !extension.empty() && OpenMesh::IO::write_mesh(om, bytes, extension, options, 9) && bytes.good();
+        } catch (const std::exception& e) {
+            writerText = e.what();
+        }
+        writerText += capture.text();
     }
-    return {};
+    if (!written) {
+        std::string why = extension.empty() ? "no extension (use .obj, .off, .ply, .stl or .om)"
+                                            : "OpenMesh cannot write '" + extension + "' files";
+        if (!writerText.empty()) why += ": " + writerText.substr(0, writerText.find('\n'));
+        return path + ": cannot write mesh: " + why;
+    }
+    const std::string problem = writeFileAtomically(path, bytes.str());
+    if (problem.empty()) return {};
+    // writeFileAtomically names the path first; say what failed.
+    const std::string prefix = path + ": ";
+    return prefix + "cannot write mesh: " +
+           (problem.compare(0, prefix.size(), prefix) == 0 ? problem.substr(prefix.size()) : problem);
 }
 
 }  // namespace palpate

@@ -1,5 +1,7 @@
 #include "engine/exercise/Exercise.h"
 
+#include "engine/io/FileLimits.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -151,8 +153,9 @@ std::vector<std::string> validateExercise(const Exercise& e) {
         case ExerciseType::PressTargets: {
             const auto& targets = e.pressTargets.targets;
             if (targets.empty()) c.error("press_targets.targets", "needs at least one target");
-            if (targets.size() > 1000) c.error("press_targets.targets", "has more than 1000 targets");
-            for (std::size_t i = 0; i < targets.size() && i < 1000; ++i) {
+            if (targets.size() > std::size_t(kMaxPressTargets))
+                c.error("press_targets.targets", "has more than " + std::to_string(kMaxPressTargets) + " targets");
+            for (std::size_t i = 0; i < targets.size() && i < std::size_t(kMaxPressTargets); ++i) {
                 const PressTarget& t = targets[i];
                 const std::string key = "press_targets.targets[" + std::to_string(i) + "]";
                 c.point(key, t.at);
@@ -175,8 +178,9 @@ std::vector<std::string> validateExercise(const Exercise& e) {
         case ExerciseType::Trace: {
             const TraceDef& t = e.trace;
             if (t.path.size() < 2) c.error("trace.path", "needs at least 2 points");
-            if (t.path.size() > 10000) c.error("trace.path", "has more than 10000 points");
-            for (std::size_t i = 0; i < t.path.size() && i < 10000; ++i)
+            if (t.path.size() > std::size_t(kMaxTracePathPoints))
+                c.error("trace.path", "has more than " + std::to_string(kMaxTracePathPoints) + " points");
+            for (std::size_t i = 0; i < t.path.size() && i < std::size_t(kMaxTracePathPoints); ++i)
                 c.point("trace.path[" + std::to_string(i) + "]", t.path[i]);
             c.window("trace", t.forceMinN, t.forceMaxN, "force_min_n", "force_max_n");
             c.range("trace.tolerance_mm", t.toleranceMm, 0.0, 1000.0, true);

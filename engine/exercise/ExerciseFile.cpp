@@ -47,7 +47,9 @@ Json pointJson(const SurfacePoint& p) {
 
 }  // namespace
 
-ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& source) {
+namespace {
+
+ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::string& source) {
     ExerciseLoadResult result;
     JsonReader r(result.errors, source);
     const std::optional<Json> parsed = r.parse(textIn);
@@ -112,7 +114,7 @@ ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& s
                 r.error("press_targets.targets", "must be an array of targets");
             } else {
                 const Json& a = s.at("targets");
-                for (std::size_t i = 0; i < a.size() && i <= 1000; ++i) {
+                for (std::size_t i = 0; i < a.size() && i <= std::size_t(kMaxPressTargets); ++i) {
                     const std::string key = "press_targets.targets[" + std::to_string(i) + "]";
                     PressTarget t = defaults;
                     if (r.object(a[i], key,
@@ -160,7 +162,7 @@ ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& s
                 r.error("trace.path", "must be an array of points");
             } else {
                 const Json& a = s.at("path");
-                for (std::size_t i = 0; i < a.size() && i <= 10000; ++i) {
+                for (std::size_t i = 0; i < a.size() && i <= std::size_t(kMaxTracePathPoints); ++i) {
                     const std::string key = "trace.path[" + std::to_string(i) + "]";
                     SurfacePoint p;
                     if (r.object(a[i], key, {"vertex", "point_mm"})) readSurfacePoint(r, a[i], key, p);
@@ -213,6 +215,22 @@ ExerciseLoadResult parseExercise(const std::string& textIn, const std::string& s
         for (const std::string& problem : validateLodNeeds(*e.needs)) result.errors.push_back(source + ": " + problem);
     if (result.errors.empty()) result.exercise = std::move(e);
     return result;
+}
+
+}  // namespace
+
+ExerciseLoadResult parseExercise(const std::string& text, const std::string& source) {
+    // Text that did not come through readInputFile (a recording's note) has the file's limit too.
+    if (text.size() > kExerciseFile.maxBytes)
+        return {std::nullopt,
+                {source + ": " + std::to_string(text.size()) + " bytes, more than the " +
+                 describeByteCount(kExerciseFile.maxBytes) + " " + kExerciseFile.name + " may hold"}};
+    // No exception of the JSON library leaves the loader: what it refuses is the file's problem.
+    try {
+        return parseExerciseText(text, source);
+    } catch (const Json::exception& e) {
+        return {std::nullopt, {source + ": cannot be read: " + e.what()}};
+    }
 }
 
 ExerciseLoadResult loadExercise(const std::string& path) {
@@ -284,7 +302,13 @@ std::string saveExercise(const Exercise& exercise, const std::string& path) {
         for (const auto& p : problems) text += "\n  " + p;
         return text;
     }
-    return writeFileAtomically(path, exerciseToJson(exercise));
+    // Never a file the reader refuses.
+    const std::string text = exerciseToJson(exercise);
+    if (text.size() > kExerciseFile.maxBytes)
+        return path + ": not saved: the exercise would be " + std::to_string(text.size()) +
+               " bytes, more than the " + describeByteCount(kExerciseFile.maxBytes) + " " + kExerciseFile.name +
+               " may hold (its description is " + std::to_string(exercise.description.size()) + " bytes)";
+    return writeFileAtomically(path, text);
 }
 
 std::string resolveExercisePath(const Exercise& exercise, const std::string& path, const ResourceFinder& findResource) {

@@ -24,6 +24,18 @@ std::string temporaryNameFor(const std::string& path) {
     return (p.parent_path() / (p.stem().string() + tag + p.extension().string())).string();
 }
 
+/// "" when `path` is absent or a regular file (which the rename may replace); else why not: a
+/// rename over /dev/full or a FIFO would replace the special file itself.
+std::string targetProblem(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return {};
+    const char* type = S_ISDIR(st.st_mode)                        ? "a directory"
+                       : S_ISFIFO(st.st_mode)                     ? "a FIFO"
+                       : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
+                                                                  : "a special file";
+    return path + ": is " + type + ", not a file that can be written";
+}
+
 /// Creates the temporary exclusively (O_EXCL: never an existing file), trying another name if one
 /// is taken. -1 with errno set on failure.
 int createTemporary(const std::string& path, std::string& temporary) {
@@ -80,6 +92,7 @@ std::string commitTemporary(const std::string& path, const std::string& temporar
 }  // namespace
 
 std::string writeFileAtomically(const std::string& path, const std::string& text) {
+    if (std::string problem = targetProblem(path); !problem.empty()) return problem;
     std::string temporary;
     const int fd = createTemporary(path, temporary);
     if (fd < 0) return path + ": cannot be written: " + reason(errno);
@@ -94,6 +107,7 @@ std::string writeFileAtomically(const std::string& path, const std::string& text
 
 std::string writeFileAtomicallyVia(const std::string& path,
                                    const std::function<std::string(const std::string& temporaryPath)>& write) {
+    if (std::string problem = targetProblem(path); !problem.empty()) return problem;
     std::string temporary;
     int fd = createTemporary(path, temporary);
     if (fd < 0) return path + ": cannot be written: " + reason(errno);

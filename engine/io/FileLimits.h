@@ -28,8 +28,9 @@ inline constexpr int kMaxTracePathPoints = 10000;
 /// double precision, indented (about 1.7 MB; tests/engine/test_exercise_limits.cpp checks it fits).
 inline constexpr InputKind kExerciseFile{"an exercise file", 4 * kMiB};
 
-/// Waypoint files of the scripted device.
-inline constexpr InputKind kWaypointFile{"a waypoint file", 4 * kMiB};
+/// Waypoint files of the simulated device (`sim:path:FILE`): a path is a few thousand lines; the
+/// limit leaves room for hours of dense waypoints.
+inline constexpr InputKind kWaypointFile{"a waypoint file", 64 * kMiB};
 
 /// Mesh files (.obj, .off, .ply, .stl, .om) and the counts a mesh may have: what the product loads
 /// and builds its octree and rings on in seconds. `mesh generate` refuses more vertices.

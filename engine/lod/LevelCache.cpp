@@ -1,14 +1,13 @@
 #include "engine/lod/LevelCache.h"
 
 #include "engine/io/AtomicFile.h"
+#include "engine/io/InputFile.h"
 #include "engine/core/MeshHash.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace palpate {
 
@@ -60,16 +59,20 @@ std::optional<MeshLevels> readLevelCache(const std::string& dir, const TissueMes
     namespace fs = std::filesystem;
     const fs::path indexPath = fs::path(dir) / kIndexName;
     std::error_code ec;
-    if (!fs::is_regular_file(indexPath, ec)) {
+    if (!fs::exists(fs::symlink_status(indexPath, ec))) {
         why = "no cache at " + dir;
+        return std::nullopt;
+    }
+    // The bounded reader: a FIFO or a huge file in the cache's place is refused, not read.
+    std::string readError;
+    const std::optional<std::string> text = readInputFile(indexPath.string(), kLevelCacheIndexFile, readError);
+    if (!text) {
+        why = readError;
         return std::nullopt;
     }
     Json j;
     try {
-        std::ifstream in(indexPath, std::ios::binary);
-        std::ostringstream text;
-        text << in.rdbuf();
-        j = Json::parse(text.str());
+        j = Json::parse(*text);
     } catch (const std::exception& e) {
         why = indexPath.string() + ": corrupt: " + e.what();
         return std::nullopt;

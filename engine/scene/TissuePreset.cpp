@@ -180,7 +180,9 @@ bool samePreset(const TissuePreset& a, const TissuePreset& b) {
            a.hapticRateHz == b.hapticRateHz && sameTissue;
 }
 
-PresetLoadResult parseTissuePreset(const std::string& textIn, const std::string& source) {
+namespace {
+
+PresetLoadResult parsePresetText(const std::string& textIn, const std::string& source) {
     PresetLoadResult result;
     JsonReader r(result.errors, source);
     const std::optional<Json> parsed = r.parse(textIn);
@@ -273,6 +275,22 @@ PresetLoadResult parseTissuePreset(const std::string& textIn, const std::string&
     return result;
 }
 
+}  // namespace
+
+PresetLoadResult parseTissuePreset(const std::string& text, const std::string& source) {
+    // Text that did not come through readInputFile (a recording's copy) has the file's limit too.
+    if (text.size() > kPresetFile.maxBytes)
+        return {std::nullopt,
+                {source + ": " + std::to_string(text.size()) + " bytes, more than the " +
+                 describeByteCount(kPresetFile.maxBytes) + " " + kPresetFile.name + " may hold"}};
+    // No exception of the JSON library leaves the loader: what it refuses is the file's problem.
+    try {
+        return parsePresetText(text, source);
+    } catch (const Json::exception& e) {
+        return {std::nullopt, {source + ": cannot be read: " + e.what()}};
+    }
+}
+
 PresetLoadResult loadTissuePreset(const std::string& path) {
     std::string error;
     const auto text = readInputFile(path, kPresetFile, error);
@@ -311,7 +329,13 @@ std::string saveTissuePreset(const TissuePreset& preset, const std::string& path
     if (preset.needs)
         if (const auto problems = validateLodNeeds(*preset.needs); !problems.empty())
             return path + ": not saved: " + problems.front();
-    return writeFileAtomically(path, tissuePresetToJson(preset));
+    // Never a file the reader refuses.
+    const std::string text = tissuePresetToJson(preset);
+    if (text.size() > kPresetFile.maxBytes)
+        return path + ": not saved: the preset would be " + std::to_string(text.size()) + " bytes, more than the " +
+               describeByteCount(kPresetFile.maxBytes) + " " + kPresetFile.name + " may hold (its description is " +
+               std::to_string(preset.description.size()) + " bytes)";
+    return writeFileAtomically(path, text);
 }
 
 }  // namespace palpate

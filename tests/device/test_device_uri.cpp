@@ -158,7 +158,7 @@ TEST(DeviceUri, SimPathWithAMissingFileNamesTheUriAndTheFile) {
     std::string error;
     EXPECT_EQ(openDeviceUri("sim:path:/no/such/path.txt", error), nullptr);
     EXPECT_TRUE(contains(error, "device URI 'sim:path:/no/such/path.txt'")) << error;
-    EXPECT_TRUE(contains(error, "waypoint file '/no/such/path.txt': does not exist")) << error;
+    EXPECT_TRUE(contains(error, "/no/such/path.txt: no such file")) << error;
     EXPECT_EQ(openDeviceUri("sim:path:/", error), nullptr);
     EXPECT_TRUE(contains(error, "is a directory")) << error;
 }

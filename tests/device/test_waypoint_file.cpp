@@ -134,7 +134,7 @@ TEST(WaypointFile, MissingPathIsAnErrorNamingIt) {
     std::string error;
     EXPECT_FALSE(loadWaypointFile(path, w, error));
     EXPECT_TRUE(contains(error, path)) << error;
-    EXPECT_TRUE(contains(error, "does not exist")) << error;
+    EXPECT_TRUE(contains(error, "no such file")) << error;
     EXPECT_FALSE(loadWaypointFile("", w, error));
     EXPECT_TRUE(contains(error, "no path")) << error;
 }

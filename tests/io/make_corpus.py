@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""Writes the seed corpora of the text parsers' fuzz targets (tests/io/corpus/<parser>/): the
+shipped files, small valid ones, and the hostile cases the readers must refuse cleanly. Run from
+the repository root; the output is committed."""
+import glob, json, os, shutil, struct
+
+root = os.path.dirname(os.path.abspath(__file__))
+out = os.path.join(root, "corpus")
+
+def put(parser, name, data):
+    os.makedirs(os.path.join(out, parser), exist_ok=True)
+    with open(os.path.join(out, parser, name), "wb") as f:
+        f.write(data if isinstance(data, bytes) else data.encode())
+
+repo = os.path.dirname(os.path.dirname(root))
+# Presets: the shipped ones, then hostile edits of the default.
+for p in sorted(glob.glob(repo + "/resources/presets/**/*.json", recursive=True)):
+    put("preset", "shipped-" + os.path.basename(p), open(p, "rb").read())
+default = open(repo + "/resources/presets/default.json").read()
+put("preset", "overflow-1e400.json", default.replace('"damping_ratio": 1.0', '"damping_ratio": 1e400'))
+put("preset", "overflow-in-list.json", default.replace("[0.6, 0.35, 0.15]", "[0.6, -1e999, 0.15]"))
+put("preset", "duplicate-key.json", default.replace('"damping_ratio": 1.0', '"damping_ratio": 1.0, "damping_ratio": 2.0'))
+put("preset", "duplicate-top-key.json", default.replace('"name": "default",', '"name": "a", "name": "b",'))
+put("preset", "deep-nesting.json", "[" * 200 + "]" * 200)
+put("preset", "empty.json", "")
+put("preset", "nul-bytes.json", default[:100] + "\0\0\0" + default[100:])
+put("preset", "long-description.json", default.replace('"description": "', '"description": "' + "x" * 20000))
+put("preset", "not-an-object.json", "[1, 2, 3]")
+put("preset", "truncated.json", default[: len(default) // 2])
+put("preset", "wrong-types.json", default.replace('"ring_count": 2', '"ring_count": "two"'))
+put("preset", "huge-ring-count.json", default.replace('"ring_count": 2', '"ring_count": 4294967296'))
+
+# Exercises: the shipped ones, then hostile edits.
+for p in sorted(glob.glob(repo + "/resources/exercises/*.json")):
+    put("exercise", "shipped-" + os.path.basename(p), open(p, "rb").read())
+press = json.load(open(repo + "/resources/exercises/press_targets.json"))
+trace = json.load(open(repo + "/resources/exercises/trace.json"))
+text = json.dumps(press, indent=2)
+put("exercise", "overflow-time.json", text.replace('"time_limit_s": ', '"time_limit_s": 1e400, "x": '))
+put("exercise", "duplicate-key.json", text.replace('"name": ', '"name": "twice", "name": ', 1))
+many = dict(press)
+many["press_targets"] = dict(press["press_targets"])
+many["press_targets"]["targets"] = [{"point_mm": [1.0 * i, 2.0, 3.0]} for i in range(1001)]
+put("exercise", "1001-targets.json", json.dumps(many))
+long_trace = dict(trace)
+long_trace["trace"] = dict(trace["trace"])
+long_trace["trace"]["path"] = [{"vertex": i} for i in range(200)]
+put("exercise", "long-trace.json", json.dumps(long_trace))
+put("exercise", "vertex-huge.json", text.replace('"vertex": ', '"vertex": 99999999999999999999, "y": ', 1))
+put("exercise", "point-nan-like.json", text.replace('"point_mm": [', '"point_mm": [1e308, 1e308, ', 1))
+put("exercise", "empty.json", "")
+put("exercise", "deep-nesting.json", '{"rubric": ' + "{" * 100 + "}" * 100 + "}")
+put("exercise", "wrong-type.json", text.replace('"press_targets"', '"trace"', 1))
+put("exercise", "truncated.json", text[: len(text) // 2])
+put("exercise", "rubric.json", text.replace('"time_limit_s"', '"rubric": {"peak_force_n": {"weight": 2}}, "time_limit_s"'))
+
+# Waypoint files: the shipped ones, then hostile ones.
+for p in sorted(glob.glob(repo + "/resources/exercises/*.path")):
+    put("waypoint", "shipped-" + os.path.basename(p), open(p, "rb").read())
+put("waypoint", "simple.txt", "0 0 0 0\n1 10 0 0\n2 10 10 0\n")
+put("waypoint", "commas-crlf.txt", "0,0,0,0\r\n1,1,1,1\r\n")
+put("waypoint", "overflow.txt", "0 0 0 0\n1 1e400 0 0\n")
+put("waypoint", "nan-inf.txt", "0 nan 0 0\n1 inf 0 0\n")
+put("waypoint", "time-backwards.txt", "0 0 0 0\n2 0 0 0\n1 0 0 0\n")
+put("waypoint", "empty.txt", "")
+put("waypoint", "comments-only.txt", "# nothing\n# here\n")
+put("waypoint", "binary.txt", bytes(range(256)))
+put("waypoint", "long-line.txt", "0 " + "1" * 5000 + " 0 0\n")
+put("waypoint", "too-few-columns.txt", "0 1 2\n")
+put("waypoint", "plus-signs.txt", "+0 +1 -2 +3\n+1 +-1 0 0\n")
+
+# Meshes: the first byte picks the extension (0 off, 1 obj, 2 stl, 3 ply, 4 om, 5 none).
+OFF, OBJ, STL, PLY, OM = b"\0", b"\1", b"\2", b"\3", b"\4"
+tet_v = [(0, 0, 0), (10, 0, 0), (0, 10, 0), (0, 0, 10)]
+tet_f = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+off = "OFF\n4 4 6\n" + "".join("%g %g %g\n" % v for v in tet_v) + "".join("3 %d %d %d\n" % f for f in tet_f)
+obj = "".join("v %g %g %g\n" % v for v in tet_v) + "".join("f %d %d %d\n" % (a + 1, b + 1, c + 1) for a, b, c in tet_f)
+stl = b"\0" * 80 + struct.pack("<I", 4) + b"".join(
+    struct.pack("<12fH", 0, 0, 0, *tet_v[a], *tet_v[b], *tet_v[c], 0) for a, b, c in tet_f)
+ply = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+       "element face 4\nproperty list uchar int vertex_indices\nend_header\n" +
+       "".join("%g %g %g\n" % v for v in tet_v) + "".join("3 %d %d %d\n" % f for f in tet_f))
+put("mesh", "tet.off", OFF + off.encode())
+put("mesh", "tet.obj", OBJ + obj.encode())
+put("mesh", "tet.stl", STL + stl)
+put("mesh", "tet.ply", PLY + ply.encode())
+put("mesh", "tet-ascii.stl", STL + b"solid t\nfacet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n")
+put("mesh", "off-1e308.off", OFF + off.replace("10 0 0", "1e308 0 0").encode())
+put("mesh", "off-huge-counts.off", OFF + b"OFF\n4000000000 4000000000 0\n0 0 0\n")
+put("mesh", "off-negative.off", OFF + b"OFF\n-1 -1 0\n")
+put("mesh", "off-truncated.off", OFF + off[: len(off) // 2].encode())
+put("mesh", "obj-nan.obj", OBJ + obj.replace("v 10 0 0", "v nan 0 0").encode())
+put("mesh", "stl-huge-count.stl", STL + b"\0" * 80 + struct.pack("<I", 0xFFFFFFFF))
+put("mesh", "ply-huge-counts.ply", PLY + ply.replace("vertex 4", "vertex 99999999999").encode())
+put("mesh", "ply-binary.ply", PLY + b"ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nelement face 1\nend_header\n" + b"\0" * 8)
+put("mesh", "nul-in-text.off", OFF + b"OFF\n4 4 6\n\0\0\0")
+put("mesh", "om-anything.om", OM + b"OM\0\0garbage")
+put("mesh", "no-extension", b"\5" + off.encode())
+
+# JSON: anything the reader may meet.
+for name, text in [("object.json", '{"a": 1, "b": [1, 2, {"c": null}]}'), ("overflow.json", '{"a": {"b": [0, 1e400]}}'),
+                   ("duplicate.json", '{"a": {"k": 1, "k": 2}}'), ("deep.json", "[" * 100 + "]" * 100),
+                   ("too-deep.json", "[" * 70 + "]" * 70), ("strings.json", '{"s": "\\u00e9\\ud83d\\ude00\\n"}'),
+                   ("numbers.json", "[0, -0, 1e-400, 1.7976931348623157e308, 18446744073709551615, -9223372036854775808]"),
+                   ("bad-utf8.json", b'{"s": "\xff\xfe"}'), ("trailing.json", '{"a": 1} x'), ("empty.json", ""),
+                   ("bom.json", b"\xef\xbb\xbf{}"), ("comment.json", '{"a": 1 /* c */}'), ("top-number.json", "1e400")]:
+    put("json", name, text)
+print("corpus written to", out)

@@ -1,0 +1,89 @@
+// Atomic writes (engine/io/AtomicFile.h): a write that fails (a file-size limit stands in for a
+// full disk) names the path and the reason, leaves the old file as it was and no temporary behind;
+// the temporary's name is unique, so another writer's file is never touched; a special file in the
+// target's place is not replaced.
+#include "engine/io/AtomicFile.h"
+#include "tests/io/ChildProcess.h"
+#include "tests/io/IoTestDir.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+using namespace palpate;
+using palpate::test::IoTestDir;
+
+namespace {
+std::string contentOf(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+}  // namespace
+
+TEST(AtomicFile, ReplacesTheFileAndLeavesNothingElse) {
+    IoTestDir dir;
+    const std::string path = dir.file("a.json");
+    ASSERT_EQ(writeFileAtomically(path, "first"), "");
+    ASSERT_EQ(writeFileAtomically(path, "second"), "");
+    EXPECT_EQ(contentOf(path), "second");
+    EXPECT_EQ(dir.names(), std::vector<std::string>{"a.json"});
+}
+
+TEST(AtomicFile, AFailedWriteNamesThePathAndTheReasonAndKeepsTheOldFile) {
+    IoTestDir dir;
+    const std::string path = dir.write("a.json", "old");
+    const auto child = test::runWithFileSizeLimit(1000, [&] { return writeFileAtomically(path, std::string(5000, 'x')); });
+    ASSERT_EQ(child.exitCode, 0);
+    EXPECT_EQ(child.output, path + ": writing failed: File too large");
+    EXPECT_EQ(contentOf(path), "old");
+    EXPECT_EQ(dir.names(), std::vector<std::string>{"a.json"});  // the temporary is gone
+}
+
+TEST(AtomicFile, AFailedWriteThroughAWriterRemovesItsTemporary) {
+    IoTestDir dir;
+    const std::string path = dir.file("m.off");
+    std::string temporaryUsed;
+    const std::string problem = writeFileAtomicallyVia(path, [&](const std::string& temporary) {
+        temporaryUsed = temporary;
+        std::ofstream(temporary) << "partial";
+        return std::string("the writer failed");
+    });
+    EXPECT_EQ(problem, path + ": writing failed: the writer failed");
+    EXPECT_EQ(std::filesystem::path(temporaryUsed).extension(), ".off");  // writers pick the format by it
+    EXPECT_TRUE(dir.names().empty());
+    ASSERT_EQ(writeFileAtomicallyVia(path, [](const std::string& t) {
+                  std::ofstream(t) << "whole";
+                  return std::string();
+              }),
+              "");
+    EXPECT_EQ(contentOf(path), "whole");
+}
+
+TEST(AtomicFile, AnotherWritersTemporaryIsNeverTouched) {
+    // A fixed "path.tmp" would be shared by two writers of one target (and taken over here).
+    IoTestDir dir;
+    const std::string path = dir.file("a.json");
+    const std::string other = dir.write("a.json.tmp", "another writer's");
+    ASSERT_EQ(writeFileAtomically(path, "mine"), "");
+    EXPECT_EQ(contentOf(other), "another writer's");
+    EXPECT_EQ(contentOf(path), "mine");
+}
+
+TEST(AtomicFile, ASpecialFileInTheTargetsPlaceIsNotReplaced) {
+    IoTestDir dir;
+    const std::string fifo = dir.fifo("a.json");
+    EXPECT_EQ(writeFileAtomically(fifo, "x"), fifo + ": is a FIFO, not a file that can be written");
+    EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+    const std::string folder = dir.directory("b.json");
+    EXPECT_EQ(writeFileAtomically(folder, "x"), folder + ": is a directory, not a file that can be written");
+    EXPECT_EQ(dir.names(), (std::vector<std::string>{"a.json", "b.json"}));
+}
+
+TEST(AtomicFile, AMissingFolderIsNamedWithTheReason) {
+    IoTestDir dir;
+    const std::string path = dir.file("no/such/a.json");
+    EXPECT_EQ(writeFileAtomically(path, "x"), path + ": cannot be written: No such file or directory");
+}
