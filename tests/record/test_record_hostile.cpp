@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -79,6 +80,42 @@ TEST(RecorderLimits, WriterRefusesAHeaderTheReaderWouldRefuse) {
     EXPECT_EQ(reader.header().scene.presetJson.size(), kMaxPresetJsonBytes);
 }
 
+// --- the writer's file: one writer, nothing replaced unasked ---
+
+TEST(RecorderFiles, OneWriterPerFileAndReplacingOnlyWhenAsked) {
+    TempDir dir;
+    RecordRig rig = makeRecordRig(SimTrajectory::Stroke);
+    const std::string path = dir.file("r.palprec");
+    std::string error;
+    auto first = RecordingWriter::create(path, rig.header, error);
+    ASSERT_TRUE(first) << error;
+    const auto firstBytes = readBytes(path);
+
+    // Not asked to replace: refused, the file as it was.
+    EXPECT_FALSE(RecordingWriter::create(path, rig.header, error));
+    EXPECT_NE(error.find("r.palprec: already exists"), std::string::npos) << error;
+    // Asked to replace, but it is being written (a lock is per open file, so this process counts).
+    RecordingWriterDef replace;
+    replace.replaceExisting = true;
+    EXPECT_FALSE(RecordingWriter::create(path, rig.header, error, replace));
+    EXPECT_NE(error.find("r.palprec: is being written by another Palpate (process " + std::to_string(::getpid()) + ")"),
+              std::string::npos)
+        << error;
+    EXPECT_EQ(readBytes(path), firstBytes);
+    ASSERT_EQ(first->close(), "");
+
+    // Closed: now it may be replaced, and nothing is left beside it.
+    RecordingHeader second = rig.header;
+    second.note = "the second session";
+    auto writer = RecordingWriter::create(path, second, error, replace);
+    ASSERT_TRUE(writer) << error;
+    EXPECT_EQ(writer->close(), "");
+    EXPECT_EQ(RecordingReader::open(path).header().note, "the second session");
+    std::size_t files = 0;
+    for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir.path())) ++files;
+    EXPECT_EQ(files, 1u);
+}
+
 TEST(RecordCliThreads, LongNoteAndLargePresetDescriptionReadBack) {
     TempDir dir;
     const std::string note(100000, 'a');
@@ -144,8 +181,8 @@ TEST(RecordCliThreads, ASecondWriterIsRefusedAndTheFirstRecordingSurvives) {
     // The second starts once the first has written its header (the file is not empty).
     const auto r = runShell("(" + run + " --seconds 3 --record " + shellQuote(path) + " >/dev/null 2>&1 &" +
                             " for i in $(seq 200); do [ -s " + shellQuote(path) + " ] && break; sleep 0.05; done;" +
-                            " " + run + " --seconds 0.5 --overwrite --record " + shellQuote(path) + "; echo second=$?;" +
-                            " wait)");
+                            " " + run + " --seconds 0.5 --overwrite --record " + shellQuote(path) +
+                            "; echo second=$?;" + " wait)");
     EXPECT_NE(r.output.find("second=1"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("is being written by another Palpate (process "), std::string::npos) << r.output;
     const auto verify = runCli("record verify " + shellQuote(path));
@@ -257,7 +294,8 @@ TEST(RecordCliThreads, ThreadsThatCannotStartAreAMessageNotAHangOrAnAbort) {
     // Every thread asks for a 4 GB stack under a 3 GB address space: none can be created.
     const std::string noThreads = "ulimit -s 4000000 && ulimit -v 3000000 && ";
     const std::string mesh = " --mesh " + shellQuote(sphereMeshPath()) + " --no-fifo --seconds 0.5";
-    const auto run = runShell("(" + noThreads + cli + " run" + mesh + " --record " + shellQuote(dir.file("a.palprec")) + ")");
+    const auto run = runShell("(" + noThreads + cli + " run" + mesh + " --record " + shellQuote(dir.file("a.palprec")) +
+                              ")");
     EXPECT_EQ(run.exitCode, 1) << run.output;
     EXPECT_NE(run.output.find("could not start the haptic thread"), std::string::npos) << run.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("a.palprec")));  // no header-only file left
