@@ -30,8 +30,9 @@ extern "C" void onInterrupt(int) { gInterrupted.store(true); }
 }  // namespace
 
 int runCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json", "no-fifo", "overwrite"}, {"mesh", "device", "seconds", "record", "rate", "method", "model", "preset", "note",
-                                                   "exercise", "mark-at"});
+    Args args(words, {"json", "no-fifo", "overwrite"},
+              {"mesh", "device", "seconds", "record", "rate", "method", "model", "preset", "note", "exercise",
+               "mark-at"});
     if (!args.ok()) {
         std::cerr << "run: " << args.error() << "\n";
         return 2;
@@ -141,7 +142,8 @@ int runCommand(const std::vector<std::string>& words) {
         DeviceUri parsedUri;
         std::string ignored;
         if (parseDeviceUri(uri, parsedUri, ignored) && !parsedUri.path.empty())
-            inputs.push_back({parsedUri.path, parsedUri.kind == DeviceKind::Replay ? "replayed recording" : "waypoint"});
+            inputs.push_back({parsedUri.path,
+                              parsedUri.kind == DeviceKind::Replay ? "replayed recording" : "waypoint"});
         if (const std::string problem = outputIsAnInput("record", *recordPath, inputs); !problem.empty()) {
             std::cerr << "run: " << problem << "\n";
             return 2;

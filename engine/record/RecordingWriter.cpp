@@ -101,8 +101,7 @@ int openOutput(const std::string& path, bool replace, std::string& tempPath, std
     if (fd < 0) {
         if (errno == EEXIST && !exists)  // created by someone else since stat
             error = path + ": already exists; a recording replaces a file only when asked to";
-        else
-            error = target + ": cannot create the recording: " + std::strerror(errno);
+        else error = target + ": cannot create the recording: " + std::strerror(errno);
         return -1;
     }
     // Held until close: a second recorder on this path is refused (see beingWritten).

@@ -166,7 +166,7 @@ private:
         RecordingStats figures;
     };
     std::vector<Encoded> mEncoded;
-    RecordingStats mWritten;  // the figures of the whole chunks in the file
+    RecordingStats mWritten;      // the figures of the whole chunks in the file
     bool mHeaderWritten = false;  // under mMutex: the thread waits for it
     std::uint64_t mLostCommandsReported = 0;
     bool mHaveLastTick = false;

@@ -183,7 +183,8 @@ TEST(Recorder, SteppedTickWithRecorderDoesNotAllocate) {
         preset.method = method;
         RecordRig rig = makeRecordRig(SimTrajectory::Stroke, preset);
         std::string error;
-        auto session = RecordingSession::start(*rig.loop, dir.file("alloc-" + std::string(methodName(method)) + ".palprec"),
+        auto session = RecordingSession::start(*rig.loop,
+                                               dir.file("alloc-" + std::string(methodName(method)) + ".palprec"),
                                                rig.header, error);
         ASSERT_TRUE(session) << error;
         const auto atAttach = threadAllocationCount();
