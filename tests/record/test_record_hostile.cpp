@@ -282,6 +282,36 @@ TEST(RecordCliThreads, AFileSizeLimitIsNamedAndTheSummaryIsWhatTheFileHolds) {
     EXPECT_NE(text.output.find("file size limit reached"), std::string::npos) << text.output;
 }
 
+TEST(RecordCliThreads, AFullDiskIsNamedAndTheSummaryIsWhatTheFileHolds) {
+    // A 16 KiB tmpfs, mounted in a private mount namespace (it goes with the shell), fills after
+    // about a second of sim:stroke.
+    if (runShell("unshare -rm true").exitCode != 0) GTEST_SKIP() << "no user and mount namespaces here";
+    TempDir dir;
+    std::filesystem::create_directory(dir.file("small"));
+    const std::string cli = shellQuote(PALPATE_CLI_PATH);
+    const std::string path = dir.file("small") + "/full.palprec";
+    const auto r = runShell("unshare -rm sh -c " +
+                            shellQuote("mount -t tmpfs -o size=16k tmpfs " + shellQuote(dir.file("small")) +
+                                       " || exit 99; timeout 60 " + cli + " run --mesh " +
+                                       shellQuote(sphereMeshPath()) + " --device sim:stroke --no-fifo --seconds 4" +
+                                       " --json --record " + shellQuote(path) + " 2>/dev/null; echo \"exit=$?\";" +
+                                       " timeout 60 " + cli + " record info --json " + shellQuote(path)));
+    if (r.exitCode == 99 && r.output.find("exit=") == std::string::npos) GTEST_SKIP() << "tmpfs not mountable";
+    const std::size_t split = r.output.find("exit=");
+    ASSERT_NE(split, std::string::npos) << r.output;
+    EXPECT_EQ(r.output.substr(split, 7), "exit=1\n") << r.output;
+    const auto run = nlohmann::json::parse(r.output.substr(0, split), nullptr, false);
+    const auto info = nlohmann::json::parse(r.output.substr(split + 7), nullptr, false);
+    ASSERT_FALSE(run.is_discarded() || info.is_discarded()) << r.output;
+    const std::string error = run["recording"]["error"].get<std::string>();
+    EXPECT_NE(error.find("full.palprec: writing the recording failed after "), std::string::npos) << error;
+    EXPECT_NE(error.find("No space left on device"), std::string::npos) << error;
+    EXPECT_GT(info["ticks"].get<std::uint64_t>(), 0u);
+    EXPECT_EQ(run["recording"]["ticks"].get<std::uint64_t>(), info["ticks"].get<std::uint64_t>());
+    EXPECT_EQ(run["recording"]["bytes"].get<std::uint64_t>(), info["bytes"].get<std::uint64_t>());
+    EXPECT_EQ(info["damaged_regions"].get<int>(), 0);
+}
+
 TEST(RecordCliThreads, NotARegularFileIsRefusedAsARecordingTarget) {
     const auto r = runRecorded("/dev/full", "--overwrite");
     EXPECT_EQ(r.exitCode, 1) << r.output;
