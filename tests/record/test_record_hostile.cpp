@@ -312,6 +312,26 @@ TEST(RecordCliThreads, AFullDiskIsNamedAndTheSummaryIsWhatTheFileHolds) {
     EXPECT_EQ(info["damaged_regions"].get<int>(), 0);
 }
 
+TEST(RecordCliThreads, AFailedExportLeavesTheOldCsvAndNoHalfFile) {
+    TempDir dir;
+    ASSERT_EQ(runRecorded(dir.file("r.palprec")).exitCode, 0);
+    writeText(dir.file("t.csv"), "an earlier export\n");
+    // 8 KiB: the CSV of half a second (about 100 bytes a tick) does not fit.
+    const auto r = runShell("(ulimit -f 8 && exec " + shellQuote(PALPATE_CLI_PATH) + " record export-csv " +
+                            shellQuote(dir.file("r.palprec")) + " --out " + shellQuote(dir.file("t.csv")) + ")");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("t.csv: writing failed: File too large"), std::string::npos) << r.output;
+    EXPECT_EQ(readText(dir.file("t.csv")), "an earlier export\n");
+    std::size_t files = 0;
+    for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir.path())) ++files;
+    EXPECT_EQ(files, 2u);  // the recording and the old CSV, nothing beside them
+    const auto missing = runCli("record export-csv " + shellQuote(dir.file("r.palprec")) + " --out " +
+                                shellQuote(dir.file("no-such-dir/t.csv")));
+    EXPECT_EQ(missing.exitCode, 1) << missing.output;
+    EXPECT_NE(missing.output.find("no-such-dir/t.csv: cannot write: No such file or directory"), std::string::npos)
+        << missing.output;
+}
+
 TEST(RecordCliThreads, NotARegularFileIsRefusedAsARecordingTarget) {
     const auto r = runRecorded("/dev/full", "--overwrite");
     EXPECT_EQ(r.exitCode, 1) << r.output;
