@@ -68,9 +68,11 @@ QString ExerciseController::openDatabase(const QString& path) {
     QDir().mkpath(QFileInfo(path).absolutePath());
     QString error;
     if (!mDatabase.open(path, &error)) {
+        mDatabaseError = error;
         mPanel.setMessage(error);
         return error;
     }
+    mDatabaseError.clear();
     refreshTrainees(-1);
     mHistory.setDatabase(&mDatabase);
     return {};
@@ -85,8 +87,13 @@ void ExerciseController::refreshTrainees(qint64 select) {
     if (mPanel.traineeId() >= 0) mHistory.setTrainee(mPanel.traineeId());
 }
 
+QString ExerciseController::databaseProblem() const {
+    if (!mDatabaseError.isEmpty()) return mDatabaseError;
+    return tr("no results database is open");
+}
+
 QString ExerciseController::addTrainee(const QString& name) {
-    if (!mDatabase.isOpen()) return tr("The results database is not open: trainees cannot be stored.");
+    if (!mDatabase.isOpen()) return tr("%1: trainees cannot be stored.").arg(databaseProblem());
     QString error;
     const qint64 id = mDatabase.addTrainee(name.trimmed(), &error);
     if (id < 0) return error;
@@ -319,8 +326,14 @@ void ExerciseController::finish(const QString& why) {
                                                   QString::fromStdString(mAssets->exercise.sourcePath), mStartedUtc,
                                                   report.guidance.exerciseTimeS, mRecordingPath, &error)
                             : -1;
-        if (mLastResultId < 0)
-            stored = tr("The result was NOT stored: %1").arg(error.isEmpty() ? tr("the results database is not open") : error);
+        if (mLastResultId < 0) {
+            // Never lost silently: say what keeps the session, from which it can be scored again.
+            const QString kept = mRecordingPath.isEmpty()
+                                     ? tr("the session was not recorded, so it is lost")
+                                     : tr("the session is kept in the recording %1 (palpate-cli score scores it again)")
+                                           .arg(QDir::toNativeSeparators(mRecordingPath));
+            stored = tr("The result was NOT stored: %1; %2.").arg(error.isEmpty() ? databaseProblem() : error, kept);
+        }
         else
             stored = tr("Result stored for %1.").arg(mTraineeName);
         mHistory.refresh();

@@ -482,8 +482,8 @@ void MainWindow::checkCurrentDevice() {
     for (QAction* action : mDeviceGroup->actions()) action->setChecked(action->data().toString() == current);
 }
 
-QString MainWindow::loadMesh(const QString& path) {
-    const std::string error = mSession->loadMesh(path.toStdString());
+QString MainWindow::loadMesh(const QString& path, bool* deviceFailed) {
+    const std::string error = mSession->loadMesh(path.toStdString(), deviceFailed);
     if (!error.empty()) return QString::fromStdString(error);
     mTouchVertex = kNoVertex;  // a fresh device on another mesh: nothing is pressed
     addRecentFile(path);
@@ -495,6 +495,29 @@ QString MainWindow::loadMesh(const QString& path) {
     }
     showDrawnMesh();  // the first mesh is drawn at once; a later one once the loop runs it
     showStatus();
+    return {};
+}
+
+QString MainWindow::startSession(const QString& meshPath, const QString& deviceUri, const QString& fallbackUri,
+                                 QString& deviceProblem) {
+    deviceProblem.clear();
+    QString deviceError = setDeviceUri(deviceUri);  // before the first mesh the URI is only checked ...
+    if (deviceError.isEmpty()) {
+        bool deviceFailed = false;
+        const QString error = loadMesh(meshPath, &deviceFailed);  // ... and the first mesh opens it
+        if (error.isEmpty()) return {};
+        if (!deviceFailed) return error;
+        deviceError = error;
+    }
+    if (const QString error = setDeviceUri(fallbackUri); !error.isEmpty()) return error;
+    if (const QString error = loadMesh(meshPath); !error.isEmpty()) return error;
+    deviceProblem = tr("Cannot open the device %1: %2\nRunning with %3 instead: choose another in the Device dock or "
+                       "in Edit > Preferences.")
+                        .arg(deviceUri, deviceError, fallbackUri);
+    mDevicePanel->showError(deviceProblem);
+    mDeviceDock->show();
+    mDeviceDock->raise();
+    statusBar()->showMessage(tr("Cannot open %1; running with %2").arg(deviceUri, fallbackUri), 30000);
     return {};
 }
 
@@ -1228,18 +1251,22 @@ void MainWindow::exportResultPdfDialog(const ResultRecord& result) {
 }
 
 QString MainWindow::runExercise(const QString& path, const QString& trainee) {
+    // Every message names its file: the exercise's, or the results database's (addTrainee).
+    const auto naming = [&path](const QString& error) {
+        return error.isEmpty() || error.contains(path) ? error : path + QStringLiteral(": ") + error;
+    };
     if (!trainee.trimmed().isEmpty()) {
-        if (QString error = mExercises->addExerciseFile(path); !error.isEmpty()) return error;
+        if (QString error = mExercises->addExerciseFile(path); !error.isEmpty()) return naming(error);
         if (QString error = mExercises->addTrainee(trainee); !error.isEmpty()) return error;
-        return mExercises->start();
+        return naming(mExercises->start());
     }
     const auto loaded = loadExercise(path.toStdString());
     if (!loaded.exercise) {
         QStringList errors;
         for (const auto& e : loaded.errors) errors << QString::fromStdString(e);
-        return errors.join(QLatin1Char('\n'));
+        return naming(errors.join(QLatin1Char('\n')));
     }
-    return mExercises->startPreview(*loaded.exercise);
+    return naming(mExercises->startPreview(*loaded.exercise));
 }
 
 }  // namespace palpate
