@@ -196,7 +196,10 @@ void ExerciseController::startRecording() {
         return;
     }
     const QString stamp = QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss-zzz"));
-    const QString path = QDir(folder).filePath(QStringLiteral("exercise-%1-%2.palprec").arg(slug(mAssets->exercise.name), stamp));
+    const QString stem = QStringLiteral("exercise-%1-%2").arg(slug(mAssets->exercise.name), stamp);
+    QString path = QDir(folder).filePath(stem + QStringLiteral(".palprec"));
+    // An automatic name never replaces a file: two sessions in one millisecond, or a copied folder.
+    for (int n = 2; QFileInfo::exists(path); ++n) path = QDir(folder).filePath(QStringLiteral("%1-%2.palprec").arg(stem).arg(n));
     // The note carries the exercise with its paths resolved, so the recording scores on its own.
     Exercise carried = mAssets->exercise;
     carried.meshPath = mAssets->meshPath;
@@ -360,6 +363,11 @@ QString ExerciseController::exportResultPdf(const ResultRecord& result, const QS
 }
 
 QString ExerciseController::exportReportPdf(const QString& recordingPath, const QString& trainee, const QString& path) {
+    // An input is never overwritten by an output: the PDF over its own recording would lose the session.
+    const QFileInfo out(path), in(recordingPath);
+    if (out.exists() && in.exists() && out.canonicalFilePath() == in.canonicalFilePath())
+        return tr("%1: is the recording the report is made from; choose another file for the PDF")
+            .arg(QDir::toNativeSeparators(path));
     // The same report as `palpate-cli score --pdf`: the recording re-scored (app/report).
     ReplayScorerDef options;
     options.findResource = cli::findResource;
