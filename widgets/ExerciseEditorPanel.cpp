@@ -1,5 +1,6 @@
 #include "widgets/ExerciseEditorPanel.h"
 
+#include "widgets/GuardedLoad.h"
 #include "widgets/ScrollWheelGuard.h"
 
 #include "widgets/ExerciseEditCommands.h"
@@ -941,7 +942,7 @@ void ExerciseEditorPanel::newExercise(ExerciseType type) {
 }
 
 QString ExerciseEditorPanel::openExercise(const QString& path) {
-    const ExerciseLoadResult result = loadExercise(ss(path));
+    const ExerciseLoadResult result = guardedLoad(ss(path), [&] { return loadExercise(ss(path)); });
     if (!result.exercise) {
         QStringList errors;
         for (const std::string& error : result.errors) errors << qs(error);
@@ -1602,7 +1603,7 @@ const std::vector<double>* ExerciseEditorPanel::touchForces(const QString& meshF
         mProbe.reset();
         mProbeForces.clear();
         mReachError.clear();
-        const PresetLoadResult loaded = loadTissuePreset(ss(presetFile));
+        const PresetLoadResult loaded = guardedLoad(ss(presetFile), [&] { return loadTissuePreset(ss(presetFile)); });
         std::string error = loaded.errors.empty() ? std::string("not a tissue preset") : loaded.errors.front();
         // Press targets have no physics of their own: the scene is the tissue's as it is.
         if (loaded.preset) mProbe = TouchForceProbe::create(mesh, *loaded.preset, nullptr, touchReach(), error);

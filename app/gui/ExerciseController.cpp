@@ -4,6 +4,7 @@
 #include "engine/exercise/ExerciseFile.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
+#include "widgets/GuardedLoad.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/ScoreCard.h"
 #include "app/report/ScoreReportFromRecording.h"
@@ -107,7 +108,7 @@ void ExerciseController::listExampleExercises() {
     if (!anchor.empty()) {
         const QDir dir = QFileInfo(QString::fromStdString(anchor)).absoluteDir();
         for (const QFileInfo& file : dir.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
-            const auto loaded = loadExercise(file.absoluteFilePath().toStdString());
+            const auto loaded = guardedLoad(file.absoluteFilePath().toStdString(), [&] { return loadExercise(file.absoluteFilePath().toStdString()); });
             if (loaded.exercise) list.append({QString::fromStdString(loaded.exercise->name), file.absoluteFilePath()});
         }
     }
@@ -115,7 +116,7 @@ void ExerciseController::listExampleExercises() {
 }
 
 QString ExerciseController::addExerciseFile(const QString& path) {
-    const auto loaded = loadExercise(path.toStdString());
+    const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
     if (!loaded.exercise) return joined(loaded.errors);
     mPanel.addExercise(QString::fromStdString(loaded.exercise->name), QFileInfo(path).absoluteFilePath());
     mExercisePicked = true;
@@ -126,7 +127,7 @@ void ExerciseController::followMesh(const QString& meshPath) {
     if (running() || mExercisePicked || meshPath.isEmpty()) return;
     const QString shown = QFileInfo(meshPath).canonicalFilePath();
     for (const auto& [title, path] : mPanel.exercises()) {
-        const auto loaded = loadExercise(path.toStdString());
+        const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
         if (!loaded.exercise) continue;
         const std::string mesh = resolveExercisePath(*loaded.exercise, loaded.exercise->meshPath, cli::findResource);
         if (!mesh.empty() && QFileInfo(QString::fromStdString(mesh)).canonicalFilePath() == shown) {
@@ -141,7 +142,7 @@ void ExerciseController::showExerciseDescription(const QString& path) {
         mPanel.setExerciseDescription({});
         return;
     }
-    const auto loaded = loadExercise(path.toStdString());
+    const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
     mPanel.setExerciseDescription(loaded.exercise ? QString::fromStdString(loaded.exercise->description)
                                                   : joined(loaded.errors));
     if (!running()) mPanel.setState(TraineePanel::State::Idle);
@@ -151,7 +152,7 @@ QString ExerciseController::start() {
     if (mPanel.traineeId() < 0) return tr("Choose a trainee, or add one with New…, before starting.");
     const QString path = mPanel.exercisePath();
     if (path.isEmpty()) return tr("Choose an exercise first.");
-    const auto loaded = loadExercise(path.toStdString());
+    const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
     if (!loaded.exercise) return joined(loaded.errors);
     return begin(*loaded.exercise, false);
 }
@@ -162,7 +163,12 @@ QString ExerciseController::begin(const Exercise& exercise, bool preview) {
     if (running()) return tr("An exercise is already running: stop it first.");
     std::vector<std::string> errors = validateExercise(exercise);
     if (!errors.empty()) return joined(errors);
-    auto assets = loadExerciseAssets(exercise, cli::findResource, errors);
+    std::optional<ExerciseAssets> assets;
+    try {
+        assets = loadExerciseAssets(exercise, cli::findResource, errors);
+    } catch (const std::exception& e) {  // the loaders should not throw; no file may abort the window
+        errors.push_back(exercise.sourcePath + ": " + e.what());
+    }
     if (!assets) return joined(errors);
     if (const std::string error = mSession.loadExercise(*assets); !error.empty()) return QString::fromStdString(error);
     mAssets = std::move(assets);

@@ -11,6 +11,7 @@
 #include "widgets/ChartsPanel.h"
 #include "widgets/FeelPanel.h"
 #include "widgets/ExerciseEditorPanel.h"
+#include "widgets/GuardedLoad.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/LodPanel.h"
 #include "widgets/PreferencesDialog.h"
@@ -517,7 +518,11 @@ QString MainWindow::startSession(const QString& meshPath, const QString& deviceU
     mDevicePanel->showError(deviceProblem);
     mDeviceDock->show();
     mDeviceDock->raise();
-    statusBar()->showMessage(tr("Cannot open %1; running with %2").arg(deviceUri, fallbackUri), 30000);
+    // Once the window is shown: a message shown before would be drawn over the mesh field, which only
+    // a visible status bar hides for it.
+    QTimer::singleShot(0, this, [this, deviceUri, fallbackUri] {
+        statusBar()->showMessage(tr("Cannot open %1; running with %2").arg(deviceUri, fallbackUri), 30000);
+    });
     return {};
 }
 
@@ -553,7 +558,13 @@ QString MainWindow::openDeviceInBackground(const QString& uri) {
     auto job = std::make_shared<Job>();
     job->uri = uri.toStdString();
     mOpeningUri = uri;
-    mOpenThread = QThread::create([job] { job->device = openDeviceUri(job->uri, job->error); });
+    mOpenThread = QThread::create([job] {
+        try {  // no event loop catches it here: it would end the process
+            job->device = openDeviceUri(job->uri, job->error);
+        } catch (const std::exception& e) {
+            job->error = job->uri + ": " + e.what();
+        }
+    });
     mOpenThread->setParent(this);  // deleted with the window if it closes first (shutDown waits for it)
     connect(mOpenThread, &QThread::finished, this, [this, job] {
         mOpenThread->deleteLater();
@@ -1260,7 +1271,7 @@ QString MainWindow::runExercise(const QString& path, const QString& trainee) {
         if (QString error = mExercises->addTrainee(trainee); !error.isEmpty()) return error;
         return naming(mExercises->start());
     }
-    const auto loaded = loadExercise(path.toStdString());
+    const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
     if (!loaded.exercise) {
         QStringList errors;
         for (const auto& e : loaded.errors) errors << QString::fromStdString(e);

@@ -11,6 +11,7 @@
 #include "app/gui/GuiApplication.h"
 #include "app/gui/MainWindow.h"
 #include "widgets/DevicePanel.h"
+#include "widgets/GuardedLoad.h"
 #include "widgets/PreferencesDialog.h"
 #include "widgets/RecorderPanel.h"
 
@@ -23,6 +24,7 @@
 #include <QLabel>
 #include <QProcess>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QThread>
@@ -198,6 +200,39 @@ TEST(BadFiles, OverflowingNumberInAnExerciseOrItsPresetIsNamedOnceByTheGui) {
     EXPECT_TRUE(runGui(dir, {QStringLiteral("--exercise"), naming, QStringLiteral("--screenshot"),
                              dir.filePath(QStringLiteral("x.png")), QStringLiteral("--ticks"), QStringLiteral("5")})
                     .err.contains(preset));
+}
+
+TEST(BadFiles, ALoaderThatThrowsGivesAnErrorNamingTheFile) {
+    struct Result {
+        std::vector<std::string> errors;
+    };
+    const Result result = guardedLoad("presets/x.json", []() -> Result { throw std::length_error("too long"); });
+    ASSERT_EQ(result.errors.size(), 1u);
+    EXPECT_EQ(result.errors.front(), "presets/x.json: too long");
+}
+
+TEST(BadFiles, AFolderOrGarbageOpenedAsARecordingIsAnErrorNamingIt) {
+    QTemporaryDir dir;
+    const QString folder = dir.filePath(QStringLiteral("folder.palprec"));
+    ASSERT_TRUE(QDir().mkpath(folder));
+    const QString garbage = dir.filePath(QStringLiteral("garbage.palprec"));
+    {
+        QFile file(garbage);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write(QByteArray(100000, '\xff'));
+    }
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    QString problem;
+    ASSERT_EQ(window.startSession(defaultMesh(), QStringLiteral("sim:press"), QStringLiteral("sim:stroke"), problem), QString());
+    for (const QString& path : {folder, garbage}) {
+        SCOPED_TRACE(path.toStdString());
+        QSignalSpy failed(window.recorderPanel(), &RecorderPanel::openFailed);
+        window.openRecording(path);  // File > Open Recording…'s slot
+        ASSERT_TRUE(failed.wait(20000));
+        EXPECT_TRUE(failed.front().front().toString().contains(path)) << failed.front().front().toString().toStdString();
+        EXPECT_FALSE(window.inPlayback());
+        window.advanceTicks(10);  // the live session goes on
+    }
 }
 
 TEST(EventLoop, AnExceptionEscapingAnEventIsReportedAndTheLoopRunsOn) {
