@@ -178,6 +178,10 @@
         <source>Every model&apos;s largest force step while sliding at constant depth, against its tick cost (palpate-cli bench feel).</source>
         <translation>Größter Kraftsprung jedes Modells beim Gleiten in konstanter Tiefe, gegen seinen Tick-Aufwand (palpate-cli bench feel).</translation>
     </message>
+    <message>
+        <source>%1: not saved, %2 exists and is not a sweep&apos;s description (it would be replaced); choose another name</source>
+        <translation>%1: nicht gespeichert, %2 existiert und ist keine Beschreibung einer Messreihe (sie würde ersetzt); wählen Sie einen anderen Namen</translation>
+    </message>
 </context>
 <context>
     <name>palpate::DevicePanel</name>
@@ -3854,6 +3858,17 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
     <message>
         <source>cannot migrate from schema version 2 to 3: %1</source>
         <translation>Schema-Version 2 kann nicht zu 3 migriert werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::SaveFileChoice</name>
+    <message>
+        <source>Replace the file?</source>
+        <translation>Datei ersetzen?</translation>
+    </message>
+    <message>
+        <source>%1 already exists. Replace it?</source>
+        <translation>%1 existiert bereits. Ersetzen?</translation>
     </message>
 </context>
 <context>

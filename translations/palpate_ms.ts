@@ -178,6 +178,10 @@
         <source>Every model&apos;s largest force step while sliding at constant depth, against its tick cost (palpate-cli bench feel).</source>
         <translation>Lompatan daya terbesar setiap model semasa menggelongsor pada kedalaman tetap, berbanding kos tiknya (palpate-cli bench feel).</translation>
     </message>
+    <message>
+        <source>%1: not saved, %2 exists and is not a sweep&apos;s description (it would be replaced); choose another name</source>
+        <translation>%1: tidak disimpan, %2 wujud dan bukan penerangan sapuan (ia akan diganti); pilih nama lain</translation>
+    </message>
 </context>
 <context>
     <name>palpate::DevicePanel</name>
@@ -3850,6 +3854,17 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
     <message>
         <source>cannot migrate from schema version 2 to 3: %1</source>
         <translation>tidak dapat memindahkan skema versi 2 ke 3: %1</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::SaveFileChoice</name>
+    <message>
+        <source>Replace the file?</source>
+        <translation>Ganti fail?</translation>
+    </message>
+    <message>
+        <source>%1 already exists. Replace it?</source>
+        <translation>%1 sudah wujud. Gantikannya?</translation>
     </message>
 </context>
 <context>

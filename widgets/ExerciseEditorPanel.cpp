@@ -1,5 +1,6 @@
 #include "widgets/ExerciseEditorPanel.h"
 
+#include "widgets/SaveFileChoice.h"
 #include "widgets/GuardedLoad.h"
 #include "widgets/ScrollWheelGuard.h"
 
@@ -1011,8 +1012,8 @@ bool ExerciseEditorPanel::saveAsDialog() {
                     (base.isEmpty() ? QStringLiteral("exercise") : base) + QStringLiteral(".json");
     }
     QString path = QFileDialog::getSaveFileName(this, tr("Save exercise"), suggested, tr("Exercises (*.json)"));
+    path = withSuffixConfirmed(this, path, QStringLiteral(".json"));
     if (path.isEmpty()) return false;
-    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
     return saveExercise(path).isEmpty();
 }
 

@@ -1,5 +1,6 @@
 #include "widgets/ParameterPanel.h"
 
+#include "widgets/SaveFileChoice.h"
 #include "widgets/GuardedLoad.h"
 #include "widgets/ScrollWheelGuard.h"
 
@@ -1302,8 +1303,8 @@ void ParameterPanel::savePresetDialog() {
                     .filePath(QString::fromStdString(mShown.name) + QStringLiteral(".json"));
     QString path = QFileDialog::getSaveFileName(this, tr("Save preset"), start,
                                                 tr("Tissue presets (*.json);;All files (*)"));
+    path = withSuffixConfirmed(this, path, QStringLiteral(".json"));
     if (path.isEmpty()) return;
-    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
     savePresetFile(path);
 }
 

@@ -10,10 +10,12 @@
 #include "app/gui/FirstRun.h"
 #include "app/gui/GuiApplication.h"
 #include "app/gui/MainWindow.h"
+#include "widgets/ChartsPanel.h"
 #include "widgets/DevicePanel.h"
 #include "widgets/GuardedLoad.h"
 #include "widgets/PreferencesDialog.h"
 #include "widgets/RecorderPanel.h"
+#include "widgets/SaveFileChoice.h"
 
 #include <gtest/gtest.h>
 
@@ -22,6 +24,8 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QProcess>
 #include <QSettings>
 #include <QSignalSpy>
@@ -298,6 +302,73 @@ TEST(ProcessLimits, FileSizeLimitIsAWriteErrorNotASignal) {
     QTemporaryDir dir;
     EXPECT_EXIT(writePastFileSizeLimit(dir.filePath(QStringLiteral("big.bin")).toLocal8Bit()),
                 ::testing::ExitedWithCode(0), "");
+}
+
+namespace {
+
+QByteArray contentsOf(const QString& path) {
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+/// Answers the next modal question box with `button`; `asked` says whether one came.
+void answerNextQuestion(QMessageBox::StandardButton button, bool& asked) {
+    QTimer::singleShot(0, [button, &asked] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        asked = box != nullptr;
+        if (box) box->button(button)->click();
+    });
+}
+
+}  // namespace
+
+TEST(Saving, SuffixAddedAfterTheDialogAsksBeforeReplacing) {
+    QTemporaryDir dir;
+    const QString typed = dir.filePath(QStringLiteral("tissue"));
+    EXPECT_EQ(withSuffixConfirmed(nullptr, typed, QStringLiteral(".json")), typed + QStringLiteral(".json"));  // no such file
+    QFile(typed + QStringLiteral(".json")).open(QIODevice::WriteOnly);
+    bool asked = false;
+    answerNextQuestion(QMessageBox::No, asked);
+    EXPECT_EQ(withSuffixConfirmed(nullptr, typed, QStringLiteral(".json")), QString());
+    EXPECT_TRUE(asked);
+    answerNextQuestion(QMessageBox::Yes, asked);
+    EXPECT_EQ(withSuffixConfirmed(nullptr, typed, QStringLiteral(".json")), typed + QStringLiteral(".json"));
+    EXPECT_EQ(withSuffixConfirmed(nullptr, typed + QStringLiteral(".txt"), QStringLiteral(".json")),
+              typed + QStringLiteral(".txt"));  // the dialog asked about that name itself
+}
+
+TEST(Saving, SweepCsvDoesNotReplaceAFileBesideItThatIsNotItsDescription) {
+    QTemporaryDir dir;
+    ChartsPanel panel;
+    ASSERT_TRUE(panel.loadCsv(QStringLiteral(PALPATE_SOURCE_DIR "/docs/bench/sweep.csv")));  // with its sweep.json
+    const QString preset = dir.filePath(QStringLiteral("skin.json"));
+    ASSERT_TRUE(QFile::copy(resource("presets/tissues/skin.json"), preset));
+    const QByteArray before = contentsOf(preset);
+    QString error;
+    EXPECT_FALSE(panel.saveCsv(dir.filePath(QStringLiteral("skin.csv")), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("skin.json"))) << error.toStdString();
+    EXPECT_EQ(contentsOf(preset), before);
+    EXPECT_TRUE(panel.saveCsv(dir.filePath(QStringLiteral("sweep.csv")), &error)) << error.toStdString();
+    EXPECT_TRUE(panel.saveCsv(dir.filePath(QStringLiteral("sweep.csv")), &error)) << "its own description is replaced";
+}
+
+TEST(Saving, ScorePdfIsNeverWrittenOverItsRecording) {
+    QTemporaryDir dir;
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    window.recorderPanel()->setRecordingFolder(dir.filePath(QStringLiteral("recordings")));
+    QString problem;
+    ASSERT_EQ(window.startSession(defaultMesh(), QStringLiteral("sim:path:") + resource("exercises/press_targets.good.path"),
+                                  QStringLiteral("sim:stroke"), problem),
+              QString());
+    ASSERT_EQ(window.runExercise(resource("exercises/press_targets.json"), QString()), QString());  // a preview
+    for (int done = 0; done < 60000 && window.exercises().running(); done += 100) window.advanceTicks(100);
+    const QString recording = window.exercises().lastRecordingPath();
+    ASSERT_TRUE(QFileInfo::exists(recording)) << recording.toStdString();
+    const QByteArray before = contentsOf(recording);
+    const QString error = window.exercises().exportLastReportPdf(recording);
+    EXPECT_TRUE(error.contains(recording)) << error.toStdString();
+    EXPECT_EQ(contentsOf(recording), before) << "the recording is intact";
+    EXPECT_EQ(window.exercises().exportLastReportPdf(dir.filePath(QStringLiteral("report.pdf"))), QString());
 }
 
 TEST(ResultsDatabase, BrokenDatabaseIsNamedWithItsPathAndReason) {
