@@ -20,6 +20,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <new>
 
 namespace {
 
@@ -69,8 +70,11 @@ int main(int argc, char** argv) {
     });
     try {
         return runGui(argc, argv);
-    } catch (const std::exception& e) {
+    } catch (const std::bad_alloc&) {
         // Outside the event loop (start-up, shut-down): GuiApplication::notify catches the rest.
+        std::fprintf(stderr, "palpate: not enough memory to run (std::bad_alloc; is a memory limit set, e.g. ulimit -v?)\n");
+        return 1;
+    } catch (const std::exception& e) {
         std::fprintf(stderr, "palpate: %s\n", e.what());
         return 1;
     }
