@@ -108,7 +108,8 @@ void ExerciseController::listExampleExercises() {
     if (!anchor.empty()) {
         const QDir dir = QFileInfo(QString::fromStdString(anchor)).absoluteDir();
         for (const QFileInfo& file : dir.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
-            const auto loaded = guardedLoad(file.absoluteFilePath().toStdString(), [&] { return loadExercise(file.absoluteFilePath().toStdString()); });
+            const auto loaded = guardedLoad(file.absoluteFilePath().toStdString(),
+                                            [&] { return loadExercise(file.absoluteFilePath().toStdString()); });
             if (loaded.exercise) list.append({QString::fromStdString(loaded.exercise->name), file.absoluteFilePath()});
         }
     }
@@ -205,7 +206,8 @@ void ExerciseController::startRecording() {
     const QString stem = QStringLiteral("exercise-%1-%2").arg(slug(mAssets->exercise.name), stamp);
     QString path = QDir(folder).filePath(stem + QStringLiteral(".palprec"));
     // An automatic name never replaces a file: two sessions in one millisecond, or a copied folder.
-    for (int n = 2; QFileInfo::exists(path); ++n) path = QDir(folder).filePath(QStringLiteral("%1-%2.palprec").arg(stem).arg(n));
+    for (int n = 2; QFileInfo::exists(path); ++n)
+        path = QDir(folder).filePath(QStringLiteral("%1-%2.palprec").arg(stem).arg(n));
     // The note carries the exercise with its paths resolved, so the recording scores on its own.
     Exercise carried = mAssets->exercise;
     carried.meshPath = mAssets->meshPath;
@@ -342,9 +344,9 @@ void ExerciseController::finish(const QString& why) {
                                      : tr("the session is kept in the recording %1 (palpate-cli score scores it again)")
                                            .arg(QDir::toNativeSeparators(mRecordingPath));
             stored = tr("The result was NOT stored: %1; %2.").arg(error.isEmpty() ? databaseProblem() : error, kept);
-        }
-        else
+        } else {
             stored = tr("Result stored for %1.").arg(mTraineeName);
+        }
         mHistory.refresh();
         mHistory.setTrainee(mTraineeId);
     }

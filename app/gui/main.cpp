@@ -72,7 +72,8 @@ int main(int argc, char** argv) {
         return runGui(argc, argv);
     } catch (const std::bad_alloc&) {
         // Outside the event loop (start-up, shut-down): GuiApplication::notify catches the rest.
-        std::fprintf(stderr, "palpate: not enough memory to run (std::bad_alloc; is a memory limit set, e.g. ulimit -v?)\n");
+        std::fprintf(stderr,
+                     "palpate: not enough memory to run (std::bad_alloc; is a memory limit set, e.g. ulimit -v?)\n");
         return 1;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "palpate: %s\n", e.what());
@@ -235,8 +236,8 @@ int runGui(int argc, char** argv) {
 
     // Without --device: the interactive window has no hardware to find yet, so the mouse steers the
     // tool; screenshots, grabs and scripted runs keep the scripted stroke (deterministic pictures).
-    const QString fallbackUri =
-        QLatin1String(interactive ? palpate::HapticSession::kInteractiveDeviceUri : palpate::HapticSession::kDefaultDeviceUri);
+    const QString fallbackUri = QLatin1String(interactive ? palpate::HapticSession::kInteractiveDeviceUri
+                                                          : palpate::HapticSession::kDefaultDeviceUri);
     QString deviceUri = parser.isSet(deviceOption) ? parser.value(deviceOption) : fallbackUri;
     if (!parser.isSet(deviceOption) && interactive && !palpate::preferredDeviceUri().isEmpty())
         deviceUri = palpate::preferredDeviceUri();  // Preferences: the device at start
@@ -319,13 +320,14 @@ int runGui(int argc, char** argv) {
 
     window.resize(kWindowWidthPx, kWindowHeightPx);
     window.show();
-    if (interactive && !deviceProblem.isEmpty())
+    if (interactive && !deviceProblem.isEmpty()) {
         // Once the window is up, so that Preferences (behind this box) can be reached at once.
         QTimer::singleShot(0, &window, [&window, deviceProblem] {
             QMessageBox::warning(&window, palpate::MainWindow::tr("Device not opened"), deviceProblem);
         });
-    else if (interactive)
+    } else if (interactive) {
         palpate::maybeShowWelcome(window, parser.optionNames());  // not over --exercise etc.
+    }
     if (parser.isSet(showDockOption)) {
         const QStringList parts = parser.value(showDockOption).split(QLatin1Char(':'));
         auto* dock = window.findChild<QDockWidget*>(parts.front() + QStringLiteral("Dock"));

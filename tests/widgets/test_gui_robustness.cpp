@@ -135,8 +135,9 @@ TEST(StartupDevice, UnopenableDeviceGivesWayToTheFallbackAndIsNamed) {
 TEST(StartupDevice, CommandLineDeviceThatCannotOpenStillStartsTheGui) {
     QTemporaryDir dir;
     const QString shot = dir.filePath(QStringLiteral("shot.png"));
-    const GuiRun run = runGui(dir, {QStringLiteral("--device"), QStringLiteral("falcon:abc"), QStringLiteral("--screenshot"),
-                                 shot, QStringLiteral("--ticks"), QStringLiteral("20")});
+    const GuiRun run = runGui(dir,
+                              {QStringLiteral("--device"), QStringLiteral("falcon:abc"), QStringLiteral("--screenshot"),
+                               shot, QStringLiteral("--ticks"), QStringLiteral("20")});
     EXPECT_FALSE(run.crashed);
     EXPECT_EQ(run.exitCode, 0) << run.err.toStdString();
     EXPECT_TRUE(run.err.contains(QStringLiteral("falcon:abc"))) << run.err.toStdString();
@@ -165,8 +166,9 @@ TEST(StartupDevice, ReplayOfAnIntactRecordingStartsFromTheCommandLine) {
     const QString recording = makeRecording(dir);
     ASSERT_FALSE(recording.isEmpty());
     const QString shot = dir.filePath(QStringLiteral("replay.png"));
-    const GuiRun run = runGui(dir, {QStringLiteral("--device"), QStringLiteral("replay:") + recording,
-                                 QStringLiteral("--screenshot"), shot, QStringLiteral("--ticks"), QStringLiteral("100")});
+    const GuiRun run = runGui(dir,
+                              {QStringLiteral("--device"), QStringLiteral("replay:") + recording,
+                               QStringLiteral("--screenshot"), shot, QStringLiteral("--ticks"), QStringLiteral("100")});
     EXPECT_EQ(run.exitCode, 0) << run.err.toStdString();
     EXPECT_FALSE(run.err.contains(QStringLiteral("Cannot open"))) << run.err.toStdString();
     EXPECT_TRUE(run.out.contains(QStringLiteral("device replay:"))) << run.out.toStdString();
@@ -174,11 +176,14 @@ TEST(StartupDevice, ReplayOfAnIntactRecordingStartsFromTheCommandLine) {
 
 TEST(BadFiles, OverflowingNumberInAPresetIsAnErrorNamingTheFile) {
     QTemporaryDir dir;
-    const QString preset = writeEdited(resource("presets/tissues/phantom_gel.json"), dir.filePath(QStringLiteral("big.json")),
-                                       QStringLiteral("\"haptic_rate_hz\": 1000.0"), QStringLiteral("\"haptic_rate_hz\": 1e400"));
+    const QString preset = writeEdited(resource("presets/tissues/phantom_gel.json"),
+                                       dir.filePath(QStringLiteral("big.json")),
+                                       QStringLiteral("\"haptic_rate_hz\": 1000.0"),
+                                       QStringLiteral("\"haptic_rate_hz\": 1e400"));
     MainWindow window(RendererChoice::Software, LoopMode::Stepped);
     QString problem;
-    ASSERT_EQ(window.startSession(defaultMesh(), QStringLiteral("sim:press"), QStringLiteral("sim:stroke"), problem), QString());
+    ASSERT_EQ(window.startSession(defaultMesh(), QStringLiteral("sim:press"), QStringLiteral("sim:stroke"), problem),
+              QString());
     const QString error = window.loadPresetFile(preset);  // what --preset and the panel's Load… do
     EXPECT_TRUE(error.contains(QStringLiteral("big.json"))) << error.toStdString();
     EXPECT_EQ(window.loadPresetFile(resource("presets/tissues/phantom_gel.json")), QString());  // the window goes on
@@ -187,16 +192,23 @@ TEST(BadFiles, OverflowingNumberInAPresetIsAnErrorNamingTheFile) {
 
 TEST(BadFiles, OverflowingNumberInAnExerciseOrItsPresetIsNamedOnceByTheGui) {
     QTemporaryDir dir;
-    const QString exercise = writeEdited(resource("exercises/press_targets.json"), dir.filePath(QStringLiteral("big_ex.json")),
-                                         QStringLiteral("\"time_limit_s\": 40.0"), QStringLiteral("\"time_limit_s\": 1e400"));
-    const QString preset = writeEdited(resource("presets/tissues/skin.json"), dir.filePath(QStringLiteral("big_preset.json")),
-                                       QStringLiteral("\"haptic_rate_hz\": 1000.0"), QStringLiteral("\"haptic_rate_hz\": 1e400"));
-    const QString naming = writeEdited(resource("exercises/press_targets.json"), dir.filePath(QStringLiteral("names_big.json")),
-                                       QStringLiteral("\"presets/tissues/skin.json\""), QLatin1Char('"') + preset + QLatin1Char('"'));
+    const QString exercise = writeEdited(resource("exercises/press_targets.json"),
+                                         dir.filePath(QStringLiteral("big_ex.json")),
+                                         QStringLiteral("\"time_limit_s\": 40.0"),
+                                         QStringLiteral("\"time_limit_s\": 1e400"));
+    const QString preset = writeEdited(resource("presets/tissues/skin.json"),
+                                       dir.filePath(QStringLiteral("big_preset.json")),
+                                       QStringLiteral("\"haptic_rate_hz\": 1000.0"),
+                                       QStringLiteral("\"haptic_rate_hz\": 1e400"));
+    const QString naming = writeEdited(resource("exercises/press_targets.json"),
+                                       dir.filePath(QStringLiteral("names_big.json")),
+                                       QStringLiteral("\"presets/tissues/skin.json\""),
+                                       QLatin1Char('"') + preset + QLatin1Char('"'));
     for (const QString& file : {exercise, naming}) {
         SCOPED_TRACE(file.toStdString());
         const GuiRun run = runGui(dir, {QStringLiteral("--exercise"), file, QStringLiteral("--screenshot"),
-                                     dir.filePath(QStringLiteral("x.png")), QStringLiteral("--ticks"), QStringLiteral("5")});
+                                        dir.filePath(QStringLiteral("x.png")), QStringLiteral("--ticks"),
+                                        QStringLiteral("5")});
         EXPECT_FALSE(run.crashed) << run.err.toStdString();
         EXPECT_EQ(run.exitCode, 1);
         EXPECT_EQ(run.err.count(file), 1) << run.err.toStdString();  // named, and once
@@ -227,13 +239,15 @@ TEST(BadFiles, AFolderOrGarbageOpenedAsARecordingIsAnErrorNamingIt) {
     }
     MainWindow window(RendererChoice::Software, LoopMode::Stepped);
     QString problem;
-    ASSERT_EQ(window.startSession(defaultMesh(), QStringLiteral("sim:press"), QStringLiteral("sim:stroke"), problem), QString());
+    ASSERT_EQ(window.startSession(defaultMesh(), QStringLiteral("sim:press"), QStringLiteral("sim:stroke"), problem),
+              QString());
     for (const QString& path : {folder, garbage}) {
         SCOPED_TRACE(path.toStdString());
         QSignalSpy failed(window.recorderPanel(), &RecorderPanel::openFailed);
         window.openRecording(path);  // File > Open Recording…'s slot
         ASSERT_TRUE(failed.wait(20000));
-        EXPECT_TRUE(failed.front().front().toString().contains(path)) << failed.front().front().toString().toStdString();
+        EXPECT_TRUE(failed.front().front().toString().contains(path))
+            << failed.front().front().toString().toStdString();
         EXPECT_FALSE(window.inPlayback());
         window.advanceTicks(10);  // the live session goes on
     }
@@ -251,7 +265,8 @@ TEST(EventLoop, AnExceptionEscapingAnEventIsReportedAndTheLoopRunsOn) {
     for (int i = 0; i < 5 && !after; ++i) QCoreApplication::processEvents();
     app->setErrorHandler({});
     ASSERT_EQ(reported.size(), 1);
-    EXPECT_TRUE(reported.front().contains(QStringLiteral("bad.json: a loader threw"))) << reported.front().toStdString();
+    EXPECT_TRUE(reported.front().contains(QStringLiteral("bad.json: a loader threw")))
+        << reported.front().toStdString();
     EXPECT_TRUE(after) << "the events after the one that threw are delivered";
 }
 
@@ -325,7 +340,8 @@ void answerNextQuestion(QMessageBox::StandardButton button, bool& asked) {
 TEST(Saving, SuffixAddedAfterTheDialogAsksBeforeReplacing) {
     QTemporaryDir dir;
     const QString typed = dir.filePath(QStringLiteral("tissue"));
-    EXPECT_EQ(withSuffixConfirmed(nullptr, typed, QStringLiteral(".json")), typed + QStringLiteral(".json"));  // no such file
+    EXPECT_EQ(withSuffixConfirmed(nullptr, typed, QStringLiteral(".json")),
+              typed + QStringLiteral(".json"));  // no such file
     QFile(typed + QStringLiteral(".json")).open(QIODevice::WriteOnly);
     bool asked = false;
     answerNextQuestion(QMessageBox::No, asked);
@@ -357,7 +373,8 @@ TEST(Saving, ScorePdfIsNeverWrittenOverItsRecording) {
     MainWindow window(RendererChoice::Software, LoopMode::Stepped);
     window.recorderPanel()->setRecordingFolder(dir.filePath(QStringLiteral("recordings")));
     QString problem;
-    ASSERT_EQ(window.startSession(defaultMesh(), QStringLiteral("sim:path:") + resource("exercises/press_targets.good.path"),
+    ASSERT_EQ(window.startSession(defaultMesh(),
+                                  QStringLiteral("sim:path:") + resource("exercises/press_targets.good.path"),
                                   QStringLiteral("sim:stroke"), problem),
               QString());
     ASSERT_EQ(window.runExercise(resource("exercises/press_targets.json"), QString()), QString());  // a preview
@@ -383,7 +400,8 @@ TEST(ResultsDatabase, BrokenDatabaseIsNamedWithItsPathAndReason) {
     const QString openError = window.exercises().openDatabase(database);
     EXPECT_TRUE(openError.contains(QDir::toNativeSeparators(database))) << openError.toStdString();
     QString problem;
-    ASSERT_EQ(window.startSession(defaultMesh(), QStringLiteral("sim:press"), QStringLiteral("sim:stroke"), problem), QString());
+    ASSERT_EQ(window.startSession(defaultMesh(), QStringLiteral("sim:press"), QStringLiteral("sim:stroke"), problem),
+              QString());
     const QString exercise = resource("exercises/press_targets.json");
     const QString error = window.runExercise(exercise, QStringLiteral("Ada"));  // what --exercise --trainee does
     EXPECT_TRUE(error.contains(QDir::toNativeSeparators(database))) << error.toStdString();
