@@ -16,6 +16,7 @@
 #include "widgets/PreferencesDialog.h"
 #include "widgets/RecorderPanel.h"
 #include "widgets/SaveFileChoice.h"
+#include "widgets/TraineePanel.h"
 
 #include <gtest/gtest.h>
 
@@ -407,6 +408,26 @@ TEST(ResultsDatabase, BrokenDatabaseIsNamedWithItsPathAndReason) {
     EXPECT_TRUE(error.contains(QDir::toNativeSeparators(database))) << error.toStdString();
     EXPECT_TRUE(error.contains(openError)) << "the reason: " << error.toStdString();
     EXPECT_FALSE(error.startsWith(exercise)) << error.toStdString();
+}
+
+TEST(ResultsDatabase, AResultThatCannotBeStoredSaysWhereTheSessionIsKept) {
+    QTemporaryDir dir;
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    window.recorderPanel()->setRecordingFolder(dir.filePath(QStringLiteral("recordings")));
+    ASSERT_EQ(window.exercises().openDatabase(dir.filePath(QStringLiteral("results.sqlite"))), QString());
+    QString problem;
+    ASSERT_EQ(window.startSession(defaultMesh(), QStringLiteral("sim:path:") + resource("exercises/press_targets.good.path"),
+                                  QStringLiteral("sim:stroke"), problem),
+              QString());
+    ASSERT_EQ(window.runExercise(resource("exercises/press_targets.json"), QStringLiteral("Ada")), QString());
+    window.exercises().database().close();  // the database goes away during the session
+    for (int done = 0; done < 60000 && window.exercises().running(); done += 100) window.advanceTicks(100);
+    const QString recording = QDir::toNativeSeparators(window.exercises().lastRecordingPath());
+    ASSERT_TRUE(QFileInfo::exists(recording));
+    QString message;
+    for (const QLabel* label : window.traineePanel()->findChildren<QLabel*>())
+        if (label->text().contains(QStringLiteral("NOT stored"))) message = label->text();
+    EXPECT_TRUE(message.contains(recording)) << message.toStdString();
 }
 
 int main(int argc, char** argv) {
