@@ -416,7 +416,8 @@ TEST(ResultsDatabase, AResultThatCannotBeStoredSaysWhereTheSessionIsKept) {
     window.recorderPanel()->setRecordingFolder(dir.filePath(QStringLiteral("recordings")));
     ASSERT_EQ(window.exercises().openDatabase(dir.filePath(QStringLiteral("results.sqlite"))), QString());
     QString problem;
-    ASSERT_EQ(window.startSession(defaultMesh(), QStringLiteral("sim:path:") + resource("exercises/press_targets.good.path"),
+    ASSERT_EQ(window.startSession(defaultMesh(),
+                                  QStringLiteral("sim:path:") + resource("exercises/press_targets.good.path"),
                                   QStringLiteral("sim:stroke"), problem),
               QString());
     ASSERT_EQ(window.runExercise(resource("exercises/press_targets.json"), QStringLiteral("Ada")), QString());
