@@ -39,6 +39,7 @@
 #include <fcntl.h>
 #include <stdexcept>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
 
@@ -117,7 +118,11 @@ TEST(StartupDevice, UnopenableDeviceGivesWayToTheFallbackAndIsNamed) {
         ASSERT_TRUE(file.open(QIODevice::WriteOnly));
         file.write("this is not a recording");
     }
-    for (const QString& uri : {QStringLiteral("falcon:abc"), QStringLiteral("replay:") + garbage}) {
+    // A FIFO and a folder are refused before they are read: the FIFO would block the start forever.
+    const QString fifo = dir.filePath(QStringLiteral("fifo.palprec"));
+    ASSERT_EQ(::mkfifo(fifo.toLocal8Bit().constData(), 0644), 0);
+    for (const QString& uri : {QStringLiteral("falcon:abc"), QStringLiteral("replay:") + garbage,
+                               QStringLiteral("replay:") + fifo, QStringLiteral("replay:") + dir.path()}) {
         SCOPED_TRACE(uri.toStdString());
         MainWindow window(RendererChoice::Software, LoopMode::Stepped);
         QString problem;
