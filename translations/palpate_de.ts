@@ -3745,6 +3745,14 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>The replay stopped early: %1. The %2 ticks replayed match the recording.</source>
         <translation>Die Wiedergabe endete früh: %1. Die %2 wiedergegebenen Ticks stimmen mit der Aufnahme überein.</translation>
     </message>
+    <message>
+        <source>%1: is a folder, not a recording</source>
+        <translation>%1: ist ein Ordner, keine Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (a FIFO or a device), not a recording</source>
+        <translation>%1: ist keine gewöhnliche Datei (ein FIFO oder ein Gerät), keine Aufzeichnung</translation>
+    </message>
 </context>
 <context>
     <name>palpate::RecordingTimeline</name>

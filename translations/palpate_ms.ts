@@ -3741,6 +3741,14 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>The replay stopped early: %1. The %2 ticks replayed match the recording.</source>
         <translation>Main semula berhenti awal: %1. %2 tik yang dimainkan semula sepadan dengan rakaman.</translation>
     </message>
+    <message>
+        <source>%1: is a folder, not a recording</source>
+        <translation>%1: ialah folder, bukan rakaman</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (a FIFO or a device), not a recording</source>
+        <translation>%1: bukan fail biasa (FIFO atau peranti), bukan rakaman</translation>
+    </message>
 </context>
 <context>
     <name>palpate::RecordingTimeline</name>

@@ -247,7 +247,9 @@ TEST(BadFiles, AFolderOrGarbageOpenedAsARecordingIsAnErrorNamingIt) {
     QString problem;
     ASSERT_EQ(window.startSession(defaultMesh(), QStringLiteral("sim:press"), QStringLiteral("sim:stroke"), problem),
               QString());
-    for (const QString& path : {folder, garbage}) {
+    const QString fifo = dir.filePath(QStringLiteral("fifo.palprec"));
+    ASSERT_EQ(::mkfifo(fifo.toLocal8Bit().constData(), 0644), 0);
+    for (const QString& path : {folder, garbage, fifo}) {
         SCOPED_TRACE(path.toStdString());
         QSignalSpy failed(window.recorderPanel(), &RecorderPanel::openFailed);
         window.openRecording(path);  // File > Open Recording…'s slot
