@@ -12,6 +12,7 @@
 #include "app/gui/MainWindow.h"
 #include "widgets/ChartsPanel.h"
 #include "widgets/DevicePanel.h"
+#include "widgets/ExerciseEditorPanel.h"
 #include "widgets/GuardedLoad.h"
 #include "widgets/PreferencesDialog.h"
 #include "widgets/RecorderPanel.h"
@@ -180,7 +181,7 @@ TEST(StartupDevice, ReplayOfAnIntactRecordingStartsFromTheCommandLine) {
     EXPECT_TRUE(run.out.contains(QStringLiteral("device replay:"))) << run.out.toStdString();
 }
 
-TEST(BadFiles, OverflowingNumberInAPresetIsAnErrorNamingTheFile) {
+TEST(BadFiles, OverflowingNumberInAPresetOrExerciseOpenedInTheWindowIsAnErrorNamingTheFile) {
     QTemporaryDir dir;
     const QString preset = writeEdited(resource("presets/tissues/phantom_gel.json"),
                                        dir.filePath(QStringLiteral("big.json")),
@@ -193,6 +194,12 @@ TEST(BadFiles, OverflowingNumberInAPresetIsAnErrorNamingTheFile) {
     const QString error = window.loadPresetFile(preset);  // what --preset and the panel's Load… do
     EXPECT_TRUE(error.contains(QStringLiteral("big.json"))) << error.toStdString();
     EXPECT_EQ(window.loadPresetFile(resource("presets/tissues/phantom_gel.json")), QString());  // the window goes on
+    window.advanceTicks(10);
+    const QString exercise = writeEdited(resource("exercises/press_targets.json"), dir.filePath(QStringLiteral("big_ex.json")),
+                                         QStringLiteral("\"time_limit_s\": 40.0"), QStringLiteral("\"time_limit_s\": 1e400"));
+    // Exercise > Open Exercise…'s slot, and the editor's Open.
+    EXPECT_TRUE(window.exercises().addExerciseFile(exercise).contains(exercise));
+    EXPECT_TRUE(window.exerciseEditor()->openExercise(exercise).contains(exercise));
     window.advanceTicks(10);
 }
 
