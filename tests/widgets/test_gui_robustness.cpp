@@ -195,8 +195,10 @@ TEST(BadFiles, OverflowingNumberInAPresetOrExerciseOpenedInTheWindowIsAnErrorNam
     EXPECT_TRUE(error.contains(QStringLiteral("big.json"))) << error.toStdString();
     EXPECT_EQ(window.loadPresetFile(resource("presets/tissues/phantom_gel.json")), QString());  // the window goes on
     window.advanceTicks(10);
-    const QString exercise = writeEdited(resource("exercises/press_targets.json"), dir.filePath(QStringLiteral("big_ex.json")),
-                                         QStringLiteral("\"time_limit_s\": 40.0"), QStringLiteral("\"time_limit_s\": 1e400"));
+    const QString exercise = writeEdited(resource("exercises/press_targets.json"),
+                                         dir.filePath(QStringLiteral("big_ex.json")),
+                                         QStringLiteral("\"time_limit_s\": 40.0"),
+                                         QStringLiteral("\"time_limit_s\": 1e400"));
     // Exercise > Open Exercise…'s slot, and the editor's Open.
     EXPECT_TRUE(window.exercises().addExerciseFile(exercise).contains(exercise));
     EXPECT_TRUE(window.exerciseEditor()->openExercise(exercise).contains(exercise));
