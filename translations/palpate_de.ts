@@ -178,6 +178,10 @@
         <source>Every model&apos;s largest force step while sliding at constant depth, against its tick cost (palpate-cli bench feel).</source>
         <translation>Größter Kraftsprung jedes Modells beim Gleiten in konstanter Tiefe, gegen seinen Tick-Aufwand (palpate-cli bench feel).</translation>
     </message>
+    <message>
+        <source>%1: not saved, %2 exists and is not a sweep&apos;s description (it would be replaced); choose another name</source>
+        <translation>%1: nicht gespeichert, %2 existiert und ist keine Beschreibung einer Messreihe (sie würde ersetzt); wählen Sie einen anderen Namen</translation>
+    </message>
 </context>
 <context>
     <name>palpate::DevicePanel</name>
@@ -469,10 +473,6 @@
 <context>
     <name>palpate::ExerciseController</name>
     <message>
-        <source>The results database is not open: trainees cannot be stored.</source>
-        <translation>Die Ergebnisdatenbank ist nicht geöffnet: Teilnehmer können nicht gespeichert werden.</translation>
-    </message>
-    <message>
         <source>Choose a trainee, or add one with New…, before starting.</source>
         <translation>Wählen Sie einen Teilnehmer, oder legen Sie mit „Neu…“ einen an, bevor Sie beginnen.</translation>
     </message>
@@ -525,14 +525,6 @@
         <translation>Übung beendet: %1</translation>
     </message>
     <message>
-        <source>The result was NOT stored: %1</source>
-        <translation>Das Ergebnis wurde NICHT gespeichert: %1</translation>
-    </message>
-    <message>
-        <source>the results database is not open</source>
-        <translation>die Ergebnisdatenbank ist nicht geöffnet</translation>
-    </message>
-    <message>
         <source>Result stored for %1.</source>
         <translation>Ergebnis für %1 gespeichert.</translation>
     </message>
@@ -551,6 +543,30 @@
     <message>
         <source>This result has no recording to report from.</source>
         <translation>Dieses Ergebnis hat keine Aufnahme für einen Bericht.</translation>
+    </message>
+    <message>
+        <source>no results database is open</source>
+        <translation>keine Ergebnisdatenbank ist geöffnet</translation>
+    </message>
+    <message>
+        <source>%1: trainees cannot be stored.</source>
+        <translation>%1: Teilnehmer können nicht gespeichert werden.</translation>
+    </message>
+    <message>
+        <source>the session was not recorded, so it is lost</source>
+        <translation>die Sitzung wurde nicht aufgezeichnet und ist daher verloren</translation>
+    </message>
+    <message>
+        <source>the session is kept in the recording %1 (palpate-cli score scores it again)</source>
+        <translation>die Sitzung bleibt in der Aufzeichnung %1 erhalten (palpate-cli score bewertet sie erneut)</translation>
+    </message>
+    <message>
+        <source>The result was NOT stored: %1; %2.</source>
+        <translation>Das Ergebnis wurde NICHT gespeichert: %1; %2.</translation>
+    </message>
+    <message>
+        <source>%1: is the recording the report is made from; choose another file for the PDF</source>
+        <translation>%1: ist die Aufzeichnung, aus der der Bericht entsteht; wählen Sie eine andere Datei für das PDF</translation>
     </message>
 </context>
 <context>
@@ -1518,6 +1534,21 @@ Tick %7 µs, %8-mal schneller als previous</translation>
     <message>
         <source>excessive ≥ %1 N ▸</source>
         <translation>zu stark ≥ %1 N ▸</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::GuiApplication</name>
+    <message>
+        <source>%1 (while %2 handled an event; the window goes on)</source>
+        <translation>%1 (während %2 ein Ereignis bearbeitete; das Fenster läuft weiter)</translation>
+    </message>
+    <message>
+        <source>an unknown error (the window goes on)</source>
+        <translation>ein unbekannter Fehler (das Fenster läuft weiter)</translation>
+    </message>
+    <message>
+        <source>Palpate</source>
+        <translation>Palpate</translation>
     </message>
 </context>
 <context>
@@ -2530,6 +2561,20 @@ Pausiert: %13</translation>
     <message>
         <source>force %1 (clipped at device max)</source>
         <translation>Kraft %1 (auf das Gerätemaximum begrenzt)</translation>
+    </message>
+    <message>
+        <source>Cannot open the device %1: %2
+Running with %3 instead: choose another in the Device dock or in Edit &gt; Preferences.</source>
+        <translation>Das Gerät %1 kann nicht geöffnet werden: %2
+Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbeiten &gt; Einstellungen.</translation>
+    </message>
+    <message>
+        <source>Cannot open %1; running with %2</source>
+        <translation>%1 kann nicht geöffnet werden; es läuft %2</translation>
+    </message>
+    <message>
+        <source>Device not opened</source>
+        <translation>Gerät nicht geöffnet</translation>
     </message>
 </context>
 <context>
@@ -3700,6 +3745,14 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>The replay stopped early: %1. The %2 ticks replayed match the recording.</source>
         <translation>Die Wiedergabe endete früh: %1. Die %2 wiedergegebenen Ticks stimmen mit der Aufnahme überein.</translation>
     </message>
+    <message>
+        <source>%1: is a folder, not a recording</source>
+        <translation>%1: ist ein Ordner, keine Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (a FIFO or a device), not a recording</source>
+        <translation>%1: ist keine gewöhnliche Datei (ein FIFO oder ein Gerät), keine Aufzeichnung</translation>
+    </message>
 </context>
 <context>
     <name>palpate::RecordingTimeline</name>
@@ -3813,6 +3866,17 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
     <message>
         <source>cannot migrate from schema version 2 to 3: %1</source>
         <translation>Schema-Version 2 kann nicht zu 3 migriert werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::SaveFileChoice</name>
+    <message>
+        <source>Replace the file?</source>
+        <translation>Datei ersetzen?</translation>
+    </message>
+    <message>
+        <source>%1 already exists. Replace it?</source>
+        <translation>%1 existiert bereits. Ersetzen?</translation>
     </message>
 </context>
 <context>

@@ -178,6 +178,10 @@
         <source>Every model&apos;s largest force step while sliding at constant depth, against its tick cost (palpate-cli bench feel).</source>
         <translation>Lompatan daya terbesar setiap model semasa menggelongsor pada kedalaman tetap, berbanding kos tiknya (palpate-cli bench feel).</translation>
     </message>
+    <message>
+        <source>%1: not saved, %2 exists and is not a sweep&apos;s description (it would be replaced); choose another name</source>
+        <translation>%1: tidak disimpan, %2 wujud dan bukan penerangan sapuan (ia akan diganti); pilih nama lain</translation>
+    </message>
 </context>
 <context>
     <name>palpate::DevicePanel</name>
@@ -469,10 +473,6 @@
 <context>
     <name>palpate::ExerciseController</name>
     <message>
-        <source>The results database is not open: trainees cannot be stored.</source>
-        <translation>Pangkalan data keputusan tidak dibuka: pelatih tidak dapat disimpan.</translation>
-    </message>
-    <message>
         <source>Choose a trainee, or add one with New…, before starting.</source>
         <translation>Pilih pelatih, atau tambah satu dengan Baharu…, sebelum bermula.</translation>
     </message>
@@ -525,14 +525,6 @@
         <translation>Latihan tamat: %1</translation>
     </message>
     <message>
-        <source>The result was NOT stored: %1</source>
-        <translation>Keputusan TIDAK disimpan: %1</translation>
-    </message>
-    <message>
-        <source>the results database is not open</source>
-        <translation>pangkalan data keputusan tidak dibuka</translation>
-    </message>
-    <message>
         <source>Result stored for %1.</source>
         <translation>Keputusan disimpan untuk %1.</translation>
     </message>
@@ -551,6 +543,30 @@
     <message>
         <source>This result has no recording to report from.</source>
         <translation>Keputusan ini tiada rakaman untuk dilaporkan.</translation>
+    </message>
+    <message>
+        <source>no results database is open</source>
+        <translation>tiada pangkalan data keputusan dibuka</translation>
+    </message>
+    <message>
+        <source>%1: trainees cannot be stored.</source>
+        <translation>%1: pelatih tidak dapat disimpan.</translation>
+    </message>
+    <message>
+        <source>the session was not recorded, so it is lost</source>
+        <translation>sesi tidak dirakam, jadi ia hilang</translation>
+    </message>
+    <message>
+        <source>the session is kept in the recording %1 (palpate-cli score scores it again)</source>
+        <translation>sesi disimpan dalam rakaman %1 (palpate-cli score menilainya semula)</translation>
+    </message>
+    <message>
+        <source>The result was NOT stored: %1; %2.</source>
+        <translation>Keputusan TIDAK disimpan: %1; %2.</translation>
+    </message>
+    <message>
+        <source>%1: is the recording the report is made from; choose another file for the PDF</source>
+        <translation>%1: ialah rakaman yang menjadi sumber laporan; pilih fail lain untuk PDF</translation>
     </message>
 </context>
 <context>
@@ -1518,6 +1534,21 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
     <message>
         <source>excessive ≥ %1 N ▸</source>
         <translation>berlebihan ≥ %1 N ▸</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::GuiApplication</name>
+    <message>
+        <source>%1 (while %2 handled an event; the window goes on)</source>
+        <translation>%1 (semasa %2 mengendalikan peristiwa; tetingkap terus berjalan)</translation>
+    </message>
+    <message>
+        <source>an unknown error (the window goes on)</source>
+        <translation>ralat yang tidak diketahui (tetingkap terus berjalan)</translation>
+    </message>
+    <message>
+        <source>Palpate</source>
+        <translation>Palpate</translation>
     </message>
 </context>
 <context>
@@ -2527,6 +2558,20 @@ pemapar %4</translation>
     <message>
         <source>force %1 (clipped at device max)</source>
         <translation>daya %1 (dihadkan pada maksimum peranti)</translation>
+    </message>
+    <message>
+        <source>Cannot open the device %1: %2
+Running with %3 instead: choose another in the Device dock or in Edit &gt; Preferences.</source>
+        <translation>Peranti %1 tidak dapat dibuka: %2
+Menggunakan %3 sebagai ganti: pilih yang lain dalam dok Peranti atau dalam Sunting &gt; Keutamaan.</translation>
+    </message>
+    <message>
+        <source>Cannot open %1; running with %2</source>
+        <translation>%1 tidak dapat dibuka; menggunakan %2</translation>
+    </message>
+    <message>
+        <source>Device not opened</source>
+        <translation>Peranti tidak dibuka</translation>
     </message>
 </context>
 <context>
@@ -3696,6 +3741,14 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>The replay stopped early: %1. The %2 ticks replayed match the recording.</source>
         <translation>Main semula berhenti awal: %1. %2 tik yang dimainkan semula sepadan dengan rakaman.</translation>
     </message>
+    <message>
+        <source>%1: is a folder, not a recording</source>
+        <translation>%1: ialah folder, bukan rakaman</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (a FIFO or a device), not a recording</source>
+        <translation>%1: bukan fail biasa (FIFO atau peranti), bukan rakaman</translation>
+    </message>
 </context>
 <context>
     <name>palpate::RecordingTimeline</name>
@@ -3809,6 +3862,17 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
     <message>
         <source>cannot migrate from schema version 2 to 3: %1</source>
         <translation>tidak dapat memindahkan skema versi 2 ke 3: %1</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::SaveFileChoice</name>
+    <message>
+        <source>Replace the file?</source>
+        <translation>Ganti fail?</translation>
+    </message>
+    <message>
+        <source>%1 already exists. Replace it?</source>
+        <translation>%1 sudah wujud. Gantikannya?</translation>
     </message>
 </context>
 <context>

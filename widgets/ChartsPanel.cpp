@@ -1,5 +1,6 @@
 #include "widgets/ChartsPanel.h"
 
+#include "widgets/SaveFileChoice.h"
 #include "engine/accuracy/SweepCsv.h"
 #include "app/report/SpeedAccuracyChart.h"
 #include "widgets/FeelPanel.h"
@@ -407,6 +408,12 @@ bool ChartsPanel::saveCsv(const QString& path, QString* error) {
         }
         return true;
     };
+    // The sweep's description goes beside the CSV (FILE.json): a file of that name that is not one
+    // (a preset, an exercise) is not the user's to lose for a CSV they chose to replace.
+    if (mShownContact && QFileInfo::exists(sidecarJson(path)) && !readSidecarContact(path))
+        return fail(tr("%1: not saved, %2 exists and is not a sweep's description (it would be replaced); choose "
+                       "another name")
+                        .arg(QDir::toNativeSeparators(path), QDir::toNativeSeparators(sidecarJson(path))));
     QString why;
     if (!write(path, sweepToCsv(points()), why))
         return fail(tr("%1: cannot be written (%2)").arg(QDir::toNativeSeparators(path), why));
@@ -433,8 +440,8 @@ void ChartsPanel::openCsvDialog() {
 void ChartsPanel::saveCsvDialog() {
     const QString start = QDir(mLastDirectory.isEmpty() ? QDir::currentPath() : mLastDirectory).filePath(QStringLiteral("sweep.csv"));
     QString path = QFileDialog::getSaveFileName(this, tr("Save sweep CSV"), start, tr("Sweep CSV (*.csv);;All files (*)"));
+    path = withSuffixConfirmed(this, path, QStringLiteral(".csv"));
     if (path.isEmpty()) return;
-    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".csv");
     saveCsv(path);
 }
 

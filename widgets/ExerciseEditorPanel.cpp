@@ -1,5 +1,7 @@
 #include "widgets/ExerciseEditorPanel.h"
 
+#include "widgets/SaveFileChoice.h"
+#include "widgets/GuardedLoad.h"
 #include "widgets/ScrollWheelGuard.h"
 
 #include "widgets/ExerciseEditCommands.h"
@@ -941,7 +943,7 @@ void ExerciseEditorPanel::newExercise(ExerciseType type) {
 }
 
 QString ExerciseEditorPanel::openExercise(const QString& path) {
-    const ExerciseLoadResult result = loadExercise(ss(path));
+    const ExerciseLoadResult result = guardedLoad(ss(path), [&] { return loadExercise(ss(path)); });
     if (!result.exercise) {
         QStringList errors;
         for (const std::string& error : result.errors) errors << qs(error);
@@ -1010,8 +1012,8 @@ bool ExerciseEditorPanel::saveAsDialog() {
                     (base.isEmpty() ? QStringLiteral("exercise") : base) + QStringLiteral(".json");
     }
     QString path = QFileDialog::getSaveFileName(this, tr("Save exercise"), suggested, tr("Exercises (*.json)"));
+    path = withSuffixConfirmed(this, path, QStringLiteral(".json"));
     if (path.isEmpty()) return false;
-    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
     return saveExercise(path).isEmpty();
 }
 
@@ -1602,7 +1604,7 @@ const std::vector<double>* ExerciseEditorPanel::touchForces(const QString& meshF
         mProbe.reset();
         mProbeForces.clear();
         mReachError.clear();
-        const PresetLoadResult loaded = loadTissuePreset(ss(presetFile));
+        const PresetLoadResult loaded = guardedLoad(ss(presetFile), [&] { return loadTissuePreset(ss(presetFile)); });
         std::string error = loaded.errors.empty() ? std::string("not a tissue preset") : loaded.errors.front();
         // Press targets have no physics of their own: the scene is the tissue's as it is.
         if (loaded.preset) mProbe = TouchForceProbe::create(mesh, *loaded.preset, nullptr, touchReach(), error);

@@ -1,5 +1,7 @@
 #include "widgets/ParameterPanel.h"
 
+#include "widgets/SaveFileChoice.h"
+#include "widgets/GuardedLoad.h"
 #include "widgets/ScrollWheelGuard.h"
 
 #include "widgets/ParameterCommands.h"
@@ -786,7 +788,8 @@ void ParameterPanel::setTissuePresetDirectory(const QString& directory) {
     const QStringList files = dir.entryList({QStringLiteral("*.json")}, QDir::Files | QDir::Readable, QDir::Name);
     for (const QString& file : files) {
         const QString path = dir.absoluteFilePath(file);
-        const PresetLoadResult loaded = loadTissuePreset(QDir::toNativeSeparators(path).toStdString());
+        const std::string native = QDir::toNativeSeparators(path).toStdString();
+        const PresetLoadResult loaded = guardedLoad(native, [&] { return loadTissuePreset(native); });
         if (!loaded.preset) continue;  // a broken file is reported when loaded by hand, not here
         const TissuePreset& preset = *loaded.preset;
         QString tip = QString::fromStdString(preset.description);
@@ -1226,7 +1229,8 @@ void ParameterPanel::apply() {
 }
 
 bool ParameterPanel::loadPresetFile(const QString& path, QString* error) {
-    const PresetLoadResult result = loadTissuePreset(QDir::toNativeSeparators(path).toStdString());
+    const std::string file = QDir::toNativeSeparators(path).toStdString();
+    const PresetLoadResult result = guardedLoad(file, [&] { return loadTissuePreset(file); });
     if (!result.preset) {
         mFileErrors.clear();
         for (const std::string& message : result.errors) mFileErrors << QString::fromStdString(message);
@@ -1299,8 +1303,8 @@ void ParameterPanel::savePresetDialog() {
                     .filePath(QString::fromStdString(mShown.name) + QStringLiteral(".json"));
     QString path = QFileDialog::getSaveFileName(this, tr("Save preset"), start,
                                                 tr("Tissue presets (*.json);;All files (*)"));
+    path = withSuffixConfirmed(this, path, QStringLiteral(".json"));
     if (path.isEmpty()) return;
-    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
     savePresetFile(path);
 }
 

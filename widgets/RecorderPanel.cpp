@@ -471,21 +471,37 @@ bool RecorderPanel::openRecording(const QString& path) {
     mJob = Job::Open;
     startWorker([this, result] {
         const QString& p = result->path;
-        auto reader = std::make_shared<RecordingReader>(RecordingReader::open(p.toStdString()));
-        result->error = openProblem(*reader, p);
+        // Refused before it is read: reading a FIFO would block this worker, and the window's
+        // close waiting for it, forever.
+        const QFileInfo info(p);
+        if (info.exists() && info.isDir()) result->error = tr("%1: is a folder, not a recording").arg(p);
+        else if (info.exists() && !info.isFile())
+            result->error = tr("%1: is not a regular file (a FIFO or a device), not a recording").arg(p);
+        // Off the GUI thread no event loop catches an exception: it would end the process, and
+        // without the result posted the dock would wait for it forever.
         if (result->error.isEmpty()) {
-            std::string error;
-            result->player = RecordingPlayer::open(*reader, error);
-            if (!result->player) {
-                QString why = QString::fromStdString(error);
-                result->error = why.contains(p) ? why : tr("%1: cannot replay: %2").arg(p, why);
-            } else {
-                result->player->step(1);  // something to show: the first tick
+            try {
+                auto reader = std::make_shared<RecordingReader>(RecordingReader::open(p.toStdString()));
+                result->error = openProblem(*reader, p);
+                if (result->error.isEmpty()) {
+                    std::string error;
+                    result->player = RecordingPlayer::open(*reader, error);
+                    if (!result->player) {
+                        QString why = QString::fromStdString(error);
+                        result->error = why.contains(p) ? why : tr("%1: cannot replay: %2").arg(p, why);
+                    } else {
+                        result->player->step(1);  // something to show: the first tick
+                    }
+                }
+                result->warning = damageWarning(*reader, p);
+                result->warningDetails = damageDetails(*reader);
+                result->reader = std::move(reader);
+            } catch (const std::exception& e) {
+                result->player.reset();
+                result->reader.reset();
+                result->error = tr("%1: cannot replay: %2").arg(p, QString::fromLocal8Bit(e.what()));
             }
         }
-        result->warning = damageWarning(*reader, p);
-        result->warningDetails = damageDetails(*reader);
-        result->reader = std::move(reader);
         QMetaObject::invokeMethod(this, [this, result] { onOpenFinished(result); }, Qt::QueuedConnection);
     });
     return true;

@@ -4,6 +4,7 @@
 #include "engine/exercise/ExerciseFile.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
+#include "widgets/GuardedLoad.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/ScoreCard.h"
 #include "app/report/ScoreReportFromRecording.h"
@@ -68,9 +69,11 @@ QString ExerciseController::openDatabase(const QString& path) {
     QDir().mkpath(QFileInfo(path).absolutePath());
     QString error;
     if (!mDatabase.open(path, &error)) {
+        mDatabaseError = error;
         mPanel.setMessage(error);
         return error;
     }
+    mDatabaseError.clear();
     refreshTrainees(-1);
     mHistory.setDatabase(&mDatabase);
     return {};
@@ -85,8 +88,13 @@ void ExerciseController::refreshTrainees(qint64 select) {
     if (mPanel.traineeId() >= 0) mHistory.setTrainee(mPanel.traineeId());
 }
 
+QString ExerciseController::databaseProblem() const {
+    if (!mDatabaseError.isEmpty()) return mDatabaseError;
+    return tr("no results database is open");
+}
+
 QString ExerciseController::addTrainee(const QString& name) {
-    if (!mDatabase.isOpen()) return tr("The results database is not open: trainees cannot be stored.");
+    if (!mDatabase.isOpen()) return tr("%1: trainees cannot be stored.").arg(databaseProblem());
     QString error;
     const qint64 id = mDatabase.addTrainee(name.trimmed(), &error);
     if (id < 0) return error;
@@ -100,7 +108,8 @@ void ExerciseController::listExampleExercises() {
     if (!anchor.empty()) {
         const QDir dir = QFileInfo(QString::fromStdString(anchor)).absoluteDir();
         for (const QFileInfo& file : dir.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
-            const auto loaded = loadExercise(file.absoluteFilePath().toStdString());
+            const auto loaded = guardedLoad(file.absoluteFilePath().toStdString(),
+                                            [&] { return loadExercise(file.absoluteFilePath().toStdString()); });
             if (loaded.exercise) list.append({QString::fromStdString(loaded.exercise->name), file.absoluteFilePath()});
         }
     }
@@ -108,7 +117,7 @@ void ExerciseController::listExampleExercises() {
 }
 
 QString ExerciseController::addExerciseFile(const QString& path) {
-    const auto loaded = loadExercise(path.toStdString());
+    const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
     if (!loaded.exercise) return joined(loaded.errors);
     mPanel.addExercise(QString::fromStdString(loaded.exercise->name), QFileInfo(path).absoluteFilePath());
     mExercisePicked = true;
@@ -119,7 +128,7 @@ void ExerciseController::followMesh(const QString& meshPath) {
     if (running() || mExercisePicked || meshPath.isEmpty()) return;
     const QString shown = QFileInfo(meshPath).canonicalFilePath();
     for (const auto& [title, path] : mPanel.exercises()) {
-        const auto loaded = loadExercise(path.toStdString());
+        const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
         if (!loaded.exercise) continue;
         const std::string mesh = resolveExercisePath(*loaded.exercise, loaded.exercise->meshPath, cli::findResource);
         if (!mesh.empty() && QFileInfo(QString::fromStdString(mesh)).canonicalFilePath() == shown) {
@@ -134,7 +143,7 @@ void ExerciseController::showExerciseDescription(const QString& path) {
         mPanel.setExerciseDescription({});
         return;
     }
-    const auto loaded = loadExercise(path.toStdString());
+    const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
     mPanel.setExerciseDescription(loaded.exercise ? QString::fromStdString(loaded.exercise->description)
                                                   : joined(loaded.errors));
     if (!running()) mPanel.setState(TraineePanel::State::Idle);
@@ -144,7 +153,7 @@ QString ExerciseController::start() {
     if (mPanel.traineeId() < 0) return tr("Choose a trainee, or add one with New…, before starting.");
     const QString path = mPanel.exercisePath();
     if (path.isEmpty()) return tr("Choose an exercise first.");
-    const auto loaded = loadExercise(path.toStdString());
+    const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
     if (!loaded.exercise) return joined(loaded.errors);
     return begin(*loaded.exercise, false);
 }
@@ -155,7 +164,12 @@ QString ExerciseController::begin(const Exercise& exercise, bool preview) {
     if (running()) return tr("An exercise is already running: stop it first.");
     std::vector<std::string> errors = validateExercise(exercise);
     if (!errors.empty()) return joined(errors);
-    auto assets = loadExerciseAssets(exercise, cli::findResource, errors);
+    std::optional<ExerciseAssets> assets;
+    try {
+        assets = loadExerciseAssets(exercise, cli::findResource, errors);
+    } catch (const std::exception& e) {  // the loaders should not throw; no file may abort the window
+        errors.push_back(exercise.sourcePath + ": " + e.what());
+    }
     if (!assets) return joined(errors);
     if (const std::string error = mSession.loadExercise(*assets); !error.empty()) return QString::fromStdString(error);
     mAssets = std::move(assets);
@@ -189,7 +203,11 @@ void ExerciseController::startRecording() {
         return;
     }
     const QString stamp = QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss-zzz"));
-    const QString path = QDir(folder).filePath(QStringLiteral("exercise-%1-%2.palprec").arg(slug(mAssets->exercise.name), stamp));
+    const QString stem = QStringLiteral("exercise-%1-%2").arg(slug(mAssets->exercise.name), stamp);
+    QString path = QDir(folder).filePath(stem + QStringLiteral(".palprec"));
+    // An automatic name never replaces a file: two sessions in one millisecond, or a copied folder.
+    for (int n = 2; QFileInfo::exists(path); ++n)
+        path = QDir(folder).filePath(QStringLiteral("%1-%2.palprec").arg(stem).arg(n));
     // The note carries the exercise with its paths resolved, so the recording scores on its own.
     Exercise carried = mAssets->exercise;
     carried.meshPath = mAssets->meshPath;
@@ -319,10 +337,16 @@ void ExerciseController::finish(const QString& why) {
                                                   QString::fromStdString(mAssets->exercise.sourcePath), mStartedUtc,
                                                   report.guidance.exerciseTimeS, mRecordingPath, &error)
                             : -1;
-        if (mLastResultId < 0)
-            stored = tr("The result was NOT stored: %1").arg(error.isEmpty() ? tr("the results database is not open") : error);
-        else
+        if (mLastResultId < 0) {
+            // Never lost silently: say what keeps the session, from which it can be scored again.
+            const QString kept = mRecordingPath.isEmpty()
+                                     ? tr("the session was not recorded, so it is lost")
+                                     : tr("the session is kept in the recording %1 (palpate-cli score scores it again)")
+                                           .arg(QDir::toNativeSeparators(mRecordingPath));
+            stored = tr("The result was NOT stored: %1; %2.").arg(error.isEmpty() ? databaseProblem() : error, kept);
+        } else {
             stored = tr("Result stored for %1.").arg(mTraineeName);
+        }
         mHistory.refresh();
         mHistory.setTrainee(mTraineeId);
     }
@@ -347,6 +371,11 @@ QString ExerciseController::exportResultPdf(const ResultRecord& result, const QS
 }
 
 QString ExerciseController::exportReportPdf(const QString& recordingPath, const QString& trainee, const QString& path) {
+    // An input is never overwritten by an output: the PDF over its own recording would lose the session.
+    const QFileInfo out(path), in(recordingPath);
+    if (out.exists() && in.exists() && out.canonicalFilePath() == in.canonicalFilePath())
+        return tr("%1: is the recording the report is made from; choose another file for the PDF")
+            .arg(QDir::toNativeSeparators(path));
     // The same report as `palpate-cli score --pdf`: the recording re-scored (app/report).
     ReplayScorerDef options;
     options.findResource = cli::findResource;

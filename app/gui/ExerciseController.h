@@ -94,6 +94,8 @@ signals:
     void recordingStateChanged(bool recording, const QString& path);
 
 private:
+    /// Why no database is open: openDatabase's error, naming the file and the reason.
+    QString databaseProblem() const;
     QString begin(const Exercise& exercise, bool preview);
     void startRecording();
     void finish(const QString& why);
@@ -109,6 +111,7 @@ private:
     HistoryPanel& mHistory;
     std::function<QString()> mRecordingFolder;
     ResultsDatabase mDatabase;
+    QString mDatabaseError;  ///< why openDatabase failed (naming the file), for every later message
 
     Phase mPhase = Phase::Idle;
     bool mPreview = false;

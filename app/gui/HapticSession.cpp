@@ -49,7 +49,8 @@ std::optional<TissueMesh> HapticSession::loadTissueMesh(const std::string& path,
     return std::nullopt;
 }
 
-std::string HapticSession::loadMesh(const std::string& path) {
+std::string HapticSession::loadMesh(const std::string& path, bool* deviceFailed) {
+    if (deviceFailed) *deviceFailed = false;
     std::string error;
     auto loaded = loadTissueMesh(path, error);
     if (!loaded) return error;
@@ -59,7 +60,10 @@ std::string HapticSession::loadMesh(const std::string& path) {
     auto scene = makeScene(*mesh, path, error);
     if (!scene) return path + ": " + error;
     auto device = openDeviceFor(mDeviceUri, *mesh, error);
-    if (!device) return error;
+    if (!device) {
+        if (deviceFailed) *deviceFailed = true;
+        return error;
+    }
     SceneRecord record{mesh, path, scene->id()};
     return handOver(std::move(record), std::move(scene), std::move(device));
 }

@@ -72,8 +72,9 @@ public:
     /// Loads `path` and builds its scene here, then makes it the loop's scene with a fresh device
     /// aimed at it. The first scene creates the loop (and, threaded, starts its thread) and is drawn
     /// at once; later ones are drawn from the first snapshot that shows them. On failure the current
-    /// scene stays and the error (naming the file) is returned; "" on success.
-    std::string loadMesh(const std::string& path);
+    /// scene stays and the error (naming the file) is returned; "" on success. When the failure
+    /// was the device's (not plugged in, a bad recording), `deviceFailed` (if given) is set.
+    std::string loadMesh(const std::string& path, bool* deviceFailed = nullptr);
     /// Makes an exercise's mesh, tissue preset and physics (find the lump's inclusion) the loop's
     /// scene, with a fresh device aimed at it. The physics stays with every later scene of that
     /// mesh (restart, a new preset) until another mesh is loaded or clearExercisePhysics(). The

@@ -11,6 +11,7 @@
 #include "widgets/ChartsPanel.h"
 #include "widgets/FeelPanel.h"
 #include "widgets/ExerciseEditorPanel.h"
+#include "widgets/GuardedLoad.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/LodPanel.h"
 #include "widgets/PreferencesDialog.h"
@@ -482,8 +483,8 @@ void MainWindow::checkCurrentDevice() {
     for (QAction* action : mDeviceGroup->actions()) action->setChecked(action->data().toString() == current);
 }
 
-QString MainWindow::loadMesh(const QString& path) {
-    const std::string error = mSession->loadMesh(path.toStdString());
+QString MainWindow::loadMesh(const QString& path, bool* deviceFailed) {
+    const std::string error = mSession->loadMesh(path.toStdString(), deviceFailed);
     if (!error.empty()) return QString::fromStdString(error);
     mTouchVertex = kNoVertex;  // a fresh device on another mesh: nothing is pressed
     addRecentFile(path);
@@ -495,6 +496,33 @@ QString MainWindow::loadMesh(const QString& path) {
     }
     showDrawnMesh();  // the first mesh is drawn at once; a later one once the loop runs it
     showStatus();
+    return {};
+}
+
+QString MainWindow::startSession(const QString& meshPath, const QString& deviceUri, const QString& fallbackUri,
+                                 QString& deviceProblem) {
+    deviceProblem.clear();
+    QString deviceError = setDeviceUri(deviceUri);  // before the first mesh the URI is only checked ...
+    if (deviceError.isEmpty()) {
+        bool deviceFailed = false;
+        const QString error = loadMesh(meshPath, &deviceFailed);  // ... and the first mesh opens it
+        if (error.isEmpty()) return {};
+        if (!deviceFailed) return error;
+        deviceError = error;
+    }
+    if (const QString error = setDeviceUri(fallbackUri); !error.isEmpty()) return error;
+    if (const QString error = loadMesh(meshPath); !error.isEmpty()) return error;
+    deviceProblem = tr("Cannot open the device %1: %2\nRunning with %3 instead: choose another in the Device dock or "
+                       "in Edit > Preferences.")
+                        .arg(deviceUri, deviceError, fallbackUri);
+    mDevicePanel->showError(deviceProblem);
+    mDeviceDock->show();
+    mDeviceDock->raise();
+    // Once the window is shown: a message shown before would be drawn over the mesh field, which only
+    // a visible status bar hides for it.
+    QTimer::singleShot(0, this, [this, deviceUri, fallbackUri] {
+        statusBar()->showMessage(tr("Cannot open %1; running with %2").arg(deviceUri, fallbackUri), 30000);
+    });
     return {};
 }
 
@@ -530,7 +558,13 @@ QString MainWindow::openDeviceInBackground(const QString& uri) {
     auto job = std::make_shared<Job>();
     job->uri = uri.toStdString();
     mOpeningUri = uri;
-    mOpenThread = QThread::create([job] { job->device = openDeviceUri(job->uri, job->error); });
+    mOpenThread = QThread::create([job] {
+        try {  // no event loop catches it here: it would end the process
+            job->device = openDeviceUri(job->uri, job->error);
+        } catch (const std::exception& e) {
+            job->error = job->uri + ": " + e.what();
+        }
+    });
     mOpenThread->setParent(this);  // deleted with the window if it closes first (shutDown waits for it)
     connect(mOpenThread, &QThread::finished, this, [this, job] {
         mOpenThread->deleteLater();
@@ -1228,18 +1262,22 @@ void MainWindow::exportResultPdfDialog(const ResultRecord& result) {
 }
 
 QString MainWindow::runExercise(const QString& path, const QString& trainee) {
+    // Every message names its file: the exercise's, or the results database's (addTrainee).
+    const auto naming = [&path](const QString& error) {
+        return error.isEmpty() || error.contains(path) ? error : path + QStringLiteral(": ") + error;
+    };
     if (!trainee.trimmed().isEmpty()) {
-        if (QString error = mExercises->addExerciseFile(path); !error.isEmpty()) return error;
+        if (QString error = mExercises->addExerciseFile(path); !error.isEmpty()) return naming(error);
         if (QString error = mExercises->addTrainee(trainee); !error.isEmpty()) return error;
-        return mExercises->start();
+        return naming(mExercises->start());
     }
-    const auto loaded = loadExercise(path.toStdString());
+    const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
     if (!loaded.exercise) {
         QStringList errors;
         for (const auto& e : loaded.errors) errors << QString::fromStdString(e);
-        return errors.join(QLatin1Char('\n'));
+        return naming(errors.join(QLatin1Char('\n')));
     }
-    return mExercises->startPreview(*loaded.exercise);
+    return naming(mExercises->startPreview(*loaded.exercise));
 }
 
 }  // namespace palpate

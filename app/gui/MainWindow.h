@@ -58,7 +58,16 @@ public:
     /// Loads `path` (on this thread, not the haptic one) and makes it the loop's scene. On failure
     /// the current scene stays and the error (naming the file and the problem) is returned; "" on
     /// success. Shows no dialog. The first mesh is drawn at once, later ones once the loop runs them.
-    QString loadMesh(const QString& path);
+    /// `deviceFailed` (if given): set when the failure was the device's (HapticSession::loadMesh).
+    QString loadMesh(const QString& path, bool* deviceFailed = nullptr);
+    /// What a start-up with no mesh yet is (main): the device `deviceUri` (--device or Preferences)
+    /// and the mesh. A device that cannot be created or opened (not plugged in, a typo, a bad
+    /// recording) never stops the window from starting, or Preferences could not be reached to
+    /// choose another: `fallbackUri` runs instead, and `deviceProblem` says what could not be opened,
+    /// why and what runs instead (also shown in the Device dock and the status bar). Returns the
+    /// error that does stop it (the mesh's, naming the file), "" once the window can start.
+    QString startSession(const QString& meshPath, const QString& deviceUri, const QString& fallbackUri,
+                         QString& deviceProblem);
     /// Switches the device (a URI, see device/open/DeviceUri.h). "" or an error naming the URI; no dialog.
     /// Real hardware (HapticSession::opensSlowly) is opened on a worker thread while the loop runs:
     /// then "" means "opening"; the device arrives later (deviceOpening() until then) and an error

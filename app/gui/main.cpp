@@ -2,9 +2,11 @@
 // 2 bad usage.
 #include "app/common/DefaultScene.h"
 #include "app/gui/FirstRun.h"
+#include "app/gui/GuiApplication.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/ViewportBenchmark.h"
 #include "device/open/DeviceUri.h"
+#include "engine/record/RecordedToolDevice.h"
 #include "widgets/RecorderPanel.h"
 
 #include <QApplication>
@@ -18,6 +20,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <new>
 
 namespace {
 
@@ -57,14 +60,35 @@ QString deviceHelp() {
 
 }  // namespace
 
+int runGui(int argc, char** argv);
+
 int main(int argc, char** argv) {
+    palpate::ignoreFileSizeSignal();  // a file-size limit: the recorder reports the write error
+    palpate::exitOnThreadCreationFailure([] {
+        for (QWidget* widget : QApplication::topLevelWidgets())
+            if (auto* window = qobject_cast<palpate::MainWindow*>(widget)) window->session().stop();
+    });
+    try {
+        return runGui(argc, argv);
+    } catch (const std::bad_alloc&) {
+        // Outside the event loop (start-up, shut-down): GuiApplication::notify catches the rest.
+        std::fprintf(stderr,
+                     "palpate: not enough memory to run (std::bad_alloc; is a memory limit set, e.g. ulimit -v?)\n");
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "palpate: %s\n", e.what());
+        return 1;
+    }
+}
+
+int runGui(int argc, char** argv) {
     // Must happen before QApplication exists: the platform plugin is chosen in its constructor.
     const bool noDisplay = !displayAvailable();
     const bool headlessFlag = hasArgument(argc, argv, "--headless");
     if (noDisplay || (headlessFlag && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")))
         qputenv("QT_QPA_PLATFORM", "offscreen");
 
-    QApplication app(argc, argv);
+    palpate::GuiApplication app(argc, argv);
     palpate::setApplicationNames();  // before the first QSettings (FirstRun.h)
     palpate::migrateOldSettings();
     QApplication::setApplicationVersion(QStringLiteral(PALPATE_VERSION));
@@ -210,19 +234,16 @@ int main(int argc, char** argv) {
         return 1;
     };
 
-    // The device URI is checked before anything else is built: the message names the URI.
     // Without --device: the interactive window has no hardware to find yet, so the mouse steers the
     // tool; screenshots, grabs and scripted runs keep the scripted stroke (deterministic pictures).
-    QString deviceUri = parser.isSet(deviceOption)
-                            ? parser.value(deviceOption)
-                            : QLatin1String(interactive ? palpate::HapticSession::kInteractiveDeviceUri
-                                                        : palpate::HapticSession::kDefaultDeviceUri);
+    const QString fallbackUri = QLatin1String(interactive ? palpate::HapticSession::kInteractiveDeviceUri
+                                                          : palpate::HapticSession::kDefaultDeviceUri);
+    QString deviceUri = parser.isSet(deviceOption) ? parser.value(deviceOption) : fallbackUri;
     if (!parser.isSet(deviceOption) && interactive && !palpate::preferredDeviceUri().isEmpty())
         deviceUri = palpate::preferredDeviceUri();  // Preferences: the device at start
-    {
-        std::string error;
-        if (!palpate::createDeviceFromUri(deviceUri.toStdString(), error)) return fail(QString::fromStdString(error));
-    }
+    // A device that cannot be opened does not stop the window (MainWindow::startSession); the
+    // replay: scheme is registered first, so that replay:FILE is checked like every other URI.
+    palpate::registerReplayDeviceScheme();
 
     QString meshPath = parser.value(meshOption);
     if (meshPath.isEmpty()) {
@@ -249,8 +270,13 @@ int main(int argc, char** argv) {
     loopDef.trySchedFifo = !parser.isSet(noFifoOption);
     palpate::MainWindow window(renderer, mode, loopDef);
     palpate::applyPreferences(window);  // data folder, haptic rate; --preset below still wins
-    if (const QString error = window.setDeviceUri(deviceUri); !error.isEmpty()) return fail(error);
-    if (const QString error = window.loadMesh(meshPath); !error.isEmpty()) return fail(error);
+    QString deviceProblem;
+    if (const QString error = window.startSession(meshPath, deviceUri, fallbackUri, deviceProblem); !error.isEmpty())
+        return fail(error);
+    if (!deviceProblem.isEmpty()) {
+        std::fprintf(stderr, "palpate: %s\n", qPrintable(deviceProblem));
+        deviceUri = QString::fromStdString(window.session().deviceUri());
+    }
     if (parser.isSet(presetOption))
         if (const QString error = window.loadPresetFile(parser.value(presetOption)); !error.isEmpty()) return fail(error);
     if (parser.isSet(modeOption)) {
@@ -263,7 +289,7 @@ int main(int argc, char** argv) {
     if (parser.isSet(exerciseOption))
         if (const QString error = window.runExercise(parser.value(exerciseOption), parser.value(traineeOption));
             !error.isEmpty())
-            return fail(parser.value(exerciseOption) + QStringLiteral(": ") + error);
+            return fail(error);  // naming the exercise or the results database
     std::printf("palpate: %s renderer (%s), device %s, haptic loop %s\n",
                 qPrintable(palpate::rendererName(window.viewport()->kind())), qPrintable(window.rendererReason()),
                 qPrintable(deviceUri), mode == palpate::LoopMode::Stepped ? "stepped" : "threaded");
@@ -294,7 +320,14 @@ int main(int argc, char** argv) {
 
     window.resize(kWindowWidthPx, kWindowHeightPx);
     window.show();
-    if (interactive) palpate::maybeShowWelcome(window, parser.optionNames());  // not over --exercise etc.
+    if (interactive && !deviceProblem.isEmpty()) {
+        // Once the window is up, so that Preferences (behind this box) can be reached at once.
+        QTimer::singleShot(0, &window, [&window, deviceProblem] {
+            QMessageBox::warning(&window, palpate::MainWindow::tr("Device not opened"), deviceProblem);
+        });
+    } else if (interactive) {
+        palpate::maybeShowWelcome(window, parser.optionNames());  // not over --exercise etc.
+    }
     if (parser.isSet(showDockOption)) {
         const QStringList parts = parser.value(showDockOption).split(QLatin1Char(':'));
         auto* dock = window.findChild<QDockWidget*>(parts.front() + QStringLiteral("Dock"));

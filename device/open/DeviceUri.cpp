@@ -8,6 +8,8 @@
 #include "device/usb/FalconDevice.h"
 
 #include <cstdio>
+#include <exception>
+#include <filesystem>
 #include <cstdlib>
 #include <map>
 #include <mutex>
@@ -362,6 +364,22 @@ std::string formatDeviceUri(const DeviceUri& uri) {
     return "";
 }
 
+namespace {
+
+/// Why `path` cannot be a recording to replay before anything reads it ("" when it may be one, or
+/// does not exist).
+std::string recordingFileProblem(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) return {};  // the player says so, with its own words
+    if (fs::is_directory(status)) return "recording '" + path + "': is a folder, not a recording";
+    if (!fs::is_regular_file(status)) return "recording '" + path + "': is not a regular file";
+    return {};
+}
+
+}  // namespace
+
 std::unique_ptr<HapticDevice> createDeviceFromUri(std::string_view uri, std::string& error) {
     return createDeviceFromUri(uri, error, DeviceBackends{});
 }
@@ -371,9 +389,22 @@ std::unique_ptr<HapticDevice> createDeviceFromUri(std::string_view uri, std::str
     DeviceUri parsed;
     if (!parseDeviceUri(uri, parsed, error)) return nullptr;
     const std::string head = "device URI " + shown(uri) + ": ";
+    if (parsed.kind == DeviceKind::Replay) {
+        // Checked without opening it: a FIFO would block the caller (the GUI at start-up) forever,
+        // and a folder is not a recording.
+        if (std::string problem = recordingFileProblem(parsed.path); !problem.empty()) {
+            error = head + problem;
+            return nullptr;
+        }
+    }
     if (DeviceFactory factory = findFactory(parsed.kind)) {
         std::string factoryError;
-        auto device = factory(parsed, factoryError);
+        std::unique_ptr<HapticDevice> device;
+        try {
+            device = factory(parsed, factoryError);
+        } catch (const std::exception& e) {  // a factory that throws (no memory for the file) is an error too
+            factoryError = e.what();
+        }
         if (!device) error = head + (factoryError.empty() ? "the registered factory made no device" : factoryError);
         return device;
     }
