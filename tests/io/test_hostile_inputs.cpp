@@ -10,6 +10,7 @@
 #include "engine/io/FileLimits.h"
 #include "engine/lod/LevelCache.h"
 #include "engine/scene/TissuePreset.h"
+#include "engine/scoring/ExerciseSession.h"
 #include "tests/io/ChildProcess.h"
 #include "tests/io/IoTestDir.h"
 
@@ -89,6 +90,23 @@ TEST(HostileInputs, ADirectoryAsAnyInputIsNamed) {
         const std::string path = dir.directory(std::string("dir-") + l.name + ".off");
         EXPECT_EQ(l.load(path), path + ": is a directory, not " + l.kindName) << l.name;
     }
+}
+
+TEST(HostileInputs, AFifoAsThePresetAnExerciseNamesIsNamed) {
+    // Found beside the exercise, then refused by the preset loader (not "was found neither beside
+    // the exercise file nor under resources/").
+    IoTestDir dir;
+    const std::string fifo = dir.fifo("pipe.json");
+    const std::string exercisePath = dir.write("ex.json", R"({"format": "palpate-exercise", "version": 1, "name": "p",
+        "type": "press_targets", "mesh": ")" + std::string(PALPATE_SOURCE_DIR) +
+                                                              R"(/resources/meshes/sphere_1442.off", "tissue_preset": "pipe.json",
+        "time_limit_s": 30, "press_targets": {"targets": [{"vertex": 3}]}})");
+    const auto exercise = loadExercise(exercisePath);
+    ASSERT_TRUE(exercise.exercise) << exercise.error();
+    std::vector<std::string> errors;
+    EXPECT_FALSE(loadExerciseAssets(*exercise.exercise, {}, errors));
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(errors.front(), exercisePath + ": tissue_preset: " + fifo + ": is a FIFO, not a preset file");
 }
 
 TEST(HostileInputs, ALevelCacheIndexThatIsAFifoIsNotRead) {

@@ -157,6 +157,10 @@ TEST(JsonSafety, TheDocumentedExerciseLimitsFitInAnExerciseFile) {
     const auto traceBack = loadExercise(tracePath);
     ASSERT_TRUE(traceBack.exercise) << traceBack.error();
     EXPECT_EQ(traceBack.exercise->trace.path.size(), std::size_t(kMaxTracePathPoints));
+    // The margin docs/conventions.md states: the largest is well inside the limit.
+    const auto largest = std::max(std::filesystem::file_size(pressPath), std::filesystem::file_size(tracePath));
+    RecordProperty("largest_exercise_bytes", std::to_string(largest));
+    EXPECT_LT(largest, kExerciseFile.maxBytes / 2);
 
     // One more than the limit is refused by the reader, naming the list.
     press.pressTargets.targets.push_back(press.pressTargets.targets.front());
