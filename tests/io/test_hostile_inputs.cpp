@@ -141,6 +141,9 @@ TEST(HostileInputs, DeclaredMeshCountsBeyondTheLimitAreRefusedBeforeAnythingIsSi
     stl[80] = stl[81] = stl[82] = stl[83] = char(0xff);
     EXPECT_EQ(probeMeshBytes(stl, "stl"),
               "declares 4294967295 faces, more than the " + std::to_string(kMaxMeshFaces) + " a mesh may have");
+    EXPECT_EQ(probeMeshBytes(std::string("OMTB\xf0\xff\xff\xff\x04\0\0\0", 12), "om"),
+              "declares 4294967280 vertices, more than the " + std::to_string(kMaxMeshVertices) + " a mesh may have");
+    EXPECT_EQ(probeMeshBytes(std::string("OMTB\x04\0\0\0\x04\0\0\0", 12), "om"), "");
 }
 
 TEST(HostileInputs, MeshGenerateOnAFullDiskSaysSoAndLeavesNoFile) {
