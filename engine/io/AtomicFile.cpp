@@ -29,10 +29,10 @@ std::string temporaryNameFor(const std::string& path) {
 std::string targetProblem(const std::string& path) {
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return {};
-    const char* type = S_ISDIR(st.st_mode)                        ? "a directory"
-                       : S_ISFIFO(st.st_mode)                     ? "a FIFO"
+    const char* type = S_ISDIR(st.st_mode)                          ? "a directory"
+                       : S_ISFIFO(st.st_mode)                       ? "a FIFO"
                        : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
-                                                                  : "a special file";
+                                                                    : "a special file";
     return path + ": is " + type + ", not a file that can be written";
 }
 

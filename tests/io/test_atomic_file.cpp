@@ -35,7 +35,8 @@ TEST(AtomicFile, ReplacesTheFileAndLeavesNothingElse) {
 TEST(AtomicFile, AFailedWriteNamesThePathAndTheReasonAndKeepsTheOldFile) {
     IoTestDir dir;
     const std::string path = dir.write("a.json", "old");
-    const auto child = test::runWithFileSizeLimit(1000, [&] { return writeFileAtomically(path, std::string(5000, 'x')); });
+    const auto child = test::runWithFileSizeLimit(1000,
+                                                  [&] { return writeFileAtomically(path, std::string(5000, 'x')); });
     ASSERT_EQ(child.exitCode, 0);
     EXPECT_EQ(child.output, path + ": writing failed: File too large");
     EXPECT_EQ(contentOf(path), "old");
@@ -54,10 +55,11 @@ TEST(AtomicFile, AFailedWriteThroughAWriterRemovesItsTemporary) {
     EXPECT_EQ(problem, path + ": writing failed: the writer failed");
     EXPECT_EQ(std::filesystem::path(temporaryUsed).extension(), ".off");  // writers pick the format by it
     EXPECT_TRUE(dir.names().empty());
-    ASSERT_EQ(writeFileAtomicallyVia(path, [](const std::string& t) {
-                  std::ofstream(t) << "whole";
-                  return std::string();
-              }),
+    ASSERT_EQ(writeFileAtomicallyVia(path,
+                                     [](const std::string& t) {
+                                         std::ofstream(t) << "whole";
+                                         return std::string();
+                                     }),
               "");
     EXPECT_EQ(contentOf(path), "whole");
 }
