@@ -241,6 +241,16 @@ std::string probePly(const std::string& bytes) {
     return {};
 }
 
+/// OpenMesh's own format: "OM", a mesh type, a version, then the vertex and face counts (32-bit,
+/// little-endian); the rest is OpenMesh's to check.
+std::string probeOm(const std::string& bytes) {
+    if (bytes.size() < 12 || bytes.compare(0, 2, "OM") != 0) return "is not an OpenMesh .om file (missing 'OM' header)";
+    std::uint32_t vertices = 0, faces = 0;
+    std::memcpy(&vertices, bytes.data() + 4, 4);
+    std::memcpy(&faces, bytes.data() + 8, 4);
+    return countProblem((long long)vertices, (long long)faces);
+}
+
 }  // namespace
 
 std::string probeMeshFile(const std::string& path) {
@@ -258,7 +268,7 @@ std::string probeMeshBytes(const std::string& bytes, const std::string& ext) {
     if (ext == "obj") return probeObj(bytes);
     if (ext == "stl") return probeStl(bytes);
     if (ext == "ply") return probePly(bytes);
-    if (ext == "om") return {};
+    if (ext == "om") return probeOm(bytes);
     return "has an unsupported extension '." + ext + "' (use .obj, .off, .ply, .stl or .om)";
 }
 

@@ -316,10 +316,12 @@ std::string resolveExercisePath(const Exercise& exercise, const std::string& pat
     if (path.empty()) return {};
     std::error_code ec;
     const fs::path p(path);
-    if (p.is_absolute()) return fs::is_regular_file(p, ec) ? path : std::string();
+    // Whatever exists there counts (a FIFO, a directory): its loader then says what is wrong with
+    // it, rather than "not found".
+    if (p.is_absolute()) return fs::exists(p, ec) ? path : std::string();
     if (!exercise.sourcePath.empty()) {
         const fs::path beside = fs::path(exercise.sourcePath).parent_path() / p;
-        if (fs::is_regular_file(beside, ec)) return fs::weakly_canonical(beside, ec).string();
+        if (fs::exists(beside, ec)) return fs::weakly_canonical(beside, ec).string();
     }
     if (findResource) return findResource(path);
     return {};

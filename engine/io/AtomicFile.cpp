@@ -29,10 +29,10 @@ std::string temporaryNameFor(const std::string& path) {
 std::string targetProblem(const std::string& path) {
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return {};
-    const char* type = S_ISDIR(st.st_mode)                        ? "a directory"
-                       : S_ISFIFO(st.st_mode)                     ? "a FIFO"
+    const char* type = S_ISDIR(st.st_mode)                          ? "a directory"
+                       : S_ISFIFO(st.st_mode)                       ? "a FIFO"
                        : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
-                                                                  : "a special file";
+                                                                    : "a special file";
     return path + ": is " + type + ", not a file that can be written";
 }
 
@@ -42,7 +42,13 @@ int createTemporary(const std::string& path, std::string& temporary) {
     for (int attempt = 0; attempt < 100; ++attempt) {
         temporary = temporaryNameFor(path);
         const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0 || errno != EEXIST) return fd;
+        if (fd >= 0) {
+            // The replaced file keeps its permissions (a private preset stays private).
+            struct stat st {};
+            if (::stat(path.c_str(), &st) == 0) ::fchmod(fd, st.st_mode & 07777);
+            return fd;
+        }
+        if (errno != EEXIST) return fd;
     }
     return -1;
 }

@@ -24,8 +24,9 @@ inline constexpr InputKind kPresetFile{"a preset file", 1 * kMiB};
 /// The most press targets and trace path points an exercise may hold (docs/scoring.md).
 inline constexpr int kMaxPressTargets = 1000;
 inline constexpr int kMaxTracePathPoints = 10000;
-/// Exercises: the largest holds kMaxTracePathPoints points or kMaxPressTargets targets at full
-/// double precision, indented (about 1.7 MB; tests/engine/test_exercise_limits.cpp checks it fits).
+/// Exercises: the largest holds kMaxTracePathPoints points or kMaxPressTargets targets with every
+/// number at full precision, indented: about 1.4 MB (tests/io/test_json_safety.cpp checks it fits
+/// with room to spare).
 inline constexpr InputKind kExerciseFile{"an exercise file", 4 * kMiB};
 
 /// Waypoint files of the simulated device (`sim:path:FILE`): a path is a few thousand lines; the

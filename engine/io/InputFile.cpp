@@ -75,8 +75,8 @@ std::optional<InputFd> openInputFile(const std::string& path, const InputKind& k
     }
     const std::uint64_t size = std::uint64_t(st.st_size);
     if (size > kind.maxBytes) {
-        error = path + ": " + std::to_string(size) + " bytes, more than the " + describeByteCount(kind.maxBytes) +
-                " " + kind.name + " may hold";
+        error = path + ": " + std::to_string(size) + " bytes, more than the " + describeByteCount(kind.maxBytes) + " " +
+                kind.name + " may hold";
         return std::nullopt;
     }
     // A regular file never blocks; reads are ordinary again.

@@ -19,8 +19,10 @@ public:
     /// Problems go to `errors`, each prefixed with `source` (a path).
     JsonReader(std::vector<std::string>& errors, std::string source);
 
-    /// The parsed text, or nullopt with the problem recorded (bad syntax at byte N, or a number
-    /// too large for a double such as 1e400).
+    /// The parsed text, or nullopt with the problem recorded, at its key path where it has one:
+    /// bad syntax at byte N, a number too large for a double ("slope_ring.spring_k: 1e400 is too
+    /// large for a double"), a key given twice in one object ("slope_ring.spring_k: appears
+    /// twice"), values nested more than 64 levels deep. No exception leaves it.
     std::optional<Json> parse(const std::string& text);
 
     void error(const std::string& key, const std::string& problem);

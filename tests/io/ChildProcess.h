@@ -12,8 +12,8 @@
 namespace palpate::test {
 
 struct ChildResult {
-    int exitCode = -1;  ///< -1 when the child did not exit normally (a signal)
-    std::string output; ///< what the child wrote to the pipe (stdout and stderr for a program)
+    int exitCode = -1;   ///< -1 when the child did not exit normally (a signal)
+    std::string output;  ///< what the child wrote to the pipe (stdout and stderr for a program)
 };
 
 inline void limitFileSize(rlim_t bytes) {

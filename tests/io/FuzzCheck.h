@@ -6,12 +6,12 @@
 #include <cstdlib>
 #include <string>
 
-#define fuzzCheck(target, condition)                                                                   \
-    do {                                                                                               \
-        if (!(condition)) {                                                                            \
+#define fuzzCheck(target, condition)                                                                    \
+    do {                                                                                                \
+        if (!(condition)) {                                                                             \
             std::fprintf(stderr, "%s: invariant failed: %s (line %d)\n", target, #condition, __LINE__); \
-            std::abort();                                                                              \
-        }                                                                                              \
+            std::abort();                                                                               \
+        }                                                                                               \
     } while (0)
 
 /// Every message of a parser starts with the source it was given ("fuzz: ...").

@@ -10,6 +10,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 using namespace palpate;
 using palpate::test::IoTestDir;
@@ -32,10 +33,21 @@ TEST(AtomicFile, ReplacesTheFileAndLeavesNothingElse) {
     EXPECT_EQ(dir.names(), std::vector<std::string>{"a.json"});
 }
 
+TEST(AtomicFile, TheReplacedFileKeepsItsPermissions) {
+    IoTestDir dir;
+    const std::string path = dir.write("private.json", "old");
+    ASSERT_EQ(::chmod(path.c_str(), 0600), 0);
+    ASSERT_EQ(writeFileAtomically(path, "new"), "");
+    struct stat st {};
+    ASSERT_EQ(::stat(path.c_str(), &st), 0);
+    EXPECT_EQ(st.st_mode & 0777, 0600u);
+}
+
 TEST(AtomicFile, AFailedWriteNamesThePathAndTheReasonAndKeepsTheOldFile) {
     IoTestDir dir;
     const std::string path = dir.write("a.json", "old");
-    const auto child = test::runWithFileSizeLimit(1000, [&] { return writeFileAtomically(path, std::string(5000, 'x')); });
+    const auto child = test::runWithFileSizeLimit(1000,
+                                                  [&] { return writeFileAtomically(path, std::string(5000, 'x')); });
     ASSERT_EQ(child.exitCode, 0);
     EXPECT_EQ(child.output, path + ": writing failed: File too large");
     EXPECT_EQ(contentOf(path), "old");
@@ -54,10 +66,11 @@ TEST(AtomicFile, AFailedWriteThroughAWriterRemovesItsTemporary) {
     EXPECT_EQ(problem, path + ": writing failed: the writer failed");
     EXPECT_EQ(std::filesystem::path(temporaryUsed).extension(), ".off");  // writers pick the format by it
     EXPECT_TRUE(dir.names().empty());
-    ASSERT_EQ(writeFileAtomicallyVia(path, [](const std::string& t) {
-                  std::ofstream(t) << "whole";
-                  return std::string();
-              }),
+    ASSERT_EQ(writeFileAtomicallyVia(path,
+                                     [](const std::string& t) {
+                                         std::ofstream(t) << "whole";
+                                         return std::string();
+                                     }),
               "");
     EXPECT_EQ(contentOf(path), "whole");
 }
@@ -70,6 +83,25 @@ TEST(AtomicFile, AnotherWritersTemporaryIsNeverTouched) {
     ASSERT_EQ(writeFileAtomically(path, "mine"), "");
     EXPECT_EQ(contentOf(other), "another writer's");
     EXPECT_EQ(contentOf(path), "mine");
+}
+
+TEST(AtomicFile, TwoWritersOfOneFileLeaveOneWholeVersion) {
+    // With one shared temporary, one writer's rename can take the other's half-written bytes.
+    IoTestDir dir;
+    const std::string path = dir.file("shared.json");
+    const std::string a(200000, 'a'), b(150000, 'b');
+    std::vector<std::string> problems(2);
+    auto writer = [&](int i) {
+        for (int k = 0; k < 40; ++k)
+            if (std::string e = writeFileAtomically(path, i == 0 ? a : b); !e.empty()) problems[std::size_t(i)] = e;
+    };
+    std::thread first(writer, 0), second(writer, 1);
+    first.join();
+    second.join();
+    EXPECT_EQ(problems, std::vector<std::string>(2));
+    const std::string content = contentOf(path);
+    EXPECT_TRUE(content == a || content == b) << content.size() << " bytes";
+    EXPECT_EQ(dir.names(), std::vector<std::string>{"shared.json"});
 }
 
 TEST(AtomicFile, ASpecialFileInTheTargetsPlaceIsNotReplaced) {

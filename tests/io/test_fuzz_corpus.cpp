@@ -37,9 +37,15 @@ std::vector<Bytes> corpus(const std::string& parser) {
 }
 
 void mutate(Bytes& m, std::mt19937_64& rng) {
-    static const char* const kTokens[] = {"1e400", "-1e999", "1e308", "\"", "{", "}", "[", "]", ",", ":", "null",
-                                          "\"name\": 1,", "\\u0000", "\xff\xfe", "9999999999999999999", "-0",
-                                          "nan", "inf", "#", "\n", "\r\n", "\t", "OFF", "facet", "end_header"};
+    static const char* const kTokens[] = {"1e400",     "-1e999",   "1e308",
+                                          "\"",        "{",        "}",
+                                          "[",         "]",        ",",
+                                          ":",         "null",     "\"name\": 1,",
+                                          "\\u0000",   "\xff\xfe", "9999999999999999999",
+                                          "-0",        "nan",      "inf",
+                                          "#",         "\n",       "\r\n",
+                                          "\t",        "OFF",      "facet",
+                                          "end_header"};
     const int edits = 1 + int(rng() % 4);
     for (int e = 0; e < edits; ++e) {
         if (m.empty()) m.push_back(std::uint8_t(rng()));
@@ -65,7 +71,8 @@ void mutate(Bytes& m, std::mt19937_64& rng) {
                 break;
             }
             case 6:
-                m.erase(m.begin() + std::ptrdiff_t(at), m.begin() + std::ptrdiff_t(std::min(m.size(), at + rng() % 40)));
+                m.erase(m.begin() + std::ptrdiff_t(at),
+                        m.begin() + std::ptrdiff_t(std::min(m.size(), at + rng() % 40)));
                 break;
             default: m.insert(m.begin() + std::ptrdiff_t(at), std::size_t(rng() % 8), std::uint8_t(rng())); break;
         }

@@ -10,6 +10,7 @@
 #include "engine/io/FileLimits.h"
 #include "engine/lod/LevelCache.h"
 #include "engine/scene/TissuePreset.h"
+#include "engine/scoring/ExerciseSession.h"
 #include "tests/io/ChildProcess.h"
 #include "tests/io/IoTestDir.h"
 
@@ -91,6 +92,24 @@ TEST(HostileInputs, ADirectoryAsAnyInputIsNamed) {
     }
 }
 
+TEST(HostileInputs, AFifoAsThePresetAnExerciseNamesIsNamed) {
+    // Found beside the exercise, then refused by the preset loader (not "was found neither beside
+    // the exercise file nor under resources/").
+    IoTestDir dir;
+    const std::string fifo = dir.fifo("pipe.json");
+    const std::string exercisePath = dir.write("ex.json",
+                                               R"({"format": "palpate-exercise", "version": 1, "name": "p",
+        "type": "press_targets", "mesh": ")" + std::string(PALPATE_SOURCE_DIR) +
+                                                   R"(/resources/meshes/sphere_1442.off", "tissue_preset": "pipe.json",
+        "time_limit_s": 30, "press_targets": {"targets": [{"vertex": 3}]}})");
+    const auto exercise = loadExercise(exercisePath);
+    ASSERT_TRUE(exercise.exercise) << exercise.error();
+    std::vector<std::string> errors;
+    EXPECT_FALSE(loadExerciseAssets(*exercise.exercise, {}, errors));
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(errors.front(), exercisePath + ": tissue_preset: " + fifo + ": is a FIFO, not a preset file");
+}
+
 TEST(HostileInputs, ALevelCacheIndexThatIsAFifoIsNotRead) {
     IoTestDir dir;
     auto mesh = generateMesh(GeneratedShape::Sphere, 300);
@@ -106,11 +125,12 @@ TEST(HostileInputs, ACoordinateBeyondAFloatIsSaidToBeOutOfRange) {
     // OpenMesh reads it into a float, fails, and loses its place: "faces refer to vertices that do
     // not exist" was the message.
     IoTestDir dir;
-    const std::string path = dir.write("huge.off",
-                                       "OFF\n4 4 0\n0 0 0\n1e308 0 0\n0 10 0\n0 0 10\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+    const std::string path = dir.write(
+        "huge.off", "OFF\n4 4 0\n0 0 0\n1e308 0 0\n0 10 0\n0 0 10\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
     const std::string error = TissueMesh::load(path).error();
-    EXPECT_EQ(error, path + ": has a coordinate out of range at OFF vertex 1: 1e308 (a coordinate must be within "
-                            "+-3.4e38, a float's range; a tissue mesh is at most 100 m across anyway)");
+    EXPECT_EQ(error, path +
+                         ": has a coordinate out of range at OFF vertex 1: 1e308 (a coordinate must be within "
+                         "+-3.4e38, a float's range; a tissue mesh is at most 100 m across anyway)");
     const std::string obj = dir.write("huge.obj", "v 0 0 0\nv 1 -1e300 0\nv 0 1 0\nf 1 2 3\n");
     EXPECT_TRUE(contains(TissueMesh::load(obj).error(), "coordinate out of range at line 2: -1e300"))
         << TissueMesh::load(obj).error();
@@ -123,6 +143,9 @@ TEST(HostileInputs, DeclaredMeshCountsBeyondTheLimitAreRefusedBeforeAnythingIsSi
     stl[80] = stl[81] = stl[82] = stl[83] = char(0xff);
     EXPECT_EQ(probeMeshBytes(stl, "stl"),
               "declares 4294967295 faces, more than the " + std::to_string(kMaxMeshFaces) + " a mesh may have");
+    EXPECT_EQ(probeMeshBytes(std::string("OMTB\xf0\xff\xff\xff\x04\0\0\0", 12), "om"),
+              "declares 4294967280 vertices, more than the " + std::to_string(kMaxMeshVertices) + " a mesh may have");
+    EXPECT_EQ(probeMeshBytes(std::string("OMTB\x04\0\0\0\x04\0\0\0", 12), "om"), "");
 }
 
 TEST(HostileInputs, MeshGenerateOnAFullDiskSaysSoAndLeavesNoFile) {
@@ -135,7 +158,8 @@ TEST(HostileInputs, MeshGenerateOnAFullDiskSaysSoAndLeavesNoFile) {
 }
 
 TEST(HostileInputs, MeshGenerateRefusesMoreVerticesThanAMeshMayHave) {
-    const Cli r = runCli({"mesh", "generate", "--shape", "sphere", "--vertices", "50000000", "--out", "/nonexistent/x.off"});
+    const Cli r = runCli({"mesh", "generate", "--shape", "sphere", "--vertices", "50000000", "--out",
+                          "/nonexistent/x.off"});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(r.output, "mesh generate: --vertices '50000000' must be a whole number from 8 to " +
                             std::to_string(kMaxMeshVertices) + " (the most a mesh may have)\n");
@@ -146,7 +170,8 @@ TEST(HostileInputs, MeshWriteFailuresAlwaysSayWhy) {
     IoTestDir dir;
     auto mesh = generateMesh(GeneratedShape::Sphere, 100);
     ASSERT_TRUE(mesh.mesh);
-    EXPECT_EQ(mesh.mesh->save("/dev/full"), "/dev/full: cannot write mesh: no extension (use .obj, .off, .ply, .stl or .om)");
+    EXPECT_EQ(mesh.mesh->save("/dev/full"),
+              "/dev/full: cannot write mesh: no extension (use .obj, .off, .ply, .stl or .om)");
     const std::string fifo = dir.fifo("pipe.off");
     EXPECT_EQ(mesh.mesh->save(fifo), fifo + ": cannot write mesh: is a FIFO, not a file that can be written");
     const std::string missing = dir.file("no/such/m.off");
@@ -160,7 +185,8 @@ TEST(HostileInputs, MeshWriteFailuresAlwaysSayWhy) {
 TEST(HostileInputs, CalibrateNamesTheOptionOutOfRangeAndWhy) {
     const Cli r = runCli({"calibrate", "--youngs-kpa", "1e308"});
     EXPECT_EQ(r.exitCode, 2) << r.output;
-    EXPECT_TRUE(contains(r.output, "palpate-cli calibrate: --youngs-kpa 1e308 is out of range: Young's modulus 1e+308 kPa"))
+    EXPECT_TRUE(contains(r.output,
+                         "palpate-cli calibrate: --youngs-kpa 1e308 is out of range: Young's modulus 1e+308 kPa"))
         << r.output;
     EXPECT_TRUE(contains(r.output, "below the smallest a slope-ring renders")) << r.output;
     EXPECT_FALSE(contains(r.output, "slopes must decrease")) << r.output;

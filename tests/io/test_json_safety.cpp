@@ -45,50 +45,56 @@ TEST(JsonSafety, APresetNumberBeyondADoubleNamesTheKey) {
     const auto r = parseTissuePreset(replaced(defaultPreset(), "\"damping_ratio\": 1.0", "\"damping_ratio\": 1e400"),
                                      "my.json");
     EXPECT_FALSE(r.preset);
-    EXPECT_EQ(firstError(r.errors), "my.json: slope_ring.damping_ratio: 1e400 is too large for a double (at most about 1.8e308)");
-    const auto list = parseTissuePreset(replaced(defaultPreset(), "[0.6, 0.35, 0.15]", "[0.6, -1e999, 0.15]"), "my.json");
+    EXPECT_EQ(firstError(r.errors),
+              "my.json: slope_ring.damping_ratio: 1e400 is too large for a double (at most about 1.8e308)");
+    const auto list = parseTissuePreset(replaced(defaultPreset(), "[0.6, 0.35, 0.15]", "[0.6, -1e999, 0.15]"),
+                                        "my.json");
     EXPECT_EQ(firstError(list.errors),
               "my.json: slope_ring.slopes_mm_per_n[1]: -1e999 is too large for a double (at most about 1.8e308)");
-    const auto top = parseTissuePreset(replaced(defaultPreset(), "\"haptic_rate_hz\": 1000.0", "\"haptic_rate_hz\": 2e308"),
-                                       "my.json");
-    EXPECT_EQ(firstError(top.errors), "my.json: haptic_rate_hz: 2e308 is too large for a double (at most about 1.8e308)");
+    const auto top = parseTissuePreset(
+        replaced(defaultPreset(), "\"haptic_rate_hz\": 1000.0", "\"haptic_rate_hz\": 2e308"), "my.json");
+    EXPECT_EQ(firstError(top.errors),
+              "my.json: haptic_rate_hz: 2e308 is too large for a double (at most about 1.8e308)");
 }
 
 TEST(JsonSafety, APresetKeyGivenTwiceIsAnError) {
-    const auto r = parseTissuePreset(
-        replaced(defaultPreset(), "\"damping_ratio\": 1.0", "\"damping_ratio\": 1.0, \"damping_ratio\": 2.0"), "my.json");
+    const auto r = parseTissuePreset(replaced(defaultPreset(), "\"damping_ratio\": 1.0",
+                                              "\"damping_ratio\": 1.0, \"damping_ratio\": 2.0"),
+                                     "my.json");
     EXPECT_FALSE(r.preset);
     EXPECT_EQ(firstError(r.errors), "my.json: slope_ring.damping_ratio: appears twice");
-    const auto top = parseTissuePreset(replaced(defaultPreset(), "\"name\": \"default\",", "\"name\": \"a\", \"name\": \"b\","),
-                                       "my.json");
+    const auto top = parseTissuePreset(
+        replaced(defaultPreset(), "\"name\": \"default\",", "\"name\": \"a\", \"name\": \"b\","), "my.json");
     EXPECT_EQ(firstError(top.errors), "my.json: name: appears twice");
 }
 
 TEST(JsonSafety, AnExerciseNumberBeyondADoubleAndAKeyGivenTwiceNameTheKey) {
-    const auto big = parseExercise(replaced(pressExercise(), "{\"vertex\": 3537}", "{\"vertex\": 3537, \"hold_s\": 1e400}"),
-                                   "ex.json");
+    const auto big = parseExercise(
+        replaced(pressExercise(), "{\"vertex\": 3537}", "{\"vertex\": 3537, \"hold_s\": 1e400}"), "ex.json");
     EXPECT_FALSE(big.exercise);
     EXPECT_EQ(firstError(big.errors),
               "ex.json: press_targets.targets[1].hold_s: 1e400 is too large for a double (at most about 1.8e308)");
-    const auto twice = parseExercise(replaced(pressExercise(), "{\"vertex\": 3537}", "{\"vertex\": 3537, \"vertex\": 1}"),
-                                     "ex.json");
+    const auto twice = parseExercise(
+        replaced(pressExercise(), "{\"vertex\": 3537}", "{\"vertex\": 3537, \"vertex\": 1}"), "ex.json");
     EXPECT_FALSE(twice.exercise);
     EXPECT_EQ(firstError(twice.errors), "ex.json: press_targets.targets[1].vertex: appears twice");
 }
 
 TEST(JsonSafety, ThePresetAnExerciseNamesIsCheckedTheSameWay) {
     IoTestDir dir;
-    const std::string preset =
-        dir.write("bad.json", replaced(defaultPreset(), "\"damping_ratio\": 1.0", "\"damping_ratio\": 1e400"));
+    const std::string preset = dir.write("bad.json", replaced(defaultPreset(), "\"damping_ratio\": 1.0",
+                                                              "\"damping_ratio\": 1e400"));
     const std::string exercisePath = dir.write(
-        "ex.json", replaced(replaced(pressExercise(), "presets/tissues/skin.json", "bad.json"), "meshes/stomach_3970.off",
-                            std::string(PALPATE_SOURCE_DIR) + "/resources/meshes/stomach_3970.off"));
+        "ex.json",
+        replaced(replaced(pressExercise(), "presets/tissues/skin.json", "bad.json"), "meshes/stomach_3970.off",
+                 std::string(PALPATE_SOURCE_DIR) + "/resources/meshes/stomach_3970.off"));
     const auto exercise = loadExercise(exercisePath);
     ASSERT_TRUE(exercise.exercise) << exercise.error();
     std::vector<std::string> errors;
     EXPECT_FALSE(loadExerciseAssets(*exercise.exercise, {}, errors));
-    EXPECT_EQ(firstError(errors), exercisePath + ": tissue_preset: " + preset +
-                                      ": slope_ring.damping_ratio: 1e400 is too large for a double (at most about 1.8e308)");
+    EXPECT_EQ(firstError(errors),
+              exercisePath + ": tissue_preset: " + preset +
+                  ": slope_ring.damping_ratio: 1e400 is too large for a double (at most about 1.8e308)");
 }
 
 TEST(JsonSafety, NestingBeyondTheLimitIsRefusedNotRecursedInto) {
@@ -157,6 +163,10 @@ TEST(JsonSafety, TheDocumentedExerciseLimitsFitInAnExerciseFile) {
     const auto traceBack = loadExercise(tracePath);
     ASSERT_TRUE(traceBack.exercise) << traceBack.error();
     EXPECT_EQ(traceBack.exercise->trace.path.size(), std::size_t(kMaxTracePathPoints));
+    // The margin docs/conventions.md states: the largest is well inside the limit.
+    const auto largest = std::max(std::filesystem::file_size(pressPath), std::filesystem::file_size(tracePath));
+    RecordProperty("largest_exercise_bytes", std::to_string(largest));
+    EXPECT_LT(largest, kExerciseFile.maxBytes / 2);
 
     // One more than the limit is refused by the reader, naming the list.
     press.pressTargets.targets.push_back(press.pressTargets.targets.front());
