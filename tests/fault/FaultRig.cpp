@@ -242,10 +242,16 @@ bool presetAccepted(const Scratch& scratch, const fs::path& path, std::string* p
     return r.succeeded();
 }
 
-std::optional<long long> printedRecordedTicks(const std::string& output) {
-    static const std::regex pattern(R"(recorded (\d+) ticks)");
-    std::smatch m;
-    if (std::regex_search(output, m, pattern)) return std::stoll(m[1].str());
+std::optional<long long> printedRecordedTicks(const std::string& output, const fs::path& recording) {
+    // The count on a line that names the recording ("recorded 307 ticks (0.307 s) to FILE"), so a
+    // reworded summary is still read; the session's own count ("session: N ticks") names no file.
+    static const std::regex count(R"((\d+) ticks)");
+    std::istringstream lines(output);
+    for (std::string line; std::getline(lines, line);) {
+        if (!namesPath(line, recording) && line.find(recording.filename().string()) == std::string::npos) continue;
+        std::smatch m;
+        if (std::regex_search(line, m, count)) return std::stoll(m[1].str());
+    }
     return std::nullopt;
 }
 

@@ -97,7 +97,7 @@ RecordingVerdict recordInfo(const Scratch& scratch, const fs::path& path);
 bool meshAccepted(const Scratch& scratch, const fs::path& path, std::string* problem = nullptr);
 /// `palpate-cli run --preset FILE --seconds 0.01` exits 0.
 bool presetAccepted(const Scratch& scratch, const fs::path& path, std::string* problem = nullptr);
-/// The tick count a run printed for its recording ("recorded N ticks"), if any.
-std::optional<long long> printedRecordedTicks(const std::string& output);
+/// The tick count a run printed for its recording (on a line naming it: "recorded N ticks ... to FILE").
+std::optional<long long> printedRecordedTicks(const std::string& output, const fs::path& recording);
 
 }  // namespace palpate::fault

@@ -120,7 +120,7 @@ OutputVerdict judgeOutput(const Scratch& scratch, const Writer& writer, const fs
         v.why = "no output";
         return v;
     }
-    const auto printed = printedRecordedTicks(commandOutput);
+    const auto printed = printedRecordedTicks(commandOutput, output);
     switch (writer.kind) {
     case OutputKind::Recording: {
         const RecordingVerdict r = recordInfo(scratch, output);
