@@ -115,7 +115,10 @@ TEST_P(SpecialInputs, RefusedQuicklyWithTheFileNamed) {
     Scratch scratch;
     copyFile(fixtureRecording(), scratch.in("session.rec"));
     const std::string input = makeInput(scratch, kind, slot->extension);
-    const auto before = digests({scratch.in("session.rec"), input});
+    // A device's times move with every other process's writes: only our own files are compared.
+    std::vector<fs::path> owned{scratch.in("session.rec")};
+    if (input.rfind("/dev/", 0) != 0) owned.push_back(input);
+    const auto before = digests(owned);
     ChildSpec spec = cliSpec(scratch, slot->args(scratch, input));
     spec.timeoutS = 10.0;
     if (!sanitized()) spec.addressSpaceBytes = 2ull << 30;
