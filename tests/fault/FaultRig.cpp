@@ -40,6 +40,14 @@ bool sanitized() {
 #endif
 }
 
+bool havePdf() {
+#ifdef PALPATE_FAULT_HAVE_PDF
+    return true;
+#else
+    return false;
+#endif
+}
+
 namespace {
 
 std::string uniqueSuffix() {

@@ -22,6 +22,7 @@ std::string sourcePath(const std::string& relative);  ///< under the repository 
 bool haveGui();
 std::string guiPath();
 bool sanitized();
+bool havePdf();  ///< score --pdf exists (a build with the GUI)
 
 /// A folder per case under the system temp dir, removed at the end. in/ holds inputs, out/ is the
 /// folder the shim's faults apply to (PALPATE_FAULT_DIR).

@@ -7,6 +7,8 @@
 
 #include "OutputChecks.h"
 
+#include <cstdlib>
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -121,7 +123,13 @@ TEST_P(SpecialInputs, RefusedQuicklyWithTheFileNamed) {
     const auto before = digests(owned);
     ChildSpec spec = cliSpec(scratch, slot->args(scratch, input));
     spec.timeoutS = 10.0;
-    if (!sanitized()) spec.addressSpaceBytes = 2ull << 30;
+    if (!sanitized()) {
+        spec.addressSpaceBytes = 2ull << 30;
+    } else {
+        // A sanitizer's shadow memory rules out RLIMIT_AS; its own resident-memory cap does the job.
+        spec.env["ASAN_OPTIONS"] += ":hard_rss_limit_mb=2048";
+        spec.env["TSAN_OPTIONS"] = std::string(std::getenv("TSAN_OPTIONS") ? std::getenv("TSAN_OPTIONS") : "") + ":memory_limit_mb=2048";
+    }
     const ChildResult r = runChild(spec);
     SCOPED_TRACE(c.slot + " with " + c.kind + " " + input + ": " + r.describe());
 

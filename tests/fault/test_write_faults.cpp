@@ -51,6 +51,7 @@ class WriteFaults : public testing::TestWithParam<WriteCase> {};
 TEST_P(WriteFaults, LeavesNoBrokenFileAndTellsTheTruth) {
     const WriteCase& c = GetParam();
     const Writer& writer = writerNamed(c.writer);
+    if (writer.kind == OutputKind::Pdf && !havePdf()) GTEST_SKIP() << "this build has no score --pdf (PALPATE_BUILD_GUI=OFF)";
     Scratch scratch;
     WriterCaseRun run;
     run.writer = &writer;
@@ -103,6 +104,7 @@ class FileSizeLimit : public testing::TestWithParam<SizeLimitCase> {};
 TEST_P(FileSizeLimit, NoSignalAndAMessage) {
     const SizeLimitCase& c = GetParam();
     const Writer& writer = writerNamed(c.writer);
+    if (writer.kind == OutputKind::Pdf && !havePdf()) GTEST_SKIP() << "this build has no score --pdf (PALPATE_BUILD_GUI=OFF)";
     Scratch scratch;
     WriterCaseRun run;
     run.writer = &writer;
