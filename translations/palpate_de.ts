@@ -4160,10 +4160,6 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <translation>kann nicht gezeichnet werden (leeres Dokument)</translation>
     </message>
     <message>
-        <source>cannot be written: %1</source>
-        <translation>kann nicht geschrieben werden: %1</translation>
-    </message>
-    <message>
         <source>Palpate score report, page %1 of %2</source>
         <translation>Palpate-Bewertungsbericht, Seite %1 von %2</translation>
     </message>

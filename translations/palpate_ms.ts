@@ -4156,10 +4156,6 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <translation>tidak boleh dilukis (dokumen kosong)</translation>
     </message>
     <message>
-        <source>cannot be written: %1</source>
-        <translation>tidak boleh ditulis: %1</translation>
-    </message>
-    <message>
         <source>Palpate score report, page %1 of %2</source>
         <translation>Laporan markah Palpate, halaman %1 daripada %2</translation>
     </message>

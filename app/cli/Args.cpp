@@ -64,8 +64,8 @@ std::string outputIsAnInput(const std::string& option, const std::string& output
                             const std::vector<std::pair<std::string, std::string>>& inputs) {
     for (const auto& [input, what] : inputs)
         if (sameFile(output, input))
-            return "--" + option + " " + output + " is the " + what +
-                   " file: an output is never written over an input; choose another file";
+            return "--" + option + " " + output + " is the " + what + " file " + input +
+                   ": an output is never written over an input; choose another file";
     return "";
 }
 

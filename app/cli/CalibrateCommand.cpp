@@ -27,6 +27,15 @@ int calibrateCommand(const std::vector<std::string>& words) {
         std::cerr << "palpate-cli calibrate: " << args.error() << "\n";
         return 2;
     }
+    if (const auto out = args.option("out")) {
+        std::vector<std::pair<std::string, std::string>> inputs;
+        if (const auto preset = args.option("preset")) inputs.emplace_back(*preset, "preset");
+        if (const auto mesh = args.option("mesh")) inputs.emplace_back(*mesh, "mesh");
+        if (const std::string refused = outputIsAnInput("out", *out, inputs); !refused.empty()) {
+            std::cerr << "palpate-cli calibrate: " << refused << "\n";
+            return 2;
+        }
+    }
     const ToolContactChoice choice = toolContactFromArgs(args);
     if (!choice.error.empty()) {
         std::cerr << "palpate-cli calibrate: " << choice.error << "\n";

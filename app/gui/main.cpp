@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
     } catch (const std::bad_alloc&) {
         // Outside the event loop (start-up, shut-down): GuiApplication::notify catches the rest.
         std::fprintf(stderr,
-                     "palpate: not enough memory to run (std::bad_alloc; is a memory limit set, e.g. ulimit -v?)\n");
+                     "palpate: not enough memory to run (is a memory limit set, e.g. ulimit -v?)\n");
         return 1;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "palpate: %s\n", e.what());

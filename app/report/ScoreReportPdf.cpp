@@ -1,6 +1,7 @@
 #include "app/report/ScoreReportPdf.h"
 
 #include "app/report/ChartApplication.h"
+#include "engine/io/AtomicFile.h"
 
 #include <QBuffer>
 #include <QCoreApplication>
@@ -14,7 +15,6 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPdfWriter>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cmath>
@@ -499,13 +499,14 @@ bool writeScoreReportPdf(const QString& path, const ScoreReportContent& content,
         pageCount = layout.pageNumber();
     }
     if (bytes.isEmpty()) return fail(Tr::tr("cannot be drawn (empty document)"));
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) return fail(Tr::tr("cannot be written: %1").arg(file.errorString()));
-    if (file.write(bytes) != bytes.size()) {
-        file.cancelWriting();
-        return fail(Tr::tr("cannot be written: %1").arg(file.errorString()));
+    // Through the engine's atomic writer (docs/reliability.md): a failed write or fsync is an error
+    // naming its reason, and the old file stays as it was.
+    if (const std::string problem =
+            writeFileAtomically(QDir::toNativeSeparators(path).toStdString(), std::string(bytes.constData(), std::size_t(bytes.size())));
+        !problem.empty()) {
+        if (error) *error = QString::fromStdString(problem);
+        return false;
     }
-    if (!file.commit()) return fail(Tr::tr("cannot be written: %1").arg(file.errorString()));
     return true;
 }
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <new>
 
 namespace palpate {
 
@@ -22,7 +23,15 @@ std::string readRecordingFile(const std::string& path, std::vector<std::uint8_t>
     if (!file) return error;
     if (file->sizeBytes() < bytes.size()) return path + ": the file shrank while it was being read live";
     const std::size_t old = bytes.size();
-    bytes.resize(std::size_t(file->sizeBytes()));
+    try {
+        bytes.resize(std::size_t(file->sizeBytes()));
+    } catch (const std::bad_alloc&) {
+        // The reader holds a recording in memory (docs/recording.md, "Format limits and refusals"):
+        // a file within the format's limit can still be more than this process may allocate.
+        bytes.resize(old);
+        return path + ": " + std::to_string(file->sizeBytes()) +
+               " bytes are more than this process can hold in memory to read the recording";
+    }
     std::size_t done = old;
     while (done < bytes.size()) {
         const ssize_t n = ::pread(file->fd(), bytes.data() + done, bytes.size() - done, off_t(done));
