@@ -194,7 +194,7 @@ TEST(SimulatedDevice, WaypointsInterpolateLinearlyAndHoldTheEnds) {
 TEST(SimulatedDevice, RejectsBadWaypointListsAndDefinitions) {
     EXPECT_THROW(SimulatedDevice(std::vector<Waypoint>{}), std::invalid_argument);
     EXPECT_THROW(SimulatedDevice(std::vector<Waypoint>{{1.0, {}}, {1.0, {}}}), std::invalid_argument);
-    EXPECT_THROW(SimulatedDevice(SimTrajectory::Waypoints), std::invalid_argument);
+    EXPECT_THROW({ SimulatedDevice device(SimTrajectory::Waypoints); }, std::invalid_argument);
     SimulatedDeviceDef def;
     def.depthMm = -1.0;
     EXPECT_NE(validateSimulatedDeviceDef(def).find("depthMm"), std::string::npos);
