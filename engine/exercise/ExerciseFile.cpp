@@ -221,10 +221,8 @@ ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::strin
 
 ExerciseLoadResult parseExercise(const std::string& text, const std::string& source) {
     // Text that did not come through readInputFile (a recording's note) has the file's limit too.
-    if (text.size() > kExerciseFile.maxBytes)
-        return {std::nullopt,
-                {source + ": " + std::to_string(text.size()) + " bytes, more than the " +
-                 describeByteCount(kExerciseFile.maxBytes) + " " + kExerciseFile.name + " may hold"}};
+    if (const std::string problem = sizeLimitProblem(text.size(), kExerciseFile); !problem.empty())
+        return {std::nullopt, {source + ": " + problem}};
     // No exception of the JSON library leaves the loader: what it refuses is the file's problem.
     try {
         return parseExerciseText(text, source);
@@ -304,10 +302,9 @@ std::string saveExercise(const Exercise& exercise, const std::string& path) {
     }
     // Never a file the reader refuses.
     const std::string text = exerciseToJson(exercise);
-    if (text.size() > kExerciseFile.maxBytes)
-        return path + ": not saved: the exercise would be " + std::to_string(text.size()) +
-               " bytes, more than the " + describeByteCount(kExerciseFile.maxBytes) + " " + kExerciseFile.name +
-               " may hold (its description is " + std::to_string(exercise.description.size()) + " bytes)";
+    if (const std::string problem = sizeLimitProblem(text.size(), kExerciseFile); !problem.empty())
+        return path + ": not saved: the exercise would be " + problem + " (its description is " +
+               std::to_string(exercise.description.size()) + " bytes)";
     return writeFileAtomically(path, text);
 }
 

@@ -31,6 +31,12 @@ int InputFd::release() {
     return fd;
 }
 
+std::string sizeLimitProblem(std::uint64_t sizeBytes, const InputKind& kind) {
+    if (sizeBytes <= kind.maxBytes) return "";
+    return std::to_string(sizeBytes) + " bytes, more than the " + describeByteCount(kind.maxBytes) + " " + kind.name +
+           " may hold";
+}
+
 std::string describeByteCount(std::uint64_t bytes) {
     if (bytes >= kMiB && bytes % kMiB == 0) return std::to_string(bytes / kMiB) + " MiB";
     if (bytes >= kKiB && bytes % kKiB == 0) return std::to_string(bytes / kKiB) + " KiB";
@@ -75,8 +81,7 @@ std::optional<InputFd> openInputFile(const std::string& path, const InputKind& k
     }
     const std::uint64_t size = std::uint64_t(st.st_size);
     if (size > kind.maxBytes) {
-        error = path + ": " + std::to_string(size) + " bytes, more than the " + describeByteCount(kind.maxBytes) + " " +
-                kind.name + " may hold";
+        error = path + ": " + sizeLimitProblem(size, kind);
         return std::nullopt;
     }
     // A regular file never blocks; reads are ordinary again.

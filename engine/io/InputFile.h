@@ -50,6 +50,10 @@ std::string checkInputFile(const std::string& path, const InputKind& kind);
 /// that grows while it is read is refused too; a read error is reported with its reason.
 std::optional<std::string> readInputFile(const std::string& path, const InputKind& kind, std::string& error);
 
+/// "" when `sizeBytes` fits the format's limit, else "N bytes, more than the 1 MiB a preset file may
+/// hold": the one wording of the limit, for the reader and for text that did not come from a file.
+std::string sizeLimitProblem(std::uint64_t sizeBytes, const InputKind& kind);
+
 /// "1 MiB", "4 KiB", "1000 bytes": a limit as the messages say it.
 std::string describeByteCount(std::uint64_t bytes);
 

@@ -279,10 +279,8 @@ PresetLoadResult parsePresetText(const std::string& textIn, const std::string& s
 
 PresetLoadResult parseTissuePreset(const std::string& text, const std::string& source) {
     // Text that did not come through readInputFile (a recording's copy) has the file's limit too.
-    if (text.size() > kPresetFile.maxBytes)
-        return {std::nullopt,
-                {source + ": " + std::to_string(text.size()) + " bytes, more than the " +
-                 describeByteCount(kPresetFile.maxBytes) + " " + kPresetFile.name + " may hold"}};
+    if (const std::string problem = sizeLimitProblem(text.size(), kPresetFile); !problem.empty())
+        return {std::nullopt, {source + ": " + problem}};
     // No exception of the JSON library leaves the loader: what it refuses is the file's problem.
     try {
         return parsePresetText(text, source);
@@ -331,9 +329,8 @@ std::string saveTissuePreset(const TissuePreset& preset, const std::string& path
             return path + ": not saved: " + problems.front();
     // Never a file the reader refuses.
     const std::string text = tissuePresetToJson(preset);
-    if (text.size() > kPresetFile.maxBytes)
-        return path + ": not saved: the preset would be " + std::to_string(text.size()) + " bytes, more than the " +
-               describeByteCount(kPresetFile.maxBytes) + " " + kPresetFile.name + " may hold (its description is " +
+    if (const std::string problem = sizeLimitProblem(text.size(), kPresetFile); !problem.empty())
+        return path + ": not saved: the preset would be " + problem + " (its description is " +
                std::to_string(preset.description.size()) + " bytes)";
     return writeFileAtomically(path, text);
 }
