@@ -14,6 +14,37 @@ namespace palpate {
 
 namespace {
 
+/// Whether a file holds the recording's magic at its start or a chunk's anywhere, read in pieces
+/// without holding the file: a large file that holds neither is not a recording, and is refused
+/// before it is read into memory (a 2 GB file of zeros, say).
+bool holdsRecordingMagic(int fd, std::uint64_t sizeBytes) {
+    constexpr std::size_t kPieceBytes = 1u << 20;
+    constexpr std::size_t kOverlap = sizeof(kChunkMagic) - 1;  // a magic split between two pieces
+    std::vector<std::uint8_t> piece(kPieceBytes + kOverlap);
+    std::size_t kept = 0;
+    for (std::uint64_t at = 0; at < sizeBytes;) {
+        // A hole reads as zeros, which hold no magic: skip to the next data (a sparse file is quick).
+        const off_t data = ::lseek(fd, off_t(at), SEEK_DATA);
+        if (data < 0 && errno == ENXIO) return false;  // only a hole from here on
+        if (data > off_t(at)) {
+            at = std::uint64_t(data);
+            kept = 0;
+        }
+        const ssize_t n = ::pread(fd, piece.data() + kept, kPieceBytes, off_t(at));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return true;  // let the whole read report what went wrong
+        const std::size_t have = kept + std::size_t(n);
+        if (at == 0 && have >= sizeof(kRecordingMagic) &&
+            std::memcmp(piece.data(), kRecordingMagic, sizeof(kRecordingMagic)) == 0)
+            return true;
+        if (findChunkMagic(piece.data(), have, 0) < have) return true;
+        kept = std::min(kOverlap, have);
+        std::memmove(piece.data(), piece.data() + have - kept, kept);
+        at += std::uint64_t(n);
+    }
+    return false;
+}
+
 /// Reads `path` into `bytes`, which holds what an earlier look read (a live reader reads only what
 /// was appended). Through the bounded reader (engine/io/InputFile.h): a FIFO, a device (/dev/zero)
 /// or a directory is a message naming the path, never a hang, runaway memory or std::bad_alloc.
@@ -23,6 +54,10 @@ std::string readRecordingFile(const std::string& path, std::vector<std::uint8_t>
     if (!file) return error;
     if (file->sizeBytes() < bytes.size()) return path + ": the file shrank while it was being read live";
     const std::size_t old = bytes.size();
+    constexpr std::uint64_t kLargeBytes = std::uint64_t(64) << 20;
+    if (old == 0 && file->sizeBytes() > kLargeBytes && !holdsRecordingMagic(file->fd(), file->sizeBytes()))
+        return path + ": not a Palpate recording (no recording or chunk magic in its " +
+               std::to_string(file->sizeBytes()) + " bytes)";
     try {
         bytes.resize(std::size_t(file->sizeBytes()));
     } catch (const std::bad_alloc&) {
