@@ -126,10 +126,8 @@ TEST_P(SpecialInputs, RefusedQuicklyWithTheFileNamed) {
     if (!sanitized()) {
         spec.addressSpaceBytes = 2ull << 30;
     } else {
-        // A sanitizer's shadow memory rules out RLIMIT_AS; its own caps do the job: an allocation
-        // beyond the limit fails as it would under RLIMIT_AS (std::bad_alloc, not a report), and
-        // the resident-memory cap catches a runaway made of small allocations.
-        spec.env["ASAN_OPTIONS"] += ":allocator_may_return_null=1:malloc_limit_mb=1536:hard_rss_limit_mb=2048";
+        // A sanitizer's shadow memory rules out RLIMIT_AS; its own resident-memory cap does the job.
+        spec.env["ASAN_OPTIONS"] += ":hard_rss_limit_mb=2048";
         spec.env["TSAN_OPTIONS"] = std::string(std::getenv("TSAN_OPTIONS") ? std::getenv("TSAN_OPTIONS") : "") + ":memory_limit_mb=2048";
     }
     const ChildResult r = runChild(spec);
