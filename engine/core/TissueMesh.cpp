@@ -96,10 +96,10 @@ std::string MeshReport::text() const {
     return out.str();
 }
 
-TissueMesh::LoadResult TissueMesh::load(const std::string& path) {
-    namespace fs = std::filesystem;
+TissueMesh::LoadResult TissueMesh::load(const std::string& path, const MeshUnit& unit) {
     MeshReport report;
     report.source = path;
+    report.unit = unit;
     auto fail = [&](const std::string& problem) {
         report.errors.push_back(path + ": " + problem);
         return LoadResult{std::nullopt, report};
@@ -147,7 +147,7 @@ TissueMesh::LoadResult TissueMesh::load(const std::string& path) {
     std::vector<glm::vec3> positions(om.n_vertices());
     for (auto vh : om.vertices()) {
         const auto& p = om.point(vh);
-        positions[vh.idx()] = glm::vec3(p[0], p[1], p[2]);
+        positions[vh.idx()] = glm::vec3(glm::dvec3(p[0], p[1], p[2]) * unit.mmPerUnit);
     }
     std::vector<std::array<VertexId, 3>> triangles;
     triangles.reserve(om.n_faces());
@@ -213,145 +213,63 @@ TissueMesh::LoadResult MeshBuilder::build(std::vector<glm::vec3> positions,
         return {std::nullopt, report};
     }
 
-    // Finite coordinates and size.
+    // Every fault, counted and named once (engine/core/MeshFaults.h).
+    std::vector<glm::dvec3> exact(positions.begin(), positions.end());
+    const MeshFaults faults = findMeshFaults(exact, triangles);
+    report.nonFiniteVertexCount = faults.nonFiniteVertices;
+    report.degenerateTriangleCount += faults.degenerateTriangles;
+    report.nonManifoldEdgeCount += faults.nonManifoldEdges;
+    report.nonManifoldVertexCount = faults.bowTieVertices;
+    report.boundaryEdgeCount = faults.boundaryEdges;
+    report.isolatedVertexCount = faults.unusedVertices;
+    report.holeCount = faults.holes;
+    report.componentCount = faults.components;
+    report.duplicateVertexCount = faults.duplicateVertices;
+    report.misorientedEdgeCount = faults.misorientedEdges;
+    if (faults.invalidIndexTriangles || faults.nonFiniteVertices) {
+        for (const std::string& e : faults.errorTexts())
+            if (e.find("do not exist") != std::string::npos || e.find("NaN") != std::string::npos) error(e);
+        return {std::nullopt, report};
+    }
     glm::dvec3 lo(INFINITY), hi(-INFINITY);
     for (const glm::vec3& p : positions) {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-            ++report.nonFiniteVertexCount;
-            continue;
-        }
         lo = glm::min(lo, glm::dvec3(p));
         hi = glm::max(hi, glm::dvec3(p));
     }
-    if (report.nonFiniteVertexCount > 0) {
-        error(plural(report.nonFiniteVertexCount, "vertex") + " with NaN or infinite coordinates");
-        return {std::nullopt, report};
-    }
     report.bboxDiagonalMm = glm::length(hi - lo);
+    report.sizeMm = hi - lo;
     if (report.bboxDiagonalMm < kMinDiagonalMm || report.bboxDiagonalMm > kMaxDiagonalMm) {
         std::ostringstream s;
         s << "absurd size: bounding-box diagonal " << report.bboxDiagonalMm << " mm (expected "
           << kMinDiagonalMm << " to " << kMaxDiagonalMm << " mm)";
         error(s.str());
     }
-
-    // Indices and degenerate triangles (zero area relative to the model's scale).
-    const double minArea2 = std::pow(report.bboxDiagonalMm * 1e-7, 4);
-    std::size_t badIndex = 0;
-    for (const auto& t : triangles) {
-        if (t[0] >= nv || t[1] >= nv || t[2] >= nv) {
-            ++badIndex;
-            continue;
-        }
-        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-            ++report.degenerateTriangleCount;
-            continue;
-        }
-        const glm::dvec3 a(positions[t[0]]), b(positions[t[1]]), c(positions[t[2]]);
-        const glm::dvec3 n = glm::cross(b - a, c - a);
-        if (glm::dot(n, n) <= minArea2) ++report.degenerateTriangleCount;
-    }
-    if (badIndex) {
-        error(plural(badIndex, "triangle") + " refer to vertices that do not exist");
-        return {std::nullopt, report};
-    }
-    if (report.degenerateTriangleCount > 0 &&
-        std::none_of(report.errors.begin(), report.errors.end(),
-                     [](const std::string& e) { return e.find("degenerate") != std::string::npos; }))
-        error(plural(report.degenerateTriangleCount, "degenerate triangle") + " (zero area)");
-
-    // Edges: boundary (1 face), manifold (2 faces, opposite directions), non-manifold (3+).
-    struct DirectedEdge {
-        std::uint64_t key;
-        bool forward;
+    // A reader's own findings (OpenMesh's "equal vertices", split faces) come first and are not repeated.
+    auto already = [&](const char* word) {
+        return std::any_of(report.errors.begin(), report.errors.end(),
+                           [&](const std::string& e) { return e.find(word) != std::string::npos; });
     };
-    std::vector<DirectedEdge> edges;
-    edges.reserve(triangles.size() * 3);
-    for (const auto& t : triangles)
-        for (int i = 0; i < 3; ++i) {
-            const VertexId a = t[i], b = t[(i + 1) % 3];
-            const VertexId lo32 = std::min(a, b), hi32 = std::max(a, b);
-            edges.push_back({std::uint64_t(lo32) << 32 | hi32, a < b});
-        }
-    std::sort(edges.begin(), edges.end(),
-              [](const DirectedEdge& x, const DirectedEdge& y) { return x.key < y.key; });
-    std::size_t misoriented = 0;
-    for (std::size_t i = 0; i < edges.size();) {
-        std::size_t j = i;
-        int forward = 0;
-        while (j < edges.size() && edges[j].key == edges[i].key) forward += edges[j++].forward ? 1 : 0;
-        const std::size_t count = j - i;
-        if (count == 1) ++report.boundaryEdgeCount;
-        else if (count > 2) ++report.nonManifoldEdgeCount;
-        else if (forward != 1) ++misoriented;
-        i = j;
+    for (const std::string& e : faults.errorTexts()) {
+        if (e.find("degenerate") != std::string::npos && already("degenerate")) continue;
+        if (e.find("non-manifold") != std::string::npos && already("non-manifold")) continue;
+        error(e);
     }
-    if (report.nonManifoldEdgeCount > 0 &&
-        std::none_of(report.errors.begin(), report.errors.end(),
-                     [](const std::string& e) { return e.find("non-manifold") != std::string::npos; }))
-        error("non-manifold: " + plural(report.nonManifoldEdgeCount, "edge") + " shared by three or more triangles");
-    if (misoriented > 0)
-        error(plural(misoriented, "edge") + " where neighbouring triangles are inconsistently oriented");
-
-    // Vertex fans: a manifold vertex's incident triangles form one fan.
+    if (faults.hasErrors())
+        report.errors.push_back(src + ": to repair it, import it (palpate-cli mesh import --repair, or File > Import Mesh...)");
+    for (const std::string& w : faults.warningTexts()) {
+        if (w.find("open surface") == 0) {
+            report.warnings.push_back(src + ": " + w + " (allowed; contact near the boundary is less accurate)");
+        } else if (w.find("used by no triangle") != std::string::npos) {
+            report.warnings.push_back(src + ": " + w + " (dropped)");
+        } else {
+            report.warnings.push_back(src + ": " + w);
+        }
+    }
+    if (!report.valid()) return {std::nullopt, report};
     std::vector<std::uint32_t> incidentStart(nv + 1, 0);
     for (const auto& t : triangles)
         for (VertexId v : t) ++incidentStart[v + 1];
     for (std::size_t v = 0; v < nv; ++v) incidentStart[v + 1] += incidentStart[v];
-    std::vector<std::uint32_t> incident(incidentStart.back());
-    {
-        std::vector<std::uint32_t> fill(incidentStart.begin(), incidentStart.end() - 1);
-        for (std::uint32_t f = 0; f < triangles.size(); ++f)
-            for (VertexId v : triangles[f]) incident[fill[v]++] = f;
-    }
-    std::vector<VertexId> others;
-    std::vector<std::uint32_t> parent;
-    for (VertexId v = 0; v < nv; ++v) {
-        const std::uint32_t begin = incidentStart[v], end = incidentStart[v + 1];
-        if (begin == end) {
-            ++report.isolatedVertexCount;
-            continue;
-        }
-        others.clear();
-        for (std::uint32_t i = begin; i < end; ++i)
-            for (VertexId w : triangles[incident[i]])
-                if (w != v) others.push_back(w);
-        std::sort(others.begin(), others.end());
-        others.erase(std::unique(others.begin(), others.end()), others.end());
-        parent.resize(others.size());
-        std::iota(parent.begin(), parent.end(), 0u);
-        auto find = [&](std::uint32_t x) {
-            while (parent[x] != x) x = parent[x] = parent[parent[x]];
-            return x;
-        };
-        auto slot = [&](VertexId w) {
-            return std::uint32_t(std::lower_bound(others.begin(), others.end(), w) - others.begin());
-        };
-        std::size_t components = others.size();
-        for (std::uint32_t i = begin; i < end; ++i) {
-            const auto& t = triangles[incident[i]];
-            VertexId a = kNoVertex, b = kNoVertex;
-            for (VertexId w : t)
-                if (w != v) (a == kNoVertex ? a : b) = w;
-            if (a == kNoVertex || b == kNoVertex) continue;
-            const std::uint32_t ra = find(slot(a)), rb = find(slot(b));
-            if (ra != rb) {
-                parent[ra] = rb;
-                --components;
-            }
-        }
-        if (components > 1) ++report.nonManifoldVertexCount;
-    }
-    if (report.nonManifoldVertexCount > 0)
-        error("non-manifold: " + plural(report.nonManifoldVertexCount, "vertex") +
-              " where separate sheets of triangles touch at a single point");
-    if (report.boundaryEdgeCount > 0)
-        report.warnings.push_back(src + ": open surface with " + plural(report.boundaryEdgeCount, "boundary edge") +
-                                  " (allowed; contact near the boundary is less accurate)");
-    if (report.isolatedVertexCount > 0)
-        report.warnings.push_back(src + ": " + plural(report.isolatedVertexCount, "vertex") +
-                                  " used by no triangle (dropped)");
-    if (!report.valid()) return {std::nullopt, report};
 
     // Drop unused vertices, then renumber along the Morton curve.
     std::vector<VertexId> keep;

@@ -2,6 +2,9 @@
 // A closed (or open, reported) triangle surface with flat arrays for the haptic loop.
 // OpenMesh owns file IO and topology checks; the hot loop reads only the flat arrays here.
 
+#include "engine/core/MeshFaults.h"
+#include "engine/core/MeshUnit.h"
+
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -27,6 +30,13 @@ struct MeshReport {
     std::size_t nonFiniteVertexCount = 0;
     std::size_t isolatedVertexCount = 0;
     double bboxDiagonalMm = 0.0;
+    MeshUnit unit;                       ///< the file's unit; every size here is already in mm
+    glm::dvec3 sizeMm{0.0};              ///< bounding-box extent (x, y, z)
+    std::size_t holeCount = 0;           ///< closed loops of boundary edges
+    std::size_t componentCount = 0;      ///< edge-connected pieces
+    std::size_t duplicateVertexCount = 0;  ///< at exactly another vertex's position
+    std::size_t misorientedEdgeCount = 0;
+    std::vector<std::string> notes;      ///< what the reader tolerated ("12 quads triangulated")
     std::vector<std::string> errors;     ///< each names the source and the problem
     std::vector<std::string> warnings;
 
@@ -41,8 +51,9 @@ class TissueMesh {
 public:
     struct LoadResult;
 
-    /// Loads OBJ/OFF/PLY/STL/OM. Never throws; on failure the report names the file and the problem.
-    static LoadResult load(const std::string& path);
+    /// Loads OBJ/OFF/PLY/STL/OM with coordinates in `unit`, scaled to mm. Never throws; on failure
+    /// the report names the file and the problem.
+    static LoadResult load(const std::string& path, const MeshUnit& unit = kMillimetres);
     /// Builds from a triangle list (generators, tests). Same validation as `load`.
     static LoadResult fromTriangles(std::vector<glm::vec3> positionsMm,
                                     const std::vector<std::array<VertexId, 3>>& triangles,
