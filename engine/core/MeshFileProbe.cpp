@@ -94,7 +94,10 @@ std::string probeOff(const std::string& text) {
     std::string magic;
     header >> magic;
     if (magic.find("OFF") == std::string::npos) return "is not an OFF file (missing 'OFF' header)";
-    if (magic.find("BINARY") != std::string::npos || lines[0].find("BINARY") != std::string::npos) return {};
+    // CGAL's soup reader takes binary OFF's counts and corner counts as they come and skips no
+    // face colours, so a binary OFF file is refused rather than half read (docs/meshes.md, "Reading").
+    if (magic.find("BINARY") != std::string::npos || lines[0].find("BINARY") != std::string::npos)
+        return "is a binary OFF file, which is not supported (export it as ASCII OFF, PLY or STL)";
     long long nv = -1, nf = -1;
     if (!(header >> nv >> nf)) {
         if (lines.size() < 2) return "is truncated: OFF header has no vertex and face counts";

@@ -37,9 +37,11 @@ namespace {
 using Point = CGAL::Simple_cartesian<double>::Point_3;
 using CgalPolygons = std::vector<std::vector<std::size_t>>;
 
-/// Above this many corners a concave polygon is fanned instead of ear-clipped: ear clipping is
-/// quadratic or worse in the corners, and a hostile file must not hang the loader.
+/// Above this many corners a concave polygon is fanned instead of ear-clipped, and after this many
+/// ear tests in one file every further concave polygon is: ear clipping is quadratic or worse in
+/// the corners, and a hostile file must not hang the loader.
 constexpr std::size_t kMaxEarClipCorners = 512;
+constexpr std::size_t kEarTestBudget = 200'000'000;
 
 std::string plural(std::size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
@@ -352,31 +354,36 @@ double cross2(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
 /// Ear clipping of one simple polygon projected into its best-fit plane; false when no ear is left
 /// (a self-intersecting or degenerate polygon), with the triangles found so far in `out`.
 bool earClip(const std::vector<glm::dvec2>& corners, const std::vector<std::uint32_t>& ids, double eps,
-             std::vector<std::array<std::uint32_t, 3>>& out, std::vector<std::size_t>& left) {
+             std::vector<std::array<std::uint32_t, 3>>& out, std::vector<std::size_t>& left, std::size_t& tests) {
     left.resize(corners.size());
     for (std::size_t i = 0; i < left.size(); ++i) left[i] = i;
+    // Walk round the polygon; after a clip, look again at the corner before it (its ear changed).
+    std::size_t k = 0, misses = 0;
     while (left.size() > 3) {
-        bool clipped = false;
-        for (std::size_t k = 0; k < left.size() && !clipped; ++k) {
-            const std::size_t a = left[(k + left.size() - 1) % left.size()], b = left[k], c = left[(k + 1) % left.size()];
-            if (cross2(corners[a], corners[b], corners[c]) <= eps) continue;  // reflex or straight
-            bool empty = true;
+        if (misses == left.size()) return false;
+        const std::size_t a = left[(k + left.size() - 1) % left.size()], b = left[k], c = left[(k + 1) % left.size()];
+        bool ear = cross2(corners[a], corners[b], corners[c]) > eps;  // convex, not straight
+        if (ear) {
+            tests += left.size();
             for (std::size_t j : left) {
-                if (j == a || j == b || j == c) continue;
                 const glm::dvec2& p = corners[j];
-                if (p == corners[a] || p == corners[b] || p == corners[c]) continue;
+                if (j == a || j == b || j == c || p == corners[a] || p == corners[b] || p == corners[c]) continue;
                 if (cross2(corners[a], corners[b], p) >= -eps && cross2(corners[b], corners[c], p) >= -eps &&
                     cross2(corners[c], corners[a], p) >= -eps) {
-                    empty = false;
+                    ear = false;
                     break;
                 }
             }
-            if (!empty) continue;
-            out.push_back({ids[a], ids[b], ids[c]});
-            left.erase(left.begin() + std::ptrdiff_t(k));
-            clipped = true;
         }
-        if (!clipped) return false;
+        if (!ear) {
+            ++misses;
+            k = (k + 1) % left.size();
+            continue;
+        }
+        out.push_back({ids[a], ids[b], ids[c]});
+        left.erase(left.begin() + std::ptrdiff_t(k));
+        k = (k + left.size() - 1) % left.size();
+        misses = 0;
     }
     out.push_back({ids[left[0]], ids[left[1]], ids[left[2]]});
     return true;
@@ -387,7 +394,7 @@ bool earClip(const std::vector<glm::dvec2>& corners, const std::vector<std::uint
 std::vector<std::array<std::uint32_t, 3>> triangulatePolygons(const PolygonSoup& soup, std::vector<std::string>& notes) {
     std::vector<std::array<std::uint32_t, 3>> triangles;
     triangles.reserve(soup.polygons.size());
-    std::size_t quads = 0, larger = 0, dropped = 0, fannedLarge = 0, noEar = 0;
+    std::size_t quads = 0, larger = 0, dropped = 0, fannedLarge = 0, noEar = 0, earTests = 0;
     std::vector<glm::dvec2> corners;
     std::vector<std::size_t> left;
     for (const auto& polygon : soup.polygons) {
@@ -440,11 +447,11 @@ std::vector<std::array<std::uint32_t, 3>> triangulatePolygons(const PolygonSoup&
             convex = cross2(corners[i], corners[(i + 1) % n], corners[(i + 2) % n]) > eps;
         if (convex) {
             fan(polygon);
-        } else if (n > kMaxEarClipCorners) {
+        } else if (n > kMaxEarClipCorners || earTests > kEarTestBudget) {
             ++fannedLarge;
             fan(polygon);
         } else {
-            if (!earClip(corners, polygon, eps, triangles, left)) {
+            if (!earClip(corners, polygon, eps, triangles, left, earTests)) {
                 // No ear: self-intersecting or with straight corners only; the rest is fanned, and
                 // whatever that overlaps is named by findMeshFaults.
                 ++noEar;
@@ -463,7 +470,7 @@ std::vector<std::array<std::uint32_t, 3>> triangulatePolygons(const PolygonSoup&
     }
     if (fannedLarge)
         notes.push_back(plural(fannedLarge, "concave polygon", "concave polygons") + " of more than " +
-                        std::to_string(kMaxEarClipCorners) + " corners split as a fan (may overlap itself)");
+                        std::to_string(kMaxEarClipCorners) + " corners (or beyond the file's budget of ear tests) split as a fan (it may overlap itself)");
     if (noEar)
         notes.push_back(plural(noEar, "polygon", "polygons") + " that cross themselves split as a fan");
     if (dropped) notes.push_back(plural(dropped, "polygon", "polygons") + " of fewer than 3 corners dropped");
