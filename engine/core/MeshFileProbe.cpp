@@ -176,7 +176,12 @@ std::string probeObj(const std::string& text) {
 }
 
 std::string probeStl(const std::string& bytes) {
-    const bool looksAscii = bytes.size() >= 5 && bytes.compare(0, 5, "solid") == 0 &&
+    // A binary header may begin with "solid" too (some exporters write it): a file whose size is
+    // exactly what its triangle count declares is binary.
+    std::uint32_t declared = 0;
+    if (bytes.size() >= 84) std::memcpy(&declared, bytes.data() + 80, 4);
+    const bool exactBinary = bytes.size() >= 84 && bytes.size() == 84ull + 50ull * declared;
+    const bool looksAscii = !exactBinary && bytes.size() >= 5 && bytes.compare(0, 5, "solid") == 0 &&
                             bytes.find("facet") != std::string::npos;
     if (looksAscii) {
         if (bytes.find("endsolid") == std::string::npos) return "is truncated: ASCII STL without 'endsolid'";

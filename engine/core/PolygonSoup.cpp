@@ -115,8 +115,7 @@ std::string prescanObj(std::string& text, std::vector<std::string>& notes) {
     std::ostringstream out;
     std::string line;
     std::size_t lineNo = 0, vertices = 0;
-    std::size_t comments = 0, grouping = 0, polylines = 0, attributes = 0, relative = 0, cornerIndices = 0,
-                unknown = 0;
+    std::size_t comments = 0, grouping = 0, polylines = 0, attributes = 0, relative = 0, cornerIndices = 0, unknown = 0;
     std::string firstUnknown;
     std::size_t maxIndex = 0, maxIndexLine = 0;
     while (std::getline(in, line)) {
@@ -187,12 +186,25 @@ std::string prescanObj(std::string& text, std::vector<std::string>& notes) {
                ", but the file has " + std::to_string(vertices);
     text = out.str();
     if (comments) notes.push_back(plural(comments, "comment", "comments") + " ignored");
-    if (grouping) notes.push_back(plural(grouping, "group, object, smoothing or material record", "group, object, smoothing and material records") + " ignored (o, g, s, usemtl, mtllib)");
-    if (attributes) notes.push_back(plural(attributes, "texture or normal record", "texture and normal records") + " ignored (vt, vn, vp)");
-    if (cornerIndices) notes.push_back("texture and normal indices of " + plural(cornerIndices, "face corner", "face corners") + " ignored");
-    if (relative) notes.push_back(plural(relative, "negative (relative) vertex index", "negative (relative) vertex indices") + " resolved");
-    if (polylines) notes.push_back(plural(polylines, "polyline or point record", "polyline and point records") + " ignored (l, p)");
-    if (unknown) notes.push_back(plural(unknown, "record of an unknown kind", "records of unknown kinds") + " ignored (first at " + firstUnknown + ")");
+    if (grouping)
+        notes.push_back(plural(grouping, "group, object, smoothing or material record",
+                               "group, object, smoothing and material records") +
+                        " ignored (o, g, s, usemtl, mtllib)");
+    if (attributes)
+        notes.push_back(plural(attributes, "texture or normal record", "texture and normal records") +
+                        " ignored (vt, vn, vp)");
+    if (cornerIndices)
+        notes.push_back("texture and normal indices of " + plural(cornerIndices, "face corner", "face corners") +
+                        " ignored");
+    if (relative)
+        notes.push_back(plural(relative, "negative (relative) vertex index", "negative (relative) vertex indices") +
+                        " resolved");
+    if (polylines)
+        notes.push_back(plural(polylines, "polyline or point record", "polyline and point records") +
+                        " ignored (l, p)");
+    if (unknown)
+        notes.push_back(plural(unknown, "record of an unknown kind", "records of unknown kinds") +
+                        " ignored (first at " + firstUnknown + ")");
     return {};
 }
 
@@ -201,7 +213,8 @@ void sanitisePly(std::string& bytes, std::vector<std::string>& notes) {
     const std::size_t endHeader = bytes.find("end_header");
     if (endHeader == std::string::npos) return sanitiseText(bytes, notes);
     const std::size_t format = bytes.find("format ");
-    const bool ascii = format != std::string::npos && format < endHeader && bytes.compare(format, 12, "format ascii") == 0;
+    const bool ascii = format != std::string::npos && format < endHeader &&
+                       bytes.compare(format, 12, "format ascii") == 0;
     if (ascii) return sanitiseText(bytes, notes);
     std::size_t bodyStart = bytes.find('\n', endHeader);
     bodyStart = bodyStart == std::string::npos ? bytes.size() : bodyStart + 1;
@@ -268,8 +281,8 @@ std::string readWithCgal(const std::string& bytes, const std::string& ext, Polyg
     }
     if (!ok) return "is not a readable " + ext + " file (a malformed record)";
     if (points.size() > kMaxMeshVertices)
-        return "has " + std::to_string(points.size()) + " vertices, more than the " +
-               std::to_string(kMaxMeshVertices) + " a mesh may have";
+        return "has " + std::to_string(points.size()) + " vertices, more than the " + std::to_string(kMaxMeshVertices) +
+               " a mesh may have";
     if (polygons.size() > kMaxMeshFaces)
         return "has " + std::to_string(polygons.size()) + " faces, more than the " + std::to_string(kMaxMeshFaces) +
                " a mesh may have";
@@ -306,7 +319,12 @@ std::string readPolygonSoupBytes(const std::string& original, const std::string&
     std::vector<std::string> notes;
     if (ext == "obj" || ext == "off") sanitiseText(bytes, notes);
     else if (ext == "ply") sanitisePly(bytes, notes);
-    else if (ext == "stl" && !isBinaryStl(bytes)) sanitiseText(bytes, notes);
+    else if (ext == "stl" && !isBinaryStl(bytes))
+        sanitiseText(bytes, notes);
+    else if (ext == "stl")
+        // CGAL takes a file that begins with "solid" for ASCII and falls back to binary only after
+        // the ASCII parse appended what it could; the header's 80 bytes are unused in binary STL.
+        bytes[0] = 'B';
     // OBJ's own pre-scan first, for its line numbers; it keeps every line, so the probe's line
     // numbers stay right too.
     if (ext == "obj" && bytes.find('\0') == std::string::npos)
@@ -391,7 +409,8 @@ bool earClip(const std::vector<glm::dvec2>& corners, const std::vector<std::uint
 
 }  // namespace
 
-std::vector<std::array<std::uint32_t, 3>> triangulatePolygons(const PolygonSoup& soup, std::vector<std::string>& notes) {
+std::vector<std::array<std::uint32_t, 3>> triangulatePolygons(const PolygonSoup& soup,
+                                                              std::vector<std::string>& notes) {
     std::vector<std::array<std::uint32_t, 3>> triangles;
     triangles.reserve(soup.polygons.size());
     std::size_t quads = 0, larger = 0, dropped = 0, fannedLarge = 0, noEar = 0, earTests = 0;
@@ -470,9 +489,9 @@ std::vector<std::array<std::uint32_t, 3>> triangulatePolygons(const PolygonSoup&
     }
     if (fannedLarge)
         notes.push_back(plural(fannedLarge, "concave polygon", "concave polygons") + " of more than " +
-                        std::to_string(kMaxEarClipCorners) + " corners (or beyond the file's budget of ear tests) split as a fan (it may overlap itself)");
-    if (noEar)
-        notes.push_back(plural(noEar, "polygon", "polygons") + " that cross themselves split as a fan");
+                        std::to_string(kMaxEarClipCorners) +
+                        " corners (or beyond the file's budget of ear tests) split as a fan (it may overlap itself)");
+    if (noEar) notes.push_back(plural(noEar, "polygon", "polygons") + " that cross themselves split as a fan");
     if (dropped) notes.push_back(plural(dropped, "polygon", "polygons") + " of fewer than 3 corners dropped");
     return triangles;
 }
