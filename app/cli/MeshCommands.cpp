@@ -1,7 +1,16 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "engine/core/MeshGenerator.h"
+#include "engine/core/RingRoundness.h"
 #include "engine/core/TissueMesh.h"
+#include "engine/meshimport/MeshImport.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
 
 #include <iostream>
 
@@ -49,28 +58,185 @@ int generate(const std::vector<std::string>& words) {
     return 0;
 }
 
+/// --unit, default mm; nullopt (and the message printed) when it is not a unit.
+std::optional<MeshUnit> unitOption(const Args& args, const char* command) {
+    const auto text = args.option("unit");
+    if (!text) return kMillimetres;
+    std::string error;
+    auto unit = parseMeshUnit(*text, error);
+    if (!unit) std::cerr << command << ": --unit " << error << "\n";
+    return unit;
+}
+
+nlohmann::json roundnessJson(const RingRoundness& r) {
+    nlohmann::json rings = nlohmann::json::array();
+    for (int k = 1; k <= r.ringCount; ++k) rings.push_back(r.ringDistanceCv[k]);
+    return {{"ring_distance_cv", rings}, {"edge_length_cv", r.edgeLengthCv}, {"mean_edge_mm", r.meanEdgeMm},
+            {"min_edge_mm", r.minEdgeMm}, {"max_edge_mm", r.maxEdgeMm}, {"sampled_centres", r.sampledCentres}};
+}
+
+nlohmann::json faultsJson(const MeshFaults& f) {
+    return {{"invalid_index_triangles", f.invalidIndexTriangles}, {"non_finite_vertices", f.nonFiniteVertices},
+            {"degenerate_triangles", f.degenerateTriangles},      {"duplicate_vertices", f.duplicateVertices},
+            {"non_manifold_edges", f.nonManifoldEdges},           {"misoriented_edges", f.misorientedEdges},
+            {"bow_tie_vertices", f.bowTieVertices},               {"boundary_edges", f.boundaryEdges},
+            {"holes", f.holes},                                   {"components", f.components},
+            {"unused_vertices", f.unusedVertices}};
+}
+
+std::string roundnessText(const RingRoundness& r) {
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(3) << "  ring roundness (CV of the distances to ring k; 0 = round):";
+    for (int k = 1; k <= r.ringCount; ++k) out << " ring " << k << " " << r.ringDistanceCv[k];
+    out << "; edge-length CV " << r.edgeLengthCv << std::setprecision(2) << " (edges " << r.minEdgeMm << " to "
+        << r.maxEdgeMm << " mm, mean " << r.meanEdgeMm << ")\n";
+    return out.str();
+}
+
 int check(const std::vector<std::string>& words) {
-    Args args(words, {}, {});
+    Args args(words, {"json"}, {"unit"});
     if (!args.ok() || args.positional().size() != 1) {
         std::cerr << "mesh check: needs exactly one FILE" << (args.ok() ? "" : " (" + args.error() + ")") << "\n";
         return 2;
     }
-    const auto result = TissueMesh::load(args.positional().front());
+    const auto unit = unitOption(args, "mesh check");
+    if (!unit) return 2;
+    const std::string& path = args.positional().front();
+    const auto result = TissueMesh::load(path, *unit);
+    const double diagonalInFileUnits = result.report.bboxDiagonalMm / unit->mmPerUnit;
+    const auto suggestion = suggestMeshUnit(diagonalInFileUnits, *unit);
+    std::optional<RingRoundness> roundness;
+    if (result.mesh) roundness = measureRingRoundness(*result.mesh);
+    if (args.flag("json")) {
+        const MeshReport& r = result.report;
+        nlohmann::json j = {{"file", path},
+                            {"valid", result.mesh.has_value()},
+                            {"unit", unit->text()},
+                            {"size_mm", {r.sizeMm.x, r.sizeMm.y, r.sizeMm.z}},
+                            {"diagonal_mm", r.bboxDiagonalMm},
+                            {"vertices", r.vertexCount},
+                            {"triangles", r.triangleCount},
+                            {"holes", r.holeCount},
+                            {"components", r.componentCount},
+                            {"duplicate_vertices", r.duplicateVertexCount},
+                            {"misoriented_edges", r.misorientedEdgeCount},
+                            {"non_manifold_edges", r.nonManifoldEdgeCount},
+                            {"bow_tie_vertices", r.nonManifoldVertexCount},
+                            {"boundary_edges", r.boundaryEdgeCount},
+                            {"notes", r.notes},
+                            {"errors", r.errors},
+                            {"warnings", r.warnings}};
+        if (suggestion) j["suggested_unit"] = {{"unit", suggestion->unit.text()}, {"reason", suggestion->reason}};
+        if (roundness) j["roundness"] = roundnessJson(*roundness);
+        std::cout << j.dump(2) << "\n";
+        return result.mesh ? 0 : 1;
+    }
     std::cout << result.report.text();
+    if (suggestion)
+        std::cout << "  suggested unit: " << suggestion->unit.text() << " (" << suggestion->reason << "; use --unit "
+                  << suggestion->unit.text() << ")\n";
+    if (roundness) std::cout << roundnessText(*roundness);
     return result.mesh ? 0 : 1;
+}
+
+int import(const std::vector<std::string>& words) {
+    Args args(words, {"repair", "json", "keep-all", "no-fill-holes", "overwrite"},
+              {"out", "unit", "remesh-edge-mm", "remesh-iterations"});
+    if (!args.ok() || args.positional().size() != 1 || !args.option("out")) {
+        std::cerr << "mesh import: needs IN --out OUT [--unit mm|cm|m|in|SCALE] [--repair] [--keep-all] "
+                     "[--no-fill-holes] [--remesh-edge-mm E] [--remesh-iterations N] [--overwrite] [--json]"
+                  << (args.ok() ? "" : " (" + args.error() + ")") << "\n";
+        return 2;
+    }
+    const std::string& in = args.positional().front();
+    const std::string out = *args.option("out");
+    MeshImportDef def;
+    const auto unit = unitOption(args, "mesh import");
+    if (!unit) return 2;
+    def.unit = *unit;
+    def.repair = args.flag("repair");
+    def.keep = args.flag("keep-all") ? KeepComponents::All : KeepComponents::Largest;
+    def.fillHoles = !args.flag("no-fill-holes");
+    if (const auto edge = args.option("remesh-edge-mm")) {
+        const auto value = parseNumber(*edge);
+        if (!value || *value < kMinRemeshEdgeMm || *value > 1e4) {
+            std::cerr << "mesh import: --remesh-edge-mm '" << *edge << "' must be a length in mm from " << kMinRemeshEdgeMm
+                      << " to 10000\n";
+            return 2;
+        }
+        def.remeshEdgeMm = *value;
+    }
+    if (const auto iterations = args.option("remesh-iterations")) {
+        const auto value = parsePositiveInt(*iterations);
+        if (!value || *value > kMaxRemeshIterations) {
+            std::cerr << "mesh import: --remesh-iterations '" << *iterations << "' must be a whole number from 1 to "
+                      << kMaxRemeshIterations << "\n";
+            return 2;
+        }
+        def.remeshIterations = int(*value);
+    }
+    if (const std::string refusal = outputIsAnInput("--out", out, {{in, "mesh being imported"}}); !refusal.empty()) {
+        std::cerr << "mesh import: " << refusal << "\n";
+        return 2;
+    }
+    std::error_code ec;
+    if (std::filesystem::exists(out, ec) && !args.flag("overwrite")) {
+        std::cerr << "mesh import: " << out << " exists; add --overwrite to replace it\n";
+        return 2;
+    }
+
+    const MeshImportResult result = importMesh(in, def);
+    std::string writeProblem;
+    if (result.mesh) writeProblem = result.mesh->save(out);
+    if (args.flag("json")) {
+        nlohmann::json j = {{"file", in},
+                            {"out", out},
+                            {"written", result.mesh && writeProblem.empty()},
+                            {"unit", result.unit.text()},
+                            {"size_mm", {result.sizeMm.x, result.sizeMm.y, result.sizeMm.z}},
+                            {"source_vertices", result.sourceVertices},
+                            {"source_faces", result.sourcePolygons},
+                            {"notes", result.notes},
+                            {"faults", faultsJson(result.faults)},
+                            {"fault_texts", result.faults.errorTexts()},
+                            {"found_texts", result.faults.warningTexts()},
+                            {"changes", result.changes},
+                            {"warnings", result.warnings},
+                            {"errors", result.errors}};
+        if (result.suggestion)
+            j["suggested_unit"] = {{"unit", result.suggestion->unit.text()}, {"reason", result.suggestion->reason}};
+        if (result.roundnessBefore) j["roundness_before"] = roundnessJson(*result.roundnessBefore);
+        if (result.roundnessAfter) j["roundness_after"] = roundnessJson(*result.roundnessAfter);
+        if (result.mesh) j["result"] = {{"vertices", result.mesh->vertexCount()}, {"triangles", result.mesh->triangleCount()}};
+        if (!writeProblem.empty()) j["errors"].push_back(writeProblem);
+        std::cout << j.dump(2) << "\n";
+    } else {
+        std::cout << result.text();
+        if (result.suggestion)
+            std::cout << "  (to import in " << result.suggestion->unit.text() << ": --unit " << result.suggestion->unit.text()
+                      << ")\n";
+        if (result.mesh && writeProblem.empty()) std::cout << "wrote " << out << " (in mm)\n";
+    }
+    if (!writeProblem.empty()) std::cerr << writeProblem << "\n";
+    if (!result.mesh) {
+        for (const std::string& e : result.errors) std::cerr << e << "\n";
+        return 1;
+    }
+    return writeProblem.empty() ? 0 : 1;
 }
 
 }  // namespace
 
 int meshCommand(const std::vector<std::string>& words) {
     if (words.empty()) {
-        std::cerr << "mesh: needs a subcommand: generate or check\n";
+        std::cerr << "mesh: needs a subcommand: generate, check or import\n";
         return 2;
     }
     const std::vector<std::string> rest(words.begin() + 1, words.end());
     if (words.front() == "generate") return generate(rest);
     if (words.front() == "check") return check(rest);
-    std::cerr << "mesh: unknown subcommand '" << words.front() << "' (use generate or check)\n";
+    if (words.front() == "import") return import(rest);
+    std::cerr << "mesh: unknown subcommand '" << words.front() << "' (use generate, check or import)\n";
     return 2;
 }
 

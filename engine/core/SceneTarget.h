@@ -7,7 +7,7 @@
 
 namespace palpate {
 
-/// The vertex with the largest x (0 for an empty mesh).
+/// The vertex with the largest x (0 for an empty mesh); on a flat side, the one nearest its centre.
 VertexId defaultTargetVertex(const TissueMesh& mesh);
 
 /// Aims a device that scripts its motion (HapticDevice::setScene) at defaultTargetVertex. A tool

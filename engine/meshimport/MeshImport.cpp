@@ -109,8 +109,10 @@ MeshImportResult importMesh(const std::string& path, const MeshImportDef& def, c
         }
         surface = std::move(*repaired.surface);
         if (!r.roundnessBefore) {
-            if (auto repairedMesh = buildMesh(surface, path, nullptr, nullptr))
+            if (auto repairedMesh = buildMesh(surface, path, nullptr, nullptr)) {
                 r.roundnessBefore = measureRingRoundness(*repairedMesh, def.roundnessRings);
+                r.roundnessBeforeIsRepaired = true;
+            }
         }
     } else {
         if (r.faults.hasErrors()) {
@@ -157,8 +159,8 @@ std::string MeshImportResult::text() const {
     for (const std::string& c : changes) out << "  changed: " << c << "\n";
     if (roundnessBefore || roundnessAfter) {
         out << "  ring roundness (coefficient of variation of the distances to ring k; 0 = round):\n";
-        if (roundnessBefore) roundnessRow(out, "before:", *roundnessBefore);
-        if (roundnessAfter) roundnessRow(out, "after: ", *roundnessAfter);
+        if (roundnessBefore) roundnessRow(out, roundnessBeforeIsRepaired ? "repaired:" : "before:", *roundnessBefore);
+        if (roundnessAfter) roundnessRow(out, roundnessBeforeIsRepaired ? "after:   " : "after: ", *roundnessAfter);
     }
     if (mesh)
         out << "  result: " << mesh->vertexCount() << " vertices, " << mesh->triangleCount() << " triangles, mean edge "

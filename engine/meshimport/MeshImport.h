@@ -46,7 +46,9 @@ struct MeshImportResult {
     std::vector<std::string> notes;          ///< what was tolerated ("12 quads triangulated")
     MeshFaults faults;                       ///< of the source (after triangulation)
     std::vector<std::string> changes;        ///< every change repair and remeshing made
-    std::optional<RingRoundness> roundnessBefore;  ///< source (or repaired, before remeshing)
+    std::optional<RingRoundness> roundnessBefore;  ///< of the source; of the repaired mesh when the
+                                                   ///< source has faults (roundnessBeforeIsRepaired)
+    bool roundnessBeforeIsRepaired = false;
     std::optional<RingRoundness> roundnessAfter;   ///< the result
     std::optional<TissueMesh> mesh;          ///< the result, in mm; absent on errors
     std::vector<std::string> errors;         ///< each names the source and the problem

@@ -117,7 +117,15 @@ MeshRepairOutcome repairPolygonSoup(PolygonSoup soup, const MeshRepairDef& def, 
         const std::size_t pointsBeforeOrient = points.size();
         const auto polygonsBeforeOrient = polygons;
         PMP::orient_polygon_soup(points, polygons);
-        if (const std::size_t flipped = reversedPolygons(polygonsBeforeOrient, polygons))
+        std::size_t flipped = reversedPolygons(polygonsBeforeOrient, polygons);
+        // CGAL keeps one face of each piece as it was; when that face was one of the few wrong
+        // ones, the many right ones were reversed. Undo that, so that the report counts the
+        // minority (outward normals are settled at the end).
+        if (points.size() == pointsBeforeOrient && 2 * flipped > polygons.size()) {
+            for (auto& polygon : polygons) std::reverse(polygon.begin(), polygon.end());
+            flipped = polygons.size() - flipped;
+        }
+        if (flipped)
             out.changes.push_back("reversed " + count(flipped, "face", "faces") + " to make the orientation consistent");
         if (points.size() > pointsBeforeOrient)
             out.changes.push_back("split " + count(points.size() - pointsBeforeOrient, "non-manifold vertex", "non-manifold vertices") +

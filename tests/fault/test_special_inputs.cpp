@@ -37,6 +37,10 @@ struct Slot {
 const std::vector<Slot>& slots() {
     static const std::vector<Slot> all{
         {"mesh_check", ".off", [](const Scratch&, const std::string& p) { return std::vector<std::string>{"mesh", "check", p}; }},
+        {"mesh_import", ".obj",
+         [](const Scratch& s, const std::string& p) {
+             return std::vector<std::string>{"mesh", "import", p, "--out", s.out("imported.off").string(), "--repair"};
+         }},
         {"run_mesh", ".off",
          [](const Scratch&, const std::string& p) { return std::vector<std::string>{"run", "--seconds", "0.1", "--mesh", p}; }},
         {"run_preset", ".json",
