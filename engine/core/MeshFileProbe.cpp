@@ -118,6 +118,21 @@ std::string probeOff(const std::string& text) {
         if (std::string problem = coordinateProblem(check, "OFF vertex " + std::to_string(i)); !problem.empty())
             return problem;
     }
+    // Faces: a corner count, then that many indices of existing vertices (the polygon-soup reader
+    // only says that a record is malformed, not which).
+    for (long long f = 0; f < nf; ++f) {
+        std::istringstream record(lines[at + std::size_t(nv + f)]);
+        long long corners = -1;
+        if (!(record >> corners) || corners < 0)
+            return "has a malformed face record at OFF face " + std::to_string(f);
+        for (long long k = 0; k < corners; ++k) {
+            long long index = -1;
+            if (!(record >> index)) return "has a malformed face record at OFF face " + std::to_string(f);
+            if (index < 0 || index >= nv)
+                return "OFF face " + std::to_string(f) + " refers to vertex " + std::to_string(index) +
+                       ", but the file has " + std::to_string(nv) + " (corrupt or truncated)";
+        }
+    }
     return {};
 }
 

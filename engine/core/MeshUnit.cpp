@@ -76,24 +76,43 @@ std::optional<UnitSuggestion> suggestMeshUnit(double diagonalInFileUnits, const 
     const double asReadMm = diagonalInFileUnits * current.mmPerUnit;
     const bool tooSmall = asReadMm < kPlausibleTissueDiagonalMinMm;
     if (!tooSmall && asReadMm <= kPlausibleTissueDiagonalMaxMm) return std::nullopt;
+    // Metric units first: an inch is suggested only when no metric unit gives a plausible size
+    // (cm and in are close, and a segmentation or a simulator is far more often metric).
     const NamedUnit* best = nullptr;
-    double bestDistance = INFINITY;
-    for (const NamedUnit& u : kNamedUnits) {
-        const double mm = diagonalInFileUnits * u.mmPerUnit;
-        if (mm < kPlausibleTissueDiagonalMinMm || mm > kPlausibleTissueDiagonalMaxMm) continue;
-        const double distance = std::fabs(std::log(mm / kTypicalTissueDiagonalMm));
-        if (distance < bestDistance) {
-            bestDistance = distance;
-            best = &u;
+    for (bool metric : {true, false}) {
+        double bestDistance = INFINITY;
+        for (const NamedUnit& u : kNamedUnits) {
+            if ((std::string(u.name) != "in") != metric) continue;
+            const double mm = diagonalInFileUnits * u.mmPerUnit;
+            if (mm < kPlausibleTissueDiagonalMinMm || mm > kPlausibleTissueDiagonalMaxMm) continue;
+            const double distance = std::fabs(std::log(mm / kTypicalTissueDiagonalMm));
+            if (distance < bestDistance) {
+                bestDistance = distance;
+                best = &u;
+            }
         }
+        if (best) break;
     }
-    if (!best || best->mmPerUnit == current.mmPerUnit) return std::nullopt;
+    // No named unit fits (a file far too large, in micrometres or tenths of a mm): the power of ten
+    // that brings it closest to a typical organ, as a scale factor.
+    MeshUnit suggested;
+    std::string inWords;
+    if (best) {
+        suggested = MeshUnit{best->name, best->mmPerUnit};
+        inWords = std::string("in ") + best->plural;
+    } else {
+        const double factor = std::pow(10.0, std::round(std::log10(kTypicalTissueDiagonalMm / diagonalInFileUnits)));
+        if (factor < kMinMmPerUnit || factor > kMaxMmPerUnit) return std::nullopt;
+        suggested = MeshUnit{"", factor};
+        inWords = "scaled by " + suggested.text();
+    }
+    if (suggested.mmPerUnit == current.mmPerUnit) return std::nullopt;
     std::ostringstream why;
     why << "read as " << current.description() << " it is " << number(asReadMm) << " mm across, "
         << (tooSmall ? "smaller" : "larger") << " than tissue a probe examines ("
         << number(kPlausibleTissueDiagonalMinMm) << " to " << number(kPlausibleTissueDiagonalMaxMm)
-        << " mm); in " << best->plural << " it is " << number(diagonalInFileUnits * best->mmPerUnit) << " mm across";
-    return UnitSuggestion{MeshUnit{best->name, best->mmPerUnit}, why.str()};
+        << " mm); " << inWords << " it is " << number(diagonalInFileUnits * suggested.mmPerUnit) << " mm across";
+    return UnitSuggestion{suggested, why.str()};
 }
 
 }  // namespace palpate

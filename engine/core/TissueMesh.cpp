@@ -1,6 +1,6 @@
 #include "engine/core/TissueMesh.h"
 
-#include "engine/core/MeshFileProbe.h"
+#include "engine/core/PolygonSoup.h"
 #include "engine/core/SpaceFillingCurve.h"
 #include "engine/io/AtomicFile.h"
 #include "engine/io/InputFile.h"
@@ -29,10 +29,6 @@ using OmMesh = OpenMesh::TriMesh_ArrayKernelT<>;
 
 constexpr double kMinDiagonalMm = 1e-3;
 constexpr double kMaxDiagonalMm = 1e5;
-
-std::string plural(std::size_t n, const char* word) {
-    return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
-}
 
 /// OpenMesh reports reader problems on its global omerr stream, which writes to std::cerr.
 /// While one file loads, std::cerr (and std::clog) write into a buffer instead, so the text can be
@@ -63,12 +59,6 @@ private:
     std::streambuf* mOldLog;
 };
 
-std::size_t countOccurrences(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-}
-
 }  // namespace
 
 /// Validation and flat-array construction, shared by files and generators.
@@ -83,6 +73,8 @@ std::string MeshReport::text() const {
     out << source << ": " << (valid() ? "valid" : "INVALID") << "\n";
     out << "  vertices: " << vertexCount << "\n";
     out << "  triangles: " << triangleCount << "\n";
+    out << "  unit: " << unit.description() << "\n";
+    out << "  size: " << sizeMm.x << " x " << sizeMm.y << " x " << sizeMm.z << " mm\n";
     out << "  bounding-box diagonal: " << bboxDiagonalMm << " mm\n";
     out << "  boundary edges: " << boundaryEdgeCount << (boundaryEdgeCount ? " (open surface)" : " (closed)")
         << "\n";
@@ -91,6 +83,11 @@ std::string MeshReport::text() const {
     out << "  degenerate triangles: " << degenerateTriangleCount << "\n";
     out << "  non-finite vertices: " << nonFiniteVertexCount << "\n";
     out << "  unused vertices: " << isolatedVertexCount << "\n";
+    out << "  holes: " << holeCount << "\n";
+    out << "  components: " << componentCount << "\n";
+    out << "  duplicate vertices: " << duplicateVertexCount << "\n";
+    out << "  misoriented edges: " << misorientedEdgeCount << "\n";
+    for (const std::string& n : notes) out << "  note: " << n << "\n";
     for (const std::string& e : errors) out << "  error: " << e << "\n";
     for (const std::string& w : warnings) out << "  warning: " << w << "\n";
     return out.str();
@@ -100,85 +97,20 @@ TissueMesh::LoadResult TissueMesh::load(const std::string& path, const MeshUnit&
     MeshReport report;
     report.source = path;
     report.unit = unit;
-    auto fail = [&](const std::string& problem) {
+
+    // The file's real polygons, read without imposing topology, so that findMeshFaults (in
+    // MeshBuilder::build) names its faults exactly (docs/meshes.md, "Reading").
+    PolygonSoup soup;
+    if (const std::string problem = readPolygonSoup(path, soup); !problem.empty()) {
         report.errors.push_back(path + ": " + problem);
         return LoadResult{std::nullopt, report};
-    };
-
-    // The bounded reader's checks before OpenMesh opens the path: a FIFO would block it, a device
-    // or a 2 GB file would be read whole.
-    std::string inputError;
-    const std::optional<InputFd> input = openInputFile(path, kMeshFile, inputError);
-    if (!input) {
-        report.errors.push_back(inputError);
-        return LoadResult{std::nullopt, report};
     }
-    if (input->sizeBytes() == 0) return fail("is empty (0 bytes)");
-
-    const std::string probeError = probeMeshFile(path);
-    if (!probeError.empty()) return fail(probeError);
-
-    OmMesh om;
-    om.request_vertex_status();
-    om.request_face_status();
-    om.request_edge_status();
-    std::string readerText;
-    bool readOk = false;
-    {
-        OmErrCapture capture;
-        OpenMesh::IO::Options options;
-        try {
-            readOk = OpenMesh::IO::read_mesh(om, path, options);
-        } catch (const std::exception& e) {
-            readOk = false;
-            readerText = e.what();
-        }
-        readerText += capture.text();
-    }
-    if (!readOk) {
-        std::string why = "cannot be read as a mesh (unknown extension, or not a mesh in that format)";
-        if (!readerText.empty()) {
-            std::string first = readerText.substr(0, readerText.find('\n'));
-            why += ": " + first;
-        }
-        return fail(why);
-    }
-
-    std::vector<glm::vec3> positions(om.n_vertices());
-    for (auto vh : om.vertices()) {
-        const auto& p = om.point(vh);
-        positions[vh.idx()] = glm::vec3(glm::dvec3(p[0], p[1], p[2]) * unit.mmPerUnit);
-    }
-    std::vector<std::array<VertexId, 3>> triangles;
-    triangles.reserve(om.n_faces());
-    std::size_t splitFaces = 0;
-    for (auto fh : om.faces()) {
-        if (om.status(fh).fixed_nonmanifold()) ++splitFaces;
-        std::array<VertexId, 3> t{};
-        int i = 0;
-        for (auto vh : om.fv_range(fh)) {
-            if (i < 3) t[i] = VertexId(vh.idx());
-            ++i;
-        }
-        if (i == 3) triangles.push_back(t);
-    }
-
-    const std::size_t equalVertexFaces = countOccurrences(readerText, "equal vertices");
-    const std::size_t invalidIndexFaces = countOccurrences(readerText, "invalid vertex index");
-    if (invalidIndexFaces > 0)
-        report.errors.push_back(path + ": " + plural(invalidIndexFaces, "face") +
-                                " refer to vertices that do not exist (truncated or corrupt file)");
-    if (equalVertexFaces > 0) {
-        report.degenerateTriangleCount += equalVertexFaces;
-        report.errors.push_back(path + ": " + plural(equalVertexFaces, "degenerate face") +
-                                " (a vertex repeated within a face)");
-    }
-    if (splitFaces > 0) {
-        report.nonManifoldEdgeCount += splitFaces;
-        report.errors.push_back(path + ": non-manifold: " + plural(splitFaces, "face") +
-                                " share an edge with two others or join at a complex vertex");
-    }
-    return MeshBuilder::build(std::move(positions), std::move(triangles), std::move(report), true);
+    std::vector<std::string> notes = std::move(soup.notes);
+    const std::vector<std::array<VertexId, 3>> triangles = triangulatePolygons(soup, notes);
+    std::vector<glm::vec3> positions(soup.points.size());
+    for (std::size_t v = 0; v < positions.size(); ++v) positions[v] = glm::vec3(soup.points[v] * unit.mmPerUnit);
+    report.notes = std::move(notes);
+    return MeshBuilder::build(std::move(positions), triangles, std::move(report), true);
 }
 
 TissueMesh::LoadResult TissueMesh::fromTriangles(std::vector<glm::vec3> positionsMm,
