@@ -222,6 +222,13 @@ void MeshImportDialog::buildUi() {
     });
     connect(mUnitCombo, &QComboBox::currentIndexChanged, this, [this](int index) {
         mScale->setEnabled(index == kScaleIndex);
+        if (index >= 0 && index < kScaleIndex) {
+            std::string ignored;
+            const bool wasSettingUp = mSettingUp;
+            mSettingUp = true;
+            mScale->setValue(parseMeshUnit(kNamedUnits[index], ignored).value_or(kMillimetres).mmPerUnit);
+            mSettingUp = wasSettingUp;
+        }
         if (!mSettingUp) mUnitChosen = true;
         optionsChanged();
     });
@@ -263,7 +270,7 @@ void MeshImportDialog::setUnit(const MeshUnit& unit) {
         if (unit.name == kNamedUnits[i]) index = i;
     const bool wasSettingUp = mSettingUp;
     mSettingUp = true;
-    if (index == kScaleIndex) mScale->setValue(unit.mmPerUnit);
+    mScale->setValue(unit.mmPerUnit);  // a named unit's factor shown too: Scale… starts from it
     mUnitCombo->setCurrentIndex(index);
     mScale->setEnabled(index == kScaleIndex);
     mSettingUp = wasSettingUp;
@@ -483,6 +490,8 @@ void MeshImportDialog::showProgress(double fraction, const QString& stage) {
 
 void MeshImportDialog::showIdle(const QString& message) {
     mSize->setText(message);
+    mStage->clear();
+    mProgress->setValue(0);
     mCounts->clear();
     mReport->clear();
     mReason->clear();

@@ -821,9 +821,10 @@ void MainWindow::showStatus() {
         const MeshReport& report = mesh->report();
         QString shown = tr("%1 · %2").arg(QFileInfo(path).fileName(), meshSizeText(report.sizeMm));
         if (!report.unit.isMillimetres()) shown = tr("%1 · file in %2").arg(shown, QString::fromStdString(report.unit.text()));
+        // Most important first: a narrow window cuts the end off.
         mMeshLabel->setText(tr("%1 · %2 vertices · %3").arg(shown).arg(mesh->vertexCount()).arg(renderer));
-        mMeshLabel->setToolTip(tr("%1\n%2 vertices, %3 triangles\n%4 renderer")
-                                   .arg(path)
+        mMeshLabel->setToolTip(tr("%1\n%2\n%3 vertices, %4 triangles\n%5 renderer")
+                                   .arg(path, QString::fromStdString(report.unit.description()))
                                    .arg(mesh->vertexCount())
                                    .arg(mesh->triangleCount())
                                    .arg(renderer));

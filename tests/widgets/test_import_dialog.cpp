@@ -314,7 +314,7 @@ int main(int argc, char** argv) {
     qputenv("QT_QPA_PLATFORM", "offscreen");
     QStandardPaths::setTestModeEnabled(true);  // QSettings are not the user's
     QApplication app(argc, argv);
-    QApplication::setApplicationName(QStringLiteral("palpate-mesh-import-tests"));
+    QApplication::setApplicationName(QStringLiteral("palpate-import-dialog-tests"));
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }
