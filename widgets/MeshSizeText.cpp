@@ -5,9 +5,12 @@
 namespace palpate {
 
 QString formatLengthMm(double mm) {
-    const double magnitude = std::abs(mm);
-    const int decimals = magnitude >= 100.0 ? 0 : magnitude >= 10.0 ? 1 : magnitude >= 1.0 ? 2 : 3;
-    return QString::number(mm, 'f', decimals);
+    // Three significant digits, judged after rounding (99.97 is "100", not "100.0").
+    for (int decimals = 0; decimals < 3; ++decimals) {
+        const QString text = QString::number(mm, 'f', decimals);
+        if (std::abs(text.toDouble()) >= std::pow(10.0, 2 - decimals)) return text;
+    }
+    return QString::number(mm, 'f', 3);
 }
 
 QString meshSizeText(const glm::dvec3& sizeMm) {

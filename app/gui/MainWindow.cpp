@@ -63,7 +63,8 @@ constexpr std::array<const char*, 5> kMenuDevices = {"sim:press", "sim:stroke", 
 constexpr int kMaxRecentFiles = 8;
 const char* const kRecentFilesKey = "recentFiles";
 const char* const kMeshFolderKey = "meshes/lastFolder";  // where File > Open Mesh… starts
-const char* const kMeshUnitsKey = "meshes/units";  // absolute path -> the unit its file is read in
+const char* const kMeshUnitsKey = "meshUnits";  // each mesh file's unit: path, unit (newest first)
+constexpr int kMaxRememberedUnits = 500;        // the oldest answers are forgotten (asked again)
 
 bool isMeshFile(const QString& path) {
     const QString suffix = QFileInfo(path).suffix().toLower();
@@ -91,6 +92,8 @@ QLabel* addStatusField(QStatusBar* bar, const char* objectName, const QString& t
     label->setObjectName(QLatin1String(objectName));
     label->setToolTip(toolTip);
     label->setContentsMargins(4, 0, 0, 0);
+    // A narrow window clips these rather than the mesh field (its name, size and unit stay whole).
+    label->setMinimumWidth(16);
     bar->addPermanentWidget(label);
     return label;
 }
@@ -493,19 +496,49 @@ QString MainWindow::loadMesh(const QString& path, bool* deviceFailed) {
     return meshLoaded(path, mSession->loadMesh(path.toStdString(), unit, deviceFailed));
 }
 
+namespace {
+
+/// The remembered units, newest first: (absolute path, unit text). An array in the settings, so
+/// that the file stays readable (a map would be a binary blob).
+QList<QPair<QString, QString>> readMeshUnits(QSettings& settings) {
+    QList<QPair<QString, QString>> entries;
+    const int count = settings.beginReadArray(kMeshUnitsKey);
+    for (int i = 0; i < count; ++i) {
+        settings.setArrayIndex(i);
+        entries.append({settings.value("path").toString(), settings.value("unit").toString()});
+    }
+    settings.endArray();
+    return entries;
+}
+
+}  // namespace
+
 std::optional<MeshUnit> MainWindow::rememberedMeshUnit(const QString& path) {
-    const QVariantMap units = QSettings().value(kMeshUnitsKey).toMap();
-    const auto found = units.find(QFileInfo(path).absoluteFilePath());
-    if (found == units.end()) return std::nullopt;
-    std::string ignored;
-    return parseMeshUnit(found->toString().toStdString(), ignored);  // an edited setting is ignored
+    QSettings settings;
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    for (const auto& [file, unit] : readMeshUnits(settings)) {
+        if (file != absolute) continue;
+        std::string ignored;
+        return parseMeshUnit(unit.toStdString(), ignored);  // an edited, invalid setting: asked again
+    }
+    return std::nullopt;
 }
 
 void MainWindow::rememberMeshUnit(const QString& path, const MeshUnit& unit) {
     QSettings settings;
-    QVariantMap units = settings.value(kMeshUnitsKey).toMap();
-    units.insert(QFileInfo(path).absoluteFilePath(), QString::fromStdString(unit.text()));
-    settings.setValue(kMeshUnitsKey, units);
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    auto entries = readMeshUnits(settings);
+    entries.removeIf([&absolute](const auto& entry) { return entry.first == absolute; });
+    entries.prepend({absolute, QString::fromStdString(unit.text())});
+    while (entries.size() > kMaxRememberedUnits) entries.removeLast();
+    settings.remove(kMeshUnitsKey);
+    settings.beginWriteArray(kMeshUnitsKey, int(entries.size()));
+    for (int i = 0; i < entries.size(); ++i) {
+        settings.setArrayIndex(i);
+        settings.setValue("path", entries[i].first);
+        settings.setValue("unit", entries[i].second);
+    }
+    settings.endArray();
 }
 
 QString MainWindow::openMeshFile(const QString& path) {
@@ -533,7 +566,9 @@ QString MainWindow::openMeshFile(const QString& path) {
                             .arg(QFileInfo(path).fileName(), meshSizeText(report.sizeMm)),
                         QMessageBox::NoButton, this);
         box.setObjectName(QStringLiteral("meshUnitQuestion"));
-        box.setInformativeText(QString::fromStdString(suggestion->reason));
+        QString reason = QString::fromStdString(suggestion->reason);
+        if (!reason.isEmpty()) reason[0] = reason[0].toUpper();  // the engine's sentence starts a paragraph here
+        box.setInformativeText(reason);
         QPushButton* suggested = box.addButton(tr("Open in %1").arg(unitName), QMessageBox::AcceptRole);
         suggested->setObjectName(QStringLiteral("openInSuggestedUnit"));
         QPushButton* asMm = box.addButton(tr("Open as mm"), QMessageBox::AcceptRole);
@@ -591,10 +626,9 @@ MeshImportDialog* MainWindow::openImportDialog(const QString& path) {
                 statusBar()->showMessage(tr("An exercise is running: the mesh cannot change now."), 6000);
                 return;
             }
+            // No message on success: it would hide the status bar's mesh field, which names the new file.
             if (const QString error = loadMesh(output); !error.isEmpty())
                 QMessageBox::warning(this, tr("Cannot open mesh"), error);
-            else
-                statusBar()->showMessage(tr("Imported %1").arg(QDir::toNativeSeparators(output)), 8000);
         });
     }
     if (!path.isEmpty()) mImportDialog->setInputPath(path);
@@ -815,14 +849,17 @@ void MainWindow::showStatus() {
     const TissueMesh* mesh = replayed ? mRecorderPanel->playbackMesh() : mSession->drawnMesh().get();
     if (!mesh) {
         mMeshLabel->setText(tr("No mesh, %1").arg(renderer));
+        mMeshLabel->setMinimumWidth(0);
     } else {
         const QString path = replayed ? mRecorderPanel->playbackMeshPath() : QString::fromStdString(mSession->drawnPath());
         // Name, size in mm and the file's unit: a mesh opened in the wrong unit shows at once.
         const MeshReport& report = mesh->report();
         QString shown = tr("%1 · %2").arg(QFileInfo(path).fileName(), meshSizeText(report.sizeMm));
         if (!report.unit.isMillimetres()) shown = tr("%1 · file in %2").arg(shown, QString::fromStdString(report.unit.text()));
-        // Most important first: a narrow window cuts the end off.
+        // Most important first: a narrow window cuts the end off, never the name, size and unit
+        // (the loop's figures beside them are in the Status dock too).
         mMeshLabel->setText(tr("%1 · %2 vertices · %3").arg(shown).arg(mesh->vertexCount()).arg(renderer));
+        mMeshLabel->setMinimumWidth(mMeshLabel->fontMetrics().horizontalAdvance(shown) + 8);
         mMeshLabel->setToolTip(tr("%1\n%2\n%3 vertices, %4 triangles\n%5 renderer")
                                    .arg(path, QString::fromStdString(report.unit.description()))
                                    .arg(mesh->vertexCount())

@@ -136,7 +136,7 @@ public:
     MeshImportDialog* openImportDialog(const QString& path = {});
     /// The import dialog once opened (null before).
     MeshImportDialog* importDialog() const { return mImportDialog; }
-    /// The unit a mesh file is read in, as chosen for it before (QSettings "meshes/units", by
+    /// The unit a mesh file is read in, as chosen for it before (QSettings "meshUnits", by
     /// absolute path); nullopt when never asked.
     static std::optional<MeshUnit> rememberedMeshUnit(const QString& path);
     static void rememberMeshUnit(const QString& path, const MeshUnit& unit);
