@@ -2849,6 +2849,10 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
         <source>waiting</source>
         <translation>wartet</translation>
     </message>
+    <message>
+        <source>cancelling…</source>
+        <translation>wird abgebrochen…</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ParameterPanel</name>

@@ -2846,6 +2846,10 @@ pemapar %5</translation>
         <source>waiting</source>
         <translation>menunggu</translation>
     </message>
+    <message>
+        <source>cancelling…</source>
+        <translation>membatalkan…</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ParameterPanel</name>

@@ -412,7 +412,7 @@ void MeshImportDialog::startPreview() {
                 job->postedStage = stage;
                 const QString stageText = qs(stage);
                 QMetaObject::invokeMethod(this, [this, job, fraction, stageText] {
-                    if (job == mJob) showProgress(fraction, stageText);
+                    if (job == mJob && !job->cancel) showProgress(fraction, stageText);
                 }, Qt::QueuedConnection);
             }
             return !job->cancel.load();
@@ -432,8 +432,12 @@ void MeshImportDialog::startPreview() {
 void MeshImportDialog::cancelPreview() {
     mDebounce.stop();
     mRerun = false;
-    if (mJob) mJob->cancel = true;
     updateEnabled();
+    if (!mJob) return;
+    // The import stops at its next progress call; a remeshing pass can take a while to get there.
+    mJob->cancel = true;
+    mCancel->setEnabled(false);
+    mStage->setText(tr("cancelling…"));
 }
 
 void MeshImportDialog::joinWorker() {
@@ -552,7 +556,7 @@ void MeshImportDialog::showResult() {
 
 void MeshImportDialog::updateEnabled() {
     const bool busy = previewBusy();
-    mCancel->setEnabled(mJob != nullptr || mDebounce.isActive());
+    mCancel->setEnabled((mJob != nullptr && !mJob->cancel) || mDebounce.isActive());
     mImport->setEnabled(!busy && mResult && mResult->mesh);
     if (busy && !mJob) mStage->setText(tr("waiting"));
 }

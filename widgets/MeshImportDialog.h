@@ -48,6 +48,8 @@ public:
 
     /// A preview is running or waiting for its debounce.
     bool previewBusy() const;
+    /// A preview's worker is running (past the debounce).
+    bool previewRunning() const { return mJob != nullptr; }
     /// Tests: processes events until the preview settles (or `timeoutMs`); false on timeout.
     bool waitForPreview(int timeoutMs = 60000);
     /// The last finished preview (null before the first).

@@ -16,10 +16,13 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QCryptographicHash>
+#include <QDeadlineTimer>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -236,6 +239,30 @@ TEST_F(MeshImportTest, FaultsAreShownAndRepairMakesAMesh) {
     auto* table = dialog.findChild<QTableWidget*>(QStringLiteral("importRoundness"));
     ASSERT_NE(table, nullptr);
     EXPECT_EQ(table->rowCount(), 4);
+}
+
+TEST_F(MeshImportTest, CancelStopsAPreviewAndLeavesNoMeshToImport) {
+    MeshImportDialog dialog;
+    dialog.setInputPath(mCmFile);
+    ASSERT_TRUE(dialog.waitForPreview());
+    ASSERT_TRUE(dialog.importEnabled());
+    // A fine remeshing: long enough to be cancelled while it runs.
+    dialog.findChild<QDoubleSpinBox*>(QStringLiteral("importEdge"))->setValue(0.3);
+    dialog.findChild<QCheckBox*>(QStringLiteral("importRemesh"))->setChecked(true);
+    QDeadlineTimer started(60000);
+    while (!dialog.previewRunning() && !started.hasExpired()) QApplication::processEvents(QEventLoop::AllEvents, 20);
+    ASSERT_TRUE(dialog.previewRunning());
+    EXPECT_FALSE(dialog.importEnabled());
+    auto* cancel = dialog.findChild<QPushButton*>(QStringLiteral("importCancel"));
+    ASSERT_NE(cancel, nullptr);
+    ASSERT_TRUE(cancel->isEnabled());
+    cancel->click();
+    ASSERT_TRUE(dialog.waitForPreview(300000));
+    ASSERT_NE(dialog.result(), nullptr);
+    EXPECT_FALSE(dialog.result()->ok());
+    ASSERT_FALSE(dialog.result()->errors.empty());
+    EXPECT_NE(dialog.result()->errors.front().find("cancelled"), std::string::npos) << dialog.result()->errors.front();
+    EXPECT_FALSE(dialog.importEnabled());
 }
 
 TEST_F(MeshImportTest, OpenAsksOnceAboutTheUnitAndRemembersTheAnswer) {
