@@ -23,6 +23,7 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTextBrowser>
+#include <QShowEvent>
 #include <QThread>
 #include <QVBoxLayout>
 
@@ -244,6 +245,9 @@ void MeshImportDialog::buildUi() {
     connect(mCancel, &QPushButton::clicked, this, &MeshImportDialog::cancelPreview);
     connect(mImport, &QPushButton::clicked, this, &MeshImportDialog::chooseOutput);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    // Closed, the dialog stays (the window keeps it): a preview running on stops, not to take the
+    // haptic loop's cores for nothing.
+    connect(this, &QDialog::finished, this, &MeshImportDialog::cancelPreview);
     mKeep->setEnabled(false);  // the repair's and the remeshing's own options wait for them
     mFillHoles->setEnabled(false);
     mEdge->setEnabled(false);
@@ -453,6 +457,7 @@ void MeshImportDialog::previewFinished(std::shared_ptr<Job> job) {
         return;
     }
     const bool cancelled = job->cancel.load();
+    mLastCancelled = cancelled;
     mResult = std::make_unique<MeshImportResult>(std::move(job->result));
     mProgress->setValue(cancelled ? 0 : 100);
     mStage->setText(cancelled ? tr("cancelled") : tr("done"));
@@ -485,6 +490,11 @@ void MeshImportDialog::previewFinished(std::shared_ptr<Job> job) {
     }
     showResult();
     updateEnabled();
+}
+
+void MeshImportDialog::showEvent(QShowEvent* event) {
+    QDialog::showEvent(event);
+    if (mLastCancelled && !previewBusy() && !inputPath().isEmpty()) startPreview();
 }
 
 void MeshImportDialog::showProgress(double fraction, const QString& stage) {

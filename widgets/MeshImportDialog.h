@@ -72,6 +72,10 @@ signals:
     /// A mesh was written to `outputPath` (in mm): the window opens it.
     void imported(const QString& outputPath);
 
+protected:
+    /// Shown again after a close that cancelled a preview: previews again.
+    void showEvent(QShowEvent* event) override;
+
 private:
     struct Job;
     void buildUi();
@@ -114,6 +118,7 @@ private:
     bool mUnitChosen = false;         // the user (or the suggestion) set the unit for this file
     bool mEdgeEdited = false;         // the user set the edge length: no longer the suggested one
     bool mSettingUp = false;          // setting widgets from code: not an option change
+    bool mLastCancelled = false;      // the last preview was cancelled (its result has no mesh)
 };
 
 }  // namespace palpate

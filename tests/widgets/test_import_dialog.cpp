@@ -265,6 +265,24 @@ TEST_F(MeshImportTest, CancelStopsAPreviewAndLeavesNoMeshToImport) {
     EXPECT_FALSE(dialog.importEnabled());
 }
 
+TEST_F(MeshImportTest, ClosingTheDialogCancelsItsPreview) {
+    MeshImportDialog dialog;
+    dialog.show();
+    dialog.setInputPath(mCmFile);
+    ASSERT_TRUE(dialog.waitForPreview());
+    dialog.findChild<QDoubleSpinBox*>(QStringLiteral("importEdge"))->setValue(0.3);
+    dialog.findChild<QCheckBox*>(QStringLiteral("importRemesh"))->setChecked(true);
+    QDeadlineTimer started(60000);
+    while (!dialog.previewRunning() && !started.hasExpired()) QApplication::processEvents(QEventLoop::AllEvents, 20);
+    ASSERT_TRUE(dialog.previewRunning());
+    dialog.reject();  // Close
+    ASSERT_TRUE(dialog.waitForPreview(300000));
+    ASSERT_NE(dialog.result(), nullptr);
+    EXPECT_FALSE(dialog.result()->ok());
+    ASSERT_FALSE(dialog.result()->errors.empty());
+    EXPECT_NE(dialog.result()->errors.front().find("cancelled"), std::string::npos) << dialog.result()->errors.front();
+}
+
 TEST_F(MeshImportTest, OpenAsksOnceAboutTheUnitAndRemembersTheAnswer) {
     auto window = makeWindow();
     bool asked = false;
