@@ -94,7 +94,10 @@ std::string probeOff(const std::string& text) {
     std::string magic;
     header >> magic;
     if (magic.find("OFF") == std::string::npos) return "is not an OFF file (missing 'OFF' header)";
-    if (magic.find("BINARY") != std::string::npos || lines[0].find("BINARY") != std::string::npos) return {};
+    // CGAL's soup reader takes binary OFF's counts and corner counts as they come and skips no
+    // face colours, so a binary OFF file is refused rather than half read (docs/meshes.md, "Reading").
+    if (magic.find("BINARY") != std::string::npos || lines[0].find("BINARY") != std::string::npos)
+        return "is a binary OFF file, which is not supported (export it as ASCII OFF, PLY or STL)";
     long long nv = -1, nf = -1;
     if (!(header >> nv >> nf)) {
         if (lines.size() < 2) return "is truncated: OFF header has no vertex and face counts";
@@ -173,7 +176,12 @@ std::string probeObj(const std::string& text) {
 }
 
 std::string probeStl(const std::string& bytes) {
-    const bool looksAscii = bytes.size() >= 5 && bytes.compare(0, 5, "solid") == 0 &&
+    // A binary header may begin with "solid" too (some exporters write it): a file whose size is
+    // exactly what its triangle count declares is binary.
+    std::uint32_t declared = 0;
+    if (bytes.size() >= 84) std::memcpy(&declared, bytes.data() + 80, 4);
+    const bool exactBinary = bytes.size() >= 84 && bytes.size() == 84ull + 50ull * declared;
+    const bool looksAscii = !exactBinary && bytes.size() >= 5 && bytes.compare(0, 5, "solid") == 0 &&
                             bytes.find("facet") != std::string::npos;
     if (looksAscii) {
         if (bytes.find("endsolid") == std::string::npos) return "is truncated: ASCII STL without 'endsolid'";

@@ -37,9 +37,11 @@ namespace {
 using Point = CGAL::Simple_cartesian<double>::Point_3;
 using CgalPolygons = std::vector<std::vector<std::size_t>>;
 
-/// Above this many corners a concave polygon is fanned instead of ear-clipped: ear clipping is
-/// quadratic or worse in the corners, and a hostile file must not hang the loader.
+/// Above this many corners a concave polygon is fanned instead of ear-clipped, and after this many
+/// ear tests in one file every further concave polygon is: ear clipping is quadratic or worse in
+/// the corners, and a hostile file must not hang the loader.
 constexpr std::size_t kMaxEarClipCorners = 512;
+constexpr std::size_t kEarTestBudget = 200'000'000;
 
 std::string plural(std::size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
@@ -113,8 +115,7 @@ std::string prescanObj(std::string& text, std::vector<std::string>& notes) {
     std::ostringstream out;
     std::string line;
     std::size_t lineNo = 0, vertices = 0;
-    std::size_t comments = 0, grouping = 0, polylines = 0, attributes = 0, relative = 0, cornerIndices = 0,
-                unknown = 0;
+    std::size_t comments = 0, grouping = 0, polylines = 0, attributes = 0, relative = 0, cornerIndices = 0, unknown = 0;
     std::string firstUnknown;
     std::size_t maxIndex = 0, maxIndexLine = 0;
     while (std::getline(in, line)) {
@@ -185,12 +186,25 @@ std::string prescanObj(std::string& text, std::vector<std::string>& notes) {
                ", but the file has " + std::to_string(vertices);
     text = out.str();
     if (comments) notes.push_back(plural(comments, "comment", "comments") + " ignored");
-    if (grouping) notes.push_back(plural(grouping, "group, object, smoothing or material record", "group, object, smoothing and material records") + " ignored (o, g, s, usemtl, mtllib)");
-    if (attributes) notes.push_back(plural(attributes, "texture or normal record", "texture and normal records") + " ignored (vt, vn, vp)");
-    if (cornerIndices) notes.push_back("texture and normal indices of " + plural(cornerIndices, "face corner", "face corners") + " ignored");
-    if (relative) notes.push_back(plural(relative, "negative (relative) vertex index", "negative (relative) vertex indices") + " resolved");
-    if (polylines) notes.push_back(plural(polylines, "polyline or point record", "polyline and point records") + " ignored (l, p)");
-    if (unknown) notes.push_back(plural(unknown, "record of an unknown kind", "records of unknown kinds") + " ignored (first at " + firstUnknown + ")");
+    if (grouping)
+        notes.push_back(plural(grouping, "group, object, smoothing or material record",
+                               "group, object, smoothing and material records") +
+                        " ignored (o, g, s, usemtl, mtllib)");
+    if (attributes)
+        notes.push_back(plural(attributes, "texture or normal record", "texture and normal records") +
+                        " ignored (vt, vn, vp)");
+    if (cornerIndices)
+        notes.push_back("texture and normal indices of " + plural(cornerIndices, "face corner", "face corners") +
+                        " ignored");
+    if (relative)
+        notes.push_back(plural(relative, "negative (relative) vertex index", "negative (relative) vertex indices") +
+                        " resolved");
+    if (polylines)
+        notes.push_back(plural(polylines, "polyline or point record", "polyline and point records") +
+                        " ignored (l, p)");
+    if (unknown)
+        notes.push_back(plural(unknown, "record of an unknown kind", "records of unknown kinds") +
+                        " ignored (first at " + firstUnknown + ")");
     return {};
 }
 
@@ -199,7 +213,8 @@ void sanitisePly(std::string& bytes, std::vector<std::string>& notes) {
     const std::size_t endHeader = bytes.find("end_header");
     if (endHeader == std::string::npos) return sanitiseText(bytes, notes);
     const std::size_t format = bytes.find("format ");
-    const bool ascii = format != std::string::npos && format < endHeader && bytes.compare(format, 12, "format ascii") == 0;
+    const bool ascii = format != std::string::npos && format < endHeader &&
+                       bytes.compare(format, 12, "format ascii") == 0;
     if (ascii) return sanitiseText(bytes, notes);
     std::size_t bodyStart = bytes.find('\n', endHeader);
     bodyStart = bodyStart == std::string::npos ? bytes.size() : bodyStart + 1;
@@ -266,8 +281,8 @@ std::string readWithCgal(const std::string& bytes, const std::string& ext, Polyg
     }
     if (!ok) return "is not a readable " + ext + " file (a malformed record)";
     if (points.size() > kMaxMeshVertices)
-        return "has " + std::to_string(points.size()) + " vertices, more than the " +
-               std::to_string(kMaxMeshVertices) + " a mesh may have";
+        return "has " + std::to_string(points.size()) + " vertices, more than the " + std::to_string(kMaxMeshVertices) +
+               " a mesh may have";
     if (polygons.size() > kMaxMeshFaces)
         return "has " + std::to_string(polygons.size()) + " faces, more than the " + std::to_string(kMaxMeshFaces) +
                " a mesh may have";
@@ -304,7 +319,12 @@ std::string readPolygonSoupBytes(const std::string& original, const std::string&
     std::vector<std::string> notes;
     if (ext == "obj" || ext == "off") sanitiseText(bytes, notes);
     else if (ext == "ply") sanitisePly(bytes, notes);
-    else if (ext == "stl" && !isBinaryStl(bytes)) sanitiseText(bytes, notes);
+    else if (ext == "stl" && !isBinaryStl(bytes))
+        sanitiseText(bytes, notes);
+    else if (ext == "stl")
+        // CGAL takes a file that begins with "solid" for ASCII and falls back to binary only after
+        // the ASCII parse appended what it could; the header's 80 bytes are unused in binary STL.
+        bytes[0] = 'B';
     // OBJ's own pre-scan first, for its line numbers; it keeps every line, so the probe's line
     // numbers stay right too.
     if (ext == "obj" && bytes.find('\0') == std::string::npos)
@@ -352,31 +372,36 @@ double cross2(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
 /// Ear clipping of one simple polygon projected into its best-fit plane; false when no ear is left
 /// (a self-intersecting or degenerate polygon), with the triangles found so far in `out`.
 bool earClip(const std::vector<glm::dvec2>& corners, const std::vector<std::uint32_t>& ids, double eps,
-             std::vector<std::array<std::uint32_t, 3>>& out, std::vector<std::size_t>& left) {
+             std::vector<std::array<std::uint32_t, 3>>& out, std::vector<std::size_t>& left, std::size_t& tests) {
     left.resize(corners.size());
     for (std::size_t i = 0; i < left.size(); ++i) left[i] = i;
+    // Walk round the polygon; after a clip, look again at the corner before it (its ear changed).
+    std::size_t k = 0, misses = 0;
     while (left.size() > 3) {
-        bool clipped = false;
-        for (std::size_t k = 0; k < left.size() && !clipped; ++k) {
-            const std::size_t a = left[(k + left.size() - 1) % left.size()], b = left[k], c = left[(k + 1) % left.size()];
-            if (cross2(corners[a], corners[b], corners[c]) <= eps) continue;  // reflex or straight
-            bool empty = true;
+        if (misses == left.size()) return false;
+        const std::size_t a = left[(k + left.size() - 1) % left.size()], b = left[k], c = left[(k + 1) % left.size()];
+        bool ear = cross2(corners[a], corners[b], corners[c]) > eps;  // convex, not straight
+        if (ear) {
+            tests += left.size();
             for (std::size_t j : left) {
-                if (j == a || j == b || j == c) continue;
                 const glm::dvec2& p = corners[j];
-                if (p == corners[a] || p == corners[b] || p == corners[c]) continue;
+                if (j == a || j == b || j == c || p == corners[a] || p == corners[b] || p == corners[c]) continue;
                 if (cross2(corners[a], corners[b], p) >= -eps && cross2(corners[b], corners[c], p) >= -eps &&
                     cross2(corners[c], corners[a], p) >= -eps) {
-                    empty = false;
+                    ear = false;
                     break;
                 }
             }
-            if (!empty) continue;
-            out.push_back({ids[a], ids[b], ids[c]});
-            left.erase(left.begin() + std::ptrdiff_t(k));
-            clipped = true;
         }
-        if (!clipped) return false;
+        if (!ear) {
+            ++misses;
+            k = (k + 1) % left.size();
+            continue;
+        }
+        out.push_back({ids[a], ids[b], ids[c]});
+        left.erase(left.begin() + std::ptrdiff_t(k));
+        k = (k + left.size() - 1) % left.size();
+        misses = 0;
     }
     out.push_back({ids[left[0]], ids[left[1]], ids[left[2]]});
     return true;
@@ -384,10 +409,11 @@ bool earClip(const std::vector<glm::dvec2>& corners, const std::vector<std::uint
 
 }  // namespace
 
-std::vector<std::array<std::uint32_t, 3>> triangulatePolygons(const PolygonSoup& soup, std::vector<std::string>& notes) {
+std::vector<std::array<std::uint32_t, 3>> triangulatePolygons(const PolygonSoup& soup,
+                                                              std::vector<std::string>& notes) {
     std::vector<std::array<std::uint32_t, 3>> triangles;
     triangles.reserve(soup.polygons.size());
-    std::size_t quads = 0, larger = 0, dropped = 0, fannedLarge = 0, noEar = 0;
+    std::size_t quads = 0, larger = 0, dropped = 0, fannedLarge = 0, noEar = 0, earTests = 0;
     std::vector<glm::dvec2> corners;
     std::vector<std::size_t> left;
     for (const auto& polygon : soup.polygons) {
@@ -440,11 +466,11 @@ std::vector<std::array<std::uint32_t, 3>> triangulatePolygons(const PolygonSoup&
             convex = cross2(corners[i], corners[(i + 1) % n], corners[(i + 2) % n]) > eps;
         if (convex) {
             fan(polygon);
-        } else if (n > kMaxEarClipCorners) {
+        } else if (n > kMaxEarClipCorners || earTests > kEarTestBudget) {
             ++fannedLarge;
             fan(polygon);
         } else {
-            if (!earClip(corners, polygon, eps, triangles, left)) {
+            if (!earClip(corners, polygon, eps, triangles, left, earTests)) {
                 // No ear: self-intersecting or with straight corners only; the rest is fanned, and
                 // whatever that overlaps is named by findMeshFaults.
                 ++noEar;
@@ -463,9 +489,9 @@ std::vector<std::array<std::uint32_t, 3>> triangulatePolygons(const PolygonSoup&
     }
     if (fannedLarge)
         notes.push_back(plural(fannedLarge, "concave polygon", "concave polygons") + " of more than " +
-                        std::to_string(kMaxEarClipCorners) + " corners split as a fan (may overlap itself)");
-    if (noEar)
-        notes.push_back(plural(noEar, "polygon", "polygons") + " that cross themselves split as a fan");
+                        std::to_string(kMaxEarClipCorners) +
+                        " corners (or beyond the file's budget of ear tests) split as a fan (it may overlap itself)");
+    if (noEar) notes.push_back(plural(noEar, "polygon", "polygons") + " that cross themselves split as a fan");
     if (dropped) notes.push_back(plural(dropped, "polygon", "polygons") + " of fewer than 3 corners dropped");
     return triangles;
 }

@@ -30,7 +30,8 @@ using test::RawMesh;
 using test::TempDir;
 
 bool anyContains(const std::vector<std::string>& lines, const std::string& what) {
-    return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(what) != std::string::npos; });
+    return std::any_of(lines.begin(), lines.end(),
+                       [&](const std::string& l) { return l.find(what) != std::string::npos; });
 }
 
 std::string joined(const std::vector<std::string>& lines) {
@@ -55,7 +56,8 @@ std::string cubeObj() {
     const Quads c = cube();
     std::ostringstream s;
     for (const auto& p : c.points) s << "v " << p.x << " " << p.y << " " << p.z << "\n";
-    for (const auto& f : c.faces) s << "f " << f[0] + 1 << " " << f[1] + 1 << " " << f[2] + 1 << " " << f[3] + 1 << "\n";
+    for (const auto& f : c.faces)
+        s << "f " << f[0] + 1 << " " << f[1] + 1 << " " << f[2] + 1 << " " << f[3] + 1 << "\n";
     return s.str();
 }
 
@@ -251,11 +253,11 @@ void expectSoupIs(const PolygonSoup& soup, const RawMesh& raw, const std::string
 
 TEST(MeshReading, OffAndPlyGiveTheFilesPolygons) {
     const RawMesh ico = test::icosahedron();
-    for (const auto& [name, bytes, ext] : std::vector<std::tuple<std::string, std::string, std::string>>{
-             {"OFF", test::toOff(ico), "off"},
-             {"ASCII PLY", test::toAsciiPly(ico), "ply"},
-             {"binary PLY", test::toBinaryPly(ico), "ply"},
-             {"OBJ", test::toObj(ico), "obj"}}) {
+    for (const auto& [name, bytes, ext] :
+         std::vector<std::tuple<std::string, std::string, std::string>>{{"OFF", test::toOff(ico), "off"},
+                                                                        {"ASCII PLY", test::toAsciiPly(ico), "ply"},
+                                                                        {"binary PLY", test::toBinaryPly(ico), "ply"},
+                                                                        {"OBJ", test::toObj(ico), "obj"}}) {
         PolygonSoup soup;
         ASSERT_EQ(readPolygonSoupBytes(bytes, ext, soup), "") << name;
         expectSoupIs(soup, ico, name);
@@ -275,6 +277,16 @@ TEST(MeshReading, BinaryAndAsciiStlOfTheSameCubeGiveTheSameSoup) {
     for (std::size_t f = 0; f < c.triangles.size(); ++f)
         for (int k = 0; k < 3; ++k)
             EXPECT_EQ(glm::vec3(binary.points[binary.polygons[f][k]]), c.positions[c.triangles[f][k]]);
+
+    // Some exporters begin a binary STL's header with "solid" (and may name a facet in it): the
+    // size that matches the declared count makes it binary.
+    std::string solidHeader = test::toBinaryStl(c);
+    const std::string header = "solid cube facet exported";
+    solidHeader.replace(0, header.size(), header);
+    PolygonSoup fromSolid;
+    ASSERT_EQ(readPolygonSoupBytes(solidHeader, "stl", fromSolid), "");
+    EXPECT_EQ(fromSolid.points, binary.points);
+    EXPECT_EQ(fromSolid.polygons, binary.polygons);
 }
 
 // --- Faults named exactly ---------------------------------------------------------------------
@@ -283,12 +295,13 @@ TEST(MeshReading, FlippedFacesAreNamedAsInconsistentOrientationNotNonManifold) {
     TempDir dir;
     RawMesh m = test::icosahedron();
     for (std::size_t f : {0u, 7u, 13u}) std::swap(m.triangles[f][1], m.triangles[f][2]);
-    const std::size_t expected =
-        test::topologyFacts(m.positions.size(), m.triangles).misorientedEdges;  // hand-computed from the triangles
+    const std::size_t expected = test::topologyFacts(m.positions.size(), m.triangles)
+                                     .misorientedEdges;  // hand-computed from the triangles
     ASSERT_GT(expected, 0u);
     const auto r = loadText(dir, "flipped.obj", test::toObj(m));
     EXPECT_FALSE(r.mesh);
-    EXPECT_TRUE(anyContains(r.report.errors, std::to_string(expected) + " edges where neighbouring triangles are inconsistently oriented"))
+    EXPECT_TRUE(anyContains(r.report.errors, std::to_string(expected) +
+                                                 " edges where neighbouring triangles are inconsistently oriented"))
         << joined(r.report.errors);
     EXPECT_FALSE(anyContains(r.report.errors, "non-manifold")) << joined(r.report.errors);
     EXPECT_EQ(r.report.misorientedEdgeCount, expected);

@@ -96,6 +96,22 @@ put("mesh", "ply-binary.ply", PLY + b"ply\nformat binary_little_endian 1.0\nelem
 put("mesh", "nul-in-text.off", OFF + b"OFF\n4 4 6\n\0\0\0")
 put("mesh", "om-anything.om", OM + b"OM\0\0garbage")
 put("mesh", "no-extension", b"\5" + off.encode())
+# What the polygon-soup reader tolerates (docs/meshes.md, "Reading"), and polygons to triangulate.
+put("mesh", "obj-crlf-nul.obj", OBJ + obj.replace("\n", "\r\n").encode() + b"\0\0")
+put("mesh", "obj-corners.obj", OBJ + ("\ufeff# other tool\nmtllib a.mtl\no organ\n" + "".join("v\t%g %g %g\r" % v for v in tet_v) +
+    "vt 0 0\nvn 0 0 1\ng part\nusemtl m\ns 1\nf 1/1/1 3/1/1 2/1/1\nf 1//1 2//1 4//1\nf -4 -1 -2 # relative\nf 2/1 3/1 4/1\nl 1 2\np 3\n").encode())
+cube_v = [(x * 10, y * 10, z * 10) for z in (0, 1) for y in (0, 1) for x in (0, 1)]
+cube_f = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+put("mesh", "obj-quads.obj", OBJ + ("".join("v %g %g %g\n" % v for v in cube_v) +
+    "".join("f %d %d %d %d\n" % tuple(i + 1 for i in f) for f in cube_f)).encode())
+put("mesh", "obj-concave.obj", OBJ + b"v 0 0 0\nv 4 0 0\nv 4 4 0\nv 2 1 0\nv 0 4 0\nf 1 2 3 4 5\n")
+put("mesh", "off-quads.off", OFF + ("OFF\n8 6 12\n" + "".join("%g %g %g\n" % v for v in cube_v) +
+    "".join("4 %d %d %d %d\n" % f for f in cube_f)).encode())
+put("mesh", "ply-binary-tet.ply", PLY + b"ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
+    b"property float y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n" +
+    b"".join(struct.pack("<3f", *v) for v in tet_v) + b"".join(struct.pack("<B3i", 3, *f) for f in tet_f))
+put("mesh", "stl-ascii-crlf.stl", STL + b"solid t\r\nfacet normal 0 0 0\r\nouter loop\r\nvertex 0 0 0\r\nvertex 1 0 0\r\n"
+    b"vertex 0 1 0\r\nendloop\r\nendfacet\r\nendsolid t\r\n")
 
 # JSON: anything the reader may meet.
 for name, text in [("object.json", '{"a": 1, "b": [1, 2, {"c": null}]}'), ("overflow.json", '{"a": {"b": [0, 1e400]}}'),

@@ -16,6 +16,7 @@ int palpateFuzzPreset(const std::uint8_t* data, std::size_t size);
 int palpateFuzzExercise(const std::uint8_t* data, std::size_t size);
 int palpateFuzzWaypoint(const std::uint8_t* data, std::size_t size);
 int palpateFuzzMeshProbe(const std::uint8_t* data, std::size_t size);
+int palpateFuzzPolygonSoup(const std::uint8_t* data, std::size_t size);
 int palpateFuzzJson(const std::uint8_t* data, std::size_t size);
 
 namespace {
@@ -97,4 +98,5 @@ TEST(IoFuzzCorpus, PresetCorpusAndMutationsPass) { runCorpusAndMutations("preset
 TEST(IoFuzzCorpus, ExerciseCorpusAndMutationsPass) { runCorpusAndMutations("exercise", palpateFuzzExercise, 3000, 2); }
 TEST(IoFuzzCorpus, WaypointCorpusAndMutationsPass) { runCorpusAndMutations("waypoint", palpateFuzzWaypoint, 4000, 3); }
 TEST(IoFuzzCorpus, MeshProbeCorpusAndMutationsPass) { runCorpusAndMutations("mesh", palpateFuzzMeshProbe, 4000, 4); }
+TEST(IoFuzzCorpus, PolygonSoupCorpusAndMutationsPass) { runCorpusAndMutations("mesh", palpateFuzzPolygonSoup, 4000, 6); }
 TEST(IoFuzzCorpus, JsonCorpusAndMutationsPass) { runCorpusAndMutations("json", palpateFuzzJson, 4000, 5); }
