@@ -122,8 +122,9 @@ void MeshImportDialog::buildUi() {
     auto* repairRow = new QHBoxLayout;
     mRepair = new QCheckBox(tr("Repair faults"), this);
     mRepair->setObjectName(QStringLiteral("importRepair"));
-    mRepair->setToolTip(tr("Orient the faces consistently, split non-manifold edges and vertices, remove degenerate "
-                           "triangles and duplicate vertices (CGAL). Without it a mesh with faults is refused."));
+    mRepair->setToolTip(
+        tr("Orient the faces consistently, split non-manifold edges and vertices, remove degenerate "
+           "triangles and duplicate vertices (CGAL). Without it a mesh with faults is refused."));
     mKeep = new QComboBox(this);
     mKeep->setObjectName(QStringLiteral("importKeep"));
     mKeep->addItems({tr("Keep the largest piece"), tr("Keep all pieces")});
@@ -188,9 +189,10 @@ void MeshImportDialog::buildUi() {
     mRoundness->setEditTriggers(QAbstractItemView::NoEditTriggers);
     mRoundness->setSelectionMode(QAbstractItemView::NoSelection);
     mRoundness->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    mRoundness->setToolTip(tr("Ring roundness: the spread of the distances to ring k's vertices (coefficient of "
-                              "variation; 0 is a circle, a regular mesh gives about 0.1 at ring 2), and the spread "
-                              "of the edge lengths"));
+    mRoundness->setToolTip(
+        tr("Ring roundness: the spread of the distances to ring k's vertices (coefficient of "
+           "variation; 0 is a circle, a regular mesh gives about 0.1 at ring 2), and the spread "
+           "of the edge lengths"));
     mRoundness->setMinimumWidth(220);
     mRoundness->setMaximumWidth(300);
     auto* roundnessBox = new QVBoxLayout;
@@ -236,7 +238,8 @@ void MeshImportDialog::buildUi() {
     connect(mScale, &QDoubleSpinBox::valueChanged, this, [this] {
         if (mUnitCombo->currentIndex() == kScaleIndex) optionsChanged();
     });
-    for (QCheckBox* box : {mRepair, mFillHoles, mRemesh}) connect(box, &QCheckBox::toggled, this, &MeshImportDialog::optionsChanged);
+    for (QCheckBox* box : {mRepair, mFillHoles, mRemesh})
+        connect(box, &QCheckBox::toggled, this, &MeshImportDialog::optionsChanged);
     connect(mKeep, &QComboBox::currentIndexChanged, this, &MeshImportDialog::optionsChanged);
     connect(mEdge, &QDoubleSpinBox::valueChanged, this, [this] {
         if (!mSettingUp) mEdgeEdited = true;
@@ -286,8 +289,9 @@ void MeshImportDialog::setUnit(const MeshUnit& unit) {
 
 MeshUnit MeshImportDialog::unit() const {
     const int index = mUnitCombo->currentIndex();
-    const std::string text = index >= 0 && index < kScaleIndex ? std::string(kNamedUnits[index])
-                                                               : QString::number(mScale->value(), 'g', 17).toStdString();
+    const std::string text = index >= 0 && index < kScaleIndex
+                                 ? std::string(kNamedUnits[index])
+                                 : QString::number(mScale->value(), 'g', 17).toStdString();
     std::string error;
     return parseMeshUnit(text, error).value_or(kMillimetres);  // the spin box's range is parseMeshUnit's
 }
@@ -415,9 +419,12 @@ void MeshImportDialog::startPreview() {
                 job->postedPercent = percent;
                 job->postedStage = stage;
                 const QString stageText = qs(stage);
-                QMetaObject::invokeMethod(this, [this, job, fraction, stageText] {
-                    if (job == mJob && !job->cancel) showProgress(fraction, stageText);
-                }, Qt::QueuedConnection);
+                QMetaObject::invokeMethod(
+                    this,
+                    [this, job, fraction, stageText] {
+                        if (job == mJob && !job->cancel) showProgress(fraction, stageText);
+                    },
+                    Qt::QueuedConnection);
             }
             return !job->cancel.load();
         };
@@ -428,7 +435,8 @@ void MeshImportDialog::startPreview() {
             job->result.source = job->path;
             job->result.errors.push_back(job->path + ": " + e.what());
         }
-        QMetaObject::invokeMethod(this, [this, job] { previewFinished(job); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this, [this, job] { previewFinished(job); }, Qt::QueuedConnection);
     });
     updateEnabled();
 }
@@ -522,14 +530,16 @@ void MeshImportDialog::showResult() {
     const std::optional<UnitSuggestion>& suggestion = r.suggestion ? r.suggestion : mSuggestion;
     if (suggestion) {
         const bool taken = suggestion->unit == r.unit;
-        mReason->setText((taken ? tr("Suggested %1: %2") : tr("Try %1: %2")).arg(qs(suggestion->unit.text()), qs(suggestion->reason)));
+        mReason->setText((taken ? tr("Suggested %1: %2") : tr("Try %1: %2"))
+                             .arg(qs(suggestion->unit.text()), qs(suggestion->reason)));
         mReason->setStyleSheet(taken ? QString() : QStringLiteral("color:%1").arg(QLatin1String(kWarningColour)));
     } else {
         mReason->clear();
     }
 
     QString counts = tr("Source: %1 vertices, %2 polygons").arg(r.sourceVertices).arg(r.sourcePolygons);
-    if (r.mesh) counts += tr(" · result: %1 vertices, %2 triangles").arg(r.mesh->vertexCount()).arg(r.mesh->triangleCount());
+    if (r.mesh)
+        counts += tr(" · result: %1 vertices, %2 triangles").arg(r.mesh->vertexCount()).arg(r.mesh->triangleCount());
     mCounts->setText(counts);
 
     QString html;
@@ -537,7 +547,8 @@ void MeshImportDialog::showResult() {
         if (!items.isEmpty()) html += QStringLiteral("<p><b>%1</b></p><ul>%2</ul>").arg(title.toHtmlEscaped(), items);
     };
     section(tr("Errors"), htmlList(r.errors, kErrorColour));
-    section(tr("Problems found"), htmlList(r.faults.errorTexts(), kErrorColour) + htmlList(r.faults.warningTexts(), kWarningColour));
+    section(tr("Problems found"),
+            htmlList(r.faults.errorTexts(), kErrorColour) + htmlList(r.faults.warningTexts(), kWarningColour));
     section(tr("Warnings"), htmlList(r.warnings, kWarningColour));
     section(tr("Changes made"), plainList(r.changes));
     section(tr("Tolerated while reading"), plainList(r.notes));

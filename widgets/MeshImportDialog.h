@@ -111,14 +111,14 @@ private:
 
     QTimer mDebounce;
     std::thread mWorker;
-    std::shared_ptr<Job> mJob;        // the running preview (null when none)
-    bool mRerun = false;              // options changed while it ran: run again when it ends
+    std::shared_ptr<Job> mJob;  // the running preview (null when none)
+    bool mRerun = false;        // options changed while it ran: run again when it ends
     std::unique_ptr<MeshImportResult> mResult;
     std::optional<UnitSuggestion> mSuggestion;
-    bool mUnitChosen = false;         // the user (or the suggestion) set the unit for this file
-    bool mEdgeEdited = false;         // the user set the edge length: no longer the suggested one
-    bool mSettingUp = false;          // setting widgets from code: not an option change
-    bool mLastCancelled = false;      // the last preview was cancelled (its result has no mesh)
+    bool mUnitChosen = false;     // the user (or the suggestion) set the unit for this file
+    bool mEdgeEdited = false;     // the user set the edge length: no longer the suggested one
+    bool mSettingUp = false;      // setting widgets from code: not an option change
+    bool mLastCancelled = false;  // the last preview was cancelled (its result has no mesh)
 };
 
 }  // namespace palpate

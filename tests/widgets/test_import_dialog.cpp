@@ -142,7 +142,8 @@ TEST_F(MeshImportTest, PreviewOfACentimetreMeshSuggestsCmWithTheReason) {
     EXPECT_TRUE(dialog.sizeText().contains(QStringLiteral("cm"))) << dialog.sizeText().toStdString();
     EXPECT_TRUE(dialog.importEnabled());
     // Vertex and triangle counts are shown.
-    EXPECT_TRUE(dialog.previewText().contains(QString::number(mesh().vertexCount()))) << dialog.previewText().toStdString();
+    EXPECT_TRUE(dialog.previewText().contains(QString::number(mesh().vertexCount())))
+        << dialog.previewText().toStdString();
 }
 
 TEST_F(MeshImportTest, ChoosingTheUnitChangesTheSizeShown) {
@@ -223,7 +224,8 @@ TEST_F(MeshImportTest, FaultsAreShownAndRepairMakesAMesh) {
     EXPECT_FALSE(dialog.importEnabled());  // faults without repair: no mesh
     const std::vector<std::string> faults = dialog.result()->faults.errorTexts();
     ASSERT_FALSE(faults.empty());
-    EXPECT_TRUE(dialog.previewText().contains(QString::fromStdString(faults.front()))) << dialog.previewText().toStdString();
+    EXPECT_TRUE(dialog.previewText().contains(QString::fromStdString(faults.front())))
+        << dialog.previewText().toStdString();
     EXPECT_NE(dialog.importTo(mDir.filePath(QStringLiteral("out.off"))), QString());
     EXPECT_FALSE(QFile::exists(mDir.filePath(QStringLiteral("out.off"))));
 
