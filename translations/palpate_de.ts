@@ -2267,18 +2267,6 @@ Pausiert: %13</translation>
         <translation>Kein Netz, %1</translation>
     </message>
     <message>
-        <source>%1, %2 vertices, %3</source>
-        <translation>%1, %2 Knoten, %3</translation>
-    </message>
-    <message>
-        <source>%1
-%2 vertices, %3 triangles
-%4 renderer</source>
-        <translation>%1
-%2 Knoten, %3 Dreiecke
-%4-Renderer</translation>
-    </message>
-    <message>
         <source>The tissue model diverged (%1) at tick %2: the force was zeroed and the tissue reset. %3</source>
         <translation>Das Gewebemodell divergierte (%1) bei Tick %2: die Kraft wurde auf null gesetzt und das Gewebe zurückgesetzt. %3</translation>
     </message>
@@ -2575,6 +2563,295 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>Device not opened</source>
         <translation>Gerät nicht geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Import Mesh…</source>
+        <translation>Netz &amp;importieren…</translation>
+    </message>
+    <message>
+        <source>Open a mesh from another tool: its unit, repair, remeshing, previewed</source>
+        <translation>Ein Netz aus einem anderen Programm öffnen: Einheit, Reparatur, Neuvernetzung, mit Vorschau</translation>
+    </message>
+    <message>
+        <source>Which unit is this mesh in?</source>
+        <translation>In welcher Einheit ist dieses Netz?</translation>
+    </message>
+    <message>
+        <source>%1 is %2 if its coordinates are millimetres.</source>
+        <translation>%1 ist %2 groß, wenn seine Koordinaten Millimeter sind.</translation>
+    </message>
+    <message>
+        <source>Open in %1</source>
+        <translation>In %1 öffnen</translation>
+    </message>
+    <message>
+        <source>Open as mm</source>
+        <translation>Als mm öffnen</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importieren…</translation>
+    </message>
+    <message>
+        <source>Import Mesh can repair the faults and scale the file to mm.</source>
+        <translation>„Netz importieren“ kann die Fehler reparieren und die Datei auf mm skalieren.</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>%1 · file in %2</source>
+        <translation>%1 · Datei in %2</translation>
+    </message>
+    <message>
+        <source>%1 · %2 vertices · %3</source>
+        <translation>%1 · %2 Knoten · %3</translation>
+    </message>
+    <message>
+        <source>%1
+%2
+%3 vertices, %4 triangles
+%5 renderer</source>
+        <translation>%1
+%2
+%3 Knoten, %4 Dreiecke
+%5-Renderer</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::MeshImportDialog</name>
+    <message>
+        <source>Import Mesh</source>
+        <translation>Netz importieren</translation>
+    </message>
+    <message>
+        <source>Choose a mesh file to preview.</source>
+        <translation>Wählen Sie eine Netzdatei für die Vorschau.</translation>
+    </message>
+    <message>
+        <source>A mesh from another tool (OBJ, OFF, PLY, STL, OM)</source>
+        <translation>Ein Netz aus einem anderen Programm (OBJ, OFF, PLY, STL, OM)</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Datei:</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>cm</source>
+        <translation>cm</translation>
+    </message>
+    <message>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <translation>in</translation>
+    </message>
+    <message>
+        <source>Scale…</source>
+        <translation>Faktor…</translation>
+    </message>
+    <message>
+        <source> mm per file unit</source>
+        <translation> mm je Dateieinheit</translation>
+    </message>
+    <message>
+        <source>Unit of the file:</source>
+        <translation>Einheit der Datei:</translation>
+    </message>
+    <message>
+        <source>Repair faults</source>
+        <translation>Fehler reparieren</translation>
+    </message>
+    <message>
+        <source>Orient the faces consistently, split non-manifold edges and vertices, remove degenerate triangles and duplicate vertices (CGAL). Without it a mesh with faults is refused.</source>
+        <translation>Flächen einheitlich ausrichten, nicht-mannigfaltige Kanten und Knoten auftrennen, entartete Dreiecke und doppelte Knoten entfernen (CGAL). Ohne dies wird ein fehlerhaftes Netz abgelehnt.</translation>
+    </message>
+    <message>
+        <source>Keep the largest piece</source>
+        <translation>Größtes Teil behalten</translation>
+    </message>
+    <message>
+        <source>Keep all pieces</source>
+        <translation>Alle Teile behalten</translation>
+    </message>
+    <message>
+        <source>Fill holes</source>
+        <translation>Löcher füllen</translation>
+    </message>
+    <message>
+        <source>Repair:</source>
+        <translation>Reparatur:</translation>
+    </message>
+    <message>
+        <source>Remesh to even triangles, edge</source>
+        <translation>Gleichmäßig neu vernetzen, Kante</translation>
+    </message>
+    <message>
+        <source>Isotropic remeshing: even triangles make the slope model&apos;s rings round</source>
+        <translation>Isotrope Neuvernetzung: gleichmäßige Dreiecke machen die Ringe des Steigungsmodells rund</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Remesh:</source>
+        <translation>Neu vernetzen:</translation>
+    </message>
+    <message>
+        <source>Cancel Preview</source>
+        <translation>Vorschau abbrechen</translation>
+    </message>
+    <message>
+        <source>Preview</source>
+        <translation>Vorschau</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Vorher</translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation>Nachher</translation>
+    </message>
+    <message>
+        <source>Ring roundness: the spread of the distances to ring k&apos;s vertices (coefficient of variation; 0 is a circle, a regular mesh gives about 0.1 at ring 2), and the spread of the edge lengths</source>
+        <translation>Rundheit der Ringe: die Streuung der Abstände zu den Knoten von Ring k (Variationskoeffizient; 0 ist ein Kreis, ein regelmäßiges Netz ergibt etwa 0,1 bei Ring 2) und die Streuung der Kantenlängen</translation>
+    </message>
+    <message>
+        <source>Ring roundness (CV)</source>
+        <translation>Rundheit der Ringe (VK)</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importieren…</translation>
+    </message>
+    <message>
+        <source>Write the previewed mesh (in mm) to a new file and open it</source>
+        <translation>Das Netz der Vorschau (in mm) in eine neue Datei schreiben und öffnen</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.off *.ply *.stl *.om);;All files (*)</source>
+        <translation>Netze (*.obj *.off *.ply *.stl *.om);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Import Mesh As</source>
+        <translation>Netz importieren als</translation>
+    </message>
+    <message>
+        <source>Meshes (*.off *.obj *.ply *.stl *.om)</source>
+        <translation>Netze (*.off *.obj *.ply *.stl *.om)</translation>
+    </message>
+    <message>
+        <source>Cannot import</source>
+        <translation>Import nicht möglich</translation>
+    </message>
+    <message>
+        <source>Choose a file for the imported mesh.</source>
+        <translation>Wählen Sie eine Datei für das importierte Netz.</translation>
+    </message>
+    <message>
+        <source>The preview is not finished yet: wait for it, then import.</source>
+        <translation>Die Vorschau ist noch nicht fertig: warten Sie darauf und importieren Sie dann.</translation>
+    </message>
+    <message>
+        <source>nothing previewed</source>
+        <translation>keine Vorschau</translation>
+    </message>
+    <message>
+        <source>There is no mesh to import: %1</source>
+        <translation>Es gibt kein Netz zu importieren: %1</translation>
+    </message>
+    <message>
+        <source>%1: is the mesh being imported; choose another file for the result</source>
+        <translation>%1: ist das Netz, das importiert wird; wählen Sie eine andere Datei für das Ergebnis</translation>
+    </message>
+    <message>
+        <source>reading</source>
+        <translation>lesen</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>fertig</translation>
+    </message>
+    <message>
+        <source>%1 · file in %2</source>
+        <translation>%1 · Datei in %2</translation>
+    </message>
+    <message>
+        <source>Not read</source>
+        <translation>Nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Suggested %1: %2</source>
+        <translation>Vorgeschlagen %1: %2</translation>
+    </message>
+    <message>
+        <source>Try %1: %2</source>
+        <translation>Versuchen Sie %1: %2</translation>
+    </message>
+    <message>
+        <source>Source: %1 vertices, %2 polygons</source>
+        <translation>Quelle: %1 Knoten, %2 Polygone</translation>
+    </message>
+    <message>
+        <source> · result: %1 vertices, %2 triangles</source>
+        <translation> · Ergebnis: %1 Knoten, %2 Dreiecke</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>Problems found</source>
+        <translation>Gefundene Probleme</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>Warnungen</translation>
+    </message>
+    <message>
+        <source>Changes made</source>
+        <translation>Vorgenommene Änderungen</translation>
+    </message>
+    <message>
+        <source>Tolerated while reading</source>
+        <translation>Beim Lesen toleriert</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No problems found.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Keine Probleme gefunden.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Ring %1</source>
+        <translation>Ring %1</translation>
+    </message>
+    <message>
+        <source>Edge length</source>
+        <translation>Kantenlänge</translation>
+    </message>
+    <message>
+        <source>waiting</source>
+        <translation>wartet</translation>
+    </message>
+    <message>
+        <source>cancelling…</source>
+        <translation>wird abgebrochen…</translation>
     </message>
 </context>
 <context>

@@ -2264,18 +2264,6 @@ Dijeda: %13</translation>
         <translation>Tiada jejaring, %1</translation>
     </message>
     <message>
-        <source>%1, %2 vertices, %3</source>
-        <translation>%1, %2 bucu, %3</translation>
-    </message>
-    <message>
-        <source>%1
-%2 vertices, %3 triangles
-%4 renderer</source>
-        <translation>%1
-%2 bucu, %3 segi tiga
-pemapar %4</translation>
-    </message>
-    <message>
         <source>The tissue model diverged (%1) at tick %2: the force was zeroed and the tissue reset. %3</source>
         <translation>Model tisu mencapah (%1) pada tik %2: daya disifarkan dan tisu ditetapkan semula. %3</translation>
     </message>
@@ -2572,6 +2560,295 @@ Menggunakan %3 sebagai ganti: pilih yang lain dalam dok Peranti atau dalam Sunti
     <message>
         <source>Device not opened</source>
         <translation>Peranti tidak dibuka</translation>
+    </message>
+    <message>
+        <source>&amp;Import Mesh…</source>
+        <translation>&amp;Import Jejaring…</translation>
+    </message>
+    <message>
+        <source>Open a mesh from another tool: its unit, repair, remeshing, previewed</source>
+        <translation>Buka jaringan daripada alat lain: unitnya, pembaikan, jaringan semula, dengan pratonton</translation>
+    </message>
+    <message>
+        <source>Which unit is this mesh in?</source>
+        <translation>Dalam unit apakah jaringan ini?</translation>
+    </message>
+    <message>
+        <source>%1 is %2 if its coordinates are millimetres.</source>
+        <translation>%1 bersaiz %2 jika koordinatnya dalam milimeter.</translation>
+    </message>
+    <message>
+        <source>Open in %1</source>
+        <translation>Buka dalam %1</translation>
+    </message>
+    <message>
+        <source>Open as mm</source>
+        <translation>Buka sebagai mm</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Import…</translation>
+    </message>
+    <message>
+        <source>Import Mesh can repair the faults and scale the file to mm.</source>
+        <translation>Import Jaringan boleh membaiki kerosakan dan menskalakan fail kepada mm.</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>%1 · file in %2</source>
+        <translation>%1 · fail dalam %2</translation>
+    </message>
+    <message>
+        <source>%1 · %2 vertices · %3</source>
+        <translation>%1 · %2 bucu · %3</translation>
+    </message>
+    <message>
+        <source>%1
+%2
+%3 vertices, %4 triangles
+%5 renderer</source>
+        <translation>%1
+%2
+%3 bucu, %4 segi tiga
+pemapar %5</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::MeshImportDialog</name>
+    <message>
+        <source>Import Mesh</source>
+        <translation>Import Jaringan</translation>
+    </message>
+    <message>
+        <source>Choose a mesh file to preview.</source>
+        <translation>Pilih fail jaringan untuk pratonton.</translation>
+    </message>
+    <message>
+        <source>A mesh from another tool (OBJ, OFF, PLY, STL, OM)</source>
+        <translation>Jaringan daripada alat lain (OBJ, OFF, PLY, STL, OM)</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Semak imbas…</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Fail:</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>cm</source>
+        <translation>cm</translation>
+    </message>
+    <message>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <translation>in</translation>
+    </message>
+    <message>
+        <source>Scale…</source>
+        <translation>Skala…</translation>
+    </message>
+    <message>
+        <source> mm per file unit</source>
+        <translation> mm setiap unit fail</translation>
+    </message>
+    <message>
+        <source>Unit of the file:</source>
+        <translation>Unit fail:</translation>
+    </message>
+    <message>
+        <source>Repair faults</source>
+        <translation>Baiki kerosakan</translation>
+    </message>
+    <message>
+        <source>Orient the faces consistently, split non-manifold edges and vertices, remove degenerate triangles and duplicate vertices (CGAL). Without it a mesh with faults is refused.</source>
+        <translation>Arahkan muka secara konsisten, pisahkan tepi dan bucu bukan-manifold, buang segi tiga merosot dan bucu berganda (CGAL). Tanpanya jaringan yang rosak ditolak.</translation>
+    </message>
+    <message>
+        <source>Keep the largest piece</source>
+        <translation>Simpan kepingan terbesar</translation>
+    </message>
+    <message>
+        <source>Keep all pieces</source>
+        <translation>Simpan semua kepingan</translation>
+    </message>
+    <message>
+        <source>Fill holes</source>
+        <translation>Isi lubang</translation>
+    </message>
+    <message>
+        <source>Repair:</source>
+        <translation>Pembaikan:</translation>
+    </message>
+    <message>
+        <source>Remesh to even triangles, edge</source>
+        <translation>Jaring semula kepada segi tiga sekata, tepi</translation>
+    </message>
+    <message>
+        <source>Isotropic remeshing: even triangles make the slope model&apos;s rings round</source>
+        <translation>Jaringan semula isotropik: segi tiga sekata menjadikan gelang model cerun bulat</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Remesh:</source>
+        <translation>Jaring semula:</translation>
+    </message>
+    <message>
+        <source>Cancel Preview</source>
+        <translation>Batalkan Pratonton</translation>
+    </message>
+    <message>
+        <source>Preview</source>
+        <translation>Pratonton</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Sebelum</translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation>Selepas</translation>
+    </message>
+    <message>
+        <source>Ring roundness: the spread of the distances to ring k&apos;s vertices (coefficient of variation; 0 is a circle, a regular mesh gives about 0.1 at ring 2), and the spread of the edge lengths</source>
+        <translation>Kebulatan gelang: sebaran jarak ke bucu gelang k (pekali variasi; 0 ialah bulatan, jaringan sekata memberi kira-kira 0.1 pada gelang 2), dan sebaran panjang tepi</translation>
+    </message>
+    <message>
+        <source>Ring roundness (CV)</source>
+        <translation>Kebulatan gelang (CV)</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Import…</translation>
+    </message>
+    <message>
+        <source>Write the previewed mesh (in mm) to a new file and open it</source>
+        <translation>Tulis jaringan pratonton (dalam mm) ke fail baharu dan bukanya</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.off *.ply *.stl *.om);;All files (*)</source>
+        <translation>Jaringan (*.obj *.off *.ply *.stl *.om);;Semua fail (*)</translation>
+    </message>
+    <message>
+        <source>Import Mesh As</source>
+        <translation>Import Jaringan Sebagai</translation>
+    </message>
+    <message>
+        <source>Meshes (*.off *.obj *.ply *.stl *.om)</source>
+        <translation>Jaringan (*.off *.obj *.ply *.stl *.om)</translation>
+    </message>
+    <message>
+        <source>Cannot import</source>
+        <translation>Tidak dapat mengimport</translation>
+    </message>
+    <message>
+        <source>Choose a file for the imported mesh.</source>
+        <translation>Pilih fail untuk jaringan yang diimport.</translation>
+    </message>
+    <message>
+        <source>The preview is not finished yet: wait for it, then import.</source>
+        <translation>Pratonton belum selesai: tunggu, kemudian import.</translation>
+    </message>
+    <message>
+        <source>nothing previewed</source>
+        <translation>tiada pratonton</translation>
+    </message>
+    <message>
+        <source>There is no mesh to import: %1</source>
+        <translation>Tiada jaringan untuk diimport: %1</translation>
+    </message>
+    <message>
+        <source>%1: is the mesh being imported; choose another file for the result</source>
+        <translation>%1: ialah jaringan yang sedang diimport; pilih fail lain untuk hasilnya</translation>
+    </message>
+    <message>
+        <source>reading</source>
+        <translation>membaca</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>dibatalkan</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>selesai</translation>
+    </message>
+    <message>
+        <source>%1 · file in %2</source>
+        <translation>%1 · fail dalam %2</translation>
+    </message>
+    <message>
+        <source>Not read</source>
+        <translation>Tidak dibaca</translation>
+    </message>
+    <message>
+        <source>Suggested %1: %2</source>
+        <translation>Dicadangkan %1: %2</translation>
+    </message>
+    <message>
+        <source>Try %1: %2</source>
+        <translation>Cuba %1: %2</translation>
+    </message>
+    <message>
+        <source>Source: %1 vertices, %2 polygons</source>
+        <translation>Sumber: %1 bucu, %2 poligon</translation>
+    </message>
+    <message>
+        <source> · result: %1 vertices, %2 triangles</source>
+        <translation> · hasil: %1 bucu, %2 segi tiga</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>Ralat</translation>
+    </message>
+    <message>
+        <source>Problems found</source>
+        <translation>Masalah ditemui</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>Amaran</translation>
+    </message>
+    <message>
+        <source>Changes made</source>
+        <translation>Perubahan dibuat</translation>
+    </message>
+    <message>
+        <source>Tolerated while reading</source>
+        <translation>Diterima semasa membaca</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No problems found.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Tiada masalah ditemui.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Ring %1</source>
+        <translation>Gelang %1</translation>
+    </message>
+    <message>
+        <source>Edge length</source>
+        <translation>Panjang tepi</translation>
+    </message>
+    <message>
+        <source>waiting</source>
+        <translation>menunggu</translation>
+    </message>
+    <message>
+        <source>cancelling…</source>
+        <translation>membatalkan…</translation>
     </message>
 </context>
 <context>

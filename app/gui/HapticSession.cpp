@@ -33,10 +33,13 @@ HapticSession::HapticSession(LoopMode mode, const HapticLoopDef& def) : mMode(mo
 
 HapticSession::~HapticSession() { stop(); }
 
-std::optional<TissueMesh> HapticSession::loadTissueMesh(const std::string& path, std::string& error) {
+std::optional<TissueMesh> HapticSession::loadTissueMesh(const std::string& path, std::string& error,
+                                                        const MeshUnit& unit, MeshReport* report) {
     error.clear();
+    if (report) *report = MeshReport{};
     try {
-        auto loaded = TissueMesh::load(path);
+        auto loaded = TissueMesh::load(path, unit);
+        if (report) *report = loaded.report;
         if (loaded.mesh) return std::move(loaded.mesh);
         for (const auto& e : loaded.report.errors) error += (error.empty() ? "" : "\n") + e;
         if (error.empty()) error = "the mesh could not be loaded";
@@ -49,12 +52,18 @@ std::optional<TissueMesh> HapticSession::loadTissueMesh(const std::string& path,
     return std::nullopt;
 }
 
-std::string HapticSession::loadMesh(const std::string& path, bool* deviceFailed) {
+std::string HapticSession::loadMesh(const std::string& path, const MeshUnit& unit, bool* deviceFailed) {
     if (deviceFailed) *deviceFailed = false;
     std::string error;
-    auto loaded = loadTissueMesh(path, error);
+    auto loaded = loadTissueMesh(path, error, unit);
     if (!loaded) return error;
-    auto mesh = std::make_shared<const TissueMesh>(std::move(*loaded));
+    return loadMesh(path, std::move(*loaded), deviceFailed);
+}
+
+std::string HapticSession::loadMesh(const std::string& path, TissueMesh loaded, bool* deviceFailed) {
+    if (deviceFailed) *deviceFailed = false;
+    std::string error;
+    auto mesh = std::make_shared<const TissueMesh>(std::move(loaded));
     if (path != mExercisePath) clearExercisePhysics();  // another mesh: the exercise's inclusion is not on it
     // The loop gets its own copy; ours stays for drawing (the loop may free its scene any time after a swap).
     auto scene = makeScene(*mesh, path, error);

@@ -66,15 +66,21 @@ public:
     HapticSession(const HapticSession&) = delete;
     HapticSession& operator=(const HapticSession&) = delete;
 
-    /// Loads and validates a mesh. Never throws; on failure `error` names the file and every problem.
-    static std::optional<TissueMesh> loadTissueMesh(const std::string& path, std::string& error);
+    /// Loads and validates a mesh whose coordinates are in `unit` (scaled to mm; docs/meshes.md,
+    /// "Units"). Never throws; on failure `error` names the file and every problem, and `report`
+    /// (if given) is what the loader found (its size, to suggest another unit).
+    static std::optional<TissueMesh> loadTissueMesh(const std::string& path, std::string& error,
+                                                    const MeshUnit& unit = kMillimetres, MeshReport* report = nullptr);
 
     /// Loads `path` and builds its scene here, then makes it the loop's scene with a fresh device
     /// aimed at it. The first scene creates the loop (and, threaded, starts its thread) and is drawn
     /// at once; later ones are drawn from the first snapshot that shows them. On failure the current
     /// scene stays and the error (naming the file) is returned; "" on success. When the failure
     /// was the device's (not plugged in, a bad recording), `deviceFailed` (if given) is set.
-    std::string loadMesh(const std::string& path, bool* deviceFailed = nullptr);
+    /// `unit`: the file's (the window remembers it per file).
+    std::string loadMesh(const std::string& path, const MeshUnit& unit = kMillimetres, bool* deviceFailed = nullptr);
+    /// The same with a mesh already loaded from `path` (the window loaded it to look at its size first).
+    std::string loadMesh(const std::string& path, TissueMesh mesh, bool* deviceFailed = nullptr);
     /// Makes an exercise's mesh, tissue preset and physics (find the lump's inclusion) the loop's
     /// scene, with a fresh device aimed at it. The physics stays with every later scene of that
     /// mesh (restart, a new preset) until another mesh is loaded or clearExercisePhysics(). The

@@ -14,6 +14,8 @@
 #include "widgets/GuardedLoad.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/LodPanel.h"
+#include "widgets/MeshImportDialog.h"
+#include "widgets/MeshSizeText.h"
 #include "widgets/PreferencesDialog.h"
 #include "widgets/ScoreCard.h"
 #include "widgets/TraineePanel.h"
@@ -31,6 +33,7 @@
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QMimeData>
+#include <QPushButton>
 #include <QSettings>
 #include <QUndoGroup>
 #include <QUndoStack>
@@ -60,6 +63,8 @@ constexpr std::array<const char*, 5> kMenuDevices = {"sim:press", "sim:stroke", 
 constexpr int kMaxRecentFiles = 8;
 const char* const kRecentFilesKey = "recentFiles";
 const char* const kMeshFolderKey = "meshes/lastFolder";  // where File > Open Mesh… starts
+const char* const kMeshUnitsKey = "meshUnits";  // each mesh file's unit: path, unit (newest first)
+constexpr int kMaxRememberedUnits = 500;        // the oldest answers are forgotten (asked again)
 
 bool isMeshFile(const QString& path) {
     const QString suffix = QFileInfo(path).suffix().toLower();
@@ -87,6 +92,8 @@ QLabel* addStatusField(QStatusBar* bar, const char* objectName, const QString& t
     label->setObjectName(QLatin1String(objectName));
     label->setToolTip(toolTip);
     label->setContentsMargins(4, 0, 0, 0);
+    // A narrow window clips these rather than the mesh field (its name, size and unit stay whole).
+    label->setMinimumWidth(16);
     bar->addPermanentWidget(label);
     return label;
 }
@@ -248,10 +255,7 @@ void MainWindow::rebuildRecentMenu() {
         const QString path = files[i];
         QAction* action = mRecentMenu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()));
         action->setToolTip(path);
-        connect(action, &QAction::triggered, this, [this, path] {
-            if (const QString error = loadMesh(path); !error.isEmpty())
-                QMessageBox::warning(this, tr("Cannot open mesh"), error);
-        });
+        connect(action, &QAction::triggered, this, [this, path] { openMeshFile(path); });
     }
     mRecentMenu->setEnabled(!files.isEmpty());
 }
@@ -282,8 +286,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
     for (const QUrl& url : event->mimeData()->urls()) {
         if (!url.isLocalFile() || !isMeshFile(url.toLocalFile())) continue;
         event->acceptProposedAction();
-        if (const QString error = loadMesh(url.toLocalFile()); !error.isEmpty())
-            QMessageBox::warning(this, tr("Cannot open mesh"), error);
+        openMeshFile(url.toLocalFile());
         return;
     }
 }
@@ -345,6 +348,11 @@ void MainWindow::createMenus() {
     open->setShortcut(QKeySequence::Open);
     open->setObjectName(QStringLiteral("openMeshAction"));
     mOpenMeshAction = open;
+    // Ctrl+Shift+O is Open Preset's; Ctrl+I is free in every menu and dock.
+    mImportMeshAction = file->addAction(tr("&Import Mesh…"), QKeySequence(Qt::CTRL | Qt::Key_I), this,
+                                        [this] { openImportDialog(); });
+    mImportMeshAction->setObjectName(QStringLiteral("importMeshAction"));
+    mImportMeshAction->setStatusTip(tr("Open a mesh from another tool: its unit, repair, remeshing, previewed"));
     mRecentMenu = file->addMenu(tr("Open &Recent"));
     rebuildRecentMenu();
     QAction* openRecording = file->addAction(tr("Open Recor&ding…"), this, &MainWindow::openRecordingDialog);
@@ -484,7 +492,153 @@ void MainWindow::checkCurrentDevice() {
 }
 
 QString MainWindow::loadMesh(const QString& path, bool* deviceFailed) {
-    const std::string error = mSession->loadMesh(path.toStdString(), deviceFailed);
+    const MeshUnit unit = rememberedMeshUnit(path).value_or(kMillimetres);
+    return meshLoaded(path, mSession->loadMesh(path.toStdString(), unit, deviceFailed));
+}
+
+namespace {
+
+/// The remembered units, newest first: (absolute path, unit text). An array in the settings, so
+/// that the file stays readable (a map would be a binary blob).
+QList<QPair<QString, QString>> readMeshUnits(QSettings& settings) {
+    QList<QPair<QString, QString>> entries;
+    const int count = settings.beginReadArray(kMeshUnitsKey);
+    for (int i = 0; i < count; ++i) {
+        settings.setArrayIndex(i);
+        entries.append({settings.value("path").toString(), settings.value("unit").toString()});
+    }
+    settings.endArray();
+    return entries;
+}
+
+}  // namespace
+
+std::optional<MeshUnit> MainWindow::rememberedMeshUnit(const QString& path) {
+    QSettings settings;
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    for (const auto& [file, unit] : readMeshUnits(settings)) {
+        if (file != absolute) continue;
+        std::string ignored;
+        return parseMeshUnit(unit.toStdString(), ignored);  // an edited, invalid setting: asked again
+    }
+    return std::nullopt;
+}
+
+void MainWindow::rememberMeshUnit(const QString& path, const MeshUnit& unit) {
+    QSettings settings;
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    auto entries = readMeshUnits(settings);
+    entries.removeIf([&absolute](const auto& entry) { return entry.first == absolute; });
+    entries.prepend({absolute, QString::fromStdString(unit.text())});
+    while (entries.size() > kMaxRememberedUnits) entries.removeLast();
+    settings.remove(kMeshUnitsKey);
+    settings.beginWriteArray(kMeshUnitsKey, int(entries.size()));
+    for (int i = 0; i < entries.size(); ++i) {
+        settings.setArrayIndex(i);
+        settings.setValue("path", entries[i].first);
+        settings.setValue("unit", entries[i].second);
+    }
+    settings.endArray();
+}
+
+QString MainWindow::openMeshFile(const QString& path) {
+    if (rememberedMeshUnit(path)) {  // asked before: as answered then
+        MeshReport report;
+        std::string error;
+        auto mesh = HapticSession::loadTissueMesh(path.toStdString(), error, *rememberedMeshUnit(path), &report);
+        if (!mesh) {
+            showMeshOpenError(path, QString::fromStdString(error), report.triangleCount > 0);
+            return QString::fromStdString(error);
+        }
+        const QString loaded = meshLoaded(path, mSession->loadMesh(path.toStdString(), std::move(*mesh)));
+        if (!loaded.isEmpty()) showMeshOpenError(path, loaded, false);
+        return loaded;
+    }
+    // Read as mm first: its size decides whether to ask (docs/meshes.md, "Units").
+    MeshReport report;
+    std::string error;
+    auto mesh = HapticSession::loadTissueMesh(path.toStdString(), error, kMillimetres, &report);
+    const auto suggestion = report.bboxDiagonalMm > 0.0 ? suggestMeshUnit(report.bboxDiagonalMm) : std::nullopt;
+    if (suggestion) {
+        const QString unitName = QString::fromStdString(suggestion->unit.text());
+        QMessageBox box(QMessageBox::Question, tr("Which unit is this mesh in?"),
+                        tr("%1 is %2 if its coordinates are millimetres.")
+                            .arg(QFileInfo(path).fileName(), meshSizeText(report.sizeMm)),
+                        QMessageBox::NoButton, this);
+        box.setObjectName(QStringLiteral("meshUnitQuestion"));
+        QString reason = QString::fromStdString(suggestion->reason);
+        if (!reason.isEmpty()) reason[0] = reason[0].toUpper();  // the engine's sentence starts a paragraph here
+        box.setInformativeText(reason);
+        QPushButton* suggested = box.addButton(tr("Open in %1").arg(unitName), QMessageBox::AcceptRole);
+        suggested->setObjectName(QStringLiteral("openInSuggestedUnit"));
+        QPushButton* asMm = box.addButton(tr("Open as mm"), QMessageBox::AcceptRole);
+        asMm->setObjectName(QStringLiteral("openAsMillimetres"));
+        QPushButton* import = box.addButton(tr("Import…"), QMessageBox::ActionRole);
+        import->setObjectName(QStringLiteral("openInImportDialog"));
+        box.addButton(QMessageBox::Cancel);
+        box.setDefaultButton(suggested);
+        box.exec();
+        if (box.clickedButton() == import) {
+            openImportDialog(path);
+            return {};
+        }
+        if (box.clickedButton() == suggested) {
+            mesh = HapticSession::loadTissueMesh(path.toStdString(), error, suggestion->unit, &report);
+            if (mesh) rememberMeshUnit(path, suggestion->unit);
+        } else if (box.clickedButton() == asMm) {
+            if (mesh) rememberMeshUnit(path, kMillimetres);
+        } else {
+            return {};  // cancelled: nothing opened, nothing remembered
+        }
+    }
+    if (!mesh) {
+        showMeshOpenError(path, QString::fromStdString(error), report.triangleCount > 0);
+        return QString::fromStdString(error);
+    }
+    const QString loaded = meshLoaded(path, mSession->loadMesh(path.toStdString(), std::move(*mesh)));
+    if (!loaded.isEmpty()) showMeshOpenError(path, loaded, false);
+    return loaded;
+}
+
+void MainWindow::showMeshOpenError(const QString& path, const QString& error, bool offerImport) {
+    // The error names the file and every problem found. A file that was read but refused (faults, a
+    // size no unit explains) may import: repair and the unit are the import dialog's.
+    QMessageBox box(QMessageBox::Warning, tr("Cannot open mesh"), error, QMessageBox::Close, this);
+    box.setObjectName(QStringLiteral("meshOpenError"));
+    QPushButton* import = nullptr;
+    if (offerImport) {
+        import = box.addButton(tr("Import…"), QMessageBox::ActionRole);
+        import->setObjectName(QStringLiteral("openInImportDialog"));
+        box.setInformativeText(tr("Import Mesh can repair the faults and scale the file to mm."));
+    }
+    box.exec();
+    if (import && box.clickedButton() == import) openImportDialog(path);
+}
+
+MeshImportDialog* MainWindow::openImportDialog(const QString& path) {
+    if (!mImportDialog) {
+        mImportDialog = new MeshImportDialog(this);
+        mImportDialog->resize(760, 620);
+        connect(mImportDialog, &MeshImportDialog::imported, this, [this](const QString& output) {
+            // Written in mm: so it is read, whatever an older file of that name was read in.
+            rememberMeshUnit(output, kMillimetres);
+            if (mExercises->running()) {
+                statusBar()->showMessage(tr("An exercise is running: the mesh cannot change now."), 6000);
+                return;
+            }
+            // No message on success: it would hide the status bar's mesh field, which names the new file.
+            if (const QString error = loadMesh(output); !error.isEmpty())
+                QMessageBox::warning(this, tr("Cannot open mesh"), error);
+        });
+    }
+    if (!path.isEmpty()) mImportDialog->setInputPath(path);
+    mImportDialog->show();
+    mImportDialog->raise();
+    mImportDialog->activateWindow();
+    return mImportDialog;
+}
+
+QString MainWindow::meshLoaded(const QString& path, const std::string& error) {
     if (!error.empty()) return QString::fromStdString(error);
     mTouchVertex = kNoVertex;  // a fresh device on another mesh: nothing is pressed
     addRecentFile(path);
@@ -695,12 +849,19 @@ void MainWindow::showStatus() {
     const TissueMesh* mesh = replayed ? mRecorderPanel->playbackMesh() : mSession->drawnMesh().get();
     if (!mesh) {
         mMeshLabel->setText(tr("No mesh, %1").arg(renderer));
+        mMeshLabel->setMinimumWidth(0);
     } else {
         const QString path = replayed ? mRecorderPanel->playbackMeshPath() : QString::fromStdString(mSession->drawnPath());
-        mMeshLabel->setText(
-            tr("%1, %2 vertices, %3").arg(QFileInfo(path).fileName()).arg(mesh->vertexCount()).arg(renderer));
-        mMeshLabel->setToolTip(tr("%1\n%2 vertices, %3 triangles\n%4 renderer")
-                                   .arg(path)
+        // Name, size in mm and the file's unit: a mesh opened in the wrong unit shows at once.
+        const MeshReport& report = mesh->report();
+        QString shown = tr("%1 · %2").arg(QFileInfo(path).fileName(), meshSizeText(report.sizeMm));
+        if (!report.unit.isMillimetres()) shown = tr("%1 · file in %2").arg(shown, QString::fromStdString(report.unit.text()));
+        // Most important first: a narrow window cuts the end off, never the name, size and unit
+        // (the loop's figures beside them are in the Status dock too).
+        mMeshLabel->setText(tr("%1 · %2 vertices · %3").arg(shown).arg(mesh->vertexCount()).arg(renderer));
+        mMeshLabel->setMinimumWidth(mMeshLabel->fontMetrics().horizontalAdvance(shown) + 8);
+        mMeshLabel->setToolTip(tr("%1\n%2\n%3 vertices, %4 triangles\n%5 renderer")
+                                   .arg(path, QString::fromStdString(report.unit.description()))
                                    .arg(mesh->vertexCount())
                                    .arg(mesh->triangleCount())
                                    .arg(renderer));
@@ -761,10 +922,7 @@ void MainWindow::openMeshDialog() {
     const QString path = QFileDialog::getOpenFileName(this, tr("Open Mesh"), meshDialogFolder(),
                                                       tr("Meshes (*.obj *.off *.ply *.stl *.om);;All files (*)"));
     if (path.isEmpty()) return;
-    const QString error = loadMesh(path);
-    if (error.isEmpty()) QSettings().setValue(kMeshFolderKey, QFileInfo(path).absolutePath());
-    // The error names the file and every problem found.
-    if (!error.isEmpty()) QMessageBox::warning(this, tr("Cannot open mesh"), error);
+    if (openMeshFile(path).isEmpty()) QSettings().setValue(kMeshFolderKey, QFileInfo(path).absolutePath());
 }
 
 void MainWindow::createRecorderDock() {
@@ -1209,6 +1367,7 @@ void MainWindow::setExerciseRunning(bool running) {
     mParameterPanel->setEnabled(!running);
     mDevicePanel->setEnabled(!running);
     if (mOpenMeshAction) mOpenMeshAction->setEnabled(!running);
+    if (mImportMeshAction) mImportMeshAction->setEnabled(!running);
     if (mRestartAction) mRestartAction->setEnabled(!running);
     if (mDeviceGroup) mDeviceGroup->setEnabled(!running);
     if (running) {

@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 class QAction;
 class QActionGroup;
@@ -33,6 +34,7 @@ class ExerciseController;
 class ExerciseEditorPanel;
 class HistoryPanel;
 class LodPanel;
+class MeshImportDialog;
 class TraineePanel;
 class ParameterPanel;
 class RecorderPanel;
@@ -123,6 +125,22 @@ public:
     /// preview (nothing stored). What --exercise does. "" or why not.
     QString runExercise(const QString& path, const QString& trainee);
 
+    /// What File > Open Mesh…, Open Recent and a drop do with a mesh file: loads it in the unit
+    /// remembered for it (rememberedMeshUnit). The first time, when its size is implausible in mm
+    /// (suggestMeshUnit, docs/meshes.md "Units"), asks once with the reason: open it in the unit
+    /// suggested, as mm, or import it (the Import Mesh dialog with the file); the answer is
+    /// remembered. A mesh refused for its faults offers Import… too. "" when it opened (or the
+    /// import dialog did, or the question was cancelled), else the error (also shown).
+    QString openMeshFile(const QString& path);
+    /// File > Import Mesh…: the dialog (one per window, kept), with `path` previewed if given.
+    MeshImportDialog* openImportDialog(const QString& path = {});
+    /// The import dialog once opened (null before).
+    MeshImportDialog* importDialog() const { return mImportDialog; }
+    /// The unit a mesh file is read in, as chosen for it before (QSettings "meshUnits", by
+    /// absolute path); nullopt when never asked.
+    static std::optional<MeshUnit> rememberedMeshUnit(const QString& path);
+    static void rememberMeshUnit(const QString& path, const MeshUnit& unit);
+
     /// Where File > Open Mesh… starts: the folder a mesh was last opened from with it (QSettings
     /// "meshes/lastFolder"), else the bundled meshes.
     QString meshDialogFolder() const;
@@ -179,6 +197,10 @@ private:
     void updateDocks();
     /// Tells the Charts panel the applied preset and the drawn mesh's size (its highlight).
     void updateChartsConfiguration();
+    /// The rest of a mesh load once the session has it (or `error`): recent files, device panel, status.
+    QString meshLoaded(const QString& path, const std::string& error);
+    /// Shows why `path` cannot be opened; offers the import dialog when importing may help.
+    void showMeshOpenError(const QString& path, const QString& error, bool offerImport);
     void createStatusBar();
     void present(HapticSession::Observation observation);
     void showDrawnMesh();
@@ -280,6 +302,8 @@ private:
     QAction* mInstructorAction = nullptr;
     QAction* mTraineeAction = nullptr;
     QAction* mOpenMeshAction = nullptr;
+    QAction* mImportMeshAction = nullptr;
+    MeshImportDialog* mImportDialog = nullptr;  // owned by Qt (child of this window)
     QAction* mRestartAction = nullptr;  // what the Device panel reads (large: on the heap)
 };
 

@@ -476,18 +476,22 @@ TEST_F(RecorderDock, StatusBarShowsTheRecordingsMeshInPlaybackAndTheLiveOneAfter
     window->advanceTicks(10);
     auto* meshStatus = window->findChild<QLabel*>(QStringLiteral("meshStatus"));
     ASSERT_NE(meshStatus, nullptr);
-    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("sphere_1442.off, 1442 "))) << meshStatus->text().toStdString();
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("sphere_1442.off · ")) &&
+                meshStatus->text().contains(QStringLiteral(" · 1442 vertices"))) << meshStatus->text().toStdString();
 
     window->openRecording(sPath);
     ASSERT_TRUE(waitIdle(window->recorderPanel()));
     ASSERT_TRUE(window->inPlayback());
-    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off, 3970 "))) << meshStatus->text().toStdString();
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off · ")) &&
+                meshStatus->text().contains(QStringLiteral(" · 3970 vertices"))) << meshStatus->text().toStdString();
     EXPECT_TRUE(meshStatus->toolTip().contains(QStringLiteral("stomach_3970.off"))) << meshStatus->toolTip().toStdString();
     window->advanceTicks(1);  // the status bar's own refresh keeps it
-    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off, 3970 "))) << meshStatus->text().toStdString();
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off · ")) &&
+                meshStatus->text().contains(QStringLiteral(" · 3970 vertices"))) << meshStatus->text().toStdString();
 
     window->backToLive();
-    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("sphere_1442.off, 1442 "))) << meshStatus->text().toStdString();
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("sphere_1442.off · ")) &&
+                meshStatus->text().contains(QStringLiteral(" · 1442 vertices"))) << meshStatus->text().toStdString();
     EXPECT_TRUE(meshStatus->toolTip().contains(QStringLiteral("sphere_1442.off"))) << meshStatus->toolTip().toStdString();
 }
 
@@ -507,15 +511,18 @@ TEST_F(RecorderDock, StatusBarFollowsAMeshSwitchInTheRecording) {
     ASSERT_TRUE(window->inPlayback()) << panel->playbackErrorText().toStdString();
     auto* meshStatus = window->findChild<QLabel*>(QStringLiteral("meshStatus"));
     ASSERT_NE(meshStatus, nullptr);
-    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off, 3970 "))) << meshStatus->text().toStdString();
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off · ")) &&
+                meshStatus->text().contains(QStringLiteral(" · 3970 vertices"))) << meshStatus->text().toStdString();
     ASSERT_TRUE(panel->seekTo(panel->timeline()->lastTick()));
     ASSERT_TRUE(waitIdle(panel));
     window->advanceTicks(1);
-    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("sphere_1442.off, 1442 "))) << meshStatus->text().toStdString();
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("sphere_1442.off · ")) &&
+                meshStatus->text().contains(QStringLiteral(" · 1442 vertices"))) << meshStatus->text().toStdString();
     ASSERT_TRUE(panel->seekTo(panel->timeline()->firstTick()));  // back: the first scene again
     ASSERT_TRUE(waitIdle(panel));
     window->advanceTicks(1);
-    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off, 3970 "))) << meshStatus->text().toStdString();
+    EXPECT_TRUE(meshStatus->text().startsWith(QStringLiteral("stomach_3970.off · ")) &&
+                meshStatus->text().contains(QStringLiteral(" · 3970 vertices"))) << meshStatus->text().toStdString();
 }
 
 namespace {
