@@ -18,9 +18,12 @@
 #include <QTabWidget>
 #include <QTimer>
 
+#include <sys/resource.h>
+
 #include <cstdio>
 #include <cstring>
 #include <new>
+#include <string>
 
 namespace {
 
@@ -29,6 +32,20 @@ constexpr int kScreenshotWidthPx = 1024;
 constexpr int kScreenshotHeightPx = 768;
 constexpr int kWindowWidthPx = 1280;
 constexpr int kWindowHeightPx = 860;
+/// The address space the window needs: it peaks at about 330 MiB offscreen and reserves more with
+/// OpenGL. Below this, Qt's own code would meet failed allocations it does not survive (it
+/// dereferences them), so the limit is refused up front (docs/reliability.md).
+constexpr rlim_t kMinAddressSpaceBytes = rlim_t(512) << 20;
+
+/// "" when the address-space limit (ulimit -v) leaves the window room, else the message.
+std::string addressSpaceProblem() {
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY || limit.rlim_cur >= kMinAddressSpaceBytes)
+        return {};
+    return "palpate: not enough memory to run: the address-space limit (ulimit -v) is " +
+           std::to_string(limit.rlim_cur >> 20) + " MiB, and the window needs at least " +
+           std::to_string(kMinAddressSpaceBytes >> 20) + " MiB\n";
+}
 
 /// Qt aborts when the default platform (xcb, wayland) has no display; offscreen always works.
 bool displayAvailable() {
@@ -63,6 +80,10 @@ QString deviceHelp() {
 int runGui(int argc, char** argv);
 
 int main(int argc, char** argv) {
+    if (const std::string problem = addressSpaceProblem(); !problem.empty()) {
+        std::fputs(problem.c_str(), stderr);
+        return 1;
+    }
     palpate::ignoreFileSizeSignal();  // a file-size limit: the recorder reports the write error
     palpate::exitOnThreadCreationFailure([] {
         for (QWidget* widget : QApplication::topLevelWidgets())
