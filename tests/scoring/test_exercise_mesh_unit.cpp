@@ -49,6 +49,8 @@ struct UnitCase {
     const char* unit;
 };
 
+void PrintTo(const UnitCase& c, std::ostream* out) { *out << c.exercise << " in " << c.unit; }
+
 class ExerciseMeshUnit : public ::testing::TestWithParam<UnitCase> {};
 
 TEST_P(ExerciseMeshUnit, OnTheMeshWrittenInTheUnitScoresAsOnTheMeshInMm) {
