@@ -1343,6 +1343,50 @@
         <source>trace.force_min_n: the band %1–%2 N lies between the forces of two turns of the wheel at path point %3: widen it.</source>
         <translation>trace.force_min_n: das Band %1–%2 N liegt an Pfadpunkt %3 zwischen den Kräften zweier Raststufen des Mausrads: verbreitern.</translation>
     </message>
+    <message>
+        <source>Mesh unit:</source>
+        <translation>Netzeinheit:</translation>
+    </message>
+    <message>
+        <source>millimetres (mm)</source>
+        <translation>Millimeter (mm)</translation>
+    </message>
+    <message>
+        <source>centimetres (cm)</source>
+        <translation>Zentimeter (cm)</translation>
+    </message>
+    <message>
+        <source>metres (m)</source>
+        <translation>Meter (m)</translation>
+    </message>
+    <message>
+        <source>inches (in)</source>
+        <translation>Zoll (in)</translation>
+    </message>
+    <message>
+        <source>scale…</source>
+        <translation>Skalierung…</translation>
+    </message>
+    <message>
+        <source>The unit of the mesh file&apos;s coordinates (mesh_unit): a mesh from another tool may be in metres, inches or centimetres; it is scaled to mm wherever it is loaded.</source>
+        <translation>Die Einheit der Koordinaten der Netzdatei (mesh_unit): Ein Netz aus einem anderen Werkzeug kann in Metern, Zoll oder Zentimetern vorliegen; es wird überall, wo es geladen wird, auf mm skaliert.</translation>
+    </message>
+    <message>
+        <source> mm per file unit</source>
+        <translation> mm je Dateieinheit</translation>
+    </message>
+    <message>
+        <source>How many millimetres one unit of the mesh file is (mesh_unit as a number).</source>
+        <translation>Wie viele Millimeter eine Einheit der Netzdatei ist (mesh_unit als Zahl).</translation>
+    </message>
+    <message>
+        <source>mesh unit</source>
+        <translation>Netzeinheit</translation>
+    </message>
+    <message>
+        <source>mesh_unit: the viewport shows %1 read in %2, this exercise reads it in %3: press Show this mesh to place points by clicking</source>
+        <translation>mesh_unit: Die Ansicht zeigt %1 in %2 gelesen, diese Übung liest es in %3: „Dieses Netz zeigen“ drücken, um Punkte per Klick zu setzen</translation>
+    </message>
 </context>
 <context>
     <name>palpate::FeelChart</name>

@@ -1343,6 +1343,50 @@
         <source>trace.force_min_n: the band %1–%2 N lies between the forces of two turns of the wheel at path point %3: widen it.</source>
         <translation>trace.force_min_n: jalur %1–%2 N terletak antara daya dua pusingan roda pada titik laluan %3: lebarkannya.</translation>
     </message>
+    <message>
+        <source>Mesh unit:</source>
+        <translation>Unit jejaring:</translation>
+    </message>
+    <message>
+        <source>millimetres (mm)</source>
+        <translation>milimeter (mm)</translation>
+    </message>
+    <message>
+        <source>centimetres (cm)</source>
+        <translation>sentimeter (cm)</translation>
+    </message>
+    <message>
+        <source>metres (m)</source>
+        <translation>meter (m)</translation>
+    </message>
+    <message>
+        <source>inches (in)</source>
+        <translation>inci (in)</translation>
+    </message>
+    <message>
+        <source>scale…</source>
+        <translation>skala…</translation>
+    </message>
+    <message>
+        <source>The unit of the mesh file&apos;s coordinates (mesh_unit): a mesh from another tool may be in metres, inches or centimetres; it is scaled to mm wherever it is loaded.</source>
+        <translation>Unit koordinat fail jejaring (mesh_unit): jejaring daripada alat lain mungkin dalam meter, inci atau sentimeter; ia diskalakan kepada mm di mana-mana ia dimuatkan.</translation>
+    </message>
+    <message>
+        <source> mm per file unit</source>
+        <translation> mm bagi setiap unit fail</translation>
+    </message>
+    <message>
+        <source>How many millimetres one unit of the mesh file is (mesh_unit as a number).</source>
+        <translation>Berapa milimeter satu unit fail jejaring (mesh_unit sebagai nombor).</translation>
+    </message>
+    <message>
+        <source>mesh unit</source>
+        <translation>unit jejaring</translation>
+    </message>
+    <message>
+        <source>mesh_unit: the viewport shows %1 read in %2, this exercise reads it in %3: press Show this mesh to place points by clicking</source>
+        <translation>mesh_unit: paparan menunjukkan %1 dibaca dalam %2, latihan ini membacanya dalam %3: tekan Tunjukkan jejaring ini untuk meletakkan titik dengan mengklik</translation>
+    </message>
 </context>
 <context>
     <name>palpate::FeelChart</name>

@@ -119,6 +119,23 @@ private:
     int mDecimals;
 };
 
+/// The unit combo's rows: the named units (engine/core/MeshUnit.h has their factors), then
+/// "scale…" (a factor of the exercise's own).
+const char* const kMeshUnitNames[] = {"mm", "cm", "m", "in"};
+constexpr int kScaleChoice = 4;
+constexpr int kMeshUnitChoices = 5;
+
+MeshUnit namedMeshUnit(int index) {
+    std::string ignored;
+    return parseMeshUnit(kMeshUnitNames[index], ignored).value_or(kMillimetres);
+}
+
+int meshUnitChoice(const MeshUnit& unit) {
+    for (int i = 0; i < kScaleChoice; ++i)
+        if (unit.name == kMeshUnitNames[i]) return i;
+    return kScaleChoice;
+}
+
 QDoubleSpinBox* doubleSpin(QWidget* parent, const char* objectName, double lo, double hi, int decimals, double step) {
     auto* spin = new QDoubleSpinBox(parent);
     spin->setObjectName(QLatin1String(objectName));
@@ -391,6 +408,22 @@ void ExerciseEditorPanel::buildUi() {
         layout->addWidget(mMeshStateLabel, 1);
         sceneForm->addRow(row);
     }
+    {
+        // The mesh file's unit: named units, or a factor typed beside "scale…".
+        auto* row = new QWidget(mSceneGroup);
+        auto* layout = new QHBoxLayout(row);
+        layout->setContentsMargins(0, 0, 0, 0);
+        layout->setSpacing(4);
+        mMeshUnitCombo = new QComboBox(row);
+        mMeshUnitCombo->setObjectName(QStringLiteral("meshUnitCombo"));
+        for (int i = 0; i < kMeshUnitChoices; ++i) mMeshUnitCombo->addItem(QString());
+        mMeshScaleSpin = doubleSpin(row, "meshScaleSpin", kMinMmPerUnit, kMaxMmPerUnit, 6, 0.1);
+        mMeshScaleSpin->setValue(1.0);
+        layout->addWidget(mMeshUnitCombo);
+        layout->addWidget(mMeshScaleSpin, 1);
+        layout->addStretch(0);
+        sceneForm->addRow(rowLabel(QT_TR_NOOP("Mesh unit:")), row);
+    }
     sceneForm->addRow(rowLabel(QT_TR_NOOP("Tissue preset:")),
                       pathRow(mPresetCombo, mPresetBrowseButton, "tissuePresetCombo", "tissuePresetBrowseButton"));
 
@@ -523,7 +556,7 @@ void ExerciseEditorPanel::buildUi() {
         {mTimeLimitSpin, kTimeLimit},         {mDisplacementSpin, kDisplacementLimit}, {mExcessiveSpin, kExcessiveForce},
         {mLumpRadiusSpin, kLumpRadius},       {mLumpStiffnessSpin, kLumpStiffness},    {mTraceMinSpin, kTraceForceMin},
         {mTraceMaxSpin, kTraceForceMax},      {mTraceToleranceSpin, kTraceTolerance},  {mNeedsErrorSpin, kNeedsError},
-        {mNeedsBudgetSpin, kNeedsBudget}};
+        {mNeedsBudgetSpin, kNeedsBudget},     {mMeshScaleSpin, kMeshScale}};
     for (const auto& [spin, field] : spins) {
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, field = field] { onFieldEdited(field); });
         // Leaving the field ends its step: a later edit of it is a step of its own.
@@ -543,6 +576,7 @@ void ExerciseEditorPanel::buildUi() {
         connect(combo->lineEdit(), &QLineEdit::editingFinished, this, [this, combo, mesh] { commitPath(mesh, combo->currentText()); });
         connect(mesh ? mMeshBrowseButton : mPresetBrowseButton, &QPushButton::clicked, this, [this, mesh] { browsePath(mesh); });
     }
+    connect(mMeshUnitCombo, &QComboBox::activated, this, &ExerciseEditorPanel::commitMeshUnit);
     connect(mShowMeshButton, &QPushButton::clicked, this, [this] {
         const QString path = resolved(mExercise, mExercise.meshPath);
         if (path.isEmpty()) showMessage(tr("The mesh '%1' cannot be found.").arg(qs(mExercise.meshPath)), true);
@@ -740,6 +774,13 @@ void ExerciseEditorPanel::retranslateUi() {
                               "file, or an absolute path. Points are vertices of this file."));
     mMeshBrowseButton->setText(tr("Browse…"));
     mMeshBrowseButton->setToolTip(tr("Choose a mesh file (OBJ, OFF, PLY, STL, OM)."));
+    const QString unitTexts[kMeshUnitChoices] = {tr("millimetres (mm)"), tr("centimetres (cm)"), tr("metres (m)"),
+                                                 tr("inches (in)"), tr("scale…")};
+    for (int i = 0; i < kMeshUnitChoices; ++i) mMeshUnitCombo->setItemText(i, unitTexts[i]);
+    mMeshUnitCombo->setToolTip(tr("The unit of the mesh file's coordinates (mesh_unit): a mesh from another tool may be "
+                                  "in metres, inches or centimetres; it is scaled to mm wherever it is loaded."));
+    mMeshScaleSpin->setSuffix(tr(" mm per file unit"));
+    mMeshScaleSpin->setToolTip(tr("How many millimetres one unit of the mesh file is (mesh_unit as a number)."));
     mShowMeshButton->setText(tr("Show this mesh"));
     mShowMeshButton->setToolTip(tr("Draw the exercise's mesh in the viewport, so that points can be placed by clicking."));
     mPresetCombo->setToolTip(tr("The tissue preset file (tissue_preset): how the tissue feels."));
@@ -883,12 +924,13 @@ QString ExerciseEditorPanel::storablePath(const Exercise& exercise, const QStrin
 const TissueMesh* ExerciseEditorPanel::checkMesh(const QString& meshPath) {
     if (drawnMeshMatches()) return mDrawnMesh.get();
     if (meshPath.isEmpty()) return nullptr;
-    if (meshPath != mCheckMeshPath) {
-        // Loaded once per path: the checks run after every edit.
-        mCheckMeshPath = meshPath;
+    const QString key = meshPath + QLatin1Char('\n') + qs(mExercise.meshUnit.text());
+    if (key != mCheckMeshPath) {
+        // Loaded once per path and unit: the checks run after every edit.
+        mCheckMeshPath = key;
         mCheckMesh.reset();
         mCheckMeshError.clear();
-        auto loaded = TissueMesh::load(ss(meshPath));
+        auto loaded = TissueMesh::load(ss(meshPath), mExercise.meshUnit);
         if (loaded.mesh) mCheckMesh = std::make_shared<const TissueMesh>(std::move(*loaded.mesh));
         else mCheckMeshError = qs(loaded.error());
     }
@@ -904,6 +946,8 @@ void ExerciseEditorPanel::setDrawnMesh(std::shared_ptr<const TissueMesh> mesh, c
 
 bool ExerciseEditorPanel::drawnMeshMatches() const {
     if (!mDrawnMesh || mDrawnMeshPath.isEmpty()) return false;
+    // The same file read in another unit is another size: its points in mm would not be the exercise's.
+    if (!(mDrawnMesh->report().unit == mExercise.meshUnit)) return false;
     const QString mine = QFileInfo(resolved(mExercise, mExercise.meshPath)).canonicalFilePath();
     return !mine.isEmpty() && mine == QFileInfo(mDrawnMeshPath).canonicalFilePath();
 }
@@ -1066,6 +1110,10 @@ void ExerciseEditorPanel::showExercise(const Exercise& exercise) {
         if (mDescriptionEdit->toPlainText() != qs(e.description)) mDescriptionEdit->setPlainText(qs(e.description));
         if (mMeshCombo->currentText() != qs(e.meshPath)) mMeshCombo->setEditText(qs(e.meshPath));
         if (mPresetCombo->currentText() != qs(e.tissuePresetPath)) mPresetCombo->setEditText(qs(e.tissuePresetPath));
+        const int unitIndex = meshUnitChoice(e.meshUnit);
+        mMeshUnitCombo->setCurrentIndex(unitIndex);
+        setSpin(mMeshScaleSpin, e.meshUnit.mmPerUnit);
+        mMeshScaleSpin->setVisible(unitIndex == kScaleChoice);
         setSpin(mTimeLimitSpin, e.timeLimitS);
         setSpin(mDisplacementSpin, e.displacementLimitMm);
         setSpin(mExcessiveSpin, e.excessiveForceN);
@@ -1208,9 +1256,22 @@ void ExerciseEditorPanel::onFieldEdited(int field) {
             e.needs->budgetUs = mNeedsBudgetSpin->value();
             what = tr("tick budget");
             break;
+        case kMeshScale:
+            e.meshUnit = MeshUnit{"", mMeshScaleSpin->value()};
+            what = tr("mesh unit");
+            break;
         case kFieldCount: return;
     }
     pushEdit(e, tr("Change %1").arg(what), field);
+}
+
+void ExerciseEditorPanel::commitMeshUnit(int index) {
+    if (mShowing || index < 0 || index >= kMeshUnitChoices) return;
+    Exercise e = mExercise;
+    // "scale…" starts from the factor the exercise has (10 for cm), for the user to change.
+    e.meshUnit = index == kScaleChoice ? MeshUnit{"", mExercise.meshUnit.mmPerUnit} : namedMeshUnit(index);
+    mMeshScaleSpin->setVisible(index == kScaleChoice);
+    pushEdit(e, tr("Change %1").arg(tr("mesh unit")), -1);
 }
 
 void ExerciseEditorPanel::onTargetCellChanged(int row, int column) {
@@ -1483,9 +1544,17 @@ void ExerciseEditorPanel::refresh() {
     mProblems = blocking;
     if (!meshFile.isEmpty() && !drawnMeshMatches()) {
         const QString drawn = mDrawnMesh ? QFileInfo(mDrawnMeshPath).fileName() : tr("no mesh");
-        mProblems << tr("mesh: the viewport shows %1, not this exercise's %2: press Show this mesh to place points by "
-                        "clicking")
-                         .arg(drawn, QFileInfo(meshFile).fileName());
+        const bool otherUnit = mDrawnMesh && QFileInfo(mDrawnMeshPath).canonicalFilePath() ==
+                                                 QFileInfo(meshFile).canonicalFilePath();
+        if (otherUnit)
+            mProblems << tr("mesh_unit: the viewport shows %1 read in %2, this exercise reads it in %3: press Show "
+                            "this mesh to place points by clicking")
+                             .arg(drawn, qs(mDrawnMesh->report().unit.description()),
+                                  qs(mExercise.meshUnit.description()));
+        else
+            mProblems << tr("mesh: the viewport shows %1, not this exercise's %2: press Show this mesh to place points "
+                            "by clicking")
+                             .arg(drawn, QFileInfo(meshFile).fileName());
     }
 
     // The markers, on the drawn mesh only (picks and markers are in its numbering).
@@ -1530,6 +1599,8 @@ void ExerciseEditorPanel::refresh() {
         const std::pair<QWidget*, const char*> fields[] = {
             {mNameEdit, "name"},
             {mMeshCombo, "mesh"},
+            {mMeshUnitCombo, "mesh_unit"},
+            {mMeshScaleSpin, "mesh_unit"},
             {mPresetCombo, "tissue_preset"},
             {mTimeLimitSpin, "time_limit_s"},
             {mDisplacementSpin, "damage.displacement_limit_mm"},
@@ -1597,8 +1668,9 @@ const std::vector<double>* ExerciseEditorPanel::touchForces(const QString& meshF
     const QString presetFile = resolved(mExercise, mExercise.tissuePresetPath);
     if (meshFile.isEmpty() || presetFile.isEmpty()) return nullptr;  // a problem says so already
     const auto stamp = [](const QString& file) { return QFileInfo(file).lastModified().toString(Qt::ISODateWithMs); };
-    const QString key = meshFile + QLatin1Char('\n') + stamp(meshFile) + QLatin1Char('\n') + presetFile +
-                        QLatin1Char('\n') + stamp(presetFile);
+    const QString key = meshFile + QLatin1Char('\n') + stamp(meshFile) + QLatin1Char('\n') +
+                        qs(mExercise.meshUnit.text()) + QLatin1Char('\n') + presetFile + QLatin1Char('\n') +
+                        stamp(presetFile);
     if (key != mProbeKey) {
         mProbeKey = key;
         mProbe.reset();

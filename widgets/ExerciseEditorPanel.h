@@ -73,7 +73,7 @@ public:
     /// and placement are only given while it is the exercise's mesh (resolved paths equal);
     /// problems() says so when it is not.
     void setDrawnMesh(std::shared_ptr<const TissueMesh> mesh, const QString& path);
-    /// True when the drawn mesh is the exercise's mesh.
+    /// True when the drawn mesh is the exercise's mesh, read in the exercise's unit.
     bool drawnMeshMatches() const;
 
     /// A new exercise of `type` with sensible defaults on the drawn mesh (else the default
@@ -179,6 +179,7 @@ private:
         kTraceTolerance,
         kNeedsError,
         kNeedsBudget,
+        kMeshScale,
         kFieldCount
     };
 
@@ -194,6 +195,8 @@ private:
     void onTargetCellChanged(int row, int column);
     void onRubricCellChanged(int row, int column);
     void commitPath(bool mesh, const QString& text);
+    /// The unit combo's choice: 0..3 a named unit, 4 "scale…" (the spin box's factor).
+    void commitMeshUnit(int index);
     void browsePath(bool mesh);
     void changeType(ExerciseType type);
     void removeSelected();
@@ -231,7 +234,7 @@ private:
     std::vector<std::pair<QLabel*, const char*>> mRowLabels;
     /// The exercise's mesh when the viewport draws another one: its vertices are still checked.
     std::shared_ptr<const TissueMesh> mCheckMesh;
-    QString mCheckMeshPath;
+    QString mCheckMeshPath;  ///< its file and, after a newline, its unit: either changed reloads it
     QString mCheckMeshError;
     /// The force probe of the exercise's mesh and tissue, and what it found per vertex.
     std::unique_ptr<TouchForceProbe> mProbe;
@@ -291,6 +294,9 @@ private:
     QPushButton* mMeshBrowseButton = nullptr;
     QPushButton* mShowMeshButton = nullptr;
     QLabel* mMeshStateLabel = nullptr;
+    /// "mesh_unit" (docs/meshes.md, "Units"): mm, cm, m, in, or "scale…" with mm per file unit.
+    QComboBox* mMeshUnitCombo = nullptr;
+    QDoubleSpinBox* mMeshScaleSpin = nullptr;
     QComboBox* mPresetCombo = nullptr;
     QPushButton* mPresetBrowseButton = nullptr;
     QDoubleSpinBox* mTimeLimitSpin = nullptr;

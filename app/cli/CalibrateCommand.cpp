@@ -3,6 +3,7 @@
 // tissue preset written with them.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/MeshOption.h"
 #include "app/common/DefaultScene.h"
 #include "app/cli/ToolContactOptions.h"
 #include "engine/core/Octree.h"
@@ -20,7 +21,7 @@
 namespace palpate::cli {
 
 int calibrateCommand(const std::vector<std::string>& words) {
-    std::vector<std::string> options{"mesh", "rings", "vertex", "out", "name", "description", "source"};
+    std::vector<std::string> options{"mesh", kMeshUnitOption, "rings", "vertex", "out", "name", "description", "source"};
     for (const std::string& o : toolContactOptionNames()) options.push_back(o);
     const Args args(words, {"json", "fem"}, options);
     if (!args.ok()) {
@@ -62,7 +63,13 @@ int calibrateCommand(const std::vector<std::string>& words) {
         preset.params.ringCount = int(*n);
     }
     const std::string meshPath = args.option("mesh").value_or(findResource(kDefaultMesh));
-    auto loaded = TissueMesh::load(meshPath);
+    std::string unitError;
+    const auto meshUnit = meshUnitFromArgs(args, unitError);
+    if (!meshUnit) {
+        std::cerr << "palpate-cli calibrate: " << unitError << "\n";
+        return 2;
+    }
+    auto loaded = loadMeshFile("palpate-cli calibrate: ", meshPath, *meshUnit);
     if (!loaded.mesh) {
         std::cerr << "palpate-cli calibrate: " << loaded.error() << "\n";
         return 1;

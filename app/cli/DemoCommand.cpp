@@ -3,6 +3,7 @@
 // happened. What the run command does when there is no display.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/MeshOption.h"
 #include "app/common/DefaultScene.h"
 #include "device/open/DeviceUri.h"
 #include "device/SimulatedDevice.h"
@@ -21,7 +22,7 @@
 namespace palpate::cli {
 
 int demoCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"mesh", "method", "model", "device"});
+    Args args(words, {"json"}, {"mesh", "method", "model", "device", kMeshUnitOption});
     if (!args.ok()) {
         std::cerr << "demo: " << args.error() << "\n";
         return 2;
@@ -57,7 +58,13 @@ int demoCommand(const std::vector<std::string>& words) {
         model = *def;
         model.contact = contact;
     }
-    auto loaded = TissueMesh::load(meshPath);
+    std::string unitError;
+    const auto meshUnit = meshUnitFromArgs(args, unitError);
+    if (!meshUnit) {
+        std::cerr << "demo: " << unitError << "\n";
+        return 2;
+    }
+    auto loaded = loadMeshFile("demo: ", meshPath, *meshUnit);
     if (!loaded.mesh) {
         std::cerr << loaded.report.text();
         return 1;

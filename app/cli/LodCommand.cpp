@@ -4,6 +4,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/common/DefaultScene.h"
+#include "app/cli/MeshOption.h"
 #include "app/cli/ToolContactOptions.h"
 #include "engine/scene/TissuePreset.h"
 #include "engine/lod/LevelCache.h"
@@ -26,12 +27,15 @@ using Json = nlohmann::ordered_json;
 
 void lodUsage(std::ostream& out) {
     out << "usage:\n"
-           "  palpate-cli lod levels --mesh FILE [--json] [--no-cache] [--min-vertices N] [--max-levels N] [--ratio R]\n"
-           "  palpate-cli lod plan (--mesh FILE | --exercise FILE) [--error E] [--budget-us T] [--json] [--quick]\n"
+           "  palpate-cli lod levels --mesh FILE [--mesh-unit U] [--json] [--no-cache] [--min-vertices N] [--max-levels N]\n"
+           "                         [--ratio R]\n"
+           "  palpate-cli lod plan (--mesh FILE [--mesh-unit U] | --exercise FILE) [--error E] [--budget-us T] [--json]\n"
+           "                       [--quick]\n"
            "                       [--rings N,..] [--repeats N] [--min-vertices N] [--max-levels N] [--ratio R]\n"
            "                       [--no-cache] [TISSUE]\n"
            "      E: displacement error allowed (RMS / peak, 0.1 = 10 %); T: tick budget in microseconds.\n"
-           "      Without --error/--budget-us the exercise's, then the preset's, \"needs\" are used.\n";
+           "      Without --error/--budget-us the exercise's, then the preset's, \"needs\" are used.\n"
+           "      U: the mesh file's unit: mm (default), cm, m, in, or mm per file unit (docs/meshes.md).\n";
 }
 
 /// --min-vertices, --max-levels, --ratio into `options`; "" or the problem naming the option.
@@ -62,9 +66,10 @@ void progressLine(double fraction, const std::string& stage) {
 
 /// Loads the mesh and its levels (cache or generation), printing where they came from on stderr.
 /// Returns an exit code (0: go on).
-int loadLevels(const std::string& command, const std::string& meshPath, const LevelDef& options, bool useCache,
+int loadLevels(const std::string& command, const std::string& meshPath, const MeshUnit& unit,
+               const MeshUnitSource& unitSource, const LevelDef& options, bool useCache,
                std::optional<TissueMesh>& mesh, LevelCacheResult& levels) {
-    auto loaded = TissueMesh::load(meshPath);
+    auto loaded = loadMeshFile("palpate-cli lod " + command + ": ", meshPath, unit, unitSource);
     if (!loaded.mesh) {
         std::cerr << "palpate-cli lod " << command << ": " << loaded.error() << "\n";
         return 1;
@@ -113,9 +118,16 @@ int levelsCommand(const Args& args) {
         std::cerr << "palpate-cli lod levels: " << e << "\n";
         return 2;
     }
+    std::string unitError;
+    const auto meshUnit = meshUnitFromArgs(args, unitError);
+    if (!meshUnit) {
+        std::cerr << "palpate-cli lod levels: " << unitError << "\n";
+        return 2;
+    }
     std::optional<TissueMesh> mesh;
     LevelCacheResult result;
-    if (const int rc = loadLevels("levels", *meshPath, options, !args.flag("no-cache"), mesh, result)) return rc;
+    if (const int rc = loadLevels("levels", *meshPath, *meshUnit, {}, options, !args.flag("no-cache"), mesh, result))
+        return rc;
     const MeshLevels& levels = result.levels;
 
     bool allGood = true;
@@ -177,6 +189,18 @@ int planCommand(const Args& args) {
     std::optional<LodNeeds> needs;
     std::string needsSource;
     std::optional<std::string> meshPath = args.option("mesh");
+    // --mesh-unit goes with --mesh; the exercise's own mesh is in the exercise's unit.
+    std::string unitError;
+    std::optional<MeshUnit> meshUnit = meshUnitFromArgs(args, unitError);
+    if (!meshUnit) {
+        std::cerr << me << unitError << "\n";
+        return 2;
+    }
+    MeshUnitSource unitSource;
+    if (args.option(kMeshUnitOption) && !meshPath) {
+        std::cerr << me << "--mesh-unit goes with --mesh (the exercise's \"mesh_unit\" sets its mesh's unit)\n";
+        return 2;
+    }
     if (const auto path = args.option("exercise")) {
         const ExerciseLoadResult ex = loadExercise(*path);
         if (!ex.exercise) {
@@ -194,6 +218,8 @@ int planCommand(const Args& args) {
                 return 2;
             }
             meshPath = resolved;
+            meshUnit = ex.exercise->meshUnit;
+            unitSource.exercisePath = *path;
         }
     }
     if (const auto path = args.option("preset"); path && !needs) {
@@ -278,7 +304,9 @@ int planCommand(const Args& args) {
 
     std::optional<TissueMesh> mesh;
     LevelCacheResult levels;
-    if (const int rc = loadLevels("plan", *meshPath, levelOptions, !args.flag("no-cache"), mesh, levels)) return rc;
+    if (const int rc = loadLevels("plan", *meshPath, *meshUnit, unitSource, levelOptions, !args.flag("no-cache"), mesh,
+                                  levels))
+        return rc;
     std::cerr << "plan: E = " << def.contact.material.youngsModulusNPerMm2 * 1000.0 << " kPa, nu = "
               << def.contact.material.poissonRatio << ", tool radius " << def.contact.toolRadiusMm << " mm ("
               << choice.source << "); needs from " << needsSource << "\n";
@@ -340,7 +368,7 @@ int lodCommand(const std::vector<std::string>& words) {
     const std::string sub = words.front();
     const std::vector<std::string> rest(words.begin() + 1, words.end());
     if (sub == "levels") {
-        const Args args(rest, {"json", "no-cache"}, {"mesh", "min-vertices", "max-levels", "ratio"});
+        const Args args(rest, {"json", "no-cache"}, {"mesh", kMeshUnitOption, "min-vertices", "max-levels", "ratio"});
         if (!args.ok()) {
             std::cerr << "palpate-cli lod levels: " << args.error() << "\n";
             return 2;
@@ -348,7 +376,7 @@ int lodCommand(const std::vector<std::string>& words) {
         return levelsCommand(args);
     }
     if (sub == "plan") {
-        std::vector<std::string> options{"mesh", "exercise", "error", "budget-us", "rings", "repeats",
+        std::vector<std::string> options{"mesh", kMeshUnitOption, "exercise", "error", "budget-us", "rings", "repeats",
                                          "min-vertices", "max-levels", "ratio"};
         for (const std::string& o : toolContactOptionNames()) options.push_back(o);
         const Args args(rest, {"json", "quick", "no-cache"}, options);

@@ -2,6 +2,7 @@
 // observer thread reading snapshots the way the GUI does; prints the loop's timing.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/MeshOption.h"
 #include "app/common/DefaultScene.h"
 #include "device/open/DeviceUri.h"
 #include "engine/loop/HapticLoop.h"
@@ -20,7 +21,8 @@
 namespace palpate::cli {
 
 int loopCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json", "no-fifo"}, {"seconds", "rate", "observer-hz", "device", "mesh", "spin-fraction", "csv"});
+    Args args(words, {"json", "no-fifo"}, {"seconds", "rate", "observer-hz", "device", "mesh", "spin-fraction", "csv",
+                                                kMeshUnitOption});
     if (!args.ok()) {
         std::cerr << "loop: " << args.error() << "\n";
         return 2;
@@ -47,7 +49,13 @@ int loopCommand(const std::vector<std::string>& words) {
     }
 
     const std::string meshPath = args.option("mesh").value_or(findResource(kDefaultMesh));
-    auto loaded = TissueMesh::load(meshPath);
+    std::string unitError;
+    const auto meshUnit = meshUnitFromArgs(args, unitError);
+    if (!meshUnit) {
+        std::cerr << "loop: " << unitError << "\n";
+        return 2;
+    }
+    auto loaded = loadMeshFile("loop: ", meshPath, *meshUnit);
     if (!loaded.mesh) {
         std::cerr << loaded.report.text();
         return 1;

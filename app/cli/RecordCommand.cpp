@@ -2,6 +2,7 @@
 // is intact (and what a damaged one still holds), its ticks as CSV, and a bit-exact replay check.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/MeshOption.h"
 #include "engine/replay/RecordingPlayer.h"
 #include "engine/record/RecordingReader.h"
 
@@ -77,6 +78,7 @@ nlohmann::json summaryJson(const RecordingReader& reader) {
         j["start_utc"] = isoTime(h.startUnixUs);
         j["rate_hz"] = h.rateHz;
         j["mesh"] = h.scene.meshPath;
+        if (!h.scene.meshUnit.isMillimetres()) j["mesh_unit"] = h.scene.meshUnit.text();
         j["mesh_hash"] = hex(h.scene.meshHash);
         j["method"] = std::string(methodName(h.scene.method));
         j["device"] = h.device.uri;
@@ -102,7 +104,9 @@ int info(const RecordingReader& reader, bool json) {
     if (s.headerOk) {
         const RecordingHeader& h = reader.header();
         std::cout << "  recorded " << isoTime(h.startUnixUs) << " by Palpate " << h.engineVersion << "\n"
-                  << "  mesh " << h.scene.meshPath << " (" << h.scene.vertexCount << " vertices, hash "
+                  << "  mesh " << h.scene.meshPath
+                  << (h.scene.meshUnit.isMillimetres() ? std::string() : " in " + h.scene.meshUnit.description())
+                  << " (" << h.scene.vertexCount << " vertices, hash "
                   << hex(h.scene.meshHash) << "), model " << methodName(h.scene.method) << "\n"
                   << "  device " << h.device.uri << " (" << h.device.spec.name << ", max " << h.device.spec.maxForceN
                   << " N), " << h.rateHz << " Hz\n";
@@ -206,9 +210,11 @@ int exportCsv(const RecordingReader& reader, const std::optional<std::string>& o
     return 0;
 }
 
-int replay(const RecordingReader& reader, const std::optional<std::string>& meshPath, bool json) {
+int replay(const RecordingReader& reader, const std::optional<std::string>& meshPath,
+           const std::optional<MeshUnit>& meshUnit, bool json) {
     ReplayDef options;
     if (meshPath) options.meshPath = *meshPath;
+    options.meshUnit = meshUnit;
     std::string error;
     const ReplayStatus s = replayRecording(reader, error, options);
     const bool match = error.empty() && !s.mismatch && s.hashMismatches == 0 && s.ticksReplayed > 0;
@@ -252,7 +258,7 @@ int replay(const RecordingReader& reader, const std::optional<std::string>& mesh
 }  // namespace
 
 int recordCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"out", "mesh"});
+    Args args(words, {"json"}, {"out", "mesh", kMeshUnitOption});
     if (!args.ok()) {
         std::cerr << "record: " << args.error() << "\n";
         return 2;
@@ -277,6 +283,20 @@ int recordCommand(const std::vector<std::string>& words) {
             return 2;
         }
     }
+    // --mesh-unit: the unit of the --mesh file, when it is not the recorded one's.
+    std::optional<MeshUnit> meshUnit;
+    if (args.option(kMeshUnitOption)) {
+        if (action != "replay" || !args.option("mesh")) {
+            std::cerr << "record: --mesh-unit is for replay with --mesh (the recording says its mesh's unit)\n";
+            return 2;
+        }
+        std::string unitError;
+        meshUnit = meshUnitFromArgs(args, unitError);
+        if (!meshUnit) {
+            std::cerr << "record replay: " << unitError << "\n";
+            return 2;
+        }
+    }
     const RecordingReader reader = RecordingReader::open(pos[1]);
     if (!reader.fileError().empty()) {
         std::cerr << "record " << action << ": " << reader.fileError() << "\n";
@@ -293,7 +313,7 @@ int recordCommand(const std::vector<std::string>& words) {
     if (action == "info") return info(reader, args.flag("json"));
     if (action == "verify") return verify(reader, args.flag("json"));
     if (action == "export-csv") return exportCsv(reader, args.option("out"));
-    return replay(reader, args.option("mesh"), args.flag("json"));
+    return replay(reader, args.option("mesh"), meshUnit, args.flag("json"));
 }
 
 }  // namespace palpate::cli

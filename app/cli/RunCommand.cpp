@@ -4,6 +4,7 @@
 #include "app/cli/Commands.h"
 #include "app/common/DefaultScene.h"
 #include "app/cli/ExerciseRun.h"
+#include "app/cli/MeshOption.h"
 #include "device/open/DeviceUri.h"
 #include "engine/loop/HapticLoop.h"
 #include "engine/core/SceneTarget.h"
@@ -32,7 +33,7 @@ extern "C" void onInterrupt(int) { gInterrupted.store(true); }
 int runCommand(const std::vector<std::string>& words) {
     Args args(words, {"json", "no-fifo", "overwrite"},
               {"mesh", "device", "seconds", "record", "rate", "method", "model", "preset", "note", "exercise",
-               "mark-at"});
+               "mark-at", kMeshUnitOption});
     if (!args.ok()) {
         std::cerr << "run: " << args.error() << "\n";
         return 2;
@@ -45,8 +46,9 @@ int runCommand(const std::vector<std::string>& words) {
     // the exercise in the note and scored live (ExerciseRun.h, docs/scoring.md).
     std::unique_ptr<ExerciseRun> exerciseRun;
     if (auto path = args.option("exercise")) {
-        if (args.option("mesh") || args.option("preset")) {
-            std::cerr << "run: --exercise sets the mesh and the tissue preset; drop --mesh and --preset\n";
+        if (args.option("mesh") || args.option("preset") || args.option(kMeshUnitOption)) {
+            std::cerr << "run: --exercise sets the mesh, its unit and the tissue preset; drop --mesh, --mesh-unit "
+                         "and --preset\n";
             return 2;
         }
         std::string problem;
@@ -123,7 +125,15 @@ int runCommand(const std::vector<std::string>& words) {
     }
     std::error_code ec;
     if (const auto absolute = std::filesystem::absolute(meshPath, ec); !ec) meshPath = absolute.string();
-    auto loaded = TissueMesh::load(meshPath);
+    // The exercise's mesh in the exercise's unit (the one its targets were placed on).
+    std::string unitError;
+    const std::optional<MeshUnit> meshUnit = exerciseRun ? exerciseRun->exercise().meshUnit : meshUnitFromArgs(args, unitError);
+    if (!meshUnit) {
+        std::cerr << "run: " << unitError << "\n";
+        return 2;
+    }
+    auto loaded = loadMeshFile("run: ", meshPath, *meshUnit,
+                               MeshUnitSource{exerciseRun ? *args.option("exercise") : std::string()});
     if (!loaded.mesh) {
         std::cerr << loaded.report.text();
         return 1;
@@ -248,6 +258,7 @@ int runCommand(const std::vector<std::string>& words) {
                          {"sched_fifo", r.counters.schedFifo},
                          {"determinism_hash", r.determinismHash},
                          {"interrupted", gInterrupted.load()}};
+        if (!meshUnit->isMillimetres()) j["mesh_unit"] = meshUnit->text();
         if (session)
             j["recording"] = {{"path", *recordPath},
                               {"ticks", stats.ticks},

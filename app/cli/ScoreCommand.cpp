@@ -4,6 +4,7 @@
 // printable report the GUI exports, through the same app/report code.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/MeshOption.h"
 #include "app/common/DefaultScene.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
@@ -17,7 +18,7 @@
 namespace palpate::cli {
 
 int scoreCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"exercise", "recording", "mesh", "pdf", "trainee"});
+    Args args(words, {"json"}, {"exercise", "recording", "mesh", kMeshUnitOption, "pdf", "trainee"});
     if (!args.ok()) {
         std::cerr << "score: " << args.error() << "\n";
         return 2;
@@ -66,6 +67,19 @@ int scoreCommand(const std::vector<std::string>& words) {
     ReplayScorerDef options;
     options.findResource = findResource;
     options.meshPath = args.option("mesh").value_or("");
+    // --mesh-unit: the unit of the --mesh file, when it is not the recorded one's.
+    if (args.option(kMeshUnitOption)) {
+        if (!args.option("mesh")) {
+            std::cerr << "score: --mesh-unit goes with --mesh (the recording says its mesh's unit)\n";
+            return 2;
+        }
+        std::string unitError;
+        options.meshUnit = meshUnitFromArgs(args, unitError);
+        if (!options.meshUnit) {
+            std::cerr << "score: " << unitError << "\n";
+            return 2;
+        }
+    }
     ScoreReport report;
 #ifdef PALPATE_HAVE_CHARTS
     if (pdf) {

@@ -144,6 +144,7 @@ std::vector<std::string> validateExercise(const Exercise& e) {
     Checker c(errors);
     if (e.name.empty()) c.error("name", "must not be empty");
     if (e.meshPath.empty()) c.error("mesh", "must name a mesh file");
+    c.range("mesh_unit", e.meshUnit.mmPerUnit, kMinMmPerUnit, kMaxMmPerUnit);
     if (e.tissuePresetPath.empty()) c.error("tissue_preset", "must name a tissue preset file");
     c.range("time_limit_s", e.timeLimitS, 0.0, 3600.0, true);
     c.range("damage.displacement_limit_mm", e.displacementLimitMm, 0.0, 1000.0, true);

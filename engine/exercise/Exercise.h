@@ -5,6 +5,7 @@
 // and the force in a band. Stored as versioned JSON (ExerciseFile.h); every key is in
 // docs/scoring.md.
 
+#include "engine/core/MeshUnit.h"
 #include "engine/lod/LodNeeds.h"
 #include "engine/exercise/Metric.h"
 #include "engine/exercise/Rubric.h"
@@ -66,6 +67,9 @@ struct Exercise {
     std::string description;
     ExerciseType type = ExerciseType::PressTargets;
     std::string meshPath;           ///< as written: absolute, relative to the file, or to resources/
+    /// "mesh_unit": the unit of the mesh file's coordinates (docs/meshes.md, "Units"); the mesh is
+    /// scaled to mm by it wherever it is loaded. Absent in a file: mm.
+    MeshUnit meshUnit;
     std::string tissuePresetPath;   ///< the same
     double timeLimitS = 60.0;       ///< ticks after it are not scored
     double displacementLimitMm = 10.0;  ///< tissue displaced further than this counts as damage

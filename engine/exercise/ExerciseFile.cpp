@@ -38,6 +38,25 @@ void readSurfacePoint(JsonReader& r, const Json& j, const std::string& path, Sur
     out.pointMm = glm::vec3(float(p[0].get<double>()), float(p[1].get<double>()), float(p[2].get<double>()));
 }
 
+/// "mesh_unit": a unit's name ("cm") or a number of mm per file unit (2.5), as parseMeshUnit
+/// takes them (docs/meshes.md, "Units").
+void readMeshUnit(JsonReader& r, const Json& v, MeshUnit& out) {
+    if (!v.is_string() && !v.is_number()) {
+        r.error("mesh_unit", "must be mm, cm, m, in or a number of mm per file unit");
+        return;
+    }
+    std::string problem;
+    // A number's own spelling (dump() round-trips a double), so that the factor read is the one written.
+    if (const auto unit = parseMeshUnit(v.is_string() ? v.get<std::string>() : v.dump(), problem)) out = *unit;
+    else r.error("mesh_unit", problem);
+}
+
+/// The file's "mesh_unit" value: the name, or the factor for a unit without one.
+Json meshUnitJson(const MeshUnit& unit) {
+    if (!unit.name.empty()) return unit.name;
+    return unit.mmPerUnit;
+}
+
 Json pointJson(const SurfacePoint& p) {
     Json j = Json::object();
     if (p.vertex) j["vertex"] = *p.vertex;
@@ -56,7 +75,7 @@ ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::strin
     if (!parsed) return result;
     const Json& j = *parsed;
     if (!r.object(j, "",
-                  {"format", "version", "name", "description", "type", "mesh", "tissue_preset", "time_limit_s",
+                  {"format", "version", "name", "description", "type", "mesh", "mesh_unit", "tissue_preset", "time_limit_s",
                    "rubric", "press_targets", "find_lump", "trace", "damage", "force", "needs"}))
         return result;
 
@@ -85,6 +104,7 @@ ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::strin
         }
     }
     r.text(j, "", "mesh", e.meshPath, true);
+    if (j.contains("mesh_unit")) readMeshUnit(r, j.at("mesh_unit"), e.meshUnit);
     r.text(j, "", "tissue_preset", e.tissuePresetPath, true);
     r.number(j, "", "time_limit_s", e.timeLimitS, true);
 
@@ -244,11 +264,13 @@ std::string exerciseToJson(const Exercise& e, int indent) {
            {"name", e.name},
            {"description", e.description},
            {"type", std::string(exerciseTypeName(e.type))},
-           {"mesh", e.meshPath},
-           {"tissue_preset", e.tissuePresetPath},
-           {"time_limit_s", e.timeLimitS},
-           {"damage", {{"displacement_limit_mm", e.displacementLimitMm}}},
-           {"force", {{"excessive_n", e.excessiveForceN}}}};
+           {"mesh", e.meshPath}};
+    // Only when not mm: a file written before units existed reads and writes back byte for byte.
+    if (!e.meshUnit.isMillimetres()) j["mesh_unit"] = meshUnitJson(e.meshUnit);
+    j["tissue_preset"] = e.tissuePresetPath;
+    j["time_limit_s"] = e.timeLimitS;
+    j["damage"] = {{"displacement_limit_mm", e.displacementLimitMm}};
+    j["force"] = {{"excessive_n", e.excessiveForceN}};
     switch (e.type) {
         case ExerciseType::PressTargets: {
             Json targets = Json::array();

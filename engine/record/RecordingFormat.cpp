@@ -110,6 +110,34 @@ std::optional<ContactDef> decodeContact(ByteReader& r, const std::string& field)
     return c;
 }
 
+void encodeMeshUnit(ByteWriter& w, const MeshUnit& unit) {
+    w.f64(unit.mmPerUnit);
+    w.str(unit.name);
+}
+
+std::optional<MeshUnit> decodeMeshUnit(ByteReader& r, const std::string& field) {
+    if (r.remaining() == 0) return std::nullopt;
+    MeshUnit unit;
+    unit.mmPerUnit = r.f64(field + ".mmPerUnit");
+    unit.name = r.str(field + ".name", kMaxNameBytes);
+    if (!r.ok()) return std::nullopt;
+    // The units an exercise or --mesh-unit accepts (engine/core/MeshUnit.h).
+    if (!(std::isfinite(unit.mmPerUnit) && unit.mmPerUnit >= kMinMmPerUnit && unit.mmPerUnit <= kMaxMmPerUnit)) {
+        r.fail(field + ".mmPerUnit", formatNumber(unit.mmPerUnit) + " mm per file unit is outside " +
+                                         formatNumber(kMinMmPerUnit) + ".." + formatNumber(kMaxMmPerUnit));
+        return std::nullopt;
+    }
+    if (!unit.name.empty()) {
+        std::string problem;
+        const auto named = parseMeshUnit(unit.name, problem);
+        if (!named || named->name != unit.name || named->mmPerUnit != unit.mmPerUnit) {
+            r.fail(field + ".name", named ? "'" + unit.name + "' is not " + formatNumber(unit.mmPerUnit) + " mm" : problem);
+            return std::nullopt;
+        }
+    }
+    return unit;
+}
+
 void encodeScene(ByteWriter& w, const RecordedScene& s) {
     w.str(s.meshPath);
     w.u64(s.meshHash);
@@ -214,6 +242,7 @@ void encodeRecordingHeader(const RecordingHeader& h, std::vector<std::uint8_t>& 
     b.u8(h.safety.rearmAfterStale ? 1 : 0);
     b.str(h.note);
     encodeContact(b, h.scene.contact);  // format 3
+    encodeMeshUnit(b, h.scene.meshUnit);  // format 4
 
     ByteWriter w(out);
     w.bytes(kRecordingMagic, sizeof(kRecordingMagic));
@@ -272,12 +301,15 @@ bool decodeRecordingHeader(const std::uint8_t* data, std::size_t size, Recording
     h.note = r.str("note", kMaxNoteBytes);
     // Format 3 appends the contact (older files end here: a point tool without friction).
     if (const auto contact = decodeContact(r, "scene.contact")) h.scene.contact = *contact;
+    // Format 4 appends the mesh's unit (older files: mm).
+    if (const auto unit = decodeMeshUnit(r, "scene.meshUnit")) h.scene.meshUnit = *unit;
     // Bytes after the known fields are allowed: later minor revisions append fields.
     if (!r.ok()) {
         error = r.error();
         return false;
     }
-    h.formatVersion = version;  // 1 and 2 share every layout; 2 adds an event kind; 3 appends the contact
+    // 1 and 2 share every layout; 2 adds an event kind; 3 appends the contact; 4 the mesh's unit
+    h.formatVersion = version;
     header = std::move(h);
     headerBytes = kPreambleBytes + length + 4;
     return true;

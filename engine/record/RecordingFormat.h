@@ -11,6 +11,7 @@
 
 #include "device/HapticDevice.h"
 #include "device/SafetyFilter.h"
+#include "engine/core/MeshUnit.h"
 #include "engine/core/Octree.h"
 #include "engine/models/slopering/SlopeRingMethod.h"
 #include "engine/models/ContactDef.h"
@@ -27,7 +28,9 @@ namespace palpate {
 
 inline constexpr char kRecordingMagic[7] = {'P', 'A', 'L', 'P', 'R', 'E', 'C'};
 /// 2: adds the Divergence event (kind 10). Version 1 files read unchanged (they have none).
-inline constexpr std::uint8_t kRecordingFormatVersion = 3;
+/// 3: appends the contact to the header, scene and parameter events. 4: appends the mesh's unit
+/// to the header and scene events (older files: mm).
+inline constexpr std::uint8_t kRecordingFormatVersion = 4;
 inline constexpr std::uint8_t kOldestRecordingFormatVersion = 1;
 inline constexpr std::uint8_t kChunkMagic[4] = {'P', 'C', 'H', 'K'};
 /// Magic (7) + version (1) + header length (4).
@@ -83,7 +86,10 @@ const char* eventKindName(EventKind kind);
 /// The scene a session runs: enough to rebuild it for replay and to check it is the same mesh.
 struct RecordedScene {
     std::string meshPath;
-    std::uint64_t meshHash = 0;  ///< meshHash() of the loaded (renumbered) mesh
+    /// (format 4) The unit of the mesh file's coordinates, which the replay loads it in; older
+    /// files: mm (docs/meshes.md, "Units").
+    MeshUnit meshUnit;
+    std::uint64_t meshHash = 0;  ///< meshHash() of the loaded (renumbered, scaled to mm) mesh
     std::uint32_t vertexCount = 0;
     std::uint32_t triangleCount = 0;
     SlopeRingMethod method = SlopeRingMethod::Coherent;
@@ -131,6 +137,11 @@ SlopeRingParams decodeParams(ByteReader& r, const std::string& field);
 /// them when the bytes are there (nullopt when not; a failed read names `field`).
 void encodeContact(ByteWriter& w, const ContactDef& contact);
 std::optional<ContactDef> decodeContact(ByteReader& r, const std::string& field);
+/// (format 4) The mesh's unit (mm per file unit, then its name), appended after the contact:
+/// decodeMeshUnit reads it when the bytes are there (nullopt when not; a factor out of range or a
+/// name that is not its factor's fails under `field`).
+void encodeMeshUnit(ByteWriter& w, const MeshUnit& unit);
+std::optional<MeshUnit> decodeMeshUnit(ByteReader& r, const std::string& field);
 void encodeScene(ByteWriter& w, const RecordedScene& scene);
 RecordedScene decodeScene(ByteReader& r, const std::string& field);
 void encodeDevice(ByteWriter& w, const RecordedDevice& device);

@@ -110,7 +110,10 @@ std::string describe(const RecordingEvent& e) {
                    std::to_string(e.params.slopeMagnitudeMmPerN[0]) + " mm/N, contact " +
                    std::to_string(e.params.contactStiffnessNPerMm) + " N/mm, springs " +
                    std::to_string(e.params.springStiffnessNPerMm) + " N/mm)";
-        case EventKind::SceneChanged: return e.scene ? "scene " + e.scene->meshPath : "scene (not described)";
+        case EventKind::SceneChanged:
+            if (!e.scene) return "scene (not described)";
+            return "scene " + e.scene->meshPath +
+                   (e.scene->meshUnit.isMillimetres() ? std::string() : " (in " + e.scene->meshUnit.description() + ")");
         case EventKind::DeviceChanged: return e.device ? "device " + e.device->uri : "device (not described)";
         case EventKind::DeviceState: return std::string("device ") + deviceStateName(e.deviceState);
         case EventKind::Paused: return "paused";
@@ -152,6 +155,7 @@ bool parseEvents(const std::uint8_t* cursor, const std::uint8_t* end, std::uint6
                 if (p.u8("described") != 0) {
                     e.scene = decodeScene(p, "scene");
                     if (const auto contact = decodeContact(p, "scene.contact")) e.scene->contact = *contact;
+                    if (const auto unit = decodeMeshUnit(p, "scene.meshUnit")) e.scene->meshUnit = *unit;
                 }
                 break;
             case std::uint8_t(EventKind::DeviceChanged):

@@ -10,6 +10,7 @@ namespace palpate {
 RecordedScene describeScene(const TissueMesh& mesh, const std::string& meshPath, const TissuePreset& preset) {
     RecordedScene s;
     s.meshPath = meshPath;
+    s.meshUnit = mesh.report().unit;
     s.meshHash = meshHash(mesh);
     s.vertexCount = std::uint32_t(mesh.vertexCount());
     s.triangleCount = std::uint32_t(mesh.triangleCount());

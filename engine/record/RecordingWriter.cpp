@@ -475,6 +475,7 @@ void RecordingWriter::appendEventsUpTo(std::uint64_t lastTick, std::uint64_t fir
                 if (found != mSceneDescriptions.end()) {
                     encodeScene(w, found->second);
                     encodeContact(w, found->second.contact);
+                    encodeMeshUnit(w, found->second.meshUnit);  // format 4
                 }
                 addEvent(EventKind::SceneChanged, c.tick, firstTick, mScratch.data(), mScratch.size());
                 break;

@@ -119,21 +119,27 @@ bool RecordingPlayer::refresh() {
 }
 
 std::unique_ptr<HapticScene> RecordingPlayer::buildScene(const RecordedScene& scene, const std::string& pathOverride,
+                                                         const std::optional<MeshUnit>& unitOverride,
                                                          std::string& error) {
     const std::string path = pathOverride.empty() ? scene.meshPath : pathOverride;
-    auto found = mMeshes.find(path);
+    // The file's coordinates scaled as the session scaled them (docs/meshes.md, "Units"): the
+    // hash is of the mesh in mm, so another unit is another mesh.
+    const MeshUnit unit = unitOverride.value_or(scene.meshUnit);
+    const auto key = std::make_pair(path, unit.mmPerUnit);
+    auto found = mMeshes.find(key);
     if (found == mMeshes.end()) {
-        auto loaded = TissueMesh::load(path);
+        auto loaded = TissueMesh::load(path, unit);
         if (!loaded.mesh) {
             error = "cannot load the recorded mesh: " + loaded.error();
             return nullptr;
         }
-        found = mMeshes.emplace(path, std::move(*loaded.mesh)).first;
+        found = mMeshes.emplace(key, std::move(*loaded.mesh)).first;
     }
     const std::uint64_t hash = meshHash(found->second);
     if (mOptions.requireMeshHash && hash != scene.meshHash) {
         std::ostringstream s;
-        s << path << " is not the recorded mesh (hash " << std::hex << hash << ", recorded " << scene.meshHash << ")";
+        s << path << (unit.isMillimetres() ? std::string() : " (in " + unit.description() + ")")
+          << " is not the recorded mesh (hash " << std::hex << hash << ", recorded " << scene.meshHash << ")";
         error = s.str();
         return nullptr;
     }
@@ -170,7 +176,7 @@ std::unique_ptr<HapticScene> RecordingPlayer::buildScene(const RecordedScene& sc
 
 bool RecordingPlayer::restart(std::string& error) {
     const RecordingHeader& h = mReader.header();
-    auto scene = buildScene(h.scene, mOptions.meshPath, error);
+    auto scene = buildScene(h.scene, mOptions.meshPath, mOptions.meshUnit, error);
     if (!scene) return false;
     HapticLoopDef def;
     def.rateHz = h.rateHz;
@@ -254,7 +260,7 @@ bool RecordingPlayer::applyEvents(std::uint64_t tick) {
                     error = "a scene switch the recorder was not told about (use RecordingSession::swapScene)";
                     break;
                 }
-                auto scene = buildScene(*e.scene, "", error);
+                auto scene = buildScene(*e.scene, "", std::nullopt, error);
                 if (scene) error = mLoop->swapScene(std::move(scene));
                 break;
             }

@@ -17,8 +17,10 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace palpate {
@@ -26,6 +28,8 @@ namespace palpate {
 struct ReplayDef {
     /// Load the initial mesh from here instead of the header's path (its hash must still match).
     std::string meshPath;
+    /// Read that mesh in this unit instead of the recorded one (its hash must still match).
+    std::optional<MeshUnit> meshUnit;
     /// Refuse a mesh whose hash differs from the recorded one (ids and forces would not reproduce).
     bool requireMeshHash = true;
     /// Called on every scene the player builds (the header's and each recorded switch), before the
@@ -98,7 +102,7 @@ private:
     bool restart(std::string& error);
     bool findReplayableRange(std::string& error);
     std::unique_ptr<HapticScene> buildScene(const RecordedScene& scene, const std::string& pathOverride,
-                                            std::string& error);
+                                            const std::optional<MeshUnit>& unitOverride, std::string& error);
     bool nextRecord(RecordedTick& out);
     bool stepOne();
     bool applyEvents(std::uint64_t tick);
@@ -108,7 +112,7 @@ private:
     ReplayDef mOptions;
     ReplayFeed mFeed;
     std::unique_ptr<HapticLoop> mLoop;
-    std::map<std::string, TissueMesh> mMeshes;  // loaded meshes by path, reused on restart
+    std::map<std::pair<std::string, double>, TissueMesh> mMeshes;  // loaded meshes by path and mm per unit, reused on restart
     // The model of the scene last built for the loop: a ParamsApplied event replaces its
     // slope-ring parameters and sends it (HapticLoop::setModelParams).
     ModelDef mModel;

@@ -18,7 +18,7 @@ std::optional<ExerciseAssets> loadExerciseAssets(const Exercise& exercise, const
         errors.push_back(source + ": tissue_preset: " + exercise.tissuePresetPath +
                          " was found neither beside the exercise file nor under resources/");
     if (!errors.empty()) return std::nullopt;
-    auto loaded = TissueMesh::load(a.meshPath);
+    auto loaded = TissueMesh::load(a.meshPath, exercise.meshUnit);
     if (!loaded.mesh) {
         errors.push_back(source + ": mesh: " + loaded.error());
         return std::nullopt;

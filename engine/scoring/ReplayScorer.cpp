@@ -10,9 +10,11 @@ namespace palpate {
 
 namespace {
 
-/// The same task and grading (the files may name the mesh and preset differently).
+/// The same task and grading (the files may name the mesh and preset differently; whether the
+/// mesh, in its unit, is the recorded one is the mesh hash's to say).
 bool sameExercise(Exercise a, Exercise b) {
     a.meshPath = b.meshPath = a.tissuePresetPath = b.tissuePresetPath = "";
+    a.meshUnit = b.meshUnit = kMillimetres;
     return exerciseToJson(a, -1) == exerciseToJson(b, -1);
 }
 
@@ -54,7 +56,7 @@ std::unique_ptr<ReplayScorer> ReplayScorer::open(const RecordingReader& reader, 
             s->mWarnings.push_back("the exercise's mesh " + exercise->meshPath +
                                    " was not found: the exercise is placed on the recording's mesh " + h.scene.meshPath);
         } else {
-            auto loaded = TissueMesh::load(meshPath);
+            auto loaded = TissueMesh::load(meshPath, exercise->meshUnit);
             if (!loaded.mesh) {
                 error = exerciseName + ": " + loaded.error();
                 return nullptr;
@@ -79,6 +81,7 @@ std::unique_ptr<ReplayScorer> ReplayScorer::open(const RecordingReader& reader, 
     // The player gives the scenes the recorded exercise's physics (RecordedExercise.h).
     ReplayDef replay;
     replay.meshPath = options.meshPath;
+    replay.meshUnit = options.meshUnit;
     s->mPlayer = RecordingPlayer::open(reader, error, replay);
     if (!s->mPlayer) return nullptr;
     std::string problem;

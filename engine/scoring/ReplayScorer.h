@@ -23,6 +23,8 @@ namespace palpate {
 struct ReplayScorerDef {
     /// Load the recorded mesh from here instead of the header's path (ReplayDef::meshPath).
     std::string meshPath;
+    /// Read it in this unit instead of the recorded one (ReplayDef::meshUnit).
+    std::optional<MeshUnit> meshUnit;
     /// Resolves the exercise's mesh path under resources/ (for the check that the recording was
     /// made on the exercise's mesh).
     ResourceFinder findResource;

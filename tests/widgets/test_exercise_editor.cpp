@@ -798,6 +798,76 @@ TEST(ExerciseEditor, LevelOfDetailTargetsAreOptionalUndoableAndSaved) {
     EXPECT_FALSE(error->isEnabled());
 }
 
+// "mesh_unit" (docs/meshes.md, "Units"): a combo of the named units and "scale…" with a factor;
+// each change one undo step, saved, and the drawn mesh is the exercise's only when read in its unit.
+TEST(ExerciseEditor, TheMeshUnitIsAFieldWithUndoThatIsSavedAndChecksTheDrawnMesh) {
+    const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    editor.panel.newExercise(ExerciseType::PressTargets);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.vertexPicked(10);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::None);
+    auto* combo = child<QComboBox>(editor.panel, "meshUnitCombo");
+    auto* scale = child<QDoubleSpinBox>(editor.panel, "meshScaleSpin");
+    ASSERT_EQ(combo->count(), 5);
+    EXPECT_EQ(combo->currentIndex(), 0);  // mm
+    EXPECT_TRUE(scale->isHidden());
+    EXPECT_TRUE(editor.panel.drawnMeshMatches());
+    const int steps = editor.panel.undoStack()->count();
+
+    combo->setCurrentIndex(1);
+    emit combo->activated(1);  // as a user's choice
+    EXPECT_EQ(editor.panel.exercise().meshUnit.name, "cm");
+    EXPECT_EQ(editor.panel.exercise().meshUnit.mmPerUnit, 10.0);
+    EXPECT_EQ(editor.panel.undoStack()->count(), steps + 1);
+    // The viewport's sphere was read in mm: not this exercise's mesh any more, and it says why.
+    EXPECT_FALSE(editor.panel.drawnMeshMatches());
+    EXPECT_TRUE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("mesh_unit: ")))
+        << editor.panel.problems().join('\n').toStdString();
+
+    // "scale…": the factor typed is one step, however many values it went through.
+    combo->setCurrentIndex(4);
+    emit combo->activated(4);
+    EXPECT_FALSE(scale->isHidden());
+    EXPECT_EQ(scale->value(), 10.0);
+    scale->setValue(2.5);
+    scale->setValue(3.0);
+    EXPECT_EQ(editor.panel.exercise().meshUnit.name, "");
+    EXPECT_EQ(editor.panel.exercise().meshUnit.mmPerUnit, 3.0);
+    EXPECT_EQ(editor.panel.undoStack()->count(), steps + 3);
+
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("scaled.json"));
+    ASSERT_EQ(editor.panel.saveExercise(file), QString());
+    QFile saved(file);
+    ASSERT_TRUE(saved.open(QIODevice::ReadOnly));
+    EXPECT_EQ(nlohmann::json::parse(saved.readAll().toStdString()).value("mesh_unit", 0.0), 3.0);
+    const auto loaded = loadExercise(file.toStdString());
+    ASSERT_TRUE(loaded.exercise) << loaded.error();
+    EXPECT_EQ(loaded.exercise->meshUnit.mmPerUnit, 3.0);
+
+    // Undo: back to cm, then mm, the form with it.
+    editor.panel.undoStack()->undo();
+    EXPECT_EQ(editor.panel.exercise().meshUnit.mmPerUnit, 10.0);
+    editor.panel.undoStack()->undo();
+    EXPECT_EQ(editor.panel.exercise().meshUnit.name, "cm");
+    EXPECT_EQ(combo->currentIndex(), 1);
+    EXPECT_TRUE(scale->isHidden());
+    editor.panel.undoStack()->undo();
+    EXPECT_TRUE(editor.panel.exercise().meshUnit.isMillimetres());
+    EXPECT_EQ(combo->currentIndex(), 0);
+    EXPECT_TRUE(editor.panel.drawnMeshMatches());
+    editor.panel.undoStack()->redo();
+
+    // The sphere drawn as read in cm is the cm exercise's mesh again.
+    auto inCm = TissueMesh::load(drawn.path.toStdString(), MeshUnit{"cm", 10.0});
+    ASSERT_TRUE(inCm.mesh) << inCm.error();
+    editor.panel.setDrawnMesh(std::make_shared<const TissueMesh>(std::move(*inCm.mesh)), drawn.path);
+    EXPECT_TRUE(editor.panel.drawnMeshMatches());
+    EXPECT_FALSE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("mesh_unit: ")));
+}
+
 // ---- Reachable with the mouse (docs/scoring.md, "Reachable targets") ------------------------------
 
 namespace {
