@@ -1220,7 +1220,9 @@ void MainWindow::createEditorDock() {
             statusBar()->showMessage(tr("An exercise is running: the mesh cannot change now."), 6000);
             return;
         }
-        if (const QString error = loadMesh(path); !error.isEmpty()) QMessageBox::warning(this, tr("Cannot open mesh"), error);
+        // In the exercise's own unit (its "mesh_unit"), not the one remembered for the file.
+        const QString error = meshLoaded(path, mSession->loadMesh(path.toStdString(), mEditor->exercise().meshUnit));
+        if (!error.isEmpty()) QMessageBox::warning(this, tr("Cannot open mesh"), error);
     });
     connect(mEditor, &ExerciseEditorPanel::previewRequested, this, [this](const Exercise& exercise) {
         // Trying it is pressing as a trainee would: with the mouse in touch mode, unless a device

@@ -19,8 +19,8 @@ struct UnitMeshFiles {
 
 /// From an OFF file in mm (vertex numbering kept): `<stem>.mm.off` and `<stem>.<unitName>.off` in
 /// `dir`. A coordinate in the unit is the float nearest x / mmPerUnit; the mm file holds what the
-/// loader makes of it (the float nearest that times mmPerUnit), each printed with 9 digits so
-/// that it reads back as that float.
+/// loader makes of it (the float nearest that times mmPerUnit), each printed with 17 digits so
+/// that the reader's double is that float exactly (the loader reads doubles and scales them).
 inline UnitMeshFiles writeUnitMeshFiles(const std::string& sourceOff, double mmPerUnit, const std::string& unitName,
                                         const std::string& dir, const std::string& stem) {
     std::ifstream in(sourceOff);
@@ -38,9 +38,9 @@ inline UnitMeshFiles writeUnitMeshFiles(const std::string& sourceOff, double mmP
             if (!(in >> x)) throw std::runtime_error(sourceOff + ": short vertex list");
             const float inUnit = float(x / mmPerUnit);
             const float inMm = float(double(inUnit) * mmPerUnit);
-            std::snprintf(text, sizeof text, "%.9g%s", double(inUnit), k < 2 ? " " : "\n");
+            std::snprintf(text, sizeof text, "%.17g%s", double(inUnit), k < 2 ? " " : "\n");
             unit << text;
-            std::snprintf(text, sizeof text, "%.9g%s", double(inMm), k < 2 ? " " : "\n");
+            std::snprintf(text, sizeof text, "%.17g%s", double(inMm), k < 2 ? " " : "\n");
             mm << text;
         }
     }
