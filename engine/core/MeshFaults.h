@@ -21,8 +21,8 @@ struct MeshFaults {
     std::size_t misorientedEdges = 0;        ///< two triangles run along it the same way
     std::size_t bowTieVertices = 0;          ///< separate fans of triangles meet only there
     std::size_t boundaryEdges = 0;           ///< used by one triangle
-    std::size_t holes = 0;                   ///< closed loops of boundary edges
-    std::size_t components = 0;              ///< edge-connected pieces
+    std::size_t holes = 0;                   ///< loops of boundary edges (two meeting at a vertex count as one)
+    std::size_t components = 0;              ///< pieces connected through shared vertices
     std::size_t unusedVertices = 0;          ///< used by no triangle
 
     /// Faults that make a mesh unusable for the haptic loop (the loader refuses them).

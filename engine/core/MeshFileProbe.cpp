@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -94,6 +95,14 @@ std::string probeOff(const std::string& text) {
     std::string magic;
     header >> magic;
     if (magic.find("OFF") == std::string::npos) return "is not an OFF file (missing 'OFF' header)";
+    // Exactly "OFF": the soup reader reads the counts from whatever follows "OFF" (so
+    // "OFF\x02400000300" must not pass), and it reads past a short record of the variants with
+    // colours, normals or texture coordinates (COFF, NOFF, STOFF, 4OFF, nOFF), which are refused.
+    if (magic != "OFF") {
+        if (magic.size() > 3 && magic.size() <= 7 && magic.compare(magic.size() - 3, 3, "OFF") == 0)
+            return "is an OFF variant ('" + magic + "') that is not supported (export it as plain OFF, PLY or STL)";
+        return "is not an OFF file (the header's first word is '" + magic.substr(0, 20) + "', not OFF)";
+    }
     // CGAL's soup reader takes binary OFF's counts and corner counts as they come and skips no
     // face colours, so a binary OFF file is refused rather than half read (docs/meshes.md, "Reading").
     if (magic.find("BINARY") != std::string::npos || lines[0].find("BINARY") != std::string::npos)
@@ -210,26 +219,101 @@ std::string probeStl(const std::string& bytes) {
 
 std::string probePly(const std::string& bytes) {
     if (bytes.compare(0, 3, "ply") != 0) return "is not a PLY file (missing 'ply' magic)";
-    const auto endHeader = bytes.find("end_header");
+    // The header ends at the first line whose first word is "end_header", as the soup reader
+    // reads it ("end_header\xd5..." is not the end).
+    std::size_t endHeader = std::string::npos, bodyStart = bytes.size();
+    for (std::size_t lineStart = 0; lineStart < bytes.size();) {
+        std::size_t lineEnd = bytes.find('\n', lineStart);
+        if (lineEnd == std::string::npos) lineEnd = bytes.size();
+        std::istringstream words(bytes.substr(lineStart, std::min<std::size_t>(lineEnd - lineStart, 200)));
+        std::string first;
+        if (words >> first && first == "end_header") {
+            endHeader = lineStart;
+            bodyStart = std::min(bytes.size(), lineEnd + 1);
+            break;
+        }
+        lineStart = lineEnd + 1;
+    }
     if (endHeader == std::string::npos) return "is truncated: PLY header has no 'end_header'";
     std::istringstream header(bytes.substr(0, endHeader));
     std::string line, format;
     long long nv = -1, nf = -1;
     std::size_t vertexBytes = 0;
     std::string current;
+    // The header's grammar is checked in full: CGAL's PLY reader takes a property before any
+    // element, or a list without its types, for granted.
+    static const char* const kTypes[] = {"char",  "int8",   "uchar", "uint8",   "short",   "int16",  "ushort",
+                                         "uint16", "int",   "int32", "uint",    "uint32",  "float",  "float32",
+                                         "double", "float64"};
+    auto knownType = [](const std::string& t) {
+        return std::any_of(std::begin(kTypes), std::end(kTypes), [&](const char* k) { return t == k; });
+    };
+    std::size_t headerLine = 0;
+    std::vector<std::string> elements;
+    long long records = 0;
+    bool formatSeen = false;
     while (std::getline(header, line)) {
+        ++headerLine;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
         std::istringstream w(line);
         std::string key;
         w >> key;
-        if (key == "format") w >> format;
-        else if (key == "element") {
-            long long count = 0;
-            w >> current >> count;
+        const std::string where = "has a malformed PLY header at line " + std::to_string(headerLine);
+        if (headerLine == 1) {
+            if (key != "ply") return where;
+            continue;
+        }
+        if (key.empty() || key == "comment" || key == "obj_info") continue;
+        if (key == "format") {
+            if (formatSeen) return where + " (a second format line)";
+            formatSeen = true;
+            w >> format;
+            if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian") return where;
+        } else if (key == "element") {
+            std::string countText, rest;
+            if (!(w >> current >> countText) || (w >> rest)) return where;
+            char* end = nullptr;
+            errno = 0;
+            const long long count = std::strtoll(countText.c_str(), &end, 10);
+            if (*end != '\0' || errno == ERANGE || count < 0) return where;
+            // The soup reader walks every element's declared count, at the end of the data too.
+            if (std::find(elements.begin(), elements.end(), current) != elements.end())
+                return where + " (element '" + current.substr(0, 20) + "' declared twice)";
+            elements.push_back(current);
+            if (current == "halfedge") return "has a PLY 'halfedge' element, which is not supported";
+            if (std::uint64_t(count) > kMaxMeshFaces) return countProblem(0, count);
+            records += count;
             if (current == "vertex") nv = count;
             if (current == "face") nf = count;
-        } else if (key == "property" && current == "vertex") {
+        } else if (key == "property") {
+            std::string type, name, rest;
+            if (current.empty() || !(w >> type) || (!knownType(type) && type != "list")) return where;
+            if (type == "list") {
+                std::string countType, indexType;
+                if (!(w >> countType >> indexType >> name) || !knownType(countType) || !knownType(indexType))
+                    return where;
+                // The soup reader sizes a list by its count before it reads it: a 32-bit or a
+                // floating-point count could ask for gigabytes.
+                static const char* const kSmallCounts[] = {"char", "int8", "uchar", "uint8", "short", "int16", "ushort", "uint16"};
+                if (std::none_of(std::begin(kSmallCounts), std::end(kSmallCounts), [&](const char* k) { return countType == k; }))
+                    return "has a PLY list counted by a '" + countType + "' at header line " + std::to_string(headerLine) +
+                           ", which is not supported (a count of 8 or 16 bits, such as uchar, is)";
+            } else if (!(w >> name)) {
+                return where;
+            }
+            if (w >> rest) return where;
+            // The soup reader reads a vertex's x, y and z as floating point, whatever the header says.
+            if ((current == "vertex" || current == "vertices") && (name == "x" || name == "y" || name == "z") &&
+                type != "float" && type != "float32" && type != "double" && type != "float64")
+                return "has a PLY vertex coordinate '" + name + "' of type '" + type +
+                       "', which is not supported (float or double is)";
+        } else {
+            return where;
+        }
+        if (key == "property" && current == "vertex") {
+            std::istringstream again(line);
             std::string type;
-            w >> type;
+            again >> type >> type;
             if (type == "double" || type == "float64") vertexBytes += 8;
             else if (type == "float" || type == "float32" || type == "int" || type == "uint" || type == "int32" ||
                      type == "uint32")
@@ -241,13 +325,12 @@ std::string probePly(const std::string& bytes) {
     }
     if (nv < 0 || nf < 0) return "has a PLY header without vertex or face elements";
     if (const std::string problem = countProblem(nv, nf); !problem.empty()) return problem;
-    std::size_t bodyStart = bytes.find('\n', endHeader);
-    bodyStart = bodyStart == std::string::npos ? bytes.size() : bodyStart + 1;
     if (format == "ascii") {
         const auto lines = contentLines(bytes.substr(bodyStart));
-        if (lines.size() < std::size_t(nv + nf))
+        if (lines.size() < std::size_t(records))
             return "is truncated: the PLY header declares " + std::to_string(nv) + " vertices and " +
-                   std::to_string(nf) + " faces, but only " + std::to_string(lines.size()) + " records follow";
+                   std::to_string(nf) + " faces" + (records > nv + nf ? " (and other records)" : "") + ", but only " +
+                   std::to_string(lines.size()) + " records follow";
         for (long long i = 0; i < nv; ++i) {
             CoordinateCheck check;
             countNumbers(lines[std::size_t(i)], &check);
@@ -264,14 +347,105 @@ std::string probePly(const std::string& bytes) {
     return {};
 }
 
-/// OpenMesh's own format: "OM", a mesh type, a version, then the vertex and face counts (32-bit,
-/// little-endian); the rest is OpenMesh's to check.
+/// A little-endian integer of `size` bytes at `at`, sign-extended when `isSigned`.
+long long readLittleEndian(const std::string& bytes, std::size_t at, std::size_t size, bool isSigned) {
+    std::uint64_t v = 0;
+    for (std::size_t i = 0; i < size; ++i) v |= std::uint64_t((unsigned char)bytes[at + i]) << (8 * i);
+    if (isSigned && size < 8 && (v >> (8 * size - 1)) & 1u) v |= ~std::uint64_t(0) << (8 * size);
+    return (long long)v;
+}
+
+/// OpenMesh's own format: "OM", a mesh type, a version, the vertex, face and edge counts (32-bit,
+/// little-endian), then chunks, each a 16-bit header and its data. OpenMesh's reader asserts on a
+/// chunk of the wrong shape and stores any index it finds, so every chunk is walked here first:
+/// only the chunks OpenMesh writes for a mesh's geometry are accepted, each must fit the file,
+/// and every index in a topology chunk must be in range.
 std::string probeOm(const std::string& bytes) {
     if (bytes.size() < 12 || bytes.compare(0, 2, "OM") != 0) return "is not an OpenMesh .om file (missing 'OM' header)";
-    std::uint32_t vertices = 0, faces = 0;
+    // The mesh type OpenMesh's own check of a file (can_u_read) demands; its stream reader skips it.
+    const char meshType = bytes[2];
+    if (meshType != 'T' && meshType != 'Q' && meshType != 'P')
+        return "is not an OpenMesh .om file (unknown mesh type in the header)";
+    std::uint32_t vertices = 0, faces = 0, edges = 0;
     std::memcpy(&vertices, bytes.data() + 4, 4);
     std::memcpy(&faces, bytes.data() + 8, 4);
-    return countProblem((long long)vertices, (long long)faces);
+    if (const std::string problem = countProblem((long long)vertices, (long long)faces); !problem.empty())
+        return problem;
+    if (bytes.size() < 16) return {};  // no chunks: OpenMesh reads no mesh, which the reader names
+    std::memcpy(&edges, bytes.data() + 12, 4);
+    if (edges > 3 * kMaxMeshFaces) return "declares " + std::to_string(edges) + " edges, more than a mesh may have";
+    const bool version2 = ((unsigned char)bytes[3] >> 5) >= 2;
+    const long long halfedges = 2ll * edges;
+    std::size_t at = 16;
+    bool positionsRead = false, halfedgesRead = false;
+    auto truncated = [] { return std::string("is truncated: an .om chunk is cut off"); };
+    auto unsupported = [](unsigned entity, unsigned type) {
+        return "has an .om chunk this reader does not support (entity " + std::to_string(entity) + ", type " +
+               std::to_string(type) + ")";
+    };
+    while (at < bytes.size()) {
+        if (bytes.size() - at < 2) return truncated();
+        const unsigned h = unsigned((unsigned char)bytes[at]) | unsigned((unsigned char)bytes[at + 1]) << 8;
+        at += 2;
+        const unsigned named = (h >> 1) & 1u, entity = (h >> 2) & 7u, type = (h >> 5) & 15u;
+        const unsigned isFloat = (h >> 10) & 1u, dim = ((h >> 11) & 7u) + 1, bits = (h >> 14) & 3u;
+        if (entity == 7) return {};  // the sentinel
+        if (named) return "has a named .om property, which this reader does not support";
+        const std::size_t intSize = std::size_t(1) << bits;
+        const std::size_t left = bytes.size() - at;
+        // Fixed-size records: `count` records of `record` bytes.
+        auto fixed = [&](std::uint64_t count, std::uint64_t record) -> std::string {
+            if (count * record > left) return truncated();
+            at += std::size_t(count * record);
+            return {};
+        };
+        // Indices of `count` records of `perRecord` indices, each within [low, high).
+        auto indices = [&](std::uint64_t count, int perRecord, const long long* low, const long long* high) -> std::string {
+            if (count * std::uint64_t(perRecord) * intSize > left) return truncated();
+            for (std::uint64_t r = 0; r < count; ++r)
+                for (int k = 0; k < perRecord; ++k) {
+                    const long long v = readLittleEndian(bytes, at, intSize, true);
+                    at += intSize;
+                    if (v < low[k] || v >= high[k])
+                        return "is corrupt: an .om topology chunk refers to element " + std::to_string(v) +
+                               " of " + std::to_string(high[k]);
+                }
+            return {};
+        };
+        std::string problem;
+        const bool float3 = isFloat && bits == 0 && dim == 3;
+        if (entity == 0 && type == 0 && float3 && !positionsRead) {  // positions: they make the vertices
+            positionsRead = true;
+            problem = fixed(vertices, 12);
+        }
+        else if (entity == 0 && type == 1 && float3)
+            problem = fixed(vertices, 12);      // normals
+        else if (entity == 0 && type == 2 && isFloat && bits == 0 && dim == 2) problem = fixed(vertices, 8);
+        else if (entity == 0 && type == 4 && dim == 3 && bits == 0 && !isFloat) problem = fixed(vertices, 3);
+        else if (entity == 2 && type == 1 && float3) problem = fixed(faces, 12);
+        else if (entity == 2 && type == 4 && dim == 3 && bits == 0 && !isFloat) problem = fixed(faces, 3);
+        // A vertex's halfedge is stored into the vertex, which the positions must have made.
+        else if (entity == 0 && type == 7 && version2 && positionsRead) {
+            const long long low[] = {-1}, high[] = {halfedges};
+            problem = indices(vertices, 1, low, high);
+        } else if (entity == 2 && type == 7 && version2) {
+            const long long low[] = {0}, high[] = {halfedges};
+            problem = indices(faces, 1, low, high);
+        } else if (entity == 6 && type == 7 && version2 && !halfedgesRead) {
+            // Each record makes an edge; its next halfedges are linked back (prev), so they must exist.
+            halfedgesRead = true;
+            const long long low[] = {0, 0, -1, 0, 0, -1};
+            const long long high[] = {halfedges, vertices, faces, halfedges, vertices, faces};
+            problem = indices(edges, 6, low, high);
+        } else if (entity == 2 && type == 7 && !version2 && meshType != 'P') {
+            const long long low[] = {0, 0, 0, 0}, high[] = {vertices, vertices, vertices, vertices};
+            problem = indices(faces, meshType == 'T' ? 3 : 4, low, high);
+        } else {
+            return unsupported(entity, type);
+        }
+        if (!problem.empty()) return problem;
+    }
+    return {};
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #pragma once
-// A quick structural read of a mesh file before OpenMesh parses it: OpenMesh's readers accept
-// truncated files and garbage silently in places, so counts declared by the format are checked here.
+// A quick structural read of a mesh file before the polygon-soup reader (engine/core/PolygonSoup.h)
+// hands it to CGAL or OpenMesh: those readers accept truncated files silently, trust declared
+// counts, and crash on some malformed headers, so the format's structure is checked here first
+// (docs/meshes.md, "Reading").
 
 #include <string>
 

@@ -260,9 +260,21 @@ std::string readOm(const std::string& bytes, PolygonSoup& soup) {
         const auto& p = om.point(vh);
         soup.points.emplace_back(p[0], p[1], p[2]);
     }
+    // The halfedges came from the file (checked in range by the probe, not for consistency), so
+    // each face's loop is walked with a bound instead of OpenMesh's circulator.
+    const int halfedges = int(om.n_halfedges()), verticesMade = int(om.n_vertices());
     for (auto fh : om.faces()) {
         std::vector<std::uint32_t> polygon;
-        for (auto vh : om.fv_range(fh)) polygon.push_back(std::uint32_t(vh.idx()));
+        const auto first = om.halfedge_handle(fh);
+        auto h = first;
+        do {
+            if (!h.is_valid() || h.idx() >= halfedges || int(polygon.size()) >= halfedges)
+                return "is corrupt: an .om face's halfedges do not form a loop";
+            const int v = om.to_vertex_handle(h).idx();
+            if (v < 0 || v >= verticesMade) return "is corrupt: an .om face refers to a vertex that does not exist";
+            polygon.push_back(std::uint32_t(v));
+            h = om.next_halfedge_handle(h);
+        } while (h != first);
         soup.polygons.push_back(std::move(polygon));
     }
     return {};

@@ -1,6 +1,7 @@
 #pragma once
 // A closed (or open, reported) triangle surface with flat arrays for the haptic loop.
-// OpenMesh owns file IO and topology checks; the hot loop reads only the flat arrays here.
+// Read as a polygon soup (engine/core/PolygonSoup.h) and checked by findMeshFaults; written by
+// OpenMesh. The hot loop reads only the flat arrays here.
 
 #include "engine/core/MeshFaults.h"
 #include "engine/core/MeshUnit.h"
@@ -33,7 +34,7 @@ struct MeshReport {
     MeshUnit unit;                       ///< the file's unit; every size here is already in mm
     glm::dvec3 sizeMm{0.0};              ///< bounding-box extent (x, y, z)
     std::size_t holeCount = 0;           ///< closed loops of boundary edges
-    std::size_t componentCount = 0;      ///< edge-connected pieces
+    std::size_t componentCount = 0;      ///< pieces connected through shared vertices
     std::size_t duplicateVertexCount = 0;  ///< at exactly another vertex's position
     std::size_t misorientedEdgeCount = 0;
     std::vector<std::string> notes;      ///< what the reader tolerated ("12 quads triangulated")

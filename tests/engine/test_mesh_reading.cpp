@@ -289,6 +289,39 @@ TEST(MeshReading, BinaryAndAsciiStlOfTheSameCubeGiveTheSameSoup) {
     EXPECT_EQ(fromSolid.polygons, binary.polygons);
 }
 
+TEST(MeshReading, OpenMeshFilesGiveTheirPolygonsAndHostileOnesAreRefused) {
+    TempDir dir;
+    const RawMesh ico = test::icosahedron();
+    OpenMesh::TriMesh_ArrayKernelT<> om;
+    std::vector<OpenMesh::VertexHandle> handles;
+    for (const auto& p : ico.positions) handles.push_back(om.add_vertex({p.x, p.y, p.z}));
+    for (const auto& t : ico.triangles) om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
+    const std::string path = dir.file("ico.om");
+    ASSERT_TRUE(OpenMesh::IO::write_mesh(om, path));
+    PolygonSoup soup;
+    ASSERT_EQ(readPolygonSoup(path, soup), "");
+    ASSERT_EQ(soup.points.size(), ico.positions.size());
+    for (std::size_t v = 0; v < ico.positions.size(); ++v) EXPECT_EQ(glm::vec3(soup.points[v]), ico.positions[v]);
+    // The same triangles, each perhaps starting at another corner.
+    ASSERT_EQ(soup.polygons.size(), ico.triangles.size());
+    for (std::size_t f = 0; f < ico.triangles.size(); ++f) {
+        std::vector<std::uint32_t> expected(ico.triangles[f].begin(), ico.triangles[f].end());
+        const auto& got = soup.polygons[f];
+        ASSERT_EQ(got.size(), 3u);
+        const bool rotated = std::any_of(expected.begin(), expected.end(), [&](std::uint32_t) {
+            std::rotate(expected.begin(), expected.begin() + 1, expected.end());
+            return expected == got;
+        });
+        EXPECT_TRUE(rotated) << "face " << f;
+    }
+
+    // A position chunk of one dimension: OpenMesh's reader asserts on it (and aborted the program).
+    std::string bytes = test::readFile(path).substr(0, 16) + std::string("\x00\x06", 2) + std::string(20, '\0');
+    const auto r = loadText(dir, "bad-dimension.om", bytes);
+    EXPECT_FALSE(r.mesh);
+    EXPECT_NE(r.error().find("not support"), std::string::npos) << r.error();
+}
+
 // --- Faults named exactly ---------------------------------------------------------------------
 
 TEST(MeshReading, FlippedFacesAreNamedAsInconsistentOrientationNotNonManifold) {

@@ -110,6 +110,17 @@ put("mesh", "off-quads.off", OFF + ("OFF\n8 6 12\n" + "".join("%g %g %g\n" % v f
 put("mesh", "ply-binary-tet.ply", PLY + b"ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
     b"property float y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n" +
     b"".join(struct.pack("<3f", *v) for v in tet_v) + b"".join(struct.pack("<B3i", 3, *f) for f in tet_f))
+# A tetrahedron as OpenMesh 9 writes it (write_mesh of a TriMesh), so the fuzzer starts from a real .om.
+put("mesh", "tet.om", OM + bytes.fromhex("4f4d54420400000004000000060000000016000000000000000000000000000020410000000000000000000000000000204100000000000000000000000000002041f8160202000900020401000b02030000000601010803010301030500010a0302010202070303e00609030b07e806040801071c00"))
+# What fuzz_polygon_soup found in CGAL's and OpenMesh's readers, refused by the probe first.
+put("mesh", "om-bad-dimension.om", OM + open(os.path.join(root, "corpus", "mesh", "tet.om"), "rb").read()[1:17] + b"\x00\x06" + b"\0" * 20)
+put("mesh", "ply-property-first.ply", PLY + b"ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n")
+put("mesh", "ply-element-twice.ply", PLY + ply.replace("element vertex 4\n", "element vertex 4999999999\nelement vertex 4\n", 1).encode())
+put("mesh", "ply-uchar-x.ply", PLY + ply.replace("property float x", "property uchar x").encode())
+put("mesh", "ply-int-list-count.ply", PLY + ply.replace("list uchar int", "list int int").encode())
+put("mesh", "ply-end-header-glued.ply", PLY + ply.replace("end_header\n", "end_header\xd50 0\nelement x 9\nend_header\n").encode("latin-1"))
+put("mesh", "off-glued-count.off", OFF + b"OFF\x02400000300 0\n0 0 2\n")
+put("mesh", "off-stoff-short.off", OFF + b"STOFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n")
 put("mesh", "stl-ascii-crlf.stl", STL + b"solid t\r\nfacet normal 0 0 0\r\nouter loop\r\nvertex 0 0 0\r\nvertex 1 0 0\r\n"
     b"vertex 0 1 0\r\nendloop\r\nendfacet\r\nendsolid t\r\n")
 
