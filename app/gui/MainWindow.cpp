@@ -542,23 +542,14 @@ void MainWindow::rememberMeshUnit(const QString& path, const MeshUnit& unit) {
 }
 
 QString MainWindow::openMeshFile(const QString& path) {
-    if (rememberedMeshUnit(path)) {  // asked before: as answered then
-        MeshReport report;
-        std::string error;
-        auto mesh = HapticSession::loadTissueMesh(path.toStdString(), error, *rememberedMeshUnit(path), &report);
-        if (!mesh) {
-            showMeshOpenError(path, QString::fromStdString(error), report.triangleCount > 0);
-            return QString::fromStdString(error);
-        }
-        const QString loaded = meshLoaded(path, mSession->loadMesh(path.toStdString(), std::move(*mesh)));
-        if (!loaded.isEmpty()) showMeshOpenError(path, loaded, false);
-        return loaded;
-    }
-    // Read as mm first: its size decides whether to ask (docs/meshes.md, "Units").
+    // Asked before: as answered then. Otherwise read as mm first: its size decides whether to ask
+    // (docs/meshes.md, "Units").
+    const std::optional<MeshUnit> remembered = rememberedMeshUnit(path);
     MeshReport report;
     std::string error;
-    auto mesh = HapticSession::loadTissueMesh(path.toStdString(), error, kMillimetres, &report);
-    const auto suggestion = report.bboxDiagonalMm > 0.0 ? suggestMeshUnit(report.bboxDiagonalMm) : std::nullopt;
+    auto mesh = HapticSession::loadTissueMesh(path.toStdString(), error, remembered.value_or(kMillimetres), &report);
+    const auto suggestion =
+        !remembered && report.bboxDiagonalMm > 0.0 ? suggestMeshUnit(report.bboxDiagonalMm) : std::nullopt;
     if (suggestion) {
         const QString unitName = QString::fromStdString(suggestion->unit.text());
         QMessageBox box(QMessageBox::Question, tr("Which unit is this mesh in?"),
