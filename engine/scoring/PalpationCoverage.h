@@ -1,0 +1,45 @@
+#pragma once
+// How much of the surface was examined firmly enough (docs/scoring.md, "Coverage"): every contact
+// at or above a force covers the vertices within a radius of its point; the covered fraction is
+// by area, and the largest force seen at each vertex is the heat map.
+
+#include "engine/core/TissueMesh.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace palpate {
+
+struct CoverageDef {
+    double minForceN = 1.0;   ///< a lighter contact examines nothing
+    double radiusMm = 5.0;    ///< around the contact point (the tool's radius, by default)
+};
+
+class PalpationCoverage {
+public:
+    PalpationCoverage(const TissueMesh& mesh, const CoverageDef& def);
+
+    /// One contact sample: the touched vertex (where the walk starts), the contact point and the
+    /// force's magnitude. Covers the vertices within the radius that the surface connects to the
+    /// touched vertex, so that a press does not reach through a thin wall.
+    void add(VertexId touched, const glm::vec3& contactMm, double forceN);
+
+    /// Covered area over the whole surface's area, in [0, 1].
+    double coveredFraction() const;
+    /// The largest force that covered each vertex, N (0 where none did): the heat map.
+    const std::vector<float>& peakForceN() const { return mPeakForceN; }
+
+private:
+    const TissueMesh& mMesh;
+    CoverageDef mDef;
+    std::vector<double> mVertexAreaMm2;
+    double mTotalAreaMm2 = 0.0;
+    double mCoveredAreaMm2 = 0.0;
+    std::vector<float> mPeakForceN;
+    std::vector<std::uint32_t> mStamp;
+    std::uint32_t mGeneration = 0;
+    std::vector<VertexId> mQueue;
+};
+
+}  // namespace palpate
