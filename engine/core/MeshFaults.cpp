@@ -1,5 +1,7 @@
 #include "engine/core/MeshFaults.h"
 
+#include "engine/core/CountedText.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -10,10 +12,6 @@
 namespace palpate {
 
 namespace {
-
-std::string plural(std::size_t n, const char* one, const char* many) {
-    return std::to_string(n) + " " + (n == 1 ? one : many);
-}
 
 /// Union-find over indices with path halving.
 struct DisjointSets {
@@ -37,19 +35,19 @@ struct DisjointSets {
 std::vector<std::string> MeshFaults::errorTexts() const {
     std::vector<std::string> out;
     if (invalidIndexTriangles)
-        out.push_back(plural(invalidIndexTriangles, "triangle refers", "triangles refer") +
+        out.push_back(countedText(invalidIndexTriangles, "triangle refers", "triangles refer") +
                       " to vertices that do not exist");
-    if (nonFiniteVertices) out.push_back(plural(nonFiniteVertices, "vertex", "vertices") + " with NaN or infinite coordinates");
+    if (nonFiniteVertices) out.push_back(countedText(nonFiniteVertices, "vertex", "vertices") + " with NaN or infinite coordinates");
     if (degenerateTriangles)
-        out.push_back(plural(degenerateTriangles, "degenerate triangle", "degenerate triangles") +
+        out.push_back(countedText(degenerateTriangles, "degenerate triangle", "degenerate triangles") +
                       " (zero area or a repeated corner)");
     if (misorientedEdges)
-        out.push_back(plural(misorientedEdges, "edge", "edges") +
+        out.push_back(countedText(misorientedEdges, "edge", "edges") +
                       " where neighbouring triangles are inconsistently oriented (one of them is wound the wrong way)");
     if (nonManifoldEdges)
-        out.push_back("non-manifold: " + plural(nonManifoldEdges, "edge", "edges") + " shared by three or more triangles");
+        out.push_back("non-manifold: " + countedText(nonManifoldEdges, "edge", "edges") + " shared by three or more triangles");
     if (bowTieVertices)
-        out.push_back("non-manifold: " + plural(bowTieVertices, "bow-tie vertex", "bow-tie vertices") +
+        out.push_back("non-manifold: " + countedText(bowTieVertices, "bow-tie vertex", "bow-tie vertices") +
                       " where separate fans of triangles touch at a single point");
     return out;
 }
@@ -57,15 +55,15 @@ std::vector<std::string> MeshFaults::errorTexts() const {
 std::vector<std::string> MeshFaults::warningTexts() const {
     std::vector<std::string> out;
     if (holes)
-        out.push_back("open surface: " + plural(holes, "hole", "holes") + " (" +
-                      plural(boundaryEdges, "boundary edge", "boundary edges") + ")");
+        out.push_back("open surface: " + countedText(holes, "hole", "holes") + " (" +
+                      countedText(boundaryEdges, "boundary edge", "boundary edges") + ")");
     else if (boundaryEdges)
-        out.push_back("open surface: " + plural(boundaryEdges, "boundary edge", "boundary edges"));
+        out.push_back("open surface: " + countedText(boundaryEdges, "boundary edge", "boundary edges"));
     if (duplicateVertices)
-        out.push_back(plural(duplicateVertices, "duplicate vertex", "duplicate vertices") +
+        out.push_back(countedText(duplicateVertices, "duplicate vertex", "duplicate vertices") +
                       " (at exactly another vertex's position: the surface is split along them)");
     if (components > 1) out.push_back(std::to_string(components) + " separate components (pieces not connected to each other)");
-    if (unusedVertices) out.push_back(plural(unusedVertices, "vertex", "vertices") + " used by no triangle");
+    if (unusedVertices) out.push_back(countedText(unusedVertices, "vertex", "vertices") + " used by no triangle");
     return out;
 }
 

@@ -1,5 +1,7 @@
 #include "engine/core/PolygonSoup.h"
 
+#include "engine/core/CountedText.h"
+
 #include "engine/core/MeshFileProbe.h"
 #include "engine/io/FileLimits.h"
 #include "engine/io/InputFile.h"
@@ -43,10 +45,6 @@ using CgalPolygons = std::vector<std::vector<std::size_t>>;
 constexpr std::size_t kMaxEarClipCorners = 512;
 constexpr std::size_t kEarTestBudget = 200'000'000;
 
-std::string plural(std::size_t n, const char* one, const char* many) {
-    return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
 std::string lowerExtension(const std::string& path) {
     const auto slash = path.find_last_of('/');
     const auto dot = path.find_last_of('.');
@@ -69,7 +67,7 @@ void sanitiseText(std::string& text, std::vector<std::string>& notes) {
         text.pop_back();
         ++nuls;
     }
-    if (nuls) notes.push_back(plural(nuls, "trailing NUL byte", "trailing NUL bytes") + " ignored");
+    if (nuls) notes.push_back(countedText(nuls, "trailing NUL byte", "trailing NUL bytes") + " ignored");
 
     std::size_t crlf = 0, cr = 0, lf = 0, tabs = 0;
     std::string out;
@@ -104,7 +102,7 @@ void sanitiseText(std::string& text, std::vector<std::string>& notes) {
     } else if (cr) {
         notes.push_back("CR line ends read as LF");
     }
-    if (tabs) notes.push_back(plural(tabs, "tab", "tabs") + " read as spaces");
+    if (tabs) notes.push_back(countedText(tabs, "tab", "tabs") + " read as spaces");
 }
 
 /// The OBJ pre-scan CGAL's reader lacks: it names the line of a bad face, resolves negative
@@ -163,7 +161,7 @@ std::string prescanObj(std::string& text, std::vector<std::string>& notes) {
                 ++corners;
             }
             if (corners < 3)
-                return "line " + std::to_string(lineNo) + ": a face with " + plural(corners, "corner", "corners") +
+                return "line " + std::to_string(lineNo) + ": a face with " + countedText(corners, "corner", "corners") +
                        " (at least 3 are needed)";
             out << '\n';
         } else if (key == "o" || key == "g" || key == "s" || key == "usemtl" || key == "mtllib") {
@@ -185,25 +183,25 @@ std::string prescanObj(std::string& text, std::vector<std::string>& notes) {
         return "line " + std::to_string(maxIndexLine) + ": a face refers to vertex " + std::to_string(maxIndex) +
                ", but the file has " + std::to_string(vertices);
     text = out.str();
-    if (comments) notes.push_back(plural(comments, "comment", "comments") + " ignored");
+    if (comments) notes.push_back(countedText(comments, "comment", "comments") + " ignored");
     if (grouping)
-        notes.push_back(plural(grouping, "group, object, smoothing or material record",
+        notes.push_back(countedText(grouping, "group, object, smoothing or material record",
                                "group, object, smoothing and material records") +
                         " ignored (o, g, s, usemtl, mtllib)");
     if (attributes)
-        notes.push_back(plural(attributes, "texture or normal record", "texture and normal records") +
+        notes.push_back(countedText(attributes, "texture or normal record", "texture and normal records") +
                         " ignored (vt, vn, vp)");
     if (cornerIndices)
-        notes.push_back("texture and normal indices of " + plural(cornerIndices, "face corner", "face corners") +
+        notes.push_back("texture and normal indices of " + countedText(cornerIndices, "face corner", "face corners") +
                         " ignored");
     if (relative)
-        notes.push_back(plural(relative, "negative (relative) vertex index", "negative (relative) vertex indices") +
+        notes.push_back(countedText(relative, "negative (relative) vertex index", "negative (relative) vertex indices") +
                         " resolved");
     if (polylines)
-        notes.push_back(plural(polylines, "polyline or point record", "polyline and point records") +
+        notes.push_back(countedText(polylines, "polyline or point record", "polyline and point records") +
                         " ignored (l, p)");
     if (unknown)
-        notes.push_back(plural(unknown, "record of an unknown kind", "records of unknown kinds") +
+        notes.push_back(countedText(unknown, "record of an unknown kind", "records of unknown kinds") +
                         " ignored (first at " + firstUnknown + ")");
     return {};
 }
@@ -494,17 +492,17 @@ std::vector<std::array<std::uint32_t, 3>> triangulatePolygons(const PolygonSoup&
     }
     if (quads || larger) {
         std::string text;
-        if (quads) text = plural(quads, "quad", "quads");
+        if (quads) text = countedText(quads, "quad", "quads");
         if (quads && larger) text += " and ";
-        if (larger) text += plural(larger, "polygon", "polygons") + " of more than 4 corners";
+        if (larger) text += countedText(larger, "polygon", "polygons") + " of more than 4 corners";
         notes.push_back(text + " triangulated");
     }
     if (fannedLarge)
-        notes.push_back(plural(fannedLarge, "concave polygon", "concave polygons") + " of more than " +
+        notes.push_back(countedText(fannedLarge, "concave polygon", "concave polygons") + " of more than " +
                         std::to_string(kMaxEarClipCorners) +
                         " corners (or beyond the file's budget of ear tests) split as a fan (it may overlap itself)");
-    if (noEar) notes.push_back(plural(noEar, "polygon", "polygons") + " that cross themselves split as a fan");
-    if (dropped) notes.push_back(plural(dropped, "polygon", "polygons") + " of fewer than 3 corners dropped");
+    if (noEar) notes.push_back(countedText(noEar, "polygon", "polygons") + " that cross themselves split as a fan");
+    if (dropped) notes.push_back(countedText(dropped, "polygon", "polygons") + " of fewer than 3 corners dropped");
     return triangles;
 }
 

@@ -149,8 +149,8 @@ TissueMesh::LoadResult MeshBuilder::build(std::vector<glm::vec3> positions,
     std::vector<glm::dvec3> exact(positions.begin(), positions.end());
     const MeshFaults faults = findMeshFaults(exact, triangles);
     report.nonFiniteVertexCount = faults.nonFiniteVertices;
-    report.degenerateTriangleCount += faults.degenerateTriangles;
-    report.nonManifoldEdgeCount += faults.nonManifoldEdges;
+    report.degenerateTriangleCount = faults.degenerateTriangles;
+    report.nonManifoldEdgeCount = faults.nonManifoldEdges;
     report.nonManifoldVertexCount = faults.bowTieVertices;
     report.boundaryEdgeCount = faults.boundaryEdges;
     report.isolatedVertexCount = faults.unusedVertices;
@@ -176,16 +176,7 @@ TissueMesh::LoadResult MeshBuilder::build(std::vector<glm::vec3> positions,
           << kMinDiagonalMm << " to " << kMaxDiagonalMm << " mm)";
         error(s.str());
     }
-    // A reader's own findings (OpenMesh's "equal vertices", split faces) come first and are not repeated.
-    auto already = [&](const char* word) {
-        return std::any_of(report.errors.begin(), report.errors.end(),
-                           [&](const std::string& e) { return e.find(word) != std::string::npos; });
-    };
-    for (const std::string& e : faults.errorTexts()) {
-        if (e.find("degenerate") != std::string::npos && already("degenerate")) continue;
-        if (e.find("non-manifold") != std::string::npos && already("non-manifold")) continue;
-        error(e);
-    }
+    for (const std::string& e : faults.errorTexts()) error(e);
     if (faults.hasErrors())
         report.errors.push_back(src + ": to repair it, import it (palpate-cli mesh import --repair, or File > Import Mesh...)");
     for (const std::string& w : faults.warningTexts()) {
@@ -198,16 +189,14 @@ TissueMesh::LoadResult MeshBuilder::build(std::vector<glm::vec3> positions,
         }
     }
     if (!report.valid()) return {std::nullopt, report};
-    std::vector<std::uint32_t> incidentStart(nv + 1, 0);
-    for (const auto& t : triangles)
-        for (VertexId v : t) ++incidentStart[v + 1];
-    for (std::size_t v = 0; v < nv; ++v) incidentStart[v + 1] += incidentStart[v];
-
     // Drop unused vertices, then renumber along the Morton curve.
+    std::vector<bool> used(nv, false);
+    for (const auto& t : triangles)
+        for (VertexId v : t) used[v] = true;
     std::vector<VertexId> keep;
     keep.reserve(nv);
     for (VertexId v = 0; v < nv; ++v)
-        if (incidentStart[v + 1] > incidentStart[v]) keep.push_back(v);
+        if (used[v]) keep.push_back(v);
     std::vector<glm::vec3> kept(keep.size());
     for (std::size_t i = 0; i < keep.size(); ++i) kept[i] = positions[keep[i]];
     std::vector<std::uint32_t> order(keep.size());

@@ -1,19 +1,17 @@
 #include "engine/meshimport/MeshRemesh.h"
 
 #include "engine/io/FileLimits.h"
+#include "engine/meshimport/CgalSurface.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <glm/geometric.hpp>
 
 #include <cmath>
 #include <exception>
 #include <iterator>
-#include <map>
 #include <sstream>
 
 namespace palpate {
@@ -21,8 +19,7 @@ namespace palpate {
 namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Mesh = CgalMesh;
 
 std::string millimetres(double value) {
     std::ostringstream s;
@@ -42,12 +39,7 @@ std::string remeshIsotropic(TriangleSurface& surface, const MeshRemeshDef& def,
     if (!(def.edgeMm > 0.0) || !std::isfinite(def.edgeMm)) return "the remeshing edge length must be a positive number of mm";
     try {
         Mesh mesh;
-        std::vector<Mesh::Vertex_index> handles;
-        handles.reserve(surface.positionsMm.size());
-        for (const glm::dvec3& p : surface.positionsMm) handles.push_back(mesh.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
-        for (const auto& t : surface.triangles)
-            if (mesh.add_face(handles[t[0]], handles[t[1]], handles[t[2]]) == Mesh::null_face())
-                return "the surface is not a manifold mesh (repair it first)";
+        if (!toCgalMesh(surface, mesh)) return "the surface is not a manifold mesh (repair it first)";
 
         // A target far below the mesh's scale would make millions of triangles: refuse it before
         // CGAL spends minutes and gigabytes on it.
@@ -77,20 +69,7 @@ std::string remeshIsotropic(TriangleSurface& surface, const MeshRemeshDef& def,
         }
         mesh.collect_garbage();
 
-        TriangleSurface out;
-        std::map<Mesh::Vertex_index, std::uint32_t> index;
-        for (Mesh::Vertex_index v : mesh.vertices()) {
-            index[v] = std::uint32_t(out.positionsMm.size());
-            const auto& p = mesh.point(v);
-            out.positionsMm.emplace_back(p.x(), p.y(), p.z());
-        }
-        for (Mesh::Face_index f : mesh.faces()) {
-            std::array<std::uint32_t, 3> t{};
-            int k = 0;
-            for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-                if (k < 3) t[k++] = index[v];
-            out.triangles.push_back(t);
-        }
+        TriangleSurface out = toTriangleSurface(mesh);
         changes.push_back("remeshed to " + millimetres(def.edgeMm) + " edges (" + std::to_string(iterations) +
                           " iterations): " + std::to_string(verticesBefore) + " vertices and " + std::to_string(facesBefore) +
                           " triangles became " + std::to_string(out.positionsMm.size()) + " and " +

@@ -1,6 +1,8 @@
 #include "engine/meshimport/MeshRepair.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "engine/core/CountedText.h"
+#include "engine/meshimport/CgalSurface.h"
+
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
@@ -13,13 +15,11 @@
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
 #include <exception>
 #include <iterator>
-#include <map>
 #include <string>
 
 namespace palpate {
@@ -27,13 +27,8 @@ namespace palpate {
 namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
-
-std::string count(std::size_t n, const char* one, const char* many) {
-    return std::to_string(n) + " " + (n == 1 ? one : many);
-}
+using Point = CgalKernel::Point_3;
+using Mesh = CgalMesh;
 
 /// A polygon's corners as a canonical key: the rotation starting at its smallest index.
 std::vector<std::size_t> rotatedToSmallest(const std::vector<std::size_t>& polygon) {
@@ -53,26 +48,6 @@ std::size_t reversedPolygons(const std::vector<std::vector<std::size_t>>& before
         if (rotatedToSmallest(reversed) == rotatedToSmallest(after[i])) ++n;
     }
     return n;
-}
-
-TriangleSurface toSurface(const Mesh& mesh) {
-    TriangleSurface s;
-    std::map<Mesh::Vertex_index, std::uint32_t> index;
-    s.positionsMm.reserve(mesh.number_of_vertices());
-    for (Mesh::Vertex_index v : mesh.vertices()) {
-        index[v] = std::uint32_t(s.positionsMm.size());
-        const Point& p = mesh.point(v);
-        s.positionsMm.emplace_back(p.x(), p.y(), p.z());
-    }
-    s.triangles.reserve(mesh.number_of_faces());
-    for (Mesh::Face_index f : mesh.faces()) {
-        std::array<std::uint32_t, 3> t{};
-        int k = 0;
-        for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-            if (k < 3) t[k++] = index[v];
-        if (k == 3) s.triangles.push_back(t);
-    }
-    return s;
 }
 
 }  // namespace
@@ -97,15 +72,15 @@ MeshRepairOutcome repairPolygonSoup(PolygonSoup soup, const MeshRepairDef& def, 
         // 1. The soup: duplicate points merged, then degenerate, duplicate and invalid polygons and
         //    unused points removed.
         if (const std::size_t merged = PMP::merge_duplicate_points_in_polygon_soup(points, polygons))
-            out.changes.push_back("merged " + count(merged, "duplicate vertex", "duplicate vertices"));
+            out.changes.push_back("merged " + countedText(merged, "duplicate vertex", "duplicate vertices"));
         const std::size_t pointsBefore = points.size(), polygonsBefore = polygons.size();
         PMP::repair_polygon_soup(points, polygons);
         if (polygons.size() < polygonsBefore)
             out.changes.push_back("removed " +
-                                  count(polygonsBefore - polygons.size(), "degenerate or duplicate face",
+                                  countedText(polygonsBefore - polygons.size(), "degenerate or duplicate face",
                                         "degenerate or duplicate faces"));
         if (points.size() < pointsBefore)
-            out.changes.push_back("removed " + count(pointsBefore - points.size(), "unused vertex", "unused vertices"));
+            out.changes.push_back("removed " + countedText(pointsBefore - points.size(), "unused vertex", "unused vertices"));
         if (polygons.empty()) {
             out.error = "no faces are left after removing the degenerate ones";
             return out;
@@ -126,9 +101,9 @@ MeshRepairOutcome repairPolygonSoup(PolygonSoup soup, const MeshRepairDef& def, 
             flipped = polygons.size() - flipped;
         }
         if (flipped)
-            out.changes.push_back("reversed " + count(flipped, "face", "faces") + " to make the orientation consistent");
+            out.changes.push_back("reversed " + countedText(flipped, "face", "faces") + " to make the orientation consistent");
         if (points.size() > pointsBeforeOrient)
-            out.changes.push_back("split " + count(points.size() - pointsBeforeOrient, "non-manifold vertex", "non-manifold vertices") +
+            out.changes.push_back("split " + countedText(points.size() - pointsBeforeOrient, "non-manifold vertex", "non-manifold vertices") +
                                   " (copies made so that each fan of faces is its own)");
         if (stop()) return cancel();
 
@@ -145,16 +120,16 @@ MeshRepairOutcome repairPolygonSoup(PolygonSoup soup, const MeshRepairDef& def, 
 
         // 3. Borders that run along each other (a seam left by a splitting exporter) are stitched.
         if (const std::size_t stitched = PMP::stitch_borders(mesh))
-            out.changes.push_back("stitched " + count(stitched, "pair of border edges", "pairs of border edges") +
+            out.changes.push_back("stitched " + countedText(stitched, "pair of border edges", "pairs of border edges") +
                                   " that ran along each other");
         if (const std::size_t split = PMP::duplicate_non_manifold_vertices(mesh))
-            out.changes.push_back("split " + count(split, "non-manifold vertex", "non-manifold vertices"));
+            out.changes.push_back("split " + countedText(split, "non-manifold vertex", "non-manifold vertices"));
         {
             const std::size_t before = mesh.number_of_faces();
             PMP::remove_degenerate_faces(mesh);
             mesh.collect_garbage();
             if (mesh.number_of_faces() < before)
-                out.changes.push_back("removed " + count(before - mesh.number_of_faces(), "degenerate triangle", "degenerate triangles"));
+                out.changes.push_back("removed " + countedText(before - mesh.number_of_faces(), "degenerate triangle", "degenerate triangles"));
         }
         if (stop()) return cancel();
 
@@ -168,8 +143,8 @@ MeshRepairOutcome repairPolygonSoup(PolygonSoup soup, const MeshRepairDef& def, 
                 const std::size_t removed = PMP::keep_largest_connected_components(mesh, 1);
                 mesh.collect_garbage();
                 out.changes.push_back("kept the largest of " + std::to_string(components) + " components (removed " +
-                                      count(removed, "component", "components") + ", " +
-                                      count(facesBefore - mesh.number_of_faces(), "triangle", "triangles") + ")");
+                                      countedText(removed, "component", "components") + ", " +
+                                      countedText(facesBefore - mesh.number_of_faces(), "triangle", "triangles") + ")");
             } else if (components > 1) {
                 out.changes.push_back("kept all " + std::to_string(components) + " components");
             }
@@ -189,11 +164,11 @@ MeshRepairOutcome repairPolygonSoup(PolygonSoup soup, const MeshRepairDef& def, 
                 const bool faired = std::get<0>(PMP::triangulate_refine_and_fair_hole(
                     mesh, h, std::back_inserter(faces), std::back_inserter(vertices)));
                 if (faces.empty()) {
-                    out.changes.push_back("could not fill a hole of " + count(edges, "edge", "edges"));
+                    out.changes.push_back("could not fill a hole of " + countedText(edges, "edge", "edges"));
                     continue;
                 }
-                out.changes.push_back("filled a hole of " + count(edges, "edge", "edges") + " with " +
-                                      count(faces.size(), "triangle", "triangles") +
+                out.changes.push_back("filled a hole of " + countedText(edges, "edge", "edges") + " with " +
+                                      countedText(faces.size(), "triangle", "triangles") +
                                       (faired ? "" : " (not faired: the patch is flat)"));
             }
         }
@@ -208,7 +183,7 @@ MeshRepairOutcome repairPolygonSoup(PolygonSoup soup, const MeshRepairDef& def, 
             out.error = "no faces are left after repair";
             return out;
         }
-        out.surface = toSurface(mesh);
+        out.surface = toTriangleSurface(mesh);
     } catch (const std::exception& e) {
         out.error = std::string("repair failed: ") + e.what();
         out.surface.reset();
