@@ -1,13 +1,14 @@
 #pragma once
 // A graded exercise: what the trainee must do on which tissue, in how long, and how it is graded.
-// Three types: press a sequence of surface targets with a force inside a window and hold it; find
+// Four types: press a sequence of surface targets with a force inside a window and hold it; find
 // a hidden stiff inclusion by palpation and mark it; trace a path on the surface keeping contact
-// and the force in a band. Stored as versioned JSON (ExerciseFile.h); every key is in
+// and the force in a band; examine the surface for zero or more lumps under it and mark each. Stored as versioned JSON (ExerciseFile.h); every key is in
 // docs/scoring.md.
 
 #include "engine/core/MeshUnit.h"
 #include "engine/lod/LodNeeds.h"
 #include "engine/exercise/Metric.h"
+#include "engine/exercise/PalpationResult.h"
 #include "engine/exercise/Rubric.h"
 
 #include <glm/vec3.hpp>
@@ -54,6 +55,37 @@ struct FindLumpDef {
     InclusionDef inclusion;
 };
 
+/// Detect lumps: one lump hidden under the surface (docs/scoring.md, "Lumps under the surface"): a
+/// sphere of `radiusMm` whose top lies `depthMm` below the surface point `at`, `contrast` times
+/// stiffer than the tissue. Pressing above it is soft until the surface has sunk to the lump's top,
+/// then stiffer: a deeper lump needs a firmer press to be felt.
+struct LumpDef {
+    SurfacePoint at;          ///< the surface point above the lump's centre, snapped to a vertex
+    double radiusMm = 6.0;
+    double depthMm = 2.0;     ///< from the surface to the lump's top, >= 0
+    double contrast = 4.0;    ///< lump stiffness / tissue stiffness, > 1
+};
+
+/// Adaptive difficulty (docs/scoring.md, "Staircase"): the level of one lump property across a
+/// trainee's trials, made harder after `down` passed trials in a row and easier after `up` failed
+/// ones, between the easiest and the hardest level.
+struct StaircaseDef {
+    enum class Parameter { Contrast, DepthMm };
+    Parameter parameter = Parameter::Contrast;  ///< every lump of the exercise takes the level
+    double start = 4.0;      ///< the first trial's level
+    double step = 0.5;       ///< the change per move, > 0
+    double easiest = 6.0;    ///< contrast: high is easy; depth: shallow is easy
+    double hardest = 1.2;
+    int down = 2;
+    int up = 1;
+};
+
+struct DetectLumpsDef {
+    std::vector<LumpDef> lumps;      ///< may be empty: then every finding is a false alarm
+    double toleranceMm = 5.0;        ///< a finding within a lump's radius plus this of its centre can hit it
+    std::optional<StaircaseDef> staircase;
+};
+
 /// Trace: a polyline on the surface.
 struct TraceDef {
     std::vector<SurfacePoint> path;  ///< at least 2 points, each snapped to a vertex
@@ -77,6 +109,9 @@ struct Exercise {
     PressTargetsDef pressTargets;   ///< type PressTargets
     FindLumpDef findLump;           ///< type FindLump
     TraceDef trace;                 ///< type Trace
+    DetectLumpsDef detectLumps;     ///< type DetectLumps
+    /// "coverage": which contacts examine the surface (find the lump, detect lumps).
+    CoverageDef coverage;
     /// The rubric lines the exercise sets; metrics without one use defaultRubricItem().
     std::array<std::optional<RubricItem>, kMetricCount> rubric{};
     /// "needs": the accuracy target and haptic budget the model must meet (docs/lod.md); absent

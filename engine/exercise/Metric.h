@@ -10,7 +10,7 @@
 
 namespace palpate {
 
-enum class ExerciseType { PressTargets, FindLump, Trace };
+enum class ExerciseType { PressTargets, FindLump, Trace, DetectLumps };
 
 enum class Metric {
     Completion,              ///< 0..1: targets achieved, lump marked, path covered
@@ -31,6 +31,11 @@ enum class Metric {
     ContactFraction,         ///< trace: time in contact / tracing time
     BandFraction,            ///< trace: time in contact with |F| in the band / tracing time
     PathDistanceMm,          ///< trace: mean distance of the contact point from the path
+    Sensitivity,             ///< detect lumps: hits / lumps
+    PositivePredictiveValue, ///< detect lumps: hits / findings
+    FalseAlarms,             ///< detect lumps: findings matched to no lump
+    LocalisationMm,          ///< detect lumps: mean distance of a hit's finding from its lump's centre
+    CoverageFraction,        ///< find the lump, detect lumps: surface area examined firmly enough / all
     Count
 };
 
@@ -46,7 +51,7 @@ std::optional<Metric> parseMetric(std::string_view name);
 /// Whether an exercise of this type measures the metric.
 bool metricApplies(Metric metric, ExerciseType type);
 
-std::string_view exerciseTypeName(ExerciseType type);  ///< "press_targets", "find_lump", "trace"
+std::string_view exerciseTypeName(ExerciseType type);  ///< "press_targets", "find_lump", "trace", "detect_lumps"
 std::optional<ExerciseType> parseExerciseType(std::string_view name);
 
 }  // namespace palpate

@@ -5,8 +5,10 @@
 // from a recording; for one session both are equal bit for bit.
 
 #include "engine/exercise/Metric.h"
+#include "engine/exercise/PalpationResult.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,6 +52,9 @@ struct ScoreGuidance {
     double distanceToTargetMm = 0.0;
     // Find the lump.
     bool marked = false;
+    // Detect lumps: findings marked so far, and the covered share of the surface.
+    int findings = 0;
+    double coverageFraction = 0.0;
     // Trace.
     double pathCovered = 0.0;       ///< 0..1
     double distanceToPathMm = 0.0;
@@ -67,6 +72,10 @@ struct ScoreReport {
     std::uint64_t firstTick = 0, lastTick = 0;
     std::uint64_t marks = 0;                ///< marks seen (button presses and Mark events)
     std::vector<std::string> warnings;
+    /// Find the lump and detect lumps: coverage, the heat map, force by phase, detection, feedback.
+    std::optional<PalpationSummary> palpation;
+    /// The guidance aids shown while the session ran (filled by the GUI; empty from the CLI).
+    std::vector<GuidanceAid> aids;
 
     /// The line for a metric (nullptr when the type does not measure it).
     const MetricResult* find(Metric metric) const;

@@ -4,6 +4,8 @@
 // successful ones press about 15 % harder in palpation than in search (Laufer, Klatzky and Pugh
 // 2024). Each contact sample is one or the other by the tool's speed along the surface.
 
+#include "engine/exercise/PalpationResult.h"
+
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -21,18 +23,6 @@ struct ForcePhaseDef {
 struct ForceMotionSample {
     double forceN = 0.0;
     double tangentialSpeedMmPerS = 0.0;
-};
-
-struct ForcePercentiles {
-    std::size_t samples = 0;
-    double p10N = 0.0, p50N = 0.0, p90N = 0.0, maxN = 0.0;
-};
-
-struct ForceByPhase {
-    std::optional<ForcePercentiles> search;     ///< absent when no sample was search
-    std::optional<ForcePercentiles> palpation;  ///< absent when no sample was palpation
-    /// Median palpation force over median search force (absent unless both phases occurred).
-    std::optional<double> palpationOverSearch;
 };
 
 /// Percentiles by linear interpolation between order statistics (the "type 7" definition).

@@ -4,17 +4,13 @@
 // by area, and the largest force seen at each vertex is the heat map.
 
 #include "engine/core/TissueMesh.h"
+#include "engine/exercise/PalpationResult.h"
 
 #include <glm/vec3.hpp>
 
 #include <vector>
 
 namespace palpate {
-
-struct CoverageDef {
-    double minForceN = 1.0;   ///< a lighter contact examines nothing
-    double radiusMm = 5.0;    ///< around the contact point (the tool's radius, by default)
-};
 
 class PalpationCoverage {
 public:
