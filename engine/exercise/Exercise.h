@@ -23,6 +23,10 @@ namespace palpate {
 
 inline constexpr int kExerciseVersion = 1;
 
+/// The text of the Mark event with which a trainee ends a detect-lumps examination (every other
+/// mark is a finding).
+inline constexpr const char* kExaminationDoneMark = "examination done";
+
 /// A point on the tissue surface: a vertex of the mesh file (in the file's own numbering, as a
 /// mesh viewer shows it), or a point in the mesh's frame, snapped to the nearest vertex at rest.
 struct SurfacePoint {
