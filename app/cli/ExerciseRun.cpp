@@ -9,7 +9,7 @@
 namespace palpate::cli {
 
 std::unique_ptr<ExerciseRun> ExerciseRun::load(const std::string& exercisePath, const std::string& markAt,
-                                               std::string& error) {
+                                               const std::string& doneAt, std::string& error) {
     auto loaded = loadExercise(exercisePath);
     if (!loaded.exercise) {
         for (const auto& e : loaded.errors) error += (error.empty() ? "" : "\n") + e;
@@ -38,6 +38,22 @@ std::unique_ptr<ExerciseRun> ExerciseRun::load(const std::string& exercisePath, 
         }
     }
     std::sort(run->mMarksS.begin(), run->mMarksS.end());
+    if (!doneAt.empty()) {
+        try {
+            std::size_t used = 0;
+            run->mDoneS = std::stod(doneAt, &used);
+            if (used != doneAt.size() || !std::isfinite(run->mDoneS) || run->mDoneS < 0.0) throw std::invalid_argument(doneAt);
+        } catch (...) {
+            error = "--done-at: '" + doneAt + "' is not a time in seconds";
+            return nullptr;
+        }
+        if (run->mAssets.exercise.type != ExerciseType::DetectLumps) {
+            error = "--done-at: the exercise '" + run->mAssets.exercise.name + "' is " +
+                    std::string(exerciseTypeName(run->mAssets.exercise.type)) +
+                    ", which ends by itself (only detect_lumps examinations are finished by the trainee)";
+            return nullptr;
+        }
+    }
     return run;
 }
 
@@ -60,6 +76,10 @@ void ExerciseRun::poll(HapticLoop& loop, RecordingSession* session) {
     if (session && mNextMark < mMarksS.size()) {
         const double nowS = loop.newestSnapshot().timeS;
         for (; mNextMark < mMarksS.size() && nowS >= mMarksS[mNextMark]; ++mNextMark) session->mark("mark (--mark-at)");
+    }
+    if (session && mDoneS >= 0.0 && !mDoneMarked && loop.newestSnapshot().timeS >= mDoneS) {
+        session->mark(kExaminationDoneMark);
+        mDoneMarked = true;
     }
     if (mLive) mLive->poll();
 }

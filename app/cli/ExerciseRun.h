@@ -1,5 +1,5 @@
 #pragma once
-// `palpate-cli run --exercise FILE [--mark-at S,..]`: a headless session of a graded exercise. The
+// `palpate-cli run --exercise FILE [--mark-at S,..] [--done-at S]`: a headless session of a graded exercise. The
 // session runs on the exercise's mesh and tissue preset with its physics (find the lump's
 // inclusion), its recording's note carries the exercise, marks are pressed at the given loop
 // times (a scripted trainee's button), and a LiveScorer follows the recording for the score.
@@ -19,9 +19,10 @@ namespace palpate::cli {
 class ExerciseRun {
 public:
     /// Loads the exercise, its mesh and preset; null with `error` (every problem, one a line).
-    /// `markAt`: loop times in seconds, comma-separated ("" for none).
+    /// `markAt`: loop times in seconds, comma-separated ("" for none); `doneAt`: the loop time at
+    /// which a detect-lumps examination is finished ("" for never).
     static std::unique_ptr<ExerciseRun> load(const std::string& exercisePath, const std::string& markAt,
-                                             std::string& error);
+                                             const std::string& doneAt, std::string& error);
 
     const Exercise& exercise() const { return mAssets.exercise; }
     const TissuePreset& preset() const { return mAssets.preset; }
@@ -44,6 +45,8 @@ private:
     ExerciseAssets mAssets;
     std::vector<double> mMarksS;
     std::size_t mNextMark = 0;
+    double mDoneS = -1.0;
+    bool mDoneMarked = false;
     std::unique_ptr<LiveScorer> mLive;
 };
 

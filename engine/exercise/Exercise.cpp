@@ -56,6 +56,13 @@ double meanTargetToleranceMm(const Exercise& e) {
     return sum / double(e.pressTargets.targets.size());
 }
 
+double meanLumpRadiusMm(const Exercise& e) {
+    if (e.detectLumps.lumps.empty()) return 6.0;
+    double sum = 0.0;
+    for (const LumpDef& l : e.detectLumps.lumps) sum += l.radiusMm;
+    return sum / double(e.detectLumps.lumps.size());
+}
+
 double defaultWeight(ExerciseType type, Metric m) {
     switch (type) {
         case ExerciseType::PressTargets:
@@ -91,8 +98,39 @@ double defaultWeight(ExerciseType type, Metric m) {
                 case Metric::DamageTimeS: return 10;
                 default: return 0;
             }
+        case ExerciseType::DetectLumps:
+            switch (m) {
+                case Metric::Sensitivity: return 35;
+                case Metric::FalseAlarms: return 20;
+                case Metric::LocalisationMm: return 10;
+                case Metric::CoverageFraction: return 15;
+                case Metric::TimeS: return 5;
+                case Metric::ExcessiveForceFraction: return 5;
+                case Metric::DamageTimeS: return 10;
+                default: return 0;
+            }
     }
     return 0;
+}
+
+void validateStaircase(Checker& c, const StaircaseDef& s) {
+    const std::string key = "detect_lumps.staircase";
+    const bool contrast = s.parameter == StaircaseDef::Parameter::Contrast;
+    // The levels a lump can take: a contrast above 1 (1 is no lump), a depth of 0 or more.
+    const double lo = contrast ? 1.0 : 0.0, hi = 100.0;
+    bool ok = c.range(key + ".easiest", s.easiest, lo, hi, contrast);
+    ok = c.range(key + ".hardest", s.hardest, lo, hi, contrast) && ok;
+    if (ok && s.easiest == s.hardest) c.error(key + ".hardest", "equals easiest: the staircase could not move");
+    if (ok && contrast && s.easiest < s.hardest)
+        c.error(key + ".easiest", text(s.easiest) + " is below hardest " + text(s.hardest) +
+                                      ": a higher contrast is easier to feel");
+    if (ok && !contrast && s.easiest > s.hardest)
+        c.error(key + ".easiest", text(s.easiest) + " mm is deeper than hardest " + text(s.hardest) +
+                                      " mm: a shallower lump is easier to feel");
+    if (ok) c.range(key + ".start", s.start, std::min(s.easiest, s.hardest), std::max(s.easiest, s.hardest));
+    if (ok) c.range(key + ".step", s.step, 0.0, std::fabs(s.easiest - s.hardest), true);
+    c.range(key + ".down", s.down, 1, 10);
+    c.range(key + ".up", s.up, 1, 10);
 }
 
 }  // namespace
@@ -124,6 +162,12 @@ RubricItem defaultRubricItem(const Exercise& e, Metric m) {
         case Metric::ContactFraction: set(0.95, 0.5); break;
         case Metric::BandFraction: set(0.8, 0.2); break;
         case Metric::PathDistanceMm: set(0.5 * e.trace.toleranceMm, 2.0 * e.trace.toleranceMm); break;
+        case Metric::Sensitivity: set(1.0, 0.0); break;
+        case Metric::PositivePredictiveValue: set(1.0, 0.0); break;
+        case Metric::FalseAlarms: set(0.0, 3.0); break;
+        // A hit lies at most radius + tolerance from its lump's centre: that is zero marks.
+        case Metric::LocalisationMm: set(0.5 * meanLumpRadiusMm(e), meanLumpRadiusMm(e) + e.detectLumps.toleranceMm); break;
+        case Metric::CoverageFraction: set(0.8, 0.2); break;
         case Metric::Count: break;
     }
     return item;
@@ -135,6 +179,10 @@ Rubric effectiveRubric(const Exercise& e) {
         const Metric m = Metric(i);
         rubric[i] = e.rubric[i] ? *e.rubric[i] : defaultRubricItem(e, m);
         if (!metricApplies(m, e.type)) rubric[i].weight = 0.0;
+        // Without lumps there is nothing to find or to localise: those lines do not count.
+        if (e.type == ExerciseType::DetectLumps && e.detectLumps.lumps.empty() &&
+            (m == Metric::Sensitivity || m == Metric::LocalisationMm))
+            rubric[i].weight = 0.0;
     }
     return rubric;
 }
@@ -187,6 +235,26 @@ std::vector<std::string> validateExercise(const Exercise& e) {
             c.range("trace.tolerance_mm", t.toleranceMm, 0.0, 1000.0, true);
             break;
         }
+        case ExerciseType::DetectLumps: {
+            const DetectLumpsDef& d = e.detectLumps;
+            if (d.lumps.size() > std::size_t(kMaxLumps))
+                c.error("detect_lumps.lumps", "has more than " + std::to_string(kMaxLumps) + " lumps");
+            for (std::size_t i = 0; i < d.lumps.size() && i < std::size_t(kMaxLumps); ++i) {
+                const LumpDef& l = d.lumps[i];
+                const std::string key = "detect_lumps.lumps[" + std::to_string(i) + "]";
+                c.point(key, l.at);
+                c.range(key + ".radius_mm", l.radiusMm, 0.0, 100.0, true);
+                c.range(key + ".depth_mm", l.depthMm, 0.0, 100.0);
+                c.range(key + ".contrast", l.contrast, 1.0, 100.0, true);
+            }
+            c.range("detect_lumps.tolerance_mm", d.toleranceMm, 0.0, 1000.0, true);
+            if (d.staircase) validateStaircase(c, *d.staircase);
+            break;
+        }
+    }
+    if (e.type == ExerciseType::FindLump || e.type == ExerciseType::DetectLumps) {
+        c.range("coverage.min_force_n", e.coverage.minForceN, 0.0, 1000.0);
+        c.range("coverage.radius_mm", e.coverage.radiusMm, 0.0, 1000.0, true);
     }
 
     double weights = 0.0;

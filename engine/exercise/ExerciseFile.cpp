@@ -64,6 +64,61 @@ Json pointJson(const SurfacePoint& p) {
     return j;
 }
 
+constexpr const char* kStaircaseParameters[] = {"contrast", "depth_mm"};
+
+void readStaircase(JsonReader& r, const Json& j, const std::string& path, StaircaseDef& out) {
+    if (!r.object(j, path, {"parameter", "start", "step", "easiest", "hardest", "down", "up"})) return;
+    std::string parameter;
+    if (r.text(j, path, "parameter", parameter, true)) {
+        if (parameter == kStaircaseParameters[0]) out.parameter = StaircaseDef::Parameter::Contrast;
+        else if (parameter == kStaircaseParameters[1]) out.parameter = StaircaseDef::Parameter::DepthMm;
+        else r.error(JsonReader::join(path, "parameter"), "unknown parameter '" + parameter + "' (use contrast or depth_mm)");
+    }
+    r.number(j, path, "start", out.start, true);
+    r.number(j, path, "step", out.step, true);
+    r.number(j, path, "easiest", out.easiest, true);
+    r.number(j, path, "hardest", out.hardest, true);
+    double down = out.down, up = out.up;
+    if (r.number(j, path, "down", down)) {
+        if (down != std::floor(down) || down < 1 || down > 10)
+            r.error(JsonReader::join(path, "down"), "must be a whole number from 1 to 10");
+        else out.down = int(down);
+    }
+    if (r.number(j, path, "up", up)) {
+        if (up != std::floor(up) || up < 1 || up > 10) r.error(JsonReader::join(path, "up"), "must be a whole number from 1 to 10");
+        else out.up = int(up);
+    }
+}
+
+void readDetectLumps(JsonReader& r, const Json& s, DetectLumpsDef& out) {
+    const std::string path = "detect_lumps";
+    if (!r.object(s, path, {"lumps", "tolerance_mm", "staircase"})) return;
+    r.number(s, path, "tolerance_mm", out.toleranceMm);
+    if (!s.contains("lumps")) {
+        r.error("detect_lumps.lumps", "missing (an exercise without lumps says \"lumps\": [])");
+    } else if (!s.at("lumps").is_array()) {
+        r.error("detect_lumps.lumps", "must be an array of lumps");
+    } else {
+        const Json& a = s.at("lumps");
+        for (std::size_t i = 0; i < a.size() && i <= std::size_t(kMaxLumps); ++i) {
+            const std::string key = "detect_lumps.lumps[" + std::to_string(i) + "]";
+            LumpDef lump;
+            if (r.object(a[i], key, {"vertex", "point_mm", "radius_mm", "depth_mm", "contrast"})) {
+                readSurfacePoint(r, a[i], key, lump.at);
+                r.number(a[i], key, "radius_mm", lump.radiusMm, true);
+                r.number(a[i], key, "depth_mm", lump.depthMm, true);
+                r.number(a[i], key, "contrast", lump.contrast, true);
+            }
+            out.lumps.push_back(lump);
+        }
+    }
+    if (s.contains("staircase")) {
+        StaircaseDef staircase;
+        readStaircase(r, s.at("staircase"), "detect_lumps.staircase", staircase);
+        out.staircase = staircase;
+    }
+}
+
 }  // namespace
 
 namespace {
@@ -76,7 +131,7 @@ ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::strin
     const Json& j = *parsed;
     if (!r.object(j, "",
                   {"format", "version", "name", "description", "type", "mesh", "mesh_unit", "tissue_preset", "time_limit_s",
-                   "rubric", "press_targets", "find_lump", "trace", "damage", "force", "needs"}))
+                   "rubric", "press_targets", "find_lump", "trace", "detect_lumps", "coverage", "damage", "force", "needs"}))
         return result;
 
     std::string format;
@@ -100,7 +155,7 @@ ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::strin
             e.type = *t;
             typeKnown = true;
         } else {
-            r.error("type", "unknown type '" + type + "' (use press_targets, find_lump or trace)");
+            r.error("type", "unknown type '" + type + "' (use press_targets, find_lump, trace or detect_lumps)");
         }
     }
     r.text(j, "", "mesh", e.meshPath, true);
@@ -114,7 +169,8 @@ ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::strin
         r.number(j.at("force"), "force", "excessive_n", e.excessiveForceN);
 
     // The section of the type, and no other.
-    for (const ExerciseType t : {ExerciseType::PressTargets, ExerciseType::FindLump, ExerciseType::Trace}) {
+    for (const ExerciseType t :
+         {ExerciseType::PressTargets, ExerciseType::FindLump, ExerciseType::Trace, ExerciseType::DetectLumps}) {
         const std::string key(exerciseTypeName(t));
         if (typeKnown && t == e.type && !j.contains(key)) r.error(key, "missing (type is " + type + ")");
         if (typeKnown && t != e.type && j.contains(key)) r.error(key, "given, but type is " + type);
@@ -190,6 +246,14 @@ ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::strin
                 }
             }
         }
+    }
+    if (j.contains("detect_lumps") && (!typeKnown || e.type == ExerciseType::DetectLumps))
+        readDetectLumps(r, j.at("detect_lumps"), e.detectLumps);
+    if (j.contains("coverage") && r.object(j.at("coverage"), "coverage", {"min_force_n", "radius_mm"})) {
+        if (typeKnown && e.type != ExerciseType::FindLump && e.type != ExerciseType::DetectLumps)
+            r.error("coverage", "given, but type is " + type + " (coverage is scored for find_lump and detect_lumps)");
+        r.number(j.at("coverage"), "coverage", "min_force_n", e.coverage.minForceN);
+        r.number(j.at("coverage"), "coverage", "radius_mm", e.coverage.radiusMm);
     }
     if (j.contains("needs") && r.object(j.at("needs"), "needs", {"max_error", "budget_us"})) {
         LodNeeds needs;
@@ -302,7 +366,32 @@ std::string exerciseToJson(const Exercise& e, int indent) {
                           {"tolerance_mm", e.trace.toleranceMm}};
             break;
         }
+        case ExerciseType::DetectLumps: {
+            Json lumps = Json::array();
+            for (const LumpDef& l : e.detectLumps.lumps) {
+                Json o = pointJson(l.at);
+                o["radius_mm"] = l.radiusMm;
+                o["depth_mm"] = l.depthMm;
+                o["contrast"] = l.contrast;
+                lumps.push_back(o);
+            }
+            Json d = {{"lumps", lumps}, {"tolerance_mm", e.detectLumps.toleranceMm}};
+            if (const auto& st = e.detectLumps.staircase)
+                d["staircase"] = {{"parameter", kStaircaseParameters[int(st->parameter)]},
+                                  {"start", st->start},
+                                  {"step", st->step},
+                                  {"easiest", st->easiest},
+                                  {"hardest", st->hardest},
+                                  {"down", st->down},
+                                  {"up", st->up}};
+            j["detect_lumps"] = d;
+            break;
+        }
     }
+    // Only for the palpation types, and only when not the defaults: older files write back unchanged.
+    if ((e.type == ExerciseType::FindLump || e.type == ExerciseType::DetectLumps) &&
+        (e.coverage.minForceN != CoverageDef{}.minForceN || e.coverage.radiusMm != CoverageDef{}.radiusMm))
+        j["coverage"] = {{"min_force_n", e.coverage.minForceN}, {"radius_mm", e.coverage.radiusMm}};
     Json rubric = Json::object();
     for (std::size_t i = 0; i < kMetricCount; ++i)
         if (e.rubric[i])

@@ -20,6 +20,18 @@ double segmentDistance(const glm::vec3& p, const glm::vec3& a, const glm::vec3& 
     return glm::length(pa - t * ba);
 }
 
+/// The distance from `origin` along the unit direction `dir` to the sphere (centre, radius): the
+/// nearer crossing ahead, 0 when the origin is inside, negative when the ray misses it.
+double rayToSphereMm(const glm::dvec3& origin, const glm::dvec3& dir, const glm::dvec3& centre, double radius) {
+    const glm::dvec3 oc = origin - centre;
+    const double c = glm::dot(oc, oc) - radius * radius;
+    if (c <= 0.0) return 0.0;
+    const double b = glm::dot(oc, dir);
+    const double disc = b * b - c;
+    if (disc < 0.0 || b > 0.0) return -1.0;  // misses, or the sphere is behind
+    return -b - std::sqrt(disc);
+}
+
 }  // namespace
 
 VertexId ExerciseGeometry::snap(const SurfacePoint& point, const TissueMesh& mesh) {
@@ -52,6 +64,8 @@ std::shared_ptr<const ExerciseGeometry> ExerciseGeometry::build(const Exercise& 
     g->mRubric = effectiveRubric(exercise);
     g->mRestMm = mesh.restPositionsMm();
     g->mNormals = mesh.restNormals();
+    g->mNeighbourStart = mesh.neighbourStart();
+    g->mNeighbours = mesh.neighbours();
     const std::size_t n = mesh.vertexCount();
 
     g->mVertexAreaMm2.assign(n, 0.0f);
@@ -96,6 +110,47 @@ std::shared_ptr<const ExerciseGeometry> ExerciseGeometry::build(const Exercise& 
             }
             break;
         }
+        case ExerciseType::DetectLumps: {
+            // Each vertex looks straight in (along its rest normal): the first lump that ray meets
+            // is the one under it, and how far in it lies is where pressing starts to meet it.
+            g->mCompliance.assign(n, 1.0f);
+            g->mEngageDepthMm.assign(n, 0.0f);
+            g->mLumpOfVertex.assign(n, -1);
+            std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
+            for (std::size_t k = 0; k < exercise.detectLumps.lumps.size(); ++k) {
+                const LumpDef& def = exercise.detectLumps.lumps[k];
+                ResolvedLump lump;
+                lump.def = def;
+                lump.vertex = place(def.at, "detect_lumps.lumps[" + std::to_string(k) + "]");
+                if (lump.vertex == kNoVertex) break;
+                lump.surfaceMm = g->mRestMm[lump.vertex];
+                const glm::dvec3 centre = glm::dvec3(lump.surfaceMm) -
+                                          (def.depthMm + def.radiusMm) * glm::dvec3(g->mNormals[lump.vertex]);
+                lump.centreMm = glm::vec3(centre);
+                for (VertexId v = 0; v < n; ++v) {
+                    const double depth = rayToSphereMm(glm::dvec3(g->mRestMm[v]), -glm::dvec3(g->mNormals[v]), centre,
+                                                       def.radiusMm);
+                    // Met no deeper than the lump's centre lies under its own point: a ray that
+                    // crosses the whole body to reach it from behind is not over it.
+                    if (depth < 0.0 || depth > def.depthMm + def.radiusMm) continue;
+                    const float c = float(1.0 / def.contrast);
+                    // The nearest lump under a vertex is the one it meets; at equal depth the stiffer.
+                    if (depth < nearest[v] || (depth == nearest[v] && c < g->mCompliance[v])) {
+                        nearest[v] = depth;
+                        g->mCompliance[v] = c;
+                        g->mEngageDepthMm[v] = float(depth);
+                        g->mLumpOfVertex[v] = std::int16_t(k);
+                    }
+                }
+                g->mLumps.push_back(lump);
+            }
+            for (VertexId v = 0; v < n; ++v)
+                if (g->mLumpOfVertex[v] >= 0 && std::size_t(g->mLumpOfVertex[v]) < g->mLumps.size()) {
+                    ++g->mLumps[std::size_t(g->mLumpOfVertex[v])].footprintVertices;
+                    ++g->mInclusionVertices;
+                }
+            break;
+        }
         case ExerciseType::Trace: {
             for (std::size_t i = 0; i < exercise.trace.path.size(); ++i) {
                 const VertexId v = place(exercise.trace.path[i], "trace.path[" + std::to_string(i) + "]");
@@ -137,9 +192,10 @@ std::string applyExercisePhysics(const ExerciseGeometry& geometry, HapticScene& 
                " vertices, the scene has " + std::to_string(scene.mesh().vertexCount());
     auto* deformer = dynamic_cast<CoherentSlopeRing*>(&scene.model());
     if (!deformer)  // the paper's methods stay as published
-        return "the find-the-lump inclusion needs the coherent slope-ring method (the scene runs " + scene.model().name() + ")";
+        return "the exercise's lumps need the coherent slope-ring method (the scene runs " + scene.model().name() + ")";
     try {
-        deformer->setCompliance(geometry.compliance());
+        if (geometry.engageDepthMm().empty()) deformer->setCompliance(geometry.compliance());
+        else deformer->setLumps(geometry.compliance(), geometry.engageDepthMm());
     } catch (const std::exception& e) {
         return std::string("the inclusion cannot be applied: ") + e.what();
     }

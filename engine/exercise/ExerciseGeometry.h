@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,6 +22,15 @@ struct ResolvedTarget {
     VertexId vertex = kNoVertex;  ///< engine numbering
     glm::vec3 pointMm{0.0f};      ///< the vertex's rest position
     PressTarget def;
+};
+
+/// Detect lumps: one lump placed on the mesh (docs/scoring.md, "Lumps under the surface").
+struct ResolvedLump {
+    LumpDef def;
+    VertexId vertex = kNoVertex;  ///< the surface vertex above its centre (engine numbering)
+    glm::vec3 surfaceMm{0.0f};    ///< that vertex's rest position: where a finding should be
+    glm::vec3 centreMm{0.0f};     ///< the sphere's centre, depth + radius below it along the normal
+    std::size_t footprintVertices = 0;  ///< vertices with this lump under them
 };
 
 class ExerciseGeometry {
@@ -36,6 +46,9 @@ public:
     const std::vector<glm::vec3>& normals() const { return mNormals; }
     /// A third of the area of the triangles around each vertex (they sum to the surface area).
     const std::vector<float>& vertexAreasMm2() const { return mVertexAreaMm2; }
+    /// The mesh's adjacency (TissueMesh's compressed form), for walks over the surface.
+    const std::vector<std::uint32_t>& neighbourStart() const { return mNeighbourStart; }
+    const std::vector<VertexId>& neighbours() const { return mNeighbours; }
 
     const std::vector<ResolvedTarget>& targets() const { return mTargets; }
 
@@ -45,6 +58,12 @@ public:
     glm::vec3 lumpCentreMm() const { return mLumpCentreMm; }
     const std::vector<float>& compliance() const { return mCompliance; }
     std::size_t inclusionVertexCount() const { return mInclusionVertices; }
+    /// Detect lumps: the lumps, and for every vertex the depth below it at which a lump begins to
+    /// resist (engageDepthMm, 0 where there is none: with compliance 1 it does not matter) and the
+    /// lump under it (-1: none). The compliance above is 1 / contrast over a lump.
+    const std::vector<ResolvedLump>& lumps() const { return mLumps; }
+    const std::vector<float>& engageDepthMm() const { return mEngageDepthMm; }
+    const std::vector<std::int16_t>& lumpOfVertex() const { return mLumpOfVertex; }
 
     /// Trace: the polyline (snapped points), its length, and the points coverage is counted on
     /// (spaced at most 1 mm along it).
@@ -66,18 +85,23 @@ private:
     Rubric mRubric{};
     std::vector<glm::vec3> mRestMm, mNormals;
     std::vector<float> mVertexAreaMm2;
+    std::vector<std::uint32_t> mNeighbourStart;
+    std::vector<VertexId> mNeighbours;
     std::vector<ResolvedTarget> mTargets;
     VertexId mLumpVertex = kNoVertex;
     glm::vec3 mLumpCentreMm{0.0f};
     std::vector<float> mCompliance;
     std::size_t mInclusionVertices = 0;
+    std::vector<ResolvedLump> mLumps;
+    std::vector<float> mEngageDepthMm;
+    std::vector<std::int16_t> mLumpOfVertex;
     std::vector<glm::vec3> mPathMm, mCoverageMm;
     std::vector<VertexId> mPathVertices;
     double mPathLengthMm = 0.0;
 };
 
-/// Gives a scene the exercise's physics: for find-the-lump, the inclusion's compliance factors
-/// on its slope-ring model (the mesh must be the exercise's). "" or the problem. Not real-time:
+/// Gives a scene the exercise's physics: for find-the-lump, the inclusion's compliance factors,
+/// for detect-lumps the lumps' compliance and engagement depths, on its slope-ring model (the mesh must be the exercise's). "" or the problem. Not real-time:
 /// call before the scene goes to the loop (RecordingPlayer's prepareScene does it for replays).
 std::string applyExercisePhysics(const ExerciseGeometry& geometry, HapticScene& scene);
 

@@ -16,7 +16,7 @@ std::optional<Exercise> recordedExercise(const RecordingHeader& header, std::vec
 std::function<std::string(HapticScene&)> recordedExercisePhysics(const RecordingHeader& header) {
     std::vector<std::string> errors;
     const std::optional<Exercise> exercise = recordedExercise(header, errors);
-    if (!exercise || exercise->type != ExerciseType::FindLump) return {};
+    if (!exercise || (exercise->type != ExerciseType::FindLump && exercise->type != ExerciseType::DetectLumps)) return {};
     // The geometry is built once, on the first scene of the recorded mesh, and shared by the
     // copies of the function (the player rebuilds scenes when it seeks back).
     auto geometry = std::make_shared<std::shared_ptr<const ExerciseGeometry>>();

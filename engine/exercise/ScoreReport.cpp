@@ -48,6 +48,45 @@ std::string scoreReportToJson(const ScoreReport& r, int indent) {
                                {"in_window_s", t.inWindowS}});
         j["targets"] = targets;
     }
+    if (r.palpation) {
+        const PalpationSummary& p = *r.palpation;
+        auto maybe = [](const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); };
+        if (const auto& d = p.detection) {
+            Json lumps = Json::array();
+            for (std::size_t k = 0; k < d->findingOfLump.size(); ++k)
+                lumps.push_back({{"hit", d->findingOfLump[k] >= 0},
+                                 {"finding", d->findingOfLump[k] >= 0 ? Json(d->findingOfLump[k]) : Json(nullptr)},
+                                 {"localisation_mm", d->findingOfLump[k] >= 0 ? Json(d->localisationMm[k]) : Json(nullptr)}});
+            j["detection"] = {{"hits", d->hits},
+                              {"misses", d->misses},
+                              {"false_alarms", d->falseAlarms},
+                              {"sensitivity", maybe(d->sensitivity)},
+                              {"ppv", maybe(d->positivePredictive)},
+                              {"localisation_mm", maybe(d->meanLocalisationMm())},
+                              {"lumps", lumps}};
+            Json findings = Json::array();
+            for (const glm::dvec3& f : p.findingsMm) findings.push_back({f.x, f.y, f.z});
+            j["findings_mm"] = findings;
+        }
+        j["coverage_pct"] = 100.0 * p.coverageFraction;
+        j["coverage"] = {{"min_force_n", p.coverage.minForceN}, {"radius_mm", p.coverage.radiusMm}};
+        auto phase = [](const std::optional<ForcePercentiles>& f) {
+            if (!f) return Json(nullptr);
+            return Json{{"samples", f->samples}, {"p10_n", f->p10N}, {"p50_n", f->p50N}, {"p90_n", f->p90N}, {"max_n", f->maxN}};
+        };
+        j["force_by_phase"] = {{"search", phase(p.forceByPhase.search)},
+                               {"palpation", phase(p.forceByPhase.palpation)},
+                               {"palpation_over_search", maybe(p.forceByPhase.palpationOverSearch)}};
+        j["deepest_lump_reach_force_n"] = maybe(p.deepestLumpReachForceN);
+        Json feedback = Json::array();
+        for (const PalpationFeedback& f : p.feedback) feedback.push_back({{"key", f.key}, {"text", f.text}});
+        j["feedback"] = feedback;
+    }
+    if (!r.aids.empty()) {
+        Json aids = Json::array();
+        for (const GuidanceAid& a : r.aids) aids.push_back({{"name", a.name}, {"level", a.level}});
+        j["aids"] = aids;
+    }
     j["warnings"] = r.warnings;
     return indent < 0 ? j.dump() : j.dump(indent);
 }
@@ -92,6 +131,26 @@ std::string scoreReportToText(const ScoreReport& r) {
                   static_cast<unsigned long long>(r.lastTick), static_cast<unsigned long long>(r.ticksAfterEnd),
                   static_cast<unsigned long long>(r.marks));
     out << line;
+    if (r.palpation) {
+        const PalpationSummary& p = *r.palpation;
+        if (const auto& d = p.detection) {
+            std::snprintf(line, sizeof(line), "  lumps: %zu hit, %zu missed, %zu false alarms\n", d->hits, d->misses,
+                          d->falseAlarms);
+            out << line;
+        }
+        std::snprintf(line, sizeof(line), "  coverage %.1f %% of the surface at %.1f N or more\n",
+                      100.0 * p.coverageFraction, p.coverage.minForceN);
+        out << line;
+        auto phase = [&](const char* name, const std::optional<ForcePercentiles>& f) {
+            if (!f) return;
+            std::snprintf(line, sizeof(line), "  %s force: median %.2f N, 90th percentile %.2f N (%zu ticks)\n", name,
+                          f->p50N, f->p90N, f->samples);
+            out << line;
+        };
+        phase("search", p.forceByPhase.search);
+        phase("palpation", p.forceByPhase.palpation);
+        for (const PalpationFeedback& f : p.feedback) out << "  feedback: " << f.text << "\n";
+    }
     for (const std::string& w : r.warnings) out << "  warning: " << w << "\n";
     return out.str();
 }

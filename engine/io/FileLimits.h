@@ -23,6 +23,7 @@ inline constexpr InputKind kPresetFile{"a preset file", 1 * kMiB};
 
 /// The most press targets and trace path points an exercise may hold (docs/scoring.md).
 inline constexpr int kMaxPressTargets = 1000;
+inline constexpr int kMaxLumps = 100;
 inline constexpr int kMaxTracePathPoints = 10000;
 /// Exercises: the largest holds kMaxTracePathPoints points or kMaxPressTargets targets with every
 /// number at full precision, indented: about 1.4 MB (tests/io/test_json_safety.cpp checks it fits

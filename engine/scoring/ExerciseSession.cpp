@@ -36,10 +36,10 @@ std::optional<ExerciseAssets> loadExerciseAssets(const Exercise& exercise, const
         errors.push_back(source + ": " + error);
         return std::nullopt;
     }
-    if (exercise.type == ExerciseType::FindLump &&
+    if ((exercise.type == ExerciseType::FindLump || exercise.type == ExerciseType::DetectLumps) &&
         (a.preset.modelKind != ModelKind::SlopeRing || a.preset.method != SlopeRingMethod::Coherent)) {
         errors.push_back(source + ": tissue_preset: " + a.presetPath + " uses the " + presetModelName(a.preset) +
-                         " model; the find-the-lump inclusion needs the coherent model");
+                         " model; an exercise's lumps need the coherent model");
         return std::nullopt;
     }
     return a;

@@ -7,8 +7,8 @@
 namespace palpate {
 
 PalpationCoverage::PalpationCoverage(const TissueMesh& mesh, const CoverageDef& def)
-    : mMesh(mesh), mDef(def), mVertexAreaMm2(mesh.vertexCount(), 0.0), mPeakForceN(mesh.vertexCount(), 0.0f),
-      mStamp(mesh.vertexCount(), 0) {
+    : mRestMm(mesh.restPositionsMm()), mNeighbourStart(mesh.neighbourStart()), mNeighbours(mesh.neighbours()),
+      mDef(def), mVertexAreaMm2(mesh.vertexCount(), 0.0) {
     // A vertex stands for a third of each triangle around it.
     const auto& rest = mesh.restPositionsMm();
     for (const auto& t : mesh.triangles()) {
@@ -16,14 +16,27 @@ PalpationCoverage::PalpationCoverage(const TissueMesh& mesh, const CoverageDef& 
         for (VertexId v : t) mVertexAreaMm2[v] += third;
         mTotalAreaMm2 += 3.0 * third;
     }
-    mQueue.reserve(mesh.vertexCount());
+    reserveWork();
+}
+
+PalpationCoverage::PalpationCoverage(const ExerciseGeometry& geometry, const CoverageDef& def)
+    : mRestMm(geometry.restMm()), mNeighbourStart(geometry.neighbourStart()), mNeighbours(geometry.neighbours()),
+      mDef(def), mVertexAreaMm2(geometry.vertexAreasMm2().begin(), geometry.vertexAreasMm2().end()) {
+    for (double a : mVertexAreaMm2) mTotalAreaMm2 += a;
+    reserveWork();
+}
+
+void PalpationCoverage::reserveWork() {
+    mPeakForceN.assign(mRestMm.size(), 0.0f);
+    mStamp.assign(mRestMm.size(), 0);
+    mQueue.reserve(mRestMm.size());
 }
 
 void PalpationCoverage::add(VertexId touched, const glm::vec3& contactMm, double forceN) {
-    if (forceN < mDef.minForceN || touched >= mMesh.vertexCount()) return;
-    const auto& rest = mMesh.restPositionsMm();
-    const auto& start = mMesh.neighbourStart();
-    const auto& neighbours = mMesh.neighbours();
+    if (forceN < mDef.minForceN || touched >= mRestMm.size() || mNeighbourStart.size() != mRestMm.size() + 1) return;
+    const auto& rest = mRestMm;
+    const auto& start = mNeighbourStart;
+    const auto& neighbours = mNeighbours;
     const double radius2 = mDef.radiusMm * mDef.radiusMm;
     auto within = [&](VertexId v) {
         const glm::dvec3 d = glm::dvec3(rest[v]) - glm::dvec3(contactMm);

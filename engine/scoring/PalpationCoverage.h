@@ -4,10 +4,12 @@
 // by area, and the largest force seen at each vertex is the heat map.
 
 #include "engine/core/TissueMesh.h"
+#include "engine/exercise/ExerciseGeometry.h"
 #include "engine/exercise/PalpationResult.h"
 
 #include <glm/vec3.hpp>
 
+#include <span>
 #include <vector>
 
 namespace palpate {
@@ -15,6 +17,8 @@ namespace palpate {
 class PalpationCoverage {
 public:
     PalpationCoverage(const TissueMesh& mesh, const CoverageDef& def);
+    /// On an exercise's copy of the mesh (the scorer's: it keeps no mesh).
+    PalpationCoverage(const ExerciseGeometry& geometry, const CoverageDef& def);
 
     /// One contact sample: the touched vertex (where the walk starts), the contact point and the
     /// force's magnitude. Covers the vertices within the radius that the surface connects to the
@@ -27,7 +31,12 @@ public:
     const std::vector<float>& peakForceN() const { return mPeakForceN; }
 
 private:
-    const TissueMesh& mMesh;
+    void reserveWork();
+
+    // The surface: views of the mesh's or the geometry's arrays, which outlive this.
+    std::span<const glm::vec3> mRestMm;
+    std::span<const std::uint32_t> mNeighbourStart;
+    std::span<const VertexId> mNeighbours;
     CoverageDef mDef;
     std::vector<double> mVertexAreaMm2;
     double mTotalAreaMm2 = 0.0;

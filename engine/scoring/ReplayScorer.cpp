@@ -103,7 +103,7 @@ void ReplayScorer::feedMarks(std::uint64_t throughTick) {
                                                 [](std::uint64_t t, const RecordingEvent& e) { return t < e.tick; });
     for (; it != events.end() && it->tick <= throughTick; ++it)
         if (it->kind == EventKind::Mark) {
-            mScorer->addMark(it->tick);
+            mScorer->addMark(it->tick, Scorer::isExaminationDone(it->text));
             ++mMarksFed;
         }
     mMarksStarted = true;

@@ -1,11 +1,13 @@
 #include "engine/scoring/Scorer.h"
 
 #include "engine/exercise/Rubric.h"
+#include "engine/scoring/LumpDetection.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace palpate {
@@ -19,6 +21,20 @@ constexpr double kHoldSlackS = 1e-9;
 
 double distance(const glm::vec3& a, const glm::vec3& b) { return glm::length(glm::dvec3(a) - glm::dvec3(b)); }
 
+/// Sinks shallower than this say too little about the tissue's force per mm (the estimate of the
+/// force that reaches a lump).
+constexpr double kMinSinkForStiffnessMm = 0.5;
+/// At most this many force samples are kept for the phases (an hour at 1 kHz).
+constexpr double kMaxPhaseSamples = 3.6e6;
+/// Below this covered share the examination was not systematic enough (feedback).
+constexpr double kLowCoverageFraction = 0.6;
+
+std::string oneDecimal(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", v);
+    return text;
+}
+
 }  // namespace
 
 Scorer::Scorer(std::shared_ptr<const ExerciseGeometry> geometry, double periodS)
@@ -29,6 +45,14 @@ Scorer::Scorer(std::shared_ptr<const ExerciseGeometry> geometry, double periodS)
     mTargetErrorS.assign(targets, 0.0);
     mCovered.assign(mGeometry->coverageSamplesMm().size(), 0);
     mPendingMarks.reserve(16);
+    mPalpation = mExercise.type == ExerciseType::FindLump || mExercise.type == ExerciseType::DetectLumps;
+    if (mPalpation) {
+        mCoverage.emplace(*mGeometry, mExercise.coverage);
+        const double ticks = periodS > 0.0 ? std::ceil(mExercise.timeLimitS / periodS) + 16.0 : 0.0;
+        mPhaseSamples.reserve(std::size_t(std::min(ticks, kMaxPhaseSamples)));
+        mFindingsMm.reserve(64);
+        mLumpMaxSinkMm.assign(mGeometry->lumps().size(), 0.0);
+    }
     mGuidance.timeLeftS = mExercise.timeLimitS;
     if (mExercise.type == ExerciseType::PressTargets && targets > 0) {
         mGuidance.targetIndex = 0;
@@ -41,10 +65,12 @@ Scorer::Scorer(std::shared_ptr<const ExerciseGeometry> geometry, double periodS)
     }
 }
 
-void Scorer::addMark(std::uint64_t tick) {
-    ++mMarks;
-    mPendingMarks.push_back(tick);
+void Scorer::addMark(std::uint64_t tick, bool examinationDone) {
+    if (!examinationDone) ++mMarks;
+    mPendingMarks.push_back({tick, examinationDone});
 }
+
+bool Scorer::isExaminationDone(const std::string& markText) { return markText == kExaminationDoneMark; }
 
 void Scorer::addWarning(const std::string& warning) {
     if (std::find(mWarnings.begin(), mWarnings.end(), warning) == mWarnings.end()) mWarnings.push_back(warning);
@@ -69,7 +95,7 @@ void Scorer::addSample(const ScoreSample& s) {
     mLastTick = t.tick;
 
     // The device: position and buttons (a rising button bit is a mark).
-    bool markNow = false;
+    bool markNow = false, doneNow = false;
     if (t.readOk) {
         if (mHaveButtons && (t.sample.buttons & ~mButtons) != 0) {
             markNow = true;
@@ -81,8 +107,8 @@ void Scorer::addSample(const ScoreSample& s) {
         mHaveTool = std::isfinite(mToolMm.x) && std::isfinite(mToolMm.y) && std::isfinite(mToolMm.z);
     }
     for (std::size_t i = 0; i < mPendingMarks.size();) {
-        if (mPendingMarks[i] <= t.tick) {
-            markNow = true;
+        if (mPendingMarks[i].tick <= t.tick) {
+            (mPendingMarks[i].done ? doneNow : markNow) = true;
             mPendingMarks[i] = mPendingMarks.back();
             mPendingMarks.pop_back();
         } else {
@@ -133,10 +159,12 @@ void Scorer::addSample(const ScoreSample& s) {
     if (double(s.damage.maxDisplacementMm) > mExercise.displacementLimitMm) mDamageS += dt;
     mDamageAreaMm2 = std::max(mDamageAreaMm2, double(s.damage.areaAboveLimitMm2));
 
+    if (mPalpation) examinePalpation(s, dt, forceN, haveContactPoint);
     switch (mExercise.type) {
         case ExerciseType::PressTargets: scorePressTargets(s, dt, forceN, haveContactPoint); break;
         case ExerciseType::FindLump: scoreFindLump(markNow, haveContactPoint); break;
         case ExerciseType::Trace: scoreTrace(s, dt, forceN, haveContactPoint); break;
+        case ExerciseType::DetectLumps: scoreDetectLumps(markNow, doneNow, haveContactPoint); break;
     }
 
     if (!mGuidance.completed && mElapsedS >= mExercise.timeLimitS) mGuidance.timeUp = true;
@@ -204,6 +232,89 @@ void Scorer::scoreFindLump(bool markNow, bool haveContactPoint) {
         mMarkMeasured = true;
     }
     complete();
+}
+
+void Scorer::examinePalpation(const ScoreSample& s, double dt, double forceN, bool haveContactPoint) {
+    const VertexId touched = s.tick.touched;
+    if (!s.tick.contact || !haveContactPoint || touched >= mGeometry->vertexCount()) {
+        mHavePreviousContact = false;
+        return;
+    }
+    mCoverage->add(touched, mContactPointMm, forceN);
+    mGuidance.coverageFraction = mCoverage->coveredFraction();
+    // The speed along the surface tells search from palpation; a contact's first tick has none.
+    if (mHavePreviousContact && dt > 0.0 && mPhaseSamples.size() < mPhaseSamples.capacity()) {
+        const glm::dvec3 n(mGeometry->normals()[touched]);
+        glm::dvec3 moved = glm::dvec3(mContactPointMm) - glm::dvec3(mPreviousContactMm);
+        moved -= glm::dot(moved, n) * n;
+        mPhaseSamples.push_back({forceN, glm::length(moved) / dt});
+    }
+    mPreviousContactMm = mContactPointMm;
+    mHavePreviousContact = true;
+    // How deep the surface went over each lump, and the tissue's force per mm of sink elsewhere.
+    const double sinkMm = s.damage.maxDisplacementMm;
+    const int lump = mGeometry->lumpOfVertex().empty() ? -1 : mGeometry->lumpOfVertex()[touched];
+    if (lump >= 0 && std::size_t(lump) < mLumpMaxSinkMm.size()) {
+        mLumpMaxSinkMm[std::size_t(lump)] = std::max(mLumpMaxSinkMm[std::size_t(lump)], sinkMm);
+    } else if (sinkMm >= kMinSinkForStiffnessMm) {
+        mSoftForceSumN += forceN;
+        mSoftSinkSumMm += sinkMm;
+    }
+}
+
+void Scorer::scoreDetectLumps(bool markNow, bool doneNow, bool haveContactPoint) {
+    if (markNow && haveContactPoint) mFindingsMm.push_back(glm::dvec3(mContactPointMm));
+    mGuidance.findings = int(mFindingsMm.size());
+    if (doneNow) complete();
+}
+
+PalpationSummary Scorer::palpationSummary() const {
+    PalpationSummary p;
+    p.coverage = mExercise.coverage;
+    p.coverageFraction = mCoverage->coveredFraction();
+    p.peakForceN = mCoverage->peakForceN();
+    p.forceByPhase = forceByPhase(mPhaseSamples);
+    const std::string minForce = oneDecimal(mExercise.coverage.minForceN);
+    if (mExercise.type == ExerciseType::DetectLumps) {
+        p.findingsMm = mFindingsMm;
+        const auto& lumps = mGeometry->lumps();
+        std::vector<HiddenLump> hidden;
+        for (const ResolvedLump& l : lumps) hidden.push_back({glm::dvec3(l.surfaceMm), l.def.radiusMm});
+        p.detection = scoreDetection(hidden, mFindingsMm, {mExercise.detectLumps.toleranceMm});
+        // The deepest lump, and whether the surface over it ever sank as deep as its top.
+        std::size_t deepest = lumps.size();
+        for (std::size_t k = 0; k < lumps.size(); ++k)
+            if (deepest == lumps.size() || lumps[k].def.depthMm > lumps[deepest].def.depthMm) deepest = k;
+        const double forcePerMm = mSoftSinkSumMm > 0.0 ? mSoftForceSumN / mSoftSinkSumMm : 0.0;
+        if (deepest < lumps.size()) {
+            const double depthMm = lumps[deepest].def.depthMm;
+            if (forcePerMm > 0.0) p.deepestLumpReachForceN = depthMm * forcePerMm;
+            const bool missed = p.detection->findingOfLump[deepest] < 0;
+            if (missed && mLumpMaxSinkMm[deepest] < depthMm) {
+                std::string text = "Pressed too lightly to reach the deepest lump: it lies " + oneDecimal(depthMm) +
+                                   " mm under the surface, and over it the surface sank " +
+                                   oneDecimal(mLumpMaxSinkMm[deepest]) + " mm at most.";
+                if (p.deepestLumpReachForceN)
+                    text += " Press to about " + oneDecimal(*p.deepestLumpReachForceN) + " N or more to feel it.";
+                p.feedback.push_back({"pressed_too_lightly", text});
+            }
+        }
+        if (p.detection->falseAlarms > 0)
+            p.feedback.push_back({"false_alarms", std::to_string(p.detection->falseAlarms) +
+                                                      (p.detection->falseAlarms == 1 ? " finding was" : " findings were") +
+                                                      " on no lump: mark only where the tissue resists more than around it."});
+    }
+    if (p.coverageFraction < kLowCoverageFraction)
+        p.feedback.push_back({"low_coverage", "Examined " + oneDecimal(100.0 * p.coverageFraction) +
+                                                  " % of the surface at " + minForce +
+                                                  " N or more: cover all of it, in overlapping rows."});
+    const ForceByPhase& phases = p.forceByPhase;
+    if (phases.palpationOverSearch && *phases.palpationOverSearch < 1.0)
+        p.feedback.push_back({"light_palpation", "Pressed no harder to palpate than to search (median " +
+                                                     oneDecimal(phases.palpation->p50N) + " N against " +
+                                                     oneDecimal(phases.search->p50N) +
+                                                     " N): press in on a spot that feels different."});
+    return p;
 }
 
 void Scorer::scoreTrace(const ScoreSample& s, double dt, double forceN, bool haveContactPoint) {
@@ -274,6 +385,9 @@ ScoreReport Scorer::report() const {
                 idealKnown = true;
             }
             break;
+        case ExerciseType::DetectLumps:
+            completion = mGuidance.completed ? 1.0 : 0.0;
+            break;
         case ExerciseType::Trace:
             completion = mCovered.empty() ? 0.0 : double(mCoveredCount) / double(mCovered.size());
             if (mCoveredCount > 0 && mHavePreviousTool) {
@@ -324,6 +438,18 @@ ScoreReport Scorer::report() const {
     put(Metric::ContactFraction, mTracingS > 0.0 ? mTraceContactS / mTracingS : 0.0, mTracingS > 0.0);
     put(Metric::BandFraction, mTracingS > 0.0 ? mBandS / mTracingS : 0.0, mTracingS > 0.0);
     put(Metric::PathDistanceMm, mTraceContactS > 0.0 ? mPathDistanceSumMmS / mTraceContactS : 0.0, mTraceContactS > 0.0);
+    if (mPalpation) {
+        // In Metric order, as every line before.
+        r.palpation = palpationSummary();
+        if (const auto& d = r.palpation->detection) {
+            put(Metric::Sensitivity, d->sensitivity.value_or(0.0), d->sensitivity.has_value());
+            put(Metric::PositivePredictiveValue, d->positivePredictive.value_or(0.0), d->positivePredictive.has_value());
+            put(Metric::FalseAlarms, double(d->falseAlarms));
+            const auto localisation = d->meanLocalisationMm();
+            put(Metric::LocalisationMm, localisation.value_or(0.0), localisation.has_value());
+        }
+        put(Metric::CoverageFraction, r.palpation->coverageFraction);
+    }
     applyRubric(mGeometry->rubric(), r);
     return r;
 }

@@ -9,10 +9,13 @@
 
 #include "engine/exercise/ExerciseGeometry.h"
 #include "engine/exercise/ScoreReport.h"
+#include "engine/scoring/ForcePhases.h"
+#include "engine/scoring/PalpationCoverage.h"
 #include "engine/scoring/ScoreSample.h"
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,7 +28,11 @@ public:
 
     /// A user's mark (a Mark event) at `tick`. Give a tick's marks before its sample; a mark for a
     /// tick already scored is taken at the next sample (LiveScorer prevents that case).
-    void addMark(std::uint64_t tick);
+    /// `examinationDone`: the mark ends a detect-lumps examination (kExaminationDoneMark) instead
+    /// of being a finding.
+    void addMark(std::uint64_t tick, bool examinationDone = false);
+    /// Whether a Mark event's text is the one that ends an examination.
+    static bool isExaminationDone(const std::string& markText);
     /// The next tick. Ticks must come in order.
     void addSample(const ScoreSample& sample);
     /// Ticks after the end of the exercise (completion or time limit) that were not looked at.
@@ -46,6 +53,9 @@ private:
     void scorePressTargets(const ScoreSample& s, double dt, double forceN, bool haveContactPoint);
     void scoreFindLump(bool markNow, bool haveContactPoint);
     void scoreTrace(const ScoreSample& s, double dt, double forceN, bool haveContactPoint);
+    void scoreDetectLumps(bool markNow, bool doneNow, bool haveContactPoint);
+    void examinePalpation(const ScoreSample& s, double dt, double forceN, bool haveContactPoint);
+    PalpationSummary palpationSummary() const;
     void complete();
 
     std::shared_ptr<const ExerciseGeometry> mGeometry;
@@ -61,7 +71,11 @@ private:
     glm::vec3 mContactPointMm{0.0f};
     bool mHaveButtons = false;
     std::uint32_t mButtons = 0;
-    std::vector<std::uint64_t> mPendingMarks;  // ticks, not yet reached
+    struct PendingMark {
+        std::uint64_t tick;
+        bool done;
+    };
+    std::vector<PendingMark> mPendingMarks;  // not yet reached
     std::uint64_t mMarks = 0;
     bool mAboveExcessive = false;
     std::uint64_t mTicksScored = 0, mTicksAfterEnd = 0;
@@ -94,6 +108,16 @@ private:
     double mTracingS = 0.0, mTraceContactS = 0.0, mBandS = 0.0, mPathDistanceSumMmS = 0.0;
     std::vector<std::uint8_t> mCovered;
     std::size_t mCoveredCount = 0;
+
+    // Palpation (find the lump, detect lumps): what was examined, how firmly, what was found.
+    bool mPalpation = false;
+    std::optional<PalpationCoverage> mCoverage;
+    std::vector<ForceMotionSample> mPhaseSamples;  // reserved for the time limit: no allocation per tick
+    bool mHavePreviousContact = false;
+    glm::vec3 mPreviousContactMm{0.0f};
+    std::vector<glm::dvec3> mFindingsMm;
+    std::vector<double> mLumpMaxSinkMm;   // per lump: the deepest the surface sank over it
+    double mSoftForceSumN = 0.0, mSoftSinkSumMm = 0.0;  // away from lumps: the tissue's force per mm of sink
 
     ScoreGuidance mGuidance;
 };

@@ -34,9 +34,11 @@ TraineeScript loadTraineeScript(const std::string& path) {
     if (!loadWaypointFile(path, script.waypoints, error)) throw std::runtime_error(error);
     std::ifstream in(path);
     std::string line;
-    const std::string tag = "# mark-at ";
-    while (std::getline(in, line))
+    const std::string tag = "# mark-at ", doneTag = "# done-at ";
+    while (std::getline(in, line)) {
         if (line.rfind(tag, 0) == 0) script.marksS.push_back(std::stod(line.substr(tag.size())));
+        if (line.rfind(doneTag, 0) == 0) script.doneS = std::stod(line.substr(doneTag.size()));
+    }
     return script;
 }
 
@@ -65,6 +67,7 @@ std::uint64_t runScriptedSession(const Exercise& exercise, const TraineeScript& 
     const auto ticks = std::uint64_t(std::llround(seconds * loopDef.rateHz));
     std::size_t nextMark = 0;
     int deferredMarks = 0;
+    bool doneMarked = false;
     for (std::uint64_t i = 1; i <= ticks; ++i) {
         if (def.tickOverran) loop.stepAt(double(i - 1) * loop.periodS(), def.tickOverran(i));
         else loop.stepOnce();
@@ -74,6 +77,10 @@ std::uint64_t runScriptedSession(const Exercise& exercise, const TraineeScript& 
             if (def.marksAfterFlush) ++deferredMarks;
             else session->mark("lump here");
             ++nextMark;
+        }
+        if (!doneMarked && script.doneS >= 0.0 && nowS >= script.doneS) {
+            session->mark(kExaminationDoneMark);
+            doneMarked = true;
         }
         if (i % def.flushEveryTicks == 0 || i == ticks) {
             const std::string problem = session->flush();

@@ -24,6 +24,7 @@ Exercise loadExampleExercise(const std::string& name);
 struct TraineeScript {
     std::vector<Waypoint> waypoints;
     std::vector<double> marksS;  ///< loop times
+    double doneS = -1.0;         ///< "# done-at T": the examination is finished then (< 0: never)
     double durationS() const { return waypoints.empty() ? 0.0 : waypoints.back().timeS; }
 };
 /// Reads a waypoint file and its "# mark-at T" lines.

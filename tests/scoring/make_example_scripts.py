@@ -55,6 +55,7 @@ class Script:
         self.lines = ["# " + title, "# written by tests/scoring/make_example_scripts.py; t_s x_mm y_mm z_mm"]
         self.t = 0.0
         self.marks = []
+        self.done_at = None
 
     def at(self, dt, p):
         self.t += dt
@@ -63,8 +64,15 @@ class Script:
     def mark(self):
         self.marks.append(self.t)
 
+    def done(self):
+        """The trainee finishes the examination (detect_lumps: palpate-cli run --done-at T)."""
+        self.done_at = self.t
+
     def write(self, path):
-        lines = self.lines[:2] + ["# mark-at %.3f" % t for t in self.marks] + self.lines[2:]
+        lines = self.lines[:2] + ["# mark-at %.3f" % t for t in self.marks]
+        if self.done_at is not None:
+            lines.append("# done-at %.3f" % self.done_at)
+        lines += self.lines[2:]
         open(path, "w").write("\n".join(lines) + "\n")
 
 
@@ -227,7 +235,132 @@ def trace():
     bad.write(os.path.join(RES, "exercises", "trace.bad.path"))
 
 
+# Detect lumps (docs/scoring.md, "Lumps under the surface"): on the 50 mm sphere, a tool d mm
+# below the rest surface renders R = k_s |m1| F with F = d / (1 + |m1|) on tissue (k_c = 1) and,
+# over a lump whose top is z deep and whose compliance is c = 1 / contrast, the larger of that and
+# (d - (1 - c) z) / (1 + c |m1|).
+SPHERE_MM = 50.0
+
+
+def sphere_point(theta, phi):
+    u = [math.sin(theta) * math.cos(phi), math.sin(theta) * math.sin(phi), math.cos(theta)]
+    return [SPHERE_MM * x for x in u], u
+
+
+def angles(p):
+    x, y, z = p
+    return math.acos(z / math.sqrt(x * x + y * y + z * z)), math.atan2(y, x)
+
+
+def depth_over(force, tissue, lump=None):
+    """The depth below the rest surface at which the tool renders `force` N, over `lump` or not."""
+    m1, kc, ks = tissue
+    f = force / (ks * m1)
+    if lump is None or m1 * f <= lump["depth_mm"]:
+        return f * (1.0 + kc * m1) / kc
+    c = 1.0 / lump["contrast"]
+    return f * (1.0 + kc * c * m1) / kc + (1.0 - c) * lump["depth_mm"]
+
+
+def sweep_rows(s, depth, speed_mm_s, row_step_mm=8.0, step_mm=5.0):
+    """Strokes along circles of latitude, row_step_mm apart, the tool `depth` mm in, from near the
+    +z pole to near the -z pole: a systematic search of the whole sphere."""
+    first = 0.12
+    rows = []
+    theta = first
+    while theta < math.pi - 0.1:
+        rows.append(theta)
+        theta += row_step_mm / SPHERE_MM
+    p, n = sphere_point(rows[0], 0.0)
+    s.at(1.0, lift(p, n, 15.0))
+    s.at(1.0, lift(p, n, -depth))
+    for i, theta in enumerate(rows):
+        circumference = 2.0 * math.pi * SPHERE_MM * math.sin(theta)
+        steps = max(8, int(math.ceil(circumference / step_mm)))
+        for k in range(1, steps + 1):
+            p, n = sphere_point(theta, 2.0 * math.pi * k / steps)
+            s.at(circumference / steps / speed_mm_s, lift(p, n, -depth))
+        if i + 1 < len(rows):
+            p, n = sphere_point(rows[i + 1], 0.0)
+            s.at(row_step_mm / speed_mm_s, lift(p, n, -depth))
+    s.at(0.5, lift(p, n, 15.0))
+
+
+def palpate_at(s, point, depth, hold=1.5, mark=False):
+    """Lifted 15 mm, moved over `point`, pressed in to `depth` and held still; marked 1 s into the
+    hold when `mark`."""
+    theta, phi = angles(point)
+    p, n = sphere_point(theta, phi)
+    s.at(1.0, lift(p, n, 15.0))
+    s.at(0.5, lift(p, n, 3.0))
+    s.at(1.0, lift(p, n, -depth))
+    if mark:
+        s.at(1.0, lift(p, n, -depth))
+        s.mark()
+        s.at(hold - 1.0, lift(p, n, -depth))
+    else:
+        s.at(hold, lift(p, n, -depth))
+    s.at(0.5, lift(p, n, 15.0))
+
+
+SEARCH_N = 0.7          # the sweeps: above the exercise's coverage force, 0.5 N
+SEARCH_MM_PER_S = 60.0  # far above the 10 mm/s that is palpation
+ELSEWHERE_MM = [0.0, -50.0, 0.0]  # a spot with no lump under it, pressed in doubt
+
+
+def detect_lumps():
+    ex = exercise("detect_lumps")
+    muscle = preset("muscle")
+    lumps = ex["detect_lumps"]["lumps"]
+    search = depth_over(SEARCH_N, muscle)
+
+    good = Script("detect_lumps.json done well: the whole sphere swept at 0.7 N, each lump pressed to 2.8 N and marked, a doubtful spot pressed and left")
+    sweep_rows(good, search, SEARCH_MM_PER_S)
+    for lump in lumps:
+        palpate_at(good, lump["point_mm"], depth_over(2.8, muscle, lump), mark=True)
+    palpate_at(good, ELSEWHERE_MM, depth_over(1.7, muscle))
+    good.done()
+    good.write(os.path.join(RES, "exercises", "detect_lumps.good.path"))
+
+    # Presses as far as 0.9 N of tissue force: enough for the shallow lumps, not for the 8 mm one,
+    # over which the surface sinks |m1| 0.9 = 5.8 mm at most.
+    light = Script("detect_lumps.json pressed too lightly: swept well, every lump pressed only as deep as 0.9 N of tissue, the deep one not felt")
+    sweep_rows(light, search, SEARCH_MM_PER_S)
+    light_depth = depth_over(0.9, muscle)
+    for k, lump in enumerate(lumps):
+        palpate_at(light, lump["point_mm"], light_depth, mark=lump["depth_mm"] < 5.0)
+    light.done()
+    light.write(os.path.join(RES, "exercises", "detect_lumps.light.path"))
+
+    bad = Script("detect_lumps.json done badly: three hard pokes, no search, two marks where there is no lump")
+    palpate_at(bad, [0.0, 0.0, 50.0], depth_over(3.0, muscle), mark=True)
+    palpate_at(bad, lumps[0]["point_mm"], depth_over(5.0, muscle, lumps[0]))
+    palpate_at(bad, [0.0, -50.0, 0.0], depth_over(3.0, muscle), mark=True)
+    bad.done()
+    bad.write(os.path.join(RES, "exercises", "detect_lumps.bad.path"))
+
+
+def no_lump():
+    muscle = preset("muscle")
+    search = depth_over(SEARCH_N, muscle)
+    good = Script("no_lump.json done well: the whole sphere swept, two doubtful spots pressed, nothing marked")
+    sweep_rows(good, search, SEARCH_MM_PER_S)
+    palpate_at(good, ELSEWHERE_MM, depth_over(1.7, muscle))
+    palpate_at(good, [0.0, 0.0, 50.0], depth_over(1.7, muscle))
+    good.done()
+    good.write(os.path.join(RES, "exercises", "no_lump.good.path"))
+
+    bad = Script("no_lump.json done badly: swept, then two lumps reported where there are none")
+    sweep_rows(bad, search, SEARCH_MM_PER_S)
+    palpate_at(bad, ELSEWHERE_MM, depth_over(1.7, muscle), mark=True)
+    palpate_at(bad, [0.0, 0.0, 50.0], depth_over(1.7, muscle), mark=True)
+    bad.done()
+    bad.write(os.path.join(RES, "exercises", "no_lump.bad.path"))
+
+
 if __name__ == "__main__":
     press_targets()
     find_lump()
     trace()
+    detect_lumps()
+    no_lump()

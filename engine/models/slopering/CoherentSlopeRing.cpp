@@ -67,7 +67,23 @@ void CoherentSlopeRing::setCompliance(std::vector<float> factors) {
                                             " is outside (0, 1] (only stiffer inclusions keep the loop-gain bound)");
     }
     mCompliance = std::move(factors);
+    mEngageOffsetMm.clear();
     releaseActiveSet();
+}
+
+void CoherentSlopeRing::setLumps(std::vector<float> factors, const std::vector<float>& engageDepthMm) {
+    if (engageDepthMm.size() != factors.size())
+        throw std::invalid_argument("lumps: " + std::to_string(engageDepthMm.size()) + " engagement depths for " +
+                                    std::to_string(factors.size()) + " compliance factors");
+    for (std::size_t v = 0; v < engageDepthMm.size(); ++v)
+        if (!(engageDepthMm[v] >= 0.0f && engageDepthMm[v] < 1e6f))
+            throw std::invalid_argument("lumps: engagement depth[" + std::to_string(v) + "]: " +
+                                        std::to_string(engageDepthMm[v]) + " mm is not a depth");
+    setCompliance(std::move(factors));
+    if (mCompliance.empty()) return;
+    // b = (1 - c) z: the sink's stiff line, c |m1| F + b, meets the soft one, |m1| F, at depth z.
+    mEngageOffsetMm.resize(mCompliance.size());
+    for (std::size_t v = 0; v < mCompliance.size(); ++v) mEngageOffsetMm[v] = (1.0f - mCompliance[v]) * engageDepthMm[v];
 }
 
 void CoherentSlopeRing::releaseActiveSet() {
@@ -214,6 +230,13 @@ float CoherentSlopeRing::blendedCompliance(TriangleId t, const float* w) const {
     return c0 + w[1] * (mCompliance[tri[1]] - c0) + w[2] * (mCompliance[tri[2]] - c0);
 }
 
+float CoherentSlopeRing::blendedOffsetMm(TriangleId t, const float* w) const {
+    if (mEngageOffsetMm.empty()) return 0.0f;
+    const auto& tri = mMesh.triangles()[t];
+    const float b0 = mEngageOffsetMm[tri[0]];
+    return b0 + w[1] * (mEngageOffsetMm[tri[1]] - b0) + w[2] * (mEngageOffsetMm[tri[2]] - b0);
+}
+
 void CoherentSlopeRing::warm(const glm::vec3& lastToolMm) const {
     if (!isFinite(lastToolMm)) return;
     volatile float sink = findContactPoint(lastToolMm, walksFromLast(lastToolMm)).at.pointMm.x;
@@ -239,7 +262,7 @@ TickResult CoherentSlopeRing::step(const glm::vec3& tool, double dtS) {
         if (found.triangle != kNoTriangle) contact = found;
     }
     const bool touching = toolValid && contact.triangle != kNoTriangle;
-    float depth = 0.0f, compliance = 1.0f;
+    float depth = 0.0f, compliance = 1.0f, offsetMm = 0.0f;
     glm::vec3 normal = mContactNormal;
     VertexId touched = mTouched;
     if (touching) {
@@ -255,10 +278,11 @@ TickResult CoherentSlopeRing::step(const glm::vec3& tool, double dtS) {
         depth = mToolRadiusMm - clearance;
         mLastClearanceMm = clearance - mToolRadiusMm;
         compliance = blendedCompliance(contact.triangle, w);
+        offsetMm = blendedOffsetMm(contact.triangle, w);
         const int k = largestWeightCorner(w);
         touched = tri[std::size_t(k)];
     }
-    const float penetration = updateContactForce(depth, touching, compliance);
+    const float penetration = updateContactForce(depth, touching, compliance, offsetMm);
     mTouched = touched;
     mContactPoint = contact;
     mContactNormal = normal;
@@ -276,8 +300,9 @@ TickResult CoherentSlopeRing::step(const glm::vec3& tool, double dtS) {
     if (mContact) {
         result.forceN = normalForceN * normal + friction;
         result.normal = normal;
-        const float sinkMm = -mHot.signedSlope[0] * compliance * mContactForceN;
-        result.proxyMm = mFriction.stickMm() + (mToolRadiusMm - sinkMm) * normal;
+        const float sink = offsetMm > 0.0f ? sinkMm(mContactForceN, compliance, offsetMm)
+                                           : -mHot.signedSlope[0] * compliance * mContactForceN;
+        result.proxyMm = mFriction.stickMm() + (mToolRadiusMm - sink) * normal;
     } else if (touching) {
         result.proxyMm = tool;
     }
@@ -378,10 +403,15 @@ void CoherentSlopeRing::stepRings(const SurfaceHit& contact, bool inContact) {
         // is exactly 1: there ours is the paper's model bit for bit.
         const float interpolated = s0 - (s0 - s1) * (1.0f - (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
         const float compliance = blendedCompliance(contact.triangle, w);
+        const float offsetMm = blendedOffsetMm(contact.triangle, w);
         for (int k = 0; k < 3; ++k) mFieldWeight[k] = w[k];
         mFieldTouchedCorner = largestWeightCorner(w);
         mFieldNormal = mContactNormal;
-        mFieldForceN = compliance * mContactForceN * (s0 / interpolated);
+        // The force the field follows moves the contact point by the sink: c F, or over a lump
+        // under the surface sink(F) / |m1|.
+        const float fieldForceN = offsetMm > 0.0f ? sinkMm(mContactForceN, compliance, offsetMm) / s0
+                                                  : compliance * mContactForceN;
+        mFieldForceN = fieldForceN * (s0 / interpolated);
     }
     mActiveDirty = inContact;
     if (mEagerPositions) writeActivePositions();

@@ -57,6 +57,13 @@ public:
     /// Empty clears it. Not real-time; throws std::invalid_argument naming the problem.
     void setCompliance(std::vector<float> factors);
     std::span<const float> compliance() const { return mCompliance; }
+    /// Lumps under the surface (engine/scoring's detect-lumps exercises; docs/scoring.md, "Lumps
+    /// under the surface"): per vertex the compliance factor c (1 / contrast over a lump, 1
+    /// elsewhere) and the depth z at which its lump begins to resist. Pressing there sinks the
+    /// surface by |m1| F until the sink reaches z, and by c |m1| per newton beyond: a deeper lump
+    /// feels like the tissue around it until it is pressed deeper. Not real-time; throws
+    /// std::invalid_argument naming the problem.
+    void setLumps(std::vector<float> factors, const std::vector<float>& engageDepthMm);
     /// The contact on the rest surface (its triangle is kNoTriangle before the first tick).
     const SurfaceHit& contactPoint() const { return mContactPoint; }
     /// Search statistics: how often the nearest-vertex cache (used to find the surface while the
@@ -81,9 +88,11 @@ private:
     void addRelaxing(VertexId v);
     void removeRelaxing(VertexId v);
     float blendedCompliance(TriangleId t, const float* weight) const;
+    float blendedOffsetMm(TriangleId t, const float* weight) const;
 
     bool mEagerPositions;
     std::vector<float> mCompliance;  // per-vertex slope factor (setCompliance); empty: all 1, skipped
+    std::vector<float> mEngageOffsetMm;  // per-vertex b = (1 - c) z of a lump under it (setLumps); empty: 0
     ContactDef mContactDef;
     float mToolRadiusMm = 0.0f;
     SurfaceWalk mWalk;

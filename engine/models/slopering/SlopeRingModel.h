@@ -112,6 +112,40 @@ protected:
     /// the displaced surface, d - c |m1| F, and updates F and the contact. `touching` false: no
     /// contact point, F = 0.
     float updateContactForce(float depthMm, bool touching, float compliance) {
+        return updateContactForce(depthMm, touching, compliance, 0.0f);
+    }
+
+    /// The sink of the contact point under force F (docs/scoring.md, "Lumps under the surface"):
+    /// |m1| F on tissue; over a lump whose top lies z below, soft until the sink reaches z and
+    /// then stiffer by the contrast, min(|m1| F, c |m1| F + b) with b = (1 - c) z. b = 0 is the
+    /// uniform inclusion, c |m1| F.
+    float sinkMm(float forceN, float compliance, float offsetMm) const {
+        const float soft = -mHot.signedSlope[0] * forceN;
+        return offsetMm > 0.0f ? std::min(soft, compliance * soft + offsetMm) : compliance * soft;
+    }
+
+    /// The same for a lump under the surface: `offsetMm` = b above (0: none). The tip meets the
+    /// sunk surface where d = sink(F) + F / k_c; the sink is concave and piecewise linear, so the
+    /// exact solve is the larger of its two lines' solutions, F = max(k_c d / (1 + g),
+    /// k_c (d - b) / (1 + g c)) with g = |m1| k_c; a relaxed update steps toward it and is stable
+    /// as the uniform one is (the sink's slope is at most |m1|).
+    float updateContactForce(float depthMm, bool touching, float compliance, float offsetMm) {
+        if (offsetMm > 0.0f) {
+            const float penetration = touching ? depthMm - sinkMm(mContactForceN, compliance, offsetMm) : 0.0f;
+            if (!touching) {
+                mContactForceN = 0.0f;
+            } else if (mParams.forceRelaxation > 0.0) {
+                mContactForceN = std::max(0.0f, (1.0f - mHot.alpha) * mContactForceN +
+                                                     mHot.alpha * (mHot.contactStiffness * penetration));
+            } else {
+                const float gain = float(mParams.loopGain());
+                const float soft = mHot.contactStiffness * depthMm / (1.0f + gain);
+                const float stiff = mHot.contactStiffness * (depthMm - offsetMm) / (1.0f + gain * compliance);
+                mContactForceN = std::max({0.0f, soft, stiff});
+            }
+            mContact = mContactForceN > 0.0f;
+            return penetration;
+        }
         const float penetration = touching ? depthMm + mHot.signedSlope[0] * (compliance * mContactForceN) : 0.0f;
         const float alpha = compliance == 1.0f || mParams.forceRelaxation > 0.0
                                 ? mHot.alpha
