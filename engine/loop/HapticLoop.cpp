@@ -240,17 +240,20 @@ void HapticLoop::tick(double nowS, double lateUs) {
         r.divergence = std::uint8_t(verdict.kind);  // the writer makes it a Divergence event
         mRecorder->onTick(r);
     }
-    publish(result, forceOut);
+    publish(result, forceOut, nowS);
 
     // Retry handing back anything the retire queue had no room for.
     while (mPendingRetireCount > 0 && mRetired.push(mPendingRetire[mPendingRetireCount - 1])) --mPendingRetireCount;
 }
 
-void HapticLoop::publish(const TickResult& result, const glm::vec3& forceOutN) {
+void HapticLoop::publish(const TickResult& result, const glm::vec3& forceOutN, double nowS) {
     HapticSnapshot& s = mSnapshots.back();
     s.publishCount = ++mPublishCount;
     s.tick = mCounters.ticks;
-    s.timeS = double(mCounters.ticks) * mPeriodS;
+    // The clock the device and the recording saw, which skips the deadlines a late tick missed:
+    // not ticks x period, which falls behind it on a loaded machine (a scripted mark at a loop
+    // time must land where the device's path is at that time).
+    s.timeS = nowS;
     s.sceneId = mScene->id();
     s.paused = mPaused;
     s.deviceState = mDevice->state();

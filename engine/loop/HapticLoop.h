@@ -123,7 +123,7 @@ private:
     void retire(HapticScene* scene, HapticDevice* device);
     /// Controller thread: deletes a retired scene and closes and deletes a retired device.
     static void destroyRetired(const Retired& retired);
-    void publish(const TickResult& result, const glm::vec3& forceOutN);
+    void publish(const TickResult& result, const glm::vec3& forceOutN, double nowS);
 
     HapticLoopDef mDef;
     double mPeriodS;

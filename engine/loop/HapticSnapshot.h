@@ -38,7 +38,7 @@ struct HapticSnapshot {
 
     std::uint64_t publishCount = 0;  ///< increases with every publish
     std::uint64_t tick = 0;
-    double timeS = 0.0;              ///< loop clock
+    double timeS = 0.0;              ///< loop clock of this tick (RecordedTick::nowS; skips missed deadlines)
     std::uint64_t sceneId = 0;       ///< vertex ids below refer to this scene's mesh
     bool paused = false;
 

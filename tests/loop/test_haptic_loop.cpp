@@ -215,6 +215,17 @@ TEST(HapticLoop, CommandsValidateAndApplyAtATickBoundary) {
     rig.loop->collectRetired();
 }
 
+TEST(HapticLoop, TheSnapshotCarriesTheLoopClockAfterMissedDeadlines) {
+    // A late tick skips the deadlines it missed; the device and the recording see that clock, and
+    // so must whoever times a scripted mark by the snapshot: not ticks x period.
+    Rig rig = makeRig();
+    rig.loop->stepAt(0.001, false);
+    rig.loop->stepAt(0.002, false);
+    rig.loop->stepAt(0.250, true);  // 247 deadlines missed
+    EXPECT_EQ(rig.loop->newestSnapshot().tick, 3u);
+    EXPECT_DOUBLE_EQ(rig.loop->newestSnapshot().timeS, 0.250);
+}
+
 TEST(HapticLoop, ALateTickKeepsItsForce) {
     // A device whose read stalls once, in contact: that tick overruns its deadline, and the next
     // one (flagged late) still sends the force it computed from its fresh sample: no dropout.
