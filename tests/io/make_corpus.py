@@ -48,6 +48,20 @@ long_trace["trace"]["path"] = [{"vertex": i} for i in range(200)]
 put("exercise", "long-trace.json", json.dumps(long_trace))
 put("exercise", "vertex-huge.json", text.replace('"vertex": ', '"vertex": 99999999999999999999, "y": ', 1))
 put("exercise", "point-nan-like.json", text.replace('"point_mm": [', '"point_mm": [1e308, 1e308, ', 1))
+lumps = json.load(open(repo + "/resources/exercises/detect_lumps.json"))
+many_lumps = dict(lumps)
+many_lumps["detect_lumps"] = dict(lumps["detect_lumps"])
+many_lumps["detect_lumps"]["lumps"] = [{"point_mm": [50.0, 0.1 * i, 0.0], "radius_mm": 1.0, "depth_mm": 1.0,
+                                        "contrast": 2.0} for i in range(101)]
+put("exercise", "101-lumps.json", json.dumps(many_lumps))
+stair = dict(lumps)
+stair["detect_lumps"] = dict(lumps["detect_lumps"])
+stair["detect_lumps"]["staircase"] = {"parameter": "contrast", "start": 4.0, "step": 0.5, "easiest": 6.0,
+                                      "hardest": 1.2, "down": 2, "up": 1}
+put("exercise", "staircase.json", json.dumps(stair))
+stair["detect_lumps"]["staircase"] = {"parameter": "depth_mm", "start": 1e308, "step": -1, "easiest": 1e400,
+                                      "hardest": 0, "down": 2.5, "up": 1e20}
+put("exercise", "staircase-bad.json", json.dumps(stair).replace("Infinity", "1e400"))
 put("exercise", "empty.json", "")
 put("exercise", "deep-nesting.json", '{"rubric": ' + "{" * 100 + "}" * 100 + "}")
 put("exercise", "wrong-type.json", text.replace('"press_targets"', '"trace"', 1))
