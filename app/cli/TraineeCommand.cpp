@@ -261,9 +261,15 @@ int curveCommand(const std::vector<std::string>& words) {
         std::cerr << "trainee curve: --trainee NAME is required\n";
         return 2;
     }
-    if (args.option("png") && args.option("exercise") && sameFile(*args.option("png"), *args.option("exercise"))) {
-        std::cerr << "trainee curve: --png " << *args.option("png") << " is the exercise file: choose another file\n";
-        return 2;
+    if (const auto png = args.option("png")) {
+        // The chart never replaces what it is drawn from.
+        const std::string problem =
+            outputIsAnInput("png", *png, {{args.option("exercise").value_or(""), "exercise"},
+                                            {args.option("db").value_or(defaultDatabasePath()), "results database"}});
+        if (!problem.empty()) {
+            std::cerr << "trainee curve: " << problem << "\n";
+            return 2;
+        }
     }
     QString path;
     const std::optional<Exercise> exercise = loadExerciseOption(args, "curve", path);

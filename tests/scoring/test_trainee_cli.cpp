@@ -140,6 +140,12 @@ TEST(TraineeCli, CurveStandardProficiencyPngAndErrors) {
     r = runCli("trainee staircase --db " + db + " --trainee Bo --exercise " + exercise);
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.output.find("has no staircase"), std::string::npos) << r.output;
+    // The chart is never written over its database.
+    const auto before = test::readBytes(dir.file("results.sqlite"));
+    r = runCli("trainee curve --db " + db + " --trainee Bo --exercise " + exercise + " --png " + db);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("results database"), std::string::npos) << r.output;
+    EXPECT_EQ(test::readBytes(dir.file("results.sqlite")), before);
     EXPECT_EQ(runCli("trainee").exitCode, 2);
     EXPECT_EQ(runCli("trainee frobnicate").exitCode, 2);
     EXPECT_EQ(runCli("trainee curve --db " + db + " --exercise " + exercise).exitCode, 2);
