@@ -15,6 +15,22 @@
         <source>No feel bench rows to draw</source>
         <translation>Keine Zeilen des Haptik-Benchmarks zum Zeichnen</translation>
     </message>
+    <message>
+        <source>session</source>
+        <translation>Sitzung</translation>
+    </message>
+    <message>
+        <source> - proficient at session %1</source>
+        <translation> – kompetent ab Sitzung %1</translation>
+    </message>
+    <message>
+        <source> - not yet proficient</source>
+        <translation> – noch nicht kompetent</translation>
+    </message>
+    <message>
+        <source> - no expert standard</source>
+        <translation> – kein Expertenstandard</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ChartsPanel</name>
@@ -4187,6 +4203,14 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
     <message>
         <source>cannot migrate from schema version 2 to 3: %1</source>
         <translation>Schema-Version 2 kann nicht zu 3 migriert werden: %1</translation>
+    </message>
+    <message>
+        <source>cannot migrate from schema version 3 to 4: %1</source>
+        <translation>Schema-Version 3 kann nicht zu 4 migriert werden: %1</translation>
+    </message>
+    <message>
+        <source>cannot store the staircase of %1: %2</source>
+        <translation>Die Treppe (Staircase) von %1 kann nicht gespeichert werden: %2</translation>
     </message>
 </context>
 <context>

@@ -15,6 +15,22 @@
         <source>No feel bench rows to draw</source>
         <translation>Tiada baris penanda aras haptik untuk dilukis</translation>
     </message>
+    <message>
+        <source>session</source>
+        <translation>sesi</translation>
+    </message>
+    <message>
+        <source> - proficient at session %1</source>
+        <translation> – cekap sejak sesi %1</translation>
+    </message>
+    <message>
+        <source> - not yet proficient</source>
+        <translation> – belum cekap</translation>
+    </message>
+    <message>
+        <source> - no expert standard</source>
+        <translation> – tiada piawai pakar</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ChartsPanel</name>
@@ -4183,6 +4199,14 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
     <message>
         <source>cannot migrate from schema version 2 to 3: %1</source>
         <translation>tidak dapat memindahkan skema versi 2 ke 3: %1</translation>
+    </message>
+    <message>
+        <source>cannot migrate from schema version 3 to 4: %1</source>
+        <translation>tidak dapat memindahkan daripada versi skema 3 ke 4: %1</translation>
+    </message>
+    <message>
+        <source>cannot store the staircase of %1: %2</source>
+        <translation>tidak dapat menyimpan tangga (staircase) %1: %2</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,8 @@
 #pragma once
 
+#include "engine/exercise/Exercise.h"
+#include "engine/exercise/ScoreReport.h"
+
 #include <string>
 #include <vector>
 
@@ -17,6 +20,14 @@ int runCommand(const std::vector<std::string>& words);
 int recordCommand(const std::vector<std::string>& words);
 /// score: a recorded exercise session's score and breakdown (ScoreCommand.cpp, docs/scoring.md).
 int scoreCommand(const std::vector<std::string>& words);
+/// trainee: list, add-session, curve, staircase over the results database (TraineeCommand.cpp,
+/// docs/scoring.md "Proficiency" and "Staircase").
+int traineeCommand(const std::vector<std::string>& words);
+/// For `score --db --trainee`: the "proficiency" object as JSON text ("" when the exercise has no
+/// expert sessions), or "" with `error` (unreadable database, unknown trainee).
+std::string proficiencyJsonForScore(const ScoreReport& report, const Exercise& exercise, const std::string& exercisePath,
+                                    const std::string& databasePath, const std::string& traineeName,
+                                    std::string& error);
 int sweepCommand(const std::vector<std::string>& words);
 int calibrateCommand(const std::vector<std::string>& words);
 int accuracyCommand(const std::vector<std::string>& words);

@@ -6,6 +6,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/MeshOption.h"
 #include "app/common/DefaultScene.h"
+#include "engine/exercise/RecordedExercise.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
 #ifdef PALPATE_HAVE_CHARTS
@@ -13,12 +14,14 @@
 #include "app/report/ScoreReportPdf.h"
 #endif
 
+#include <nlohmann/json.hpp>
+
 #include <iostream>
 
 namespace palpate::cli {
 
 int scoreCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"exercise", "recording", "mesh", kMeshUnitOption, "pdf", "trainee"});
+    Args args(words, {"json"}, {"exercise", "recording", "mesh", kMeshUnitOption, "pdf", "trainee", "db"});
     if (!args.ok()) {
         std::cerr << "score: " << args.error() << "\n";
         return 2;
@@ -40,8 +43,13 @@ int scoreCommand(const std::vector<std::string>& words) {
         return 2;
     }
 #endif
-    if (args.option("trainee") && !pdf) {
-        std::cerr << "score: --trainee names the trainee on the --pdf report; give --pdf FILE\n";
+    if (args.option("trainee") && !pdf && !args.option("db")) {
+        std::cerr << "score: --trainee names the trainee on the --pdf report, or whose progress --db holds; give --pdf FILE "
+                     "or --db FILE\n";
+        return 2;
+    }
+    if (args.option("db") && !args.option("trainee")) {
+        std::cerr << "score: --db FILE goes with --trainee NAME (the trainee whose proficiency to judge)\n";
         return 2;
     }
     if (pdf) {
@@ -107,6 +115,28 @@ int scoreCommand(const std::vector<std::string>& words) {
             std::cerr << "score: " << error << "\n";
             return 1;
         }
+    }
+    if (args.flag("json") && args.option("db")) {
+        // The trainee's progress against the experts' standard (docs/scoring.md, "Proficiency").
+        std::optional<Exercise> graded = exercise;
+        if (!graded) {
+            std::vector<std::string> errors;
+            graded = recordedExercise(RecordingReader::open(*recording).header(), errors);
+        }
+        auto j = nlohmann::json::parse(scoreReportToJson(report));
+        if (graded) {
+            std::string error;
+            const std::string proficiency =
+                proficiencyJsonForScore(report, *graded, args.option("exercise").value_or(""), *args.option("db"),
+                                        *args.option("trainee"), error);
+            if (!error.empty()) {
+                std::cerr << "score: --db: " << error << "\n";
+                return 1;
+            }
+            if (!proficiency.empty()) j["proficiency"] = nlohmann::json::parse(proficiency);
+        }
+        std::cout << j.dump(2) << "\n";
+        return 0;
     }
     if (args.flag("json")) std::cout << scoreReportToJson(report) << "\n";
     else std::cout << scoreReportToText(report);

@@ -28,7 +28,12 @@ void usage(std::ostream& out) {
            "  palpate-cli record info|verify FILE [--json]\n"
            "  palpate-cli record export-csv FILE [--out CSV]\n"
            "  palpate-cli record replay FILE [--mesh FILE [--mesh-unit U]] [--json]\n"
-           "  palpate-cli score --recording FILE [--exercise FILE] [--mesh FILE [--mesh-unit U]] [--json] [--pdf FILE [--trainee NAME]]\n"
+           "  palpate-cli score --recording FILE [--exercise FILE] [--mesh FILE [--mesh-unit U]] [--json] [--pdf FILE] [--trainee NAME [--db FILE]]\n"
+           "  palpate-cli trainee list [--db FILE] [--json]\n"
+           "  palpate-cli trainee add-session --trainee NAME --recording FILE [--exercise FILE] [--expert] [--db FILE] [--json]\n"
+           "  palpate-cli trainee curve --trainee NAME --exercise FILE [--png FILE] [--metric NAME,..] [--db FILE] [--json]\n"
+           "  palpate-cli trainee staircase --trainee NAME --exercise FILE [--db FILE] [--json]\n"
+           "      --db: the results database (default: the GUI's, results.sqlite in its data folder)\n"
            "  palpate-cli sweep [--json] [--csv FILE] [--png FILE] [--quick] [--shapes sphere,stomach] [--sizes N,..]\n"
            "                    [--max-rings N] [--no-paper] [--no-others] [--repeats N] [TISSUE]\n"
            "  palpate-cli accuracy --reference punch|hertz [--json] [--quick] [--nu LIST] [--levels LIST]\n"
@@ -72,6 +77,7 @@ int main(int argc, char** argv) {
         if (command == "run") return palpate::cli::runCommand(words);
         if (command == "record") return palpate::cli::recordCommand(words);
         if (command == "score") return palpate::cli::scoreCommand(words);
+        if (command == "trainee") return palpate::cli::traineeCommand(words);
         if (command == "sweep") return palpate::cli::sweepCommand(words);
         if (command == "stability") return palpate::cli::stabilityCommand(words);
         if (command == "calibrate") return palpate::cli::calibrateCommand(words);

@@ -2,6 +2,7 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSqlError>
@@ -39,6 +40,17 @@ const char* const kMigrateV1ToV2[] = {
 // Version 3: how the session ended (ResultOutcome); '' for the rows stored before.
 const char* const kMigrateV2ToV3[] = {
     "ALTER TABLE results ADD COLUMN outcome TEXT NOT NULL DEFAULT ''",
+};
+
+// Version 4: expert (reference) sessions, the guidance aids shown, and each trainee's staircase per
+// exercise (docs/scoring.md, "Staircase" and "Proficiency").
+const char* const kMigrateV3ToV4[] = {
+    "ALTER TABLE results ADD COLUMN expert INTEGER NOT NULL DEFAULT 0",
+    "ALTER TABLE results ADD COLUMN aids_json TEXT NOT NULL DEFAULT '[]'",
+    "CREATE TABLE staircases (trainee_id INTEGER NOT NULL REFERENCES trainees(id),"
+    " exercise_key TEXT NOT NULL, state_json TEXT NOT NULL, updated_utc TEXT NOT NULL,"
+    " PRIMARY KEY (trainee_id, exercise_key))",
+    "PRAGMA user_version = 4",
 };
 
 QString isoUtc(const QDateTime& t) { return t.toUTC().toString(Qt::ISODateWithMs); }
@@ -188,6 +200,11 @@ bool ResultsDatabase::migrate(int from, QString* error) {
         if (!why.isEmpty()) return fail(tr("cannot migrate from schema version 2 to 3: %1").arg(why), error);
         from = 3;
     }
+    if (from == 3) {
+        const QString why = runInTransaction(mDb, std::begin(kMigrateV3ToV4), std::end(kMigrateV3ToV4));
+        if (!why.isEmpty()) return fail(tr("cannot migrate from schema version 3 to 4: %1").arg(why), error);
+        from = 4;
+    }
     return true;
 }
 
@@ -301,6 +318,17 @@ std::vector<TraineeRecord> ResultsDatabase::trainees() const {
 qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, const QString& exerciseName,
                                   const QString& exercisePath, const QDateTime& startedUtc, double durationS,
                                   const QString& recordingPath, QString* error) {
+    return addResult(traineeId, report, exerciseName, exercisePath, startedUtc, durationS, recordingPath, false, error);
+}
+
+qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, const QString& exerciseName,
+                                  const QString& exercisePath, const QDateTime& startedUtc, double durationS,
+                                  const QString& recordingPath, bool expert, QString* error) {
+    QJsonArray aidsArray;
+    for (const GuidanceAid& aid : report.aids)
+        aidsArray.append(QJsonObject{{QStringLiteral("name"), QString::fromStdString(aid.name)},
+                                     {QStringLiteral("level"), aid.level}});
+    const QString aids = QString::fromUtf8(QJsonDocument(aidsArray).toJson(QJsonDocument::Compact));
     if (!isOpen()) return fail(tr("not open"), error), -1;
     // The same metrics and rubric objects as `palpate-cli score --json`.
     const QJsonObject all =
@@ -324,9 +352,9 @@ qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, c
             q.finish();
             q.prepare(QStringLiteral(
                 "INSERT INTO results (trainee_id, exercise_name, exercise_path, started_utc, duration_s,"
-                " score, metrics_json, rubric_json, recording_path, outcome)"
+                 " score, metrics_json, rubric_json, recording_path, outcome, expert, aids_json)"
                 // A null QString binds as NULL: empty text instead.
-                " VALUES (?, COALESCE(?, ''), COALESCE(?, ''), ?, ?, ?, ?, ?, COALESCE(?, ''), ?)"));
+                " VALUES (?, COALESCE(?, ''), COALESCE(?, ''), ?, ?, ?, ?, ?, COALESCE(?, ''), ?, ?, ?)"));
             q.addBindValue(traineeId);
             q.addBindValue(exerciseName);
             q.addBindValue(exercisePath);
@@ -337,6 +365,8 @@ qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, c
             q.addBindValue(rubric);
             q.addBindValue(recordingPath);
             q.addBindValue(outcomeKey(outcomeOf(report)));
+            q.addBindValue(expert ? 1 : 0);
+            q.addBindValue(aids);
             if (q.exec())
                 id = q.lastInsertId().toLongLong();
             else
@@ -352,13 +382,25 @@ qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, c
 }
 
 std::vector<ResultRecord> ResultsDatabase::results(qint64 traineeId) const {
+    return selectResults(QStringLiteral("trainee_id = ?"), traineeId);
+}
+
+std::vector<ResultRecord> ResultsDatabase::expertResults(const QString& exercisePath, const QString& exerciseName) const {
+    std::vector<ResultRecord> out;
+    for (ResultRecord& r : selectResults(QStringLiteral("expert = ?"), 1))
+        if (isSameExercise(r, exercisePath, exerciseName)) out.push_back(std::move(r));
+    return out;
+}
+
+std::vector<ResultRecord> ResultsDatabase::selectResults(const QString& where, const QVariant& bind) const {
     std::vector<ResultRecord> out;
     if (!isOpen()) return out;
     QSqlQuery q(mDb);
     q.prepare(QStringLiteral(
         "SELECT id, trainee_id, exercise_name, exercise_path, started_utc, duration_s, score, metrics_json,"
-        " rubric_json, recording_path, outcome FROM results WHERE trainee_id = ? ORDER BY started_utc, id"));
-    q.addBindValue(traineeId);
+        " rubric_json, recording_path, outcome, expert, aids_json FROM results WHERE %1 ORDER BY started_utc, id")
+                  .arg(where));
+    q.addBindValue(bind);
     if (!q.exec()) {
         mLastError = tr("%1: %2").arg(mPath, q.lastError().text());
         return out;
@@ -376,9 +418,59 @@ std::vector<ResultRecord> ResultsDatabase::results(qint64 traineeId) const {
         r.rubricJson = q.value(8).toString();
         r.recordingPath = q.value(9).toString();
         r.outcome = outcomeFromKey(q.value(10).toString());
+        r.expert = q.value(11).toInt() != 0;
+        r.aidsJson = q.value(12).toString();
         out.push_back(std::move(r));
     }
     return out;
+}
+
+QString ResultsDatabase::staircase(qint64 traineeId, const QString& exerciseKey) const {
+    if (!isOpen()) return {};
+    QSqlQuery q(mDb);
+    q.prepare(QStringLiteral("SELECT state_json FROM staircases WHERE trainee_id = ? AND exercise_key = ?"));
+    q.addBindValue(traineeId);
+    q.addBindValue(exerciseKey);
+    if (!q.exec()) {
+        mLastError = tr("%1: %2").arg(mPath, q.lastError().text());
+        return {};
+    }
+    return q.next() ? q.value(0).toString() : QString();
+}
+
+bool ResultsDatabase::putStaircase(qint64 traineeId, const QString& exerciseKey, const QString& stateJson,
+                                   QString* error) {
+    if (!isOpen()) return fail(tr("not open"), error);
+    if (!mDb.transaction()) return fail(mDb.lastError().text(), error);
+    QString why;
+    {
+        QSqlQuery q(mDb);
+        q.prepare(QStringLiteral("INSERT OR REPLACE INTO staircases (trainee_id, exercise_key, state_json, updated_utc)"
+                                 " VALUES (?, ?, ?, ?)"));
+        q.addBindValue(traineeId);
+        q.addBindValue(exerciseKey);
+        q.addBindValue(stateJson);
+        q.addBindValue(isoUtc(QDateTime::currentDateTimeUtc()));
+        if (!q.exec()) why = q.lastError().text();
+    }
+    if (why.isEmpty() && !mDb.commit()) why = mDb.lastError().text();
+    if (!why.isEmpty()) {
+        mDb.rollback();
+        return fail(tr("cannot store the staircase of %1: %2").arg(exerciseKey, why), error);
+    }
+    return true;
+}
+
+QString exerciseKey(const QString& exercisePath, const QString& exerciseName) {
+    if (exercisePath.isEmpty()) return exerciseName;
+    const QFileInfo info(exercisePath);
+    const QString canonical = info.canonicalFilePath();
+    return canonical.isEmpty() ? QDir::cleanPath(info.absoluteFilePath()) : canonical;
+}
+
+bool isSameExercise(const ResultRecord& result, const QString& exercisePath, const QString& exerciseName) {
+    if (result.exercisePath.isEmpty() || exercisePath.isEmpty()) return result.exerciseName == exerciseName;
+    return exerciseKey(result.exercisePath, QString()) == exerciseKey(exercisePath, QString());
 }
 
 }  // namespace palpate

@@ -9,6 +9,7 @@
 #include <QDateTime>
 #include <QSqlDatabase>
 #include <QString>
+#include <QVariant>
 
 #include <vector>
 
@@ -49,13 +50,22 @@ struct ResultRecord {
     QString rubricJson;     ///< `{name: {value, sub_score, weight, contribution, full, zero}}`
     QString recordingPath;  ///< empty when the session was not recorded
     ResultOutcome outcome = ResultOutcome::Unknown;
+    bool expert = false;    ///< an instructor's reference session: sets the proficiency standard
+    QString aidsJson;       ///< `[{name, level}]`: the guidance aids shown (ScoreReport::aids)
 };
+
+/// How an exercise is told apart across sessions: by its file, the path made absolute (and
+/// canonical when the file exists); a session stored without a path (an exercise carried by a
+/// recording) is matched by the exercise's name. The same key names a trainee's staircase.
+QString exerciseKey(const QString& exercisePath, const QString& exerciseName);
+/// Whether the stored result is of that exercise (by exerciseKey).
+bool isSameExercise(const ResultRecord& result, const QString& exercisePath, const QString& exerciseName);
 
 class ResultsDatabase {
     Q_DECLARE_TR_FUNCTIONS(palpate::ResultsDatabase)
 public:
     /// The version this build writes; files with a newer one are refused, older ones migrated.
-    static constexpr int kSchemaVersion = 3;
+    static constexpr int kSchemaVersion = 4;
 
     ResultsDatabase();
     ~ResultsDatabase();
@@ -79,8 +89,18 @@ public:
     qint64 addResult(qint64 traineeId, const ScoreReport& report, const QString& exerciseName,
                      const QString& exercisePath, const QDateTime& startedUtc, double durationS,
                      const QString& recordingPath, QString* error = nullptr);
+    /// The same, marking the session as an expert's (instructor's reference) when `expert`.
+    qint64 addResult(qint64 traineeId, const ScoreReport& report, const QString& exerciseName,
+                     const QString& exercisePath, const QDateTime& startedUtc, double durationS,
+                     const QString& recordingPath, bool expert, QString* error = nullptr);
     /// The trainee's results, oldest first (the History chart's order).
     std::vector<ResultRecord> results(qint64 traineeId) const;
+    /// Every trainee's expert results of the exercise (isSameExercise), oldest first.
+    std::vector<ResultRecord> expertResults(const QString& exercisePath, const QString& exerciseName) const;
+    /// The trainee's staircase state (Staircase::toJson) for exerciseKey(...); "" when none yet.
+    QString staircase(qint64 traineeId, const QString& exerciseKey) const;
+    /// Stores (replaces) it, committed before returning.
+    bool putStaircase(qint64 traineeId, const QString& exerciseKey, const QString& stateJson, QString* error = nullptr);
     QString lastError() const { return mLastError; }
 
     /// Writes an empty version-1 file (no recording_path): kept so that the migration is tested
@@ -93,6 +113,7 @@ private:
     /// Version 2 to 3: the outcome column, and `completed` for the old rows whose completion is 1
     /// (the rest cannot be told apart from a time-up and stay Unknown).
     QString migrateV2ToV3();
+    std::vector<ResultRecord> selectResults(const QString& where, const QVariant& bind) const;
 
     QString mConnection;
     QString mPath;

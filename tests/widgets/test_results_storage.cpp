@@ -8,6 +8,7 @@
 #include <QApplication>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLocale>
@@ -230,7 +231,7 @@ TEST(ResultsDatabase, MigratesVersion2AddingTheOutcome) {
                                  " '2025-01-02T04:01:00.000Z', 4, 0, '{\"completion\":0}', '{}', '')")});
     ResultsDatabase db;
     ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
-    EXPECT_EQ(db.schemaVersion(), 3);
+    EXPECT_EQ(db.schemaVersion(), ResultsDatabase::kSchemaVersion);
     const std::vector<ResultRecord> rows = db.results(db.trainees().at(0).id);
     ASSERT_EQ(rows.size(), 2u);
     EXPECT_EQ(rows[0].outcome, ResultOutcome::Completed);
@@ -238,6 +239,77 @@ TEST(ResultsDatabase, MigratesVersion2AddingTheOutcome) {
     EXPECT_DOUBLE_EQ(rows[0].score, 85.0);
     EXPECT_EQ(rows[1].outcome, ResultOutcome::Unknown);
     EXPECT_TRUE(isScored(rows[1].outcome));
+}
+
+// A version-3 file gains the expert flag (old rows are trainees' sessions), the aids column (none
+// shown) and the staircase table; expert sessions are found by exercise across trainees.
+TEST(ResultsDatabase, MigratesVersion3AddingExpertsAidsAndStaircases) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("v3.sqlite"));
+    QString error;
+    ASSERT_TRUE(ResultsDatabase::createVersion1(path, &error)) << error.toStdString();
+    // Version 3 as it shipped: version 1, the recording path, the outcome.
+    execOn(path, {QStringLiteral("ALTER TABLE results ADD COLUMN recording_path TEXT NOT NULL DEFAULT ''"),
+                  QStringLiteral("ALTER TABLE results ADD COLUMN outcome TEXT NOT NULL DEFAULT ''"),
+                  QStringLiteral("PRAGMA user_version = 3"),
+                  QStringLiteral("INSERT INTO trainees (name, created) VALUES ('Gus', '2025-01-02T03:04:05.000Z')"),
+                  QStringLiteral("INSERT INTO results (trainee_id, exercise_name, exercise_path, started_utc, duration_s,"
+                                 " score, metrics_json, rubric_json, recording_path, outcome) VALUES (1, 'Press',"
+                                 " '/p.json', '2025-01-02T04:00:00.000Z', 20, 85, '{\"completion\":1}', '{}', '/a',"
+                                 " 'completed')")});
+    ResultsDatabase db;
+    ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
+    EXPECT_EQ(db.schemaVersion(), 4);
+    const qint64 gus = db.trainees().at(0).id;
+    std::vector<ResultRecord> rows = db.results(gus);
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_FALSE(rows[0].expert);
+    EXPECT_EQ(rows[0].aidsJson, QStringLiteral("[]"));
+    EXPECT_EQ(rows[0].outcome, ResultOutcome::Completed);
+    EXPECT_DOUBLE_EQ(rows[0].score, 85.0);
+    EXPECT_TRUE(db.expertResults(QStringLiteral("/p.json"), QStringLiteral("Press")).empty());
+
+    // Expert sessions of another trainee (the instructor), with the aids shown.
+    const qint64 ida = db.addTrainee(QStringLiteral("Ida (instructor)"));
+    ScoreReport withAids = sampleReport(95.0);
+    withAids.aids = {{"force_gauge", 0.5}};
+    const QDateTime t(QDate(2026, 1, 1), QTime(9, 0), Qt::UTC);
+    ASSERT_GE(db.addResult(ida, withAids, QStringLiteral("Press"), QStringLiteral("/p.json"), t, 9.0, QString(), true,
+                           &error), 0)
+        << error.toStdString();
+    ASSERT_GE(db.addResult(ida, sampleReport(90.0), QStringLiteral("Other"), QStringLiteral("/o.json"), t, 9.0,
+                           QString(), true), 0);
+    ASSERT_GE(db.addResult(gus, sampleReport(50.0), QStringLiteral("Press"), QStringLiteral("/p.json"), t, 9.0,
+                           QString()), 0);  // the old call: not an expert's
+    const std::vector<ResultRecord> experts = db.expertResults(QStringLiteral("/p.json"), QStringLiteral("Press"));
+    ASSERT_EQ(experts.size(), 1u);
+    EXPECT_TRUE(experts[0].expert);
+    EXPECT_EQ(experts[0].traineeId, ida);
+    EXPECT_DOUBLE_EQ(experts[0].score, 95.0);
+    const QJsonDocument aids = QJsonDocument::fromJson(experts[0].aidsJson.toUtf8());
+    ASSERT_TRUE(aids.isArray());
+    ASSERT_EQ(aids.array().size(), 1);
+    EXPECT_EQ(aids.array()[0].toObject().value(QStringLiteral("name")).toString(), QStringLiteral("force_gauge"));
+    EXPECT_DOUBLE_EQ(aids.array()[0].toObject().value(QStringLiteral("level")).toDouble(), 0.5);
+    rows = db.results(gus);
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_FALSE(rows[1].expert);
+    // A session stored without a path (the exercise a recording carried) matches by name.
+    ASSERT_GE(db.addResult(ida, sampleReport(91.0), QStringLiteral("Press"), QString(), t, 9.0, QString(), true), 0);
+    EXPECT_EQ(db.expertResults(QStringLiteral("/p.json"), QStringLiteral("Press")).size(), 2u);
+
+    // Staircases per trainee and exercise, kept across a reopen, replaced by a put.
+    EXPECT_EQ(db.staircase(gus, QStringLiteral("/p.json")), QString());
+    ASSERT_TRUE(db.putStaircase(gus, QStringLiteral("/p.json"), QStringLiteral("{\"level\":3}"), &error))
+        << error.toStdString();
+    ASSERT_TRUE(db.putStaircase(gus, QStringLiteral("/p.json"), QStringLiteral("{\"level\":2.5}"), &error));
+    ASSERT_TRUE(db.putStaircase(ida, QStringLiteral("/p.json"), QStringLiteral("{\"level\":1}"), &error));
+    EXPECT_FALSE(db.putStaircase(9999, QStringLiteral("/p.json"), QStringLiteral("{}"), &error));
+    db.close();
+    ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
+    EXPECT_EQ(db.staircase(gus, QStringLiteral("/p.json")), QStringLiteral("{\"level\":2.5}"));
+    EXPECT_EQ(db.staircase(ida, QStringLiteral("/p.json")), QStringLiteral("{\"level\":1}"));
+    EXPECT_EQ(db.staircase(gus, QStringLiteral("/o.json")), QString());
 }
 
 TEST(ResultsDatabase, RefusesNewerSchema) {
