@@ -1,6 +1,7 @@
 #include "app/cli/ExerciseRun.h"
 
 #include "app/common/DefaultScene.h"
+#include "engine/scoring/Staircase.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +10,32 @@
 namespace palpate::cli {
 
 std::unique_ptr<ExerciseRun> ExerciseRun::load(const std::string& exercisePath, const std::string& markAt,
-                                               const std::string& doneAt, std::string& error) {
+                                               const std::string& doneAt, const std::string& level,
+                                               std::string& error) {
     auto loaded = loadExercise(exercisePath);
     if (!loaded.exercise) {
         for (const auto& e : loaded.errors) error += (error.empty() ? "" : "\n") + e;
         return nullptr;
+    }
+    if (!level.empty()) {
+        const auto& staircase = loaded.exercise->detectLumps.staircase;
+        if (loaded.exercise->type != ExerciseType::DetectLumps || !staircase) {
+            error = "--level: " + exercisePath + " has no staircase (detect_lumps.staircase)";
+            return nullptr;
+        }
+        std::size_t used = 0;
+        double value = std::nan("");
+        try {
+            value = std::stod(level, &used);
+        } catch (...) {
+        }
+        const double lo = std::min(staircase->easiest, staircase->hardest), hi = std::max(staircase->easiest, staircase->hardest);
+        if (used != level.size() || !(value >= lo && value <= hi)) {
+            error = "--level: '" + level + "' is not a " + staircaseParameterName(staircase->parameter) + " between " +
+                    std::to_string(lo) + " and " + std::to_string(hi) + " (the staircase's range)";
+            return nullptr;
+        }
+        loaded.exercise = exerciseAtLevel(*loaded.exercise, value);
     }
     std::unique_ptr<ExerciseRun> run(new ExerciseRun());
     std::vector<std::string> errors;

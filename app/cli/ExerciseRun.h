@@ -20,9 +20,10 @@ class ExerciseRun {
 public:
     /// Loads the exercise, its mesh and preset; null with `error` (every problem, one a line).
     /// `markAt`: loop times in seconds, comma-separated ("" for none); `doneAt`: the loop time at
-    /// which a detect-lumps examination is finished ("" for never).
+    /// which a detect-lumps examination is finished ("" for never); `level`: a staircase's level
+    /// for every lump ("" for the file's lumps; docs/scoring.md, "Staircase").
     static std::unique_ptr<ExerciseRun> load(const std::string& exercisePath, const std::string& markAt,
-                                             const std::string& doneAt, std::string& error);
+                                             const std::string& doneAt, const std::string& level, std::string& error);
 
     const Exercise& exercise() const { return mAssets.exercise; }
     const TissuePreset& preset() const { return mAssets.preset; }

@@ -33,7 +33,7 @@ extern "C" void onInterrupt(int) { gInterrupted.store(true); }
 int runCommand(const std::vector<std::string>& words) {
     Args args(words, {"json", "no-fifo", "overwrite"},
               {"mesh", "device", "seconds", "record", "rate", "method", "model", "preset", "note", "exercise",
-               "mark-at", "done-at", kMeshUnitOption});
+               "mark-at", "done-at", "level", kMeshUnitOption});
     if (!args.ok()) {
         std::cerr << "run: " << args.error() << "\n";
         return 2;
@@ -53,13 +53,14 @@ int runCommand(const std::vector<std::string>& words) {
         }
         std::string problem;
         exerciseRun = ExerciseRun::load(*path, args.option("mark-at").value_or(""), args.option("done-at").value_or(""),
-                                        problem);
+                                        args.option("level").value_or(""), problem);
         if (!exerciseRun) {
             std::cerr << "run: " << problem << "\n";
             return 1;
         }
-    } else if (args.option("mark-at") || args.option("done-at")) {
-        std::cerr << "run: " << (args.option("mark-at") ? "--mark-at" : "--done-at") << " needs --exercise\n";
+    } else if (args.option("mark-at") || args.option("done-at") || args.option("level")) {
+        std::cerr << "run: " << (args.option("mark-at") ? "--mark-at" : args.option("done-at") ? "--done-at" : "--level")
+                  << " needs --exercise\n";
         return 2;
     }
     const auto seconds = parseNumber(args.option("seconds").value_or(

@@ -25,6 +25,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <iostream>
 
 namespace palpate::cli {
@@ -236,6 +237,23 @@ int addSessionCommand(const std::vector<std::string>& words) {
                 return 1;
             }
             staircase.emplace(*exercise->detectLumps.staircase);
+        }
+        // A trial counts at the level it ran at: the lumps of the exercise the recording carries
+        // (run --level writes them there). A session at another level is stored, but is not this
+        // staircase's trial.
+        std::vector<std::string> noteErrors;
+        const std::optional<Exercise> ran = recordedExercise(reader.header(), noteErrors);
+        const std::optional<double> ranLevel = ran ? staircaseLevelOf(*ran, staircase->def()) : std::nullopt;
+        if (!ranLevel || std::fabs(*ranLevel - staircase->level()) > 1e-9) {
+            std::cerr << "trainee add-session: the session ran "
+                      << (ranLevel ? "at " + std::string(staircaseParameterName(staircase->def().parameter)) + " " +
+                                         std::to_string(*ranLevel)
+                                   : std::string("without a level the recording says"))
+                      << ", the staircase is at " << staircase->level()
+                      << " (palpate-cli run --exercise FILE --level " << staircase->level()
+                      << "): stored, but not a trial of the staircase\n";
+            if (args.flag("json")) std::cout << out.dump(2) << "\n";
+            return 0;
         }
         staircase->record(*trial);
         if (!db.putStaircase(trainee, key, QString::fromStdString(staircase->toJson()), &qerror)) {

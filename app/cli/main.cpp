@@ -24,7 +24,7 @@ void usage(std::ostream& out) {
            "                   [--mesh-unit U] [--spin-fraction F] [--no-fifo] [--json] [--csv FILE]\n"
            "  palpate-cli run [--mesh FILE [--mesh-unit U]] [--device URI] [--seconds S] [--record FILE] [--rate HZ]\n"
            "                  [--method M] [--preset FILE] [--note TEXT] [--no-fifo] [--json]\n"
-           "                  [--exercise FILE [--mark-at S,..] [--done-at S]] [--overwrite]\n"
+           "                  [--exercise FILE [--mark-at S,..] [--done-at S] [--level L]] [--overwrite]\n"
            "  palpate-cli record info|verify FILE [--json]\n"
            "  palpate-cli record export-csv FILE [--out CSV]\n"
            "  palpate-cli record replay FILE [--mesh FILE [--mesh-unit U]] [--json]\n"

@@ -83,6 +83,11 @@ std::optional<double> Staircase::thresholdEstimate(std::size_t count) const {
 
 void Staircase::redefine(const StaircaseDef& def) {
     if (const std::string problem = staircaseDefProblem(def); !problem.empty()) throw std::invalid_argument(problem);
+    // The same definition (every trial's session passes it again) keeps the run of passes or
+    // fails: only an edited one restarts it.
+    if (def.parameter == mDef.parameter && def.start == mDef.start && def.step == mDef.step &&
+        def.easiest == mDef.easiest && def.hardest == mDef.hardest && def.down == mDef.down && def.up == mDef.up)
+        return;
     mDef = def;
     mLevel = clampLevel(mLevel);
     mPasses = mFails = 0;
@@ -241,5 +246,15 @@ std::optional<bool> staircaseTrialPassed(const MetricValues& metrics) {
 }
 
 std::optional<bool> staircaseTrialPassed(const ScoreReport& report) { return staircaseTrialPassed(metricValues(report)); }
+
+std::optional<double> staircaseLevelOf(const Exercise& exercise, const StaircaseDef& def) {
+    const auto& lumps = exercise.detectLumps.lumps;
+    if (lumps.empty()) return std::nullopt;
+    auto levelOf = [&](const LumpDef& l) { return def.parameter == StaircaseDef::Parameter::Contrast ? l.contrast : l.depthMm; };
+    const double level = levelOf(lumps.front());
+    for (const LumpDef& l : lumps)
+        if (levelOf(l) != level) return std::nullopt;
+    return level;
+}
 
 }  // namespace palpate

@@ -53,7 +53,8 @@ public:
     std::optional<double> thresholdEstimate(std::size_t count = kEstimateReversals) const;
 
     /// Takes a changed definition (the exercise was edited): the level is clamped into its range,
-    /// the counts of passes and fails in a row restart, the history and reversals are kept.
+    /// the counts of passes and fails in a row restart, the history and reversals are kept. The
+    /// same definition changes nothing.
     void redefine(const StaircaseDef& def);
 
     /// The state as small JSON text: the definition, the level, the counts, history and reversals.
@@ -76,6 +77,9 @@ private:
 
 /// The exercise with every lump's staircase property (contrast or depth_mm) set to `level`.
 Exercise exerciseAtLevel(const Exercise& exercise, double level);
+/// The level an exercise's lumps are at for this staircase's property: nullopt when it has no
+/// lumps or they differ (then it is not at one level).
+std::optional<double> staircaseLevelOf(const Exercise& exercise, const StaircaseDef& def);
 
 /// Metric values by name (`palpate-cli score --json`'s "metrics"); nullopt: not measured.
 using MetricValues = std::map<std::string, std::optional<double>>;
