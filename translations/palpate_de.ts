@@ -584,6 +584,10 @@
         <source>%1: is the recording the report is made from; choose another file for the PDF</source>
         <translation>%1: ist die Aufzeichnung, aus der der Bericht entsteht; wählen Sie eine andere Datei für das PDF</translation>
     </message>
+    <message>
+        <source>Examination finished</source>
+        <translation>Untersuchung beendet</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ExerciseEditorPanel</name>
@@ -1402,6 +1406,25 @@
     <message>
         <source>mesh_unit: the viewport shows %1 read in %2, this exercise reads it in %3: press Show this mesh to place points by clicking</source>
         <translation>mesh_unit: Die Ansicht zeigt %1 in %2 gelesen, diese Übung liest es in %3: „Dieses Netz zeigen“ drücken, um Punkte per Klick zu setzen</translation>
+    </message>
+    <message>
+        <source>Detect lumps</source>
+        <translation>Knoten finden</translation>
+    </message>
+    <message>
+        <source>%1 is a detect-lumps exercise, which this editor cannot edit yet: edit its file (docs/scoring.md lists the keys); trainees can run it.</source>
+        <translation>%1 ist eine Übung „Knoten finden“, die dieser Editor noch nicht bearbeiten kann: Bearbeiten Sie die Datei (docs/scoring.md nennt die Schlüssel); Lernende können sie ausführen.</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ExerciseMarkers</name>
+    <message>
+        <source>lump %1, %2 mm deep</source>
+        <translation>Knoten %1, %2 mm tief</translation>
+    </message>
+    <message>
+        <source>examined: %1 to %2 N (largest force)</source>
+        <translation>untersucht: %1 bis %2 N (größte Kraft)</translation>
     </message>
 </context>
 <context>
@@ -2678,6 +2701,22 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
 %3 Knoten, %4 Dreiecke
 %5-Renderer</translation>
     </message>
+    <message>
+        <source>&amp;Coverage Heat Map</source>
+        <translation>&amp;Abdeckungskarte</translation>
+    </message>
+    <message>
+        <source>Show, after a palpation exercise, where the surface was examined and how firmly</source>
+        <translation>Nach einer Tastübung zeigen, wo und wie fest die Oberfläche untersucht wurde</translation>
+    </message>
+    <message>
+        <source>&amp;Finish Examination</source>
+        <translation>Untersuchung &amp;beenden</translation>
+    </message>
+    <message>
+        <source>Finish ends a running detect-lumps examination</source>
+        <translation>Beenden beendet eine laufende Untersuchung „Knoten finden“</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MeshImportDialog</name>
@@ -2912,6 +2951,25 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>cancelling…</source>
         <translation>wird abgebrochen…</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::PalpationSummaryText</name>
+    <message>
+        <source>Lumps found: %1 of %2, false alarms: %3 (sensitivity %4, predictive value %5)</source>
+        <translation>Gefundene Knoten: %1 von %2, Fehlalarme: %3 (Sensitivität %4, Vorhersagewert %5)</translation>
+    </message>
+    <message>
+        <source>Findings on a lump lay %1 mm from its centre on average</source>
+        <translation>Befunde auf einem Knoten lagen im Mittel %1 mm von seiner Mitte entfernt</translation>
+    </message>
+    <message>
+        <source>Surface examined at %1 N or more: %2 %</source>
+        <translation>Mit %1 N oder mehr untersuchte Oberfläche: %2 %</translation>
+    </message>
+    <message>
+        <source>Force: searching %1 N, palpating %2 N (medians; %3 times)</source>
+        <translation>Kraft: Suchen %1 N, Tasten %2 N (Mediane; %3-fach)</translation>
     </message>
 </context>
 <context>
@@ -4508,6 +4566,86 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>Palpate score report, page %1 of %2</source>
         <translation>Palpate-Bewertungsbericht, Seite %1 von %2</translation>
     </message>
+    <message>
+        <source>Palpation</source>
+        <translation>Palpation</translation>
+    </message>
+    <message>
+        <source>Lump %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>%1 x</source>
+        <translation>%1-fach</translation>
+    </message>
+    <message>
+        <source>found</source>
+        <translation>gefunden</translation>
+    </message>
+    <message>
+        <source>missed</source>
+        <translation>übersehen</translation>
+    </message>
+    <message>
+        <source>Lumps</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Lump</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Tiefe</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <source>Contrast</source>
+        <translation>Kontrast</translation>
+    </message>
+    <message>
+        <source>Off by</source>
+        <translation>Abweichung</translation>
+    </message>
+    <message>
+        <source>%1 N</source>
+        <translation>%1 N</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <source>Force by phase</source>
+        <translation>Kraft nach Phase</translation>
+    </message>
+    <message>
+        <source>Phase</source>
+        <translation>Phase</translation>
+    </message>
+    <message>
+        <source>10th pct.</source>
+        <translation>10. Perz.</translation>
+    </message>
+    <message>
+        <source>Median</source>
+        <translation>Median</translation>
+    </message>
+    <message>
+        <source>90th pct.</source>
+        <translation>90. Perz.</translation>
+    </message>
+    <message>
+        <source>Largest</source>
+        <translation>Größte</translation>
+    </message>
+    <message>
+        <source>Ticks</source>
+        <translation>Takte</translation>
+    </message>
 </context>
 <context>
     <name>palpate::SpeedAccuracyChart</name>
@@ -4723,6 +4861,41 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
     <message>
         <source>%1 (preview, not saved)</source>
         <translation>%1 (Vorschau, nicht gespeichert)</translation>
+    </message>
+    <message>
+        <source>Finish</source>
+        <translation>Beenden</translation>
+    </message>
+    <message>
+        <source>End the examination: every lump you found is marked (F7)</source>
+        <translation>Untersuchung beenden: Jeder gefundene Knoten ist markiert (F7)</translation>
+    </message>
+    <message>
+        <source>Mark a lump where the tool presses now (M)</source>
+        <translation>Einen Knoten dort markieren, wo das Werkzeug jetzt drückt (M)</translation>
+    </message>
+    <message>
+        <source>Search the whole surface, press in where it feels different, Mark (M) each lump; Finish (F7) when done</source>
+        <translation>Die ganze Oberfläche absuchen, wo es sich anders anfühlt eindrücken, jeden Knoten markieren (M); zum Schluss Beenden (F7)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n finding(s) marked</source>
+        <translation>
+            <numerusform>%n Befund markiert</numerusform>
+            <numerusform>%n Befunde markiert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>in contact</source>
+        <translation>in Kontakt</translation>
+    </message>
+    <message>
+        <source>not in contact</source>
+        <translation>nicht in Kontakt</translation>
+    </message>
+    <message>
+        <source>surface examined %p%</source>
+        <translation>Oberfläche untersucht %p%</translation>
     </message>
 </context>
 <context>

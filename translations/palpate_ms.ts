@@ -584,6 +584,10 @@
         <source>%1: is the recording the report is made from; choose another file for the PDF</source>
         <translation>%1: ialah rakaman yang menjadi sumber laporan; pilih fail lain untuk PDF</translation>
     </message>
+    <message>
+        <source>Examination finished</source>
+        <translation>Pemeriksaan selesai</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ExerciseEditorPanel</name>
@@ -1402,6 +1406,25 @@
     <message>
         <source>mesh_unit: the viewport shows %1 read in %2, this exercise reads it in %3: press Show this mesh to place points by clicking</source>
         <translation>mesh_unit: paparan menunjukkan %1 dibaca dalam %2, latihan ini membacanya dalam %3: tekan Tunjukkan jejaring ini untuk meletakkan titik dengan mengklik</translation>
+    </message>
+    <message>
+        <source>Detect lumps</source>
+        <translation>Kesan ketulan</translation>
+    </message>
+    <message>
+        <source>%1 is a detect-lumps exercise, which this editor cannot edit yet: edit its file (docs/scoring.md lists the keys); trainees can run it.</source>
+        <translation>%1 ialah latihan kesan ketulan yang belum boleh disunting oleh penyunting ini: sunting failnya (docs/scoring.md menyenaraikan kunci); pelatih boleh menjalankannya.</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ExerciseMarkers</name>
+    <message>
+        <source>lump %1, %2 mm deep</source>
+        <translation>ketulan %1, sedalam %2 mm</translation>
+    </message>
+    <message>
+        <source>examined: %1 to %2 N (largest force)</source>
+        <translation>diperiksa: %1 hingga %2 N (daya terbesar)</translation>
     </message>
 </context>
 <context>
@@ -2675,6 +2698,22 @@ Menggunakan %3 sebagai ganti: pilih yang lain dalam dok Peranti atau dalam Sunti
 %3 bucu, %4 segi tiga
 pemapar %5</translation>
     </message>
+    <message>
+        <source>&amp;Coverage Heat Map</source>
+        <translation>Peta Haba &amp;Liputan</translation>
+    </message>
+    <message>
+        <source>Show, after a palpation exercise, where the surface was examined and how firmly</source>
+        <translation>Tunjukkan, selepas latihan palpasi, di mana permukaan diperiksa dan sekuat mana</translation>
+    </message>
+    <message>
+        <source>&amp;Finish Examination</source>
+        <translation>&amp;Tamatkan Pemeriksaan</translation>
+    </message>
+    <message>
+        <source>Finish ends a running detect-lumps examination</source>
+        <translation>Tamat menamatkan pemeriksaan kesan ketulan yang sedang berjalan</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MeshImportDialog</name>
@@ -2909,6 +2948,25 @@ pemapar %5</translation>
     <message>
         <source>cancelling…</source>
         <translation>membatalkan…</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::PalpationSummaryText</name>
+    <message>
+        <source>Lumps found: %1 of %2, false alarms: %3 (sensitivity %4, predictive value %5)</source>
+        <translation>Ketulan ditemui: %1 daripada %2, penggera palsu: %3 (kepekaan %4, nilai ramalan %5)</translation>
+    </message>
+    <message>
+        <source>Findings on a lump lay %1 mm from its centre on average</source>
+        <translation>Penemuan pada ketulan terletak purata %1 mm dari pusatnya</translation>
+    </message>
+    <message>
+        <source>Surface examined at %1 N or more: %2 %</source>
+        <translation>Permukaan diperiksa pada %1 N atau lebih: %2 %</translation>
+    </message>
+    <message>
+        <source>Force: searching %1 N, palpating %2 N (medians; %3 times)</source>
+        <translation>Daya: mencari %1 N, meraba %2 N (median; %3 kali)</translation>
     </message>
 </context>
 <context>
@@ -4504,6 +4562,86 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>Palpate score report, page %1 of %2</source>
         <translation>Laporan markah Palpate, halaman %1 daripada %2</translation>
     </message>
+    <message>
+        <source>Palpation</source>
+        <translation>Palpasi</translation>
+    </message>
+    <message>
+        <source>Lump %1</source>
+        <translation>Ketulan %1</translation>
+    </message>
+    <message>
+        <source>%1 x</source>
+        <translation>%1 kali</translation>
+    </message>
+    <message>
+        <source>found</source>
+        <translation>ditemui</translation>
+    </message>
+    <message>
+        <source>missed</source>
+        <translation>terlepas</translation>
+    </message>
+    <message>
+        <source>Lumps</source>
+        <translation>Ketulan</translation>
+    </message>
+    <message>
+        <source>Lump</source>
+        <translation>Ketulan</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Kedalaman</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Jejari</translation>
+    </message>
+    <message>
+        <source>Contrast</source>
+        <translation>Kontras</translation>
+    </message>
+    <message>
+        <source>Off by</source>
+        <translation>Tersasar</translation>
+    </message>
+    <message>
+        <source>%1 N</source>
+        <translation>%1 N</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Carian</translation>
+    </message>
+    <message>
+        <source>Force by phase</source>
+        <translation>Daya mengikut fasa</translation>
+    </message>
+    <message>
+        <source>Phase</source>
+        <translation>Fasa</translation>
+    </message>
+    <message>
+        <source>10th pct.</source>
+        <translation>Pers. ke-10</translation>
+    </message>
+    <message>
+        <source>Median</source>
+        <translation>Median</translation>
+    </message>
+    <message>
+        <source>90th pct.</source>
+        <translation>Pers. ke-90</translation>
+    </message>
+    <message>
+        <source>Largest</source>
+        <translation>Terbesar</translation>
+    </message>
+    <message>
+        <source>Ticks</source>
+        <translation>Detik</translation>
+    </message>
 </context>
 <context>
     <name>palpate::SpeedAccuracyChart</name>
@@ -4719,6 +4857,40 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
     <message>
         <source>%1 (preview, not saved)</source>
         <translation>%1 (pratonton, tidak disimpan)</translation>
+    </message>
+    <message>
+        <source>Finish</source>
+        <translation>Tamat</translation>
+    </message>
+    <message>
+        <source>End the examination: every lump you found is marked (F7)</source>
+        <translation>Tamatkan pemeriksaan: setiap ketulan yang ditemui telah ditanda (F7)</translation>
+    </message>
+    <message>
+        <source>Mark a lump where the tool presses now (M)</source>
+        <translation>Tanda ketulan di tempat alat menekan sekarang (M)</translation>
+    </message>
+    <message>
+        <source>Search the whole surface, press in where it feels different, Mark (M) each lump; Finish (F7) when done</source>
+        <translation>Cari seluruh permukaan, tekan di tempat yang terasa berbeza, Tanda (M) setiap ketulan; Tamat (F7) apabila selesai</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n finding(s) marked</source>
+        <translation>
+            <numerusform>%n penemuan ditanda</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>in contact</source>
+        <translation>bersentuhan</translation>
+    </message>
+    <message>
+        <source>not in contact</source>
+        <translation>tidak bersentuhan</translation>
+    </message>
+    <message>
+        <source>surface examined %p%</source>
+        <translation>permukaan diperiksa %p%</translation>
     </message>
 </context>
 <context>

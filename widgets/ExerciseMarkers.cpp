@@ -2,13 +2,16 @@
 
 #include "widgets/OrbitCamera.h"
 
+#include <QCoreApplication>
 #include <QFont>
+#include <QLinearGradient>
 #include <QGuiApplication>
 #include <QPainter>
 #include <QPainterPath>
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <algorithm>
 #include <cmath>
 
@@ -65,6 +68,28 @@ void paintSurfaceCircle(QPainter& painter, const ExerciseMarker& marker, const O
 
 }  // namespace
 
+QColor heatColour(double forceN, double minN, double maxN) {
+    // Amber for the lightest examining force to deep red for the firmest: none of the tissue's,
+    // the rings' or the markers' colours.
+    const double t = maxN > minN ? std::clamp((forceN - minN) / (maxN - minN), 0.0, 1.0) : 1.0;
+    const auto mix = [t](int a, int b) { return int(std::lround(a + t * (b - a))); };
+    return QColor(mix(255, 190), mix(214, 20), mix(70, 40));
+}
+
+void addCoverageHeat(ExerciseMarkers& markers, const ExerciseGeometry& geometry, const PalpationSummary& palpation) {
+    const auto& rest = geometry.restMm();
+    const auto& normals = geometry.normals();
+    markers.heat.clear();
+    markers.heatMinN = palpation.coverage.minForceN;
+    markers.heatMaxN = palpation.coverage.minForceN;
+    for (std::size_t v = 0; v < palpation.peakForceN.size() && v < rest.size(); ++v) {
+        const float f = palpation.peakForceN[v];
+        if (!(f > 0.0f)) continue;
+        markers.heat.push_back({rest[v], normals[v], f});
+        markers.heatMaxN = std::max(markers.heatMaxN, double(f));
+    }
+}
+
 QColor exerciseMarkerColour(ExerciseMarker::Kind kind) {
     switch (kind) {
         case ExerciseMarker::Kind::Target: return QColor(255, 255, 255);
@@ -119,6 +144,25 @@ ExerciseMarkers exerciseMarkers(const ExerciseGeometry& geometry, MarkerAudience
             }
             break;
         }
+        case ExerciseType::DetectLumps: {
+            // Hidden from the trainee until the examination is over: then where they were.
+            const bool show = audience == MarkerAudience::Instructor || (guidance && guidance->over());
+            if (!show) break;
+            const auto& lumps = geometry.lumps();
+            for (std::size_t i = 0; i < lumps.size(); ++i) {
+                ExerciseMarker m;
+                m.kind = ExerciseMarker::Kind::Inclusion;
+                m.positionMm = lumps[i].surfaceMm;
+                m.normal = normalOf(lumps[i].vertex);
+                m.radiusMm = lumps[i].def.radiusMm;
+                m.label = QCoreApplication::translate("palpate::ExerciseMarkers", "lump %1, %2 mm deep")
+                              .arg(i + 1)
+                              .arg(lumps[i].def.depthMm, 0, 'f', 1);
+                m.selected = int(i) == selectedIndex;
+                out.markers.push_back(m);
+            }
+            break;
+        }
         case ExerciseType::Trace: {
             out.pathMm = geometry.pathMm();
             for (std::size_t i = 0; i < exercise.trace.path.size() && i < geometry.pathMm().size(); ++i) {
@@ -142,6 +186,42 @@ void paintExerciseMarkers(QPainter& painter, const ExerciseMarkers& markers, con
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
     const glm::vec2 size(float(sizePx.width()), float(sizePx.height()));
+
+    if (!markers.heat.empty()) {
+        // Under everything else; only the side facing the camera (no depth test here).
+        painter.setPen(Qt::NoPen);
+        for (const HeatPoint& h : markers.heat) {
+            if (glm::dot(h.normal, camera.eyeMm() - h.positionMm) <= 0.0f) continue;
+            const auto centre = camera.projectToPixel(h.positionMm, size);
+            if (!centre) continue;
+            glm::vec3 u, v;
+            tangentFrame(h.normal, u, v);
+            const auto edge = camera.projectToPixel(h.positionMm + 1.6f * u, size);
+            const float radiusPx = edge ? std::clamp(glm::length(*edge - *centre), 1.5f, 12.0f) : 2.0f;
+            QColor colour = heatColour(h.forceN, markers.heatMinN, markers.heatMaxN);
+            colour.setAlphaF(0.8f);
+            painter.setBrush(colour);
+            painter.drawEllipse(toPoint(*centre), radiusPx, radiusPx);
+        }
+        // The scale, bottom left.
+        QFont small = QGuiApplication::font();
+        small.setPixelSize(11);
+        painter.setFont(small);
+        const QRectF bar(12.0, double(size.y) - 34.0, 140.0, 10.0);
+        QLinearGradient gradient(bar.topLeft(), bar.topRight());
+        gradient.setColorAt(0.0, heatColour(markers.heatMinN, markers.heatMinN, markers.heatMaxN));
+        gradient.setColorAt(1.0, heatColour(markers.heatMaxN, markers.heatMinN, markers.heatMaxN));
+        painter.setBrush(gradient);
+        painter.setPen(QPen(QColor(0, 0, 0, 160), 1.0));
+        painter.drawRect(bar);
+        const QString label = QCoreApplication::translate("palpate::ExerciseMarkers", "examined: %1 to %2 N (largest force)")
+                                  .arg(markers.heatMinN, 0, 'f', 1)
+                                  .arg(markers.heatMaxN, 0, 'f', 1);
+        painter.setPen(QColor(0, 0, 0, 200));
+        painter.drawText(bar.bottomLeft() + QPointF(1, 15), label);
+        painter.setPen(Qt::white);
+        painter.drawText(bar.bottomLeft() + QPointF(0, 14), label);
+    }
 
     if (markers.pathMm.size() >= 2) {
         QPainterPath path;

@@ -32,11 +32,27 @@ struct ExerciseMarker {
     bool selected = false;   ///< the one the instructor is editing: drawn larger
 };
 
+/// One examined vertex of the coverage heat map (docs/scoring.md, "Coverage").
+struct HeatPoint {
+    glm::vec3 positionMm{0.0f};
+    glm::vec3 normal{0.0f};
+    float forceN = 0.0f;  ///< the largest force that covered it
+};
+
 struct ExerciseMarkers {
     std::vector<ExerciseMarker> markers;
     std::vector<glm::vec3> pathMm;  ///< the trace polyline (empty: none)
-    bool empty() const { return markers.empty() && pathMm.empty(); }
+    /// The coverage heat map: only the examined vertices (the rest keep the tissue's colour), and
+    /// the scale's ends (the coverage force and the largest force).
+    std::vector<HeatPoint> heat;
+    double heatMinN = 0.0, heatMaxN = 0.0;
+    bool empty() const { return markers.empty() && pathMm.empty() && heat.empty(); }
 };
+
+/// The heat map of a palpation score over `geometry`'s rest surface: a point per examined vertex.
+void addCoverageHeat(ExerciseMarkers& markers, const ExerciseGeometry& geometry, const PalpationSummary& palpation);
+/// The heat map's colour for a force on the scale [minN, maxN] (tests look for it).
+QColor heatColour(double forceN, double minN, double maxN);
 
 /// Who looks at the exercise: the instructor sees everything, the trainee not the inclusion.
 enum class MarkerAudience { Instructor, Trainee };

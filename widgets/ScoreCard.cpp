@@ -1,5 +1,7 @@
 #include "widgets/ScoreCard.h"
 
+#include "app/report/PalpationSummaryText.h"
+
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -20,9 +22,11 @@ QString formatMetricValue(const MetricResult& line) {
     QString text;
     if (line.metric == Metric::Completion || line.metric == Metric::HoldInWindowFraction ||
         line.metric == Metric::ExcessiveForceFraction || line.metric == Metric::ContactFraction ||
-        line.metric == Metric::BandFraction || line.metric == Metric::Economy) {
+        line.metric == Metric::BandFraction || line.metric == Metric::Economy ||
+        line.metric == Metric::Sensitivity || line.metric == Metric::PositivePredictiveValue ||
+        line.metric == Metric::CoverageFraction) {
         text = QStringLiteral("%1 %").arg(100.0 * value, 0, 'f', 0);
-    } else if (line.metric == Metric::ExcessiveForceEvents) {
+    } else if (line.metric == Metric::ExcessiveForceEvents || line.metric == Metric::FalseAlarms) {
         text = QString::number(std::llround(value));
     } else {
         text = QString::number(value, 'f', std::abs(value) >= 100.0 ? 0 : 2);
@@ -73,6 +77,9 @@ ScoreCard::ScoreCard(QWidget* parent) : QWidget(parent) {
     mTable->setSelectionMode(QAbstractItemView::NoSelection);
     mTable->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     for (int c = 1; c < 4; ++c) mTable->horizontalHeader()->setSectionResizeMode(c, QHeaderView::ResizeToContents);
+    mPalpation = new QLabel(this);
+    mPalpation->setObjectName(QStringLiteral("palpationSummary"));
+    mPalpation->setWordWrap(true);
     mWarnings = new QLabel(this);
     mWarnings->setWordWrap(true);
     mWarnings->setStyleSheet(QStringLiteral("color: #c07000"));
@@ -84,6 +91,7 @@ ScoreCard::ScoreCard(QWidget* parent) : QWidget(parent) {
     buttons->addStretch();
     layout->addWidget(mTitle);
     layout->addWidget(mScore);
+    layout->addWidget(mPalpation);
     layout->addWidget(mTable, 1);
     layout->addWidget(mWarnings);
     layout->addLayout(buttons);
@@ -98,12 +106,16 @@ void ScoreCard::clear() {
     mTitle->setText(tr("No score yet: run an exercise."));
     mScore->setText(QStringLiteral("–"));
     mTable->setRowCount(0);
+    mPalpation->clear();
+    mPalpation->hide();
     mWarnings->clear();
     mWarnings->hide();
     mExportPdf->setEnabled(false);
 }
 
 QString ScoreCard::scoreText() const { return mScore->text(); }
+
+QString ScoreCard::palpationText() const { return mPalpation->text(); }
 
 void ScoreCard::fitNameColumn() {
     // The name column never narrower than its longest word (wrapping cannot split a word), the
@@ -145,6 +157,9 @@ void ScoreCard::setReport(const ScoreReport& report, const QString& traineeName)
         for (int c = 1; c < 4; ++c) mTable->item(row, c)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     }
     fitNameColumn();
+    const QStringList palpation = palpationSummaryLines(report);
+    mPalpation->setText(palpation.join(QLatin1Char('\n')));
+    mPalpation->setVisible(!palpation.isEmpty());
     QStringList warnings;
     for (const auto& w : report.warnings) warnings << QString::fromStdString(w);
     mWarnings->setText(warnings.join(QLatin1Char('\n')));

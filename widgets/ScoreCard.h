@@ -6,6 +6,7 @@
 #include "engine/exercise/ScoreReport.h"
 
 #include <QString>
+#include <QStringList>
 #include <QWidget>
 
 class QLabel;
@@ -29,6 +30,8 @@ public:
     QTableWidget* breakdownTable() const { return mTable; }
     QPushButton* exportPdfButton() const { return mExportPdf; }
     QPushButton* historyButton() const { return mHistory; }
+    /// The palpation lines shown (detection, coverage, force by phase, feedback); "" for others.
+    QString palpationText() const;
 
 signals:
     void exportPdfRequested();
@@ -42,6 +45,7 @@ private:
     bool mHasReport = false;
     QLabel* mScore = nullptr;
     QLabel* mTitle = nullptr;
+    QLabel* mPalpation = nullptr;
     QLabel* mWarnings = nullptr;
     QTableWidget* mTable = nullptr;
     QPushButton* mExportPdf = nullptr;

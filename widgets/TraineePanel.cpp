@@ -64,7 +64,12 @@ TraineePanel::TraineePanel(QWidget* parent) : QWidget(parent) {
     mMark->setToolTip(tr("Mark the lump where the tool presses now (M)"));
     buttons->addWidget(mStart);
     buttons->addWidget(mStop);
+    mFinish = new QPushButton(tr("Finish"), this);
+    mFinish->setObjectName(QStringLiteral("finishExaminationButton"));
+    mFinish->setToolTip(tr("End the examination: every lump you found is marked (F7)"));
+    mFinish->setVisible(false);
     buttons->addWidget(mMark);
+    buttons->addWidget(mFinish);
     layout->addLayout(buttons);
     mMessage = new QLabel(this);
     mMessage->setWordWrap(true);
@@ -102,6 +107,7 @@ TraineePanel::TraineePanel(QWidget* parent) : QWidget(parent) {
     connect(mStart, &QPushButton::clicked, this, &TraineePanel::startRequested);
     connect(mStop, &QPushButton::clicked, this, &TraineePanel::stopRequested);
     connect(mMark, &QPushButton::clicked, this, &TraineePanel::markRequested);
+    connect(mFinish, &QPushButton::clicked, this, &TraineePanel::finishRequested);
     connect(mTrainees, &QComboBox::currentIndexChanged, this, [this] { emit traineeChanged(traineeId()); });
     connect(mExercises, &QComboBox::currentIndexChanged, this, [this] { emit exerciseChanged(exercisePath()); });
     connect(mExercises, &QComboBox::activated, this, &TraineePanel::exercisePicked);
@@ -176,6 +182,8 @@ QString TraineePanel::exercisePath() const { return mExercises->currentIndex() <
 
 void TraineePanel::setExerciseDescription(const QString& text) { mDescription->setText(text); }
 
+void TraineePanel::setFinishShown(bool shown) { mFinish->setVisible(shown); }
+
 void TraineePanel::setMessage(const QString& text) { mMessage->setText(text); }
 
 void TraineePanel::setState(State state) {
@@ -184,6 +192,7 @@ void TraineePanel::setState(State state) {
     mStart->setEnabled(!running && mExercises->count() > 0);
     mStop->setEnabled(running);
     mMark->setEnabled(state == State::Running);
+    mFinish->setEnabled(state == State::Running);
     mTrainees->setEnabled(!running);
     mExercises->setEnabled(!running);
     mPages->setCurrentIndex(state == State::Finished ? 1 : 0);
@@ -233,6 +242,16 @@ void TraineePanel::showGuidance(const Exercise& exercise, const ScoreGuidance& g
             detail = guidance.contact ? tr("In contact") : tr("Not in contact");
             progressPercent = guidance.marked ? 100 : 0;
             mProgress->setFormat(guidance.marked ? tr("marked") : tr("not marked yet"));
+            break;
+        case ExerciseType::DetectLumps:
+            mGauge->setWindow(0.0, 0.0);
+            mMark->setToolTip(tr("Mark a lump where the tool presses now (M)"));
+            instruction = tr("Search the whole surface, press in where it feels different, Mark (M) each lump; "
+                             "Finish (F7) when done");
+            detail = tr("%n finding(s) marked", "", guidance.findings) + QStringLiteral(" · ") +
+                     (guidance.contact ? tr("in contact") : tr("not in contact"));
+            progressPercent = int(std::lround(100.0 * guidance.coverageFraction));
+            mProgress->setFormat(tr("surface examined %p%"));
             break;
         case ExerciseType::Trace:
             mGauge->setWindow(guidance.forceMinN, guidance.forceMaxN);

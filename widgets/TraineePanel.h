@@ -62,6 +62,10 @@ public:
     QPushButton* startButton() const { return mStart; }
     QPushButton* stopButton() const { return mStop; }
     QPushButton* markButton() const { return mMark; }
+    /// Detect lumps: ends the examination (shown only for that type).
+    QPushButton* finishButton() const { return mFinish; }
+    /// Shows Finish: for an exercise the trainee ends (detect lumps).
+    void setFinishShown(bool shown);
     QProgressBar* progressBar() const { return mProgress; }
 
 signals:
@@ -70,6 +74,7 @@ signals:
     void startRequested();
     void stopRequested();
     void markRequested();
+    void finishRequested();
     void traineeChanged(qint64 traineeId);
     void exerciseChanged(const QString& path);
     /// The trainee chose an exercise in the combo (not a programmatic selection).
@@ -83,6 +88,7 @@ private:
     QPushButton* mStart = nullptr;
     QPushButton* mStop = nullptr;
     QPushButton* mMark = nullptr;
+    QPushButton* mFinish = nullptr;
     QStackedWidget* mPages = nullptr;
     QLabel* mInstruction = nullptr;
     QLabel* mDetail = nullptr;

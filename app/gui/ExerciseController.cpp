@@ -51,6 +51,7 @@ ExerciseController::ExerciseController(HapticSession& session, Viewport& viewpor
     });
     connect(&mPanel, &TraineePanel::stopRequested, this, [this] { stop(); });
     connect(&mPanel, &TraineePanel::markRequested, this, [this] { mark(); });
+    connect(&mPanel, &TraineePanel::finishRequested, this, [this] { finishExamination(); });
     connect(&mPanel, &TraineePanel::exerciseChanged, this, [this](const QString& path) { showExerciseDescription(path); });
     connect(&mPanel, &TraineePanel::exercisePicked, this, [this] { mExercisePicked = true; });
     connect(&mPanel, &TraineePanel::traineeChanged, this, [this](qint64 id) {
@@ -186,6 +187,7 @@ QString ExerciseController::begin(const Exercise& exercise, bool preview) {
     mPanel.setState(TraineePanel::State::Starting);
     mPanel.setMessage(preview ? tr("Preview of \"%1\": not stored.").arg(QString::fromStdString(exercise.name)) : QString());
     mPanel.setExerciseDescription(QString::fromStdString(exercise.description));
+    mPanel.setFinishShown(exercise.type == ExerciseType::DetectLumps);
     // The combo names what runs (a preview from the welcome page or the editor too).
     mPanel.showRunningExercise(QString::fromStdString(exercise.name),
                                exercise.sourcePath.empty() ? QString()
@@ -264,11 +266,22 @@ void ExerciseController::updateMarkers() {
     if (!mAssets || !mAssets->geometry) return;
     const ScoreGuidance* guidance = mLive && mLive->started() ? &mLive->guidance() : nullptr;
     // Rebuilt only when what they show changes (a target done, the mark): not every frame.
-    const int key = guidance ? (guidance->completed ? 1000 : guidance->targetIndex) + (guidance->marked ? 2000 : 0) : -3;
+    const int key = (guidance ? (guidance->completed ? 1000 : guidance->targetIndex) + (guidance->marked ? 2000 : 0) : -3) +
+                    (mPhase == Phase::Finished ? 4000 : 0) + (mShowCoverageHeat ? 8000 : 0);
     if (key == mLastMarkers) return;
     mLastMarkers = key;
     ExerciseMarkers markers = exerciseMarkers(*mAssets->geometry,
                                               mPreview ? MarkerAudience::Instructor : MarkerAudience::Trainee, guidance);
+    // After a palpation exercise: what was examined, how firmly, and where the trainee marked.
+    if (mPhase == Phase::Finished && mLastReport && mLastReport->palpation) {
+        if (mShowCoverageHeat) addCoverageHeat(markers, *mAssets->geometry, *mLastReport->palpation);
+        for (const glm::dvec3& f : mLastReport->palpation->findingsMm) {
+            ExerciseMarker m;
+            m.kind = ExerciseMarker::Kind::Mark;
+            m.positionMm = glm::vec3(f);
+            markers.markers.push_back(m);
+        }
+    }
     mViewport.setExerciseMarkers(std::move(markers));
 }
 
@@ -288,6 +301,15 @@ bool ExerciseController::mark() {
         mViewport.setExerciseMarkers(std::move(markers));
     }
     emit message(tr("Marked"));
+    return true;
+}
+
+bool ExerciseController::finishExamination() {
+    if (mPhase != Phase::Running || !mSession.recordingSession() || !mAssets ||
+        mAssets->exercise.type != ExerciseType::DetectLumps)
+        return false;
+    mSession.recordingSession()->mark(kExaminationDoneMark);
+    emit message(tr("Examination finished"));
     return true;
 }
 
@@ -355,6 +377,11 @@ void ExerciseController::finish(const QString& why) {
     updateMarkers();
     emit runningChanged(false);
     emit finished();
+}
+
+void ExerciseController::setShowCoverageHeat(bool on) {
+    mShowCoverageHeat = on;
+    updateMarkers();
 }
 
 QString ExerciseController::exportLastReportPdf(const QString& path) {

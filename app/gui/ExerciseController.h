@@ -64,6 +64,13 @@ public:
     void stop();
     /// The trainee's mark (find the lump: "the lump is where I press now"). False when not running.
     bool mark();
+    /// The trainee ends a detect-lumps examination (the Mark event kExaminationDoneMark; the
+    /// scorer then completes it). False when not running or not a detect-lumps exercise.
+    bool finishExamination();
+    /// After a palpation exercise the viewport shows the coverage heat map (View > Coverage Heat
+    /// Map); off hides it.
+    void setShowCoverageHeat(bool on);
+    bool showsCoverageHeat() const { return mShowCoverageHeat; }
     /// Follows the session: call every frame (and after stepped ticks). Starts the recording once
     /// the loop runs the exercise's scene, updates guidance and markers, finishes when over.
     void poll();
@@ -125,6 +132,7 @@ private:
     qint64 mLastResultId = -1;
     bool mExercisePicked = false;  // the trainee chose an exercise (the dock no longer follows the mesh)
     int mLastMarkers = -1;  // guidance state the markers were built for (target index; -2: finished)
+    bool mShowCoverageHeat = true;
 };
 
 }  // namespace palpate

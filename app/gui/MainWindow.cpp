@@ -392,6 +392,14 @@ void MainWindow::createMenus() {
                                      [this](bool on) { mViewport->setShowRestGhost(on); });
     ghost->setCheckable(true);
     ghost->setChecked(mViewport->showRestGhost());
+    // After a palpation exercise: the surface examined firmly enough, coloured by the largest force.
+    QAction* heat = view->addAction(tr("&Coverage Heat Map"), QKeySequence(Qt::Key_C), this, [this](bool on) {
+        if (mExercises) mExercises->setShowCoverageHeat(on);
+    });
+    heat->setObjectName(QStringLiteral("coverageHeatAction"));
+    heat->setCheckable(true);
+    heat->setChecked(true);
+    heat->setStatusTip(tr("Show, after a palpation exercise, where the surface was examined and how firmly"));
     view->addSeparator();
     view->addAction(mParameterDock->toggleViewAction());
     view->addAction(mDeviceDock->toggleViewAction());
@@ -1313,6 +1321,10 @@ void MainWindow::createExerciseMenu() {
         }
     });
     menu->addAction(tr("S&top"), QKeySequence(Qt::SHIFT | Qt::Key_F6), this, [this] { mExercises->stop(); });
+    menu->addAction(tr("&Finish Examination"), QKeySequence(Qt::Key_F7), this, [this] {
+        if (!mExercises->finishExamination())
+            statusBar()->showMessage(tr("Finish ends a running detect-lumps examination"), 4000);
+    });
     menu->addSeparator();
     menu->addAction(tr("&Open Exercise…"), this, &MainWindow::openExerciseDialog);
     menu->addAction(tr("&New Trainee…"), this, &MainWindow::newTraineeDialog);

@@ -35,6 +35,7 @@ struct ScoreReportContent {
     QDateTime sessionStart;     ///< invalid when the recording does not say
     ScoreReport report;
     std::vector<PressTarget> targets;  ///< the press targets as graded (empty for other types)
+    std::vector<LumpDef> lumps;        ///< detect lumps: the lumps as graded (the table's depth, size, contrast)
     std::vector<ForceSample> force;    ///< empty: the plot is left out
     std::vector<ForceWindowSpan> windows;
 };

@@ -96,6 +96,7 @@ bool scoreReportFromRecording(const QString& recordingPath, const Exercise* exer
     if (reader.header().startUnixUs > 0)
         content.sessionStart = QDateTime::fromMSecsSinceEpoch(reader.header().startUnixUs / 1000);
     if (graded.type == ExerciseType::PressTargets) content.targets = graded.pressTargets.targets;
+    if (graded.type == ExerciseType::DetectLumps) content.lumps = graded.detectLumps.lumps;
     content.force = recordedForceSeries(reader);
 
     // Ticks to the plot's time (s from the first recorded tick), as the force series counts it.

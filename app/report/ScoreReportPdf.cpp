@@ -1,5 +1,7 @@
 #include "app/report/ScoreReportPdf.h"
 
+#include "app/report/PalpationSummaryText.h"
+
 #include "app/report/ChartApplication.h"
 #include "engine/io/AtomicFile.h"
 
@@ -431,6 +433,64 @@ void drawReport(ReportLayout& layout, const ScoreReportContent& content) {
                                  ? Tr::tr("Shaded: each target's own force window, over the time it was the target to press.")
                                  : Tr::tr("Shaded: the force band to keep while tracing."),
                              QColor(90, 90, 90));
+        layout.skip(line * 1.2);
+    }
+
+    if (report.palpation) {
+        // Palpation: what was found, how much was examined and how firmly, and what to do better.
+        const PalpationSummary& p = *report.palpation;
+        layout.ensure(line * 6);
+        layout.paragraph(layout.heading(), Tr::tr("Palpation"));
+        layout.skip(line * 0.3);
+        if (const auto& d = p.detection; d && !d->findingOfLump.empty()) {
+            std::vector<std::vector<Cell>> lumpRows;
+            for (std::size_t k = 0; k < d->findingOfLump.size(); ++k) {
+                const LumpDef* def = k < content.lumps.size() ? &content.lumps[k] : nullptr;
+                const bool hit = d->findingOfLump[k] >= 0;
+                lumpRows.push_back({{Tr::tr("Lump %1").arg(k + 1), {}},
+                                    {def ? Tr::tr("%1 mm").arg(number(def->depthMm, 1)) : QString(), {}},
+                                    {def ? Tr::tr("%1 mm").arg(number(def->radiusMm, 1)) : QString(), {}},
+                                    {def ? Tr::tr("%1 x").arg(number(def->contrast, 1)) : QString(), {}},
+                                    {hit ? Tr::tr("found") : Tr::tr("missed"), {}},
+                                    {hit ? Tr::tr("%1 mm").arg(number(d->localisationMm[k], 1)) : Tr::tr("n/a"), {}}});
+            }
+            layout.table(Tr::tr("Lumps"),
+                         {{Tr::tr("Lump"), 0.16, false},
+                          {Tr::tr("Depth"), 0.16, true},
+                          {Tr::tr("Radius"), 0.16, true},
+                          {Tr::tr("Contrast"), 0.16, true},
+                          {Tr::tr("Result"), 0.18, false},
+                          {Tr::tr("Off by"), 0.18, true}},
+                         lumpRows);
+            layout.skip(line * 0.6);
+        }
+        for (const QString& text : palpationSummaryLines(report)) {
+            layout.paragraph(layout.body(), text);
+            layout.skip(line * 0.2);
+        }
+        if (p.forceByPhase.search || p.forceByPhase.palpation) {
+            std::vector<std::vector<Cell>> phaseRows;
+            auto phaseRow = [&](const QString& name, const std::optional<ForcePercentiles>& f) {
+                if (!f) return;
+                phaseRows.push_back({{name, {}},
+                                     {Tr::tr("%1 N").arg(number(f->p10N, 2)), {}},
+                                     {Tr::tr("%1 N").arg(number(f->p50N, 2)), {}},
+                                     {Tr::tr("%1 N").arg(number(f->p90N, 2)), {}},
+                                     {Tr::tr("%1 N").arg(number(f->maxN, 2)), {}},
+                                     {QLocale().toString(qulonglong(f->samples)), {}}});
+            };
+            phaseRow(Tr::tr("Search"), p.forceByPhase.search);
+            phaseRow(Tr::tr("Palpation"), p.forceByPhase.palpation);
+            layout.skip(line * 0.4);
+            layout.table(Tr::tr("Force by phase"),
+                         {{Tr::tr("Phase"), 0.2, false},
+                          {Tr::tr("10th pct."), 0.16, true},
+                          {Tr::tr("Median"), 0.16, true},
+                          {Tr::tr("90th pct."), 0.16, true},
+                          {Tr::tr("Largest"), 0.16, true},
+                          {Tr::tr("Ticks"), 0.16, true}},
+                         phaseRows);
+        }
         layout.skip(line * 1.2);
     }
 

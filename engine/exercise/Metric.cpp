@@ -10,7 +10,7 @@ struct MetricInfo {
 };
 
 constexpr std::array<MetricInfo, kMetricCount> kInfo{{
-    {"completion", "", "share of the task done: targets achieved, lump marked, path covered", true, true, true, true},
+    {"completion", "", "share of the task done: targets achieved, lump marked, path covered, examination finished (else the surface examined)", true, true, true, true},
     {"time_s", "s", "exercise time until the task was complete (all of it if it was not)", true, true, true, true},
     {"target_error_mm", "mm", "mean distance from the target while pressing inside its force window", true, false, false, false},
     {"hold_in_window_fraction", "", "time inside the force window / time on a target in contact", true, false, false, false},

@@ -386,7 +386,9 @@ ScoreReport Scorer::report() const {
             }
             break;
         case ExerciseType::DetectLumps:
-            completion = mGuidance.completed ? 1.0 : 0.0;
+            // Finished by the trainee: done; cut off by the time limit: as far as the surface was
+            // examined (only an examination that touched nothing is nothing done).
+            completion = mGuidance.completed ? 1.0 : mCoverage->coveredFraction();
             break;
         case ExerciseType::Trace:
             completion = mCovered.empty() ? 0.0 : double(mCoveredCount) / double(mCovered.size());

@@ -352,6 +352,27 @@ TEST(ScriptedExaminers, HealthyTissueRewardsRestraint) {
     EXPECT_NEAR(good.score - bad.score, 100.0 * 20.0 * (2.0 / 3.0) / 55.0, 2.0);
 }
 
+TEST(ScriptedExaminers, AnExaminationNotFinishedIsScoredOnWhatWasExamined) {
+    test::TempDir dir;
+    const Exercise exercise = test::loadExampleExercise("detect_lumps");
+    auto script = test::loadTraineeScript(test::resourcesDir() + "/exercises/detect_lumps.good.path");
+    script.doneS = -1.0;  // never finished: the session ends with the script
+    const std::string recording = dir.file("unfinished.palprec");
+    test::runScriptedSession(exercise, script, recording);
+    std::string error;
+    ReplayScorerDef options;
+    options.findResource = test::testResourceFinder();
+    const ScoreReport r = scoreRecording(RecordingReader::open(recording), &exercise, error, options);
+    ASSERT_EQ(error, "");
+    EXPECT_FALSE(r.guidance.completed);
+    ASSERT_NE(r.find(Metric::Completion), nullptr);
+    EXPECT_DOUBLE_EQ(r.find(Metric::Completion)->value, r.palpation->coverageFraction);
+    EXPECT_EQ(r.palpation->detection->hits, 3u);
+    // Every line as the finished examination's but time (5 of 100: graded only when finished).
+    EXPECT_GT(r.score, 90.0);
+    EXPECT_LT(r.score, 96.0);
+}
+
 TEST(ScriptedExaminers, ScoreJsonCarriesDetectionCoverageAndForceByPhase) {
     test::TempDir dir;
     std::string recording;

@@ -271,6 +271,67 @@ TEST(TraineeMode, FindTheLumpHidesTheInclusionFromTheTraineeAndScoresTheMark) {
     EXPECT_EQ(window->exercises().database().results(window->traineePanel()->traineeId()).size(), stored);
 }
 
+TEST(TraineeMode, DetectLumpsHidesTheLumpsUntilTheEndThenShowsThemTheFindingsAndTheHeatMap) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    // The light presser: marks the two shallow lumps at 73.831 and 78.331 s of its script,
+    // finishes at 83.831 s, never presses deep enough for the 8 mm one.
+    auto window = traineeWindow(dir, "exercises/detect_lumps.light.path");
+    ASSERT_EQ(window->exercises().addTrainee(QStringLiteral("Di")), QString());
+    ASSERT_EQ(window->exercises().addExerciseFile(resource("exercises/detect_lumps.json")), QString());
+    EXPECT_FALSE(window->exercises().finishExamination()) << "not before the session runs";
+    ASSERT_EQ(window->exercises().start(), QString());
+    EXPECT_FALSE(window->traineePanel()->finishButton()->isHidden());
+    window->advanceTicks(100);
+    EXPECT_EQ(countMarkers(window->viewport()->exerciseMarkers(), ExerciseMarker::Kind::Inclusion), 0);
+    EXPECT_TRUE(window->viewport()->exerciseMarkers().heat.empty());
+    window->advanceTicks(73831 - 100 - 1);
+    ASSERT_TRUE(window->exercises().mark());
+    window->advanceTicks(78331 - 73831);
+    ASSERT_TRUE(window->exercises().mark());
+    window->advanceTicks(83831 - 78331);
+    EXPECT_EQ(countMarkers(window->viewport()->exerciseMarkers(), ExerciseMarker::Kind::Inclusion), 0);
+    ASSERT_TRUE(window->exercises().finishExamination());
+    runToEnd(*window, 5000);
+    ASSERT_FALSE(window->exercises().running());
+    ASSERT_TRUE(window->exercises().lastReport());
+    const ScoreReport& live = *window->exercises().lastReport();
+    EXPECT_TRUE(live.guidance.completed) << "Finish completes the examination";
+    ASSERT_TRUE(live.palpation && live.palpation->detection);
+    EXPECT_EQ(live.palpation->detection->hits, 2u);
+    EXPECT_EQ(live.palpation->detection->misses, 1u);
+    EXPECT_EQ(live.palpation->detection->falseAlarms, 0u);
+    EXPECT_EQ(replayScore(window->exercises().lastRecordingPath()).score, live.score);
+
+    // Now the lumps, the two findings and the surface examined (only covered vertices).
+    const ExerciseMarkers& markers = window->viewport()->exerciseMarkers();
+    EXPECT_EQ(countMarkers(markers, ExerciseMarker::Kind::Inclusion), 3);
+    EXPECT_EQ(countMarkers(markers, ExerciseMarker::Kind::Mark), 2);
+    std::size_t covered = 0;
+    for (float f : live.palpation->peakForceN) covered += f > 0.0f ? 1 : 0;
+    EXPECT_GT(covered, 0u);
+    EXPECT_EQ(markers.heat.size(), covered);
+    EXPECT_DOUBLE_EQ(markers.heatMinN, 0.5);
+    const QString card = window->traineePanel()->scoreCard()->palpationText();
+    EXPECT_TRUE(card.contains(QStringLiteral("2 of 3"))) << card.toStdString();
+    EXPECT_TRUE(card.contains(QStringLiteral("Pressed too lightly"))) << card.toStdString();
+    // View > Coverage Heat Map off hides it, on shows it again.
+    window->exercises().setShowCoverageHeat(false);
+    EXPECT_TRUE(window->viewport()->exerciseMarkers().heat.empty());
+    window->exercises().setShowCoverageHeat(true);
+    EXPECT_EQ(window->viewport()->exerciseMarkers().heat.size(), covered);
+}
+
+TEST(CoverageHeat, ColoursRunFromAmberToRedAndLeaveTheTissueAlone) {
+    EXPECT_EQ(heatColour(0.5, 0.5, 2.5), QColor(255, 214, 70));
+    EXPECT_EQ(heatColour(2.5, 0.5, 2.5), QColor(190, 20, 40));
+    EXPECT_EQ(heatColour(9.0, 0.5, 2.5), heatColour(2.5, 0.5, 2.5)) << "clamped";
+    const QColor mid = heatColour(1.5, 0.5, 2.5);
+    EXPECT_GT(mid.red(), 190);
+    EXPECT_LT(mid.green(), 214);
+    EXPECT_GT(mid.green(), 20);
+}
+
 TEST(TraineeMode, ScoreReportPdfHoldsTheScore) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
