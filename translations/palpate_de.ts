@@ -1618,6 +1618,10 @@ Tick %7 µs, %8-mal schneller als previous</translation>
         <source>excessive ≥ %1 N ▸</source>
         <translation>zu stark ≥ %1 N ▸</translation>
     </message>
+    <message>
+        <source>Force gauge faded out: feel the force</source>
+        <translation>Kraftanzeige ausgeblendet: spüren Sie die Kraft</translation>
+    </message>
 </context>
 <context>
     <name>palpate::GuiApplication</name>
@@ -3820,6 +3824,30 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
     <message>
         <source>Data f&amp;older:</source>
         <translation>Daten&amp;ordner:</translation>
+    </message>
+    <message>
+        <source>F&amp;ade the force gauge as the trainee improves</source>
+        <translation>Kraftanzeige &amp;ausblenden, wenn Lernende besser werden</translation>
+    </message>
+    <message>
+        <source>Continuous force feedback breeds dependence: each good session of an exercise fades the gauge, each poor one brings it back</source>
+        <translation>Ständige Kraftrückmeldung macht abhängig: Jede gute Sitzung einer Übung blendet die Anzeige weiter aus, jede schwache holt sie zurück</translation>
+    </message>
+    <message>
+        <source> good sessions to fade out</source>
+        <translation> gute Sitzungen bis ausgeblendet</translation>
+    </message>
+    <message>
+        <source>good at </source>
+        <translation>gut ab </translation>
+    </message>
+    <message>
+        <source> / 100 or more</source>
+        <translation> / 100</translation>
+    </message>
+    <message>
+        <source>Guidance:</source>
+        <translation>Hilfen:</translation>
     </message>
 </context>
 <context>

@@ -1618,6 +1618,10 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
         <source>excessive ≥ %1 N ▸</source>
         <translation>berlebihan ≥ %1 N ▸</translation>
     </message>
+    <message>
+        <source>Force gauge faded out: feel the force</source>
+        <translation>Tolok daya dipudarkan: rasai dayanya</translation>
+    </message>
 </context>
 <context>
     <name>palpate::GuiApplication</name>
@@ -3816,6 +3820,30 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
     <message>
         <source>Data f&amp;older:</source>
         <translation>&amp;Folder data:</translation>
+    </message>
+    <message>
+        <source>F&amp;ade the force gauge as the trainee improves</source>
+        <translation>&amp;Pudarkan tolok daya apabila pelatih bertambah baik</translation>
+    </message>
+    <message>
+        <source>Continuous force feedback breeds dependence: each good session of an exercise fades the gauge, each poor one brings it back</source>
+        <translation>Maklum balas daya berterusan menimbulkan kebergantungan: setiap sesi baik sesuatu latihan memudarkan tolok, setiap sesi lemah mengembalikannya</translation>
+    </message>
+    <message>
+        <source> good sessions to fade out</source>
+        <translation> sesi baik sehingga pudar</translation>
+    </message>
+    <message>
+        <source>good at </source>
+        <translation>baik pada </translation>
+    </message>
+    <message>
+        <source> / 100 or more</source>
+        <translation> / 100 atau lebih</translation>
+    </message>
+    <message>
+        <source>Guidance:</source>
+        <translation>Bimbingan:</translation>
     </message>
 </context>
 <context>

@@ -58,9 +58,23 @@ double ForceGauge::shownScaleN() const {
     return std::max(scaleN, 0.1);
 }
 
+void ForceGauge::setLevel(double level) {
+    const double clamped = std::clamp(level, 0.0, 1.0);
+    if (clamped == mLevel) return;
+    mLevel = clamped;
+    update();
+}
+
 void ForceGauge::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing, true);
+    if (mLevel <= 0.0) {
+        // Faded out: the trainee knows it is gone on purpose, not broken.
+        p.setPen(palette().color(QPalette::PlaceholderText));
+        p.drawText(rect(), Qt::AlignCenter, tr("Force gauge faded out: feel the force"));
+        return;
+    }
+    p.setOpacity(mLevel);
     const double scaleN = shownScaleN();
     const bool excessiveShown = mExcessiveN > 0.0 && mExcessiveN < scaleN;
     const QRectF track(4.0, 4.0, width() - 8.0, height() - 22.0);

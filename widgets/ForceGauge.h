@@ -21,6 +21,9 @@ public:
     /// The scale's full range (at least the excessive force, so that it always shows).
     void setFullScaleN(double fullScaleN);
     void setForceN(double forceN);
+    /// Fading guidance (docs/scoring.md): 1 fully shown .. 0 hidden (then a note says so).
+    void setLevel(double level);
+    double level() const { return mLevel; }
 
     double forceN() const { return mForceN; }
     double windowMinN() const { return mWindowMinN; }
@@ -46,6 +49,7 @@ private:
     double mExcessiveN = 0.0;
     double mFullScaleN = 4.0;
     double mForceN = 0.0;
+    double mLevel = 1.0;
 };
 
 }  // namespace palpate

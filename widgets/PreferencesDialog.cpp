@@ -4,6 +4,9 @@
 
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QCheckBox>
+#include <QSpinBox>
+#include <QDoubleSpinBox>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFileDialog>
@@ -18,6 +21,8 @@
 #include <QVBoxLayout>
 
 #include <string>
+
+#include <algorithm>
 
 namespace palpate {
 
@@ -44,6 +49,9 @@ Preferences Preferences::load() {
     if (!hapticRates().contains(p.hapticRateHz)) p.hapticRateHz = 0;
     p.deviceUri = settings.value(kDeviceUriKey).toString().trimmed();
     p.dataFolder = settings.value(kDataFolderKey).toString().trimmed();
+    p.fadeGauge = settings.value(kFadeGaugeKey, true).toBool();
+    p.fadeSessions = std::clamp(settings.value(kFadeSessionsKey, 5).toInt(), 1, 50);
+    p.goodScore = std::clamp(settings.value(kGoodScoreKey, 80.0).toDouble(), 0.0, 100.0);
     return p;
 }
 
@@ -54,6 +62,9 @@ void Preferences::save() const {
     settings.setValue(kHapticRateKey, hapticRateHz);
     settings.setValue(kDeviceUriKey, deviceUri);
     settings.setValue(kDataFolderKey, dataFolder);
+    settings.setValue(kFadeGaugeKey, fadeGauge);
+    settings.setValue(kFadeSessionsKey, fadeSessions);
+    settings.setValue(kGoodScoreKey, goodScore);
     cachedForceUnit() = forceUnit;
 }
 
@@ -150,6 +161,24 @@ PreferencesDialog::PreferencesDialog(QWidget* parent) : QDialog(parent) {
     auto* folderLabel = new QLabel(tr("Data f&older:"), this);
     folderLabel->setBuddy(mDataFolder);
     form->addRow(folderLabel, folderRow);
+    mFadeGauge = new QCheckBox(tr("F&ade the force gauge as the trainee improves"), this);
+    mFadeGauge->setToolTip(tr("Continuous force feedback breeds dependence: each good session of an exercise fades "
+                              "the gauge, each poor one brings it back"));
+    mFadeSessions = new QSpinBox(this);
+    mFadeSessions->setRange(1, 50);
+    mFadeSessions->setSuffix(tr(" good sessions to fade out"));
+    mGoodScore = new QDoubleSpinBox(this);
+    mGoodScore->setRange(0.0, 100.0);
+    mGoodScore->setDecimals(0);
+    mGoodScore->setPrefix(tr("good at "));
+    mGoodScore->setSuffix(tr(" / 100 or more"));
+    auto* fadeRow = new QHBoxLayout;
+    fadeRow->addWidget(mFadeSessions);
+    fadeRow->addWidget(mGoodScore);
+    form->addRow(tr("Guidance:"), mFadeGauge);
+    form->addRow(QString(), fadeRow);
+    connect(mFadeGauge, &QCheckBox::toggled, mFadeSessions, &QWidget::setEnabled);
+    connect(mFadeGauge, &QCheckBox::toggled, mGoodScore, &QWidget::setEnabled);
 
     mProblemLabel = new QLabel(this);
     mProblemLabel->setObjectName(QStringLiteral("preferencesProblem"));
@@ -185,6 +214,11 @@ void PreferencesDialog::setPreferences(const Preferences& p) {
     else if (const int i = mDevice->findData(p.deviceUri); i >= 0) mDevice->setCurrentIndex(i);
     else mDevice->setEditText(p.deviceUri);
     mDataFolder->setText(QDir::toNativeSeparators(p.dataFolder));
+    mFadeGauge->setChecked(p.fadeGauge);
+    mFadeSessions->setValue(p.fadeSessions);
+    mGoodScore->setValue(p.goodScore);
+    mFadeSessions->setEnabled(p.fadeGauge);
+    mGoodScore->setEnabled(p.fadeGauge);
     validate();
 }
 
@@ -196,6 +230,9 @@ Preferences PreferencesDialog::preferences() const {
     const QString text = mDevice->currentText().trimmed();
     p.deviceUri = (mDevice->currentIndex() == 0 && text == mDevice->itemText(0)) ? QString() : text;
     p.dataFolder = QDir::fromNativeSeparators(mDataFolder->text().trimmed());
+    p.fadeGauge = mFadeGauge->isChecked();
+    p.fadeSessions = mFadeSessions->value();
+    p.goodScore = mGoodScore->value();
     return p;
 }
 

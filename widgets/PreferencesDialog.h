@@ -8,6 +8,9 @@
 //   device/defaultUri  "" (built-in: mouse:) | a device URI    the interactive window's device at start
 //   dataFolder         "" (QStandardPaths::AppDataLocation)    recordings/ and results.sqlite, at start and on OK
 //   firstRunDone       bool                                    the welcome page is not shown at start
+//   guidance/fadeGauge bool (true)                             the force gauge fades as a trainee improves
+//   guidance/fadeSessions 1..50 (5)                            good sessions from a full gauge to none
+//   guidance/goodScore 0..100 (80)                             a session this good fades it (docs/scoring.md)
 //
 // --device, --preset and the recorder's own Folder… choice win over these.
 
@@ -17,6 +20,8 @@
 #include <QStringList>
 
 class QCheckBox;
+class QDoubleSpinBox;
+class QSpinBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -31,12 +36,18 @@ struct Preferences {
     static constexpr const char* kDeviceUriKey = "device/defaultUri";
     static constexpr const char* kDataFolderKey = "dataFolder";
     static constexpr const char* kFirstRunDoneKey = "firstRunDone";
+    static constexpr const char* kFadeGaugeKey = "guidance/fadeGauge";
+    static constexpr const char* kFadeSessionsKey = "guidance/fadeSessions";
+    static constexpr const char* kGoodScoreKey = "guidance/goodScore";
 
     QString language;                       ///< "" = follow the system locale
     QString forceUnit = QStringLiteral("N");  ///< "N" or "gf" (gram-force: 1 gf = 9.80665 mN)
     int hapticRateHz = 0;                   ///< 0 = the tissue preset's rate
     QString deviceUri;                      ///< "" = the built-in default (the mouse)
     QString dataFolder;                     ///< "" = defaultDataFolder()
+    bool fadeGauge = true;                  ///< fading guidance (GuidanceFadeDef)
+    int fadeSessions = 5;
+    double goodScore = 80.0;
 
     static Preferences load();
     void save() const;
@@ -77,6 +88,7 @@ public:
     QComboBox* hapticRateBox() const { return mHapticRate; }
     QComboBox* deviceBox() const { return mDevice; }
     QLineEdit* dataFolderEdit() const { return mDataFolder; }
+    QCheckBox* fadeGaugeBox() const { return mFadeGauge; }
 
 public slots:
     /// Saves to QSettings and closes (OK).
@@ -92,6 +104,9 @@ private:
     QComboBox* mHapticRate = nullptr;
     QComboBox* mDevice = nullptr;
     QLineEdit* mDataFolder = nullptr;
+    QCheckBox* mFadeGauge = nullptr;
+    QSpinBox* mFadeSessions = nullptr;
+    QDoubleSpinBox* mGoodScore = nullptr;
     QLabel* mProblemLabel = nullptr;
     QPushButton* mOkButton = nullptr;
     QString mProblem;

@@ -184,6 +184,8 @@ void TraineePanel::setExerciseDescription(const QString& text) { mDescription->s
 
 void TraineePanel::setFinishShown(bool shown) { mFinish->setVisible(shown); }
 
+void TraineePanel::setGaugeLevel(double level) { mGauge->setLevel(level); }
+
 void TraineePanel::setMessage(const QString& text) { mMessage->setText(text); }
 
 void TraineePanel::setState(State state) {

@@ -66,6 +66,9 @@ public:
     QPushButton* finishButton() const { return mFinish; }
     /// Shows Finish: for an exercise the trainee ends (detect lumps).
     void setFinishShown(bool shown);
+    /// The force gauge's level for this session (fading guidance): 1 shown .. 0 hidden.
+    void setGaugeLevel(double level);
+    ForceGauge* gauge() const { return mGauge; }
     QProgressBar* progressBar() const { return mProgress; }
 
 signals:

@@ -1,5 +1,8 @@
 #include "app/gui/ExerciseController.h"
 
+#include "engine/scoring/GuidanceFade.h"
+#include "widgets/PreferencesDialog.h"
+
 #include "app/common/DefaultScene.h"
 #include "engine/exercise/ExerciseFile.h"
 #include "engine/record/RecordingReader.h"
@@ -188,6 +191,8 @@ QString ExerciseController::begin(const Exercise& exercise, bool preview) {
     mPanel.setMessage(preview ? tr("Preview of \"%1\": not stored.").arg(QString::fromStdString(exercise.name)) : QString());
     mPanel.setExerciseDescription(QString::fromStdString(exercise.description));
     mPanel.setFinishShown(exercise.type == ExerciseType::DetectLumps);
+    mGaugeLevel = preview ? 1.0 : gaugeLevelFor(exercise);
+    mPanel.setGaugeLevel(mGaugeLevel);
     // The combo names what runs (a preview from the welcome page or the editor too).
     mPanel.showRunningExercise(QString::fromStdString(exercise.name),
                                exercise.sourcePath.empty() ? QString()
@@ -304,6 +309,27 @@ bool ExerciseController::mark() {
     return true;
 }
 
+double ExerciseController::gaugeLevelFor(const Exercise& exercise) const {
+    const Preferences prefs = Preferences::load();
+    GuidanceFadeDef def;
+    def.enabled = prefs.fadeGauge;
+    def.sessionsToFade = prefs.fadeSessions;
+    def.goodScore = prefs.goodScore;
+    std::vector<double> scores;
+    if (mDatabase.isOpen() && mTraineeId >= 0) {
+        const QString path = exercise.sourcePath.empty()
+                                 ? QString()
+                                 : QFileInfo(QString::fromStdString(exercise.sourcePath)).absoluteFilePath();
+        for (const ResultRecord& r : mDatabase.results(mTraineeId)) {
+            const bool same = path.isEmpty() || r.exercisePath.isEmpty()
+                                  ? r.exerciseName == QString::fromStdString(exercise.name)
+                                  : QFileInfo(r.exercisePath).absoluteFilePath() == path;
+            if (same && isScored(r.outcome) && !r.expert) scores.push_back(r.score);
+        }
+    }
+    return forceGaugeLevel(scores, def);
+}
+
 bool ExerciseController::finishExamination() {
     if (mPhase != Phase::Running || !mSession.recordingSession() || !mAssets ||
         mAssets->exercise.type != ExerciseType::DetectLumps)
@@ -347,6 +373,8 @@ void ExerciseController::finish(const QString& why) {
         return;
     }
     if (!problem.empty()) report.warnings.push_back("recording: " + problem);
+    // What guidance the trainee had: stored with the result (docs/scoring.md, "Fading guidance").
+    report.aids.push_back({"force_gauge", mGaugeLevel});
     mLastReport = report;
     mPhase = Phase::Finished;
     mPanel.scoreCard()->setReport(report, mTraineeName);

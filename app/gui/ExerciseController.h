@@ -70,6 +70,8 @@ public:
     /// After a palpation exercise the viewport shows the coverage heat map (View > Coverage Heat
     /// Map); off hides it.
     void setShowCoverageHeat(bool on);
+    /// The force gauge's level for the running session (fading guidance; 1 in a preview).
+    double gaugeLevel() const { return mGaugeLevel; }
     bool showsCoverageHeat() const { return mShowCoverageHeat; }
     /// Follows the session: call every frame (and after stepped ticks). Starts the recording once
     /// the loop runs the exercise's scene, updates guidance and markers, finishes when over.
@@ -106,6 +108,8 @@ private:
     QString begin(const Exercise& exercise, bool preview);
     void startRecording();
     void finish(const QString& why);
+    /// Fading guidance: the gauge's level from the trainee's scored sessions of this exercise.
+    double gaugeLevelFor(const Exercise& exercise) const;
     void fail(const QString& why);
     QString exportReportPdf(const QString& recordingPath, const QString& trainee, const QString& path);
     void refreshTrainees(qint64 select);
@@ -133,6 +137,7 @@ private:
     bool mExercisePicked = false;  // the trainee chose an exercise (the dock no longer follows the mesh)
     int mLastMarkers = -1;  // guidance state the markers were built for (target index; -2: finished)
     bool mShowCoverageHeat = true;
+    double mGaugeLevel = 1.0;  // the force gauge's level this session (fading guidance)
 };
 
 }  // namespace palpate

@@ -320,6 +320,37 @@ TEST(TraineeMode, DetectLumpsHidesTheLumpsUntilTheEndThenShowsThemTheFindingsAnd
     EXPECT_TRUE(window->viewport()->exerciseMarkers().heat.empty());
     window->exercises().setShowCoverageHeat(true);
     EXPECT_EQ(window->viewport()->exerciseMarkers().heat.size(), covered);
+
+    // Fading guidance: the first session had the full gauge, and says so; it scored 87.7 (good at
+    // 80 by default), so the next one starts with the gauge at 1 - 1/5.
+    ASSERT_EQ(live.aids.size(), 1u);
+    EXPECT_EQ(live.aids[0].name, "force_gauge");
+    EXPECT_DOUBLE_EQ(live.aids[0].level, 1.0);
+    ASSERT_GT(live.score, 80.0);
+    ASSERT_EQ(window->exercises().start(), QString());
+    EXPECT_DOUBLE_EQ(window->exercises().gaugeLevel(), 0.8);
+    EXPECT_DOUBLE_EQ(window->traineePanel()->gauge()->level(), 0.8);
+    window->exercises().stop();
+}
+
+TEST(ForceGauge, AFadedGaugeDrawsFainterAndAHiddenOneSaysSo) {
+    ForceGauge gauge;
+    gauge.resize(260, 44);
+    gauge.setWindow(1.0, 2.0);
+    gauge.setForceN(1.5);
+    auto barPixel = [&](double level) {
+        gauge.setLevel(level);
+        const QImage image = gauge.grab().toImage();
+        return image.pixelColor(int(4 + (gauge.width() - 8) * 0.3), 10);  // on the bar, inside the window
+    };
+    const QColor full = barPixel(1.0), faded = barPixel(0.3);
+    const QColor background = gauge.palette().color(QPalette::Window);
+    auto distance = [](const QColor& a, const QColor& b) {
+        return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue());
+    };
+    EXPECT_GT(distance(full, background), distance(faded, background) + 30);
+    gauge.setLevel(-1.0);
+    EXPECT_EQ(gauge.level(), 0.0);
 }
 
 TEST(CoverageHeat, ColoursRunFromAmberToRedAndLeaveTheTissueAlone) {
