@@ -588,6 +588,22 @@
         <source>Examination finished</source>
         <translation>Untersuchung beendet</translation>
     </message>
+    <message>
+        <source>Your level: every lump at %1 %2 (the staircase adapts it to you).</source>
+        <translation>Ihre Stufe: jeder Knoten bei %1 %2 (die Treppe passt sie Ihnen an).</translation>
+    </message>
+    <message>
+        <source>The staircase was not moved: %1</source>
+        <translation>Die Treppe wurde nicht bewegt: %1</translation>
+    </message>
+    <message>
+        <source>Trial passed; next level %1.</source>
+        <translation>Durchgang bestanden; nächste Stufe %1.</translation>
+    </message>
+    <message>
+        <source>Trial failed; next level %1.</source>
+        <translation>Durchgang nicht bestanden; nächste Stufe %1.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ExerciseEditorPanel</name>

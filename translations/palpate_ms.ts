@@ -588,6 +588,22 @@
         <source>Examination finished</source>
         <translation>Pemeriksaan selesai</translation>
     </message>
+    <message>
+        <source>Your level: every lump at %1 %2 (the staircase adapts it to you).</source>
+        <translation>Tahap anda: setiap ketulan pada %1 %2 (tangga menyesuaikannya dengan anda).</translation>
+    </message>
+    <message>
+        <source>The staircase was not moved: %1</source>
+        <translation>Tangga tidak digerakkan: %1</translation>
+    </message>
+    <message>
+        <source>Trial passed; next level %1.</source>
+        <translation>Percubaan lulus; tahap seterusnya %1.</translation>
+    </message>
+    <message>
+        <source>Trial failed; next level %1.</source>
+        <translation>Percubaan gagal; tahap seterusnya %1.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ExerciseEditorPanel</name>

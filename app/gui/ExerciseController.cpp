@@ -1,6 +1,7 @@
 #include "app/gui/ExerciseController.h"
 
 #include "engine/scoring/GuidanceFade.h"
+#include "engine/scoring/Staircase.h"
 #include "widgets/PreferencesDialog.h"
 
 #include "app/common/DefaultScene.h"
@@ -164,10 +165,35 @@ QString ExerciseController::start() {
 
 QString ExerciseController::startPreview(const Exercise& exercise) { return begin(exercise, true); }
 
-QString ExerciseController::begin(const Exercise& exercise, bool preview) {
+std::optional<Staircase> ExerciseController::traineeStaircase(const Exercise& exercise, qint64 traineeId,
+                                                              QString& key) const {
+    const auto& def = exercise.detectLumps.staircase;
+    if (exercise.type != ExerciseType::DetectLumps || !def || !mDatabase.isOpen() || traineeId < 0) return std::nullopt;
+    if (!staircaseDefProblem(*def).empty()) return std::nullopt;
+    key = exerciseKey(QString::fromStdString(exercise.sourcePath), QString::fromStdString(exercise.name));
+    const QString stored = mDatabase.staircase(traineeId, key);
+    if (stored.isEmpty()) return Staircase(*def);
+    std::string why;
+    std::optional<Staircase> s = Staircase::fromJson(stored.toStdString(), why);
+    if (!s) return Staircase(*def);  // a state that no longer reads starts afresh
+    s->redefine(*def);
+    return s;
+}
+
+QString ExerciseController::begin(const Exercise& requested, bool preview) {
     if (running()) return tr("An exercise is already running: stop it first.");
-    std::vector<std::string> errors = validateExercise(exercise);
+    std::vector<std::string> errors = validateExercise(requested);
     if (!errors.empty()) return joined(errors);
+    // A staircase runs the trainee's trial at their level (docs/scoring.md, "Staircase").
+    mStaircaseKey.clear();
+    mStaircaseLevel.reset();
+    Exercise exercise = requested;
+    if (!preview) {
+        if (const auto staircase = traineeStaircase(requested, mPanel.traineeId(), mStaircaseKey)) {
+            mStaircaseLevel = staircase->level();
+            exercise = exerciseAtLevel(requested, *mStaircaseLevel);
+        }
+    }
     std::optional<ExerciseAssets> assets;
     try {
         assets = loadExerciseAssets(exercise, cli::findResource, errors);
@@ -188,7 +214,12 @@ QString ExerciseController::begin(const Exercise& exercise, bool preview) {
     mPhase = Phase::Starting;
     mPanel.scoreCard()->clear();
     mPanel.setState(TraineePanel::State::Starting);
-    mPanel.setMessage(preview ? tr("Preview of \"%1\": not stored.").arg(QString::fromStdString(exercise.name)) : QString());
+    mPanel.setMessage(preview ? tr("Preview of \"%1\": not stored.").arg(QString::fromStdString(exercise.name))
+                      : mStaircaseLevel
+                          ? tr("Your level: every lump at %1 %2 (the staircase adapts it to you).")
+                                .arg(QString::fromUtf8(staircaseParameterName(exercise.detectLumps.staircase->parameter)))
+                                .arg(*mStaircaseLevel, 0, 'g', 4)
+                          : QString());
     mPanel.setExerciseDescription(QString::fromStdString(exercise.description));
     mPanel.setFinishShown(exercise.type == ExerciseType::DetectLumps);
     mGaugeLevel = preview ? 1.0 : gaugeLevelFor(exercise);
@@ -309,6 +340,21 @@ bool ExerciseController::mark() {
     return true;
 }
 
+QString ExerciseController::recordStaircaseTrial(const ScoreReport& report) {
+    if (!mStaircaseLevel || !mAssets) return {};
+    const std::optional<bool> passed = staircaseTrialPassed(report);
+    if (!passed) return {};
+    QString key;
+    std::optional<Staircase> staircase = traineeStaircase(mAssets->exercise, mTraineeId, key);
+    if (!staircase || std::abs(staircase->level() - *mStaircaseLevel) > 1e-9) return {};
+    staircase->record(*passed);
+    QString error;
+    if (!mDatabase.putStaircase(mTraineeId, mStaircaseKey, QString::fromStdString(staircase->toJson()), &error))
+        return QLatin1Char(' ') + tr("The staircase was not moved: %1").arg(error);
+    return QLatin1Char(' ') + (*passed ? tr("Trial passed; next level %1.") : tr("Trial failed; next level %1."))
+                                  .arg(staircase->level(), 0, 'g', 4);
+}
+
 double ExerciseController::gaugeLevelFor(const Exercise& exercise) const {
     const Preferences prefs = Preferences::load();
     GuidanceFadeDef def;
@@ -396,6 +442,7 @@ void ExerciseController::finish(const QString& why) {
             stored = tr("The result was NOT stored: %1; %2.").arg(error.isEmpty() ? databaseProblem() : error, kept);
         } else {
             stored = tr("Result stored for %1.").arg(mTraineeName);
+            stored += recordStaircaseTrial(report);
         }
         mHistory.refresh();
         mHistory.setTrainee(mTraineeId);

@@ -12,6 +12,7 @@
 
 #include "app/gui/HapticSession.h"
 #include "engine/scoring/ExerciseSession.h"
+#include "engine/scoring/Staircase.h"
 #include "engine/scoring/LiveScorer.h"
 #include "app/report/ResultsDatabase.h"
 
@@ -72,6 +73,8 @@ public:
     void setShowCoverageHeat(bool on);
     /// The force gauge's level for the running session (fading guidance; 1 in a preview).
     double gaugeLevel() const { return mGaugeLevel; }
+    /// The staircase level the running or last session ran at (detect lumps with a staircase).
+    std::optional<double> staircaseLevel() const { return mStaircaseLevel; }
     bool showsCoverageHeat() const { return mShowCoverageHeat; }
     /// Follows the session: call every frame (and after stepped ticks). Starts the recording once
     /// the loop runs the exercise's scene, updates guidance and markers, finishes when over.
@@ -110,6 +113,11 @@ private:
     void finish(const QString& why);
     /// Fading guidance: the gauge's level from the trainee's scored sessions of this exercise.
     double gaugeLevelFor(const Exercise& exercise) const;
+    /// The trainee's staircase of a detect-lumps exercise with one (stored, else fresh), and its
+    /// key; nullopt without one.
+    std::optional<Staircase> traineeStaircase(const Exercise& exercise, qint64 traineeId, QString& key) const;
+    /// After a stored session run at the staircase's level: the trial moves it; the sentence says so.
+    QString recordStaircaseTrial(const ScoreReport& report);
     void fail(const QString& why);
     QString exportReportPdf(const QString& recordingPath, const QString& trainee, const QString& path);
     void refreshTrainees(qint64 select);
@@ -138,6 +146,8 @@ private:
     int mLastMarkers = -1;  // guidance state the markers were built for (target index; -2: finished)
     bool mShowCoverageHeat = true;
     double mGaugeLevel = 1.0;  // the force gauge's level this session (fading guidance)
+    std::optional<double> mStaircaseLevel;  // the staircase level this session runs at
+    QString mStaircaseKey;
 };
 
 }  // namespace palpate

@@ -24,6 +24,9 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/exercise/RecordedExercise.h"
+#include "engine/scoring/Staircase.h"
+
 #include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
@@ -331,6 +334,48 @@ TEST(TraineeMode, DetectLumpsHidesTheLumpsUntilTheEndThenShowsThemTheFindingsAnd
     EXPECT_DOUBLE_EQ(window->exercises().gaugeLevel(), 0.8);
     EXPECT_DOUBLE_EQ(window->traineePanel()->gauge()->level(), 0.8);
     window->exercises().stop();
+}
+
+TEST(TraineeMode, AStaircaseRunsEachTrialAtTheTraineesLevelAndMovesWithTheResult) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    // Detect the lumps with a contrast staircase: 2-down-1-up from 5 in steps of 1.
+    auto loaded = loadExercise(resource("exercises/detect_lumps.json").toStdString());
+    ASSERT_TRUE(loaded.exercise);
+    Exercise e = *loaded.exercise;
+    e.meshPath = resource("meshes/sphere_8664.off").toStdString();
+    e.tissuePresetPath = resource("presets/tissues/muscle.json").toStdString();
+    e.detectLumps.staircase = StaircaseDef{StaircaseDef::Parameter::Contrast, 5.0, 1.0, 6.0, 2.0, 2, 1};
+    const QString file = dir.filePath(QStringLiteral("stair.json"));
+    ASSERT_EQ(saveExercise(e, file.toStdString()), "");
+    auto window = traineeWindow(dir, "exercises/detect_lumps.good.path");
+    ASSERT_EQ(window->exercises().addTrainee(QStringLiteral("Eve")), QString());
+    ASSERT_EQ(window->exercises().addExerciseFile(file), QString());
+    // The thorough examiner: marks at 73.831, 78.331 and 82.831 s, finishes at 88.331 s.
+    auto session = [&] {
+        EXPECT_EQ(window->exercises().start(), QString());
+        const double level = window->exercises().staircaseLevel().value_or(-1.0);
+        window->advanceTicks(73831 - 1);
+        EXPECT_TRUE(window->exercises().mark());
+        window->advanceTicks(4500);
+        EXPECT_TRUE(window->exercises().mark());
+        window->advanceTicks(4500);
+        EXPECT_TRUE(window->exercises().mark());
+        window->advanceTicks(88331 - 82831);
+        EXPECT_TRUE(window->exercises().finishExamination());
+        runToEnd(*window, 5000);
+        EXPECT_EQ(window->exercises().lastReport()->palpation->detection->hits, 3u);
+        return level;
+    };
+    EXPECT_EQ(session(), 5.0);
+    EXPECT_EQ(session(), 5.0);  // one pass: the 2-down rule waits for a second
+    EXPECT_EQ(session(), 4.0);  // two in a row: one step harder (lower contrast)
+    // The session ran at it: the recording carries the exercise with every lump at contrast 4.
+    std::vector<std::string> errors;
+    const auto ran = recordedExercise(
+        RecordingReader::open(window->exercises().lastRecordingPath().toStdString()).header(), errors);
+    ASSERT_TRUE(ran);
+    for (const LumpDef& l : ran->detectLumps.lumps) EXPECT_EQ(l.contrast, 4.0);
 }
 
 TEST(ForceGauge, AFadedGaugeDrawsFainterAndAHiddenOneSaysSo) {
