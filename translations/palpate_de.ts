@@ -604,6 +604,10 @@
         <source>Trial failed; next level %1.</source>
         <translation>Durchgang nicht bestanden; nächste Stufe %1.</translation>
     </message>
+    <message>
+        <source>Expert reference session stored for %1: it sets the pass marks.</source>
+        <translation>Experten-Referenzsitzung für %1 gespeichert: Sie setzt die Bestehensgrenzen.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ExerciseEditorPanel</name>
@@ -4940,6 +4944,14 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
     <message>
         <source>surface examined %p%</source>
         <translation>Oberfläche untersucht %p%</translation>
+    </message>
+    <message>
+        <source>E&amp;xpert reference session</source>
+        <translation>E&amp;xperten-Referenzsitzung</translation>
+    </message>
+    <message>
+        <source>An instructor&apos;s session: stored as an expert&apos;s, it sets the exercise&apos;s pass marks (expert mean ± 2 SD) and moves no staircase</source>
+        <translation>Eine Sitzung der Lehrkraft: als Expertensitzung gespeichert, setzt sie die Bestehensgrenzen der Übung (Expertenmittel ± 2 SD) und bewegt keine Treppe</translation>
     </message>
 </context>
 <context>

@@ -604,6 +604,10 @@
         <source>Trial failed; next level %1.</source>
         <translation>Percubaan gagal; tahap seterusnya %1.</translation>
     </message>
+    <message>
+        <source>Expert reference session stored for %1: it sets the pass marks.</source>
+        <translation>Sesi rujukan pakar disimpan untuk %1: ia menetapkan markah lulus.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ExerciseEditorPanel</name>
@@ -4935,6 +4939,14 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
     <message>
         <source>surface examined %p%</source>
         <translation>permukaan diperiksa %p%</translation>
+    </message>
+    <message>
+        <source>E&amp;xpert reference session</source>
+        <translation>Sesi rujukan pa&amp;kar</translation>
+    </message>
+    <message>
+        <source>An instructor&apos;s session: stored as an expert&apos;s, it sets the exercise&apos;s pass marks (expert mean ± 2 SD) and moves no staircase</source>
+        <translation>Sesi pengajar: disimpan sebagai sesi pakar, ia menetapkan markah lulus latihan (purata pakar ± 2 SP) dan tidak menggerakkan tangga</translation>
     </message>
 </context>
 <context>

@@ -3,6 +3,7 @@
 #include "widgets/ForceGauge.h"
 #include "widgets/ScoreCard.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -51,6 +52,11 @@ TraineePanel::TraineePanel(QWidget* parent) : QWidget(parent) {
     exerciseRow->addWidget(openExercise);
     who->addRow(tr("Exercise:"), exerciseRow);
     layout->addLayout(who);
+    mExpert = new QCheckBox(tr("E&xpert reference session"), this);
+    mExpert->setObjectName(QStringLiteral("expertSessionBox"));
+    mExpert->setToolTip(tr("An instructor's session: stored as an expert's, it sets the exercise's pass marks "
+                           "(expert mean ± 2 SD) and moves no staircase"));
+    layout->addWidget(mExpert);
     mDescription = new QLabel(this);
     mDescription->setWordWrap(true);
     layout->addWidget(mDescription);
@@ -186,6 +192,8 @@ void TraineePanel::setFinishShown(bool shown) { mFinish->setVisible(shown); }
 
 void TraineePanel::setGaugeLevel(double level) { mGauge->setLevel(level); }
 
+bool TraineePanel::expertSession() const { return mExpert->isChecked(); }
+
 void TraineePanel::setMessage(const QString& text) { mMessage->setText(text); }
 
 void TraineePanel::setState(State state) {
@@ -196,6 +204,7 @@ void TraineePanel::setState(State state) {
     mMark->setEnabled(state == State::Running);
     mFinish->setEnabled(state == State::Running);
     mTrainees->setEnabled(!running);
+    mExpert->setEnabled(!running);
     mExercises->setEnabled(!running);
     mPages->setCurrentIndex(state == State::Finished ? 1 : 0);
     // The gauge and the progress mean something only while an exercise runs.

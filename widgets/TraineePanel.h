@@ -12,6 +12,7 @@
 #include <QString>
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
 class QGroupBox;
 class QLabel;
@@ -68,6 +69,10 @@ public:
     void setFinishShown(bool shown);
     /// The force gauge's level for this session (fading guidance): 1 shown .. 0 hidden.
     void setGaugeLevel(double level);
+    /// "Expert reference session": the next session is stored as an instructor's, which sets the
+    /// exercise's pass marks (docs/scoring.md, "Proficiency") and moves no staircase.
+    bool expertSession() const;
+    QCheckBox* expertBox() const { return mExpert; }
     ForceGauge* gauge() const { return mGauge; }
     QProgressBar* progressBar() const { return mProgress; }
 
@@ -92,6 +97,7 @@ private:
     QPushButton* mStop = nullptr;
     QPushButton* mMark = nullptr;
     QPushButton* mFinish = nullptr;
+    QCheckBox* mExpert = nullptr;
     QStackedWidget* mPages = nullptr;
     QLabel* mInstruction = nullptr;
     QLabel* mDetail = nullptr;

@@ -188,7 +188,7 @@ QString ExerciseController::begin(const Exercise& requested, bool preview) {
     mStaircaseKey.clear();
     mStaircaseLevel.reset();
     Exercise exercise = requested;
-    if (!preview) {
+    if (!preview && !mPanel.expertSession()) {  // an expert's reference runs the exercise as written
         if (const auto staircase = traineeStaircase(requested, mPanel.traineeId(), mStaircaseKey)) {
             mStaircaseLevel = staircase->level();
             exercise = exerciseAtLevel(requested, *mStaircaseLevel);
@@ -205,6 +205,7 @@ QString ExerciseController::begin(const Exercise& requested, bool preview) {
     mAssets = std::move(assets);
     mPreview = preview;
     mTraineeId = preview ? -1 : mPanel.traineeId();
+    mExpertSession = !preview && mPanel.expertSession();
     mTraineeName = preview ? tr("Preview") : mPanel.traineeName();
     mLive.reset();
     mRecordingPath.clear();
@@ -431,7 +432,7 @@ void ExerciseController::finish(const QString& why) {
         mLastResultId = mDatabase.isOpen()
                             ? mDatabase.addResult(mTraineeId, report, QString::fromStdString(mAssets->exercise.name),
                                                   QString::fromStdString(mAssets->exercise.sourcePath), mStartedUtc,
-                                                  report.guidance.exerciseTimeS, mRecordingPath, &error)
+                                                  report.guidance.exerciseTimeS, mRecordingPath, mExpertSession, &error)
                             : -1;
         if (mLastResultId < 0) {
             // Never lost silently: say what keeps the session, from which it can be scored again.
@@ -441,8 +442,9 @@ void ExerciseController::finish(const QString& why) {
                                            .arg(QDir::toNativeSeparators(mRecordingPath));
             stored = tr("The result was NOT stored: %1; %2.").arg(error.isEmpty() ? databaseProblem() : error, kept);
         } else {
-            stored = tr("Result stored for %1.").arg(mTraineeName);
-            stored += recordStaircaseTrial(report);
+            stored = mExpertSession ? tr("Expert reference session stored for %1: it sets the pass marks.").arg(mTraineeName)
+                                    : tr("Result stored for %1.").arg(mTraineeName);
+            if (!mExpertSession) stored += recordStaircaseTrial(report);
         }
         mHistory.refresh();
         mHistory.setTrainee(mTraineeId);

@@ -148,6 +148,7 @@ private:
     double mGaugeLevel = 1.0;  // the force gauge's level this session (fading guidance)
     std::optional<double> mStaircaseLevel;  // the staircase level this session runs at
     QString mStaircaseKey;
+    bool mExpertSession = false;  // stored as an instructor's reference (docs/scoring.md, "Proficiency")
 };
 
 }  // namespace palpate

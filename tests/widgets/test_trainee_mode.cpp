@@ -28,6 +28,7 @@
 #include "engine/scoring/Staircase.h"
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFileInfo>
@@ -376,6 +377,26 @@ TEST(TraineeMode, AStaircaseRunsEachTrialAtTheTraineesLevelAndMovesWithTheResult
         RecordingReader::open(window->exercises().lastRecordingPath().toStdString()).header(), errors);
     ASSERT_TRUE(ran);
     for (const LumpDef& l : ran->detectLumps.lumps) EXPECT_EQ(l.contrast, 4.0);
+}
+
+TEST(TraineeMode, AnExpertReferenceSessionIsStoredAsAnExperts) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+    readyAdaForPressTargets(*window);
+    window->traineePanel()->expertBox()->setChecked(true);
+    ASSERT_EQ(window->exercises().start(), QString());
+    EXPECT_FALSE(window->traineePanel()->expertBox()->isEnabled()) << "fixed while the session runs";
+    runToEnd(*window, 30000);
+    window->traineePanel()->expertBox()->setChecked(false);
+    ASSERT_EQ(window->exercises().start(), QString());
+    runToEnd(*window, 30000);
+    const auto results = window->exercises().database().results(window->traineePanel()->traineeId());
+    ASSERT_EQ(results.size(), 2u);
+    EXPECT_TRUE(results[0].expert);
+    EXPECT_FALSE(results[1].expert);
+    // The expert's session is no trainee score: it did not fade the trainee's gauge.
+    EXPECT_DOUBLE_EQ(window->exercises().gaugeLevel(), 1.0);
 }
 
 TEST(ForceGauge, AFadedGaugeDrawsFainterAndAHiddenOneSaysSo) {
