@@ -1765,6 +1765,38 @@ Tick %7 µs, %8-mal schneller als previous</translation>
             <numerusform>(%n abgebrochen, nicht gezählt)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Learning Curve…</source>
+        <translation>Lernkurve…</translation>
+    </message>
+    <message>
+        <source>The trainee&apos;s sessions of the selected result&apos;s exercise against the experts&apos; pass marks</source>
+        <translation>Die Sitzungen der lernenden Person in der Übung des gewählten Ergebnisses, gegen die Bestehensgrenzen der Experten</translation>
+    </message>
+    <message>
+        <source>Learning curve</source>
+        <translation>Lernkurve</translation>
+    </message>
+    <message>
+        <source>Select a session first.</source>
+        <translation>Wählen Sie zuerst eine Sitzung.</translation>
+    </message>
+    <message>
+        <source>This session names no exercise file to draw the curve of.</source>
+        <translation>Diese Sitzung nennt keine Übungsdatei, deren Kurve gezeichnet werden könnte.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 has no scored sessions of this exercise to draw.</source>
+        <translation>%1 hat keine bewerteten Sitzungen dieser Übung zum Zeichnen.</translation>
+    </message>
+    <message>
+        <source>The curve cannot be drawn: %1</source>
+        <translation>Die Kurve kann nicht gezeichnet werden: %1</translation>
+    </message>
 </context>
 <context>
     <name>palpate::LodPanel</name>

@@ -1762,6 +1762,38 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
             <numerusform>(%n dihentikan, tidak dikira)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Learning Curve…</source>
+        <translation>Lengkung Pembelajaran…</translation>
+    </message>
+    <message>
+        <source>The trainee&apos;s sessions of the selected result&apos;s exercise against the experts&apos; pass marks</source>
+        <translation>Sesi pelatih bagi latihan keputusan yang dipilih berbanding markah lulus pakar</translation>
+    </message>
+    <message>
+        <source>Learning curve</source>
+        <translation>Lengkung pembelajaran</translation>
+    </message>
+    <message>
+        <source>Select a session first.</source>
+        <translation>Pilih satu sesi dahulu.</translation>
+    </message>
+    <message>
+        <source>This session names no exercise file to draw the curve of.</source>
+        <translation>Sesi ini tidak menamakan fail latihan untuk dilukis lengkungnya.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 has no scored sessions of this exercise to draw.</source>
+        <translation>%1 tiada sesi bermarkah bagi latihan ini untuk dilukis.</translation>
+    </message>
+    <message>
+        <source>The curve cannot be drawn: %1</source>
+        <translation>Lengkung tidak dapat dilukis: %1</translation>
+    </message>
 </context>
 <context>
     <name>palpate::LodPanel</name>

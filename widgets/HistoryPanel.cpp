@@ -1,8 +1,16 @@
 #include "widgets/HistoryPanel.h"
 
+#include "app/report/LearningCurve.h"
+#include "engine/exercise/ExerciseFile.h"
+#include "widgets/GuardedLoad.h"
+
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
+#include <QDialog>
+#include <QMessageBox>
+#include <QPixmap>
+#include <QTemporaryDir>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -59,8 +67,12 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
     mReport->setToolTip(tr("Re-scores the result's recording and writes its PDF report"));
     mReplay = new QPushButton(tr("Replay"), this);
     mReplay->setToolTip(tr("Opens the result's recording in the Recorder"));
+    mCurve = new QPushButton(tr("Learning Curve…"), this);
+    mCurve->setObjectName(QStringLiteral("learningCurveButton"));
+    mCurve->setToolTip(tr("The trainee's sessions of the selected result's exercise against the experts' pass marks"));
     buttons->addWidget(mReport);
     buttons->addWidget(mReplay);
+    buttons->addWidget(mCurve);
     buttons->addStretch();
     layout->addLayout(buttons);
 
@@ -71,6 +83,10 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
     });
     connect(mReplay, &QPushButton::clicked, this, [this] {
         if (auto r = selectedResult()) emit replayRequested(r->recordingPath);
+    });
+    connect(mCurve, &QPushButton::clicked, this, [this] {
+        if (const QString problem = showLearningCurve(); !problem.isEmpty())
+            QMessageBox::information(this, tr("Learning curve"), problem);
     });
     updateButtons();
 }
@@ -267,6 +283,38 @@ void HistoryPanel::updateButtons() {
     const bool hasRecording = r && !r->recordingPath.isEmpty() && QFileInfo::exists(r->recordingPath);
     mReport->setEnabled(hasRecording);
     mReplay->setEnabled(hasRecording);
+    mCurve->setEnabled(r && !r->exercisePath.isEmpty());
+}
+
+QString HistoryPanel::showLearningCurve() {
+    const auto r = selectedResult();
+    if (!r || !mDatabase) return tr("Select a session first.");
+    if (r->exercisePath.isEmpty()) return tr("This session names no exercise file to draw the curve of.");
+    // The exercise's rubric says which way each metric is better.
+    const auto loaded = guardedLoad(r->exercisePath.toStdString(), [&] { return loadExercise(r->exercisePath.toStdString()); });
+    if (!loaded.exercise) return tr("%1: %2").arg(r->exercisePath, QString::fromStdString(loaded.error()));
+    QString trainee = mTrainees->currentText();
+    const LearningCurve curve = learningCurve(*mDatabase, r->traineeId, *loaded.exercise, r->exercisePath,
+                                              trainee + QStringLiteral(": ") + QString::fromStdString(loaded.exercise->name));
+    if (curve.sessions.empty() || curve.chart.metrics.empty())
+        return tr("%1 has no scored sessions of this exercise to draw.").arg(trainee);
+    QTemporaryDir dir;
+    const QString png = dir.filePath(QStringLiteral("curve.png"));
+    std::string error;
+    if (!dir.isValid() || !renderLearningCurvePng(curve.chart, png.toStdString(), &error, 1200, 800))
+        return tr("The curve cannot be drawn: %1").arg(QString::fromStdString(error));
+    if (!mCurveDialog) {
+        mCurveDialog = new QDialog(this);
+        mCurveDialog->setWindowTitle(tr("Learning curve"));
+        auto* layout = new QVBoxLayout(mCurveDialog);
+        mCurveImage = new QLabel(mCurveDialog);
+        mCurveImage->setAlignment(Qt::AlignCenter);
+        layout->addWidget(mCurveImage);
+    }
+    mCurveImage->setPixmap(QPixmap(png).scaled(900, 600, Qt::KeepAspectRatio, Qt::SmoothTransformation));
+    mCurveDialog->show();
+    mCurveDialog->raise();
+    return {};
 }
 
 }  // namespace palpate

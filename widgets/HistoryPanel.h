@@ -13,6 +13,8 @@
 class QChart;
 class QChartView;
 class QComboBox;
+class QDialog;
+class QLabel;
 class QLabel;
 class QLineSeries;
 class QPushButton;
@@ -48,6 +50,12 @@ public:
     /// The result selected in the table (nullopt: none).
     std::optional<ResultRecord> selectedResult() const;
     void selectRow(int row);
+    /// The selected result's exercise as a learning curve against the experts' pass marks
+    /// (docs/scoring.md, "Proficiency"), in a window; "" or why it cannot be drawn.
+    QString showLearningCurve();
+    /// The curve window's picture (null before the first curve), for tests.
+    QDialog* learningCurveDialog() const { return mCurveDialog; }
+    QPushButton* learningCurveButton() const { return mCurve; }
 
 signals:
     void reportRequested(const palpate::ResultRecord& result);
@@ -67,6 +75,9 @@ private:
     std::vector<QLineSeries*> mStoppedSeries;  ///< owned by mChart
     QPushButton* mReport = nullptr;
     QPushButton* mReplay = nullptr;
+    QPushButton* mCurve = nullptr;
+    QDialog* mCurveDialog = nullptr;
+    QLabel* mCurveImage = nullptr;
 };
 
 }  // namespace palpate

@@ -12,7 +12,7 @@
 #include "engine/scoring/ReplayScorer.h"
 #include "engine/scoring/Staircase.h"
 #ifdef PALPATE_HAVE_CHARTS
-#include "app/report/LearningCurveImage.h"
+#include "app/report/LearningCurve.h"
 #include "app/report/ResultsDatabase.h"
 
 #include <QCoreApplication>
@@ -57,14 +57,6 @@ std::string defaultDatabasePath() {
         .toStdString();
 }
 
-MetricValues valuesOf(const ResultRecord& r) {
-    MetricValues out;
-    const QJsonObject o = QJsonDocument::fromJson(r.metricsJson.toUtf8()).object();
-    for (auto it = o.begin(); it != o.end(); ++it)
-        out[it.key().toStdString()] = it.value().isDouble() ? std::optional<double>(it.value().toDouble()) : std::nullopt;
-    return out;
-}
-
 Json optionalJson(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
 
 Json standardJson(const ProficiencyStandard& s) {
@@ -106,22 +98,6 @@ std::optional<qint64> findTrainee(const ResultsDatabase& db, const std::string& 
     std::cerr << "trainee " << command << ": no trainee '" << name << "' in " << db.path().toStdString()
               << (known.empty() ? std::string(" (it has none)") : " (trainees: " + known + ")") << "\n";
     return std::nullopt;
-}
-
-/// The trainee's scored sessions of the exercise that are not experts', oldest first.
-std::vector<ResultRecord> traineeSessions(const ResultsDatabase& db, qint64 trainee, const QString& path,
-                                          const QString& name) {
-    std::vector<ResultRecord> out;
-    for (ResultRecord& r : db.results(trainee))
-        if (!r.expert && isScored(r.outcome) && isSameExercise(r, path, name)) out.push_back(std::move(r));
-    return out;
-}
-
-ProficiencyStandard standardFor(const ResultsDatabase& db, const Exercise& exercise, const QString& path) {
-    std::vector<MetricValues> experts;
-    for (const ResultRecord& r : db.expertResults(path, QString::fromStdString(exercise.name)))
-        if (isScored(r.outcome)) experts.push_back(valuesOf(r));
-    return buildProficiencyStandard(exercise, experts);
 }
 
 std::optional<Exercise> loadExerciseOption(const Args& args, const char* command, QString& path) {
@@ -296,33 +272,29 @@ int curveCommand(const std::vector<std::string>& words) {
     if (!openDatabase(db, args, "curve", true)) return 1;
     const auto trainee = findTrainee(db, *args.option("trainee"), "curve");
     if (!trainee) return 1;
-    const QString name = QString::fromStdString(exercise->name);
-    const std::vector<ResultRecord> sessions = traineeSessions(db, *trainee, path, name);
-    if (sessions.empty()) {
-        std::cerr << "trainee curve: trainee '" << *args.option("trainee") << "' has no scored sessions of "
-                  << path.toStdString() << " ('" << exercise->name << "')\n";
-        return 1;
-    }
-    const ProficiencyStandard standard = standardFor(db, *exercise, path);
-    std::vector<MetricValues> values;
-    for (const ResultRecord& r : sessions) values.push_back(valuesOf(r));
-    const ProficiencyProgress progress = judgeSessions(standard, values);
     // Which metrics: those asked for, else the standard's deciding ones, else all the sessions have.
-    std::vector<std::string> metrics;
+    std::vector<std::string> asked;
     if (const auto list = args.option("metric")) {
         for (const std::string& m : splitList(*list)) {
             if (!parseMetric(m)) {
                 std::cerr << "trainee curve: --metric " << m << ": not a metric name (docs/scoring.md lists them)\n";
                 return 2;
             }
-            metrics.push_back(m);
+            asked.push_back(m);
         }
-    } else {
-        for (const MetricStandard& m : standard.metrics)
-            if (m.deciding) metrics.push_back(m.metric);
-        if (metrics.empty())
-            for (const auto& [m, v] : values.front()) metrics.push_back(m);
     }
+    const LearningCurve curve = learningCurve(db, *trainee, *exercise, path,
+                                              QString::fromStdString(*args.option("trainee") + ": " + exercise->name), asked);
+    if (curve.sessions.empty()) {
+        std::cerr << "trainee curve: trainee '" << *args.option("trainee") << "' has no scored sessions of "
+                  << path.toStdString() << " ('" << exercise->name << "')\n";
+        return 1;
+    }
+    const std::vector<ResultRecord>& sessions = curve.sessions;
+    const ProficiencyStandard& standard = curve.standard;
+    const std::vector<MetricValues>& values = curve.values;
+    const ProficiencyProgress& progress = curve.progress;
+    const std::vector<std::string>& metrics = curve.metrics;
     Json out = {{"trainee", *args.option("trainee")}, {"exercise", exercise->name}, {"exercise_path", path.toStdString()},
                 {"metrics", metrics}};
     out["standard"] = standard.valid() ? standardJson(standard) : Json(nullptr);
@@ -349,24 +321,7 @@ int curveCommand(const std::vector<std::string>& words) {
     out["proficient"] = progress.proficient();
     out["proficient_at_session"] = progress.proficientAt ? Json(*progress.proficientAt + 1) : Json(nullptr);
     if (const auto png = args.option("png")) {
-        LearningCurveData data;
-        data.title = QString::fromStdString(*args.option("trainee") + ": " + exercise->name);
-        for (const std::string& m : metrics) {
-            LearningCurveMetric line;
-            line.name = QString::fromStdString(m);
-            for (const MetricValues& s : values) {
-                const auto it = s.find(m);
-                line.values.push_back(it == s.end() ? std::nullopt : it->second);
-            }
-            if (const MetricStandard* st = standard.valid() ? standard.find(m) : nullptr) {
-                line.passMark = st->passMark;
-                line.higherIsBetter = st->higherIsBetter;
-                line.expertMean = st->mean;
-            }
-            data.metrics.push_back(line);
-        }
-        for (std::size_t i = 0; i < progress.sessions.size(); ++i) data.passed.push_back(progress.sessions[i].passed);
-        if (progress.proficientAt) data.proficientAtSession = int(*progress.proficientAt) + 1;
+        const LearningCurveData& data = curve.chart;
         std::string error;
         if (!renderLearningCurvePng(data, *png, &error)) {
             std::cerr << "trainee curve: --png " << *png << ": " << error << "\n";
@@ -475,13 +430,13 @@ std::string proficiencyJsonForScore(const ScoreReport& report, const Exercise& e
         return {};
     }
     const QString path = exerciseKey(QString::fromStdString(exercisePath), QString());
-    const ProficiencyStandard standard = standardFor(db, exercise, exercisePath.empty() ? QString() : path);
+    const ProficiencyStandard standard = expertStandardFor(db, exercise, exercisePath.empty() ? QString() : path);
     if (standard.expertSessions == 0) return {};  // no expert sessions: nothing to add
     // The trainee's stored sessions, then this one (not stored by `score`).
     std::vector<MetricValues> values;
-    for (const ResultRecord& r : traineeSessions(db, *trainee, exercisePath.empty() ? QString() : path,
+    for (const ResultRecord& r : traineeSessionsOf(db, *trainee, exercisePath.empty() ? QString() : path,
                                                  QString::fromStdString(exercise.name)))
-        values.push_back(valuesOf(r));
+        values.push_back(storedMetricValues(r));
     values.push_back(metricValues(report));
     Json out;
     if (!standard.valid()) {

@@ -4,6 +4,7 @@
 // window opens (its status bar says the size); Open Mesh asks once about an implausible size and
 // the answer is used when the file is opened again. Own main().
 #include "app/common/DefaultScene.h"
+#include "tests/support/IsolatedSettings.h"
 #include "app/gui/MainWindow.h"
 #include "engine/core/TissueMesh.h"
 #include "engine/meshimport/MeshImport.h"
@@ -360,6 +361,7 @@ TEST_F(MeshImportTest, OpenOffersImportForAnImplausibleSizeAndForFaults) {
 int main(int argc, char** argv) {
     qputenv("QT_QPA_PLATFORM", "offscreen");
     QStandardPaths::setTestModeEnabled(true);  // QSettings are not the user's
+    palpate::test::isolateSettings();
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("palpate-import-dialog-tests"));
     ::testing::InitGoogleTest(&argc, argv);

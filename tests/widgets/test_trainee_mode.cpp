@@ -24,11 +24,13 @@
 
 #include <gtest/gtest.h>
 
+#include "app/report/LearningCurve.h"
 #include "engine/exercise/RecordedExercise.h"
 #include "engine/scoring/Staircase.h"
 
 #include <QApplication>
 #include <QCheckBox>
+#include <QDialog>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFileInfo>
@@ -388,15 +390,34 @@ TEST(TraineeMode, AnExpertReferenceSessionIsStoredAsAnExperts) {
     ASSERT_EQ(window->exercises().start(), QString());
     EXPECT_FALSE(window->traineePanel()->expertBox()->isEnabled()) << "fixed while the session runs";
     runToEnd(*window, 30000);
+    ASSERT_EQ(window->exercises().start(), QString());
+    runToEnd(*window, 30000);
     window->traineePanel()->expertBox()->setChecked(false);
     ASSERT_EQ(window->exercises().start(), QString());
     runToEnd(*window, 30000);
     const auto results = window->exercises().database().results(window->traineePanel()->traineeId());
-    ASSERT_EQ(results.size(), 2u);
+    ASSERT_EQ(results.size(), 3u);
     EXPECT_TRUE(results[0].expert);
-    EXPECT_FALSE(results[1].expert);
-    // The expert's session is no trainee score: it did not fade the trainee's gauge.
+    EXPECT_TRUE(results[1].expert);
+    EXPECT_FALSE(results[2].expert);
+    // The experts' sessions are no trainee scores: they did not fade the trainee's gauge.
     EXPECT_DOUBLE_EQ(window->exercises().gaugeLevel(), 1.0);
+
+    // History > Learning Curve…: the trainee's one session against the two experts' marks. The
+    // same scripted path scores the same, so it sits at the experts' mean (SD 0): a pass.
+    const LearningCurve curve = learningCurve(window->exercises().database(), results[2].traineeId,
+                                              *loadExercise(resource("exercises/press_targets.json").toStdString()).exercise,
+                                              results[2].exercisePath, QStringLiteral("Ada"));
+    ASSERT_EQ(curve.sessions.size(), 1u);
+    ASSERT_TRUE(curve.standard.valid()) << curve.standard.problem;
+    ASSERT_EQ(curve.chart.passed.size(), 1u);
+    EXPECT_TRUE(curve.chart.passed[0]);
+    window->historyPanel()->refresh();
+    window->historyPanel()->selectRow(2);
+    EXPECT_TRUE(window->historyPanel()->learningCurveButton()->isEnabled());
+    EXPECT_EQ(window->historyPanel()->showLearningCurve(), QString());
+    ASSERT_NE(window->historyPanel()->learningCurveDialog(), nullptr);
+    EXPECT_TRUE(window->historyPanel()->learningCurveDialog()->isVisible());
 }
 
 TEST(ForceGauge, AFadedGaugeDrawsFainterAndAHiddenOneSaysSo) {
