@@ -293,7 +293,7 @@ void ExerciseController::poll() {
         return;
     }
     if (mLive->started()) {
-        mPanel.showGuidance(mAssets->exercise, mLive->guidance(), mLive->report().score);
+        mPanel.showGuidance(mAssets->exercise, mLive->guidance(), mLive->scoreSoFar());
         updateMarkers();
     }
     if (mLive->exerciseOver()) finish({});

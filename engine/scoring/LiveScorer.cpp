@@ -13,6 +13,8 @@ const ScoreGuidance& LiveScorer::guidance() const { return mScorer ? mScorer->sc
 
 ScoreReport LiveScorer::report() const { return mScorer ? mScorer->report() : ScoreReport{}; }
 
+double LiveScorer::scoreSoFar() const { return mScorer ? mScorer->scorer().scoreSoFar() : 0.0; }
+
 bool LiveScorer::ensureScorer() {
     if (mScorer) return true;
     if (!mReader.headerOk() || mReader.summary().ticks == 0) return false;  // nothing to replay yet

@@ -52,6 +52,8 @@ public:
     const ScoreGuidance& guidance() const;
     /// The score so far (an empty report before started()).
     ScoreReport report() const;
+    /// Its score alone, cheaply enough for every frame (Scorer::scoreSoFar); 0 before started().
+    double scoreSoFar() const;
     std::uint64_t scoredThroughTick() const { return mScorer ? mScorer->currentTick() : 0; }
     /// Times a late mark made it score again from the start.
     int restarts() const { return mRestarts; }

@@ -268,12 +268,14 @@ void Scorer::scoreDetectLumps(bool markNow, bool doneNow, bool haveContactPoint)
     if (doneNow) complete();
 }
 
-PalpationSummary Scorer::palpationSummary() const {
+PalpationSummary Scorer::palpationSummary(bool detail) const {
     PalpationSummary p;
     p.coverage = mExercise.coverage;
     p.coverageFraction = mCoverage->coveredFraction();
-    p.peakForceN = mCoverage->peakForceN();
-    p.forceByPhase = forceByPhase(mPhaseSamples);
+    if (detail) {
+        p.peakForceN = mCoverage->peakForceN();
+        p.forceByPhase = forceByPhase(mPhaseSamples);
+    }
     const std::string minForce = oneDecimal(mExercise.coverage.minForceN);
     if (mExercise.type == ExerciseType::DetectLumps) {
         p.findingsMm = mFindingsMm;
@@ -346,7 +348,7 @@ void Scorer::scoreTrace(const ScoreSample& s, double dt, double forceN, bool hav
     if (!mCovered.empty() && mCoveredCount == mCovered.size()) complete();
 }
 
-ScoreReport Scorer::report() const {
+ScoreReport Scorer::report(bool palpationDetail) const {
     ScoreReport r;
     r.exerciseName = mExercise.name;
     r.type = mExercise.type;
@@ -442,7 +444,7 @@ ScoreReport Scorer::report() const {
     put(Metric::PathDistanceMm, mTraceContactS > 0.0 ? mPathDistanceSumMmS / mTraceContactS : 0.0, mTraceContactS > 0.0);
     if (mPalpation) {
         // In Metric order, as every line before.
-        r.palpation = palpationSummary();
+        r.palpation = palpationSummary(palpationDetail);
         if (const auto& d = r.palpation->detection) {
             put(Metric::Sensitivity, d->sensitivity.value_or(0.0), d->sensitivity.has_value());
             put(Metric::PositivePredictiveValue, d->positivePredictive.value_or(0.0), d->positivePredictive.has_value());

@@ -47,7 +47,11 @@ public:
     const ScoreGuidance& guidance() const { return mGuidance; }
     const ExerciseGeometry& geometry() const { return *mGeometry; }
     /// The score so far (the final one once over() or the session ended).
-    ScoreReport report() const;
+    ScoreReport report() const { return report(true); }
+    /// The same score without what only the end needs: the palpation summary's heat map and force
+    /// by phase (sorting every contact tick's force), which no metric reads. For a display's
+    /// every frame.
+    double scoreSoFar() const { return report(false).score; }
 
 private:
     void scorePressTargets(const ScoreSample& s, double dt, double forceN, bool haveContactPoint);
@@ -55,7 +59,8 @@ private:
     void scoreTrace(const ScoreSample& s, double dt, double forceN, bool haveContactPoint);
     void scoreDetectLumps(bool markNow, bool doneNow, bool haveContactPoint);
     void examinePalpation(const ScoreSample& s, double dt, double forceN, bool haveContactPoint);
-    PalpationSummary palpationSummary() const;
+    ScoreReport report(bool palpationDetail) const;
+    PalpationSummary palpationSummary(bool detail) const;
     void complete();
 
     std::shared_ptr<const ExerciseGeometry> mGeometry;

@@ -373,6 +373,25 @@ TEST(ScriptedExaminers, AnExaminationNotFinishedIsScoredOnWhatWasExamined) {
     EXPECT_LT(r.score, 96.0);
 }
 
+TEST(ScriptedExaminers, TheScoreSoFarIsTheReportsScoreWithoutItsDetail) {
+    test::TempDir dir;
+    std::string recording;
+    scoreScripted("detect_lumps", "light", dir, &recording);
+    const RecordingReader reader = RecordingReader::open(recording);
+    const Exercise exercise = test::loadExampleExercise("detect_lumps");
+    std::string error;
+    ReplayScorerDef options;
+    options.findResource = test::testResourceFinder();
+    auto scorer = ReplayScorer::open(reader, &exercise, error, options);
+    ASSERT_TRUE(scorer) << error;
+    for (std::uint64_t tick : {1000u, 40000u, 75000u, 90000u}) {
+        scorer->advanceTo(tick);
+        const ScoreReport full = scorer->scorer().report();
+        EXPECT_EQ(scorer->scorer().scoreSoFar(), full.score) << "tick " << tick;
+        EXPECT_FALSE(full.palpation->peakForceN.empty());
+    }
+}
+
 TEST(ScriptedExaminers, ScoreJsonCarriesDetectionCoverageAndForceByPhase) {
     test::TempDir dir;
     std::string recording;
