@@ -4726,6 +4726,22 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>Ticks</source>
         <translation>Takte</translation>
     </message>
+    <message>
+        <source>the side examined most</source>
+        <translation>die am meisten untersuchte Seite</translation>
+    </message>
+    <message>
+        <source>the opposite side</source>
+        <translation>die gegenüberliegende Seite</translation>
+    </message>
+    <message>
+        <source>examined at %1 to %2 N (largest force); grey: not examined</source>
+        <translation>untersucht mit %1 bis %2 N (größte Kraft); grau: nicht untersucht</translation>
+    </message>
+    <message>
+        <source>Surface examined</source>
+        <translation>Untersuchte Oberfläche</translation>
+    </message>
 </context>
 <context>
     <name>palpate::SpeedAccuracyChart</name>

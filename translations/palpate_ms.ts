@@ -4722,6 +4722,22 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>Ticks</source>
         <translation>Detik</translation>
     </message>
+    <message>
+        <source>the side examined most</source>
+        <translation>sisi yang paling banyak diperiksa</translation>
+    </message>
+    <message>
+        <source>the opposite side</source>
+        <translation>sisi bertentangan</translation>
+    </message>
+    <message>
+        <source>examined at %1 to %2 N (largest force); grey: not examined</source>
+        <translation>diperiksa pada %1 hingga %2 N (daya terbesar); kelabu: tidak diperiksa</translation>
+    </message>
+    <message>
+        <source>Surface examined</source>
+        <translation>Permukaan diperiksa</translation>
+    </message>
 </context>
 <context>
     <name>palpate::SpeedAccuracyChart</name>

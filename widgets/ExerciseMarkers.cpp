@@ -1,5 +1,7 @@
 #include "widgets/ExerciseMarkers.h"
 
+#include "app/report/HeatColour.h"
+
 #include "widgets/OrbitCamera.h"
 
 #include <QCoreApplication>
@@ -68,13 +70,7 @@ void paintSurfaceCircle(QPainter& painter, const ExerciseMarker& marker, const O
 
 }  // namespace
 
-QColor heatColour(double forceN, double minN, double maxN) {
-    // Amber for the lightest examining force to deep red for the firmest: none of the tissue's,
-    // the rings' or the markers' colours.
-    const double t = maxN > minN ? std::clamp((forceN - minN) / (maxN - minN), 0.0, 1.0) : 1.0;
-    const auto mix = [t](int a, int b) { return int(std::lround(a + t * (b - a))); };
-    return QColor(mix(255, 190), mix(214, 20), mix(70, 40));
-}
+QColor heatColour(double forceN, double minN, double maxN) { return coverageHeatColour(forceN, minN, maxN); }
 
 void addCoverageHeat(ExerciseMarkers& markers, const ExerciseGeometry& geometry, const PalpationSummary& palpation) {
     const auto& rest = geometry.restMm();

@@ -7,6 +7,8 @@
 #include "engine/exercise/Exercise.h"
 #include "engine/exercise/ScoreReport.h"
 
+#include <glm/vec3.hpp>
+
 #include <QDateTime>
 #include <QString>
 
@@ -36,6 +38,8 @@ struct ScoreReportContent {
     ScoreReport report;
     std::vector<PressTarget> targets;  ///< the press targets as graded (empty for other types)
     std::vector<LumpDef> lumps;        ///< detect lumps: the lumps as graded (the table's depth, size, contrast)
+    /// Palpation: the mesh at rest (engine order, as the heat map's peakForceN), for its picture.
+    std::vector<glm::vec3> surfaceMm, normals;
     std::vector<ForceSample> force;    ///< empty: the plot is left out
     std::vector<ForceWindowSpan> windows;
 };

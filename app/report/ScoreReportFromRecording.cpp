@@ -97,6 +97,10 @@ bool scoreReportFromRecording(const QString& recordingPath, const Exercise* exer
         content.sessionStart = QDateTime::fromMSecsSinceEpoch(reader.header().startUnixUs / 1000);
     if (graded.type == ExerciseType::PressTargets) content.targets = graded.pressTargets.targets;
     if (graded.type == ExerciseType::DetectLumps) content.lumps = graded.detectLumps.lumps;
+    if (content.report.palpation) {
+        content.surfaceMm = scorer->scorer().geometry().restMm();
+        content.normals = scorer->scorer().geometry().normals();
+    }
     content.force = recordedForceSeries(reader);
 
     // Ticks to the plot's time (s from the first recorded tick), as the force series counts it.

@@ -1,5 +1,6 @@
 #include "app/report/ScoreReportPdf.h"
 
+#include "app/report/HeatColour.h"
 #include "app/report/PalpationSummaryText.h"
 
 #include "app/report/ChartApplication.h"
@@ -11,12 +12,15 @@
 #include <QFileInfo>
 #include <QFont>
 #include <QFontMetricsF>
+#include <QLinearGradient>
 #include <QLocale>
 #include <QPageLayout>
 #include <QPageSize>
 #include <QPainter>
 #include <QPainterPath>
 #include <QPdfWriter>
+
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -259,6 +263,72 @@ QColor windowColor(int index, int alpha) {
 
 /// The force over time in `area`: time and force axes, each force window shaded over its own
 /// stretch of time and labelled with its target, the curve on top.
+/// The coverage heat map as two views of the rest surface, from the side examined most and from
+/// the opposite one: each vertex facing the view a dot, grey where nothing examined it, else
+/// coloured by the largest force there (the viewport's scale), far dots first.
+void drawHeatMap(ReportLayout& layout, const QRectF& area, const ScoreReportContent& content) {
+    QPainter& p = layout.painter();
+    const PalpationSummary& palpation = *content.report.palpation;
+    const auto& rest = content.surfaceMm;
+    const auto& normals = content.normals;
+    const std::size_t n = std::min({rest.size(), normals.size(), palpation.peakForceN.size()});
+    double maxN = palpation.coverage.minForceN;
+    glm::dvec3 centre(0.0), examined(0.0);
+    for (std::size_t v = 0; v < n; ++v) {
+        centre += glm::dvec3(rest[v]);
+        examined += double(palpation.peakForceN[v]) * glm::dvec3(normals[v]);
+        maxN = std::max(maxN, double(palpation.peakForceN[v]));
+    }
+    if (n == 0) return;
+    centre /= double(n);
+    glm::dvec3 view = glm::length(examined) > 1e-9 ? glm::normalize(examined) : glm::dvec3(1.0, 0.0, 0.0);
+    const double small = layout.metrics(layout.small()).height();
+    const double gap = layout.mm(6);
+    const double side = std::min((area.width() - gap) / 2.0, area.height() - 1.6 * small);
+    for (int k = 0; k < 2; ++k) {
+        const glm::dvec3 towards = k == 0 ? view : -view;  // from the eye to the surface: -towards
+        const glm::dvec3 helper = std::abs(towards.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
+        const glm::dvec3 right = glm::normalize(glm::cross(helper, towards)), up = glm::cross(towards, right);
+        double extent = 1e-9;
+        for (std::size_t v = 0; v < n; ++v) {
+            const glm::dvec3 d = glm::dvec3(rest[v]) - centre;
+            extent = std::max({extent, std::abs(glm::dot(d, right)), std::abs(glm::dot(d, up))});
+        }
+        const QRectF box(area.left() + k * (side + gap), area.top(), side, side);
+        const double scale = 0.48 * side / extent;
+        std::vector<std::pair<double, std::size_t>> order;
+        for (std::size_t v = 0; v < n; ++v)
+            if (glm::dot(glm::dvec3(normals[v]), towards) > 0.0)
+                order.emplace_back(glm::dot(glm::dvec3(rest[v]) - centre, towards), v);
+        std::sort(order.begin(), order.end());
+        p.setPen(Qt::NoPen);
+        const double dot = std::max(layout.mm(0.5), 0.9 * scale * std::sqrt(4.0 * extent * extent / double(n)));
+        for (const auto& [depth, v] : order) {
+            const glm::dvec3 d = glm::dvec3(rest[v]) - centre;
+            const QPointF at(box.center().x() + scale * glm::dot(d, right), box.center().y() - scale * glm::dot(d, up));
+            const float f = palpation.peakForceN[v];
+            p.setBrush(f > 0.0f ? coverageHeatColour(f, palpation.coverage.minForceN, maxN) : QColor(200, 200, 200));
+            p.drawEllipse(at, dot, dot);
+        }
+        p.setPen(QColor(90, 90, 90));
+        p.setFont(layout.small());
+        p.drawText(QRectF(box.left(), box.bottom() + 0.2 * small, box.width(), small), Qt::AlignCenter,
+                   k == 0 ? Tr::tr("the side examined most") : Tr::tr("the opposite side"));
+    }
+    // The scale.
+    const QRectF bar(area.left(), area.top() + side + 1.6 * small, layout.mm(40), small * 0.6);
+    QLinearGradient gradient(bar.topLeft(), bar.topRight());
+    gradient.setColorAt(0.0, coverageHeatColour(palpation.coverage.minForceN, palpation.coverage.minForceN, maxN));
+    gradient.setColorAt(1.0, coverageHeatColour(maxN, palpation.coverage.minForceN, maxN));
+    p.setBrush(gradient);
+    p.setPen(QPen(QColor(90, 90, 90), layout.mm(0.1)));
+    p.drawRect(bar);
+    p.drawText(QRectF(bar.right() + layout.mm(2), bar.top() - 0.3 * small, area.width() - bar.width(), small),
+               Qt::AlignLeft | Qt::AlignVCenter,
+               Tr::tr("examined at %1 to %2 N (largest force); grey: not examined")
+                   .arg(number(palpation.coverage.minForceN, 1), number(maxN, 1)));
+}
+
 void drawForcePlot(ReportLayout& layout, const QRectF& area, const ScoreReportContent& content) {
     QPainter& p = layout.painter();
     const QFont& font = layout.small();
@@ -467,6 +537,15 @@ void drawReport(ReportLayout& layout, const ScoreReportContent& content) {
         for (const QString& text : palpationSummaryLines(report)) {
             layout.paragraph(layout.body(), text);
             layout.skip(line * 0.2);
+        }
+        if (!content.surfaceMm.empty() && !p.peakForceN.empty()) {
+            const double height = layout.mm(85);
+            layout.ensure(height + line * 4.0);
+            layout.skip(line * 0.4);
+            layout.paragraph(layout.heading(), Tr::tr("Surface examined"));
+            layout.skip(line * 0.3);
+            drawHeatMap(layout, QRectF(0, layout.y(), layout.page().width(), height), content);
+            layout.skip(height + line * 1.5);  // the picture, its captions and the scale under them
         }
         if (p.forceByPhase.search || p.forceByPhase.palpation) {
             std::vector<std::vector<Cell>> phaseRows;

@@ -186,6 +186,22 @@ TEST(ScoreReportPdf, ScoredRecordingIsReadable) {
     EXPECT_EQ(files, (std::vector<std::string>{"press.palprec", "report.pdf"}));
 }
 
+TEST(ScoreReportPdf, ADetectLumpsReportHasTheLumpsTheSurfaceExaminedAndTheForceByPhase) {
+    test::TempDir dir;
+    const std::string recording = dir.file("lumps.palprec");
+    test::runScriptedSession(test::loadExampleExercise("detect_lumps"),
+                             test::loadTraineeScript(exampleFile("detect_lumps.light.path")), recording);
+    const std::string pdf = dir.file("lumps.pdf");
+    const auto r = runCli("score --recording " + shellQuote(recording) + " --pdf " + shellQuote(pdf) + " --trainee Di");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::vector<PdfPage> pages = expectReadable(pdf);  // nothing overlaps, every line on its page
+    const std::string text = allText(pages);
+    for (const char* wanted : {"Palpation", "Lumps", "Lump 3", "missed", "8.0 mm", "Surface examined",
+                               "the side examined most", "Force by phase", "Pressed too lightly",
+                               "Lumps found: 2 of 3"})
+        EXPECT_NE(text.find(wanted), std::string::npos) << wanted << " in\n" << text;
+}
+
 TEST(ScoreReportPdf, LongNamesAndManyTargetsStayReadable) {
     test::TempDir dir;
     const std::string recording = recordPressTargets(dir);
