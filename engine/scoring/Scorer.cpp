@@ -306,7 +306,9 @@ PalpationSummary Scorer::palpationSummary(bool detail) const {
                                                       (p.detection->falseAlarms == 1 ? " finding was" : " findings were") +
                                                       " on no lump: mark only where the tissue resists more than around it."});
     }
-    if (p.coverageFraction < kLowCoverageFraction)
+    // Only an examination of the whole surface is judged on how much of it was covered (find the
+    // lump may go straight to it).
+    if (mExercise.type == ExerciseType::DetectLumps && p.coverageFraction < kLowCoverageFraction)
         p.feedback.push_back({"low_coverage", "Examined " + oneDecimal(100.0 * p.coverageFraction) +
                                                   " % of the surface at " + minForce +
                                                   " N or more: cover all of it, in overlapping rows."});

@@ -335,6 +335,17 @@ TEST(ScriptedExaminers, PokingWithoutSearchingCoversLittleAndCallsLumpsThatAreNo
     EXPECT_LT(r.score, 40.0);
 }
 
+TEST(ScriptedExaminers, FindTheLumpReportsCoverageWithoutJudgingIt) {
+    test::TempDir dir;
+    const ScoreReport r = scoreScripted("find_lump", "good", dir);
+    ASSERT_TRUE(r.palpation);
+    EXPECT_FALSE(r.palpation->detection) << "one lump, one mark: no detection matching";
+    EXPECT_GT(r.palpation->coverageFraction, 0.0);
+    EXPECT_LT(r.palpation->coverageFraction, 0.6);  // four presses: far from the whole sphere
+    EXPECT_FALSE(hasFeedback(r, "low_coverage")) << "it may go straight to the lump";
+    EXPECT_EQ(r.find(Metric::CoverageFraction)->weight, 0.0);
+}
+
 TEST(ScriptedExaminers, HealthyTissueRewardsRestraint) {
     test::TempDir dir;
     const ScoreReport good = scoreScripted("no_lump", "good", dir);
