@@ -194,7 +194,8 @@ int addSessionCommand(const std::vector<std::string>& words) {
                 {"score", report.score}, {"expert", expert}, {"staircase", nullptr}};
     // A trial moves the trainee's staircase; an expert's reference session does not.
     const std::optional<bool> trial = staircaseTrialPassed(report);
-    if (!expert && trial && exercise && exercise->detectLumps.staircase) {
+    // A stopped session is no trial (its partial findings are not a result), nor an expert's.
+    if (!expert && trial && isScored(outcomeOf(report)) && exercise && exercise->detectLumps.staircase) {
         const QString key = exerciseKey(exercisePath, name);
         const QString stored = db.staircase(trainee, key);
         std::optional<Staircase> staircase;

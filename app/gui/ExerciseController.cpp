@@ -342,7 +342,8 @@ bool ExerciseController::mark() {
 }
 
 QString ExerciseController::recordStaircaseTrial(const ScoreReport& report) {
-    if (!mStaircaseLevel || !mAssets) return {};
+    // A stopped session is no trial: its partial finding is not a result.
+    if (!mStaircaseLevel || !mAssets || !isScored(outcomeOf(report))) return {};
     const std::optional<bool> passed = staircaseTrialPassed(report);
     if (!passed) return {};
     QString key;

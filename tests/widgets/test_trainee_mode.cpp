@@ -379,6 +379,13 @@ TEST(TraineeMode, AStaircaseRunsEachTrialAtTheTraineesLevelAndMovesWithTheResult
         RecordingReader::open(window->exercises().lastRecordingPath().toStdString()).header(), errors);
     ASSERT_TRUE(ran);
     for (const LumpDef& l : ran->detectLumps.lumps) EXPECT_EQ(l.contrast, 4.0);
+    // Stopped at once: stored as stopped, no trial, the level stays.
+    ASSERT_EQ(window->exercises().start(), QString());
+    window->advanceTicks(500);
+    window->exercises().stop();
+    ASSERT_EQ(window->exercises().start(), QString());
+    EXPECT_EQ(window->exercises().staircaseLevel().value_or(-1.0), 4.0);
+    window->exercises().stop();
 }
 
 TEST(TraineeMode, AnExpertReferenceSessionIsStoredAsAnExperts) {
