@@ -1,4 +1,5 @@
-// palpate-cli accuracy --reference punch|hertz: the reference FEM against the closed forms
+// palpate-cli accuracy --reference punch|hertz: the reference FEM (the hyperelastic references are in
+// HyperelasticAccuracy.cpp) against the closed forms
 // (docs/accuracy.md), with the convergence rate and linear-tet locking. Exit 0 when every case with
 // a/h >= 8 and nu <= 0.45 is within 5 % (displacement and force), 1 otherwise, 2 on bad usage.
 
@@ -184,6 +185,9 @@ void printRow(const ContactCaseResult& r, std::ostream& out) {
 }  // namespace
 
 int accuracyCommand(const std::vector<std::string>& words) {
+    for (std::size_t i = 0; i + 1 < words.size(); ++i)
+        if (words[i] == "--reference")
+            if (const auto hyper = parseHyperelasticReference(words[i + 1])) return hyperelasticAccuracyCommand(*hyper, words);
     Args args(words, {"json", "quick"}, {"reference", "nu", "levels", "edge"});
     if (!args.ok()) {
         std::cerr << "accuracy: " << args.error() << "\n";
@@ -195,12 +199,13 @@ int accuracyCommand(const std::vector<std::string>& words) {
     }
     const auto referenceName = args.option("reference");
     if (!referenceName) {
-        std::cerr << "accuracy: --reference punch|hertz is required\n";
+        std::cerr << "accuracy: --reference punch|hertz|uniaxial-neo-hookean|uniaxial-exponential|indentation-neo-hookean is required\n";
         return 2;
     }
     const auto reference = parseContactReference(*referenceName);
     if (!reference) {
-        std::cerr << "accuracy: unknown --reference '" << *referenceName << "' (punch or hertz)\n";
+        std::cerr << "accuracy: unknown --reference '" << *referenceName
+                  << "' (punch, hertz, uniaxial-neo-hookean, uniaxial-exponential or indentation-neo-hookean)\n";
         return 2;
     }
     const bool quick = args.flag("quick");

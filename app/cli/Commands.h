@@ -1,5 +1,7 @@
 #pragma once
 
+#include "engine/accuracy/HyperelasticValidation.h"
+
 #include "engine/exercise/Exercise.h"
 #include "engine/exercise/ScoreReport.h"
 
@@ -31,6 +33,8 @@ std::string proficiencyJsonForScore(const ScoreReport& report, const Exercise& e
 int sweepCommand(const std::vector<std::string>& words);
 int calibrateCommand(const std::vector<std::string>& words);
 int accuracyCommand(const std::vector<std::string>& words);
+/// The hyperelastic references of `accuracy` (app/cli/HyperelasticAccuracy.cpp).
+int hyperelasticAccuracyCommand(HyperelasticReference reference, const std::vector<std::string>& words);
 /// stability: maps of where each model fails, derived against measured (StabilityCommand.cpp, docs/stability.md).
 int stabilityCommand(const std::vector<std::string>& words);
 /// devices: backends compiled in and devices connected, with their URIs (DevicesCommand.cpp, docs/devices.md).

@@ -37,6 +37,8 @@ void usage(std::ostream& out) {
            "  palpate-cli sweep [--json] [--csv FILE] [--png FILE] [--quick] [--shapes sphere,stomach] [--sizes N,..]\n"
            "                    [--max-rings N] [--no-paper] [--no-others] [--repeats N] [TISSUE]\n"
            "  palpate-cli accuracy --reference punch|hertz [--json] [--quick] [--nu LIST] [--levels LIST]\n"
+           "  palpate-cli accuracy --reference uniaxial-neo-hookean|uniaxial-exponential|indentation-neo-hookean\n"
+           "                       [--json] [--quick] [--nu LIST] [--levels LIST]\n"
            "  palpate-cli calibrate [--mesh FILE [--mesh-unit U]] [--rings N] [--vertex V] [--fem] [--json] [--out PRESET] [--name NAME] [TISSUE]\n"
            "      TISSUE: [--preset FILE] [--youngs-kpa E] [--poisson NU] [--tool-radius MM]\n"
            "  palpate-cli stability --list | --model NAME [--json] [--csv FILE] [--png FILE] [--quick]\n"

@@ -44,6 +44,27 @@ double hertzSurfaceDisplacementMm(double sphereRadiusMm, double indentationMm, d
            (std::numbers::pi * sphereRadiusMm);
 }
 
+namespace {
+double sneddonIndentationMm(double r, double a) { return 0.5 * a * std::log((r + a) / (r - a)); }
+}  // namespace
+
+// delta(a) rises monotonically from 0 (a = 0) to infinity (a -> R): bisection to the last bit.
+double sneddonSphereContactRadiusMm(double sphereRadiusMm, double indentationMm) {
+    if (!(indentationMm > 0.0)) return 0.0;
+    double lo = 0.0, hi = sphereRadiusMm;
+    for (int i = 0; i < 200 && hi - lo > 1e-15 * sphereRadiusMm; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (sneddonIndentationMm(sphereRadiusMm, mid) < indentationMm ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+double sneddonSphereForceN(const ElasticMaterial& m, double sphereRadiusMm, double indentationMm) {
+    const double r = sphereRadiusMm, a = sneddonSphereContactRadiusMm(r, indentationMm);
+    if (a == 0.0) return 0.0;
+    return 0.5 * planeStrainModulusNPerMm2(m) * ((a * a + r * r) * std::log((r + a) / (r - a)) - 2.0 * a * r);
+}
+
 glm::dvec3 boussinesqDisplacementMm(const ElasticMaterial& m, double loadN, const glm::dvec3& pointMm) {
     // Johnson, Contact Mechanics (1985) §3.2 with depth z' = -z >= 0 and the load along -z:
     // u_r = P/(4 pi G) [r z'/rho^3 - (1 - 2 nu) r/(rho (rho + z'))],

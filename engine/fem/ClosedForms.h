@@ -32,6 +32,13 @@ double hertzForceN(const ElasticMaterial& m, double sphereRadiusMm, double inden
 /// [(2a^2 - r^2) asin(a/r) + a sqrt(r^2 - a^2)] / (pi R) outside.
 double hertzSurfaceDisplacementMm(double sphereRadiusMm, double indentationMm, double radialDistanceMm);
 
+/// Sneddon's exact rigid sphere (Sneddon, Int. J. Eng. Sci. 3:47-57, 1965): the sphere itself, not
+/// Hertz's paraboloid, so it holds at depths where Hertz does not. With contact radius a:
+/// delta = (a/2) ln((R + a)/(R - a)), F = (E*/2) [(a^2 + R^2) ln((R + a)/(R - a)) - 2 a R].
+/// Both tend to Hertz as a/R -> 0. Linear elasticity: the half-space's own nonlinearity is not in it.
+double sneddonSphereContactRadiusMm(double sphereRadiusMm, double indentationMm);
+double sneddonSphereForceN(const ElasticMaterial& m, double sphereRadiusMm, double indentationMm);
+
 /// Boussinesq: a point load P (N) at the origin pushing into the half-space z <= 0 (load along -z).
 /// Displacement (mm) at a point with z <= 0 other than the origin; u_z < 0 under the load.
 /// The reference FEM imposes it on the far faces of its block.

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace palpate {
@@ -51,6 +52,38 @@ TEST_F(AccuracyCli, HumanOutputHasTheTableRateAndLockingRemark) {
     EXPECT_NE(r.output.find("not checked"), std::string::npos) << r.output;
 }
 
+TEST_F(AccuracyCli, UniaxialNeoHookeanJsonCarriesTheWorstErrorAndPasses) {
+    const auto r = run("accuracy --reference uniaxial-neo-hookean --json --nu 0.45");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.output);
+    EXPECT_EQ(j.at("reference"), "uniaxial-neo-hookean");
+    EXPECT_LT(j.at("worst_error_pct").get<double>(), 0.5);
+    ASSERT_EQ(j.at("cases").size(), 5u);
+    for (const auto& c : j["cases"]) {
+        EXPECT_DOUBLE_EQ(c["nu"].get<double>(), 0.45);
+        EXPECT_EQ(c["nominal_stress_fem_kpa"].get<double>() > 0.0, c["stretch"].get<double>() > 1.0);
+    }
+    EXPECT_TRUE(j["gate"]["passed"].get<bool>());
+}
+
+TEST_F(AccuracyCli, IndentationNeoHookeanJsonHasSmallStrainCasesAndTheWorstError) {
+    const auto r = run("accuracy --reference indentation-neo-hookean --levels 4 --json");
+    const auto j = nlohmann::json::parse(r.output);
+    EXPECT_EQ(j.at("reference"), "indentation-neo-hookean");
+    EXPECT_LT(j.at("small_strain").at("force_difference").get<double>(), 0.01);
+    ASSERT_EQ(j.at("cases").size(), 3u);  // delta/R = 0.1, 0.2, 0.3
+    double worst = 0.0;
+    for (const auto& c : j["cases"]) {
+        EXPECT_EQ(c["a_over_h"], 4);
+        worst = std::max(worst, c["error"].get<double>());
+        EXPECT_GT(c["force_fem_n"].get<double>(), 0.0);
+    }
+    EXPECT_NEAR(j.at("worst_error_pct").get<double>(), 100.0 * worst, 1e-9);
+    // a/h = 4 is too coarse for the 5 % goal: not checked, so not failed.
+    EXPECT_FALSE(j["gate"]["checked"].get<bool>());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+}
+
 TEST_F(AccuracyCli, BadUsageExitsTwoNamingTheOption) {
     struct Case {
         const char* args;
@@ -60,7 +93,9 @@ TEST_F(AccuracyCli, BadUsageExitsTwoNamingTheOption) {
                           Case{"accuracy --reference punch --nu 0.6", "--nu"},
                           Case{"accuracy --reference punch --nu x", "--nu"},
                           Case{"accuracy --reference punch --levels 3.5", "--levels"},
-                          Case{"accuracy --reference punch --bogus", "--bogus"}}) {
+                          Case{"accuracy --reference punch --bogus", "--bogus"},
+                          Case{"accuracy --reference uniaxial-neo-hookean --nu 0.5", "--nu"},
+                          Case{"accuracy --reference indentation-neo-hookean --levels 1", "--levels"}}) {
         const auto r = run(c.args);
         EXPECT_EQ(r.exitCode, 2) << c.args << "\n" << r.output;
         EXPECT_NE(r.output.find(c.word), std::string::npos) << c.args << "\n" << r.output;
