@@ -3783,6 +3783,26 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
         <source>Not applied: %1 differ from the running tissue. Apply (Ctrl+Return) sends them; Revert goes back to what runs.</source>
         <translation>Nicht angewendet: %1 weichen vom laufenden Gewebe ab. Anwenden (Strg+Eingabe) sendet sie; Zurücksetzen stellt her, was läuft.</translation>
     </message>
+    <message>
+        <source>Stiffening knots:</source>
+        <translation>Versteifungsknoten:</translation>
+    </message>
+    <message>
+        <source>stiffening knots</source>
+        <translation>Versteifungsknoten</translation>
+    </message>
+    <message>
+        <source>Points of the strain-stiffening curve, calibrated from the hyperelastic reference. 0: linear tissue, the paper&apos;s model.</source>
+        <translation>Punkte der Kurve, mit der das Gewebe unter Dehnung steifer wird, kalibriert an der hyperelastischen Referenz. 0: lineares Gewebe, das Modell des Artikels.</translation>
+    </message>
+    <message>
+        <source>Contact force above which the next stiffening compliance applies, N.</source>
+        <translation>Kontaktkraft, oberhalb der die nächste Versteifungsnachgiebigkeit gilt, N.</translation>
+    </message>
+    <message>
+        <source>Above its knot the tissue yields this fraction of |m1| per further newton: below 1, it stiffens.</source>
+        <translation>Oberhalb seines Knotens gibt das Gewebe je weiteres Newton um diesen Anteil von |m1| nach: unter 1 wird es steifer.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::Preferences</name>

@@ -3779,6 +3779,26 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
         <source>Not applied: %1 differ from the running tissue. Apply (Ctrl+Return) sends them; Revert goes back to what runs.</source>
         <translation>Belum digunakan: %1 berbeza daripada tisu yang berjalan. Guna (Ctrl+Return) menghantarnya; Kembalikan kembali kepada apa yang berjalan.</translation>
     </message>
+    <message>
+        <source>Stiffening knots:</source>
+        <translation>Simpulan pengerasan:</translation>
+    </message>
+    <message>
+        <source>stiffening knots</source>
+        <translation>simpulan pengerasan</translation>
+    </message>
+    <message>
+        <source>Points of the strain-stiffening curve, calibrated from the hyperelastic reference. 0: linear tissue, the paper&apos;s model.</source>
+        <translation>Titik lengkung pengerasan terikan, ditentukur daripada rujukan hiperelastik. 0: tisu linear, model kertas kerja.</translation>
+    </message>
+    <message>
+        <source>Contact force above which the next stiffening compliance applies, N.</source>
+        <translation>Daya sentuhan yang melebihinya pematuhan pengerasan seterusnya digunakan, N.</translation>
+    </message>
+    <message>
+        <source>Above its knot the tissue yields this fraction of |m1| per further newton: below 1, it stiffens.</source>
+        <translation>Melebihi simpulannya tisu mengalah sebanyak pecahan |m1| ini bagi setiap newton tambahan: di bawah 1, ia mengeras.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::Preferences</name>

@@ -290,7 +290,13 @@ void ParameterPanel::buildUi() {
         for (PanelField& f : mFields)
             if (f.section == section && pick(std::string(f.spec->key))) {
                 QWidget* widget = createFieldWidget(f, parent);
-                if (f.index >= 0) {
+                const bool slope = f.index >= 0 && std::string(f.spec->key) == "slopeMagnitudeMmPerN";
+                if (f.index >= 0 && !slope) {
+                    // Another list (the stiffening knots): each entry named as the engine names it.
+                    auto* itemLabel = new QLabel(QString::fromStdString(f.spec->itemName(f.index)) + QLatin1Char(':'), parent);
+                    itemLabel->setBuddy(widget);
+                    form->addRow(itemLabel, widget);
+                } else if (slope) {
                     mSlopeLabels[std::size_t(f.index)] = new QLabel(parent);
                     mSlopeLabels[std::size_t(f.index)]->setObjectName(QString::fromLatin1("slopeLabel%1").arg(f.index));
                     mSlopeLabels[std::size_t(f.index)]->setBuddy(widget);
@@ -374,7 +380,7 @@ void ParameterPanel::buildUi() {
     for (const PanelField& f : mFields) {
         const std::string key = f.spec->key;
         if (f.section == "slope_ring" && key == "ringCount") mRingSpin = qobject_cast<QSpinBox*>(f.widget);
-        if (f.section == "slope_ring" && f.index >= 0)
+        if (f.section == "slope_ring" && key == "slopeMagnitudeMmPerN" && f.index >= 0)
             mSlopeSpins[std::size_t(f.index)] = qobject_cast<QDoubleSpinBox*>(f.widget);
         if (f.section == "slope_ring" && key == "contactStiffnessNPerMm")
             mContactSpin = qobject_cast<QDoubleSpinBox*>(f.widget);
@@ -575,6 +581,8 @@ QString ParameterPanel::fieldName(int edit) const {
     if (edit == kModelEdit) return tr("deformation model");
     if (edit == kRateEdit) return tr("haptic rate");
     const PanelField& f = mFields[std::size_t(edit - kFieldEdit0)];
+    if (f.index >= 0 && std::string(f.spec->key) != "slopeMagnitudeMmPerN")
+        return QString::fromStdString(f.spec->itemName(f.index));
     if (f.index >= 0) return slopeLabel(f.index);
     if (*f.spec->name) return tr(f.spec->name);
     QString label = tr(f.spec->label);
@@ -929,7 +937,7 @@ void ParameterPanel::showPreset(const TissuePreset& preset) {
 void ParameterPanel::onEdited(int field) {
     if (mShowing) return;
     const bool ringCount = field >= kFieldEdit0 && mFields[std::size_t(field - kFieldEdit0)].widget == mRingSpin;
-    if (ringCount) updateSlopeRows();
+    updateSlopeRows();  // the ring count and the stiffening knots show their list rows
     if (field == kModelEdit) updateModelRows();
     mFileErrors.clear();
     mFileNote.clear();
@@ -949,6 +957,14 @@ void ParameterPanel::onEdited(int field) {
 void ParameterPanel::updateSlopeRows() {
     const int rings = mRingSpin->value();
     for (int r = 0; r <= kMaxRings; ++r) mSlopeForm->setRowVisible(mSlopeSpins[std::size_t(r)], r <= rings);
+    // The stiffening curve's knots, as many as its count says (docs/method.md).
+    const PanelField* knots = nullptr;
+    for (const PanelField& f : mFields)
+        if (f.section == "slope_ring" && std::string(f.spec->key) == "stiffeningKnots") knots = &f;
+    const int used = knots ? qobject_cast<QSpinBox*>(knots->widget)->value() : 0;
+    for (const PanelField& f : mFields)
+        if (f.section == "slope_ring" && f.index >= 0 && std::string(f.spec->key).rfind("stiffening", 0) == 0)
+            mSpringForm->setRowVisible(f.widget, f.index < used);
 }
 
 void ParameterPanel::showApplied(const TissuePreset& running) {
@@ -994,7 +1010,10 @@ void ParameterPanel::updateUnappliedMarks() {
         else if (auto* ints = qobject_cast<QSpinBox*>(f.widget)) differs = ints->value() != int(running);
         else if (auto* combo = qobject_cast<QComboBox*>(f.widget)) differs = combo->currentData().toInt() != int(running);
         // A slope beyond the ring count is hidden and not used: the ring count says the difference.
-        if (f.section == "slope_ring" && f.index > rings) differs = false;
+        if (f.section == "slope_ring" && f.index >= 0) {
+            const bool isSlope = std::string(f.spec->key) == "slopeMagnitudeMmPerN";
+            if (isSlope ? f.index > rings : f.index >= mShown.params.stiffeningKnots) differs = false;
+        }
         mark(f.widget, differs, kFieldEdit0 + i);
     }
     mUnapplied = names;

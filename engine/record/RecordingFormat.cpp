@@ -65,18 +65,22 @@ const char* chunkStatusText(ChunkStatus status) {
 
 // The parameters in their table's order (engine/params/FieldTable.h), every stored list entry
 // included: whole numbers as i32, the rest as f64 (docs/recording.md has the layout).
-void encodeParams(ByteWriter& w, const SlopeRingParams& p) {
+bool isStiffeningField(const char* key) { return std::string(key).rfind("stiffening", 0) == 0; }
+
+namespace {
+
+/// The fields of the table that are (`stiffening`) or are not the stiffening knots, in table order.
+void encodeFields(ByteWriter& w, const SlopeRingParams& p, bool stiffening) {
     for (const FieldDef<SlopeRingParams>& f : slopeRingFields())
-        for (int i = 0; i < f.capacity; ++i) {
+        for (int i = 0; i < f.capacity && isStiffeningField(f.spec.key) == stiffening; ++i) {
             if (f.type == FieldType::Whole) w.i32(int(f.get(p, i)));
             else w.f64(f.get(p, i));
         }
 }
 
-SlopeRingParams decodeParams(ByteReader& r, const std::string& field) {
-    SlopeRingParams p;
+void decodeFields(ByteReader& r, const std::string& field, SlopeRingParams& p, bool stiffening) {
     for (const FieldDef<SlopeRingParams>& f : slopeRingFields())
-        for (int i = 0; i < f.capacity; ++i) {
+        for (int i = 0; i < f.capacity && isStiffeningField(f.spec.key) == stiffening; ++i) {
             const std::string name = field + "." + f.spec.key +
                                      (f.type == FieldType::RealList ? "[" + std::to_string(i) + "]" : "");
             if (f.type != FieldType::Whole) {
@@ -90,7 +94,23 @@ SlopeRingParams decodeParams(ByteReader& r, const std::string& field) {
                        std::to_string(v) + " is outside " + formatNumber(f.spec.lo) + ".." + formatNumber(f.spec.hi));
             f.set(p, i, v);
         }
+}
+
+}  // namespace
+
+void encodeParams(ByteWriter& w, const SlopeRingParams& p) { encodeFields(w, p, false); }
+
+SlopeRingParams decodeParams(ByteReader& r, const std::string& field) {
+    SlopeRingParams p;
+    decodeFields(r, field, p, false);
     return p;
+}
+
+void encodeStiffening(ByteWriter& w, const SlopeRingParams& p) { encodeFields(w, p, true); }
+
+void decodeStiffening(ByteReader& r, const std::string& field, SlopeRingParams& p) {
+    if (r.remaining() == 0) return;  // before format 5: no knots
+    decodeFields(r, field, p, true);
 }
 
 void encodeContact(ByteWriter& w, const ContactDef& c) {
@@ -243,6 +263,7 @@ void encodeRecordingHeader(const RecordingHeader& h, std::vector<std::uint8_t>& 
     b.str(h.note);
     encodeContact(b, h.scene.contact);  // format 3
     encodeMeshUnit(b, h.scene.meshUnit);  // format 4
+    encodeStiffening(b, h.scene.params);  // format 5
 
     ByteWriter w(out);
     w.bytes(kRecordingMagic, sizeof(kRecordingMagic));
@@ -303,6 +324,8 @@ bool decodeRecordingHeader(const std::uint8_t* data, std::size_t size, Recording
     if (const auto contact = decodeContact(r, "scene.contact")) h.scene.contact = *contact;
     // Format 4 appends the mesh's unit (older files: mm).
     if (const auto unit = decodeMeshUnit(r, "scene.meshUnit")) h.scene.meshUnit = *unit;
+    // Format 5 appends the stiffening knots (older files: linear tissue).
+    decodeStiffening(r, "scene.params", h.scene.params);
     // Bytes after the known fields are allowed: later minor revisions append fields.
     if (!r.ok()) {
         error = r.error();

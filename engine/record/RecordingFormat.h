@@ -29,8 +29,9 @@ namespace palpate {
 inline constexpr char kRecordingMagic[7] = {'P', 'A', 'L', 'P', 'R', 'E', 'C'};
 /// 2: adds the Divergence event (kind 10). Version 1 files read unchanged (they have none).
 /// 3: appends the contact to the header, scene and parameter events. 4: appends the mesh's unit
-/// to the header and scene events (older files: mm).
-inline constexpr std::uint8_t kRecordingFormatVersion = 4;
+/// to the header and scene events (older files: mm). 5: appends the slope-ring parameters'
+/// stiffening knots to the header and the scene and parameter events (older files: linear tissue).
+inline constexpr std::uint8_t kRecordingFormatVersion = 5;
 inline constexpr std::uint8_t kOldestRecordingFormatVersion = 1;
 inline constexpr std::uint8_t kChunkMagic[4] = {'P', 'C', 'H', 'K'};
 /// Magic (7) + version (1) + header length (4).
@@ -141,6 +142,12 @@ std::optional<ContactDef> decodeContact(ByteReader& r, const std::string& field)
 /// decodeMeshUnit reads it when the bytes are there (nullopt when not; a factor out of range or a
 /// name that is not its factor's fails under `field`).
 void encodeMeshUnit(ByteWriter& w, const MeshUnit& unit);
+/// The stiffening knots (docs/method.md), appended by format 5: i32 count, then the two lists' stored
+/// entries as f64. decodeStiffening reads them into `params` when the bytes are there.
+void encodeStiffening(ByteWriter& w, const SlopeRingParams& params);
+void decodeStiffening(ByteReader& r, const std::string& field, SlopeRingParams& params);
+/// Whether `key` is one of the fields encodeStiffening writes (encodeParams leaves them out).
+bool isStiffeningField(const char* key);
 std::optional<MeshUnit> decodeMeshUnit(ByteReader& r, const std::string& field);
 void encodeScene(ByteWriter& w, const RecordedScene& scene);
 RecordedScene decodeScene(ByteReader& r, const std::string& field);

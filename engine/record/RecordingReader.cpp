@@ -149,6 +149,7 @@ bool parseEvents(const std::uint8_t* cursor, const std::uint8_t* end, std::uint6
             case std::uint8_t(EventKind::ParamsApplied):
                 e.params = decodeParams(p, "params");
                 e.contact = decodeContact(p, "contact");
+                decodeStiffening(p, "params", e.params);
                 break;
             case std::uint8_t(EventKind::SceneChanged):
                 e.sceneId = p.u64("sceneId");
@@ -156,6 +157,7 @@ bool parseEvents(const std::uint8_t* cursor, const std::uint8_t* end, std::uint6
                     e.scene = decodeScene(p, "scene");
                     if (const auto contact = decodeContact(p, "scene.contact")) e.scene->contact = *contact;
                     if (const auto unit = decodeMeshUnit(p, "scene.meshUnit")) e.scene->meshUnit = *unit;
+                    decodeStiffening(p, "scene.params", e.scene->params);
                 }
                 break;
             case std::uint8_t(EventKind::DeviceChanged):

@@ -466,6 +466,7 @@ void RecordingWriter::appendEventsUpTo(std::uint64_t lastTick, std::uint64_t fir
             case RecordedCommand::Kind::Params:
                 encodeParams(w, c.params);
                 encodeContact(w, c.contact);
+                encodeStiffening(w, c.params);  // format 5
                 addEvent(EventKind::ParamsApplied, c.tick, firstTick, mScratch.data(), mScratch.size());
                 break;
             case RecordedCommand::Kind::Scene: {
@@ -476,6 +477,7 @@ void RecordingWriter::appendEventsUpTo(std::uint64_t lastTick, std::uint64_t fir
                     encodeScene(w, found->second);
                     encodeContact(w, found->second.contact);
                     encodeMeshUnit(w, found->second.meshUnit);  // format 4
+                    encodeStiffening(w, found->second.params);  // format 5
                 }
                 addEvent(EventKind::SceneChanged, c.tick, firstTick, mScratch.data(), mScratch.size());
                 break;

@@ -86,6 +86,40 @@ TEST(RecordFormat, VarintsRoundTripAndRejectMalformedInput) {
     EXPECT_EQ(zigzagEncode(1), 2u);
 }
 
+TEST(RecordFormat, StiffeningKnotsRoundTripAndOlderHeadersHaveNone) {
+    RecordingHeader h = sampleHeader();
+    h.scene.params.stiffeningKnots = 2;
+    h.scene.params.stiffeningForceN[0] = 0.4;
+    h.scene.params.stiffeningCompliance[0] = 0.5;
+    h.scene.params.stiffeningForceN[1] = 1.25;
+    h.scene.params.stiffeningCompliance[1] = 0.2;
+    std::vector<std::uint8_t> bytes;
+    encodeRecordingHeader(h, bytes);
+    RecordingHeader back;
+    std::size_t headerBytes = 0;
+    std::string error;
+    ASSERT_TRUE(decodeRecordingHeader(bytes.data(), bytes.size(), back, headerBytes, error)) << error;
+    EXPECT_EQ(back.scene.params.stiffeningKnots, 2);
+    EXPECT_EQ(back.scene.params.stiffeningForceN[1], 1.25);
+    EXPECT_EQ(back.scene.params.stiffeningCompliance[1], 0.2);
+    // A count out of range is refused, naming the field.
+    std::vector<std::uint8_t> tail;
+    ByteWriter w(tail);
+    encodeStiffening(w, h.scene.params);
+    SlopeRingParams p;
+    tail[0] = 9;
+    ByteReader refused(tail.data(), tail.size(), "");
+    decodeStiffening(refused, "scene.params", p);
+    EXPECT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().find("stiffeningKnots"), std::string::npos) << refused.error();
+    // Nothing left to read (a format-4 header): no knots, linear tissue.
+    ByteReader empty(tail.data(), 0, "");
+    SlopeRingParams linear;
+    decodeStiffening(empty, "scene.params", linear);
+    EXPECT_TRUE(empty.ok());
+    EXPECT_EQ(linear.stiffeningKnots, 0);
+}
+
 TEST(RecordFormat, HeaderRoundTripsEveryField) {
     const RecordingHeader h = sampleHeader();
     std::vector<std::uint8_t> bytes;

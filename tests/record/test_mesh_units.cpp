@@ -170,10 +170,12 @@ TEST(RecordMeshUnit, OlderFormatsReadAsMm) {
     std::vector<std::uint8_t> bytes = readBytes(path);
     std::uint32_t length = 0;
     std::memcpy(&length, bytes.data() + 8, 4);  // little-endian, as written
-    // The unit is the body's last bytes: f64 1.0, then the name "mm" (a varint length and 2 bytes).
+    // The unit is the body's last bytes but format 5's stiffening knots: f64 1.0, then the name
+    // "mm" (a varint length and 2 bytes). Both are cut.
     std::vector<std::uint8_t> unit;
     ByteWriter w(unit);
     encodeMeshUnit(w, kMillimetres);
+    encodeStiffening(w, rig.header.scene.params);
     ASSERT_GE(length, unit.size());
     const std::size_t unitAt = kPreambleBytes + length - unit.size();
     ASSERT_EQ(std::memcmp(bytes.data() + unitAt, unit.data(), unit.size()), 0);

@@ -301,7 +301,7 @@ TickResult CoherentSlopeRing::step(const glm::vec3& tool, double dtS) {
         result.forceN = normalForceN * normal + friction;
         result.normal = normal;
         const float sink = offsetMm > 0.0f ? sinkMm(mContactForceN, compliance, offsetMm)
-                                           : -mHot.signedSlope[0] * compliance * mContactForceN;
+                                           : -mHot.signedSlope[0] * compliance * stiffenedForceN(mHot, mContactForceN);
         result.proxyMm = mFriction.stickMm() + (mToolRadiusMm - sink) * normal;
     } else if (touching) {
         result.proxyMm = tool;
@@ -410,7 +410,7 @@ void CoherentSlopeRing::stepRings(const SurfaceHit& contact, bool inContact) {
         // The force the field follows moves the contact point by the sink: c F, or over a lump
         // under the surface sink(F) / |m1|.
         const float fieldForceN = offsetMm > 0.0f ? sinkMm(mContactForceN, compliance, offsetMm) / s0
-                                                  : compliance * mContactForceN;
+                                                  : compliance * stiffenedForceN(mHot, mContactForceN);
         mFieldForceN = fieldForceN * (s0 / interpolated);
     }
     mActiveDirty = inContact;

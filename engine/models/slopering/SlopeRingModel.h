@@ -120,7 +120,7 @@ protected:
     /// then stiffer by the contrast, min(|m1| F, c |m1| F + b) with b = (1 - c) z. b = 0 is the
     /// uniform inclusion, c |m1| F.
     float sinkMm(float forceN, float compliance, float offsetMm) const {
-        const float soft = -mHot.signedSlope[0] * forceN;
+        const float soft = -mHot.signedSlope[0] * stiffenedForceN(mHot, forceN);
         return offsetMm > 0.0f ? std::min(soft, compliance * soft + offsetMm) : compliance * soft;
     }
 
@@ -130,6 +130,18 @@ protected:
     /// k_c (d - b) / (1 + g c)) with g = |m1| k_c; a relaxed update steps toward it and is stable
     /// as the uniform one is (the sink's slope is at most |m1|).
     float updateContactForce(float depthMm, bool touching, float compliance, float offsetMm) {
+        if (mHot.stiffeningKnots > 0) {
+            const float penetration = touching ? depthMm - sinkMm(mContactForceN, compliance, offsetMm) : 0.0f;
+            if (!touching)
+                mContactForceN = 0.0f;
+            else if (mParams.forceRelaxation > 0.0)
+                mContactForceN = std::max(0.0f, (1.0f - mHot.alpha) * mContactForceN +
+                                                     mHot.alpha * (mHot.contactStiffness * penetration));
+            else
+                mContactForceN = stiffenedContactForceN(depthMm, compliance, offsetMm);
+            mContact = mContactForceN > 0.0f;
+            return penetration;
+        }
         if (offsetMm > 0.0f) {
             const float penetration = touching ? depthMm - sinkMm(mContactForceN, compliance, offsetMm) : 0.0f;
             if (!touching) {
@@ -160,6 +172,40 @@ protected:
         return penetration;
     }
 
+    /// The exact contact force of stiffening tissue: g(F) = F + k_c sink(F) = k_c d. The sink is
+    /// concave and piecewise linear in F (its kinks: the knots, and over a lump the force where the
+    /// sink reaches the lump), so g is piecewise linear and rising: walk its kinks, O(knots).
+    float stiffenedContactForceN(float depthMm, float compliance, float offsetMm) const {
+        const float target = mHot.contactStiffness * depthMm;
+        if (!(target > 0.0f)) return 0.0f;
+        auto g = [&](float f) { return f + mHot.contactStiffness * sinkMm(f, compliance, offsetMm); };
+        // The lump's kink: the soft sink |m1| E(F) reaches the stiff line at E = b / (|m1| (1 - c)).
+        float lumpKinkN = -1.0f;
+        if (offsetMm > 0.0f && compliance < 1.0f)
+            lumpKinkN = unstiffenedForceN(mHot, offsetMm / (-mHot.signedSlope[0] * (1.0f - compliance)));
+        float previousF = 0.0f, previousG = 0.0f;
+        int knot = 0;
+        for (;;) {
+            float next;
+            const bool haveKnot = knot < mHot.stiffeningKnots;
+            if (lumpKinkN > previousF && (!haveKnot || lumpKinkN < mHot.stiffeningForceN[knot])) {
+                next = lumpKinkN;
+                lumpKinkN = -1.0f;
+            } else if (haveKnot) {
+                next = mHot.stiffeningForceN[knot++];
+            } else {
+                break;
+            }
+            if (!(next > previousF)) continue;
+            const float gNext = g(next);
+            if (gNext >= target) return previousF + (target - previousG) * (next - previousF) / (gNext - previousG);
+            previousF = next;
+            previousG = gNext;
+        }
+        const float slope = g(previousF + 1.0f) - previousG;  // the last piece, per newton
+        return previousF + (target - previousG) / slope;
+    }
+
     /// The tick's result; `touchedDisplacementMm` is the touched vertex's displacement from rest,
     /// whose spring reaction is the force rendered.
     TickResult tickResult(VertexId touched, float penetration, const glm::vec3& touchedDisplacementMm) const {
@@ -177,7 +223,7 @@ protected:
     /// The slope update (the paper's Eq. (1)-(3)): a vertex of ring `ring` sits at rest + this,
     /// m_r F along the touched vertex's rest normal (m_r < 0: into the tissue).
     glm::vec3 ringDisplacementMm(int ring, float forceN, const glm::vec3& normal) const {
-        return (mHot.signedSlope[ring] * forceN) * normal;
+        return (mHot.signedSlope[ring] * stiffenedForceN(mHot, forceN)) * normal;
     }
 
     /// Backward Euler on m x'' = -k x - c x' for one vertex: unconditionally stable and dissipative.

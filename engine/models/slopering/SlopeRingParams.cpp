@@ -9,6 +9,10 @@ namespace {
 std::string slopeName(int r) { return "|m" + std::to_string(r + 1) + "|"; }
 int slopesUsed(const SlopeRingParams& p) { return std::clamp(p.ringCount, 0, kMaxRings) + 1; }
 
+int knotsUsed(const SlopeRingParams& p) { return std::clamp(p.stiffeningKnots, 0, kMaxStiffeningKnots); }
+std::string knotForceName(int k) { return "stiffening force " + std::to_string(k + 1); }
+std::string knotComplianceName(int k) { return "stiffening compliance " + std::to_string(k + 1); }
+
 constexpr FieldDef<SlopeRingParams> kFields[] = {
     field<&SlopeRingParams::ringCount>(
         {.key = "ringCount",
@@ -124,6 +128,45 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
                                        "Lumped mass per vertex, for the relaxation after the tool lets go."),
          .decimals = 7,
          .step = 0.0005}),
+    field<&SlopeRingParams::stiffeningKnots>(
+        {.key = "stiffeningKnots",
+         .jsonKey = "stiffening_knots",
+         .lo = 0,
+         .hi = kMaxStiffeningKnots,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Stiffening knots:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "stiffening knots"),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "Points of the strain-stiffening curve, calibrated from the hyperelastic reference. 0: linear tissue, "
+             "the paper's model."),
+         .entryLo = 0,
+         .entryHi = kMaxStiffeningKnots}),
+    listField<&SlopeRingParams::stiffeningForceN, knotsUsed>(
+        {.key = "stiffeningForceN",
+         .jsonKey = "stiffening_force_n",
+         .unit = "N",
+         .lo = 0,
+         .hi = kNoLimit,
+         .lower = Bound::Open,
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+                                       "Contact force above which the next stiffening compliance applies, N."),
+         .decimals = 6,
+         .step = 0.1,
+         .sizeKey = "stiffening_knots",
+         .itemName = knotForceName}),
+    listField<&SlopeRingParams::stiffeningCompliance, knotsUsed>(
+        {.key = "stiffeningCompliance",
+         .jsonKey = "stiffening_compliance",
+         .lo = 0,
+         .hi = 1,
+         .lower = Bound::Open,
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "Above its knot the tissue yields this fraction of |m1| per further newton: below 1, it stiffens."),
+         .decimals = 6,
+         .step = 0.01,
+         .sizeKey = "stiffening_knots",
+         .itemName = knotComplianceName}),
 };
 
 }  // namespace
@@ -141,6 +184,17 @@ SlopeRingConstants slopeRingConstants(const SlopeRingParams& p) {
     const double omega2 = p.springStiffnessNPerMm * 1000.0 / p.vertexMassKg;
     c.omega2 = float(omega2);
     c.twoZetaOmega = float(2.0 * p.dampingRatio * std::sqrt(omega2));
+    c.stiffeningKnots = knotsUsed(p);
+    float effective = 0.0f, previousForce = 0.0f, previousCompliance = 1.0f;
+    for (int k = 0; k < c.stiffeningKnots; ++k) {
+        const float f = float(p.stiffeningForceN[std::size_t(k)]);
+        effective += previousCompliance * (f - previousForce);
+        c.stiffeningForceN[k] = f;
+        c.stiffeningCompliance[k] = float(p.stiffeningCompliance[std::size_t(k)]);
+        c.stiffeningEffectiveN[k] = effective;
+        previousForce = f;
+        previousCompliance = c.stiffeningCompliance[k];
+    }
     return c;
 }
 
@@ -165,6 +219,18 @@ Problems validateSlopeRingParams(const SlopeRingParams& p) {
                                         " mm/N is not greater than " + slopeName(r) + " = " + formatNumber(m) +
                                         " mm/N"});
         }
+    }
+    for (int k = 1; k < knotsUsed(p); ++k) {
+        const double f = p.stiffeningForceN[std::size_t(k)], before = p.stiffeningForceN[std::size_t(k - 1)];
+        if (std::isfinite(f) && std::isfinite(before) && !(f > before))
+            problems.push_back({"stiffeningForceN", k, k - 1,
+                                "stiffening forces must rise: " + knotForceName(k) + " = " + formatNumber(f) +
+                                    " N is not above " + knotForceName(k - 1) + " = " + formatNumber(before) + " N"});
+        const double q = p.stiffeningCompliance[std::size_t(k)], qBefore = p.stiffeningCompliance[std::size_t(k - 1)];
+        if (std::isfinite(q) && std::isfinite(qBefore) && q > qBefore)
+            problems.push_back({"stiffeningCompliance", k, k - 1,
+                                "tissue only stiffens: " + knotComplianceName(k) + " = " + formatNumber(q) +
+                                    " is above " + knotComplianceName(k - 1) + " = " + formatNumber(qBefore)});
     }
     if (problems.empty()) {
         const double alpha = p.effectiveRelaxation();

@@ -12,6 +12,9 @@
 
 namespace palpate {
 
+/// Knots of the strain-stiffening curve (docs/method.md, "Tissue that stiffens with depth").
+inline constexpr int kMaxStiffeningKnots = 8;
+
 struct SlopeRingParams {
     /// Rings beyond the touched vertex (the paper uses 2).
     int ringCount = 2;
@@ -34,6 +37,15 @@ struct SlopeRingParams {
     /// Lumped mass per vertex for the relaxation after release, kg.
     double vertexMassKg = 0.001;
 
+    /// Strain stiffening (docs/method.md, "Tissue that stiffens with depth"): above a contact force
+    /// of stiffeningForceN[k] the tissue yields stiffeningCompliance[k] |m1| mm per further newton
+    /// (below the first knot |m1|). The rings follow the effective force E(F) this gives, so every
+    /// slope scales by E(F) / F; the force rendered stays k_s |m1| F. 0 knots: linear, the paper's model.
+    int stiffeningKnots = 0;
+    /// Ascending, N. The unused entries hold valid values, so that only the count can be wrong.
+    std::array<double, kMaxStiffeningKnots> stiffeningForceN{1, 2, 3, 4, 5, 6, 7, 8};
+    std::array<double, kMaxStiffeningKnots> stiffeningCompliance{1, 1, 1, 1, 1, 1, 1, 1};  ///< in (0, 1], not rising
+
     double loopGain() const { return slopeMagnitudeMmPerN[0] * contactStiffnessNPerMm; }
     double effectiveRelaxation() const { return forceRelaxation > 0.0 ? forceRelaxation : 1.0 / (1.0 + loopGain()); }
     /// The stiffness a held press renders, N/mm: R = k_s |m1| F with F = k_c d / (1 + g) at rest
@@ -53,7 +65,27 @@ struct SlopeRingConstants {
     float springStiffness = 1.0f;   ///< N/mm
     float omega2 = 0.0f;            ///< return-spring omega^2, 1/s^2
     float twoZetaOmega = 0.0f;      ///< 2 zeta omega, 1/s
+    int stiffeningKnots = 0;        ///< 0: linear
+    float stiffeningForceN[kMaxStiffeningKnots] = {};
+    float stiffeningCompliance[kMaxStiffeningKnots] = {};
+    float stiffeningEffectiveN[kMaxStiffeningKnots] = {};  ///< E at each knot
 };
+
+/// E(F): the force the rings follow (F when there are no knots). O(knots), no allocation.
+inline float stiffenedForceN(const SlopeRingConstants& c, float forceN) {
+    if (c.stiffeningKnots == 0 || forceN <= c.stiffeningForceN[0]) return forceN;
+    int k = 0;
+    while (k + 1 < c.stiffeningKnots && forceN > c.stiffeningForceN[k + 1]) ++k;
+    return c.stiffeningEffectiveN[k] + c.stiffeningCompliance[k] * (forceN - c.stiffeningForceN[k]);
+}
+
+/// The inverse: the contact force whose effective force is `effectiveN`.
+inline float unstiffenedForceN(const SlopeRingConstants& c, float effectiveN) {
+    if (c.stiffeningKnots == 0 || effectiveN <= c.stiffeningForceN[0]) return effectiveN;
+    int k = 0;
+    while (k + 1 < c.stiffeningKnots && effectiveN > c.stiffeningEffectiveN[k + 1]) ++k;
+    return c.stiffeningForceN[k] + (effectiveN - c.stiffeningEffectiveN[k]) / c.stiffeningCompliance[k];
+}
 SlopeRingConstants slopeRingConstants(const SlopeRingParams& params);
 
 /// The fields of SlopeRingParams in file order (engine/params/FieldTable.h).
