@@ -99,6 +99,11 @@ TEST(Stiffening, TheContactForceSolvesTheStiffenedSinkExactly) {
             EXPECT_LT(r.sinkMm, lin.sinkMm) << d;
         }
     }
+    // The margins read the stiffest piece: k_s |m1| k_c / (1 + g q_K), above the linear value.
+    EXPECT_NEAR(p.params.renderedStiffnessNPerMm(), ks * m1 * kc / (1.0 + m1 * kc * 0.25), 1e-12);
+    EXPECT_GT(p.params.renderedStiffnessNPerMm(), 2.0 * linear.params.renderedStiffnessNPerMm());
+    const double deepSlope = (press(p, 25.0).renderedN - press(p, 24.0).renderedN) / 1.0;
+    EXPECT_NEAR(deepSlope, p.params.renderedStiffnessNPerMm(), 1e-3);
     // Twice as deep, more than twice the force once it stiffens.
     EXPECT_GT(press(p, 25.0).renderedN, 2.2 * press(p, 12.5).renderedN);
 }

@@ -49,9 +49,13 @@ struct SlopeRingParams {
     double loopGain() const { return slopeMagnitudeMmPerN[0] * contactStiffnessNPerMm; }
     double effectiveRelaxation() const { return forceRelaxation > 0.0 ? forceRelaxation : 1.0 / (1.0 + loopGain()); }
     /// The stiffness a held press renders, N/mm: R = k_s |m1| F with F = k_c d / (1 + g) at rest
-    /// (docs/method.md, "Contact and force, per tick").
+    /// (docs/method.md, "Contact and force, per tick"). Stiffening tissue renders more on its
+    /// stiffest piece, k_s |m1| k_c / (1 + g q_K): that one, so that the stability and passivity
+    /// margins hold for the deepest press.
     double renderedStiffnessNPerMm() const {
-        return springStiffnessNPerMm * slopeMagnitudeMmPerN[0] * contactStiffnessNPerMm / (1.0 + loopGain());
+        const int knots = stiffeningKnots < 0 ? 0 : stiffeningKnots > kMaxStiffeningKnots ? kMaxStiffeningKnots : stiffeningKnots;
+        const double stiffest = knots > 0 ? stiffeningCompliance[std::size_t(knots - 1)] : 1.0;
+        return springStiffnessNPerMm * slopeMagnitudeMmPerN[0] * contactStiffnessNPerMm / (1.0 + loopGain() * stiffest);
     }
 };
 
