@@ -26,6 +26,27 @@ bool onFarFace(const GradedBlock& b, std::size_t i, std::size_t j, std::size_t k
     return i + 1 == b.nx() || j + 1 == b.nx() || k + 1 == b.nz();
 }
 
+/// The quarter block's constraints: symmetry (u_x = 0 on x = 0, u_y = 0 on y = 0) and every DOF of
+/// the far faces fixed. Collects the far faces' nodes and the top surface's other nodes.
+std::vector<std::uint8_t> quarterBlockConstraints(const GradedBlock& b, std::vector<TetNodeId>& farNodes,
+                                                  std::vector<TetNodeId>& topNodes) {
+    std::vector<std::uint8_t> fixed(b.mesh.dofCount(), 0);
+    for (std::size_t k = 0; k < b.nz(); ++k)
+        for (std::size_t j = 0; j < b.nx(); ++j)
+            for (std::size_t i = 0; i < b.nx(); ++i) {
+                const TetNodeId n = b.node(i, j, k);
+                if (i == 0) fixed[3 * n + 0] = 1;
+                if (j == 0) fixed[3 * n + 1] = 1;
+                if (onFarFace(b, i, j, k)) {
+                    for (int d = 0; d < 3; ++d) fixed[3 * n + std::size_t(d)] = 1;
+                    farNodes.push_back(n);
+                } else if (k == 0) {
+                    topNodes.push_back(n);
+                }
+            }
+    return fixed;
+}
+
 }  // namespace
 
 std::string_view hyperelasticReferenceName(HyperelasticReference r) {
@@ -131,29 +152,19 @@ SmallStrainResult runSmallStrainCase(const SmallStrainCase& c) {
     const double a = 1.0, delta = c.indentationOverRadius * a;
     const GradedBlock block = blockFor(a, c.aOverH);
     const TetMesh& mesh = block.mesh;
-    std::vector<std::uint8_t> fixed(mesh.dofCount(), 0);
+    std::vector<TetNodeId> far, top, contact, surface;
+    std::vector<std::uint8_t> fixed = quarterBlockConstraints(block, far, top);
     std::vector<double> prescribed(mesh.dofCount(), 0.0);
-    std::vector<TetNodeId> contact, surface;
-    for (std::size_t k = 0; k < block.nz(); ++k)
-        for (std::size_t j = 0; j < block.nx(); ++j)
-            for (std::size_t i = 0; i < block.nx(); ++i) {
-                const TetNodeId n = block.node(i, j, k);
-                const glm::dvec3& p = mesh.nodesMm[n];
-                if (i == 0) fixed[3 * n + 0] = 1;
-                if (j == 0) fixed[3 * n + 1] = 1;
-                if (onFarFace(block, i, j, k)) {
-                    for (int d = 0; d < 3; ++d) fixed[3 * n + std::size_t(d)] = 1;
-                    continue;
-                }
-                if (k != 0) continue;
-                const double r = std::hypot(p.x, p.y);
-                if (r <= a * (1.0 + 1e-9)) {
-                    fixed[3 * n + 2] = 1;
-                    prescribed[3 * n + 2] = -delta;
-                    contact.push_back(n);
-                }
-                if (r <= 5.0 * a) surface.push_back(n);
-            }
+    for (TetNodeId n : top) {
+        const glm::dvec3& p = mesh.nodesMm[n];
+        const double r = std::hypot(p.x, p.y);
+        if (r <= a * (1.0 + 1e-9)) {
+            fixed[3 * n + 2] = 1;
+            prescribed[3 * n + 2] = -delta;
+            contact.push_back(n);
+        }
+        if (r <= 5.0 * a) surface.push_back(n);
+    }
     const LinearElasticFem linear(mesh, c.material.smallStrain, fixed);
     const FemSolution lin = linear.solve(prescribed);
     const HyperelasticFem hyper(mesh, c.material, fixed);
@@ -197,27 +208,14 @@ IndentationResult runIndentationCase(const IndentationCase& c) {
     const TetMesh& mesh = block.mesh;
     const ElasticMaterial& small = c.material.smallStrain;
 
-    std::vector<std::uint8_t> fixed(mesh.dofCount(), 0);
-    std::vector<TetNodeId> far;
+    std::vector<TetNodeId> far, top;
+    const std::vector<std::uint8_t> fixed = quarterBlockConstraints(block, far, top);
     SphereContactDef sphere;
     sphere.radiusMm = radius;
     sphere.penaltyNPerMm = c.penaltyFactor * small.youngsModulusNPerMm2 * block.spacingMm;
-    for (std::size_t k = 0; k < block.nz(); ++k)
-        for (std::size_t j = 0; j < block.nx(); ++j)
-            for (std::size_t i = 0; i < block.nx(); ++i) {
-                const TetNodeId n = block.node(i, j, k);
-                const glm::dvec3& p = mesh.nodesMm[n];
-                if (i == 0) fixed[3 * n + 0] = 1;
-                if (j == 0) fixed[3 * n + 1] = 1;
-                if (onFarFace(block, i, j, k)) {
-                    for (int d = 0; d < 3; ++d) fixed[3 * n + std::size_t(d)] = 1;
-                    far.push_back(n);
-                } else if (k == 0 && std::hypot(p.x, p.y) <= 2.0 * aMax) {
-                    sphere.nodes.push_back(n);
-                }
-            }
-    HyperelasticSolverDef solverDef = c.solver;
-    const HyperelasticFem fem(mesh, c.material, fixed, solverDef);
+    for (TetNodeId n : top)
+        if (std::hypot(mesh.nodesMm[n].x, mesh.nodesMm[n].y) <= 2.0 * aMax) sphere.nodes.push_back(n);
+    const HyperelasticFem fem(mesh, c.material, fixed, c.solver);
 
     // The far field's load: the force of the last converged steps, extrapolated as delta^1.5.
     double lastT = 0.0, lastForce = 0.0, loadUsed = 0.0;
