@@ -198,6 +198,19 @@
         <source>%1: not saved, %2 exists and is not a sweep&apos;s description (it would be replaced); choose another name</source>
         <translation>%1: nicht gespeichert, %2 existiert und ist keine Beschreibung einer Messreihe (sie würde ersetzt); wählen Sie einen anderen Namen</translation>
     </message>
+    <message>
+        <source>S&amp;tiffening</source>
+        <translation>&amp;Versteifung</translation>
+    </message>
+    <message>
+        <source>The tissue&apos;s force against depth: the hyperelastic reference beside the linear model and the model with stiffening knots.</source>
+        <translation>Die Kraft des Gewebes über der Tiefe: die hyperelastische Referenz neben dem linearen Modell und dem Modell mit Versteifungsknoten.</translation>
+    </message>
+    <message>
+        <source>%1, %2 site</source>
+        <extracomment>The shape and the site of the organ sweep: &quot;Stomach, thin site&quot;</extracomment>
+        <translation>%1, Stelle „%2“</translation>
+    </message>
 </context>
 <context>
     <name>palpate::DevicePanel</name>
@@ -3803,6 +3816,18 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
         <source>Above its knot the tissue yields this fraction of |m1| per further newton: below 1, it stiffens.</source>
         <translation>Oberhalb seines Knotens gibt das Gewebe je weiteres Newton um diesen Anteil von |m1| nach: unter 1 wird es steifer.</translation>
     </message>
+    <message>
+        <source>Stiffening exponent b:</source>
+        <translation>Versteifungsexponent b:</translation>
+    </message>
+    <message>
+        <source>stiffening exponent</source>
+        <translation>Versteifungsexponent</translation>
+    </message>
+    <message>
+        <source>How fast the tissue stiffens with strain: b of the exponential law of the hyperelastic reference (0..100; 0: neo-Hookean). Calibration turns it into stiffening knots.</source>
+        <translation>Wie schnell das Gewebe mit der Dehnung steifer wird: b des Exponentialgesetzes der hyperelastischen Referenz (0..100; 0: Neo-Hooke). Die Kalibrierung macht daraus Versteifungsknoten.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::Preferences</name>
@@ -4842,6 +4867,91 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
     <message>
         <source>current configuration</source>
         <translation>aktuelle Konfiguration</translation>
+    </message>
+    <message>
+        <source>error vs. the filled organ&apos;s linear FEM at its %1 site: RMS / peak over r ≤ 5a</source>
+        <translation>Fehler gegen die lineare FEM des gefüllten Organs an der Stelle „%1“: RMS / Spitze über r ≤ 5a</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::StiffeningPanel</name>
+    <message>
+        <source>The tissue changed: press Compute for its curve.</source>
+        <translation>Das Gewebe hat sich geändert: Berechnen drücken für seine Kurve.</translation>
+    </message>
+    <message>
+        <source>Cannot compute: %1</source>
+        <translation>Kann nicht berechnen: %1</translation>
+    </message>
+    <message>
+        <source>Pressing the hyperelastic half-space to %1 mm…</source>
+        <translation>Der hyperelastische Halbraum wird %1 mm tief eingedrückt…</translation>
+    </message>
+    <message>
+        <source>The reference could not be computed: %1</source>
+        <translation>Die Referenz konnte nicht berechnet werden: %1</translation>
+    </message>
+    <message>
+        <source>Force against depth: E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)</source>
+        <translation>Kraft über Tiefe: E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)</translation>
+    </message>
+    <message>
+        <source>Press Compute: the hyperelastic reference is solved for this tissue (a few seconds).</source>
+        <translation>Berechnen drücken: die hyperelastische Referenz wird für dieses Gewebe gelöst (einige Sekunden).</translation>
+    </message>
+    <message>
+        <source>Hyperelastic reference (FEM)</source>
+        <translation>Hyperelastische Referenz (FEM)</translation>
+    </message>
+    <message>
+        <source>Linear slope-ring (no knots)</source>
+        <translation>Linearer Slope-Ring (ohne Knoten)</translation>
+    </message>
+    <message numerus="yes">
+        <source>With %n calibrated knot(s)</source>
+        <translation>
+            <numerusform>Mit %n kalibriertem Knoten</numerusform>
+            <numerusform>Mit %n kalibrierten Knoten</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>With the preset&apos;s %n knot(s)</source>
+        <translation>
+            <numerusform>Mit %n Knoten des Presets</numerusform>
+            <numerusform>Mit den %n Knoten des Presets</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Depth of the tissue under the tool (mm)</source>
+        <translation>Tiefe des Gewebes unter dem Werkzeug (mm)</translation>
+    </message>
+    <message>
+        <source>Force (N)</source>
+        <translation>Kraft (N)</translation>
+    </message>
+    <message>
+        <source>At %1 mm the reference is %2 times the linear force: the linear model is %3 % low there, the %4 knots are within %5 % everywhere on the curve%6.</source>
+        <translation>Bei %1 mm ist die Referenz das %2-Fache der linearen Kraft: das lineare Modell liegt dort %3 % zu niedrig, die %4 Knoten liegen überall auf der Kurve innerhalb von %5 %%6.</translation>
+    </message>
+    <message>
+        <source> (the solve stopped early: %1)</source>
+        <translation> (die Lösung brach früh ab: %1)</translation>
+    </message>
+    <message>
+        <source>Press &amp;to:</source>
+        <translation>Ein&amp;drücken bis:</translation>
+    </message>
+    <message>
+        <source>How deep the hyperelastic punch goes (0.1 to 1.5 tool radii).</source>
+        <translation>Wie tief der hyperelastische Stempel eindrückt (0,1 bis 1,5 Werkzeugradien).</translation>
+    </message>
+    <message>
+        <source>&amp;Compute</source>
+        <translation>&amp;Berechnen</translation>
+    </message>
+    <message>
+        <source>Solve the hyperelastic reference for this tissue (a flat punch of the tool&apos;s radius, a few seconds) and fit the stiffening knots to it.</source>
+        <translation>Die hyperelastische Referenz für dieses Gewebe lösen (ein flacher Stempel mit dem Radius des Werkzeugs, einige Sekunden) und die Versteifungsknoten daran anpassen.</translation>
     </message>
 </context>
 <context>

@@ -198,6 +198,19 @@
         <source>%1: not saved, %2 exists and is not a sweep&apos;s description (it would be replaced); choose another name</source>
         <translation>%1: tidak disimpan, %2 wujud dan bukan penerangan sapuan (ia akan diganti); pilih nama lain</translation>
     </message>
+    <message>
+        <source>S&amp;tiffening</source>
+        <translation>Pen&amp;gerasan</translation>
+    </message>
+    <message>
+        <source>The tissue&apos;s force against depth: the hyperelastic reference beside the linear model and the model with stiffening knots.</source>
+        <translation>Daya tisu berbanding kedalaman: rujukan hiperelastik di sebelah model linear dan model dengan simpulan pengerasan.</translation>
+    </message>
+    <message>
+        <source>%1, %2 site</source>
+        <extracomment>The shape and the site of the organ sweep: &quot;Stomach, thin site&quot;</extracomment>
+        <translation>%1, tapak %2</translation>
+    </message>
 </context>
 <context>
     <name>palpate::DevicePanel</name>
@@ -3799,6 +3812,18 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
         <source>Above its knot the tissue yields this fraction of |m1| per further newton: below 1, it stiffens.</source>
         <translation>Melebihi simpulannya tisu mengalah sebanyak pecahan |m1| ini bagi setiap newton tambahan: di bawah 1, ia mengeras.</translation>
     </message>
+    <message>
+        <source>Stiffening exponent b:</source>
+        <translation>Eksponen pengerasan b:</translation>
+    </message>
+    <message>
+        <source>stiffening exponent</source>
+        <translation>eksponen pengerasan</translation>
+    </message>
+    <message>
+        <source>How fast the tissue stiffens with strain: b of the exponential law of the hyperelastic reference (0..100; 0: neo-Hookean). Calibration turns it into stiffening knots.</source>
+        <translation>Seberapa cepat tisu mengeras dengan terikan: b bagi hukum eksponen rujukan hiperelastik (0..100; 0: neo-Hookean). Penentukuran menukarkannya kepada simpulan pengerasan.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::Preferences</name>
@@ -4838,6 +4863,89 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
     <message>
         <source>current configuration</source>
         <translation>konfigurasi semasa</translation>
+    </message>
+    <message>
+        <source>error vs. the filled organ&apos;s linear FEM at its %1 site: RMS / peak over r ≤ 5a</source>
+        <translation>ralat berbanding FEM linear organ yang diisi di tapak %1: RMS / puncak atas r ≤ 5a</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::StiffeningPanel</name>
+    <message>
+        <source>The tissue changed: press Compute for its curve.</source>
+        <translation>Tisu berubah: tekan Kira untuk lengkungnya.</translation>
+    </message>
+    <message>
+        <source>Cannot compute: %1</source>
+        <translation>Tidak dapat mengira: %1</translation>
+    </message>
+    <message>
+        <source>Pressing the hyperelastic half-space to %1 mm…</source>
+        <translation>Menekan separuh ruang hiperelastik hingga %1 mm…</translation>
+    </message>
+    <message>
+        <source>The reference could not be computed: %1</source>
+        <translation>Rujukan tidak dapat dikira: %1</translation>
+    </message>
+    <message>
+        <source>Force against depth: E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)</source>
+        <translation>Daya berbanding kedalaman: E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)</translation>
+    </message>
+    <message>
+        <source>Press Compute: the hyperelastic reference is solved for this tissue (a few seconds).</source>
+        <translation>Tekan Kira: rujukan hiperelastik diselesaikan untuk tisu ini (beberapa saat).</translation>
+    </message>
+    <message>
+        <source>Hyperelastic reference (FEM)</source>
+        <translation>Rujukan hiperelastik (FEM)</translation>
+    </message>
+    <message>
+        <source>Linear slope-ring (no knots)</source>
+        <translation>Slope-ring linear (tanpa simpulan)</translation>
+    </message>
+    <message numerus="yes">
+        <source>With %n calibrated knot(s)</source>
+        <translation>
+            <numerusform>Dengan %n simpulan yang ditentukur</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>With the preset&apos;s %n knot(s)</source>
+        <translation>
+            <numerusform>Dengan %n simpulan praset</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Depth of the tissue under the tool (mm)</source>
+        <translation>Kedalaman tisu di bawah alat (mm)</translation>
+    </message>
+    <message>
+        <source>Force (N)</source>
+        <translation>Daya (N)</translation>
+    </message>
+    <message>
+        <source>At %1 mm the reference is %2 times the linear force: the linear model is %3 % low there, the %4 knots are within %5 % everywhere on the curve%6.</source>
+        <translation>Pada %1 mm rujukan ialah %2 kali daya linear: model linear %3 % terlalu rendah di situ, %4 simpulan berada dalam %5 % di seluruh lengkung%6.</translation>
+    </message>
+    <message>
+        <source> (the solve stopped early: %1)</source>
+        <translation> (penyelesaian berhenti awal: %1)</translation>
+    </message>
+    <message>
+        <source>Press &amp;to:</source>
+        <translation>Tekan &amp;hingga:</translation>
+    </message>
+    <message>
+        <source>How deep the hyperelastic punch goes (0.1 to 1.5 tool radii).</source>
+        <translation>Sedalam mana penebuk hiperelastik menekan (0.1 hingga 1.5 jejari alat).</translation>
+    </message>
+    <message>
+        <source>&amp;Compute</source>
+        <translation>&amp;Kira</translation>
+    </message>
+    <message>
+        <source>Solve the hyperelastic reference for this tissue (a flat punch of the tool&apos;s radius, a few seconds) and fit the stiffening knots to it.</source>
+        <translation>Selesaikan rujukan hiperelastik untuk tisu ini (penebuk rata sebesar jejari alat, beberapa saat) dan padankan simpulan pengerasan kepadanya.</translation>
     </message>
 </context>
 <context>

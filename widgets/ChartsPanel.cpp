@@ -4,6 +4,7 @@
 #include "engine/accuracy/SweepCsv.h"
 #include "app/report/SpeedAccuracyChart.h"
 #include "widgets/FeelPanel.h"
+#include "widgets/StiffeningPanel.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -96,7 +97,9 @@ ChartsPanel::ChartsPanel(QWidget* parent) : QWidget(parent) {
     mShapeLabel->setBuddy(mShapeCombo);
     connect(mShapeCombo, &QComboBox::currentIndexChanged, this, [this](int index) {
         if (index < 0) return;
-        mChart->setShape(GeneratedShape(mShapeCombo->itemData(index).toInt()));
+        const QStringList data = mShapeCombo->itemData(index).toStringList();
+        mChart->setShape(GeneratedShape(data.value(0).toInt()));
+        mChart->setSite(data.value(1).toStdString());
     });
 
     mProgress = new QProgressBar(this);
@@ -141,6 +144,9 @@ ChartsPanel::ChartsPanel(QWidget* parent) : QWidget(parent) {
     mTabs->setDocumentMode(true);
     mTabs->addTab(sweep, QString());
     mTabs->addTab(mFeelPanel, QString());
+    mStiffeningPanel = new StiffeningPanel(this);
+    mStiffeningPanel->setObjectName(QStringLiteral("stiffeningSection"));
+    mTabs->addTab(mStiffeningPanel, QString());
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(mTabs);
@@ -182,8 +188,13 @@ void ChartsPanel::retranslateUi() {
     mTabs->setTabText(1, tr("&Feel"));
     mTabs->setTabToolTip(1, tr("Every model's largest force step while sliding at constant depth, against its tick cost "
                                "(palpate-cli bench feel)."));
-    for (int i = 0; i < mShapeCombo->count(); ++i)
-        mShapeCombo->setItemText(i, SpeedAccuracyChart::shapeTitle(GeneratedShape(mShapeCombo->itemData(i).toInt())));
+    mTabs->setTabText(2, tr("S&tiffening"));
+    mTabs->setTabToolTip(2, tr("The tissue's force against depth: the hyperelastic reference beside the linear model and "
+                               "the model with stiffening knots."));
+    for (int i = 0; i < mShapeCombo->count(); ++i) {
+        const QStringList data = mShapeCombo->itemData(i).toStringList();
+        mShapeCombo->setItemText(i, shapeItemText(GeneratedShape(data.value(0).toInt()), data.value(1).toStdString()));
+    }
     updateHighlight();
 }
 
@@ -218,6 +229,7 @@ void ChartsPanel::setCurrentConfiguration(const TissuePreset& applied, const Too
     mApplied = applied;
     mContact = contact;
     mMeshVertices = meshVertices;
+    mStiffeningPanel->setTissue(contact, applied.params);
     updateHighlight();
 }
 
@@ -342,12 +354,21 @@ void ChartsPanel::showPoints(std::vector<SweepPoint> points, const std::optional
     updateButtons();
 }
 
+QString ChartsPanel::shapeItemText(GeneratedShape shape, const std::string& site) {
+    if (site.empty()) return SpeedAccuracyChart::shapeTitle(shape);
+    //: The shape and the site of the organ sweep: "Stomach, thin site"
+    return tr("%1, %2 site").arg(SpeedAccuracyChart::shapeTitle(shape), QString::fromStdString(site));
+}
+
 void ChartsPanel::updateShapeCombo() {
     const QSignalBlocker block(mShapeCombo);
     mShapeCombo->clear();
+    // One entry per shape, and per site of the organ sweep (each has its own front).
     for (GeneratedShape shape : mChart->shapesPresent())
-        mShapeCombo->addItem(SpeedAccuracyChart::shapeTitle(shape), int(shape));
-    const int shown = mShapeCombo->findData(int(mChart->shownShape()));
+        for (const std::string& site : mChart->sitesPresent(shape))
+            mShapeCombo->addItem(shapeItemText(shape, site), QStringList{QString::number(int(shape)), QString::fromStdString(site)});
+    const int shown = mShapeCombo->findData(
+        QStringList{QString::number(int(mChart->shownShape())), QString::fromStdString(mChart->shownSite())});
     mShapeCombo->setCurrentIndex(shown);
     mShapeCombo->setEnabled(mShapeCombo->count() > 1);
 }

@@ -4,7 +4,8 @@
 // sweep (docs/bench/sweep.csv) is shown without measuring again. Measuring a sweep takes minutes;
 // the window stays responsive and the haptic loop is not touched (the sweep builds its own models).
 // On a second tab, the feel chart (FeelPanel: force step against tick cost, from the feel bench's
-// CSV, docs/bench/feel.csv).
+// CSV, docs/bench/feel.csv); on a third, the stiffening chart (StiffeningPanel: the hyperelastic
+// reference's force against depth beside the linear and the knotted model).
 
 #include "engine/models/slopering/SlopeRingMethod.h"
 #include "engine/scene/TissuePreset.h"
@@ -30,6 +31,7 @@ namespace palpate {
 
 class FeelPanel;
 class SpeedAccuracyChart;
+class StiffeningPanel;
 
 class ChartsPanel final : public QWidget {
     Q_OBJECT
@@ -41,7 +43,9 @@ public:
     SpeedAccuracyChart* chart() const { return mChart; }
     /// The feel chart on the second tab (its own CSV and default file).
     FeelPanel* feelPanel() const { return mFeelPanel; }
-    /// The two tabs: the sweep's chart (0) and the feel chart (1).
+    /// The stiffening chart on the third tab (the tissue in use, solved when asked).
+    StiffeningPanel* stiffeningPanel() const { return mStiffeningPanel; }
+    /// The three tabs: the sweep's chart (0), the feel chart (1), the stiffening chart (2).
     QTabWidget* tabs() const { return mTabs; }
     const std::vector<SweepPoint>& points() const;
 
@@ -93,6 +97,8 @@ private:
     void retranslateUi();
     /// "1 point", "12 points" (no plural translation is loaded for English).
     static QString pointsText(int count);
+    /// "Stomach", or "Stomach, thin site" for a point of the organ sweep.
+    static QString shapeItemText(GeneratedShape shape, const std::string& site);
     void showPoints(std::vector<SweepPoint> points, const std::optional<ToolContact>& contact);
     void updateShapeCombo();
     void updateHighlight();
@@ -103,6 +109,7 @@ private:
 
     SpeedAccuracyChart* mChart = nullptr;
     FeelPanel* mFeelPanel = nullptr;
+    StiffeningPanel* mStiffeningPanel = nullptr;
     QTabWidget* mTabs = nullptr;
     QPushButton* mRunButton = nullptr;
     QCheckBox* mQuickCheck = nullptr;

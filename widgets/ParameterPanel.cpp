@@ -749,11 +749,19 @@ bool ParameterPanel::tissueFieldsShow(const TissueProperties& tissue) const {
 
 std::optional<TissueProperties> ParameterPanel::tissueFromFields() const {
     if (mShown.tissue) {
-        if (tissueFieldsShow(*mShown.tissue)) return tissueInFields(mShown.tissue->source);  // its source still holds
+        if (tissueFieldsShow(*mShown.tissue)) {
+            TissueProperties same = tissueInFields(mShown.tissue->source);  // its sources still hold
+            same.stiffeningSource = mShown.tissue->stiffeningSource;
+            return same;
+        }
     } else if (tissueFieldsShow(TissueProperties{})) {
         return std::nullopt;  // the defaults of a preset without a tissue: nothing to record
     }
-    return tissueInFields(tr("entered in the Parameters panel").toStdString());
+    TissueProperties edited = tissueInFields(tr("entered in the Parameters panel").toStdString());
+    // The stiffening's source holds while its exponent is the one it was given for.
+    if (mShown.tissue && edited.stiffeningExponent == mShown.tissue->stiffeningExponent)
+        edited.stiffeningSource = mShown.tissue->stiffeningSource;
+    return edited;
 }
 
 ToolContact ParameterPanel::toolContact() const {
@@ -761,6 +769,7 @@ ToolContact ParameterPanel::toolContact() const {
     contact.material.youngsModulusNPerMm2 = mYoungsSpin->value() * 1e-3;  // 1 kPa = 0.001 N/mm^2
     contact.material.poissonRatio = mPoissonSpin->value();
     contact.toolRadiusMm = mToolRadiusSpin->value();
+    contact.stiffeningExponent = tissueInFields({}).stiffeningExponent;
     return contact;
 }
 
@@ -770,6 +779,7 @@ ToolContact ParameterPanel::toolContactOf(const TissuePreset& preset) {
     contact.material.youngsModulusNPerMm2 = tissue.youngsModulusKPa * 1e-3;  // 1 kPa = 0.001 N/mm^2
     contact.material.poissonRatio = tissue.poissonRatio;
     contact.toolRadiusMm = tissue.toolRadiusMm;
+    contact.stiffeningExponent = tissue.stiffeningExponent;
     return contact;
 }
 

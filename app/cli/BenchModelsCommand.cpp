@@ -130,15 +130,7 @@ int benchModelsCommand(const std::vector<std::string>& words) {
         const TissueMesh& mesh = *generated.mesh;
         const Octree octree(mesh, OctreeDef{});
         const auto path = makePressAndStrokePath(mesh);
-        // The same phases and stroke speed, 10x shorter.
-        ToolPathDef shortDef;
-        shortDef.approachTicks /= 10;
-        shortDef.pressTicks /= 10;
-        shortDef.holdTicks /= 10;
-        shortDef.strokeTicks /= 10;
-        shortDef.releaseTicks /= 10;
-        shortDef.strokeLengthMm /= 10.0;
-        const auto shortPath = makePressAndStrokePath(mesh, shortDef);
+        const auto shortPath = makePressAndStrokePath(mesh, shortenedTenTimes());
         const bool measureError = size == 1442 || size == 8664;
         for (const std::string& name : models) {
             ModelRow row;

@@ -11,19 +11,22 @@
 #include "engine/models/slopering/CoherentSlopeRing.h"
 #include "engine/scene/TissuePreset.h"
 #include "engine/accuracy/ModelError.h"
+#include "engine/accuracy/StiffeningCalibration.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <iostream>
 
 namespace palpate::cli {
 
 int calibrateCommand(const std::vector<std::string>& words) {
-    std::vector<std::string> options{"mesh", kMeshUnitOption, "rings", "vertex", "out", "name", "description", "source"};
+    std::vector<std::string> options{"mesh", kMeshUnitOption, "rings", "vertex", "out", "name", "description", "source",
+                                     "stiffening-source", "nonlinear-depth"};
     for (const std::string& o : toolContactOptionNames()) options.push_back(o);
-    const Args args(words, {"json", "fem"}, options);
+    const Args args(words, {"json", "fem", "nonlinear"}, options);
     if (!args.ok()) {
         std::cerr << "palpate-cli calibrate: " << args.error() << "\n";
         return 2;
@@ -101,7 +104,42 @@ int calibrateCommand(const std::vector<std::string>& words) {
                                             choice.contact.toolRadiusMm)
             : NAN;
 
-    const SlopeRingParams& p = calibration.params;
+    // --nonlinear: stiffening knots from the hyperelastic punch (docs/calibration.md, "Knots from the
+    // hyperelastic reference"), fitted to this calibration's |m1|.
+    std::optional<StiffeningCalibration> stiffening;
+    SlopeCalibration calibrated = calibration;
+    if (args.flag("nonlinear")) {
+        StiffeningCalibrationDef def;
+        def.material = hyperelasticMaterialOf(choice.contact);
+        def.toolRadiusMm = choice.contact.toolRadiusMm;
+        if (const auto text = args.option("nonlinear-depth")) {
+            const auto mm = parseNumber(*text);
+            if (!mm || !(*mm > 0.0 && *mm < 2.0 * def.toolRadiusMm)) {
+                std::cerr << "palpate-cli calibrate: --nonlinear-depth: '" << *text << "' is not a depth in (0, "
+                          << 2.0 * def.toolRadiusMm << ") mm (twice the tool radius)\n";
+                return 2;
+            }
+            setStiffeningDepths(def, *mm / def.toolRadiusMm);
+        }
+        std::cerr << "calibrate: hyperelastic punch (" << hyperelasticLawName(def.material.law) << ", b = "
+                  << def.material.stiffeningExponent << ") to " << def.depthsOverRadius.back() * def.toolRadiusMm
+                  << " mm ...\n";
+        try {
+            const StiffeningCalibration reference = calibrateStiffening(def);
+            StiffeningCalibration knots = knotsFromCurve(reference.curve, calibrated.params.slopeMagnitudeMmPerN[0]);
+            knots.completed = reference.completed;
+            knots.failure = reference.failure;
+            knots.seconds = reference.seconds;
+            knots.freeDofs = reference.freeDofs;
+            knots.notes.insert(knots.notes.begin(), reference.notes.begin(), reference.notes.end());
+            applyStiffening(knots, calibrated.params);
+            stiffening = std::move(knots);
+        } catch (const std::exception& e) {
+            std::cerr << "palpate-cli calibrate: --nonlinear: " << e.what() << "\n";
+            return 1;
+        }
+    }
+    const SlopeRingParams& p = calibrated.params;
     if (args.flag("json")) {
         nlohmann::ordered_json j;
         j["mesh"] = meshPath;
@@ -119,6 +157,22 @@ int calibrateCommand(const std::vector<std::string>& words) {
         if (fem) j["displacement_error_vs_fem"] = femError;
         j["force_error"] = error.forceError;
         j["notes"] = calibration.notes;
+        if (stiffening) {
+            nlohmann::ordered_json st;
+            st["law"] = hyperelasticLawName(hyperelasticMaterialOf(choice.contact).law);
+            st["stiffening_exponent"] = choice.contact.stiffeningExponent;
+            st["knots"] = stiffening->knots;
+            st["force_n"] = stiffening->knotForceN;
+            st["compliance"] = stiffening->knotCompliance;
+            st["worst_knot_error_pct"] = 100.0 * stiffening->worstKnotErrorFraction;
+            st["completed"] = stiffening->completed;
+            st["seconds"] = stiffening->seconds;
+            st["curve"] = nlohmann::ordered_json::array();
+            for (const auto& c : stiffening->curve)
+                st["curve"].push_back({{"depth_mm", c.depthMm}, {"force_n", c.forceN}, {"ratio", c.ratio}, {"knot", c.knot}});
+            st["notes"] = stiffening->notes;
+            j["stiffening"] = st;
+        }
         std::cout << j.dump(2) << "\n";
     } else {
         std::cout << "mesh " << meshPath << ", vertex " << touched << "; E = "
@@ -136,6 +190,18 @@ int calibrateCommand(const std::vector<std::string>& words) {
         if (fem)
             std::cout << "error against this mesh's FEM (shape at equal indentation): displacement " << femError << "\n";
         for (const std::string& note : calibration.notes) std::cout << "note: " << note << "\n";
+        if (stiffening) {
+            std::cout << "stiffening (" << hyperelasticLawName(hyperelasticMaterialOf(choice.contact).law) << ", b = "
+                      << choice.contact.stiffeningExponent << "): depth mm, reference force N, ratio to linear, "
+                      << "knot model force N\n";
+            for (const auto& c : stiffening->curve)
+                std::cout << std::setw(9) << std::setprecision(3) << c.depthMm << std::setw(12) << std::setprecision(5)
+                          << c.forceN << std::setw(10) << std::setprecision(4) << c.ratio << std::setw(12)
+                          << std::setprecision(5) << knotForceAtDepthN(p, c.depthMm) << (c.knot ? "  (fitted)" : "") << "\n";
+            std::cout << stiffening->knots << " knots; worst force error of the knots against the reference "
+                      << std::setprecision(3) << 100.0 * stiffening->worstKnotErrorFraction << " %\n";
+            for (const std::string& note : stiffening->notes) std::cout << "note: " << note << "\n";
+        }
     }
     if (const auto out = args.option("out")) {
         preset.params = p;
@@ -147,6 +213,13 @@ int calibrateCommand(const std::vector<std::string>& words) {
         tissue.poissonRatio = choice.contact.material.poissonRatio;
         tissue.toolRadiusMm = choice.contact.toolRadiusMm;
         tissue.source = args.option("source").value_or(choice.source);
+        tissue.stiffeningExponent = choice.contact.stiffeningExponent;
+        if (preset.tissue) tissue.stiffeningSource = preset.tissue->stiffeningSource;
+        if (const auto s = args.option("stiffening-source")) tissue.stiffeningSource = *s;
+        if (preset.tissue) {
+            tissue.staticFriction = preset.tissue->staticFriction;
+            tissue.dynamicFriction = preset.tissue->dynamicFriction;
+        }
         preset.tissue = tissue;
         if (const std::string e = saveTissuePreset(preset, *out); !e.empty()) {
             std::cerr << "palpate-cli calibrate: " << e << "\n";

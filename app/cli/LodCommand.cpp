@@ -10,7 +10,9 @@
 #include "engine/lod/LevelCache.h"
 #include "engine/lod/LodMeasure.h"
 #include "engine/lod/LodPlanner.h"
+#include "engine/exercise/ExerciseDemands.h"
 #include "engine/exercise/ExerciseFile.h"
+#include "engine/lod/StiffeningChoice.h"
 
 #include <nlohmann/json.hpp>
 
@@ -201,12 +203,14 @@ int planCommand(const Args& args) {
         std::cerr << me << "--mesh-unit goes with --mesh (the exercise's \"mesh_unit\" sets its mesh's unit)\n";
         return 2;
     }
+    std::optional<Exercise> exercise;
     if (const auto path = args.option("exercise")) {
         const ExerciseLoadResult ex = loadExercise(*path);
         if (!ex.exercise) {
             std::cerr << me << ex.error() << "\n";
             return 2;
         }
+        exercise = ex.exercise;
         if (ex.exercise->needs) {
             needs = ex.exercise->needs;
             needsSource = *path;
@@ -271,12 +275,7 @@ int planCommand(const Args& args) {
     if (quick) {
         def.ringCounts = {1, 2, 3};
         def.timing = {1, 1.0};
-        def.path.approachTicks /= 10;
-        def.path.pressTicks /= 10;
-        def.path.holdTicks /= 10;
-        def.path.strokeTicks /= 10;
-        def.path.releaseTicks /= 10;
-        def.path.strokeLengthMm /= 10.0;
+        def.path = shortenedTenTimes(def.path);
     }
     if (const auto text = args.option("rings")) {
         def.ringCounts.clear();
@@ -317,6 +316,53 @@ int planCommand(const Args& args) {
         return 1;
     }
 
+    // Linear or stiffening tissue at the scene's depths (docs/lod.md, "Linear or nonlinear"): the
+    // hyperelastic punch of this tissue, its knots for the plan's |m1|, judged at the exercise's
+    // presses (or the plan's own press without an exercise).
+    StiffeningCalibrationDef stiffDef;
+    stiffDef.material = hyperelasticMaterialOf(choice.contact);
+    stiffDef.toolRadiusMm = choice.contact.toolRadiusMm;
+    if (quick) stiffDef.aOverH = 2;
+    SlopeRingParams knotted;
+    knotted.slopeMagnitudeMmPerN[0] = punchFirstSlopeMmPerN(choice.contact);
+    const std::vector<ExerciseDemand> demands = exercise ? exerciseDemands(*exercise) : std::vector<ExerciseDemand>{};
+    // As deep as the scene presses (the linear depth bounds a stiffening one), within what the
+    // reference can solve (1.5 a) and at least 0.6 a.
+    double deepestMm = def.press.toolDepthMm;
+    for (const ExerciseDemand& d : demands)
+        deepestMm = std::max(deepestMm, d.depthMm > 0.0 ? d.depthMm : d.forceN * knotted.slopeMagnitudeMmPerN[0]);
+    setStiffeningDepths(stiffDef, std::clamp(1.05 * deepestMm / stiffDef.toolRadiusMm, 0.6, 1.5));
+    std::cerr << "plan: hyperelastic punch (" << hyperelasticLawName(stiffDef.material.law) << ", b = "
+              << stiffDef.material.stiffeningExponent << ") to " << stiffDef.depthsOverRadius.back() * stiffDef.toolRadiusMm
+              << " mm for linear or stiffening tissue\n";
+    const StiffeningCalibration reference = calibrateStiffening(stiffDef);
+    const StiffeningCalibration knots = knotsFromCurve(reference.curve, knotted.slopeMagnitudeMmPerN[0]);
+    applyStiffening(knots, knotted);
+    std::vector<SceneDepth> depths;
+    if (exercise) {
+        for (const ExerciseDemand& d : demands)
+            depths.push_back({d.what, d.depthMm > 0.0 ? d.depthMm
+                                                      : curveDepthAtForceMm(knots.curve, d.forceN, knotted.slopeMagnitudeMmPerN[0])});
+    } else {
+        depths.push_back({"the plan's press", def.press.toolDepthMm});
+    }
+    const StiffeningChoice stiffening = chooseStiffening(knots, knotted, depths, *needs);
+    const bool stiffeningOk = stiffening.error.empty() && stiffening.feasible;
+    const auto stiffeningJson = [&] {
+        Json d = Json::array();
+        for (const SceneDepth& sd : depths) d.push_back({{"what", sd.what}, {"depth_mm", sd.depthMm}});
+        return Json{{"law", std::string(hyperelasticLawName(stiffDef.material.law))},
+                    {"stiffening_exponent", stiffDef.material.stiffeningExponent},
+                    {"nonlinear", stiffening.nonlinear},
+                    {"knots", stiffening.knots},
+                    {"feasible", stiffening.feasible},
+                    {"linear_error", stiffening.linearErrorFraction},
+                    {"nonlinear_error", stiffening.nonlinearErrorFraction},
+                    {"depths", d},
+                    {"reference_completed", reference.completed},
+                    {"reason", stiffening.error.empty() ? stiffening.reason : stiffening.error}};
+    };
+
     if (args.flag("json")) {
         Json j{{"mesh", *meshPath},
                {"needs", {{"max_error", needs->maxErrorFraction}, {"budget_us", needs->budgetUs}, {"source", needsSource}}},
@@ -324,6 +370,7 @@ int planCommand(const Args& args) {
                {"chosen", plan.chosen ? candidateJson(measured.candidates[*plan.chosen], *needs) : Json(nullptr)},
                {"closest", plan.closest ? candidateJson(measured.candidates[*plan.closest], *needs) : Json(nullptr)},
                {"reason", plan.reason},
+               {"stiffening", stiffeningJson()},
                {"levels_from_cache", levels.fromCache},
                {"candidates", Json::array()}};
         for (const LodCandidate& c : measured.candidates) j["candidates"].push_back(candidateJson(c, *needs));
@@ -350,9 +397,14 @@ int planCommand(const Args& args) {
                       << c.levelErrorFraction << std::setprecision(3) << std::setw(11) << c.tickUs << "  " << verdict << "\n";
         }
         std::cout << plan.reason << "\n";
+        std::cout << (stiffening.error.empty() ? stiffening.reason : stiffening.error) << "\n";
     }
     if (!plan.feasible) {
         std::cerr << me << "nothing fits: " << plan.reason << "\n";
+        return 1;
+    }
+    if (!stiffeningOk) {
+        std::cerr << me << "nothing fits: " << (stiffening.error.empty() ? stiffening.reason : stiffening.error) << "\n";
         return 1;
     }
     return 0;

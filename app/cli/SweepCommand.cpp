@@ -4,6 +4,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/ToolContactOptions.h"
 #include "engine/accuracy/AccuracySweep.h"
+#include "engine/accuracy/OrganSweep.h"
 
 #ifdef PALPATE_HAVE_CHARTS
 #include "app/report/SweepChartImage.h"
@@ -29,14 +30,41 @@ void printTable(std::ostream& out, const SweepResult& result) {
             << std::setw(11) << p.error.forceError << std::setw(8) << (p.pareto ? "*" : "") << "\n";
 }
 
+void printOrganTable(std::ostream& out, const OrganSweepResult& result) {
+    for (const OrganSiteSummary& s : result.sites)
+        out << "site " << s.site.name << " (" << s.vertices << " vertices, vertex " << s.site.vertex << "): " << s.site.reason
+            << "; pressed to " << std::setprecision(3) << s.depthMm << " mm: linear FEM " << s.linearForceN
+            << " N, hyperelastic " << s.hyperelasticForceN << " N at " << s.hyperelasticDepthMm << " mm"
+            << (s.hyperelasticCompleted ? "" : " (stopped: " + s.failure + ")") << "\n";
+    out << std::left << std::setw(9) << "vertices" << std::setw(8) << "site" << std::setw(30) << "model" << std::right
+        << std::setw(10) << "tick us" << std::setw(11) << "displ lin" << std::setw(11) << "force lin" << std::setw(12)
+        << "displ hyper" << std::setw(12) << "force hyper" << std::setw(8) << "pareto" << "\n";
+    for (const SweepPoint& p : result.sweep.points)
+        out << std::left << std::setw(9) << p.vertices << std::setw(8) << p.site << std::setw(30) << p.series << std::right
+            << std::fixed << std::setprecision(4) << std::setw(10) << p.tickUs << std::setprecision(3) << std::setw(11)
+            << p.error.displacementError << std::setw(11) << p.error.forceError << std::setw(12)
+            << p.hyperelasticDisplacementError << std::setw(12) << p.hyperelasticForceError << std::setw(8)
+            << (p.pareto ? "*" : "") << "\n";
+}
+
 }  // namespace
 
 int sweepCommand(const std::vector<std::string>& words) {
-    std::vector<std::string> options{"csv", "png", "shapes", "sizes", "max-rings", "repeats"};
+    std::vector<std::string> options{"csv", "png", "shapes", "sizes", "max-rings", "repeats", "reference"};
     for (const std::string& o : toolContactOptionNames()) options.push_back(o);
     const Args args(words, {"json", "quick", "no-paper", "no-others"}, options);
     if (!args.ok()) {
         std::cerr << "palpate-cli sweep: " << args.error() << "\n";
+        return 2;
+    }
+    const std::string reference = args.option("reference").value_or("punch");
+    if (reference != "punch" && reference != "fem") {
+        std::cerr << "palpate-cli sweep: --reference: '" << reference << "' is not a reference (punch, fem)\n";
+        return 2;
+    }
+    const bool organ = reference == "fem";
+    if (organ && args.option("shapes")) {
+        std::cerr << "palpate-cli sweep: --shapes goes with --reference punch (the FEM reference is the stomach's)\n";
         return 2;
     }
     const ToolContactChoice choice = toolContactFromArgs(args);
@@ -48,9 +76,10 @@ int sweepCommand(const std::vector<std::string>& words) {
     def.contact = choice.contact;
     def.paperMethods = !args.flag("no-paper");
     def.otherModels = !args.flag("no-others");
+    if (organ) def.sizes = {1442, 3970};
     if (args.flag("quick")) {
         def.shapes = {GeneratedShape::Sphere};
-        def.sizes = {1442, 3970};
+        def.sizes = organ ? std::vector<std::size_t>{1442} : std::vector<std::size_t>{1442, 3970};
         def.maxRings = 4;
         def.timingRepeats = 1;
         def.minMeasureMs = 2.0;
@@ -105,8 +134,24 @@ int sweepCommand(const std::vector<std::string>& words) {
     };
     std::cerr << "sweep: E = " << def.contact.material.youngsModulusNPerMm2 * 1000.0 << " kPa, nu = "
               << def.contact.material.poissonRatio << ", tool radius " << def.contact.toolRadiusMm << " mm ("
-              << choice.source << "); reference: flat punch on a half-space\n";
-    const SweepResult result = runSweep(def);
+              << choice.source << "); reference: "
+              << (organ ? "the FEM of the filled stomach (linear and " +
+                              std::string(hyperelasticLawName(hyperelasticMaterialOf(def.contact).law)) + ")"
+                        : std::string("flat punch on a half-space"))
+              << "\n";
+    OrganSweepDef organDef;
+    OrganSweepResult organResult;
+    if (organ) {
+        organDef.sweep = def;
+        organDef.sizes = def.sizes;
+        try {
+            organResult = runOrganSweep(organDef);
+        } catch (const std::exception& e) {
+            std::cerr << "palpate-cli sweep: " << e.what() << "\n";
+            return 1;
+        }
+    }
+    const SweepResult result = organ ? organResult.sweep : runSweep(def);
 
     if (const auto csv = args.option("csv")) {
         std::ofstream out(*csv);
@@ -125,8 +170,14 @@ int sweepCommand(const std::vector<std::string>& words) {
         }
     }
 #endif
-    if (json) std::cout << sweepToJson(result, def);
-    else printTable(std::cout, result);
+    if (organ) {
+        if (json) std::cout << organSweepToJson(organResult, organDef);
+        else printOrganTable(std::cout, organResult);
+    } else if (json) {
+        std::cout << sweepToJson(result, def);
+    } else {
+        printTable(std::cout, result);
+    }
     return 0;
 }
 

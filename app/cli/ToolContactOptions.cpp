@@ -7,7 +7,7 @@
 
 namespace palpate::cli {
 
-std::vector<std::string> toolContactOptionNames() { return {"preset", "youngs-kpa", "poisson", "tool-radius"}; }
+std::vector<std::string> toolContactOptionNames() { return {"preset", "youngs-kpa", "poisson", "tool-radius", "stiffening-exponent"}; }
 
 ToolContactChoice toolContactFromArgs(const Args& args) {
     ToolContactChoice c;
@@ -28,6 +28,7 @@ ToolContactChoice toolContactFromArgs(const Args& args) {
         const TissueProperties& t = *loaded.preset->tissue;
         c.contact.material = {t.youngsModulusKPa * 1e-3, t.poissonRatio};
         c.contact.toolRadiusMm = t.toolRadiusMm;
+        c.contact.stiffeningExponent = t.stiffeningExponent;
         c.source = t.source;
     }
     struct Override {
@@ -37,7 +38,8 @@ ToolContactChoice toolContactFromArgs(const Args& args) {
     };
     const Override overrides[] = {{"youngs-kpa", &c.contact.material.youngsModulusNPerMm2, 1e-3},
                                   {"poisson", &c.contact.material.poissonRatio, 1.0},
-                                  {"tool-radius", &c.contact.toolRadiusMm, 1.0}};
+                                  {"tool-radius", &c.contact.toolRadiusMm, 1.0},
+                                  {"stiffening-exponent", &c.contact.stiffeningExponent, 1.0}};
     for (const Override& o : overrides) {
         if (const auto text = args.option(o.name)) {
             const auto value = parseNumber(*text);

@@ -1,6 +1,7 @@
 #pragma once
 // The tissue and tool of the accuracy commands: --preset FILE (its "tissue" section) and/or
-// --youngs-kpa E --poisson NU --tool-radius MM (these override the preset's values).
+// --youngs-kpa E --poisson NU --tool-radius MM --stiffening-exponent B (these override the preset's
+// values; B is the hyperelastic reference's exponential-law b, 0 for neo-Hookean).
 
 #include "app/cli/Args.h"
 #include "engine/accuracy/Calibration.h"

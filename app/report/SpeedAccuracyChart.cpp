@@ -112,6 +112,24 @@ std::vector<GeneratedShape> SpeedAccuracyChart::shapesPresent() const {
     return shapes;
 }
 
+std::vector<std::string> SpeedAccuracyChart::sitesPresent(GeneratedShape shape) const {
+    std::vector<std::string> sites;
+    for (const SweepPoint& p : mPoints)
+        if (p.shape == shape && std::find(sites.begin(), sites.end(), p.site) == sites.end()) sites.push_back(p.site);
+    return sites;
+}
+
+void SpeedAccuracyChart::setSite(const std::string& site) {
+    mSite = site;
+    rebuild();
+}
+
+std::string SpeedAccuracyChart::shownSite() const {
+    const auto present = sitesPresent(shownShape());
+    if (std::find(present.begin(), present.end(), mSite) != present.end()) return mSite;
+    return present.empty() ? std::string() : present.front();
+}
+
 GeneratedShape SpeedAccuracyChart::shownShape() const {
     const auto present = shapesPresent();
     if (mShape && (present.empty() || std::find(present.begin(), present.end(), *mShape) != present.end()))
@@ -240,14 +258,19 @@ QString SpeedAccuracyChart::titleText() const {
     if (mPoints.empty()) return mEmptyHint;
     // Rich text: the shape in bold, then the tissue and what the error is measured against, smaller
     // and on lines short enough for a dock.
-    QStringList lines{tr("error vs. the flat punch: RMS / peak over r ≤ 5a")};
+    const std::string site = shownSite();
+    QStringList lines{site.empty() ? tr("error vs. the flat punch: RMS / peak over r ≤ 5a")
+                                   : tr("error vs. the filled organ's linear FEM at its %1 site: RMS / peak over r ≤ 5a")
+                                         .arg(QString::fromStdString(site))};
     if (mContact)
         lines.prepend(tr("E = %1 kPa, ν = %2, tool radius a = %3 mm")
                           .arg(compact(mContact->material.youngsModulusNPerMm2 * 1000.0),
                                compact(mContact->material.poissonRatio), compact(mContact->toolRadiusMm)));
     for (QString& line : lines) line = line.toHtmlEscaped();
     return QStringLiteral("<b>%1</b><br><span style=\"font-size:small; font-weight:normal\">%2</span>")
-        .arg(tr("%1: speed against accuracy").arg(shapeTitle(shownShape())).toHtmlEscaped(),
+        .arg(tr("%1: speed against accuracy").arg(shapeTitle(shownShape()) +
+                                                       (site.empty() ? QString() : QStringLiteral(" (%1)").arg(QString::fromStdString(site))))
+                 .toHtmlEscaped(),
              lines.join(QStringLiteral("<br>")));
 }
 
@@ -294,12 +317,13 @@ void SpeedAccuracyChart::rebuild() {
     applyFonts();
 
     const GeneratedShape shape = shownShape();
-    // The shown shape's points by series, each series in order of resolution.
+    const std::string site = shownSite();
+    // The shown shape's (and site's) points by series, each series in order of resolution.
     std::map<std::pair<int, std::string>, std::vector<const SweepPoint*>> bySeries;
     std::vector<const SweepPoint*> pareto;
     std::vector<const SweepPoint*> highlighted;
     for (const SweepPoint& p : mPoints) {
-        if (p.shape != shape || !(p.tickUs > 0.0)) continue;
+        if (p.shape != shape || p.site != site || !(p.tickUs > 0.0) || !std::isfinite(p.error.displacementError)) continue;
         bySeries[{seriesRank(p), p.series}].push_back(&p);
         if (p.pareto) pareto.push_back(&p);
         if (!mHighlightSeries.empty() && p.series == mHighlightSeries && p.vertices == mHighlightVertices)

@@ -40,6 +40,12 @@ public:
     GeneratedShape shownShape() const;
     /// The shapes the points have, in order of first appearance.
     std::vector<GeneratedShape> shapesPresent() const;
+    /// The organ sweep's sites (docs/accuracy.md, "The organ's own shape") of `shape`, in order of
+    /// first appearance; a punch sweep has one, "".
+    std::vector<std::string> sitesPresent(GeneratedShape shape) const;
+    /// Which site's points to draw (each site has its own front); one not present: the first.
+    void setSite(const std::string& site);
+    std::string shownSite() const;
     /// Marks the points of `series` measured on `vertices` vertices (the configuration in use) with
     /// a larger outlined marker. An empty series clears the mark.
     void setHighlight(const std::string& series, std::size_t vertices);
@@ -85,6 +91,7 @@ private:
     std::vector<SweepPoint> mPoints;
     std::optional<ToolContact> mContact;
     std::optional<GeneratedShape> mShape;
+    std::string mSite;
     std::string mHighlightSeries;
     std::size_t mHighlightVertices = 0;
     QString mEmptyHint;

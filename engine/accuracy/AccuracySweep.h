@@ -8,9 +8,14 @@
 #include "engine/models/slopering/SlopeRingMethod.h"
 #include "engine/accuracy/Calibration.h"
 #include "engine/accuracy/ModelError.h"
+#include "engine/accuracy/StiffeningCalibration.h"
+#include "engine/core/Octree.h"
+#include "engine/models/ModelRegistry.h"
 
 #include <atomic>
+#include <limits>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,6 +38,9 @@ struct SweepDef {
     int timingRepeats = 3;
     double minMeasureMs = 10.0;
     SlopeRingParams base;                              ///< damping, k_c, mass...; slopes and k are calibrated
+    /// The knots the stiffening series get (engine/accuracy/StiffeningCalibration.h); the organ
+    /// sweep fills them from the hyperelastic half-space punch.
+    StiffeningCalibration stiffening;
     /// Called after each point with the fraction done and a line saying what was measured.
     std::function<void(double fraction, const std::string& line)> progress;
     /// Set (from any thread) to stop early; the points measured so far are returned.
@@ -46,8 +54,13 @@ struct SweepPoint {
     GeneratedShape shape = GeneratedShape::Sphere;
     std::size_t vertices = 0;
     double tickUs = 0.0;
-    ModelError error;
-    bool pareto = false;  ///< on the Pareto front of its shape (no point is both faster and more accurate)
+    ModelError error;     ///< against the sweep's reference: the punch, or the organ's linear FEM
+    bool pareto = false;  ///< on the Pareto front of its shape and site (no point is both faster and more accurate)
+    /// The organ sweep only (docs/accuracy.md, "The organ's own shape"): the site pressed and the
+    /// error against the hyperelastic FEM there (NaN when the model went deeper than it reached).
+    std::string site;
+    double hyperelasticDisplacementError = std::numeric_limits<double>::quiet_NaN();
+    double hyperelasticForceError = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct SweepResult {
@@ -61,6 +74,28 @@ std::string sweepSeriesName(SlopeRingMethod method, int rings);
 
 /// Runs the sweep. Throws std::invalid_argument for a bad definition (naming the field).
 SweepResult runSweep(const SweepDef& def);
+
+/// One configuration the sweep measures (the organ sweep adds stiffening ones).
+struct SweepModelDef {
+    ModelKind kind;
+    SlopeRingMethod method;
+    int rings;
+    bool stiffening = false;  ///< the slope-ring model with def.stiffening's knots
+};
+std::vector<SweepModelDef> sweepConfigs(const SweepDef& def);
+
+/// The configuration's model, calibrated from the flat punch of def.contact at `touched`; fills
+/// the point's series, model, rings and vertices.
+std::unique_ptr<DeformationModel> makeSweepModel(const SweepModelDef& config, const TissueMesh& mesh, const Octree& octree,
+                                                 VertexId touched, const SweepDef& def, SweepPoint& point);
+
+/// The benchmark's press-and-stroke path, and one ten times shorter for slow models.
+struct SweepPaths {
+    std::vector<glm::vec3> full, shortened;
+};
+SweepPaths makeSweepPaths(const TissueMesh& mesh);
+/// The median tick over the path (the short one when the full one would exceed def.maxPathSeconds).
+double sweepTickUs(DeformationModel& model, const SweepPaths& paths, const SweepDef& def);
 
 /// Marks, per shape, the points no other point beats in both tick cost and displacement error.
 void markParetoFront(std::vector<SweepPoint>& points);

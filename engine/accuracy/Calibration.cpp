@@ -61,7 +61,17 @@ void finish(SlopeCalibration& c) {
 std::string validateToolContact(const ToolContact& contact) {
     if (const char* e = validateElasticMaterial(contact.material); *e) return e;
     if (!std::isfinite(contact.toolRadiusMm) || contact.toolRadiusMm <= 0.0) return "tool radius must be a positive number of mm";
+    if (!(contact.stiffeningExponent >= 0.0 && contact.stiffeningExponent <= 100.0))
+        return "stiffening exponent must be a number in 0..100";
     return {};
+}
+
+HyperelasticMaterial hyperelasticMaterialOf(const ToolContact& contact) {
+    HyperelasticMaterial m;
+    m.law = contact.stiffeningExponent > 0.0 ? HyperelasticLaw::Exponential : HyperelasticLaw::NeoHookean;
+    m.smallStrain = contact.material;
+    m.stiffeningExponent = contact.stiffeningExponent;
+    return m;
 }
 
 double punchFirstSlopeMmPerN(const ToolContact& contact) {

@@ -8,6 +8,7 @@
 #include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/core/TissueMesh.h"
 #include "engine/fem/ClosedForms.h"
+#include "engine/fem/HyperelasticMaterial.h"
 
 #include <string>
 #include <vector>
@@ -18,7 +19,13 @@ namespace palpate {
 struct ToolContact {
     ElasticMaterial material;
     double toolRadiusMm = 5.0;  ///< a: radius of the probe's flat tip
+    /// b of the hyperelastic reference's exponential law (0: neo-Hookean), from the preset's tissue.
+    double stiffeningExponent = 0.0;
 };
+
+/// The hyperelastic law of the tissue at large strain: exponential with b > 0, else neo-Hookean,
+/// with the contact's E and nu as its small-strain limit.
+HyperelasticMaterial hyperelasticMaterialOf(const ToolContact& contact);
 
 /// "" when usable, else a message naming the field.
 std::string validateToolContact(const ToolContact& contact);

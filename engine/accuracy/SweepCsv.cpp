@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <functional>
 #include <optional>
 #include <string_view>
@@ -61,7 +62,19 @@ bool parseUnsigned(const std::string& text, unsigned long long& out) {
 struct Column {
     const char* name;
     std::function<std::string(const std::string&, SweepPoint&)> read;
+    bool optional = false;  ///< the organ sweep's columns: a punch sweep written before them has none
 };
+
+/// Empty (not measured) is NaN; otherwise a number >= 0.
+std::string readOptionalNonNegative(const std::string& text, double& out) {
+    if (text.empty()) {
+        out = std::numeric_limits<double>::quiet_NaN();
+        return {};
+    }
+    if (!parseDouble(text, out)) return "'" + text + "' is not a number (or empty: not measured)";
+    if (out < 0.0) return "'" + text + "' is negative";
+    return {};
+}
 
 std::string readNonNegative(const std::string& text, double& out) {
     if (!parseDouble(text, out)) return "'" + text + "' is not a number";
@@ -113,8 +126,8 @@ const std::vector<Column>& columns() {
          }},
         {"tick_us", [](const std::string& t, SweepPoint& p) { return readNonNegative(t, p.tickUs); }},
         {"displacement_error",
-         [](const std::string& t, SweepPoint& p) { return readNonNegative(t, p.error.displacementError); }},
-        {"force_error", [](const std::string& t, SweepPoint& p) { return readNonNegative(t, p.error.forceError); }},
+         [](const std::string& t, SweepPoint& p) { return readOptionalNonNegative(t, p.error.displacementError); }},
+        {"force_error", [](const std::string& t, SweepPoint& p) { return readOptionalNonNegative(t, p.error.forceError); }},
         {"indentation_mm", [](const std::string& t, SweepPoint& p) { return readFinite(t, p.error.indentationMm); }},
         {"force_n", [](const std::string& t, SweepPoint& p) { return readFinite(t, p.error.forceN); }},
         {"reference_force_n", [](const std::string& t, SweepPoint& p) { return readFinite(t, p.error.referenceForceN); }},
@@ -131,6 +144,17 @@ const std::vector<Column>& columns() {
              p.pareto = t == "1";
              return {};
          }},
+        {"site",
+         [](const std::string& t, SweepPoint& p) -> std::string {
+             p.site = t;
+             return {};
+         },
+         true},
+        {"displacement_error_hyperelastic",
+         [](const std::string& t, SweepPoint& p) { return readOptionalNonNegative(t, p.hyperelasticDisplacementError); },
+         true},
+        {"force_error_hyperelastic",
+         [](const std::string& t, SweepPoint& p) { return readOptionalNonNegative(t, p.hyperelasticForceError); }, true},
     };
     return kColumns;
 }
@@ -181,7 +205,7 @@ std::vector<SweepPoint> parseSweepCsv(const std::string& text, std::string* erro
                 columnOf.push_back(found);
             }
             for (std::size_t c = 0; c < columns().size(); ++c)
-                if (!seen[c]) return fail(where + ": the header has no column '" + columns()[c].name + "'");
+                if (!seen[c] && !columns()[c].optional) return fail(where + ": the header has no column '" + columns()[c].name + "'");
             haveHeader = true;
             continue;
         }

@@ -85,6 +85,68 @@ SurfaceData checkedSurface(const TissueMesh& mesh) {
     return s;
 }
 
+/// How thick the organ is at each vertex: the distance along minus its normal to the nearest other
+/// triangle (Moller-Trumbore against every triangle: the meshes filled here have at most some 10^4
+/// triangles), or to the nearest vertex facing the other way when that is nearer.
+std::vector<double> innerDistancesMm(const SurfaceData& s, const std::vector<std::array<VertexId, 3>>& triangles) {
+    std::vector<double> out(s.restMm.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t v = 0; v < s.restMm.size(); ++v) {
+        const glm::dvec3 o = s.restMm[v], d = -s.normals[v];
+        for (const auto& t : triangles) {
+            if (t[0] == v || t[1] == v || t[2] == v) continue;
+            const glm::dvec3 a = s.restMm[t[0]], e1 = s.restMm[t[1]] - a, e2 = s.restMm[t[2]] - a;
+            const glm::dvec3 p = glm::cross(d, e2);
+            const double det = glm::dot(e1, p);
+            if (std::abs(det) < 1e-14) continue;
+            const glm::dvec3 q = o - a;
+            const double u = glm::dot(q, p) / det;
+            if (u < 0.0 || u > 1.0) continue;
+            const glm::dvec3 r = glm::cross(q, e1);
+            const double w = glm::dot(d, r) / det;
+            if (w < 0.0 || u + w > 1.0) continue;
+            const double dist = glm::dot(e2, r) / det;
+            if (dist > 1e-9 && dist < out[v]) out[v] = dist;
+        }
+        // A pointed end sends the ray along the organ's length: the nearest vertex facing the other
+        // way (normals more than 120 degrees apart) bounds the thickness too.
+        for (std::size_t u = 0; u < s.restMm.size(); ++u)
+            if (glm::dot(s.normals[u], s.normals[v]) < -0.5) out[v] = std::min(out[v], glm::length(s.restMm[u] - o));
+    }
+    return out;
+}
+
+/// The largest convex curvature at each vertex over its edges: an edge to u of length l whose far
+/// end lies h below v's tangent plane bends by 2 h / l^2 (1 / radius); 0 where nothing bends away.
+std::vector<double> convexCurvaturesPerMm(const SurfaceData& s, const std::vector<std::array<VertexId, 3>>& triangles) {
+    std::vector<double> out(s.restMm.size(), 0.0);
+    for (const auto& tri : triangles)
+        for (int e = 0; e < 3; ++e) {
+            const VertexId a = tri[std::size_t(e)], b = tri[std::size_t((e + 1) % 3)];
+            const glm::dvec3 d = s.restMm[a] - s.restMm[b];
+            const double l2 = glm::dot(d, d);
+            if (!(l2 > 0.0)) continue;
+            out[a] = std::max(out[a], 2.0 * glm::dot(d, s.normals[a]) / l2);
+            out[b] = std::max(out[b], -2.0 * glm::dot(d, s.normals[b]) / l2);
+        }
+    return out;
+}
+
+/// Lowers columns until neighbours differ by at most `slope` per mm between them (a deep column
+/// next to a shallow one would shear its prisms flat).
+void limitThicknessSlope(std::vector<double>& t, const SurfaceData& s, const std::vector<std::array<VertexId, 3>>& triangles,
+                         double slope) {
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (const auto& tri : triangles)
+            for (int e = 0; e < 3; ++e) {
+                const VertexId a = tri[std::size_t(e)], b = tri[std::size_t((e + 1) % 3)];
+                const double limit = slope * glm::length(s.restMm[a] - s.restMm[b]);
+                if (t[b] > t[a] + limit + 1e-12) t[b] = t[a] + limit, changed = true;
+                if (t[a] > t[b] + limit + 1e-12) t[a] = t[b] + limit, changed = true;
+            }
+    }
+}
+
 }  // namespace
 
 FilledSurface fillSurface(const TissueMesh& mesh, const SurfaceFillDef& options) {
@@ -95,6 +157,10 @@ FilledSurface fillSurface(const TissueMesh& mesh, const SurfaceFillDef& options)
     if (options.maxHalvings < 0 || options.maxHalvings > 30) throw std::invalid_argument("max halvings must be in 0..30");
     if (options.thicknessMm && !(std::isfinite(*options.thicknessMm) && *options.thicknessMm > 0.0))
         throw std::invalid_argument("thickness must be a positive number of mm");
+    if (!(options.localThicknessFraction >= 0.0 && options.localThicknessFraction <= 0.45))
+        throw std::invalid_argument("local thickness fraction must be in [0, 0.45]");
+    if (!(options.maxThicknessSlope > 0.0 && options.maxThicknessSlope <= 2.0))
+        throw std::invalid_argument("thickness slope must be in (0, 2]");
     const SurfaceData s = checkedSurface(mesh);
 
     FilledSurface f;
@@ -126,12 +192,24 @@ FilledSurface fillSurface(const TissueMesh& mesh, const SurfaceFillDef& options)
     }
 
     f.mesh.nodesMm.resize(vertexCount * (std::size_t(options.layers) + 1));
+    std::vector<double> column(vertexCount, f.requestedThicknessMm);
+    if (options.localThicknessFraction > 0.0) {
+        const std::vector<double> inner = innerDistancesMm(s, triangles);
+        const std::vector<double> curvature = convexCurvaturesPerMm(s, triangles);
+        for (std::size_t v = 0; v < vertexCount; ++v) {
+            column[v] = std::min(f.requestedThicknessMm, options.localThicknessFraction * inner[v]);
+            // Columns converge under a convex bend: at most half its radius (a pointed end has none).
+            if (curvature[v] > 0.0) column[v] = std::min(column[v], 0.5 / curvature[v]);
+        }
+        limitThicknessSlope(column, s, triangles, options.maxThicknessSlope);
+    }
+    double scale = 1.0;
     double thickness = f.requestedThicknessMm;
     for (int attempt = 0;; ++attempt) {
         for (int l = 0; l <= options.layers; ++l)
             for (std::size_t v = 0; v < vertexCount; ++v)
                 f.mesh.nodesMm[f.node(VertexId(v), l)] =
-                    s.restMm[v] - depthFraction[std::size_t(l)] * thickness * s.normals[v];
+                    s.restMm[v] - depthFraction[std::size_t(l)] * scale * column[v] * s.normals[v];
         double minShape = std::numeric_limits<double>::infinity();
         double minVolume6 = std::numeric_limits<double>::infinity();
         for (const auto& tet : f.mesh.tets) {
@@ -147,7 +225,9 @@ FilledSurface fillSurface(const TissueMesh& mesh, const SurfaceFillDef& options)
             minVolume6 = std::min(minVolume6, v6);
         }
         if (minShape > kMinTetShape) {
-            f.thicknessMm = thickness;
+            f.vertexThicknessMm.resize(vertexCount);
+            for (std::size_t v = 0; v < vertexCount; ++v) f.vertexThicknessMm[v] = scale * column[v];
+            f.thicknessMm = *std::max_element(f.vertexThicknessMm.begin(), f.vertexThicknessMm.end());
             f.halvings = attempt;
             f.minTetVolumeMm3 = minVolume6 / 6.0;
             break;
@@ -157,6 +237,7 @@ FilledSurface fillSurface(const TissueMesh& mesh, const SurfaceFillDef& options)
                                         std::to_string(thickness) + " mm after " + std::to_string(attempt) +
                                         " halvings (vertex normals disagree with their faces?)");
         thickness *= 0.5;
+        scale *= 0.5;
     }
     f.seconds = secondsSince(start);
     return f;

@@ -24,6 +24,12 @@ struct SurfaceFillDef {
     std::optional<double> thicknessMm;
     double layerGrowth = 1.5;            ///< each layer this much thicker than the one outside it (fine at the surface)
     int maxHalvings = 6;                 ///< T is halved at most this often while a tet inverts
+    /// 0: every vertex's column is T deep. Above 0 (at most 0.45): vertex v's column is
+    /// min(T, fraction * d_v), d_v the distance from v along -n_v to the surface's other side, so a
+    /// thin part of the organ gets a thin layer and the rest keeps T (docs/accuracy.md, "Local
+    /// thickness"); neighbouring columns then differ by at most maxThicknessSlope per mm apart.
+    double localThicknessFraction = 0.0;
+    double maxThicknessSlope = 0.5;
 };
 
 /// The filled surface. Node node(v, l) is surface vertex v (TissueMesh order) moved inward along
@@ -35,7 +41,8 @@ struct FilledSurface {
     /// A vertex's column of nodes is contiguous (better locality for the solver than layer-major).
     TetNodeId node(VertexId v, int layer) const { return TetNodeId(std::size_t(v) * std::size_t(layers + 1) + std::size_t(layer)); }
     double requestedThicknessMm = 0.0;
-    double thicknessMm = 0.0;            ///< as used, after halvings
+    double thicknessMm = 0.0;            ///< as used, after halvings (the deepest column with local thickness)
+    std::vector<double> vertexThicknessMm;  ///< each surface vertex's column depth, as used
     int halvings = 0;
     double minTetVolumeMm3 = 0.0;
     double seconds = 0.0;

@@ -82,6 +82,19 @@ constexpr FieldDef<TissueProperties> kTissueFields[] = {
              "While the tool slides, the sideways force is μd times the normal force (0..5, at most μs)."),
          .decimals = 3,
          .step = 0.05}),
+    field<&TissueProperties::stiffeningExponent>(
+        {.key = "stiffeningExponent",
+         .jsonKey = "stiffening_exponent",
+         .lo = 0,
+         .hi = 100,
+         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Stiffening exponent b:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "stiffening exponent"),
+         .tip = PALPATE_TRANSLATE_NOOP(
+             "palpate::ParameterPanel",
+             "How fast the tissue stiffens with strain: b of the exponential law of the hyperelastic reference "
+             "(0..100; 0: neo-Hookean). Calibration turns it into stiffening knots."),
+         .decimals = 4,
+         .step = 0.5}),
 };
 
 constexpr FieldDef<PresetStabilityMargin> kMarginFields[] = {
@@ -171,7 +184,8 @@ Problems validateTissueProperties(const TissueProperties& tissue) {
 bool samePreset(const TissuePreset& a, const TissuePreset& b) {
     const bool sameTissue = a.tissue.has_value() == b.tissue.has_value() &&
                             (!a.tissue || (sameFields(tissueFields(), *a.tissue, *b.tissue) &&
-                                           a.tissue->source == b.tissue->source));
+                                           a.tissue->source == b.tissue->source &&
+                                           a.tissue->stiffeningSource == b.tissue->stiffeningSource));
     return a.name == b.name && a.description == b.description && a.modelKind == b.modelKind && a.method == b.method &&
            sameFields(slopeRingFields(), a.params, b.params) &&
            sameFields(massSpringFields(), a.massSpring, b.massSpring) &&
@@ -238,8 +252,10 @@ PresetLoadResult parsePresetText(const std::string& textIn, const std::string& s
             // "source" beside the table's fields; readFields checks the keys.
             Json numbers = t;
             numbers.erase("source");
+            numbers.erase("stiffening_source");
             readFields(r, numbers, "tissue", tissueFields(), tissue);
             r.text(t, "tissue", "source", tissue.source, true);
+            if (t.contains("stiffening_source")) r.text(t, "tissue", "stiffening_source", tissue.stiffeningSource, false);
         } else {
             r.error("tissue", "must be an object");
         }
@@ -314,6 +330,7 @@ std::string tissuePresetToJson(const TissuePreset& preset) {
     if (preset.tissue) {
         j["tissue"] = fieldsToJson(tissueFields(), *preset.tissue);
         j["tissue"]["source"] = preset.tissue->source;
+        if (!preset.tissue->stiffeningSource.empty()) j["tissue"]["stiffening_source"] = preset.tissue->stiffeningSource;
     }
     if (preset.needs)
         j["needs"] = {{"max_error", preset.needs->maxErrorFraction}, {"budget_us", preset.needs->budgetUs}};

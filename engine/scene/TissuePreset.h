@@ -34,7 +34,13 @@ struct TissueProperties {
     /// sliding below it (0.2, our choice: that source measures only the static value).
     double staticFriction = 0.3;
     double dynamicFriction = 0.2;
+    /// b of the exponential strain-energy law the hyperelastic reference uses for this tissue
+    /// (engine/fem/HyperelasticMaterial.h; 0: neo-Hookean). Calibration turns it into the slope-ring
+    /// model's stiffening knots (docs/calibration.md, "Knots from the hyperelastic reference").
+    double stiffeningExponent = 0.0;
     std::string source;
+    /// Where b came from ("stiffening_source", optional): "" when b is 0 by assumption.
+    std::string stiffeningSource;
 };
 /// The numeric fields of TissueProperties in file order (engine/params/FieldTable.h); "source" is
 /// a required string beside them.

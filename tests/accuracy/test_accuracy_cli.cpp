@@ -6,8 +6,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "engine/accuracy/SweepCsv.h"
+
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 namespace palpate {
 namespace {
@@ -100,6 +105,70 @@ TEST_F(AccuracyCli, BadUsageExitsTwoNamingTheOption) {
         EXPECT_EQ(r.exitCode, 2) << c.args << "\n" << r.output;
         EXPECT_NE(r.output.find(c.word), std::string::npos) << c.args << "\n" << r.output;
     }
+}
+
+TEST_F(AccuracyCli, SweepAgainstTheOrgansFemScoresEachSiteWithBothReferences) {
+    test::TempDir dir;
+    const std::string csv = dir.file("organ.csv");
+    const auto r = run("sweep --reference fem --quick --json --no-paper --no-others --max-rings 1 --stiffening-exponent 3 --csv " +
+                       test::shellQuote(csv));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.output.substr(r.output.find('{')));
+    EXPECT_EQ(j.at("reference"), "fem");
+    EXPECT_EQ(j.at("shape"), "stomach");
+    ASSERT_EQ(j.at("sites").size(), 3u);
+    std::vector<std::string> names;
+    for (const auto& s : j["sites"]) {
+        names.push_back(s.at("site"));
+        EXPECT_FALSE(s.at("reason").get<std::string>().empty());
+        EXPECT_TRUE(s.at("hyperelastic_completed").get<bool>()) << s.at("failure");
+        EXPECT_GT(s.at("hyperelastic_force_n").get<double>(), s.at("linear_force_n").get<double>());  // b = 3 stiffens
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"thin", "thick", "curved"}));
+    ASSERT_EQ(j.at("points").size(), 6u);  // 1 ring and 1 ring with knots, at each site
+    for (const auto& p : j["points"]) {
+        EXPECT_TRUE(p.at("displacement_error").is_number()) << p;
+        EXPECT_TRUE(p.at("displacement_error_hyperelastic").is_number()) << p;
+    }
+    // The CSV carries the sites and reads back.
+    std::ifstream in(csv);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string error;
+    const auto points = parseSweepCsv(text, &error);
+    EXPECT_TRUE(error.empty()) << error;
+    ASSERT_EQ(points.size(), 6u);
+    EXPECT_EQ(points.front().site, "thin");
+    EXPECT_TRUE(std::isfinite(points.front().hyperelasticDisplacementError));
+
+    const auto bad = run("sweep --reference flat");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.output.find("--reference"), std::string::npos) << bad.output;
+    const auto shapes = run("sweep --reference fem --shapes sphere");
+    EXPECT_EQ(shapes.exitCode, 2);
+    EXPECT_NE(shapes.output.find("--shapes"), std::string::npos) << shapes.output;
+}
+
+TEST_F(AccuracyCli, CalibrateNonlinearPrintsTheKnotsAndWritesThemIntoThePreset) {
+    test::TempDir dir;
+    const std::string out = dir.file("stiff.json");
+    const auto r = run("calibrate --json --nonlinear --stiffening-exponent 5 --stiffening-source 'a test' --preset " +
+                       test::shellQuote(std::string(PALPATE_SOURCE_DIR) + "/resources/presets/tissues/fat.json") + " --out " +
+                       test::shellQuote(out));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.output.substr(r.output.find('{'), r.output.rfind('}') - r.output.find('{') + 1));
+    const auto& st = j.at("stiffening");
+    EXPECT_EQ(st.at("law"), "exponential");
+    EXPECT_EQ(st.at("knots"), 6);
+    EXPECT_LT(st.at("worst_knot_error_pct").get<double>(), 2.0);
+    EXPECT_GT(st.at("curve").back().at("ratio").get<double>(), 1.1);
+    std::ifstream in(out);
+    const auto preset = nlohmann::json::parse(in);
+    EXPECT_EQ(preset["slope_ring"]["stiffening_knots"], 6);
+    EXPECT_EQ(preset["slope_ring"]["stiffening_force_n"].size(), 6u);
+    EXPECT_EQ(preset["tissue"]["stiffening_exponent"], 5.0);
+    EXPECT_EQ(preset["tissue"]["stiffening_source"], "a test");
+    EXPECT_EQ(run("calibrate --nonlinear --stiffening-exponent -1").exitCode, 2);
+    EXPECT_EQ(run("calibrate --nonlinear --nonlinear-depth 50").exitCode, 2);
 }
 
 }  // namespace

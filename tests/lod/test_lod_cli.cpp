@@ -79,6 +79,14 @@ TEST_F(LodCli, PlanPrintsTheDocumentedJsonAndChoosesTheCheapest) {
     EXPECT_EQ(chosen["rings"], 1);
     EXPECT_EQ(chosen["model"], "coherent");
     EXPECT_NE(j["reason"].get<std::string>().find("coarsest"), std::string::npos);
+    // Linear or stiffening tissue: within a 100 % target the linear model is enough.
+    const Json& stiff = j["stiffening"];
+    for (const char* key : {"law", "nonlinear", "knots", "feasible", "linear_error", "nonlinear_error", "depths", "reason"})
+        EXPECT_TRUE(stiff.contains(key)) << key;
+    EXPECT_FALSE(stiff["nonlinear"].get<bool>());
+    EXPECT_TRUE(stiff["feasible"].get<bool>());
+    EXPECT_EQ(stiff["depths"][0]["what"], "the plan's press");
+    EXPECT_NE(stiff["reason"].get<std::string>().find("Linear tissue"), std::string::npos);
 
     // A target between the candidates' errors: the choice meets it, and no candidate that also
     // meets both is coarser or as coarse with fewer rings.
@@ -165,6 +173,36 @@ TEST_F(LodCli, NeedsComeFromTheExercise) {
     const auto strict = runJson("lod plan --quick --json --error 1e-6 --exercise " + shellQuote(exercise));
     EXPECT_EQ(strict.exitCode, 1) << strict.output;
     EXPECT_EQ(Json::parse(strict.output)["needs"]["max_error"], 1e-6);
+}
+
+TEST_F(LodCli, StiffeningTissueIsChosenWhereTheLinearForceMissesTheTarget) {
+    // A tissue that stiffens (b = 5) pressed to 1 N: at that depth the linear force misses a 5 %
+    // target, so the knots are chosen, and they meet it.
+    const std::string exercise = dir.write("deep.json", R"({
+      "format": "palpate-exercise", "version": 1, "name": "e", "type": "press_targets",
+      "mesh": "sphere 1442.obj", "tissue_preset": "presets/default.json", "time_limit_s": 30,
+      "press_targets": {"targets": [{"vertex": 3, "force_min_n": 0.5, "force_max_n": 1.0}]}
+    })");
+    const auto r = runJson("lod plan --quick --json --error 0.5 --budget-us 100000 --stiffening-exponent 5 --exercise " +
+                           shellQuote(exercise));
+    ASSERT_EQ(r.exitCode, 0) << r.output << stderrText();
+    const Json lax = Json::parse(r.output)["stiffening"];
+    const double linearError = lax["linear_error"].get<double>();
+    EXPECT_GT(linearError, 0.05);
+    EXPECT_LT(lax["nonlinear_error"].get<double>(), std::min(0.05, linearError / 3.0));
+    EXPECT_NE(lax["depths"][0]["what"].get<std::string>().find("press target 1"), std::string::npos);
+    EXPECT_EQ(lax["nonlinear"].get<bool>(), linearError > 0.5);
+
+    const auto strict = runJson("lod plan --quick --json --error 0.05 --budget-us 100000 --stiffening-exponent 5 --exercise " +
+                                shellQuote(exercise));
+    const Json s = Json::parse(strict.output)["stiffening"];
+    EXPECT_TRUE(s["nonlinear"].get<bool>());
+    EXPECT_TRUE(s["feasible"].get<bool>());
+    EXPECT_GT(s["knots"].get<int>(), 0);
+    EXPECT_NE(s["reason"].get<std::string>().find("Stiffening tissue"), std::string::npos) << s["reason"];
+    // Neo-Hookean tissue at the same depth stiffens less than b = 5 does.
+    const auto neo = runJson("lod plan --quick --json --error 0.5 --budget-us 100000 --exercise " + shellQuote(exercise));
+    EXPECT_LT(Json::parse(neo.output)["stiffening"]["linear_error"].get<double>(), linearError);
 }
 
 }  // namespace

@@ -6,12 +6,16 @@
 #include "engine/accuracy/SweepCsv.h"
 #include "widgets/ChartsPanel.h"
 #include "widgets/ParameterPanel.h"
+#include "widgets/StiffeningPanel.h"
 #include "app/report/SpeedAccuracyChart.h"
 #include "app/report/SweepChartImage.h"
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QChartView>
+#include <QComboBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
 #include <QLabel>
@@ -29,6 +33,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 
 using namespace palpate;
 
@@ -274,7 +279,7 @@ TEST(ChartsPanel, CsvSavesAndLoadsBackWithTheTissue) {
     // A broken file: the chart keeps its points and the message names the line.
     QFile broken(dir.filePath(QStringLiteral("broken.csv")));
     ASSERT_TRUE(broken.open(QIODevice::WriteOnly));
-    broken.write(QByteArray::fromStdString(sweepToCsv(panel.points())) + "sphere,1442,x,palpate,1,abc,0.1,0,0,0,0,0,0\n");
+    broken.write(QByteArray::fromStdString(sweepToCsv(panel.points())) + "sphere,1442,x,palpate,1,abc,0.1,0,0,0,0,0,0,,,\n");
     broken.close();
     EXPECT_FALSE(other.loadCsv(broken.fileName(), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("line 4"))) << error.toStdString();
@@ -358,4 +363,90 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
+}
+
+// The organ sweep's points carry a site: the shape list offers each site, and the chart draws one
+// site's points with its reference named in the title.
+TEST(ChartsPanel, OrganSweepSitesAreChosenInTheShapeList) {
+    ChartsPanel panel;
+    QTemporaryDir dir;
+    std::vector<SweepPoint> points;
+    for (const char* site : {"thin", "thick", "curved"})
+        for (int rings : {1, 2}) {
+            SweepPoint p = point("slope-ring " + std::to_string(rings) + (rings == 1 ? " ring" : " rings"), "coherent", rings,
+                                 GeneratedShape::Stomach, 1442, 0.1 * rings, 0.1 + 0.05 * rings);
+            p.site = site;
+            p.hyperelasticDisplacementError = 0.2;
+            points.push_back(p);
+        }
+    SweepPoint unmeasured = points.back();
+    unmeasured.series = "proposed (paper)";
+    unmeasured.error.displacementError = std::nan("");
+    points.push_back(unmeasured);
+    markParetoFront(points);
+    EXPECT_FALSE(points.back().pareto);  // an unmeasured point is on no front
+    const QString path = dir.filePath(QStringLiteral("organ.csv"));
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(QByteArray::fromStdString(sweepToCsv(points)));
+    file.close();
+    QString error;
+    ASSERT_TRUE(panel.loadCsv(path, &error)) << error.toStdString();
+    auto* combo = panel.findChild<QComboBox*>(QStringLiteral("sweepShapeCombo"));
+    ASSERT_NE(combo, nullptr);
+    ASSERT_EQ(combo->count(), 3);
+    EXPECT_EQ(combo->itemText(0), QStringLiteral("Stomach, thin site"));
+    EXPECT_TRUE(combo->isEnabled());
+    EXPECT_TRUE(panel.chart()->chart()->title().contains(QStringLiteral("thin site"))) << panel.chart()->chart()->title().toStdString();
+    combo->setCurrentIndex(2);
+    EXPECT_EQ(panel.chart()->shownSite(), "curved");
+    EXPECT_TRUE(panel.chart()->chart()->title().contains(QStringLiteral("curved"))) << panel.chart()->chart()->title().toStdString();
+    // The unmeasured point is not drawn: two slope-ring series only.
+    EXPECT_EQ(panel.chart()->seriesNames().filter(QStringLiteral("proposed")).size(), 0);
+}
+
+// The stiffening tab solves the hyperelastic reference for the tissue in use off the GUI thread and
+// draws it beside the linear and the knotted model; another tissue clears it.
+TEST(ChartsPanel, StiffeningTabDrawsTheReferenceBesideBothModels) {
+    ChartsPanel panel;
+    ASSERT_EQ(panel.tabs()->count(), 3);
+    StiffeningPanel* stiff = panel.stiffeningPanel();
+    ASSERT_NE(stiff, nullptr);
+    TissuePreset applied;
+    applied.tissue = TissueProperties{};
+    applied.tissue->stiffeningExponent = 5.0;
+    const ToolContact contact = ParameterPanel::toolContactOf(applied);
+    EXPECT_EQ(contact.stiffeningExponent, 5.0);
+    applied.params.slopeMagnitudeMmPerN[0] = punchFirstSlopeMmPerN(contact);
+    panel.setCurrentConfiguration(applied, contact, 1442);
+    EXPECT_TRUE(stiff->seriesNames().isEmpty());
+    EXPECT_TRUE(stiff->statusText().contains(QStringLiteral("Compute"))) << stiff->statusText().toStdString();
+    QSignalSpy computed(stiff, &StiffeningPanel::computed);
+    auto* depth = stiff->findChild<QDoubleSpinBox*>(QStringLiteral("stiffeningDepthSpin"));
+    ASSERT_NE(depth, nullptr);
+    depth->setValue(2.0);  // a short solve
+    const auto started = std::chrono::steady_clock::now();
+    ASSERT_TRUE(stiff->compute());
+    EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::milliseconds(200));  // solved elsewhere
+    EXPECT_FALSE(stiff->compute());  // one at a time
+    QTRY_COMPARE_WITH_TIMEOUT(computed.count(), 1, 120000);
+    EXPECT_TRUE(computed.at(0).at(0).toBool()) << stiff->statusText().toStdString();
+    ASSERT_TRUE(stiff->reference());
+    EXPECT_NEAR(stiff->reference()->curve.back().depthMm, 2.0, 1e-9);
+    EXPECT_GT(stiff->reference()->curve.back().ratio, 1.05);  // b = 5 stiffens
+    EXPECT_EQ(stiff->seriesNames().size(), 3);
+    EXPECT_TRUE(stiff->statusText().contains(QStringLiteral("times the linear force"))) << stiff->statusText().toStdString();
+
+    // With the preset's own knots a fourth curve shows them.
+    SlopeRingParams knotted = applied.params;
+    applyStiffening(*stiff->reference(), knotted);
+    applied.params = knotted;
+    panel.setCurrentConfiguration(applied, contact, 1442);
+    EXPECT_EQ(stiff->seriesNames().size(), 4);
+
+    applied.tissue->stiffeningExponent = 0.0;
+    panel.setCurrentConfiguration(applied, ParameterPanel::toolContactOf(applied), 1442);
+    EXPECT_FALSE(stiff->reference());
+    EXPECT_TRUE(stiff->seriesNames().isEmpty());
+    EXPECT_TRUE(stiff->statusText().contains(QStringLiteral("changed"))) << stiff->statusText().toStdString();
 }

@@ -157,7 +157,7 @@ TEST(MainWindowCharts, TheFeelTabLoadsTheFeelCsvWhenTheDockIsFirstShown) {
     MainWindow window(RendererChoice::Software, LoopMode::Stepped);
     ChartsPanel* charts = window.chartsPanel();
     charts->feelPanel()->setDefaultCsv(csv);
-    ASSERT_EQ(charts->tabs()->count(), 2);
+    ASSERT_EQ(charts->tabs()->count(), 3);  // the sweep, the feel, the stiffening
     EXPECT_EQ(charts->tabs()->widget(1), charts->feelPanel());
     window.resize(1400, 900);
     window.show();

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace palpate;
 
 namespace {
@@ -82,12 +84,12 @@ TEST(SweepCsv, RejectsAMalformedLineNamingTheLineAndColumn) {
     EXPECT_EQ(error.rfind("line 3, column 6 (tick_us): 'fast' is not a number", 0), 0u) << error;
 
     EXPECT_TRUE(parseSweepCsv(csv + "sphere,1442,x\n", &error).empty());
-    EXPECT_NE(error.find("line 8: 3 fields, the header has 13"), std::string::npos) << error;
+    EXPECT_NE(error.find("line 8: 3 fields, the header has 16"), std::string::npos) << error;
 
-    EXPECT_TRUE(parseSweepCsv(csv + "cube,1442,s,palpate,1,0.1,0.1,0,0,0,0,0,1\n", &error).empty());
+    EXPECT_TRUE(parseSweepCsv(csv + "cube,1442,s,palpate,1,0.1,0.1,0,0,0,0,0,1,,,\n", &error).empty());
     EXPECT_NE(error.find("line 8, column 1 (shape)"), std::string::npos) << error;
 
-    EXPECT_TRUE(parseSweepCsv(csv + "sphere,1442,s,palpate,1,0.1,0.1,0,0,0,0,0,yes\n", &error).empty());
+    EXPECT_TRUE(parseSweepCsv(csv + "sphere,1442,s,palpate,1,0.1,0.1,0,0,0,0,0,yes,,,\n", &error).empty());
     EXPECT_NE(error.find("line 8, column 13 (pareto): 'yes' is not 0 or 1"), std::string::npos) << error;
 
     EXPECT_TRUE(parseSweepCsv("shape,vertices,speed\n", &error).empty());
@@ -96,3 +98,33 @@ TEST(SweepCsv, RejectsAMalformedLineNamingTheLineAndColumn) {
     EXPECT_TRUE(parseSweepCsv("", &error).empty());
     EXPECT_NE(error.find("line 1"), std::string::npos) << error;
 }
+
+// A sweep written before the organ sweep's columns existed still reads: no site, nothing measured
+// against the hyperelastic FEM.
+TEST(SweepCsv, ACsvWithoutTheOrganColumnsStillReads) {
+    SweepPoint p;
+    p.series = "slope-ring 1 ring";
+    p.model = "coherent";
+    p.rings = 1;
+    p.vertices = 1442;
+    p.tickUs = 0.1;
+    p.error.displacementError = 0.2;
+    std::string text = sweepToCsv({p});
+    // Drop the last three columns of every line.
+    std::string old;
+    for (std::size_t start = 0; start < text.size();) {
+        std::size_t end = text.find('\n', start);
+        std::string line = text.substr(start, end - start);
+        for (int i = 0; i < 3; ++i) line = line.substr(0, line.rfind(','));
+        old += line + "\n";
+        start = end + 1;
+    }
+    std::string error;
+    const auto points = parseSweepCsv(old, &error);
+    ASSERT_TRUE(error.empty()) << error;
+    ASSERT_EQ(points.size(), 1u);
+    EXPECT_TRUE(points[0].site.empty());
+    EXPECT_TRUE(std::isnan(points[0].hyperelasticDisplacementError));
+    EXPECT_DOUBLE_EQ(points[0].error.displacementError, 0.2);
+}
+
