@@ -55,10 +55,6 @@
         <translation>&amp;Schnell</translation>
     </message>
     <message>
-        <source>Sphere only, at 1442 and 3970 vertices, up to 4 rings: about a second.</source>
-        <translation>Nur die Kugel, mit 1442 und 3970 Knoten, bis zu 4 Ringe: etwa eine Sekunde.</translation>
-    </message>
-    <message>
         <source>&amp;Cancel</source>
         <translation>&amp;Abbrechen</translation>
     </message>
@@ -210,6 +206,22 @@
         <source>%1, %2 site</source>
         <extracomment>The shape and the site of the organ sweep: &quot;Stomach, thin site&quot;</extracomment>
         <translation>%1, Stelle „%2“</translation>
+    </message>
+    <message>
+        <source>Sphere only, at 1442 and 3970 vertices, up to 4 rings: about a second (against the organ&apos;s FEM: the stomach at 1442 vertices, about half a minute).</source>
+        <translation>Nur die Kugel, mit 1442 und 3970 Knoten, bis 4 Ringe: etwa eine Sekunde (gegen die FEM des Organs: der Magen mit 1442 Knoten, etwa eine halbe Minute).</translation>
+    </message>
+    <message>
+        <source>vs. punch</source>
+        <translation>gegen Stempel</translation>
+    </message>
+    <message>
+        <source>vs. organ FEM</source>
+        <translation>gegen Organ-FEM</translation>
+    </message>
+    <message>
+        <source>What Run sweep scores against: the flat punch on a half-space, or the FEM of the filled stomach (linear and hyperelastic) at its thin, thick and curved sites.</source>
+        <translation>Wogegen der Sweep bewertet: der flache Stempel auf einem Halbraum oder die FEM des gefüllten Magens (linear und hyperelastisch) an seinen dünnen, dicken und gekrümmten Stellen.</translation>
     </message>
 </context>
 <context>
@@ -4869,8 +4881,16 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
         <translation>aktuelle Konfiguration</translation>
     </message>
     <message>
-        <source>error vs. the filled organ&apos;s linear FEM at its %1 site: RMS / peak over r ≤ 5a</source>
-        <translation>Fehler gegen die lineare FEM des gefüllten Organs an der Stelle „%1“: RMS / Spitze über r ≤ 5a</translation>
+        <source>%1 stiffening</source>
+        <translation>%1 versteifend</translation>
+    </message>
+    <message>
+        <source>error vs. the filled organ&apos;s linear FEM at its %1 site:</source>
+        <translation>Fehler gegen die lineare FEM des gefüllten Organs an der Stelle „%1“:</translation>
+    </message>
+    <message>
+        <source>RMS / peak over r ≤ 5a</source>
+        <translation>RMS / Spitze über r ≤ 5a</translation>
     </message>
 </context>
 <context>
@@ -4892,34 +4912,8 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
         <translation>Die Referenz konnte nicht berechnet werden: %1</translation>
     </message>
     <message>
-        <source>Force against depth: E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)</source>
-        <translation>Kraft über Tiefe: E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)</translation>
-    </message>
-    <message>
         <source>Press Compute: the hyperelastic reference is solved for this tissue (a few seconds).</source>
         <translation>Berechnen drücken: die hyperelastische Referenz wird für dieses Gewebe gelöst (einige Sekunden).</translation>
-    </message>
-    <message>
-        <source>Hyperelastic reference (FEM)</source>
-        <translation>Hyperelastische Referenz (FEM)</translation>
-    </message>
-    <message>
-        <source>Linear slope-ring (no knots)</source>
-        <translation>Linearer Slope-Ring (ohne Knoten)</translation>
-    </message>
-    <message numerus="yes">
-        <source>With %n calibrated knot(s)</source>
-        <translation>
-            <numerusform>Mit %n kalibriertem Knoten</numerusform>
-            <numerusform>Mit %n kalibrierten Knoten</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>With the preset&apos;s %n knot(s)</source>
-        <translation>
-            <numerusform>Mit %n Knoten des Presets</numerusform>
-            <numerusform>Mit den %n Knoten des Presets</numerusform>
-        </translation>
     </message>
     <message>
         <source>Depth of the tissue under the tool (mm)</source>
@@ -4952,6 +4946,38 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
     <message>
         <source>Solve the hyperelastic reference for this tissue (a flat punch of the tool&apos;s radius, a few seconds) and fit the stiffening knots to it.</source>
         <translation>Die hyperelastische Referenz für dieses Gewebe lösen (ein flacher Stempel mit dem Radius des Werkzeugs, einige Sekunden) und die Versteifungsknoten daran anpassen.</translation>
+    </message>
+    <message>
+        <source>Force against depth</source>
+        <translation>Kraft über der Tiefe</translation>
+    </message>
+    <message>
+        <source>E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)</source>
+        <translation>E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)</translation>
+    </message>
+    <message>
+        <source>Hyperelastic FEM</source>
+        <translation>Hyperelastische FEM</translation>
+    </message>
+    <message>
+        <source>Linear model</source>
+        <translation>Lineares Modell</translation>
+    </message>
+    <message>
+        <source>1 knot</source>
+        <translation>1 Knoten</translation>
+    </message>
+    <message>
+        <source>%1 knots</source>
+        <translation>%1 Knoten</translation>
+    </message>
+    <message>
+        <source>the preset&apos;s knot</source>
+        <translation>der Knoten des Presets</translation>
+    </message>
+    <message>
+        <source>the preset&apos;s %1 knots</source>
+        <translation>die %1 Knoten des Presets</translation>
     </message>
 </context>
 <context>

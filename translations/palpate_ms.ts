@@ -55,10 +55,6 @@
         <translation>&amp;Pantas</translation>
     </message>
     <message>
-        <source>Sphere only, at 1442 and 3970 vertices, up to 4 rings: about a second.</source>
-        <translation>Sfera sahaja, pada 1442 dan 3970 bucu, sehingga 4 gelang: kira-kira satu saat.</translation>
-    </message>
-    <message>
         <source>&amp;Cancel</source>
         <translation>&amp;Batal</translation>
     </message>
@@ -210,6 +206,22 @@
         <source>%1, %2 site</source>
         <extracomment>The shape and the site of the organ sweep: &quot;Stomach, thin site&quot;</extracomment>
         <translation>%1, tapak %2</translation>
+    </message>
+    <message>
+        <source>Sphere only, at 1442 and 3970 vertices, up to 4 rings: about a second (against the organ&apos;s FEM: the stomach at 1442 vertices, about half a minute).</source>
+        <translation>Sfera sahaja, pada 1442 dan 3970 bucu, hingga 4 gelang: kira-kira sesaat (berbanding FEM organ: perut pada 1442 bucu, kira-kira setengah minit).</translation>
+    </message>
+    <message>
+        <source>vs. punch</source>
+        <translation>berbanding penebuk</translation>
+    </message>
+    <message>
+        <source>vs. organ FEM</source>
+        <translation>berbanding FEM organ</translation>
+    </message>
+    <message>
+        <source>What Run sweep scores against: the flat punch on a half-space, or the FEM of the filled stomach (linear and hyperelastic) at its thin, thick and curved sites.</source>
+        <translation>Sasaran penilaian sapuan: penebuk rata pada separuh ruang, atau FEM perut yang diisi (linear dan hiperelastik) di tapak nipis, tebal dan melengkungnya.</translation>
     </message>
 </context>
 <context>
@@ -4865,8 +4877,16 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
         <translation>konfigurasi semasa</translation>
     </message>
     <message>
-        <source>error vs. the filled organ&apos;s linear FEM at its %1 site: RMS / peak over r ≤ 5a</source>
-        <translation>ralat berbanding FEM linear organ yang diisi di tapak %1: RMS / puncak atas r ≤ 5a</translation>
+        <source>%1 stiffening</source>
+        <translation>%1 mengeras</translation>
+    </message>
+    <message>
+        <source>error vs. the filled organ&apos;s linear FEM at its %1 site:</source>
+        <translation>ralat berbanding FEM linear organ yang diisi di tapak %1:</translation>
+    </message>
+    <message>
+        <source>RMS / peak over r ≤ 5a</source>
+        <translation>RMS / puncak atas r ≤ 5a</translation>
     </message>
 </context>
 <context>
@@ -4888,32 +4908,8 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
         <translation>Rujukan tidak dapat dikira: %1</translation>
     </message>
     <message>
-        <source>Force against depth: E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)</source>
-        <translation>Daya berbanding kedalaman: E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)</translation>
-    </message>
-    <message>
         <source>Press Compute: the hyperelastic reference is solved for this tissue (a few seconds).</source>
         <translation>Tekan Kira: rujukan hiperelastik diselesaikan untuk tisu ini (beberapa saat).</translation>
-    </message>
-    <message>
-        <source>Hyperelastic reference (FEM)</source>
-        <translation>Rujukan hiperelastik (FEM)</translation>
-    </message>
-    <message>
-        <source>Linear slope-ring (no knots)</source>
-        <translation>Slope-ring linear (tanpa simpulan)</translation>
-    </message>
-    <message numerus="yes">
-        <source>With %n calibrated knot(s)</source>
-        <translation>
-            <numerusform>Dengan %n simpulan yang ditentukur</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>With the preset&apos;s %n knot(s)</source>
-        <translation>
-            <numerusform>Dengan %n simpulan praset</numerusform>
-        </translation>
     </message>
     <message>
         <source>Depth of the tissue under the tool (mm)</source>
@@ -4946,6 +4942,38 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
     <message>
         <source>Solve the hyperelastic reference for this tissue (a flat punch of the tool&apos;s radius, a few seconds) and fit the stiffening knots to it.</source>
         <translation>Selesaikan rujukan hiperelastik untuk tisu ini (penebuk rata sebesar jejari alat, beberapa saat) dan padankan simpulan pengerasan kepadanya.</translation>
+    </message>
+    <message>
+        <source>Force against depth</source>
+        <translation>Daya berbanding kedalaman</translation>
+    </message>
+    <message>
+        <source>E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)</source>
+        <translation>E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)</translation>
+    </message>
+    <message>
+        <source>Hyperelastic FEM</source>
+        <translation>FEM hiperelastik</translation>
+    </message>
+    <message>
+        <source>Linear model</source>
+        <translation>Model linear</translation>
+    </message>
+    <message>
+        <source>1 knot</source>
+        <translation>1 simpulan</translation>
+    </message>
+    <message>
+        <source>%1 knots</source>
+        <translation>%1 simpulan</translation>
+    </message>
+    <message>
+        <source>the preset&apos;s knot</source>
+        <translation>simpulan praset</translation>
+    </message>
+    <message>
+        <source>the preset&apos;s %1 knots</source>
+        <translation>%1 simpulan praset</translation>
     </message>
 </context>
 <context>

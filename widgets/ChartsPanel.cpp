@@ -5,6 +5,7 @@
 #include "app/report/SpeedAccuracyChart.h"
 #include "widgets/FeelPanel.h"
 #include "widgets/StiffeningPanel.h"
+#include "engine/accuracy/OrganSweep.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -82,6 +83,10 @@ ChartsPanel::ChartsPanel(QWidget* parent) : QWidget(parent) {
     mQuickCheck = new QCheckBox(this);
     mQuickCheck->setObjectName(QStringLiteral("quickSweepCheck"));
     mQuickCheck->setChecked(true);
+    mReferenceCombo = new QComboBox(this);
+    mReferenceCombo->setObjectName(QStringLiteral("sweepReferenceCombo"));
+    mReferenceCombo->addItem(QString(), QStringLiteral("punch"));
+    mReferenceCombo->addItem(QString(), QStringLiteral("fem"));
     mCancelButton = new QPushButton(this);
     mCancelButton->setObjectName(QStringLiteral("cancelSweepButton"));
     connect(mCancelButton, &QPushButton::clicked, this, &ChartsPanel::cancelSweep);
@@ -94,6 +99,7 @@ ChartsPanel::ChartsPanel(QWidget* parent) : QWidget(parent) {
     mShapeLabel = new QLabel(this);
     mShapeCombo = new QComboBox(this);
     mShapeCombo->setObjectName(QStringLiteral("sweepShapeCombo"));
+    mShapeCombo->setSizeAdjustPolicy(QComboBox::AdjustToContents);  // "Stomach, curved site" after "Sphere"
     mShapeLabel->setBuddy(mShapeCombo);
     connect(mShapeCombo, &QComboBox::currentIndexChanged, this, [this](int index) {
         if (index < 0) return;
@@ -117,6 +123,7 @@ ChartsPanel::ChartsPanel(QWidget* parent) : QWidget(parent) {
     auto* runRow = new QHBoxLayout;
     runRow->addWidget(mRunButton);
     runRow->addWidget(mQuickCheck);
+    runRow->addWidget(mReferenceCombo);
     runRow->addWidget(mCancelButton);
     runRow->addStretch(1);
     runRow->addWidget(mShapeLabel);
@@ -172,7 +179,12 @@ void ChartsPanel::retranslateUi() {
                               "(slopes calibrated for the tissue and tool in use). Runs in the background; the full "
                               "sweep (both shapes, four sizes, 1 to 8 rings and the paper's methods) takes seconds."));
     mQuickCheck->setText(tr("&Quick"));
-    mQuickCheck->setToolTip(tr("Sphere only, at 1442 and 3970 vertices, up to 4 rings: about a second."));
+    mQuickCheck->setToolTip(tr("Sphere only, at 1442 and 3970 vertices, up to 4 rings: about a second (against the "
+                               "organ's FEM: the stomach at 1442 vertices, about half a minute)."));
+    mReferenceCombo->setItemText(0, tr("vs. punch"));
+    mReferenceCombo->setItemText(1, tr("vs. organ FEM"));
+    mReferenceCombo->setToolTip(tr("What Run sweep scores against: the flat punch on a half-space, or the FEM of the filled "
+                                   "stomach (linear and hyperelastic) at its thin, thick and curved sites."));
     mCancelButton->setText(tr("&Cancel"));
     mCancelButton->setToolTip(tr("Stop after the model being measured; the points measured so far are shown."));
     mOpenButton->setText(tr("&Open CSV…"));
@@ -270,9 +282,30 @@ SweepDef ChartsPanel::sweepDefinition() const {
     return def;
 }
 
-void ChartsPanel::runSweep() { startSweep(sweepDefinition()); }
+void ChartsPanel::runSweep() {
+    if (mReferenceCombo->currentData().toString() == QLatin1String("fem")) {
+        OrganSweepDef organ;
+        organ.sweep = sweepDefinition();
+        if (mQuickCheck->isChecked()) organ.sizes = {1442};
+        startOrganSweep(organ);
+    } else {
+        startSweep(sweepDefinition());
+    }
+}
 
 bool ChartsPanel::startSweep(const SweepDef& requested) {
+    return startWorker(requested, [](const SweepDef& def) { return palpate::runSweep(def); });
+}
+
+bool ChartsPanel::startOrganSweep(const OrganSweepDef& requested) {
+    return startWorker(requested.sweep, [requested](const SweepDef& def) {
+        OrganSweepDef organ = requested;
+        organ.sweep = def;  // with the panel's progress and cancel
+        return runOrganSweep(organ).sweep;
+    });
+}
+
+bool ChartsPanel::startWorker(const SweepDef& requested, std::function<SweepResult(const SweepDef&)> run) {
     if (mThread) return false;
     mCancel.store(false);
     mRunningDef = requested;
@@ -283,11 +316,11 @@ bool ChartsPanel::startSweep(const SweepDef& requested) {
         QMetaObject::invokeMethod(
             this, [this, fraction, text = QString::fromStdString(line)] { onProgress(fraction, text); }, Qt::QueuedConnection);
     };
-    mThread = QThread::create([this, def] {
+    mThread = QThread::create([this, def, run = std::move(run)] {
         SweepResult result;
         QString error;
         try {
-            result = palpate::runSweep(def);
+            result = run(def);
         } catch (const std::exception& e) {
             error = QString::fromStdString(e.what());
         }
@@ -377,6 +410,7 @@ void ChartsPanel::updateButtons() {
     const bool running = isRunning();
     mRunButton->setEnabled(!running);
     mQuickCheck->setEnabled(!running);
+    mReferenceCombo->setEnabled(!running);
     mCancelButton->setEnabled(running && !mCancel.load());
     mOpenButton->setEnabled(!running);
     mSaveButton->setEnabled(!running && !points().empty());

@@ -16,6 +16,7 @@
 #include <QWidget>
 
 #include <atomic>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -29,6 +30,7 @@ class QThread;
 
 namespace palpate {
 
+struct OrganSweepDef;
 class FeelPanel;
 class SpeedAccuracyChart;
 class StiffeningPanel;
@@ -59,6 +61,8 @@ public:
     /// Starts `def` on a worker thread; progress and the points come back by queued calls. Its
     /// progress and cancel members are the panel's own. False (nothing started) while one runs.
     bool startSweep(const SweepDef& def);
+    /// The same for the sweep against the organ's FEM (docs/accuracy.md, "The organ's own shape").
+    bool startOrganSweep(const OrganSweepDef& def);
     bool isRunning() const { return mThread != nullptr; }
 
     /// Reads a sweep CSV (and its tissue from FILE.json next to it, when there is one). On failure
@@ -82,7 +86,8 @@ signals:
     void sweepFailed(const QString& error);
 
 public slots:
-    /// The Run sweep button: startSweep(sweepDefinition()).
+    /// The Run sweep button: startSweep(sweepDefinition()), or startOrganSweep when the reference
+    /// box says organ FEM (Quick: the stomach at 1442 vertices).
     void runSweep();
     /// Asks a running sweep to stop after the model it is measuring.
     void cancelSweep();
@@ -105,6 +110,8 @@ private:
     void updateButtons();
     void setStatus(const QString& text, bool problem = false);
     void onProgress(double fraction, const QString& line);
+    /// Runs `run` on `requested` (with the panel's progress and cancel) on a worker thread.
+    bool startWorker(const SweepDef& requested, std::function<SweepResult(const SweepDef&)> run);
     void onFinished(const SweepResult& result, const QString& error);
 
     SpeedAccuracyChart* mChart = nullptr;
@@ -113,6 +120,7 @@ private:
     QTabWidget* mTabs = nullptr;
     QPushButton* mRunButton = nullptr;
     QCheckBox* mQuickCheck = nullptr;
+    QComboBox* mReferenceCombo = nullptr;
     QPushButton* mCancelButton = nullptr;
     QPushButton* mOpenButton = nullptr;
     QPushButton* mSaveButton = nullptr;

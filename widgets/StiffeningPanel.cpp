@@ -159,12 +159,16 @@ void StiffeningPanel::rebuild() {
         delete axis;
     }
     const HyperelasticMaterial law = hyperelasticMaterialOf(mContact);
-    c->setTitle(tr("Force against depth: E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)")
-                    .arg(mContact.material.youngsModulusNPerMm2 * 1000.0, 0, 'g', 3)
-                    .arg(mContact.material.poissonRatio, 0, 'g', 3)
-                    .arg(mContact.toolRadiusMm, 0, 'g', 3)
-                    .arg(QString::fromLatin1(hyperelasticLawName(law.law).data()))
-                    .arg(mContact.stiffeningExponent, 0, 'g', 3));
+    // Two short lines, so that a dock's width holds them.
+    c->setTitle(QStringLiteral("<b>%1</b><br><span style=\"font-size:small; font-weight:normal\">%2</span>")
+                    .arg(tr("Force against depth").toHtmlEscaped(),
+                         tr("E = %1 kPa, ν = %2, a = %3 mm, %4 (b = %5)")
+                             .arg(mContact.material.youngsModulusNPerMm2 * 1000.0, 0, 'g', 3)
+                             .arg(mContact.material.poissonRatio, 0, 'g', 3)
+                             .arg(mContact.toolRadiusMm, 0, 'g', 3)
+                             .arg(QString::fromLatin1(hyperelasticLawName(law.law).data()))
+                             .arg(mContact.stiffeningExponent, 0, 'g', 3)
+                             .toHtmlEscaped()));
     if (!mReference || mReference->curve.empty()) {
         c->legend()->setVisible(false);
         if (!mThread && !mStatusLabel->text().contains(QLatin1String("changed")))
@@ -175,18 +179,20 @@ void StiffeningPanel::rebuild() {
     const double m1 = mParams.slopeMagnitudeMmPerN[0];
     const double deepest = curve.back().depthMm;
     auto* reference = new QScatterSeries;
-    reference->setName(tr("Hyperelastic reference (FEM)"));
+    reference->setName(tr("Hyperelastic FEM"));
     reference->setMarkerSize(8.0);
     auto* linear = new QLineSeries;
-    linear->setName(tr("Linear slope-ring (no knots)"));
+    linear->setName(tr("Linear model"));
     auto* knots = new QLineSeries;
-    knots->setName(tr("With %n calibrated knot(s)", "", mReference->knots));
+    // No plural translation is loaded for English: the two forms are spelled out.
+    knots->setName(mReference->knots == 1 ? tr("1 knot") : tr("%1 knots").arg(mReference->knots));
     SlopeRingParams calibrated = mParams;
     applyStiffening(*mReference, calibrated);
     QLineSeries* inUse = nullptr;
     if (mParams.stiffeningKnots > 0) {
         inUse = new QLineSeries;
-        inUse->setName(tr("With the preset's %n knot(s)", "", mParams.stiffeningKnots));
+        inUse->setName(mParams.stiffeningKnots == 1 ? tr("the preset's knot")
+                                                    : tr("the preset's %1 knots").arg(mParams.stiffeningKnots));
     }
     double forceHi = 0.0;
     for (const StiffeningCurvePoint& p : curve) {

@@ -16,7 +16,9 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <iomanip>
+#include <sstream>
 #include <optional>
 #include <iostream>
 
@@ -24,22 +26,26 @@ namespace palpate::cli {
 
 int calibrateCommand(const std::vector<std::string>& words) {
     std::vector<std::string> options{"mesh", kMeshUnitOption, "rings", "vertex", "out", "name", "description", "source",
-                                     "stiffening-source", "nonlinear-depth"};
+                                     "stiffening-source", "nonlinear-depth", "csv"};
     for (const std::string& o : toolContactOptionNames()) options.push_back(o);
     const Args args(words, {"json", "fem", "nonlinear"}, options);
     if (!args.ok()) {
         std::cerr << "palpate-cli calibrate: " << args.error() << "\n";
         return 2;
     }
-    if (const auto out = args.option("out")) {
-        std::vector<std::pair<std::string, std::string>> inputs;
-        if (const auto preset = args.option("preset")) inputs.emplace_back(*preset, "preset");
-        if (const auto mesh = args.option("mesh")) inputs.emplace_back(*mesh, "mesh");
-        if (const std::string refused = outputIsAnInput("out", *out, inputs); !refused.empty()) {
-            std::cerr << "palpate-cli calibrate: " << refused << "\n";
-            return 2;
+    // No output may overwrite an input (docs/reliability.md).
+    for (const char* output : {"out", "csv"})
+        if (const auto out = args.option(output)) {
+            std::vector<std::pair<std::string, std::string>> inputs;
+            if (const auto preset = args.option("preset")) inputs.emplace_back(*preset, "preset");
+            if (const auto mesh = args.option("mesh")) inputs.emplace_back(*mesh, "mesh");
+            if (output == std::string("csv"))
+                if (const auto preset = args.option("out")) inputs.emplace_back(*preset, "out");
+            if (const std::string refused = outputIsAnInput(output, *out, inputs); !refused.empty()) {
+                std::cerr << "palpate-cli calibrate: " << refused << "\n";
+                return 2;
+            }
         }
-    }
     const ToolContactChoice choice = toolContactFromArgs(args);
     if (!choice.error.empty()) {
         std::cerr << "palpate-cli calibrate: " << choice.error << "\n";
@@ -140,6 +146,24 @@ int calibrateCommand(const std::vector<std::string>& words) {
         }
     }
     const SlopeRingParams& p = calibrated.params;
+    // --csv FILE (with --nonlinear): the reference curve beside the linear and the knotted model.
+    if (const auto csv = args.option("csv")) {
+        if (!stiffening) {
+            std::cerr << "palpate-cli calibrate: --csv goes with --nonlinear (it writes the stiffening curve)\n";
+            return 2;
+        }
+        std::ostringstream text;
+        text << "depth_mm,reference_force_n,ratio,linear_force_n,knot_force_n,fitted\n";
+        for (const auto& c : stiffening->curve)
+            text << c.depthMm << ',' << c.forceN << ',' << c.ratio << ',' << c.depthMm / p.slopeMagnitudeMmPerN[0] << ','
+                 << knotForceAtDepthN(p, c.depthMm) << ',' << (c.knot ? 1 : 0) << '\n';
+        std::ofstream out(*csv);
+        out << text.str();
+        if (!out) {
+            std::cerr << "palpate-cli calibrate: " << *csv << ": cannot be written\n";
+            return 1;
+        }
+    }
     if (args.flag("json")) {
         nlohmann::ordered_json j;
         j["mesh"] = meshPath;

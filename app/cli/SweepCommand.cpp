@@ -164,7 +164,8 @@ int sweepCommand(const std::vector<std::string>& words) {
 #ifdef PALPATE_HAVE_CHARTS
     if (const auto png = args.option("png")) {
         std::string error;
-        if (!renderSweepChartPng(result.points, def.contact, *png, &error, 1400, 1500)) {
+        // One pane per shape, or per site of the organ sweep (three): each needs its height.
+        if (!renderSweepChartPng(result.points, def.contact, *png, &error, 1400, organ ? 2400 : 1500)) {
             std::cerr << "palpate-cli sweep: " << *png << ": " << error << "\n";
             return 1;
         }

@@ -180,7 +180,9 @@ QString SpeedAccuracyChart::legendHtml() const {
         if (!s->property("modelSeries").toBool()) continue;
         const QString name = s->name();
         const QColor color = seriesColor(name.toStdString());
-        if (name.startsWith(QLatin1String("slope-ring ")))
+        if (name.startsWith(QLatin1String("slope-ring ")) && name.endsWith(QLatin1String("(stiffening)")))
+            rings << mark(color, QStringLiteral("●"), tr("%1 stiffening").arg(name.mid(11).section(QLatin1Char(' '), 0, 0)));
+        else if (name.startsWith(QLatin1String("slope-ring ")))
             rings << mark(color, QStringLiteral("●"), name.mid(11).section(QLatin1Char(' '), 0, 0));
         else if (name.endsWith(QLatin1String(" (paper)")))
             paper << mark(color, QStringLiteral("◆"), name.chopped(8));
@@ -208,6 +210,8 @@ QColor SpeedAccuracyChart::seriesColor(const std::string& series) {
     static const QColor kRings[] = {QColor(0xb5, 0xde, 0x2b), QColor(0x6e, 0xce, 0x58), QColor(0x35, 0xb7, 0x79),
                                     QColor(0x1f, 0x9e, 0x89), QColor(0x26, 0x82, 0x8e), QColor(0x31, 0x68, 0x8e),
                                     QColor(0x3e, 0x49, 0x89), QColor(0x48, 0x28, 0x78)};
+    // The slope-ring model with stiffening knots (the organ sweep): near-black, apart from the scale.
+    if (series.rfind("slope-ring ", 0) == 0 && series.find("(stiffening)") != std::string::npos) return QColor(0x20, 0x20, 0x20);
     if (series.rfind("slope-ring ", 0) == 0) {
         const int rings = std::atoi(series.c_str() + 11);
         return kRings[std::clamp(rings, 1, 8) - 1];
@@ -259,9 +263,10 @@ QString SpeedAccuracyChart::titleText() const {
     // Rich text: the shape in bold, then the tissue and what the error is measured against, smaller
     // and on lines short enough for a dock.
     const std::string site = shownSite();
-    QStringList lines{site.empty() ? tr("error vs. the flat punch: RMS / peak over r ≤ 5a")
-                                   : tr("error vs. the filled organ's linear FEM at its %1 site: RMS / peak over r ≤ 5a")
-                                         .arg(QString::fromStdString(site))};
+    QStringList lines = site.empty() ? QStringList{tr("error vs. the flat punch: RMS / peak over r ≤ 5a")}
+                                     : QStringList{tr("error vs. the filled organ's linear FEM at its %1 site:")
+                                                       .arg(QString::fromStdString(site)),
+                                                   tr("RMS / peak over r ≤ 5a")};
     if (mContact)
         lines.prepend(tr("E = %1 kPa, ν = %2, tool radius a = %3 mm")
                           .arg(compact(mContact->material.youngsModulusNPerMm2 * 1000.0),
@@ -277,10 +282,6 @@ QString SpeedAccuracyChart::titleText() const {
 void SpeedAccuracyChart::rebuild() {
     QChart* c = chart();
     c->removeAllSeries();
-    for (QAbstractAxis* axis : c->axes()) {
-        c->removeAxis(axis);
-        delete axis;
-    }
     mParetoMarks = 0;
     mHighlightMarks = 0;
 
@@ -295,23 +296,29 @@ void SpeedAccuracyChart::rebuild() {
         errorHi = std::max(errorHi, p.error.displacementError * 100.0);
         any = true;
     }
-    auto* x = new QLogValueAxis;
-    x->setObjectName(QStringLiteral("tickAxis"));
-    x->setBase(10.0);
-    x->setLabelFormat(QStringLiteral("%g"));
+    // The two axes are made once and kept: axes removed and made anew while the chart is hidden
+    // (a dock's tab behind another) leave their old labels painted in Qt Charts 6.4.
+    if (c->axes().isEmpty()) {
+        auto* tick = new QLogValueAxis;
+        tick->setObjectName(QStringLiteral("tickAxis"));
+        tick->setBase(10.0);
+        tick->setLabelFormat(QStringLiteral("%g"));
+        c->addAxis(tick, Qt::AlignBottom);
+        auto* error = new QValueAxis;
+        error->setObjectName(QStringLiteral("errorAxis"));
+        error->setLabelFormat(QStringLiteral("%.0f"));
+        c->addAxis(error, Qt::AlignLeft);
+    }
+    auto* x = qobject_cast<QLogValueAxis*>(c->axes(Qt::Horizontal).front());
+    auto* y = qobject_cast<QValueAxis*>(c->axes(Qt::Vertical).front());
     x->setMinorTickCount(8);
     x->setTitleText(tr("Haptic tick cost (µs, log scale)"));
     // Bounds at 1, 2, 5 x 10^k: a whole decade either side would squeeze the points together.
     x->setRange(any ? niceLogBound(tickLo * 0.9, false) : 0.1, any ? niceLogBound(tickHi * 1.1, true) : 100.0);
-    auto* y = new QValueAxis;
-    y->setObjectName(QStringLiteral("errorAxis"));
     y->setTitleText(tr("Displacement error (%)"));
-    y->setLabelFormat(QStringLiteral("%.0f"));
     y->setRange(0.0, any ? std::max(errorHi * 1.08, 1.0) : 100.0);
     y->applyNiceNumbers();
     y->setMinorTickCount(1);
-    c->addAxis(x, Qt::AlignBottom);
-    c->addAxis(y, Qt::AlignLeft);
     c->setTitle(titleText());
     c->legend()->setVisible(mLegendShown && any);
     applyFonts();

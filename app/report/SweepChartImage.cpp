@@ -30,23 +30,24 @@ bool renderSweepChartPng(const std::vector<SweepPoint>& points, const std::optio
     if (!application.problem().empty()) return fail(application.problem());
 
     {
-        // One chart per shape, one above the other (the log tick axis needs the width); the axes span
-        // every point, so the two compare directly.
+        // One chart per shape (and per site of the organ sweep), one above the other (the log tick
+        // axis needs the width); the axes span every point, so the charts compare directly.
         QWidget canvas;
         canvas.setAutoFillBackground(true);
         canvas.setPalette(QPalette(Qt::white));
         auto* layout = new QVBoxLayout(&canvas);
         layout->setContentsMargins(0, 0, 0, 0);
         layout->setSpacing(0);
-        std::vector<GeneratedShape> shapes;
+        std::vector<std::pair<GeneratedShape, std::string>> panes;
         for (const SweepPoint& p : points)
-            if (std::find(shapes.begin(), shapes.end(), p.shape) == shapes.end()) shapes.push_back(p.shape);
-        if (shapes.empty()) shapes.push_back(GeneratedShape::Sphere);
-        for (std::size_t i = 0; i < shapes.size(); ++i) {
+            if (std::find(panes.begin(), panes.end(), std::pair{p.shape, p.site}) == panes.end()) panes.emplace_back(p.shape, p.site);
+        if (panes.empty()) panes.emplace_back(GeneratedShape::Sphere, std::string());
+        for (const auto& [shape, site] : panes) {
             auto* chart = new SpeedAccuracyChart(&canvas);
             chart->setEmptyHint(QObject::tr("No sweep points to draw"));
             chart->setPoints(points);
-            chart->setShape(shapes[i]);
+            chart->setShape(shape);
+            chart->setSite(site);
             chart->setToolContact(contact);
             chart->setFrameShape(QFrame::NoFrame);
             chart->setTextScale(std::clamp(widthPx / 1000.0, 1.0, 3.0));

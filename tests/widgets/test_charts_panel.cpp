@@ -3,6 +3,7 @@
 // writes; a real (tiny) sweep run off the GUI thread to completion, and cancelled; the dock in the
 // main window, loading a sweep CSV when first shown.
 #include "app/gui/MainWindow.h"
+#include "engine/accuracy/OrganSweep.h"
 #include "engine/accuracy/SweepCsv.h"
 #include "widgets/ChartsPanel.h"
 #include "widgets/ParameterPanel.h"
@@ -222,6 +223,7 @@ TEST(ChartsPanel, HighlightsAModelOtherThanSlopeRingByItsName) {
     setPresetModel(applied, *modelDefForName("radius-of-influence"));
     panel.setCurrentConfiguration(applied, ParameterPanel::toolContactOf(applied), 1442);
     EXPECT_EQ(panel.chart()->highlightMarkCount(), 1);
+    EXPECT_EQ(panel.chart()->chart()->axes().size(), 2);  // one pair of axes, however often it is redrawn
     EXPECT_TRUE(panel.chart()->seriesNames().contains(QStringLiteral("radius-of-influence")));
 }
 
@@ -401,6 +403,8 @@ TEST(ChartsPanel, OrganSweepSitesAreChosenInTheShapeList) {
     combo->setCurrentIndex(2);
     EXPECT_EQ(panel.chart()->shownSite(), "curved");
     EXPECT_TRUE(panel.chart()->chart()->title().contains(QStringLiteral("curved"))) << panel.chart()->chart()->title().toStdString();
+    // One pair of axes, however often the chart is drawn again.
+    EXPECT_EQ(panel.chart()->chart()->axes().size(), 2);
     // The unmeasured point is not drawn: two slope-ring series only.
     EXPECT_EQ(panel.chart()->seriesNames().filter(QStringLiteral("proposed")).size(), 0);
 }
@@ -449,4 +453,35 @@ TEST(ChartsPanel, StiffeningTabDrawsTheReferenceBesideBothModels) {
     EXPECT_FALSE(stiff->reference());
     EXPECT_TRUE(stiff->seriesNames().isEmpty());
     EXPECT_TRUE(stiff->statusText().contains(QStringLiteral("changed"))) << stiff->statusText().toStdString();
+}
+
+// Run sweep against the organ's FEM from the dock: off the GUI thread, its sites in the shape list.
+TEST(ChartsPanel, RunsTheOrganSweepOffTheGuiThread) {
+    ChartsPanel panel;
+    auto* reference = panel.findChild<QComboBox*>(QStringLiteral("sweepReferenceCombo"));
+    ASSERT_NE(reference, nullptr);
+    ASSERT_EQ(reference->count(), 2);
+    EXPECT_EQ(reference->itemData(1).toString(), QStringLiteral("fem"));
+    OrganSweepDef def;
+    def.sweep.contact.material = {4.34e-3, 0.45};
+    def.sweep.maxRings = 1;
+    def.sweep.paperMethods = false;
+    def.sweep.otherModels = false;
+    def.sweep.timingRepeats = 1;
+    def.sweep.minMeasureMs = 0.5;
+    def.sizes = {1442};
+    def.reference.maxDepthMm = 1.0;
+    def.reference.hyperelasticSteps = 2;
+    QSignalSpy finished(&panel, &ChartsPanel::sweepFinished);
+    const auto started = std::chrono::steady_clock::now();
+    ASSERT_TRUE(panel.startOrganSweep(def));
+    EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::milliseconds(200));
+    EXPECT_FALSE(reference->isEnabled());  // not while it runs
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 180000);
+    EXPECT_FALSE(finished.at(0).at(0).toBool());
+    EXPECT_EQ(finished.at(0).at(1).toInt(), 6);  // 1 ring and 1 ring with knots, at 3 sites
+    EXPECT_TRUE(reference->isEnabled());
+    auto* combo = panel.findChild<QComboBox*>(QStringLiteral("sweepShapeCombo"));
+    ASSERT_EQ(combo->count(), 3);
+    EXPECT_TRUE(combo->itemText(1).contains(QStringLiteral("thick")));
 }
