@@ -2185,6 +2185,22 @@ Tick %7 µs, %8-mal schneller als previous</translation>
         <source>%1 of %2 candidates could not be measured (n/a): the row&apos;s tooltip says why.</source>
         <translation>%1 von %2 Kandidaten konnten nicht gemessen werden (k. A.): der Tooltip der Zeile sagt, warum.</translation>
     </message>
+    <message>
+        <source>the plan&apos;s press</source>
+        <translation>der Druck des Plans</translation>
+    </message>
+    <message>
+        <source>Pressing the hyperelastic reference for linear or stiffening tissue…</source>
+        <translation>Die hyperelastische Referenz wird gedrückt: lineares oder versteifendes Gewebe…</translation>
+    </message>
+    <message>
+        <source>The hyperelastic reference failed: %1</source>
+        <translation>Die hyperelastische Referenz scheiterte: %1</translation>
+    </message>
+    <message>
+        <source>Tissue: %1</source>
+        <translation>Gewebe: %1</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MainWindow</name>
@@ -2797,6 +2813,14 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>Finish ends a running detect-lumps examination</source>
         <translation>Beenden beendet eine laufende Untersuchung „Knoten finden“</translation>
+    </message>
+    <message>
+        <source>, %1 stiffening knots</source>
+        <translation>, %1 Versteifungsknoten</translation>
+    </message>
+    <message>
+        <source>, linear tissue</source>
+        <translation>, lineares Gewebe</translation>
     </message>
 </context>
 <context>

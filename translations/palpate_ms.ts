@@ -2182,6 +2182,22 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
         <source>%1 of %2 candidates could not be measured (n/a): the row&apos;s tooltip says why.</source>
         <translation>%1 daripada %2 calon tidak dapat diukur (t/b): petua alat baris menerangkan sebabnya.</translation>
     </message>
+    <message>
+        <source>the plan&apos;s press</source>
+        <translation>tekanan pelan</translation>
+    </message>
+    <message>
+        <source>Pressing the hyperelastic reference for linear or stiffening tissue…</source>
+        <translation>Menekan rujukan hiperelastik untuk tisu linear atau mengeras…</translation>
+    </message>
+    <message>
+        <source>The hyperelastic reference failed: %1</source>
+        <translation>Rujukan hiperelastik gagal: %1</translation>
+    </message>
+    <message>
+        <source>Tissue: %1</source>
+        <translation>Tisu: %1</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MainWindow</name>
@@ -2794,6 +2810,14 @@ pemapar %5</translation>
     <message>
         <source>Finish ends a running detect-lumps examination</source>
         <translation>Tamat menamatkan pemeriksaan kesan ketulan yang sedang berjalan</translation>
+    </message>
+    <message>
+        <source>, %1 stiffening knots</source>
+        <translation>, %1 simpulan pengerasan</translation>
+    </message>
+    <message>
+        <source>, linear tissue</source>
+        <translation>, tisu linear</translation>
     </message>
 </context>
 <context>

@@ -82,6 +82,8 @@ struct LodPanel::RunResult {
     std::vector<LodCandidate> candidates;
     std::size_t plannedCandidates = 0;
     bool measureCancelled = false;
+    std::optional<StiffeningCalibration> stiffening;  ///< the hyperelastic punch, knots fitted
+    QString stiffeningError;
 };
 
 QString LodPanel::ringsText(int rings) {
@@ -322,6 +324,7 @@ void LodPanel::setScene(const QString& meshPath, std::shared_ptr<const TissueMes
         mMeshPath = meshPath;
         mMesh = std::move(mesh);
         mCandidates.clear();
+        mStiffeningReference.reset();
         mCandidatesMeshPath.clear();
         mLevelsText.clear();
         mLevelsProblem = false;
@@ -353,7 +356,33 @@ void LodPanel::setNeedsFields(const LodNeeds& needs) {
 
 void LodPanel::setMeasureDefinition(const LodMeasureDef& def) { mMeasureDef = def; }
 
-void LodPanel::setToolContact(const ToolContact& contact) { mMeasureDef.contact = contact; }
+void LodPanel::setToolContact(const ToolContact& contact) {
+    const ToolContact& was = mMeasureDef.contact;
+    const bool same = contact.material.youngsModulusNPerMm2 == was.material.youngsModulusNPerMm2 &&
+                      contact.material.poissonRatio == was.material.poissonRatio &&
+                      contact.toolRadiusMm == was.toolRadiusMm && contact.stiffeningExponent == was.stiffeningExponent;
+    mMeasureDef.contact = contact;
+    if (!same && mStiffeningReference) {
+        mStiffeningReference.reset();  // solved for another tissue
+        replan();
+    }
+}
+
+void LodPanel::setSceneDemands(std::vector<ExerciseDemand> demands) {
+    mDemands = std::move(demands);
+    replan();
+}
+
+std::vector<SceneDepth> LodPanel::sceneDepths() const {
+    std::vector<SceneDepth> depths;
+    const double m1 = punchFirstSlopeMmPerN(mMeasureDef.contact);
+    for (const ExerciseDemand& d : mDemands)
+        depths.push_back({d.what, d.depthMm > 0.0 || !mStiffeningReference
+                                      ? d.depthMm
+                                      : curveDepthAtForceMm(mStiffeningReference->curve, d.forceN, m1)});
+    if (depths.empty()) depths.push_back({tr("the plan's press").toStdString(), mMeasureDef.press.toolDepthMm});
+    return depths;
+}
 
 QStringList LodPanel::needsProblems() const {
     // validateLodNeeds is the one check (files, the CLI and here agree); the words are the panel's,
@@ -450,7 +479,8 @@ bool LodPanel::plan() {
     const LodMeasureDef def = mMeasureDef;
     const std::atomic<bool>* cancelFlag = &mCancel;
 
-    mThread = QThread::create([this, generation, path, mesh, def, cancelFlag] {
+    const std::vector<ExerciseDemand> demands = mDemands;
+    mThread = QThread::create([this, generation, path, mesh, def, cancelFlag, demands] {
         auto result = std::make_shared<RunResult>();
         result->generation = generation;
         result->meshPath = QString::fromStdString(path);
@@ -537,6 +567,27 @@ bool LodPanel::plan() {
                     cancelFlag);
                 result->candidates = std::move(measured.candidates);
                 result->measureCancelled = measured.cancelled;
+            }
+            // Linear or stiffening tissue (docs/lod.md, "Linear or nonlinear"): the hyperelastic
+            // punch as deep as the scene presses (the linear depth bounds it), 0.6 to 1.5 radii.
+            if (!cancelFlag->load()) {
+                post(1.0, tr("Pressing the hyperelastic reference for linear or stiffening tissue…"));
+                try {
+                    StiffeningCalibrationDef stiff;
+                    stiff.material = hyperelasticMaterialOf(def.contact);
+                    stiff.toolRadiusMm = def.contact.toolRadiusMm;
+                    // Coarser than the CLI's (a/h = 4): a plan in the window stays seconds; the
+                    // ratio cancels most of the mesh's error either way.
+                    stiff.aOverH = 3;
+                    stiff.maxStepOverRadius = 0.05;
+                    const double m1 = punchFirstSlopeMmPerN(def.contact);
+                    double deepest = def.press.toolDepthMm;
+                    for (const ExerciseDemand& d : demands) deepest = std::max(deepest, d.depthMm > 0.0 ? d.depthMm : d.forceN * m1);
+                    setStiffeningDepths(stiff, std::clamp(1.05 * deepest / stiff.toolRadiusMm, 0.6, 1.5));
+                    result->stiffening = knotsFromCurve(calibrateStiffening(stiff).curve, m1);
+                } catch (const std::exception& e) {
+                    result->stiffeningError = QString::fromStdString(e.what());
+                }
             }
         } catch (const std::exception& e) {
             result->error = QString::fromStdString(e.what());
@@ -641,6 +692,9 @@ void LodPanel::onFinished(const std::shared_ptr<RunResult>& result) {
         mCandidatesMeshPath = result->meshPath;
         fillTable();
     }
+    if (result->stiffening) mStiffeningReference = std::move(result->stiffening);
+    if (!result->stiffeningError.isEmpty())
+        mLevelsText += QStringLiteral(" ") + tr("The hyperelastic reference failed: %1").arg(result->stiffeningError);
     mLevelsLabel->setText(mLevelsText);
     mLevelsLabel->setStyleSheet(mLevelsProblem ? QStringLiteral("color: #c62828;") : QString());
     replan();
@@ -653,6 +707,13 @@ void LodPanel::onFinished(const std::shared_ptr<RunResult>& result) {
 
 void LodPanel::replan() {
     mPlan = planLod(mCandidates, mNeeds);
+    mStiffeningChoice.reset();
+    if (mStiffeningReference && validateLodNeeds(mNeeds).empty()) {
+        SlopeRingParams knotted;
+        knotted.slopeMagnitudeMmPerN[0] = punchFirstSlopeMmPerN(mMeasureDef.contact);
+        applyStiffening(*mStiffeningReference, knotted);
+        mStiffeningChoice = chooseStiffening(*mStiffeningReference, knotted, sceneDepths(), mNeeds);
+    }
     updateVerdicts();
     updateSummary();
     updateButtons();
@@ -777,8 +838,12 @@ void LodPanel::updateSummary() {
     // Invalid targets are named by the problem line under the fields, not here again.
     const QString reason =
         QString::fromStdString(mCandidates.empty() || !mPlan.error.empty() ? std::string() : mPlan.reason);
-    mReasonLabel->setText(reason.isEmpty() ? QString() : tr("Why: %1").arg(reason));
-    mReasonLabel->setVisible(!reason.isEmpty());
+    QString why = reason.isEmpty() ? QString() : tr("Why: %1").arg(reason);
+    if (!why.isEmpty() && mStiffeningChoice)
+        why += QStringLiteral("\n") + tr("Tissue: %1").arg(QString::fromStdString(
+                                          mStiffeningChoice->error.empty() ? mStiffeningChoice->reason : mStiffeningChoice->error));
+    mReasonLabel->setText(why);
+    mReasonLabel->setVisible(!why.isEmpty());
     mLevelsLabel->setText(mLevelsText);
     mLevelsLabel->setVisible(!mLevelsText.isEmpty());
 }

@@ -11,6 +11,8 @@
 #include "engine/lod/LodMeasure.h"
 #include "engine/lod/LodNeeds.h"
 #include "engine/lod/LodPlanner.h"
+#include "engine/lod/StiffeningChoice.h"
+#include "engine/exercise/ExerciseDemands.h"
 
 #include <QElapsedTimer>
 #include <QString>
@@ -63,6 +65,14 @@ public:
     const LodMeasureDef& measureDefinition() const { return mMeasureDef; }
     /// Shorthand: only the tissue and tool of the measure definition.
     void setToolContact(const ToolContact& contact);
+    /// The presses the scene asks for (an exercise's, engine/exercise/ExerciseDemands.h); none:
+    /// the plan's own press. The next plan judges linear against stiffening tissue at them
+    /// (docs/lod.md, "Linear or nonlinear"), and a change re-decides at once when it can.
+    void setSceneDemands(std::vector<ExerciseDemand> demands);
+    /// The last plan's hyperelastic reference (its curve), when it was solved.
+    const std::optional<StiffeningCalibration>& stiffeningReference() const { return mStiffeningReference; }
+    /// Linear or stiffening tissue for the current needs and demands (nullopt before a plan).
+    const std::optional<StiffeningChoice>& stiffeningChoice() const { return mStiffeningChoice; }
 
     /// Starts loadOrGenerateLevels + measureLodCandidates on a worker thread; the progress bar,
     /// its text and Cancel follow it. Does nothing (false) while a plan for this scene runs,
@@ -138,6 +148,8 @@ private:
     /// Fills the two fields without reacting to it (the caller replans once).
     void setNeedsFields(const LodNeeds& needs);
     void replan();
+    /// The depths of the scene's demands on the reference curve (forces turned into depths).
+    std::vector<SceneDepth> sceneDepths() const;
     void fillTable();
     void updateVerdicts();
     void updateSummary();
@@ -183,6 +195,9 @@ private:
 
     // The measured table and the plan for it.
     std::vector<LodCandidate> mCandidates;
+    std::vector<ExerciseDemand> mDemands;
+    std::optional<StiffeningCalibration> mStiffeningReference;  ///< knots fitted to the plan's |m1|
+    std::optional<StiffeningChoice> mStiffeningChoice;
     QString mCandidatesMeshPath;  ///< the mesh file the table was measured on (its cache folder)
     LodPlan mPlan;
     bool mLevelsFromCache = false;

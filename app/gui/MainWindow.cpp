@@ -14,6 +14,7 @@
 #include "widgets/GuardedLoad.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/LodPanel.h"
+#include "engine/accuracy/StiffeningCalibration.h"
 #include "widgets/MeshImportDialog.h"
 #include "widgets/MeshSizeText.h"
 #include "widgets/PreferencesDialog.h"
@@ -1274,14 +1275,29 @@ void MainWindow::createLodDock() {
             }
         TissuePreset preset = mParameterPanel->preset();
         preset.params.ringCount = rings;
+        // Linear or stiffening tissue as the plan decided (docs/lod.md): the knots fitted to this
+        // preset's |m1|, or none.
+        QString tissue;
+        if (const auto& choice = mLodPanel->stiffeningChoice(); choice && choice->error.empty() && mLodPanel->stiffeningReference()) {
+            if (choice->nonlinear) {
+                applyStiffening(knotsFromCurve(mLodPanel->stiffeningReference()->curve, preset.params.slopeMagnitudeMmPerN[0]),
+                                preset.params);
+                tissue = tr(", %1 stiffening knots").arg(preset.params.stiffeningKnots);
+            } else {
+                preset.params.stiffeningKnots = 0;
+                tissue = tr(", linear tissue");
+            }
+        }
         mParameterPanel->setPreset(preset);
         if (const QString error = applyPreset(preset); !error.isEmpty()) {
             QMessageBox::warning(this, tr("Cannot use this level"), error);
             return;
         }
         statusBar()->showMessage(overridden ? tr("Using your choice: %1, %2 rings (overrides the plan)")
-                                                   .arg(QFileInfo(meshPath).fileName()).arg(rings)
-                                            : tr("Using the plan's choice: %1, %2 rings").arg(QFileInfo(meshPath).fileName()).arg(rings),
+                                                       .arg(QFileInfo(meshPath).fileName())
+                                                       .arg(rings) + tissue
+                                            : tr("Using the plan's choice: %1, %2 rings").arg(QFileInfo(meshPath).fileName()).arg(rings) +
+                                                  tissue,
                                  8000);
     });
     connect(mLodPanel, &LodPanel::storeNeedsRequested, this, [this](const LodNeeds& needs) {
@@ -1308,6 +1324,8 @@ void MainWindow::updateLodScene() {
         source = tr("exercise '%1'").arg(QString::fromStdString(exercise->exercise.name));
     }
     mLodPanel->setToolContact(ParameterPanel::toolContactOf(mSession->preset()));
+    mLodPanel->setSceneDemands(exercise && mSession->exercisePhysics() == exercise->geometry ? exerciseDemands(exercise->exercise)
+                                                                                           : std::vector<ExerciseDemand>{});
     if (!ownLevel && mesh) mLodSceneMesh = mesh;  // the source the levels are made from
     mLodPanel->setScene(ownLevel || !mesh ? mLodPanel->meshPath() : path, mLodSceneMesh, needs, source);
 }

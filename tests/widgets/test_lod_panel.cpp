@@ -136,6 +136,39 @@ TEST_F(LodPanelTest, PlansOffTheGuiThreadAndHighlightsThePlannersChoice) {
     EXPECT_TRUE(panel.statusText().contains(QStringLiteral("Planned")));
 }
 
+// Linear or stiffening tissue (docs/lod.md): judged at the scene's presses after the plan, and
+// re-decided at once when the targets or the presses change.
+TEST_F(LodPanelTest, DecidesLinearOrStiffeningTissueAtTheScenesPresses) {
+    LodPanel panel;
+    ToolContact stiffening;
+    stiffening.material = {4.34e-3, 0.45};
+    stiffening.stiffeningExponent = 5.0;
+    panel.setToolContact(stiffening);
+    panel.setSceneDemands({{"press target 1 (up to 1 N)", 1.0, 0.0}});
+    EXPECT_FALSE(panel.stiffeningChoice());  // nothing solved yet
+    planToEnd(panel, {0.05, 100000.0});
+    ASSERT_TRUE(panel.stiffeningReference());
+    ASSERT_TRUE(panel.stiffeningChoice());
+    EXPECT_TRUE(panel.stiffeningChoice()->error.empty()) << panel.stiffeningChoice()->error;
+    EXPECT_TRUE(panel.stiffeningChoice()->nonlinear);
+    EXPECT_GT(panel.stiffeningChoice()->linearErrorFraction, 0.05);
+    EXPECT_EQ(panel.stiffeningChoice()->worstDepthWhat, "press target 1 (up to 1 N)");
+    const auto* reason = child<QLabel>(panel, "lodReasonLabel");
+    EXPECT_TRUE(reason->text().contains(QStringLiteral("Tissue: Stiffening tissue"))) << reason->text().toStdString();
+
+    // A lax target: linear is enough, decided without solving again.
+    panel.setNeeds({1.0, 100000.0});
+    EXPECT_FALSE(panel.busy());
+    ASSERT_TRUE(panel.stiffeningChoice());
+    EXPECT_FALSE(panel.stiffeningChoice()->nonlinear);
+    EXPECT_TRUE(reason->text().contains(QStringLiteral("Tissue: Linear tissue"))) << reason->text().toStdString();
+
+    // Another tissue: the reference was for the old one.
+    panel.setToolContact(ToolContact{});
+    EXPECT_FALSE(panel.stiffeningReference());
+    EXPECT_FALSE(panel.stiffeningChoice());
+}
+
 TEST_F(LodPanelTest, EditedTargetsReplanFromTheTableWithoutMeasuring) {
     LodPanel panel;
     planToEnd(panel);
