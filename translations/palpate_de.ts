@@ -4431,6 +4431,50 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>cannot store the staircase of %1: %2</source>
         <translation>Die Treppe (Staircase) von %1 kann nicht gespeichert werden: %2</translation>
     </message>
+    <message>
+        <source>is not a PostgreSQL URL (postgresql://[user@]host[:port]/database)</source>
+        <translation>ist keine PostgreSQL-URL (postgresql://[benutzer@]host[:port]/datenbank)</translation>
+    </message>
+    <message>
+        <source>a password in the URL is refused: put it in ~/.pgpass or the file PGPASSFILE names (docs/results-store.md)</source>
+        <translation>ein Passwort in der URL wird abgelehnt: es gehört in ~/.pgpass oder in die Datei, die PGPASSFILE nennt (docs/results-store.md)</translation>
+    </message>
+    <message>
+        <source>names no database (postgresql://host/database)</source>
+        <translation>nennt keine Datenbank (postgresql://host/datenbank)</translation>
+    </message>
+    <message>
+        <source>the Qt PostgreSQL driver (QPSQL, Debian package libqt6sql6-psql) is not installed</source>
+        <translation>der Qt-PostgreSQL-Treiber (QPSQL, Debian-Paket libqt6sql6-psql) ist nicht installiert</translation>
+    </message>
+    <message>
+        <source>option %1 is not a libpq option</source>
+        <translation>Option %1 ist keine libpq-Option</translation>
+    </message>
+    <message>
+        <source>cannot connect: %1</source>
+        <translation>keine Verbindung: %1</translation>
+    </message>
+    <message>
+        <source>the database holds other tables: not a Palpate results database</source>
+        <translation>die Datenbank enthält andere Tabellen: keine Palpate-Ergebnisdatenbank</translation>
+    </message>
+    <message>
+        <source>cannot migrate from schema version 4 to 5: %1</source>
+        <translation>kann nicht von Schemaversion 4 auf 5 migrieren: %1</translation>
+    </message>
+    <message>
+        <source>cannot mark result %1 as sent: %2</source>
+        <translation>kann Ergebnis %1 nicht als gesendet markieren: %2</translation>
+    </message>
+    <message>
+        <source>a result without a uid cannot be copied</source>
+        <translation>ein Ergebnis ohne uid kann nicht kopiert werden</translation>
+    </message>
+    <message>
+        <source>cannot store result %1: %2</source>
+        <translation>kann Ergebnis %1 nicht speichern: %2</translation>
+    </message>
 </context>
 <context>
     <name>palpate::SaveFileChoice</name>

@@ -4427,6 +4427,50 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>cannot store the staircase of %1: %2</source>
         <translation>tidak dapat menyimpan tangga (staircase) %1: %2</translation>
     </message>
+    <message>
+        <source>is not a PostgreSQL URL (postgresql://[user@]host[:port]/database)</source>
+        <translation>bukan URL PostgreSQL (postgresql://[pengguna@]hos[:port]/pangkalan)</translation>
+    </message>
+    <message>
+        <source>a password in the URL is refused: put it in ~/.pgpass or the file PGPASSFILE names (docs/results-store.md)</source>
+        <translation>kata laluan dalam URL ditolak: letakkannya dalam ~/.pgpass atau fail yang dinamakan PGPASSFILE (docs/results-store.md)</translation>
+    </message>
+    <message>
+        <source>names no database (postgresql://host/database)</source>
+        <translation>tidak menamakan pangkalan data (postgresql://hos/pangkalan)</translation>
+    </message>
+    <message>
+        <source>the Qt PostgreSQL driver (QPSQL, Debian package libqt6sql6-psql) is not installed</source>
+        <translation>pemacu PostgreSQL Qt (QPSQL, pakej Debian libqt6sql6-psql) tidak dipasang</translation>
+    </message>
+    <message>
+        <source>option %1 is not a libpq option</source>
+        <translation>pilihan %1 bukan pilihan libpq</translation>
+    </message>
+    <message>
+        <source>cannot connect: %1</source>
+        <translation>tidak dapat bersambung: %1</translation>
+    </message>
+    <message>
+        <source>the database holds other tables: not a Palpate results database</source>
+        <translation>pangkalan data memegang jadual lain: bukan pangkalan data keputusan Palpate</translation>
+    </message>
+    <message>
+        <source>cannot migrate from schema version 4 to 5: %1</source>
+        <translation>tidak dapat memindahkan daripada versi skema 4 ke 5: %1</translation>
+    </message>
+    <message>
+        <source>cannot mark result %1 as sent: %2</source>
+        <translation>tidak dapat menandakan keputusan %1 sebagai dihantar: %2</translation>
+    </message>
+    <message>
+        <source>a result without a uid cannot be copied</source>
+        <translation>keputusan tanpa uid tidak dapat disalin</translation>
+    </message>
+    <message>
+        <source>cannot store result %1: %2</source>
+        <translation>tidak dapat menyimpan keputusan %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>palpate::SaveFileChoice</name>

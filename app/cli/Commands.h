@@ -25,6 +25,8 @@ int scoreCommand(const std::vector<std::string>& words);
 /// trainee: list, add-session, curve, staircase over the results database (TraineeCommand.cpp,
 /// docs/scoring.md "Proficiency" and "Staircase").
 int traineeCommand(const std::vector<std::string>& words);
+/// results list|export|sync: the stored results, and copying them to the class's server.
+int resultsCommand(const std::vector<std::string>& words);
 /// For `score --db --trainee`: the "proficiency" object as JSON text ("" when the exercise has no
 /// expert sessions), or "" with `error` (unreadable database, unknown trainee).
 std::string proficiencyJsonForScore(const ScoreReport& report, const Exercise& exercise, const std::string& exercisePath,

@@ -14,6 +14,7 @@
 #ifdef PALPATE_HAVE_CHARTS
 #include "app/report/LearningCurve.h"
 #include "app/report/ResultsDatabase.h"
+#include "app/cli/ResultsLocation.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -47,15 +48,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-std::string defaultDatabasePath() {
-    // The GUI's names (app/gui/FirstRun.cpp setApplicationNames): the same data folder.
-    QCoreApplication::setApplicationName(QStringLiteral("palpate"));
-    QCoreApplication::setOrganizationName(QString());
-    QCoreApplication::setOrganizationDomain(QStringLiteral("palpate"));
-    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-        .filePath(QStringLiteral("results.sqlite"))
-        .toStdString();
-}
 
 Json optionalJson(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
 

@@ -34,6 +34,8 @@ void usage(std::ostream& out) {
            "  palpate-cli trainee curve --trainee NAME --exercise FILE [--png FILE] [--metric NAME,..] [--db FILE] [--json]\n"
            "  palpate-cli trainee staircase --trainee NAME --exercise FILE [--db FILE] [--json]\n"
            "      --db: the results database (default: the GUI's, results.sqlite in its data folder)\n"
+           "  palpate-cli results list|export|sync [--db LOCATION] [--json] [--csv FILE] [--local FILE]\n"
+           "      LOCATION: an SQLite file or postgresql://[user@]host[:port]/database (docs/results-store.md)\n"
            "  palpate-cli sweep [--reference punch|fem] [--json] [--csv FILE] [--png FILE] [--quick] [--shapes sphere,stomach]\n"
            "                    [--sizes N,..] [--max-rings N] [--no-paper] [--no-others] [--repeats N] [TISSUE]\n"
            "      --reference fem: the filled stomach's FEM (linear and hyperelastic) at its thin, thick and curved sites\n"
@@ -82,6 +84,7 @@ int main(int argc, char** argv) {
         if (command == "record") return palpate::cli::recordCommand(words);
         if (command == "score") return palpate::cli::scoreCommand(words);
         if (command == "trainee") return palpate::cli::traineeCommand(words);
+        if (command == "results") return palpate::cli::resultsCommand(words);
         if (command == "sweep") return palpate::cli::sweepCommand(words);
         if (command == "stability") return palpate::cli::stabilityCommand(words);
         if (command == "calibrate") return palpate::cli::calibrateCommand(words);

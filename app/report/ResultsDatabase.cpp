@@ -2,6 +2,10 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QSysInfo>
+#include <QUrl>
+#include <QUrlQuery>
+#include <QUuid>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -53,6 +57,28 @@ const char* const kMigrateV3ToV4[] = {
     "PRAGMA user_version = 4",
 };
 
+// Version 5 (the shared store, docs/results-store.md): a unique id per result so that copying it
+// to the server is idempotent, the workstation that scored it, when it reached the server, and the
+// class a trainee belongs to. The uids of older rows are filled in by migrateV4ToV5.
+const char* const kMigrateV4ToV5[] = {
+    "ALTER TABLE results ADD COLUMN uid TEXT NOT NULL DEFAULT ''",
+    "ALTER TABLE results ADD COLUMN workstation TEXT NOT NULL DEFAULT ''",
+    "ALTER TABLE results ADD COLUMN synced_utc TEXT NOT NULL DEFAULT ''",
+    "ALTER TABLE trainees ADD COLUMN class_name TEXT NOT NULL DEFAULT ''",
+};
+
+// The server keeps its version in a table (PostgreSQL has no user_version); made with version 1.
+const char* const kServerVersionTable[] = {
+    "CREATE TABLE palpate_schema (version INTEGER NOT NULL)",
+    "INSERT INTO palpate_schema VALUES (0)",
+};
+
+/// Every migration of a fresh or older server runs under this advisory lock: two workstations that
+/// open a new server at once must not both create the tables.
+constexpr int kMigrationLock = 0x50414c50;  // "PALP"
+
+QString newUid() { return QUuid::createUuid().toString(QUuid::WithoutBraces); }
+
 QString isoUtc(const QDateTime& t) { return t.toUTC().toString(Qt::ISODateWithMs); }
 QDateTime fromIsoUtc(const QString& s) {
     QDateTime t = QDateTime::fromString(s, Qt::ISODateWithMs);
@@ -60,11 +86,11 @@ QDateTime fromIsoUtc(const QString& s) {
 }
 
 /// Runs statements in one transaction; the first failure rolls back and is returned.
-QString runInTransaction(QSqlDatabase& db, const char* const* begin, const char* const* end) {
+QString runInTransaction(QSqlDatabase& db, const QStringList& statements) {
     if (!db.transaction()) return db.lastError().text();
     QSqlQuery q(db);
-    for (auto it = begin; it != end; ++it)
-        if (!q.exec(QString::fromLatin1(*it))) {
+    for (const QString& statement : statements)
+        if (!q.exec(statement)) {
             const QString message = q.lastError().text();
             q.finish();
             db.rollback();
@@ -79,7 +105,34 @@ QString runInTransaction(QSqlDatabase& db, const char* const* begin, const char*
     return {};
 }
 
+QString runInTransaction(QSqlDatabase& db, const char* const* begin, const char* const* end) {
+    QStringList statements;
+    for (auto it = begin; it != end; ++it) statements << QString::fromLatin1(*it);
+    return runInTransaction(db, statements);
+}
+
 }  // namespace
+
+bool isServerLocation(const QString& location) {
+    return location.startsWith(QLatin1String("postgresql://")) || location.startsWith(QLatin1String("postgres://"));
+}
+
+QString ResultsDatabase::adapt(const char* statement) const {
+    QString s = QString::fromLatin1(statement);
+    if (!mServer) return s;
+    // The schema is written in SQLite's words; PostgreSQL's types and version keeping differ.
+    s.replace(QLatin1String("INTEGER PRIMARY KEY AUTOINCREMENT"), QLatin1String("BIGSERIAL PRIMARY KEY"));
+    s.replace(QLatin1String("trainee_id INTEGER NOT NULL"), QLatin1String("trainee_id BIGINT NOT NULL"));
+    s.replace(QLatin1String("REAL NOT NULL"), QLatin1String("DOUBLE PRECISION NOT NULL"));
+    if (s.startsWith(QLatin1String("PRAGMA user_version = ")))
+        s = QStringLiteral("UPDATE palpate_schema SET version = %1").arg(s.mid(22));
+    return s;
+}
+
+QString ResultsDatabase::setVersionStatement(int version) const {
+    return mServer ? QStringLiteral("UPDATE palpate_schema SET version = %1").arg(version)
+                   : QStringLiteral("PRAGMA user_version = %1").arg(version);
+}
 
 ResultOutcome outcomeOf(const ScoreReport& report) {
     if (report.guidance.completed) return ResultOutcome::Completed;
@@ -126,6 +179,8 @@ bool ResultsDatabase::isOpen() const { return mDb.isValid() && mDb.isOpen(); }
 bool ResultsDatabase::open(const QString& path, QString* error) {
     close();
     mPath = path;
+    mServer = isServerLocation(path);
+    if (mServer) return openServer(path, error);
     const QFileInfo info(path);
     if (info.exists()) {
         if (info.isDir()) return fail(tr("is a folder, not a results database"), error);
@@ -178,20 +233,104 @@ bool ResultsDatabase::open(const QString& path, QString* error) {
     return true;
 }
 
+bool ResultsDatabase::openServer(const QString& location, QString* error) {
+    const QUrl url(location);
+    // The URL is shown in messages: never with a password (there should be none to show).
+    mPath = url.toString(QUrl::RemovePassword);
+    if (!url.isValid() || url.host().isEmpty())
+        return fail(tr("is not a PostgreSQL URL (postgresql://[user@]host[:port]/database)"), error);
+    if (!url.password().isEmpty())
+        return fail(tr("a password in the URL is refused: put it in ~/.pgpass or the file PGPASSFILE names "
+                       "(docs/results-store.md)"),
+                    error);
+    const QString database = url.path().mid(1);
+    if (database.isEmpty() || database.contains(QLatin1Char('/')))
+        return fail(tr("names no database (postgresql://host/database)"), error);
+    if (!QSqlDatabase::isDriverAvailable(QStringLiteral("QPSQL")))
+        return fail(tr("the Qt PostgreSQL driver (QPSQL, Debian package libqt6sql6-psql) is not installed"), error);
+    // libpq's own options from the URL's query (sslmode, sslrootcert, ...); TLS when the server
+    // offers it and a short wait when it is away, unless the URL says otherwise.
+    QStringList options;
+    bool sslmode = false, timeout = false;
+    for (const auto& [key, value] : QUrlQuery(url).queryItems(QUrl::FullyDecoded)) {
+        if (key.contains(QLatin1Char(';')) || value.contains(QLatin1Char(';')))
+            return fail(tr("option %1 is not a libpq option").arg(key), error);
+        options << key + QLatin1Char('=') + value;
+        sslmode |= key == QLatin1String("sslmode");
+        timeout |= key == QLatin1String("connect_timeout");
+    }
+    if (!sslmode) options << QStringLiteral("sslmode=prefer");
+    if (!timeout) options << QStringLiteral("connect_timeout=5");
+    mDb = QSqlDatabase::addDatabase(QStringLiteral("QPSQL"), mConnection);
+    mDb.setHostName(url.host());
+    if (url.port() > 0) mDb.setPort(url.port());
+    mDb.setDatabaseName(database);
+    if (!url.userName().isEmpty()) mDb.setUserName(url.userName());
+    mDb.setConnectOptions(options.join(QLatin1Char(';')));
+    if (!mDb.open()) {
+        const QString why = mDb.lastError().text().trimmed();
+        close();
+        return fail(tr("cannot connect: %1").arg(why), error);
+    }
+    QSqlQuery q(mDb);
+    q.exec(QStringLiteral("SELECT pg_advisory_lock(%1)").arg(kMigrationLock));
+    int version = -1;
+    if (q.exec(QStringLiteral("SELECT version FROM palpate_schema")) && q.next()) {
+        version = q.value(0).toInt();
+    } else {
+        q.exec(QStringLiteral("SELECT count(*) FROM information_schema.tables WHERE table_schema = current_schema()"));
+        if (q.next() && q.value(0).toInt() == 0) version = 0;
+    }
+    q.finish();
+    const auto unlock = [&] {
+        QSqlQuery u(mDb);
+        u.exec(QStringLiteral("SELECT pg_advisory_unlock(%1)").arg(kMigrationLock));
+    };
+    if (version < 0) {
+        unlock();
+        close();
+        return fail(tr("the database holds other tables: not a Palpate results database"), error);
+    }
+    if (version > kSchemaVersion) {
+        unlock();
+        close();
+        return fail(tr("schema version %1 is newer than this build reads (%2): update Palpate").arg(version).arg(kSchemaVersion),
+                    error);
+    }
+    const bool migrated = version == kSchemaVersion || migrate(version, error);
+    unlock();
+    if (!migrated) {
+        close();
+        return false;
+    }
+    mLastError.clear();
+    return true;
+}
+
 bool ResultsDatabase::migrate(int from, QString* error) {
+    const auto adapted = [this](const char* const* begin, const char* const* end) {
+        QStringList statements;
+        for (auto it = begin; it != end; ++it) statements << adapt(*it);
+        return statements;
+    };
     if (from == 0) {
-        QSqlQuery q(mDb);
-        if (!q.exec(QStringLiteral("SELECT count(*) FROM sqlite_master")) || !q.next())
-            return fail(tr("not a results database (%1)").arg(q.lastError().text()), error);
-        if (q.value(0).toInt() > 0)
-            return fail(tr("is an SQLite database but not a Palpate results database"), error);
-        q.finish();
-        const QString why = runInTransaction(mDb, std::begin(kSchemaV1), std::end(kSchemaV1));
+        QStringList create;
+        if (mServer) {
+            create = adapted(std::begin(kServerVersionTable), std::end(kServerVersionTable));
+        } else {
+            QSqlQuery q(mDb);
+            if (!q.exec(QStringLiteral("SELECT count(*) FROM sqlite_master")) || !q.next())
+                return fail(tr("not a results database (%1)").arg(q.lastError().text()), error);
+            if (q.value(0).toInt() > 0)
+                return fail(tr("is an SQLite database but not a Palpate results database"), error);
+        }
+        create << adapted(std::begin(kSchemaV1), std::end(kSchemaV1));
+        const QString why = runInTransaction(mDb, create);
         if (!why.isEmpty()) return fail(tr("cannot create the tables: %1").arg(why), error);
         from = 1;
     }
     if (from == 1) {
-        const QString why = runInTransaction(mDb, std::begin(kMigrateV1ToV2), std::end(kMigrateV1ToV2));
+        const QString why = runInTransaction(mDb, adapted(std::begin(kMigrateV1ToV2), std::end(kMigrateV1ToV2)));
         if (!why.isEmpty()) return fail(tr("cannot migrate from schema version 1 to 2: %1").arg(why), error);
         from = 2;
     }
@@ -201,11 +340,47 @@ bool ResultsDatabase::migrate(int from, QString* error) {
         from = 3;
     }
     if (from == 3) {
-        const QString why = runInTransaction(mDb, std::begin(kMigrateV3ToV4), std::end(kMigrateV3ToV4));
+        const QString why = runInTransaction(mDb, adapted(std::begin(kMigrateV3ToV4), std::end(kMigrateV3ToV4)));
         if (!why.isEmpty()) return fail(tr("cannot migrate from schema version 3 to 4: %1").arg(why), error);
         from = 4;
     }
+    if (from == 4) {
+        const QString why = migrateV4ToV5();
+        if (!why.isEmpty()) return fail(tr("cannot migrate from schema version 4 to 5: %1").arg(why), error);
+        from = 5;
+    }
     return true;
+}
+
+QString ResultsDatabase::migrateV4ToV5() {
+    if (!mDb.transaction()) return mDb.lastError().text();
+    QString why;
+    {
+        QSqlQuery q(mDb);
+        for (const char* statement : kMigrateV4ToV5)
+            if (why.isEmpty() && !q.exec(adapt(statement))) why = q.lastError().text();
+        // Every older row gets its own uid before the uids are made unique.
+        std::vector<qint64> ids;
+        if (why.isEmpty() && q.exec(QStringLiteral("SELECT id FROM results"))) {
+            while (q.next()) ids.push_back(q.value(0).toLongLong());
+        } else if (why.isEmpty()) {
+            why = q.lastError().text();
+        }
+        q.finish();
+        for (qint64 id : ids) {
+            if (!why.isEmpty()) break;
+            q.prepare(QStringLiteral("UPDATE results SET uid = ? WHERE id = ?"));
+            q.addBindValue(newUid());
+            q.addBindValue(id);
+            if (!q.exec()) why = q.lastError().text();
+        }
+        if (why.isEmpty() && !q.exec(QStringLiteral("CREATE UNIQUE INDEX results_by_uid ON results(uid)"))) why = q.lastError().text();
+        if (why.isEmpty() && !q.exec(setVersionStatement(5))) why = q.lastError().text();
+        q.finish();
+    }
+    if (why.isEmpty() && !mDb.commit()) why = mDb.lastError().text();
+    if (!why.isEmpty()) mDb.rollback();
+    return why;
 }
 
 QString ResultsDatabase::migrateV2ToV3() {
@@ -214,7 +389,7 @@ QString ResultsDatabase::migrateV2ToV3() {
     {
         QSqlQuery q(mDb);
         for (const char* statement : kMigrateV2ToV3)
-            if (why.isEmpty() && !q.exec(QString::fromLatin1(statement))) why = q.lastError().text();
+            if (why.isEmpty() && !q.exec(adapt(statement))) why = q.lastError().text();
         // A completion of 1 means the task was done; any other old row may have been stopped or
         // timed out, which version 2 did not record.
         std::vector<qint64> completed;
@@ -235,7 +410,7 @@ QString ResultsDatabase::migrateV2ToV3() {
             q.addBindValue(id);
             if (!q.exec()) why = q.lastError().text();
         }
-        if (why.isEmpty() && !q.exec(QStringLiteral("PRAGMA user_version = 3"))) why = q.lastError().text();
+        if (why.isEmpty() && !q.exec(setVersionStatement(3))) why = q.lastError().text();
         q.finish();
     }
     if (why.isEmpty() && !mDb.commit()) why = mDb.lastError().text();
@@ -246,7 +421,9 @@ QString ResultsDatabase::migrateV2ToV3() {
 int ResultsDatabase::schemaVersion() const {
     if (!isOpen()) return -1;
     QSqlQuery q(mDb);
-    if (!q.exec(QStringLiteral("PRAGMA user_version")) || !q.next()) return -1;
+    if (!q.exec(mServer ? QStringLiteral("SELECT version FROM palpate_schema") : QStringLiteral("PRAGMA user_version")) ||
+        !q.next())
+        return -1;
     return q.value(0).toInt();
 }
 
@@ -285,13 +462,20 @@ qint64 ResultsDatabase::addTrainee(const QString& name, QString* error) {
             id = q.value(0).toLongLong();
         else {
             q.finish();
-            q.prepare(QStringLiteral("INSERT INTO trainees (name, created) VALUES (?, ?)"));
+            // Two workstations adding the same trainee at once: the second insert does nothing and
+            // the name is read again (the name is unique).
+            q.prepare(QStringLiteral("INSERT INTO trainees (name, created) VALUES (?, ?) ON CONFLICT (name) DO NOTHING"));
             q.addBindValue(trimmed);
             q.addBindValue(isoUtc(QDateTime::currentDateTimeUtc()));
-            if (q.exec())
-                id = q.lastInsertId().toLongLong();
-            else
+            if (!q.exec()) {
                 why = q.lastError().text();
+            } else {
+                q.finish();
+                q.prepare(QStringLiteral("SELECT id FROM trainees WHERE name = ?"));
+                q.addBindValue(trimmed);
+                if (q.exec() && q.next()) id = q.value(0).toLongLong();
+                else why = q.lastError().text();
+            }
         }
     }
     if (why.isEmpty() && !mDb.commit()) why = mDb.lastError().text();
@@ -352,9 +536,9 @@ qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, c
             q.finish();
             q.prepare(QStringLiteral(
                 "INSERT INTO results (trainee_id, exercise_name, exercise_path, started_utc, duration_s,"
-                 " score, metrics_json, rubric_json, recording_path, outcome, expert, aids_json)"
+                 " score, metrics_json, rubric_json, recording_path, outcome, expert, aids_json, uid, workstation)"
                 // A null QString binds as NULL: empty text instead.
-                " VALUES (?, COALESCE(?, ''), COALESCE(?, ''), ?, ?, ?, ?, ?, COALESCE(?, ''), ?, ?, ?)"));
+                " VALUES (?, COALESCE(?, ''), COALESCE(?, ''), ?, ?, ?, ?, ?, COALESCE(?, ''), ?, ?, ?, ?, ?) RETURNING id"));
             q.addBindValue(traineeId);
             q.addBindValue(exerciseName);
             q.addBindValue(exercisePath);
@@ -367,8 +551,10 @@ qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, c
             q.addBindValue(outcomeKey(outcomeOf(report)));
             q.addBindValue(expert ? 1 : 0);
             q.addBindValue(aids);
-            if (q.exec())
-                id = q.lastInsertId().toLongLong();
+            q.addBindValue(newUid());
+            q.addBindValue(QSysInfo::machineHostName());
+            if (q.exec() && q.next())
+                id = q.value(0).toLongLong();
             else
                 why = q.lastError().text();
         }
@@ -382,12 +568,57 @@ qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, c
 }
 
 std::vector<ResultRecord> ResultsDatabase::results(qint64 traineeId) const {
-    return selectResults(QStringLiteral("trainee_id = ?"), traineeId);
+    return selectResults(QStringLiteral("r.trainee_id = ?"), traineeId);
+}
+
+std::vector<ResultRecord> ResultsDatabase::allResults() const { return selectResults(QStringLiteral("? = 1"), 1); }
+
+std::vector<ResultRecord> ResultsDatabase::unsyncedResults() const {
+    return selectResults(QStringLiteral("r.synced_utc = ?"), QString(QLatin1String("")));
+}
+
+bool ResultsDatabase::markSynced(const QString& uid, const QDateTime& whenUtc, QString* error) {
+    if (!isOpen()) return fail(tr("not open"), error);
+    QSqlQuery q(mDb);
+    q.prepare(QStringLiteral("UPDATE results SET synced_utc = ? WHERE uid = ?"));
+    q.addBindValue(isoUtc(whenUtc));
+    q.addBindValue(uid);
+    if (!q.exec()) return fail(tr("cannot mark result %1 as sent: %2").arg(uid, q.lastError().text()), error);
+    return true;
+}
+
+std::optional<bool> ResultsDatabase::importResult(const ResultRecord& r, const QString& traineeName, QString* error) {
+    if (r.uid.isEmpty()) return fail(tr("a result without a uid cannot be copied"), error), std::nullopt;
+    const qint64 trainee = addTrainee(traineeName, error);
+    if (trainee < 0) return std::nullopt;
+    QSqlQuery q(mDb);
+    // The uid is unique: a result sent twice (a retry after a lost answer) stays one row.
+    q.prepare(QStringLiteral(
+        "INSERT INTO results (trainee_id, exercise_name, exercise_path, started_utc, duration_s, score, metrics_json,"
+        " rubric_json, recording_path, outcome, expert, aids_json, uid, workstation)"
+        " VALUES (?, COALESCE(?, ''), COALESCE(?, ''), ?, ?, ?, COALESCE(?, ''), COALESCE(?, ''), COALESCE(?, ''),"
+        " COALESCE(?, ''), ?, COALESCE(?, '[]'), ?, COALESCE(?, '')) ON CONFLICT (uid) DO NOTHING RETURNING id"));
+    q.addBindValue(trainee);
+    q.addBindValue(r.exerciseName);
+    q.addBindValue(r.exercisePath);
+    q.addBindValue(isoUtc(r.startedUtc));
+    q.addBindValue(r.durationS);
+    q.addBindValue(r.score);
+    q.addBindValue(r.metricsJson);
+    q.addBindValue(r.rubricJson);
+    q.addBindValue(r.recordingPath);
+    q.addBindValue(outcomeKey(r.outcome));
+    q.addBindValue(r.expert ? 1 : 0);
+    q.addBindValue(r.aidsJson);
+    q.addBindValue(r.uid);
+    q.addBindValue(r.workstation);
+    if (!q.exec()) return fail(tr("cannot store result %1: %2").arg(r.uid, q.lastError().text()), error), std::nullopt;
+    return q.next();
 }
 
 std::vector<ResultRecord> ResultsDatabase::expertResults(const QString& exercisePath, const QString& exerciseName) const {
     std::vector<ResultRecord> out;
-    for (ResultRecord& r : selectResults(QStringLiteral("expert = ?"), 1))
+    for (ResultRecord& r : selectResults(QStringLiteral("r.expert = ?"), 1))
         if (isSameExercise(r, exercisePath, exerciseName)) out.push_back(std::move(r));
     return out;
 }
@@ -397,8 +628,10 @@ std::vector<ResultRecord> ResultsDatabase::selectResults(const QString& where, c
     if (!isOpen()) return out;
     QSqlQuery q(mDb);
     q.prepare(QStringLiteral(
-        "SELECT id, trainee_id, exercise_name, exercise_path, started_utc, duration_s, score, metrics_json,"
-        " rubric_json, recording_path, outcome, expert, aids_json FROM results WHERE %1 ORDER BY started_utc, id")
+        "SELECT r.id, r.trainee_id, r.exercise_name, r.exercise_path, r.started_utc, r.duration_s, r.score,"
+        " r.metrics_json, r.rubric_json, r.recording_path, r.outcome, r.expert, r.aids_json, r.uid, r.workstation,"
+        " r.synced_utc, t.name FROM results r JOIN trainees t ON t.id = r.trainee_id WHERE %1"
+        " ORDER BY r.started_utc, r.id")
                   .arg(where));
     q.addBindValue(bind);
     if (!q.exec()) {
@@ -420,6 +653,10 @@ std::vector<ResultRecord> ResultsDatabase::selectResults(const QString& where, c
         r.outcome = outcomeFromKey(q.value(10).toString());
         r.expert = q.value(11).toInt() != 0;
         r.aidsJson = q.value(12).toString();
+        r.uid = q.value(13).toString();
+        r.workstation = q.value(14).toString();
+        r.syncedUtc = q.value(15).toString();
+        r.traineeName = q.value(16).toString();
         out.push_back(std::move(r));
     }
     return out;
@@ -445,8 +682,9 @@ bool ResultsDatabase::putStaircase(qint64 traineeId, const QString& exerciseKey,
     QString why;
     {
         QSqlQuery q(mDb);
-        q.prepare(QStringLiteral("INSERT OR REPLACE INTO staircases (trainee_id, exercise_key, state_json, updated_utc)"
-                                 " VALUES (?, ?, ?, ?)"));
+        q.prepare(QStringLiteral("INSERT INTO staircases (trainee_id, exercise_key, state_json, updated_utc)"
+                                 " VALUES (?, ?, ?, ?) ON CONFLICT (trainee_id, exercise_key) DO UPDATE"
+                                 " SET state_json = excluded.state_json, updated_utc = excluded.updated_utc"));
         q.addBindValue(traineeId);
         q.addBindValue(exerciseKey);
         q.addBindValue(stateJson);

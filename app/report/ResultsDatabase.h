@@ -1,7 +1,10 @@
 #pragma once
-// Trainees and their scored sessions in one SQLite file (Qt SQL, QSQLITE), so that the GUI can show
-// a trainee's history. Every write is one transaction: once addResult returns, the row is on disk.
-// The schema carries its version in PRAGMA user_version and older files are migrated on open.
+// Trainees and their scored sessions, so that the GUI can show a trainee's history: one SQLite file
+// per workstation (Qt SQL, QSQLITE), or a shared PostgreSQL server for a class (QPSQL; a
+// postgresql:// URL, docs/results-store.md). Both back-ends have the same schema and the same
+// versioned migrations (SQLite keeps the version in PRAGMA user_version, PostgreSQL in the table
+// palpate_schema). Every write is one transaction: once addResult returns, the row is committed.
+// Each result carries a unique id (uid), so that copying it to the server is idempotent.
 
 #include "engine/exercise/ScoreReport.h"
 
@@ -11,6 +14,7 @@
 #include <QString>
 #include <QVariant>
 
+#include <optional>
 #include <vector>
 
 namespace palpate {
@@ -52,7 +56,15 @@ struct ResultRecord {
     ResultOutcome outcome = ResultOutcome::Unknown;
     bool expert = false;    ///< an instructor's reference session: sets the proficiency standard
     QString aidsJson;       ///< `[{name, level}]`: the guidance aids shown (ScoreReport::aids)
+    QString uid;            ///< unique across workstations (a UUID): the same result has the same uid everywhere
+    QString workstation;    ///< the host that scored it
+    QString syncedUtc;      ///< when it reached the shared server ("" while waiting); local databases only
+    QString traineeName;    ///< filled by allResults()
 };
+
+/// Whether `location` names a PostgreSQL server (postgresql:// or postgres://) rather than an
+/// SQLite file.
+bool isServerLocation(const QString& location);
 
 /// How an exercise is told apart across sessions: by its file, the path made absolute (and
 /// canonical when the file exists); a session stored without a path (an exercise carried by a
@@ -65,7 +77,7 @@ class ResultsDatabase {
     Q_DECLARE_TR_FUNCTIONS(palpate::ResultsDatabase)
 public:
     /// The version this build writes; files with a newer one are refused, older ones migrated.
-    static constexpr int kSchemaVersion = 4;
+    static constexpr int kSchemaVersion = 5;
 
     ResultsDatabase();
     ~ResultsDatabase();
@@ -73,7 +85,11 @@ public:
     ResultsDatabase& operator=(const ResultsDatabase&) = delete;
 
     /// Opens (creating if missing) and migrates; on failure the message names the file and why.
-    bool open(const QString& path, QString* error = nullptr);
+    /// A postgresql://[user@]host[:port]/database[?sslmode=...] location opens the server: the
+    /// password is never in the URL or the settings but found by libpq (PGPASSFILE or ~/.pgpass);
+    /// TLS is used when the server offers it (sslmode=prefer unless the URL says otherwise).
+    bool open(const QString& location, QString* error = nullptr);
+    bool isServer() const { return mServer; }
     void close();
     bool isOpen() const;
     QString path() const { return mPath; }
@@ -95,6 +111,16 @@ public:
                      const QString& recordingPath, bool expert, QString* error = nullptr);
     /// The trainee's results, oldest first (the History chart's order).
     std::vector<ResultRecord> results(qint64 traineeId) const;
+    /// Every result with its trainee's name, oldest first.
+    std::vector<ResultRecord> allResults() const;
+    /// The results not yet on the shared server (syncedUtc empty), oldest first.
+    std::vector<ResultRecord> unsyncedResults() const;
+    /// Marks a result as on the server, committed before returning.
+    bool markSynced(const QString& uid, const QDateTime& whenUtc, QString* error = nullptr);
+    /// Copies a result from another database under `traineeName` (added if new), keeping its uid:
+    /// a result already there (same uid) is left as it is. Returns whether it was new; nullopt on
+    /// error. One transaction.
+    std::optional<bool> importResult(const ResultRecord& result, const QString& traineeName, QString* error = nullptr);
     /// Every trainee's expert results of the exercise (isSameExercise), oldest first.
     std::vector<ResultRecord> expertResults(const QString& exercisePath, const QString& exerciseName) const;
     /// The trainee's staircase state (Staircase::toJson) for exerciseKey(...); "" when none yet.
@@ -115,8 +141,15 @@ private:
     QString migrateV2ToV3();
     std::vector<ResultRecord> selectResults(const QString& where, const QVariant& bind) const;
 
+    /// The statement in this back-end's dialect (the schema is written for SQLite).
+    QString adapt(const char* statement) const;
+    QString setVersionStatement(int version) const;
+    bool openServer(const QString& location, QString* error);
+    QString migrateV4ToV5();
+
     QString mConnection;
     QString mPath;
+    bool mServer = false;
     QSqlDatabase mDb;
     mutable QString mLastError;
 };

@@ -259,10 +259,11 @@ TEST(ResultsDatabase, MigratesVersion3AddingExpertsAidsAndStaircases) {
                                  " 'completed')")});
     ResultsDatabase db;
     ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
-    EXPECT_EQ(db.schemaVersion(), 4);
+    EXPECT_EQ(db.schemaVersion(), ResultsDatabase::kSchemaVersion);  // through 4 to the current one
     const qint64 gus = db.trainees().at(0).id;
     std::vector<ResultRecord> rows = db.results(gus);
     ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0].uid.size(), 36);  // version 5 gave the old row its own uid
     EXPECT_FALSE(rows[0].expert);
     EXPECT_EQ(rows[0].aidsJson, QStringLiteral("[]"));
     EXPECT_EQ(rows[0].outcome, ResultOutcome::Completed);

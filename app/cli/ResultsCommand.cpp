@@ -1,0 +1,176 @@
+// palpate-cli results: the stored results of a workstation or of a class's server
+// (docs/results-store.md). list and export read any database; sync copies this workstation's
+// results that the server has not acknowledged (local first: nothing is lost while it is away).
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "app/cli/ResultsLocation.h"
+#include "app/report/ResultSync.h"
+#include "app/report/ResultsDatabase.h"
+
+#include <QDir>
+#include <QFileInfo>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace palpate::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+void resultsUsage(std::ostream& out) {
+    out << "usage:\n"
+           "  palpate-cli results list [--db LOCATION] [--json]\n"
+           "  palpate-cli results export --csv FILE [--db LOCATION]\n"
+           "  palpate-cli results sync --db URL [--local FILE] [--json]\n"
+           "      LOCATION: an SQLite file (default: the GUI's results.sqlite) or postgresql://[user@]host[:port]/db\n"
+           "      sync: copies this workstation's results (--local, default the GUI's) to the server URL; the\n"
+           "      password comes from ~/.pgpass or PGPASSFILE, never from the URL\n";
+}
+
+/// Opens `location`; a missing SQLite file is an error here (these commands only read it).
+bool openExisting(ResultsDatabase& db, const std::string& location, const char* command) {
+    const QString where = QString::fromStdString(location);
+    if (!isServerLocation(where) && !QFileInfo::exists(where)) {
+        std::cerr << "results " << command << ": " << location << ": no results database there (give --db)\n";
+        return false;
+    }
+    QString error;
+    if (!db.open(where, &error)) {
+        std::cerr << "results " << command << ": " << error.toStdString() << "\n";
+        return false;
+    }
+    return true;
+}
+
+std::string text(const QString& s) { return s.toStdString(); }
+
+std::string csvField(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string quoted = "\"";
+    for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+int listCommand(const Args& args) {
+    ResultsDatabase db;
+    if (!openExisting(db, args.option("db").value_or(defaultDatabasePath()), "list")) return 1;
+    const std::vector<ResultRecord> results = db.allResults();
+    if (args.flag("json")) {
+        Json list = Json::array();
+        for (const ResultRecord& r : results)
+            list.push_back({{"trainee", text(r.traineeName)},
+                            {"exercise", text(r.exerciseName)},
+                            {"score", r.score},
+                            {"time", text(r.startedUtc.toString(Qt::ISODate))},
+                            {"outcome", text(outcomeKey(r.outcome))},
+                            {"expert", r.expert},
+                            {"uid", text(r.uid)},
+                            {"workstation", text(r.workstation)},
+                            {"synced", db.isServer() ? Json(nullptr) : Json(!r.syncedUtc.isEmpty())}});
+        std::cout << Json{{"database", text(db.path())}, {"results", list}}.dump(2) << "\n";
+        return 0;
+    }
+    if (results.empty()) std::cout << "no results in " << text(db.path()) << "\n";
+    for (const ResultRecord& r : results)
+        std::cout << text(r.startedUtc.toString(Qt::ISODate)) << "  " << std::left << std::setw(16) << text(r.traineeName)
+                  << std::setw(28) << text(r.exerciseName) << std::right << std::fixed << std::setprecision(1)
+                  << std::setw(6) << r.score << "  " << text(outcomeKey(r.outcome))
+                  << (db.isServer() || !r.syncedUtc.isEmpty() ? "" : "  (waiting for the server)") << "\n";
+    return 0;
+}
+
+int exportCommand(const Args& args) {
+    const auto csv = args.option("csv");
+    if (!csv) {
+        std::cerr << "results export: --csv FILE is required\n";
+        return 2;
+    }
+    const std::string location = args.option("db").value_or(defaultDatabasePath());
+    if (const std::string refused = outputIsAnInput("csv", *csv, {{location, "db"}}); !refused.empty()) {
+        std::cerr << "results export: " << refused << "\n";
+        return 2;
+    }
+    ResultsDatabase db;
+    if (!openExisting(db, location, "export")) return 1;
+    std::ostringstream out;
+    out << "trainee,exercise,exercise_path,time,duration_s,score,outcome,expert,workstation,uid\n";
+    for (const ResultRecord& r : db.allResults())
+        out << csvField(text(r.traineeName)) << ',' << csvField(text(r.exerciseName)) << ','
+            << csvField(text(r.exercisePath)) << ',' << text(r.startedUtc.toString(Qt::ISODate)) << ',' << r.durationS
+            << ',' << r.score << ',' << text(outcomeKey(r.outcome)) << ',' << (r.expert ? 1 : 0) << ','
+            << csvField(text(r.workstation)) << ',' << text(r.uid) << '\n';
+    std::ofstream file(*csv);
+    file << out.str();
+    if (!file) {
+        std::cerr << "results export: " << *csv << ": cannot be written\n";
+        return 1;
+    }
+    return 0;
+}
+
+int syncCommand(const Args& args) {
+    const auto url = args.option("db");
+    if (!url || !isServerLocation(QString::fromStdString(*url))) {
+        std::cerr << "results sync: --db postgresql://host/database (the class's server) is required\n";
+        return 2;
+    }
+    ResultsDatabase local;
+    if (!openExisting(local, args.option("local").value_or(defaultDatabasePath()), "sync")) return 1;
+    ResultsDatabase server;
+    QString error;
+    SyncReport report;
+    if (!server.open(QString::fromStdString(*url), &error)) {
+        report.waiting = int(local.unsyncedResults().size());
+        report.error = error;
+    } else {
+        report = syncResults(local, server);
+    }
+    if (args.flag("json"))
+        std::cout << Json{{"local", text(local.path())},
+                          {"server", text(server.isOpen() ? server.path() : QString::fromStdString(*url))},
+                          {"sent", report.sent},
+                          {"already_there", report.alreadyThere},
+                          {"waiting", report.waiting},
+                          {"error", text(report.error)}}
+                         .dump(2)
+                  << "\n";
+    else
+        std::cout << report.sent << " sent, " << report.alreadyThere << " already on the server, " << report.waiting
+                  << " waiting\n";
+    if (!report.error.isEmpty()) {
+        std::cerr << "results sync: " << text(report.error) << " (" << report.waiting
+                  << " results wait on this workstation; run sync again when the server answers)\n";
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int resultsCommand(const std::vector<std::string>& words) {
+    if (words.empty() || words.front() == "--help") {
+        resultsUsage(words.empty() ? std::cerr : std::cout);
+        return words.empty() ? 2 : 0;
+    }
+    const std::string sub = words.front();
+    const std::vector<std::string> rest(words.begin() + 1, words.end());
+    const Args args(rest, {"json"}, {"db", "csv", "local"});
+    if (!args.ok()) {
+        std::cerr << "palpate-cli results " << sub << ": " << args.error() << "\n";
+        return 2;
+    }
+    if (sub == "list") return listCommand(args);
+    if (sub == "export") return exportCommand(args);
+    if (sub == "sync") return syncCommand(args);
+    std::cerr << "palpate-cli results: unknown subcommand '" << sub << "'\n";
+    resultsUsage(std::cerr);
+    return 2;
+}
+
+}  // namespace palpate::cli

@@ -1,0 +1,341 @@
+// The results store on both back-ends (docs/results-store.md): the same schema and migrations on
+// SQLite and PostgreSQL, results copied from workstations to the class's server once each (a retry
+// never duplicates), many writers at once, and a server stopped in the middle of a copy.
+//
+// The PostgreSQL tests need a server: ctest runs this executable under pg_virtualenv (Debian's
+// postgresql-common), which starts a throw-away cluster and sets PGHOST, PGPORT, PGUSER, PGPASSWORD
+// and PGDATABASE; without them they are skipped (and the SQLite ones run).
+#include "app/report/ResultSync.h"
+#include "app/report/ResultsDatabase.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QSqlDatabase>
+#include <QSqlQuery>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <set>
+#include <thread>
+#include <vector>
+
+using namespace palpate;
+
+namespace {
+
+ScoreReport report(double score) {
+    ScoreReport r;
+    r.exerciseName = "Press two targets";
+    r.score = score;
+    r.guidance.completed = true;
+    return r;
+}
+
+/// The server pg_virtualenv started, as a URL without its password (libpq reads PGPASSWORD).
+QString serverUrl() {
+    const QByteArray host = qgetenv("PGHOST"), port = qgetenv("PGPORT"), user = qgetenv("PGUSER"),
+                     database = qgetenv("PGDATABASE");
+    if (host.isEmpty() || database.isEmpty()) return {};
+    return QStringLiteral("postgresql://%1@%2:%3/%4")
+        .arg(QString::fromUtf8(user), QString::fromUtf8(host), QString::fromUtf8(port.isEmpty() ? "5432" : port),
+             QString::fromUtf8(database));
+}
+
+#define REQUIRE_SERVER()                                                                             \
+    if (serverUrl().isEmpty()) GTEST_SKIP() << "no PostgreSQL server (run under pg_virtualenv)"; \
+    static_assert(true)
+
+/// Empties the server's tables between tests (one cluster serves them all).
+void clearServer() {
+    ResultsDatabase db;
+    QString error;
+    ASSERT_TRUE(db.open(serverUrl(), &error)) << error.toStdString();
+    db.close();
+    const QString name = QStringLiteral("clear");
+    {
+        QSqlDatabase raw = QSqlDatabase::addDatabase(QStringLiteral("QPSQL"), name);
+        raw.setHostName(qEnvironmentVariable("PGHOST"));
+        raw.setPort(qEnvironmentVariableIntValue("PGPORT"));
+        raw.setDatabaseName(qEnvironmentVariable("PGDATABASE"));
+        raw.setUserName(qEnvironmentVariable("PGUSER"));
+        ASSERT_TRUE(raw.open());
+        QSqlQuery q(raw);
+        ASSERT_TRUE(q.exec(QStringLiteral("TRUNCATE results, staircases, trainees RESTART IDENTITY")));
+    }
+    QSqlDatabase::removeDatabase(name);
+}
+
+/// A workstation's database with `count` results of `trainee`.
+QString workstation(const QTemporaryDir& dir, const QString& name, const QString& trainee, int count) {
+    const QString path = dir.filePath(name + QStringLiteral(".sqlite"));
+    ResultsDatabase db;
+    QString error;
+    EXPECT_TRUE(db.open(path, &error)) << error.toStdString();
+    const qint64 id = db.addTrainee(trainee, &error);
+    for (int i = 0; i < count; ++i)
+        EXPECT_GE(db.addResult(id, report(50.0 + i), QStringLiteral("Press two targets"), QStringLiteral("/e.json"),
+                               QDateTime::currentDateTimeUtc(), 10.0, QString(), &error),
+                  0)
+            << error.toStdString();
+    return path;
+}
+
+class Backends : public ::testing::TestWithParam<bool> {
+protected:
+    void SetUp() override {
+        if (GetParam()) {
+            REQUIRE_SERVER();
+            clearServer();
+            location = serverUrl();
+        } else {
+            ASSERT_TRUE(dir.isValid());
+            location = dir.filePath(QStringLiteral("results.sqlite"));
+        }
+    }
+    QTemporaryDir dir;
+    QString location;
+};
+
+TEST_P(Backends, TheSameSchemaStoresAndReadsBack) {
+    ResultsDatabase db;
+    QString error;
+    ASSERT_TRUE(db.open(location, &error)) << error.toStdString();
+    EXPECT_EQ(db.isServer(), GetParam());
+    EXPECT_EQ(db.schemaVersion(), ResultsDatabase::kSchemaVersion);
+    const qint64 ann = db.addTrainee(QStringLiteral("Ann"), &error);
+    ASSERT_GE(ann, 0) << error.toStdString();
+    EXPECT_EQ(db.addTrainee(QStringLiteral("Ann")), ann);  // a name is one trainee
+    ASSERT_GE(db.addResult(ann, report(81.25), QStringLiteral("Press"), QStringLiteral("/p.json"),
+                           QDateTime::fromString(QStringLiteral("2026-12-01T10:00:00Z"), Qt::ISODate), 12.5, QString(),
+                           true, &error),
+              0)
+        << error.toStdString();
+    ASSERT_TRUE(db.putStaircase(ann, QStringLiteral("/p.json"), QStringLiteral("{\"level\":3}"), &error));
+    ASSERT_TRUE(db.putStaircase(ann, QStringLiteral("/p.json"), QStringLiteral("{\"level\":2}"), &error));  // replaced
+    db.close();
+    ASSERT_TRUE(db.open(location, &error)) << error.toStdString();  // opening again migrates nothing
+    const auto rows = db.allResults();
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0].traineeName, QStringLiteral("Ann"));
+    EXPECT_DOUBLE_EQ(rows[0].score, 81.25);
+    EXPECT_DOUBLE_EQ(rows[0].durationS, 12.5);  // a double, not PostgreSQL's 4-byte REAL
+    EXPECT_TRUE(rows[0].expert);
+    EXPECT_EQ(rows[0].outcome, ResultOutcome::Completed);
+    EXPECT_EQ(rows[0].uid.size(), 36);
+    EXPECT_FALSE(rows[0].workstation.isEmpty());
+    EXPECT_EQ(db.staircase(ann, QStringLiteral("/p.json")), QStringLiteral("{\"level\":2}"));
+    EXPECT_EQ(db.expertResults(QStringLiteral("/p.json"), QStringLiteral("Press")).size(), 1u);
+}
+
+TEST_P(Backends, CopyingResultsTwiceKeepsOneOfEach) {
+    QTemporaryDir local;
+    const QString path = workstation(local, QStringLiteral("ws1"), QStringLiteral("Bo"), 5);
+    ResultsDatabase ws, server;
+    QString error;
+    ASSERT_TRUE(ws.open(path, &error));
+    ASSERT_TRUE(server.open(location, &error)) << error.toStdString();
+    EXPECT_EQ(ws.unsyncedResults().size(), 5u);
+    const SyncReport first = syncResults(ws, server);
+    EXPECT_TRUE(first.error.isEmpty()) << first.error.toStdString();
+    EXPECT_EQ(first.sent, 5);
+    EXPECT_EQ(first.waiting, 0);
+    EXPECT_TRUE(ws.unsyncedResults().empty());
+    // A lost acknowledgement: the workstation thinks nothing was sent, and sends again.
+    {
+        QSqlDatabase raw = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("unmark"));
+        raw.setDatabaseName(path);
+        ASSERT_TRUE(raw.open());
+        QSqlQuery(raw).exec(QStringLiteral("UPDATE results SET synced_utc = ''"));
+    }
+    QSqlDatabase::removeDatabase(QStringLiteral("unmark"));
+    const SyncReport again = syncResults(ws, server);
+    EXPECT_EQ(again.sent, 0);
+    EXPECT_EQ(again.alreadyThere, 5);
+    EXPECT_EQ(server.allResults().size(), 5u);
+}
+
+INSTANTIATE_TEST_SUITE_P(SqliteAndPostgresql, Backends, ::testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "Postgresql" : "Sqlite"; });
+
+TEST(PostgresqlStore, APasswordInTheUrlIsRefusedAndAnAbsentServerNamed) {
+    ResultsDatabase db;
+    QString error;
+    EXPECT_FALSE(db.open(QStringLiteral("postgresql://ann:secret@localhost/class"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("password"))) << error.toStdString();
+    EXPECT_FALSE(error.contains(QStringLiteral("secret"))) << error.toStdString();
+    EXPECT_FALSE(db.open(QStringLiteral("postgresql://localhost:1/class"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("cannot connect"))) << error.toStdString();
+    EXPECT_FALSE(db.open(QStringLiteral("postgresql://localhost"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("database"))) << error.toStdString();
+}
+
+// Eight workstations send at once, each with its own connection: every result arrives once.
+TEST(PostgresqlStore, ManyWorkstationsAtOnceLoseAndDuplicateNothing) {
+    REQUIRE_SERVER();
+    clearServer();
+    QTemporaryDir dir;
+    constexpr int kWorkstations = 8, kEach = 25;
+    std::vector<QString> paths;
+    for (int w = 0; w < kWorkstations; ++w)
+        // Two workstations per trainee: the trainee is added by whichever comes first.
+        paths.push_back(workstation(dir, QStringLiteral("ws%1").arg(w), QStringLiteral("T%1").arg(w / 2), kEach));
+    std::atomic<int> sent{0}, failures{0};
+    std::vector<std::thread> writers;
+    for (const QString& path : paths)
+        writers.emplace_back([&, path] {
+            ResultsDatabase ws, server;
+            QString error;
+            if (!ws.open(path, &error) || !server.open(serverUrl(), &error)) {
+                ++failures;
+                return;
+            }
+            const SyncReport r = syncResults(ws, server);
+            sent += r.sent;
+            if (!r.error.isEmpty()) ++failures;
+        });
+    for (std::thread& t : writers) t.join();
+    EXPECT_EQ(failures.load(), 0);
+    EXPECT_EQ(sent.load(), kWorkstations * kEach);
+    ResultsDatabase server;
+    ASSERT_TRUE(server.open(serverUrl()));
+    const auto rows = server.allResults();
+    EXPECT_EQ(rows.size(), std::size_t(kWorkstations * kEach));
+    std::set<QString> uids;
+    for (const ResultRecord& r : rows) uids.insert(r.uid);
+    EXPECT_EQ(uids.size(), rows.size());
+    EXPECT_EQ(server.trainees().size(), std::size_t(kWorkstations / 2));
+}
+
+/// Opens the server, retrying for up to 30 s while it starts.
+bool openWhenStarted(ResultsDatabase& db) {
+    for (int i = 0; i < 60; ++i) {
+        if (db.open(serverUrl())) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    }
+    return false;
+}
+
+/// pg_ctlcluster on the cluster pg_virtualenv made (15/regress).
+bool cluster(const char* action) {
+    QProcess p;
+    p.start(QStringLiteral("pg_ctlcluster"),
+            {qEnvironmentVariable("PGVERSION", QStringLiteral("15")), QStringLiteral("regress"), QString::fromLatin1(action)});
+    return p.waitForFinished(60000) && p.exitCode() == 0;
+}
+
+// The server stops in the middle: the copy stops with the server's words, the rest waits on the
+// workstation, and once the server is back every result is there exactly once.
+TEST(PostgresqlStore, AServerStoppedMidwayGetsEveryResultOnceWhenItReturns) {
+    REQUIRE_SERVER();
+    clearServer();
+    QTemporaryDir dir;
+    constexpr int kCount = 600;  // long enough a copy (several seconds) for the stop to land in it
+    const QString path = workstation(dir, QStringLiteral("ws"), QStringLiteral("Cy"), kCount);
+    ResultsDatabase ws;
+    ASSERT_TRUE(ws.open(path));
+    SyncReport during;
+    {
+        ResultsDatabase server;
+        QString error;
+        ASSERT_TRUE(server.open(serverUrl(), &error)) << error.toStdString();
+        std::thread stopper([] {
+            std::this_thread::sleep_for(std::chrono::milliseconds(150));
+            cluster("stop");
+        });
+        during = syncResults(ws, server);
+        stopper.join();
+    }
+    if (during.error.isEmpty()) {
+        // The copy won the race (a fast machine): the stop found nothing left to interrupt.
+        EXPECT_EQ(during.sent, kCount);
+    } else {
+        EXPECT_GT(during.waiting, 0);
+        EXPECT_EQ(int(ws.unsyncedResults().size()), during.waiting);
+    }
+    // While it is down: opening names the problem, and nothing is lost.
+    ResultsDatabase away;
+    QString error;
+    EXPECT_FALSE(away.open(serverUrl(), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("cannot connect"))) << error.toStdString();
+    EXPECT_EQ(int(ws.allResults().size()), kCount);
+
+    ASSERT_TRUE(cluster("start"));
+    ResultsDatabase back;
+    ASSERT_TRUE(openWhenStarted(back));
+    const SyncReport after = syncResults(ws, back);
+    EXPECT_TRUE(after.error.isEmpty()) << after.error.toStdString();
+    EXPECT_EQ(after.waiting, 0);
+    const auto rows = back.allResults();
+    EXPECT_EQ(rows.size(), std::size_t(kCount));
+    std::set<QString> uids;
+    for (const ResultRecord& r : rows) uids.insert(r.uid);
+    EXPECT_EQ(uids.size(), std::size_t(kCount));
+}
+
+/// palpate-cli with `arguments`; stdout and the exit code.
+std::pair<int, QByteArray> cli(const QStringList& arguments) {
+    QProcess p;
+    p.start(QStringLiteral(PALPATE_CLI_PATH), arguments);
+    p.waitForFinished(120000);
+    return {p.exitCode(), p.readAllStandardOutput()};
+}
+
+TEST(ResultsCli, ListExportAndSyncAsUsersRunThem) {
+    QTemporaryDir dir;
+    const QString path = workstation(dir, QStringLiteral("ws"), QStringLiteral("Di"), 3);
+    const auto [listCode, listOut] = cli({QStringLiteral("results"), QStringLiteral("list"), QStringLiteral("--db"), path,
+                                          QStringLiteral("--json")});
+    ASSERT_EQ(listCode, 0);
+    const QJsonArray results = QJsonDocument::fromJson(listOut).object().value(QStringLiteral("results")).toArray();
+    ASSERT_EQ(results.size(), 3);
+    for (const auto& r : results)
+        for (const char* key : {"trainee", "exercise", "score", "time", "uid", "synced"})
+            EXPECT_TRUE(r.toObject().contains(QLatin1String(key))) << key;
+    EXPECT_EQ(results[0].toObject().value(QStringLiteral("trainee")).toString(), QStringLiteral("Di"));
+    EXPECT_FALSE(results[0].toObject().value(QStringLiteral("synced")).toBool());
+
+    const QString csv = dir.filePath(QStringLiteral("out.csv"));
+    EXPECT_EQ(cli({QStringLiteral("results"), QStringLiteral("export"), QStringLiteral("--db"), path, QStringLiteral("--csv"), csv})
+                  .first,
+              0);
+    QFile file(csv);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_EQ(file.readAll().count('\n'), 4);  // header and three rows
+    // The database is never the output.
+    EXPECT_EQ(cli({QStringLiteral("results"), QStringLiteral("export"), QStringLiteral("--db"), path, QStringLiteral("--csv"), path})
+                  .first,
+              2);
+
+    // No server: exit 1, everything still waiting.
+    const auto [awayCode, awayOut] = cli({QStringLiteral("results"), QStringLiteral("sync"), QStringLiteral("--db"),
+                                          QStringLiteral("postgresql://localhost:1/class"), QStringLiteral("--local"), path,
+                                          QStringLiteral("--json")});
+    EXPECT_EQ(awayCode, 1);
+    EXPECT_EQ(QJsonDocument::fromJson(awayOut).object().value(QStringLiteral("waiting")).toInt(), 3);
+    EXPECT_EQ(cli({QStringLiteral("results"), QStringLiteral("sync"), QStringLiteral("--db"), path}).first, 2);  // not a server
+
+    if (serverUrl().isEmpty()) return;  // the rest needs the server
+    clearServer();
+    const auto [syncCode, syncOut] = cli({QStringLiteral("results"), QStringLiteral("sync"), QStringLiteral("--db"), serverUrl(),
+                                          QStringLiteral("--local"), path, QStringLiteral("--json")});
+    EXPECT_EQ(syncCode, 0) << syncOut.toStdString();
+    EXPECT_EQ(QJsonDocument::fromJson(syncOut).object().value(QStringLiteral("sent")).toInt(), 3);
+    const auto [serverCode, serverOut] = cli({QStringLiteral("results"), QStringLiteral("list"), QStringLiteral("--db"),
+                                              serverUrl(), QStringLiteral("--json")});
+    EXPECT_EQ(serverCode, 0);
+    EXPECT_EQ(QJsonDocument::fromJson(serverOut).object().value(QStringLiteral("results")).toArray().size(), 3);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    QCoreApplication app(argc, argv);
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
