@@ -2822,6 +2822,18 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
         <source>, linear tissue</source>
         <translation>, lineares Gewebe</translation>
     </message>
+    <message>
+        <source>Results kept on this workstation and copied to the class&apos;s server (Preferences)</source>
+        <translation>Ergebnisse bleiben auf diesem Arbeitsplatz und werden auf den Server der Klasse kopiert (Einstellungen)</translation>
+    </message>
+    <message>
+        <source>Results kept on this workstation and copied to %1</source>
+        <translation>Ergebnisse bleiben auf diesem Arbeitsplatz und werden nach %1 kopiert</translation>
+    </message>
+    <message>
+        <source>The last copy to %1 stopped: %2</source>
+        <translation>Die letzte Kopie nach %1 brach ab: %2</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MeshImportDialog</name>
@@ -3982,6 +3994,26 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
         <source>Guidance:</source>
         <translation>Hilfen:</translation>
     </message>
+    <message>
+        <source>none (results stay on this workstation)</source>
+        <translation>keiner (die Ergebnisse bleiben auf diesem Arbeitsplatz)</translation>
+    </message>
+    <message>
+        <source>The class&apos;s PostgreSQL server, postgresql://user@host/database: every result is kept here first and copied there when it answers. The password goes in ~/.pgpass, never here (docs/results-store.md).</source>
+        <translation>Der PostgreSQL-Server der Klasse, postgresql://benutzer@host/datenbank: jedes Ergebnis wird zuerst hier gespeichert und dorthin kopiert, sobald er antwortet. Das Passwort gehört in ~/.pgpass, nie hierher (docs/results-store.md).</translation>
+    </message>
+    <message>
+        <source>Class&apos;s &amp;server:</source>
+        <translation>&amp;Server der Klasse:</translation>
+    </message>
+    <message>
+        <source>Class&apos;s server: postgresql://[user@]host[:port]/database</source>
+        <translation>Server der Klasse: postgresql://[benutzer@]host[:port]/datenbank</translation>
+    </message>
+    <message>
+        <source>Class&apos;s server: no password here; put it in ~/.pgpass (docs/results-store.md).</source>
+        <translation>Server der Klasse: kein Passwort hier; es gehört in ~/.pgpass (docs/results-store.md).</translation>
+    </message>
 </context>
 <context>
     <name>palpate::RecorderPanel</name>
@@ -4343,6 +4375,29 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
     <message>
         <source>%1: ticks %2 to %3</source>
         <translation>%1: Ticks %2 bis %3</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ResultUploader</name>
+    <message>
+        <source>Results: sending to the class&apos;s server…</source>
+        <translation>Ergebnisse: werden an den Server der Klasse gesendet…</translation>
+    </message>
+    <message>
+        <source>Results: all on the class&apos;s server</source>
+        <translation>Ergebnisse: alle auf dem Server der Klasse</translation>
+    </message>
+    <message>
+        <source>Results: 1 waiting for the class&apos;s server</source>
+        <translation>Ergebnisse: 1 wartet auf den Server der Klasse</translation>
+    </message>
+    <message>
+        <source>Results: %1 waiting for the class&apos;s server</source>
+        <translation>Ergebnisse: %1 warten auf den Server der Klasse</translation>
+    </message>
+    <message>
+        <source>Results: none waiting; the class&apos;s server does not answer</source>
+        <translation>Ergebnisse: keine warten; der Server der Klasse antwortet nicht</translation>
     </message>
 </context>
 <context>

@@ -2819,6 +2819,18 @@ pemapar %5</translation>
         <source>, linear tissue</source>
         <translation>, tisu linear</translation>
     </message>
+    <message>
+        <source>Results kept on this workstation and copied to the class&apos;s server (Preferences)</source>
+        <translation>Keputusan disimpan di stesen kerja ini dan disalin ke pelayan kelas (Keutamaan)</translation>
+    </message>
+    <message>
+        <source>Results kept on this workstation and copied to %1</source>
+        <translation>Keputusan disimpan di stesen kerja ini dan disalin ke %1</translation>
+    </message>
+    <message>
+        <source>The last copy to %1 stopped: %2</source>
+        <translation>Salinan terakhir ke %1 terhenti: %2</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MeshImportDialog</name>
@@ -3978,6 +3990,26 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
         <source>Guidance:</source>
         <translation>Bimbingan:</translation>
     </message>
+    <message>
+        <source>none (results stay on this workstation)</source>
+        <translation>tiada (keputusan kekal di stesen kerja ini)</translation>
+    </message>
+    <message>
+        <source>The class&apos;s PostgreSQL server, postgresql://user@host/database: every result is kept here first and copied there when it answers. The password goes in ~/.pgpass, never here (docs/results-store.md).</source>
+        <translation>Pelayan PostgreSQL kelas, postgresql://pengguna@hos/pangkalan: setiap keputusan disimpan di sini dahulu dan disalin ke sana apabila ia menjawab. Kata laluan diletakkan dalam ~/.pgpass, bukan di sini (docs/results-store.md).</translation>
+    </message>
+    <message>
+        <source>Class&apos;s &amp;server:</source>
+        <translation>&amp;Pelayan kelas:</translation>
+    </message>
+    <message>
+        <source>Class&apos;s server: postgresql://[user@]host[:port]/database</source>
+        <translation>Pelayan kelas: postgresql://[pengguna@]hos[:port]/pangkalan</translation>
+    </message>
+    <message>
+        <source>Class&apos;s server: no password here; put it in ~/.pgpass (docs/results-store.md).</source>
+        <translation>Pelayan kelas: tiada kata laluan di sini; letakkannya dalam ~/.pgpass (docs/results-store.md).</translation>
+    </message>
 </context>
 <context>
     <name>palpate::RecorderPanel</name>
@@ -4339,6 +4371,29 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
     <message>
         <source>%1: ticks %2 to %3</source>
         <translation>%1: tik %2 hingga %3</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ResultUploader</name>
+    <message>
+        <source>Results: sending to the class&apos;s server…</source>
+        <translation>Keputusan: dihantar ke pelayan kelas…</translation>
+    </message>
+    <message>
+        <source>Results: all on the class&apos;s server</source>
+        <translation>Keputusan: semua di pelayan kelas</translation>
+    </message>
+    <message>
+        <source>Results: 1 waiting for the class&apos;s server</source>
+        <translation>Keputusan: 1 menunggu pelayan kelas</translation>
+    </message>
+    <message>
+        <source>Results: %1 waiting for the class&apos;s server</source>
+        <translation>Keputusan: %1 menunggu pelayan kelas</translation>
+    </message>
+    <message>
+        <source>Results: none waiting; the class&apos;s server does not answer</source>
+        <translation>Keputusan: tiada yang menunggu; pelayan kelas tidak menjawab</translation>
     </message>
 </context>
 <context>

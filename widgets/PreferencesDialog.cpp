@@ -1,5 +1,7 @@
 #include "widgets/PreferencesDialog.h"
 
+#include "app/report/ResultsDatabase.h"
+
 #include "device/open/DeviceUri.h"
 
 #include <QComboBox>
@@ -17,6 +19,7 @@
 #include <QLocale>
 #include <QPushButton>
 #include <QSettings>
+#include <QUrl>
 #include <QStandardPaths>
 #include <QVBoxLayout>
 
@@ -49,6 +52,7 @@ Preferences Preferences::load() {
     if (!hapticRates().contains(p.hapticRateHz)) p.hapticRateHz = 0;
     p.deviceUri = settings.value(kDeviceUriKey).toString().trimmed();
     p.dataFolder = settings.value(kDataFolderKey).toString().trimmed();
+    p.resultsServer = settings.value(kResultsServerKey).toString().trimmed();
     p.fadeGauge = settings.value(kFadeGaugeKey, true).toBool();
     p.fadeSessions = std::clamp(settings.value(kFadeSessionsKey, 5).toInt(), 1, 50);
     p.goodScore = std::clamp(settings.value(kGoodScoreKey, 80.0).toDouble(), 0.0, 100.0);
@@ -62,6 +66,7 @@ void Preferences::save() const {
     settings.setValue(kHapticRateKey, hapticRateHz);
     settings.setValue(kDeviceUriKey, deviceUri);
     settings.setValue(kDataFolderKey, dataFolder);
+    settings.setValue(kResultsServerKey, resultsServer);
     settings.setValue(kFadeGaugeKey, fadeGauge);
     settings.setValue(kFadeSessionsKey, fadeSessions);
     settings.setValue(kGoodScoreKey, goodScore);
@@ -152,6 +157,14 @@ PreferencesDialog::PreferencesDialog(QWidget* parent) : QDialog(parent) {
     folderRow->addWidget(mDataFolder, 1);
     folderRow->addWidget(browse);
 
+    mResultsServer = new QLineEdit(this);
+    mResultsServer->setObjectName(QStringLiteral("resultsServerEdit"));
+    mResultsServer->setPlaceholderText(tr("none (results stay on this workstation)"));
+    mResultsServer->setToolTip(tr("The class's PostgreSQL server, postgresql://user@host/database: every result is kept "
+                                  "here first and copied there when it answers. The password goes in ~/.pgpass, never "
+                                  "here (docs/results-store.md)."));
+    connect(mResultsServer, &QLineEdit::textChanged, this, &PreferencesDialog::validate);
+
     auto* form = new QFormLayout;
     form->addRow(tr("&Language:"), mLanguage);
     form->addRow(QString(), languageNote);
@@ -161,6 +174,9 @@ PreferencesDialog::PreferencesDialog(QWidget* parent) : QDialog(parent) {
     auto* folderLabel = new QLabel(tr("Data f&older:"), this);
     folderLabel->setBuddy(mDataFolder);
     form->addRow(folderLabel, folderRow);
+    auto* serverLabel = new QLabel(tr("Class's &server:"), this);
+    serverLabel->setBuddy(mResultsServer);
+    form->addRow(serverLabel, mResultsServer);
     mFadeGauge = new QCheckBox(tr("F&ade the force gauge as the trainee improves"), this);
     mFadeGauge->setToolTip(tr("Continuous force feedback breeds dependence: each good session of an exercise fades "
                               "the gauge, each poor one brings it back"));
@@ -214,6 +230,7 @@ void PreferencesDialog::setPreferences(const Preferences& p) {
     else if (const int i = mDevice->findData(p.deviceUri); i >= 0) mDevice->setCurrentIndex(i);
     else mDevice->setEditText(p.deviceUri);
     mDataFolder->setText(QDir::toNativeSeparators(p.dataFolder));
+    mResultsServer->setText(p.resultsServer);
     mFadeGauge->setChecked(p.fadeGauge);
     mFadeSessions->setValue(p.fadeSessions);
     mGoodScore->setValue(p.goodScore);
@@ -230,6 +247,7 @@ Preferences PreferencesDialog::preferences() const {
     const QString text = mDevice->currentText().trimmed();
     p.deviceUri = (mDevice->currentIndex() == 0 && text == mDevice->itemText(0)) ? QString() : text;
     p.dataFolder = QDir::fromNativeSeparators(mDataFolder->text().trimmed());
+    p.resultsServer = mResultsServer->text().trimmed();
     p.fadeGauge = mFadeGauge->isChecked();
     p.fadeSessions = mFadeSessions->value();
     p.goodScore = mGoodScore->value();
@@ -247,6 +265,13 @@ void PreferencesDialog::validate() {
     }
     if (mProblem.isEmpty() && !p.dataFolder.isEmpty() && QDir::isRelativePath(p.dataFolder))
         mProblem = tr("The data folder must be an absolute path.");
+    if (mProblem.isEmpty() && !p.resultsServer.isEmpty()) {
+        const QUrl url(p.resultsServer);
+        if (!isServerLocation(p.resultsServer) || !url.isValid() || url.host().isEmpty() || url.path().size() < 2)
+            mProblem = tr("Class's server: postgresql://[user@]host[:port]/database");
+        else if (!url.password().isEmpty())
+            mProblem = tr("Class's server: no password here; put it in ~/.pgpass (docs/results-store.md).");
+    }
     mProblemLabel->setText(mProblem);
     mProblemLabel->setVisible(!mProblem.isEmpty());
     if (mOkButton) mOkButton->setEnabled(mProblem.isEmpty());

@@ -7,6 +7,7 @@
 //   haptic/rateHz      0 (the tissue preset's own) | 250..4000 at start, and on OK
 //   device/defaultUri  "" (built-in: mouse:) | a device URI    the interactive window's device at start
 //   dataFolder         "" (QStandardPaths::AppDataLocation)    recordings/ and results.sqlite, at start and on OK
+//   results/serverUrl  "" (none) | postgresql://host/database  the class's server results are copied to (docs/results-store.md)
 //   firstRunDone       bool                                    the welcome page is not shown at start
 //   guidance/fadeGauge bool (true)                             the force gauge fades as a trainee improves
 //   guidance/fadeSessions 1..50 (5)                            good sessions from a full gauge to none
@@ -39,12 +40,14 @@ struct Preferences {
     static constexpr const char* kFadeGaugeKey = "guidance/fadeGauge";
     static constexpr const char* kFadeSessionsKey = "guidance/fadeSessions";
     static constexpr const char* kGoodScoreKey = "guidance/goodScore";
+    static constexpr const char* kResultsServerKey = "results/serverUrl";
 
     QString language;                       ///< "" = follow the system locale
     QString forceUnit = QStringLiteral("N");  ///< "N" or "gf" (gram-force: 1 gf = 9.80665 mN)
     int hapticRateHz = 0;                   ///< 0 = the tissue preset's rate
     QString deviceUri;                      ///< "" = the built-in default (the mouse)
     QString dataFolder;                     ///< "" = defaultDataFolder()
+    QString resultsServer;                  ///< "" = none; a postgresql:// URL without a password
     bool fadeGauge = true;                  ///< fading guidance (GuidanceFadeDef)
     int fadeSessions = 5;
     double goodScore = 80.0;
@@ -104,6 +107,7 @@ private:
     QComboBox* mHapticRate = nullptr;
     QComboBox* mDevice = nullptr;
     QLineEdit* mDataFolder = nullptr;
+    QLineEdit* mResultsServer = nullptr;
     QCheckBox* mFadeGauge = nullptr;
     QSpinBox* mFadeSessions = nullptr;
     QDoubleSpinBox* mGoodScore = nullptr;

@@ -446,6 +446,7 @@ void ExerciseController::finish(const QString& why) {
             stored = mExpertSession ? tr("Expert reference session stored for %1: it sets the pass marks.").arg(mTraineeName)
                                     : tr("Result stored for %1.").arg(mTraineeName);
             if (!mExpertSession) stored += recordStaircaseTrial(report);
+            emit resultStored();
         }
         mHistory.refresh();
         mHistory.setTrainee(mTraineeId);

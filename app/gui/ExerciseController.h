@@ -104,6 +104,8 @@ signals:
     void finished();
     /// The exercise's recording started or ended (the Recorder dock shows it like its own).
     void recordingStateChanged(bool recording, const QString& path);
+    /// A result was committed to the workstation's database (the class's server may take it now).
+    void resultStored();
 
 private:
     /// Why no database is open: openDatabase's error, naming the file and the reason.

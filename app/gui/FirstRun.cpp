@@ -1,4 +1,5 @@
 #include "app/gui/FirstRun.h"
+#include "app/report/ResultUploader.h"
 
 #include "app/common/DefaultScene.h"
 #include "app/gui/ExerciseController.h"
@@ -212,6 +213,7 @@ void applyPreferences(MainWindow& window) {
         QDir().mkpath(folder.absolutePath());
         window.exercises().openDatabase(database);
     }
+    window.resultUploader()->setLocations(window.exercises().database().path(), p.resultsServer);
     if (p.hapticRateHz > 0 && window.session().preset().hapticRateHz != p.hapticRateHz && !window.exercises().running()) {
         TissuePreset preset = window.session().preset();
         preset.hapticRateHz = p.hapticRateHz;

@@ -14,6 +14,7 @@
 #include "widgets/GuardedLoad.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/LodPanel.h"
+#include "app/report/ResultUploader.h"
 #include "engine/accuracy/StiffeningCalibration.h"
 #include "widgets/MeshImportDialog.h"
 #include "widgets/MeshSizeText.h"
@@ -492,6 +493,9 @@ void MainWindow::createStatusBar() {
     mForceLabel = addStatusField(bar, "forceStatus", tr("Force sent to the device (after the safety filter)"));
     mRecordingLabel = addStatusField(bar, "recordingStatusField", tr("The session is being recorded, or a recording is played back"));
     mRecordingLabel->hide();
+    mResultsLabel = addStatusField(bar, "resultsServerStatus",
+                                   tr("Results kept on this workstation and copied to the class's server (Preferences)"));
+    mResultsLabel->hide();
 }
 
 void MainWindow::checkCurrentDevice() {
@@ -1163,6 +1167,19 @@ void MainWindow::createExerciseDocks() {
     // The results database in the data folder; a failure is shown in the dock and nothing else
     // breaks (exercises still run and score; results are not kept).
     mExercises->openDatabase(ExerciseController::defaultDatabasePath());
+
+    // The class's server (docs/results-store.md): each stored result is copied when it answers.
+    mUploader = new ResultUploader(this);
+    connect(mUploader, &ResultUploader::changed, this, [this] {
+        const QString text = mUploader->statusText();
+        mResultsLabel->setText(text);
+        mResultsLabel->setVisible(!text.isEmpty());
+        const SyncReport& last = mUploader->lastReport();
+        mResultsLabel->setToolTip(last.error.isEmpty()
+                                      ? tr("Results kept on this workstation and copied to %1").arg(mUploader->serverUrl())
+                                      : tr("The last copy to %1 stopped: %2").arg(mUploader->serverUrl(), last.error));
+    });
+    connect(mExercises, &ExerciseController::resultStored, mUploader, &ResultUploader::syncNow);
 }
 
 void MainWindow::createEditorDock() {

@@ -28,6 +28,8 @@ class QUndoGroup;
 
 namespace palpate {
 
+class ResultUploader;
+
 class ChartsPanel;
 class DevicePanel;
 class ExerciseController;
@@ -116,6 +118,8 @@ public:
     QUndoGroup* undoGroup() const { return mUndoGroup; }
     HistoryPanel* historyPanel() const { return mHistoryPanel; }
     ExerciseController& exercises() { return *mExercises; }
+    /// Copies the stored results to the class's server (Preferences, docs/results-store.md).
+    ResultUploader* resultUploader() const { return mUploader; }
     /// Instructor mode shows the tools that shape the tissue and the exercises (parameters,
     /// charts, the exercise editor); trainee mode the Exercise and History docks. Kept in QSettings.
     enum class Mode { Instructor, Trainee };
@@ -259,6 +263,8 @@ private:
     QLabel* mDeviceLabel = nullptr;
     QLabel* mContactLabel = nullptr;
     QLabel* mForceLabel = nullptr;
+    QLabel* mResultsLabel = nullptr;
+    ResultUploader* mUploader = nullptr;  // owned by Qt (child of this window)
     QAction* mPlayAction = nullptr;
     QAction* mWireframeAction = nullptr;
     QAction* mTouchAction = nullptr;

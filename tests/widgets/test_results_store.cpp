@@ -6,6 +6,7 @@
 // postgresql-common), which starts a throw-away cluster and sets PGHOST, PGPORT, PGUSER, PGPASSWORD
 // and PGDATABASE; without them they are skipped (and the SQLite ones run).
 #include "app/report/ResultSync.h"
+#include "app/report/ResultUploader.h"
 #include "app/report/ResultsDatabase.h"
 
 #include <QCoreApplication>
@@ -16,7 +17,9 @@
 #include <QProcess>
 #include <QSqlDatabase>
 #include <QSqlQuery>
+#include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QTest>
 
 #include <gtest/gtest.h>
 
@@ -276,6 +279,29 @@ TEST(PostgresqlStore, AServerStoppedMidwayGetsEveryResultOnceWhenItReturns) {
     std::set<QString> uids;
     for (const ResultRecord& r : rows) uids.insert(r.uid);
     EXPECT_EQ(uids.size(), std::size_t(kCount));
+}
+
+// The window's uploader: off the GUI thread, it says what waits while the server is away, and that
+// everything is there once it answers.
+TEST(ResultUploaderTest, SaysWhatWaitsAndSendsWhenTheServerAnswers) {
+    QTemporaryDir dir;
+    const QString path = workstation(dir, QStringLiteral("ws"), QStringLiteral("Ed"), 2);
+    ResultUploader uploader;
+    EXPECT_TRUE(uploader.statusText().isEmpty());  // no server: nothing to say
+    QSignalSpy changed(&uploader, &ResultUploader::changed);
+    uploader.setLocations(path, QStringLiteral("postgresql://localhost:1/class"));
+    EXPECT_TRUE(uploader.busy());  // started, not run on this thread
+    ASSERT_TRUE(QTest::qWaitFor([&] { return uploader.hasReport() && !uploader.busy(); }, 30000));
+    EXPECT_EQ(uploader.lastReport().waiting, 2);
+    EXPECT_FALSE(uploader.lastReport().error.isEmpty());
+    EXPECT_TRUE(uploader.statusText().contains(QStringLiteral("2 waiting"))) << uploader.statusText().toStdString();
+    if (serverUrl().isEmpty()) return;
+    clearServer();
+    uploader.setLocations(path, serverUrl());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return uploader.hasReport() && !uploader.busy(); }, 30000));
+    EXPECT_TRUE(uploader.lastReport().error.isEmpty()) << uploader.lastReport().error.toStdString();
+    EXPECT_EQ(uploader.lastReport().sent, 2);
+    EXPECT_TRUE(uploader.statusText().contains(QStringLiteral("all on"))) << uploader.statusText().toStdString();
 }
 
 /// palpate-cli with `arguments`; stdout and the exit code.

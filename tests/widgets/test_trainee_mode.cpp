@@ -8,6 +8,7 @@
 #include "app/gui/ExerciseController.h"
 #include "app/report/ScoreReportFromRecording.h"
 #include "app/gui/MainWindow.h"
+#include "app/report/ResultUploader.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
 #include "widgets/ExerciseEditorPanel.h"
@@ -29,6 +30,7 @@
 #include "engine/scoring/Staircase.h"
 
 #include <QApplication>
+#include <QLabel>
 #include <QCheckBox>
 #include <QDialog>
 #include <QComboBox>
@@ -159,6 +161,32 @@ TEST(TraineeMode, PressTargetsRunsGuidesScoresAndStores) {
     EXPECT_TRUE(results[0].metricsJson.contains(QStringLiteral("target_error_mm")));
     EXPECT_EQ(window->historyPanel()->results().size(), 1u);
     EXPECT_EQ(window->historyPanel()->plottedPointCount(), 1);
+}
+
+// With a class's server set, a stored result is copied after the session; while the server does
+// not answer the status bar says the result waits (docs/results-store.md).
+TEST(TraineeMode, AStoredResultWaitsForTheClassServerInTheStatusBar) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+    ASSERT_NO_FATAL_FAILURE(readyAdaForPressTargets(*window));
+    ResultUploader* uploader = window->resultUploader();
+    ASSERT_NE(uploader, nullptr);
+    uploader->setLocations(window->exercises().database().path(), QStringLiteral("postgresql://localhost:1/class"));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return uploader->hasReport() && !uploader->busy(); }, 30000));
+    auto* label = window->findChild<QLabel*>(QStringLiteral("resultsServerStatus"));
+    ASSERT_NE(label, nullptr);
+    EXPECT_TRUE(label->text().contains(QStringLiteral("does not answer"))) << label->text().toStdString();  // none yet
+
+    ASSERT_EQ(window->exercises().start(), QString());
+    runToEnd(*window, 45000);
+    ASSERT_EQ(window->exercises().phase(), ExerciseController::Phase::Finished);
+    // The copy runs off the GUI thread after the result was stored.
+    ASSERT_TRUE(QTest::qWaitFor([&] { return uploader->lastReport().waiting == 1 && !uploader->busy(); }, 30000));
+    EXPECT_TRUE(label->isVisible());
+    EXPECT_TRUE(label->text().contains(QStringLiteral("1 waiting"))) << label->text().toStdString();
+    EXPECT_TRUE(label->toolTip().contains(QStringLiteral("stopped"))) << label->toolTip().toStdString();
+    EXPECT_EQ(window->exercises().database().unsyncedResults().size(), 1u);
 }
 
 // The score depends only on what the trainee did: a scripted trainee's path starts with the
