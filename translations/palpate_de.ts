@@ -225,6 +225,125 @@
     </message>
 </context>
 <context>
+    <name>palpate::ClassDialog</name>
+    <message>
+        <source>Class View</source>
+        <translation>Klassenansicht</translation>
+    </message>
+    <message>
+        <source>This workstation</source>
+        <translation>Dieser Arbeitsplatz</translation>
+    </message>
+    <message>
+        <source>The class&apos;s server (%1)</source>
+        <translation>Der Server der Klasse (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Refresh</source>
+        <translation>&amp;Aktualisieren</translation>
+    </message>
+    <message>
+        <source>&amp;Export CSV…</source>
+        <translation>CSV &amp;exportieren…</translation>
+    </message>
+    <message>
+        <source>Trainee</source>
+        <translation>Lernende(r)</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Übung</translation>
+    </message>
+    <message>
+        <source>Sessions</source>
+        <translation>Sitzungen</translation>
+    </message>
+    <message>
+        <source>Latest</source>
+        <translation>Letzte</translation>
+    </message>
+    <message>
+        <source>Best</source>
+        <translation>Beste</translation>
+    </message>
+    <message>
+        <source>Against the marks</source>
+        <translation>Gegen die Marken</translation>
+    </message>
+    <message>
+        <source>Last session</source>
+        <translation>Letzte Sitzung</translation>
+    </message>
+    <message>
+        <source>&amp;Results of:</source>
+        <translation>&amp;Ergebnisse von:</translation>
+    </message>
+    <message>
+        <source>Export the Class View</source>
+        <translation>Klassenansicht exportieren</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Exported %1 rows to %2.</source>
+        <translation>%1 Zeilen nach %2 exportiert.</translation>
+    </message>
+    <message>
+        <source>Reading %1…</source>
+        <translation>%1 wird gelesen…</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>Kann %1 nicht lesen: %2</translation>
+    </message>
+    <message>
+        <source>1 trainee</source>
+        <translation>1 Lernende(r)</translation>
+    </message>
+    <message>
+        <source>%1 trainees</source>
+        <translation>%1 Lernende</translation>
+    </message>
+    <message>
+        <source>1 row</source>
+        <translation>1 Zeile</translation>
+    </message>
+    <message>
+        <source>%1 rows</source>
+        <translation>%1 Zeilen</translation>
+    </message>
+    <message>
+        <source>%1: %2, %3. Exercises are matched by name across workstations.</source>
+        <translation>%1: %2, %3. Übungen werden über Arbeitsplätze hinweg nach Namen zugeordnet.</translation>
+    </message>
+    <message>
+        <source>proficient</source>
+        <translation>kompetent</translation>
+    </message>
+    <message>
+        <source>passed (once)</source>
+        <translation>bestanden (einmal)</translation>
+    </message>
+    <message>
+        <source>not yet</source>
+        <translation>noch nicht</translation>
+    </message>
+    <message>
+        <source>no marks</source>
+        <translation>keine Marken</translation>
+    </message>
+    <message>
+        <source>%1 is the results database: choose another file</source>
+        <translation>%1 ist die Ergebnisdatenbank: eine andere Datei wählen</translation>
+    </message>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1: kann nicht geschrieben werden (%2)</translation>
+    </message>
+</context>
+<context>
     <name>palpate::DevicePanel</name>
     <message>
         <source>Disconnected</source>
@@ -2833,6 +2952,10 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>The last copy to %1 stopped: %2</source>
         <translation>Die letzte Kopie nach %1 brach ab: %2</translation>
+    </message>
+    <message>
+        <source>&amp;Class View…</source>
+        <translation>&amp;Klassenansicht…</translation>
     </message>
 </context>
 <context>

@@ -225,6 +225,125 @@
     </message>
 </context>
 <context>
+    <name>palpate::ClassDialog</name>
+    <message>
+        <source>Class View</source>
+        <translation>Paparan Kelas</translation>
+    </message>
+    <message>
+        <source>This workstation</source>
+        <translation>Stesen kerja ini</translation>
+    </message>
+    <message>
+        <source>The class&apos;s server (%1)</source>
+        <translation>Pelayan kelas (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Refresh</source>
+        <translation>&amp;Segar semula</translation>
+    </message>
+    <message>
+        <source>&amp;Export CSV…</source>
+        <translation>&amp;Eksport CSV…</translation>
+    </message>
+    <message>
+        <source>Trainee</source>
+        <translation>Pelatih</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Latihan</translation>
+    </message>
+    <message>
+        <source>Sessions</source>
+        <translation>Sesi</translation>
+    </message>
+    <message>
+        <source>Latest</source>
+        <translation>Terkini</translation>
+    </message>
+    <message>
+        <source>Best</source>
+        <translation>Terbaik</translation>
+    </message>
+    <message>
+        <source>Against the marks</source>
+        <translation>Berbanding tanda</translation>
+    </message>
+    <message>
+        <source>Last session</source>
+        <translation>Sesi terakhir</translation>
+    </message>
+    <message>
+        <source>&amp;Results of:</source>
+        <translation>&amp;Keputusan bagi:</translation>
+    </message>
+    <message>
+        <source>Export the Class View</source>
+        <translation>Eksport Paparan Kelas</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Exported %1 rows to %2.</source>
+        <translation>%1 baris dieksport ke %2.</translation>
+    </message>
+    <message>
+        <source>Reading %1…</source>
+        <translation>Membaca %1…</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>Tidak dapat membaca %1: %2</translation>
+    </message>
+    <message>
+        <source>1 trainee</source>
+        <translation>1 pelatih</translation>
+    </message>
+    <message>
+        <source>%1 trainees</source>
+        <translation>%1 pelatih</translation>
+    </message>
+    <message>
+        <source>1 row</source>
+        <translation>1 baris</translation>
+    </message>
+    <message>
+        <source>%1 rows</source>
+        <translation>%1 baris</translation>
+    </message>
+    <message>
+        <source>%1: %2, %3. Exercises are matched by name across workstations.</source>
+        <translation>%1: %2, %3. Latihan dipadankan mengikut nama merentas stesen kerja.</translation>
+    </message>
+    <message>
+        <source>proficient</source>
+        <translation>cekap</translation>
+    </message>
+    <message>
+        <source>passed (once)</source>
+        <translation>lulus (sekali)</translation>
+    </message>
+    <message>
+        <source>not yet</source>
+        <translation>belum</translation>
+    </message>
+    <message>
+        <source>no marks</source>
+        <translation>tiada tanda</translation>
+    </message>
+    <message>
+        <source>%1 is the results database: choose another file</source>
+        <translation>%1 ialah pangkalan data keputusan: pilih fail lain</translation>
+    </message>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1: tidak dapat ditulis (%2)</translation>
+    </message>
+</context>
+<context>
     <name>palpate::DevicePanel</name>
     <message>
         <source>Disconnected</source>
@@ -2830,6 +2949,10 @@ pemapar %5</translation>
     <message>
         <source>The last copy to %1 stopped: %2</source>
         <translation>Salinan terakhir ke %1 terhenti: %2</translation>
+    </message>
+    <message>
+        <source>&amp;Class View…</source>
+        <translation>Paparan &amp;Kelas…</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,8 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/ResultsLocation.h"
+#include "app/common/DefaultScene.h"
+#include "app/report/ClassSummary.h"
 #include "app/report/ResultSync.h"
 #include "app/report/ResultsDatabase.h"
 
@@ -23,11 +25,15 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+/// A shipped exercise: its folder holds the examples a class trains on.
+constexpr const char* kExampleExercise = "exercises/press_targets.json";
+
 void resultsUsage(std::ostream& out) {
     out << "usage:\n"
            "  palpate-cli results list [--db LOCATION] [--json]\n"
            "  palpate-cli results export --csv FILE [--db LOCATION]\n"
            "  palpate-cli results sync --db URL [--local FILE] [--json]\n"
+           "  palpate-cli results class [--db LOCATION] [--json] [--csv FILE]\n"
            "      LOCATION: an SQLite file (default: the GUI's results.sqlite) or postgresql://[user@]host[:port]/db\n"
            "      sync: copies this workstation's results (--local, default the GUI's) to the server URL; the\n"
            "      password comes from ~/.pgpass or PGPASSFILE, never from the URL\n";
@@ -114,6 +120,49 @@ int exportCommand(const Args& args) {
     return 0;
 }
 
+/// The instructor's class view: per trainee and exercise, sessions, latest and best, the verdict.
+int classCommand(const Args& args) {
+    const std::string location = args.option("db").value_or(defaultDatabasePath());
+    if (const auto csv = args.option("csv"))
+        if (const std::string refused = outputIsAnInput("csv", *csv, {{location, "db"}}); !refused.empty()) {
+            std::cerr << "results class: " << refused << "\n";
+            return 2;
+        }
+    ResultsDatabase db;
+    if (!openExisting(db, location, "class")) return 1;
+    const std::vector<ClassRow> rows =
+        classSummary(db.allResults(), defaultExerciseLookup(QFileInfo(QString::fromStdString(findResource(kExampleExercise))).absolutePath()));
+    if (const auto csv = args.option("csv")) {
+        std::ofstream file(*csv);
+        file << classSummaryCsv(rows).toStdString();
+        if (!file) {
+            std::cerr << "results class: " << *csv << ": cannot be written\n";
+            return 1;
+        }
+    }
+    if (args.flag("json")) {
+        Json list = Json::array();
+        for (const ClassRow& r : rows)
+            list.push_back({{"trainee", text(r.trainee)},
+                            {"exercise", text(r.exercise)},
+                            {"sessions", r.sessions},
+                            {"latest_score", r.latestScore},
+                            {"latest_time", text(r.latestUtc.toString(Qt::ISODate))},
+                            {"best_score", r.bestScore},
+                            {"verdict", text(r.verdict)},
+                            {"note", text(r.standardNote)}});
+        std::cout << Json{{"database", text(db.path())}, {"rows", list}}.dump(2) << "\n";
+        return 0;
+    }
+    if (rows.empty()) std::cout << "no trainee has a scored session in " << text(db.path()) << "\n";
+    for (const ClassRow& r : rows)
+        std::cout << std::left << std::setw(16) << text(r.trainee) << std::setw(28) << text(r.exercise) << std::right
+                  << std::setw(4) << r.sessions << std::fixed << std::setprecision(1) << std::setw(8) << r.latestScore
+                  << std::setw(8) << r.bestScore << "  " << text(r.verdict)
+                  << (r.standardNote.isEmpty() ? "" : " (" + text(r.standardNote) + ")") << "\n";
+    return 0;
+}
+
 int syncCommand(const Args& args) {
     const auto url = args.option("db");
     if (!url || !isServerLocation(QString::fromStdString(*url))) {
@@ -168,6 +217,7 @@ int resultsCommand(const std::vector<std::string>& words) {
     if (sub == "list") return listCommand(args);
     if (sub == "export") return exportCommand(args);
     if (sub == "sync") return syncCommand(args);
+    if (sub == "class") return classCommand(args);
     std::cerr << "palpate-cli results: unknown subcommand '" << sub << "'\n";
     resultsUsage(std::cerr);
     return 2;

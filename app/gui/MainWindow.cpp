@@ -14,6 +14,7 @@
 #include "widgets/GuardedLoad.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/LodPanel.h"
+#include "widgets/ClassDialog.h"
 #include "app/report/ResultUploader.h"
 #include "engine/accuracy/StiffeningCalibration.h"
 #include "widgets/MeshImportDialog.h"
@@ -1364,6 +1365,15 @@ void MainWindow::createExerciseMenu() {
     menu->addAction(tr("&Open Exercise…"), this, &MainWindow::openExerciseDialog);
     menu->addAction(tr("&New Trainee…"), this, &MainWindow::newTraineeDialog);
     menu->addAction(tr("&Export Score Report (PDF)…"), this, &MainWindow::exportScorePdfDialog);
+    menu->addAction(tr("&Class View…"), this, [this] {
+        // Every trainee of the class: this workstation's results, or the class's server's.
+        auto* dialog = new ClassDialog(mExercises->database().path(), Preferences::load().resultsServer,
+                                       QFileInfo(QString::fromStdString(cli::findResource("exercises/press_targets.json")))
+                                           .absolutePath(),
+                                       this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+    });
     menu->addAction(tr("&History"), QKeySequence(Qt::CTRL | Qt::Key_H), this, [this] {
         mHistoryDock->show();
         mHistoryDock->raise();

@@ -5,6 +5,7 @@
 // The PostgreSQL tests need a server: ctest runs this executable under pg_virtualenv (Debian's
 // postgresql-common), which starts a throw-away cluster and sets PGHOST, PGPORT, PGUSER, PGPASSWORD
 // and PGDATABASE; without them they are skipped (and the SQLite ones run).
+#include "app/report/ClassSummary.h"
 #include "app/report/ResultSync.h"
 #include "app/report/ResultUploader.h"
 #include "app/report/ResultsDatabase.h"
@@ -302,6 +303,75 @@ TEST(ResultUploaderTest, SaysWhatWaitsAndSendsWhenTheServerAnswers) {
     EXPECT_TRUE(uploader.lastReport().error.isEmpty()) << uploader.lastReport().error.toStdString();
     EXPECT_EQ(uploader.lastReport().sent, 2);
     EXPECT_TRUE(uploader.statusText().contains(QStringLiteral("all on"))) << uploader.statusText().toStdString();
+}
+
+/// A scored press-targets session with these completion and time values.
+ScoreReport pressTargets(double score, double completion, double timeS) {
+    ScoreReport r = report(score);
+    r.exerciseName = "Press three targets";
+    r.type = ExerciseType::PressTargets;
+    for (auto [metric, value] : {std::pair{Metric::Completion, completion}, std::pair{Metric::TimeS, timeS}}) {
+        MetricResult m;
+        m.metric = metric;
+        m.value = value;
+        m.weight = 1.0;
+        r.metrics.push_back(m);
+    }
+    return r;
+}
+
+// The Class view: per trainee and exercise the sessions, latest and best, and the verdict against
+// the experts' marks (here: completion and time, two experts at 1.0 in 20-24 s).
+TEST(ClassSummaryTest, LatestBestAndTheVerdictPerTraineeAndExercise) {
+    QTemporaryDir dir;
+    ResultsDatabase db;
+    QString error;
+    ASSERT_TRUE(db.open(dir.filePath(QStringLiteral("class.sqlite")), &error));
+    const qint64 expert = db.addTrainee(QStringLiteral("Expert")), ann = db.addTrainee(QStringLiteral("Ann")),
+                 bo = db.addTrainee(QStringLiteral("Bo"));
+    const QString path = QStringLiteral("/elsewhere/press_targets.json");  // another workstation's path
+    auto add = [&](qint64 who, const ScoreReport& r, bool isExpert, int minute) {
+        ASSERT_GE(db.addResult(who, r, QStringLiteral("Press three targets"), path,
+                               QDateTime::fromString(QStringLiteral("2026-12-01T10:%1:00Z").arg(minute, 2, 10, QLatin1Char('0')),
+                                                     Qt::ISODate),
+                               20.0, QString(), isExpert, &error),
+                  0)
+            << error.toStdString();
+    };
+    add(expert, pressTargets(95, 1.0, 20.0), true, 0);
+    add(expert, pressTargets(93, 1.0, 24.0), true, 1);
+    add(ann, pressTargets(90, 1.0, 21.0), false, 2);  // passes
+    add(ann, pressTargets(92, 1.0, 22.0), false, 3);  // passes again: proficient
+    add(bo, pressTargets(70, 1.0, 40.0), false, 4);   // too slow
+    add(bo, pressTargets(60, 0.5, 30.0), false, 5);   // incomplete
+    const auto rows = classSummary(db.allResults(),
+                                   defaultExerciseLookup(QStringLiteral(PALPATE_SOURCE_DIR) + QStringLiteral("/resources/exercises")));
+    ASSERT_EQ(rows.size(), 2u);  // the expert is no row of the class
+    EXPECT_EQ(rows[0].trainee, QStringLiteral("Ann"));
+    EXPECT_EQ(rows[0].sessions, 2);
+    EXPECT_DOUBLE_EQ(rows[0].latestScore, 92);
+    EXPECT_DOUBLE_EQ(rows[0].bestScore, 92);
+    EXPECT_EQ(rows[0].verdict, QStringLiteral("proficient")) << rows[0].standardNote.toStdString();
+    EXPECT_EQ(rows[1].trainee, QStringLiteral("Bo"));
+    EXPECT_DOUBLE_EQ(rows[1].latestScore, 60);
+    EXPECT_DOUBLE_EQ(rows[1].bestScore, 70);
+    EXPECT_EQ(rows[1].verdict, QStringLiteral("not yet"));
+    EXPECT_EQ(classSummaryCsv(rows).count(QLatin1Char('\n')), 3);
+    // Without the exercise file (and no example of that name) there are no marks, and it says why.
+    const auto unknown = classSummary(db.allResults(), [](const QString&, const QString&) { return std::optional<Exercise>(); });
+    EXPECT_EQ(unknown[0].verdict, QStringLiteral("no standard"));
+    EXPECT_FALSE(unknown[0].standardNote.isEmpty());
+    db.close();
+    // The command line says the same.
+    QProcess p;
+    p.start(QStringLiteral(PALPATE_CLI_PATH), {QStringLiteral("results"), QStringLiteral("class"), QStringLiteral("--db"),
+                                               dir.filePath(QStringLiteral("class.sqlite")), QStringLiteral("--json")});
+    ASSERT_TRUE(p.waitForFinished(60000));
+    EXPECT_EQ(p.exitCode(), 0);
+    const QJsonArray json = QJsonDocument::fromJson(p.readAllStandardOutput()).object().value(QStringLiteral("rows")).toArray();
+    ASSERT_EQ(json.size(), 2);
+    EXPECT_EQ(json[0].toObject().value(QStringLiteral("verdict")).toString(), QStringLiteral("proficient"));
+    EXPECT_EQ(json[1].toObject().value(QStringLiteral("best_score")).toDouble(), 70.0);
 }
 
 /// palpate-cli with `arguments`; stdout and the exit code.

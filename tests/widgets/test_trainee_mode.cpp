@@ -9,6 +9,7 @@
 #include "app/report/ScoreReportFromRecording.h"
 #include "app/gui/MainWindow.h"
 #include "app/report/ResultUploader.h"
+#include "widgets/ClassDialog.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
 #include "widgets/ExerciseEditorPanel.h"
@@ -31,6 +32,7 @@
 
 #include <QApplication>
 #include <QLabel>
+#include <QSignalSpy>
 #include <QCheckBox>
 #include <QDialog>
 #include <QComboBox>
@@ -187,6 +189,25 @@ TEST(TraineeMode, AStoredResultWaitsForTheClassServerInTheStatusBar) {
     EXPECT_TRUE(label->text().contains(QStringLiteral("1 waiting"))) << label->text().toStdString();
     EXPECT_TRUE(label->toolTip().contains(QStringLiteral("stopped"))) << label->toolTip().toStdString();
     EXPECT_EQ(window->exercises().database().unsyncedResults().size(), 1u);
+
+    // The instructor's Class view reads it (off the GUI thread) and exports it.
+    ClassDialog view(window->exercises().database().path(), QString(),
+                     QFileInfo(resource("exercises/press_targets.json")).absolutePath());
+    QSignalSpy loaded(&view, &ClassDialog::loaded);
+    ASSERT_TRUE(loaded.wait(30000) || loaded.count() == 1);
+    EXPECT_TRUE(loaded.at(0).at(0).toBool()) << view.statusText().toStdString();
+    ASSERT_EQ(view.rows().size(), 1u);
+    EXPECT_EQ(view.rows()[0].trainee, QStringLiteral("Ada"));
+    EXPECT_EQ(view.rows()[0].exercise, QStringLiteral("Press three targets"));
+    EXPECT_EQ(view.rows()[0].sessions, 1);
+    EXPECT_EQ(view.rows()[0].verdict, QStringLiteral("no standard"));  // no expert has set the marks
+    EXPECT_EQ(view.findChild<QTableWidget*>(QStringLiteral("classTable"))->rowCount(), 1);
+    const QString csv = dir.filePath(QStringLiteral("class.csv"));
+    EXPECT_EQ(view.exportCsv(csv), QString());
+    QFile file(csv);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_EQ(file.readAll().count('\n'), 2);
+    EXPECT_FALSE(view.exportCsv(window->exercises().database().path()).isEmpty());  // never over the database
 }
 
 // The score depends only on what the trainee did: a scripted trainee's path starts with the

@@ -1,0 +1,169 @@
+#include "widgets/ClassDialog.h"
+
+#include "app/report/ResultsDatabase.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QTableWidget>
+#include <QThread>
+#include <QVBoxLayout>
+
+namespace palpate {
+
+ClassDialog::ClassDialog(const QString& localPath, const QString& serverUrl, const QString& examplesFolder, QWidget* parent)
+    : QDialog(parent), mLocal(localPath), mServer(serverUrl), mExamples(examplesFolder) {
+    setWindowTitle(tr("Class View"));
+    mSource = new QComboBox(this);
+    mSource->setObjectName(QStringLiteral("classSourceCombo"));
+    mSource->addItem(tr("This workstation"), mLocal);
+    if (!mServer.isEmpty()) {
+        mSource->addItem(tr("The class's server (%1)").arg(mServer), mServer);
+        mSource->setCurrentIndex(1);
+    }
+    mRefresh = new QPushButton(tr("&Refresh"), this);
+    mRefresh->setObjectName(QStringLiteral("classRefreshButton"));
+    mExport = new QPushButton(tr("&Export CSV…"), this);
+    mExport->setObjectName(QStringLiteral("classExportButton"));
+    mTable = new QTableWidget(0, 7, this);
+    mTable->setObjectName(QStringLiteral("classTable"));
+    mTable->setHorizontalHeaderLabels({tr("Trainee"), tr("Exercise"), tr("Sessions"), tr("Latest"), tr("Best"),
+                                       tr("Against the marks"), tr("Last session")});
+    mTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    mTable->setSelectionBehavior(QAbstractItemView::SelectRows);
+    mTable->setSortingEnabled(true);
+    mTable->horizontalHeader()->setStretchLastSection(true);
+    mTable->verticalHeader()->hide();
+    mStatus = new QLabel(this);
+    mStatus->setObjectName(QStringLiteral("classStatus"));
+    mStatus->setWordWrap(true);
+    auto* top = new QHBoxLayout;
+    auto* sourceLabel = new QLabel(tr("&Results of:"), this);
+    sourceLabel->setBuddy(mSource);
+    top->addWidget(sourceLabel);
+    top->addWidget(mSource, 1);
+    top->addWidget(mRefresh);
+    top->addWidget(mExport);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addWidget(mTable, 1);
+    layout->addWidget(mStatus);
+    layout->addWidget(buttons);
+    connect(mRefresh, &QPushButton::clicked, this, &ClassDialog::refresh);
+    connect(mSource, &QComboBox::currentIndexChanged, this, &ClassDialog::refresh);
+    connect(mExport, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export the Class View"), QStringLiteral("class.csv"),
+                                                          tr("CSV (*.csv)"));
+        if (path.isEmpty()) return;
+        const QString problem = exportCsv(path);
+        mStatus->setText(problem.isEmpty() ? tr("Exported %1 rows to %2.").arg(mRows.size()).arg(path) : problem);
+    });
+    resize(820, 480);
+    refresh();
+}
+
+ClassDialog::~ClassDialog() {
+    if (mThread) {
+        mThread->wait();  // its queued call to this dialog is dropped with it
+        delete mThread;
+    }
+}
+
+bool ClassDialog::refresh() {
+    if (mThread) return false;
+    const QString location = mSource->currentData().toString(), examples = mExamples;
+    const QString source = mSource->currentText();
+    mThread = QThread::create([this, location, examples, source] {
+        std::vector<ClassRow> rows;
+        QString error;
+        {
+            ResultsDatabase db;  // a connection of this thread's own
+            if (db.open(location, &error)) rows = classSummary(db.allResults(), defaultExerciseLookup(examples));
+        }
+        QMetaObject::invokeMethod(this, [this, rows, error, source] { onLoaded(rows, error, source); }, Qt::QueuedConnection);
+    });
+    mThread->setObjectName(QStringLiteral("class view"));
+    mRefresh->setEnabled(false);
+    mStatus->setText(tr("Reading %1…").arg(source));
+    mThread->start(QThread::LowPriority);
+    return true;
+}
+
+void ClassDialog::onLoaded(const std::vector<ClassRow>& rows, const QString& error, const QString& source) {
+    if (mThread) {
+        mThread->wait();
+        delete mThread;
+        mThread = nullptr;
+    }
+    mRefresh->setEnabled(true);
+    if (!error.isEmpty()) {
+        mStatus->setText(tr("Cannot read %1: %2").arg(source, error));
+        emit loaded(false);
+        return;
+    }
+    mRows = rows;
+    fill();
+    int trainees = 0;
+    QString last;
+    for (const ClassRow& r : mRows)
+        if (r.trainee != last) ++trainees, last = r.trainee;
+    // No plural translation is loaded for English: the forms are spelled out.
+    const QString who = trainees == 1 ? tr("1 trainee") : tr("%1 trainees").arg(trainees);
+    const QString what = mRows.size() == 1 ? tr("1 row") : tr("%1 rows").arg(mRows.size());
+    mStatus->setText(tr("%1: %2, %3. Exercises are matched by name across workstations.").arg(source, who, what));
+    emit loaded(true);
+}
+
+void ClassDialog::fill() {
+    mTable->setSortingEnabled(false);
+    mTable->setRowCount(int(mRows.size()));
+    const QLocale locale;
+    for (int i = 0; i < int(mRows.size()); ++i) {
+        const ClassRow& r = mRows[std::size_t(i)];
+        auto number = [](double v) {
+            auto* item = new QTableWidgetItem;
+            item->setData(Qt::DisplayRole, qRound(v * 10.0) / 10.0);
+            return item;
+        };
+        mTable->setItem(i, 0, new QTableWidgetItem(r.trainee));
+        mTable->setItem(i, 1, new QTableWidgetItem(r.exercise));
+        auto* sessions = new QTableWidgetItem;
+        sessions->setData(Qt::DisplayRole, r.sessions);
+        mTable->setItem(i, 2, sessions);
+        mTable->setItem(i, 3, number(r.latestScore));
+        mTable->setItem(i, 4, number(r.bestScore));
+        const QString verdict = r.verdict == QLatin1String("proficient") ? tr("proficient")
+                                : r.verdict == QLatin1String("passed")   ? tr("passed (once)")
+                                : r.verdict == QLatin1String("not yet")  ? tr("not yet")
+                                                                         : tr("no marks");
+        auto* v = new QTableWidgetItem(verdict);
+        if (!r.standardNote.isEmpty()) v->setToolTip(r.standardNote);
+        if (r.verdict == QLatin1String("proficient")) v->setBackground(QColor(0xc8, 0xe6, 0xc9));
+        else if (r.verdict == QLatin1String("not yet")) v->setBackground(QColor(0xff, 0xe0, 0xb2));
+        mTable->setItem(i, 5, v);
+        mTable->setItem(i, 6, new QTableWidgetItem(locale.toString(r.latestUtc.toLocalTime(), QLocale::ShortFormat)));
+    }
+    mTable->setSortingEnabled(true);
+    mTable->resizeColumnsToContents();
+}
+
+QString ClassDialog::statusText() const { return mStatus->text(); }
+
+QString ClassDialog::exportCsv(const QString& path) const {
+    if (path == mLocal) return tr("%1 is the results database: choose another file").arg(path);
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) return tr("%1: cannot be written (%2)").arg(path, file.errorString());
+    file.write(classSummaryCsv(mRows).toUtf8());
+    if (!file.commit()) return tr("%1: cannot be written (%2)").arg(path, file.errorString());
+    return {};
+}
+
+}  // namespace palpate
