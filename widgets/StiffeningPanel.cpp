@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace palpate {
 
@@ -80,7 +81,12 @@ void StiffeningPanel::setTissue(const ToolContact& contact, const SlopeRingParam
         mReference.reset();
         setStatus(tr("The tissue changed: press Compute for its curve."));
     } else if (mReference) {
-        mReference = knotsFromCurve(mReference->curve, mParams.slopeMagnitudeMmPerN[0]);
+        try {
+            mReference = knotsFromCurve(mReference->curve, mParams.slopeMagnitudeMmPerN[0]);
+        } catch (const std::invalid_argument& e) {
+            mReference.reset();
+            setStatus(tr("The knots do not fit these slopes: %1").arg(QString::fromUtf8(e.what())), true);
+        }
     }
     rebuild();
 }

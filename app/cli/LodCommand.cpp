@@ -20,6 +20,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
 namespace palpate::cli {
 
@@ -335,8 +336,15 @@ int planCommand(const Args& args) {
     std::cerr << "plan: hyperelastic punch (" << hyperelasticLawName(stiffDef.material.law) << ", b = "
               << stiffDef.material.stiffeningExponent << ") to " << stiffDef.depthsOverRadius.back() * stiffDef.toolRadiusMm
               << " mm for linear or stiffening tissue\n";
-    const StiffeningCalibration reference = calibrateStiffening(stiffDef);
-    const StiffeningCalibration knots = knotsFromCurve(reference.curve, knotted.slopeMagnitudeMmPerN[0]);
+    StiffeningCalibration reference, knots;
+    try {
+        reference = calibrateStiffening(stiffDef);
+        knots = knotsFromCurve(reference.curve, knotted.slopeMagnitudeMmPerN[0]);
+    } catch (const std::invalid_argument& e) {
+        // A reference that stopped before its second depth, or a tissue it refuses: said, not a crash.
+        std::cerr << me << "the hyperelastic reference failed: " << e.what() << "\n";
+        return 1;
+    }
     applyStiffening(knots, knotted);
     std::vector<SceneDepth> depths;
     if (exercise) {

@@ -54,6 +54,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <stdexcept>
 #include <array>
 
 namespace palpate {
@@ -1298,9 +1299,13 @@ void MainWindow::createLodDock() {
         QString tissue;
         if (const auto& choice = mLodPanel->stiffeningChoice(); choice && choice->error.empty() && mLodPanel->stiffeningReference()) {
             if (choice->nonlinear) {
-                applyStiffening(knotsFromCurve(mLodPanel->stiffeningReference()->curve, preset.params.slopeMagnitudeMmPerN[0]),
-                                preset.params);
-                tissue = tr(", %1 stiffening knots").arg(preset.params.stiffeningKnots);
+                try {
+                    applyStiffening(knotsFromCurve(mLodPanel->stiffeningReference()->curve, preset.params.slopeMagnitudeMmPerN[0]),
+                                    preset.params);
+                    tissue = tr(", %1 stiffening knots").arg(preset.params.stiffeningKnots);
+                } catch (const std::invalid_argument& e) {
+                    tissue = tr(", linear tissue (the knots do not fit this preset: %1)").arg(QString::fromUtf8(e.what()));
+                }
             } else {
                 preset.params.stiffeningKnots = 0;
                 tissue = tr(", linear tissue");

@@ -110,7 +110,9 @@ StiffeningCalibration calibrateStiffening(const StiffeningCalibrationDef& def) {
         curve.push_back(point);
     }
     StiffeningCalibration out;
-    if (curve.size() >= 2 && linearStiffness > 0.0) out = knotsFromCurve(curve, firstSlope);
+    // A path that stopped early keeps what it reached; knots need two fitted depths.
+    const auto fitted = std::count_if(curve.begin(), curve.end(), [](const StiffeningCurvePoint& p) { return p.knot; });
+    if (fitted >= 2 && linearStiffness > 0.0) out = knotsFromCurve(curve, firstSlope);
     else out.curve = curve;
     out.completed = path.completed;
     out.failure = path.failure;
