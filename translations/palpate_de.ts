@@ -2957,6 +2957,10 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
         <source>&amp;Class View…</source>
         <translation>&amp;Klassenansicht…</translation>
     </message>
+    <message>
+        <source>, linear tissue (the knots do not fit this preset: %1)</source>
+        <translation>, lineares Gewebe (die Knoten passen nicht zu diesem Preset: %1)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MeshImportDialog</name>
@@ -5224,6 +5228,10 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
     <message>
         <source>the preset&apos;s %1 knots</source>
         <translation>die %1 Knoten des Presets</translation>
+    </message>
+    <message>
+        <source>The knots do not fit these slopes: %1</source>
+        <translation>Die Knoten passen nicht zu diesen Steigungen: %1</translation>
     </message>
 </context>
 <context>

@@ -2954,6 +2954,10 @@ pemapar %5</translation>
         <source>&amp;Class View…</source>
         <translation>Paparan &amp;Kelas…</translation>
     </message>
+    <message>
+        <source>, linear tissue (the knots do not fit this preset: %1)</source>
+        <translation>, tisu linear (simpulan tidak sesuai dengan praset ini: %1)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MeshImportDialog</name>
@@ -5220,6 +5224,10 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
     <message>
         <source>the preset&apos;s %1 knots</source>
         <translation>%1 simpulan praset</translation>
+    </message>
+    <message>
+        <source>The knots do not fit these slopes: %1</source>
+        <translation>Simpulan tidak sesuai dengan cerun ini: %1</translation>
     </message>
 </context>
 <context>
