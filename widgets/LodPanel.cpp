@@ -357,10 +357,7 @@ void LodPanel::setNeedsFields(const LodNeeds& needs) {
 void LodPanel::setMeasureDefinition(const LodMeasureDef& def) { mMeasureDef = def; }
 
 void LodPanel::setToolContact(const ToolContact& contact) {
-    const ToolContact& was = mMeasureDef.contact;
-    const bool same = contact.material.youngsModulusNPerMm2 == was.material.youngsModulusNPerMm2 &&
-                      contact.material.poissonRatio == was.material.poissonRatio &&
-                      contact.toolRadiusMm == was.toolRadiusMm && contact.stiffeningExponent == was.stiffeningExponent;
+    const bool same = sameToolContact(contact, mMeasureDef.contact);
     mMeasureDef.contact = contact;
     if (!same && mStiffeningReference) {
         mStiffeningReference.reset();  // solved for another tissue
@@ -568,8 +565,7 @@ bool LodPanel::plan() {
                 result->candidates = std::move(measured.candidates);
                 result->measureCancelled = measured.cancelled;
             }
-            // Linear or stiffening tissue (docs/lod.md, "Linear or nonlinear"): the hyperelastic
-            // punch as deep as the scene presses (the linear depth bounds it), 0.6 to 1.5 radii.
+            // Linear or stiffening tissue (docs/lod.md, "Linear or nonlinear").
             if (!cancelFlag->load()) {
                 post(1.0, tr("Pressing the hyperelastic reference for linear or stiffening tissue…"));
                 try {
@@ -581,9 +577,8 @@ bool LodPanel::plan() {
                     stiff.aOverH = 3;
                     stiff.maxStepOverRadius = 0.05;
                     const double m1 = punchFirstSlopeMmPerN(def.contact);
-                    double deepest = def.press.toolDepthMm;
-                    for (const ExerciseDemand& d : demands) deepest = std::max(deepest, d.depthMm > 0.0 ? d.depthMm : d.forceN * m1);
-                    setStiffeningDepths(stiff, std::clamp(1.05 * deepest / stiff.toolRadiusMm, 0.6, 1.5));
+                    setStiffeningDepths(stiff, stiffeningReferenceDepthOverRadius(
+                                                   deepestDemandMm(demands, m1, def.press.toolDepthMm), stiff.toolRadiusMm));
                     result->stiffening = knotsFromCurve(calibrateStiffening(stiff).curve, m1);
                 } catch (const std::exception& e) {
                     result->stiffeningError = QString::fromStdString(e.what());

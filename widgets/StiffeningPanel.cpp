@@ -67,10 +67,7 @@ StiffeningPanel::~StiffeningPanel() {
 }
 
 void StiffeningPanel::setTissue(const ToolContact& contact, const SlopeRingParams& params) {
-    const bool sameTissue = contact.material.youngsModulusNPerMm2 == mContact.material.youngsModulusNPerMm2 &&
-                            contact.material.poissonRatio == mContact.material.poissonRatio &&
-                            contact.toolRadiusMm == mContact.toolRadiusMm &&
-                            contact.stiffeningExponent == mContact.stiffeningExponent;
+    const bool sameTissue = sameToolContact(contact, mContact);
     if (!sameTissue || !mReference) {
         mDepthSpin->setRange(0.1 * contact.toolRadiusMm, 1.5 * contact.toolRadiusMm);
         mDepthSpin->setValue(0.6 * contact.toolRadiusMm);

@@ -327,12 +327,9 @@ int planCommand(const Args& args) {
     SlopeRingParams knotted;
     knotted.slopeMagnitudeMmPerN[0] = punchFirstSlopeMmPerN(choice.contact);
     const std::vector<ExerciseDemand> demands = exercise ? exerciseDemands(*exercise) : std::vector<ExerciseDemand>{};
-    // As deep as the scene presses (the linear depth bounds a stiffening one), within what the
-    // reference can solve (1.5 a) and at least 0.6 a.
-    double deepestMm = def.press.toolDepthMm;
-    for (const ExerciseDemand& d : demands)
-        deepestMm = std::max(deepestMm, d.depthMm > 0.0 ? d.depthMm : d.forceN * knotted.slopeMagnitudeMmPerN[0]);
-    setStiffeningDepths(stiffDef, std::clamp(1.05 * deepestMm / stiffDef.toolRadiusMm, 0.6, 1.5));
+    setStiffeningDepths(stiffDef, stiffeningReferenceDepthOverRadius(
+                                      deepestDemandMm(demands, knotted.slopeMagnitudeMmPerN[0], def.press.toolDepthMm),
+                                      stiffDef.toolRadiusMm));
     std::cerr << "plan: hyperelastic punch (" << hyperelasticLawName(stiffDef.material.law) << ", b = "
               << stiffDef.material.stiffeningExponent << ") to " << stiffDef.depthsOverRadius.back() * stiffDef.toolRadiusMm
               << " mm for linear or stiffening tissue\n";

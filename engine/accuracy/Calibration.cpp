@@ -66,6 +66,12 @@ std::string validateToolContact(const ToolContact& contact) {
     return {};
 }
 
+bool sameToolContact(const ToolContact& a, const ToolContact& b) {
+    return a.material.youngsModulusNPerMm2 == b.material.youngsModulusNPerMm2 &&
+           a.material.poissonRatio == b.material.poissonRatio && a.toolRadiusMm == b.toolRadiusMm &&
+           a.stiffeningExponent == b.stiffeningExponent;
+}
+
 HyperelasticMaterial hyperelasticMaterialOf(const ToolContact& contact) {
     HyperelasticMaterial m;
     m.law = contact.stiffeningExponent > 0.0 ? HyperelasticLaw::Exponential : HyperelasticLaw::NeoHookean;

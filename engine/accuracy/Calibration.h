@@ -23,6 +23,9 @@ struct ToolContact {
     double stiffeningExponent = 0.0;
 };
 
+/// Every value the same (exact): a reference solved for one still holds for the other.
+bool sameToolContact(const ToolContact& a, const ToolContact& b);
+
 /// The hyperelastic law of the tissue at large strain: exponential with b > 0, else neo-Hookean,
 /// with the contact's E and nu as its small-strain limit.
 HyperelasticMaterial hyperelasticMaterialOf(const ToolContact& contact);

@@ -42,4 +42,11 @@ std::vector<ExerciseDemand> exerciseDemands(const Exercise& exercise) {
     return out;
 }
 
+double deepestDemandMm(const std::vector<ExerciseDemand>& demands, double firstSlopeMmPerN, double atLeastMm) {
+    double deepest = atLeastMm;
+    for (const ExerciseDemand& d : demands)
+        deepest = std::max(deepest, d.depthMm > 0.0 ? d.depthMm : d.forceN * firstSlopeMmPerN);
+    return deepest;
+}
+
 }  // namespace palpate

@@ -21,4 +21,8 @@ struct ExerciseDemand {
 /// must sink that far for the lump to be felt). Never empty for a valid exercise of these types.
 std::vector<ExerciseDemand> exerciseDemands(const Exercise& exercise);
 
+/// The deepest of `demands` and `atLeastMm`, a force taken at its linear depth F |m1| (which
+/// bounds the depth of tissue that stiffens).
+double deepestDemandMm(const std::vector<ExerciseDemand>& demands, double firstSlopeMmPerN, double atLeastMm);
+
 }  // namespace palpate

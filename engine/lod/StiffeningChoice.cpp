@@ -6,6 +6,10 @@
 
 namespace palpate {
 
+double stiffeningReferenceDepthOverRadius(double deepestMm, double toolRadiusMm) {
+    return std::clamp(1.05 * deepestMm / toolRadiusMm, 0.6, 1.5);
+}
+
 double curveDepthAtForceMm(const std::vector<StiffeningCurvePoint>& curve, double forceN, double firstSlopeMmPerN) {
     if (!(forceN > 0.0)) return 0.0;
     if (curve.empty()) return forceN * firstSlopeMmPerN;

@@ -19,6 +19,10 @@ struct SceneDepth {
     double depthMm = 0.0;
 };
 
+/// How deep (over the tool radius) to press the reference for a scene whose deepest press is
+/// `deepestMm`: 5 % beyond it, within what the reference solves (0.6 to 1.5 radii).
+double stiffeningReferenceDepthOverRadius(double deepestMm, double toolRadiusMm);
+
 /// The reference depth at which the tissue carries `forceN` (the curve inverted; beyond its last
 /// point its last segment goes on). Non-positive force: 0.
 double curveDepthAtForceMm(const std::vector<StiffeningCurvePoint>& curve, double forceN, double firstSlopeMmPerN);
