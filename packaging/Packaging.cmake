@@ -67,7 +67,9 @@ set(CPACK_DEBIAN_PACKAGE_SECTION "science")
 # SQLite driver) and the GL drivers do not show up there, so they are declared by hand.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, libqt6sql6-sqlite, libgl1-mesa-dri")
-# Qt's own German strings (standard buttons, file dialogs); Qt has no Malay translation.
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "xdg-utils, qt6-translations-l10n")
+# Qt's own German strings (standard buttons, file dialogs; Qt has no Malay translation), and Qt's
+# PostgreSQL driver for a class's shared results server (docs/results-store.md; without it a
+# workstation keeps its results to itself and says why).
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "xdg-utils, qt6-translations-l10n, libqt6sql6-psql")
 set(CPACK_DEBIAN_COMPRESSION_TYPE "gzip")  # fast to build in the test
 include(CPack)

@@ -342,6 +342,30 @@
         <source>%1: cannot be written (%2)</source>
         <translation>%1: kann nicht geschrieben werden (%2)</translation>
     </message>
+    <message>
+        <source>Show one class (a class is the server&apos;s: a workstation&apos;s role belongs to one)</source>
+        <translation>Eine Klasse zeigen (Klassen legt der Server fest: die Rolle eines Arbeitsplatzes gehört zu einer)</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>Klasse</translation>
+    </message>
+    <message>
+        <source>C&amp;lass:</source>
+        <translation>K&amp;lasse:</translation>
+    </message>
+    <message>
+        <source>%1 as %2</source>
+        <translation>%1 als %2</translation>
+    </message>
+    <message>
+        <source>All</source>
+        <translation>Alle</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::DevicePanel</name>
@@ -2946,10 +2970,6 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
         <translation>Ergebnisse bleiben auf diesem Arbeitsplatz und werden auf den Server der Klasse kopiert (Einstellungen)</translation>
     </message>
     <message>
-        <source>Results kept on this workstation and copied to %1</source>
-        <translation>Ergebnisse bleiben auf diesem Arbeitsplatz und werden nach %1 kopiert</translation>
-    </message>
-    <message>
         <source>The last copy to %1 stopped: %2</source>
         <translation>Die letzte Kopie nach %1 brach ab: %2</translation>
     </message>
@@ -2960,6 +2980,10 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>, linear tissue (the knots do not fit this preset: %1)</source>
         <translation>, lineares Gewebe (die Knoten passen nicht zu diesem Preset: %1)</translation>
+    </message>
+    <message>
+        <source>Results kept on this workstation and copied to %1 (%2)</source>
+        <translation>Ergebnisse auf diesem Arbeitsplatz gespeichert und nach %1 kopiert (%2)</translation>
     </message>
 </context>
 <context>
@@ -4468,6 +4492,10 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>%1: is not a regular file (a FIFO or a device), not a recording</source>
         <translation>%1: ist keine gewöhnliche Datei (ein FIFO oder ein Gerät), keine Aufzeichnung</translation>
     </message>
+    <message>
+        <source>Divergence guard fired: %1</source>
+        <translation>Divergenzwächter ausgelöst: %1</translation>
+    </message>
 </context>
 <context>
     <name>palpate::RecordingTimeline</name>
@@ -4656,6 +4684,53 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
     <message>
         <source>cannot store result %1: %2</source>
         <translation>kann Ergebnis %1 nicht speichern: %2</translation>
+    </message>
+    <message>
+        <source>this role may not read the results (%1): the instructor grants it a workstation or instructor role (palpate-cli results grant, docs/results-store.md)</source>
+        <translation>diese Rolle darf die Ergebnisse nicht lesen (%1): die Lehrkraft gibt ihr eine Arbeitsplatz- oder Lehrkraftrolle (palpate-cli results grant, docs/results-store.md)</translation>
+    </message>
+    <message>
+        <source>cannot read this connection&apos;s role: %1</source>
+        <translation>die Rolle dieser Verbindung ist nicht lesbar: %1</translation>
+    </message>
+    <message>
+        <source>role %1</source>
+        <translation>Rolle %1</translation>
+    </message>
+    <message>
+        <source>role %1, class %2</source>
+        <translation>Rolle %1, Klasse %2</translation>
+    </message>
+    <message>
+        <source>, TLS</source>
+        <translation>, TLS</translation>
+    </message>
+    <message>
+        <source>, no TLS</source>
+        <translation>, ohne TLS</translation>
+    </message>
+    <message>
+        <source>cannot migrate from schema version 5 to 6: %1</source>
+        <translation>Migration von Schemaversion 5 auf 6 nicht möglich: %1</translation>
+    </message>
+    <message>
+        <source>the server already has a trainee of that name in another class</source>
+        <translation>der Server hat bereits einen Lernenden dieses Namens in einer anderen Klasse</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ResultsRoles</name>
+    <message>
+        <source>%1: roles exist on a PostgreSQL server only, not in an SQLite file</source>
+        <translation>%1: Rollen gibt es nur auf einem PostgreSQL-Server, nicht in einer SQLite-Datei</translation>
+    </message>
+    <message>
+        <source>role name &quot;%1&quot; is refused: letters, digits, _ . @ - only, starting with a letter or _</source>
+        <translation>Rollenname &quot;%1&quot; abgelehnt: nur Buchstaben, Ziffern, _ . @ -, am Anfang ein Buchstabe oder _</translation>
+    </message>
+    <message>
+        <source>a workstation needs a class (--class NAME)</source>
+        <translation>ein Arbeitsplatz braucht eine Klasse (--class NAME)</translation>
     </message>
 </context>
 <context>

@@ -342,6 +342,30 @@
         <source>%1: cannot be written (%2)</source>
         <translation>%1: tidak dapat ditulis (%2)</translation>
     </message>
+    <message>
+        <source>Show one class (a class is the server&apos;s: a workstation&apos;s role belongs to one)</source>
+        <translation>Tunjukkan satu kelas (kelas ditetapkan oleh pelayan: peranan stesen kerja tergolong dalam satu)</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>Kelas</translation>
+    </message>
+    <message>
+        <source>C&amp;lass:</source>
+        <translation>K&amp;elas:</translation>
+    </message>
+    <message>
+        <source>%1 as %2</source>
+        <translation>%1 sebagai %2</translation>
+    </message>
+    <message>
+        <source>All</source>
+        <translation>Semua</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(tiada)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::DevicePanel</name>
@@ -2943,10 +2967,6 @@ pemapar %5</translation>
         <translation>Keputusan disimpan di stesen kerja ini dan disalin ke pelayan kelas (Keutamaan)</translation>
     </message>
     <message>
-        <source>Results kept on this workstation and copied to %1</source>
-        <translation>Keputusan disimpan di stesen kerja ini dan disalin ke %1</translation>
-    </message>
-    <message>
         <source>The last copy to %1 stopped: %2</source>
         <translation>Salinan terakhir ke %1 terhenti: %2</translation>
     </message>
@@ -2957,6 +2977,10 @@ pemapar %5</translation>
     <message>
         <source>, linear tissue (the knots do not fit this preset: %1)</source>
         <translation>, tisu linear (simpulan tidak sesuai dengan praset ini: %1)</translation>
+    </message>
+    <message>
+        <source>Results kept on this workstation and copied to %1 (%2)</source>
+        <translation>Keputusan disimpan di stesen kerja ini dan disalin ke %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -4464,6 +4488,10 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>%1: is not a regular file (a FIFO or a device), not a recording</source>
         <translation>%1: bukan fail biasa (FIFO atau peranti), bukan rakaman</translation>
     </message>
+    <message>
+        <source>Divergence guard fired: %1</source>
+        <translation>Pengawal divergens bertindak: %1</translation>
+    </message>
 </context>
 <context>
     <name>palpate::RecordingTimeline</name>
@@ -4652,6 +4680,53 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
     <message>
         <source>cannot store result %1: %2</source>
         <translation>tidak dapat menyimpan keputusan %1: %2</translation>
+    </message>
+    <message>
+        <source>this role may not read the results (%1): the instructor grants it a workstation or instructor role (palpate-cli results grant, docs/results-store.md)</source>
+        <translation>peranan ini tidak boleh membaca keputusan (%1): pengajar memberinya peranan stesen kerja atau pengajar (palpate-cli results grant, docs/results-store.md)</translation>
+    </message>
+    <message>
+        <source>cannot read this connection&apos;s role: %1</source>
+        <translation>peranan sambungan ini tidak dapat dibaca: %1</translation>
+    </message>
+    <message>
+        <source>role %1</source>
+        <translation>peranan %1</translation>
+    </message>
+    <message>
+        <source>role %1, class %2</source>
+        <translation>peranan %1, kelas %2</translation>
+    </message>
+    <message>
+        <source>, TLS</source>
+        <translation>, TLS</translation>
+    </message>
+    <message>
+        <source>, no TLS</source>
+        <translation>, tanpa TLS</translation>
+    </message>
+    <message>
+        <source>cannot migrate from schema version 5 to 6: %1</source>
+        <translation>tidak dapat berpindah dari versi skema 5 ke 6: %1</translation>
+    </message>
+    <message>
+        <source>the server already has a trainee of that name in another class</source>
+        <translation>pelayan sudah mempunyai pelatih bernama itu dalam kelas lain</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ResultsRoles</name>
+    <message>
+        <source>%1: roles exist on a PostgreSQL server only, not in an SQLite file</source>
+        <translation>%1: peranan hanya wujud pada pelayan PostgreSQL, bukan dalam fail SQLite</translation>
+    </message>
+    <message>
+        <source>role name &quot;%1&quot; is refused: letters, digits, _ . @ - only, starting with a letter or _</source>
+        <translation>nama peranan &quot;%1&quot; ditolak: huruf, digit, _ . @ - sahaja, bermula dengan huruf atau _</translation>
+    </message>
+    <message>
+        <source>a workstation needs a class (--class NAME)</source>
+        <translation>stesen kerja memerlukan kelas (--class NAME)</translation>
     </message>
 </context>
 <context>

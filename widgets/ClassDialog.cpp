@@ -11,6 +11,7 @@
 #include <QLocale>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QSignalBlocker>
 #include <QTableWidget>
 #include <QThread>
 #include <QVBoxLayout>
@@ -31,9 +32,12 @@ ClassDialog::ClassDialog(const QString& localPath, const QString& serverUrl, con
     mRefresh->setObjectName(QStringLiteral("classRefreshButton"));
     mExport = new QPushButton(tr("&Export CSV…"), this);
     mExport->setObjectName(QStringLiteral("classExportButton"));
-    mTable = new QTableWidget(0, 7, this);
+    mClassFilter = new QComboBox(this);
+    mClassFilter->setObjectName(QStringLiteral("classFilterCombo"));
+    mClassFilter->setToolTip(tr("Show one class (a class is the server's: a workstation's role belongs to one)"));
+    mTable = new QTableWidget(0, 8, this);
     mTable->setObjectName(QStringLiteral("classTable"));
-    mTable->setHorizontalHeaderLabels({tr("Trainee"), tr("Exercise"), tr("Sessions"), tr("Latest"), tr("Best"),
+    mTable->setHorizontalHeaderLabels({tr("Class"), tr("Trainee"), tr("Exercise"), tr("Sessions"), tr("Latest"), tr("Best"),
                                        tr("Against the marks"), tr("Last session")});
     mTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
     mTable->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -48,6 +52,10 @@ ClassDialog::ClassDialog(const QString& localPath, const QString& serverUrl, con
     sourceLabel->setBuddy(mSource);
     top->addWidget(sourceLabel);
     top->addWidget(mSource, 1);
+    auto* classLabel = new QLabel(tr("C&lass:"), this);
+    classLabel->setBuddy(mClassFilter);
+    top->addWidget(classLabel);
+    top->addWidget(mClassFilter);
     top->addWidget(mRefresh);
     top->addWidget(mExport);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
@@ -59,12 +67,16 @@ ClassDialog::ClassDialog(const QString& localPath, const QString& serverUrl, con
     layout->addWidget(buttons);
     connect(mRefresh, &QPushButton::clicked, this, &ClassDialog::refresh);
     connect(mSource, &QComboBox::currentIndexChanged, this, &ClassDialog::refresh);
+    connect(mClassFilter, &QComboBox::currentIndexChanged, this, [this] {
+        fill();
+        showSummary();
+    });
     connect(mExport, &QPushButton::clicked, this, [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export the Class View"), QStringLiteral("class.csv"),
                                                           tr("CSV (*.csv)"));
         if (path.isEmpty()) return;
         const QString problem = exportCsv(path);
-        mStatus->setText(problem.isEmpty() ? tr("Exported %1 rows to %2.").arg(mRows.size()).arg(path) : problem);
+        mStatus->setText(problem.isEmpty() ? tr("Exported %1 rows to %2.").arg(mShown.size()).arg(path) : problem);
     });
     resize(820, 480);
     refresh();
@@ -83,12 +95,17 @@ bool ClassDialog::refresh() {
     const QString source = mSource->currentText();
     mThread = QThread::create([this, location, examples, source] {
         std::vector<ClassRow> rows;
-        QString error;
+        QString error, connection;
         {
             ResultsDatabase db;  // a connection of this thread's own
-            if (db.open(location, &error)) rows = classSummary(db.allResults(), defaultExerciseLookup(examples));
+            if (db.open(location, &error)) {
+                rows = classSummary(db.allResults(), defaultExerciseLookup(examples));
+                connection = db.connectionDescription();
+            }
         }
-        QMetaObject::invokeMethod(this, [this, rows, error, source] { onLoaded(rows, error, source); }, Qt::QueuedConnection);
+        const QString described = connection.isEmpty() ? source : tr("%1 as %2").arg(source, connection);
+        QMetaObject::invokeMethod(
+            this, [this, rows, error, described] { onLoaded(rows, error, described); }, Qt::QueuedConnection);
     });
     mThread->setObjectName(QStringLiteral("class view"));
     mRefresh->setEnabled(false);
@@ -110,36 +127,65 @@ void ClassDialog::onLoaded(const std::vector<ClassRow>& rows, const QString& err
         return;
     }
     mRows = rows;
-    fill();
-    int trainees = 0;
-    QString last;
+    mSourceText = source;
+    // The classes these rows hold; the choice is kept when the new rows still have it.
+    const QVariant chosen = mClassFilter->currentData();
+    QStringList classes;
     for (const ClassRow& r : mRows)
-        if (r.trainee != last) ++trainees, last = r.trainee;
-    // No plural translation is loaded for English: the forms are spelled out.
-    const QString who = trainees == 1 ? tr("1 trainee") : tr("%1 trainees").arg(trainees);
-    const QString what = mRows.size() == 1 ? tr("1 row") : tr("%1 rows").arg(mRows.size());
-    mStatus->setText(tr("%1: %2, %3. Exercises are matched by name across workstations.").arg(source, who, what));
+        if (!classes.contains(r.className)) classes << r.className;
+    {
+        const QSignalBlocker quiet(mClassFilter);
+        mClassFilter->clear();
+        mClassFilter->addItem(tr("All"));
+        for (const QString& c : classes) mClassFilter->addItem(c.isEmpty() ? tr("(none)") : c, c);
+        const int keep = chosen.isValid() ? mClassFilter->findData(chosen) : -1;
+        mClassFilter->setCurrentIndex(std::max(0, keep));
+    }
+    mClassFilter->setEnabled(classes.size() > 1);
+    fill();
+    showSummary();
     emit loaded(true);
 }
 
+void ClassDialog::showSummary() {
+    int trainees = 0;
+    QString last;
+    for (const ClassRow& r : mShown)
+        if (r.trainee != last) ++trainees, last = r.trainee;
+    // No plural translation is loaded for English: the forms are spelled out.
+    const QString who = trainees == 1 ? tr("1 trainee") : tr("%1 trainees").arg(trainees);
+    const QString what = mShown.size() == 1 ? tr("1 row") : tr("%1 rows").arg(mShown.size());
+    mStatus->setText(tr("%1: %2, %3. Exercises are matched by name across workstations.").arg(mSourceText, who, what));
+}
+
+void ClassDialog::setClassFilter(const QString& className) {
+    const int index = mClassFilter->findData(className);
+    if (index >= 0) mClassFilter->setCurrentIndex(index);
+}
+
 void ClassDialog::fill() {
+    const QVariant only = mClassFilter->currentData();
+    mShown.clear();
+    for (const ClassRow& r : mRows)
+        if (!only.isValid() || r.className == only.toString()) mShown.push_back(r);
     mTable->setSortingEnabled(false);
-    mTable->setRowCount(int(mRows.size()));
+    mTable->setRowCount(int(mShown.size()));
     const QLocale locale;
-    for (int i = 0; i < int(mRows.size()); ++i) {
-        const ClassRow& r = mRows[std::size_t(i)];
+    for (int i = 0; i < int(mShown.size()); ++i) {
+        const ClassRow& r = mShown[std::size_t(i)];
         auto number = [](double v) {
             auto* item = new QTableWidgetItem;
             item->setData(Qt::DisplayRole, qRound(v * 10.0) / 10.0);
             return item;
         };
-        mTable->setItem(i, 0, new QTableWidgetItem(r.trainee));
-        mTable->setItem(i, 1, new QTableWidgetItem(r.exercise));
+        mTable->setItem(i, 0, new QTableWidgetItem(r.className.isEmpty() ? tr("(none)") : r.className));
+        mTable->setItem(i, 1, new QTableWidgetItem(r.trainee));
+        mTable->setItem(i, 2, new QTableWidgetItem(r.exercise));
         auto* sessions = new QTableWidgetItem;
         sessions->setData(Qt::DisplayRole, r.sessions);
-        mTable->setItem(i, 2, sessions);
-        mTable->setItem(i, 3, number(r.latestScore));
-        mTable->setItem(i, 4, number(r.bestScore));
+        mTable->setItem(i, 3, sessions);
+        mTable->setItem(i, 4, number(r.latestScore));
+        mTable->setItem(i, 5, number(r.bestScore));
         const QString verdict = r.verdict == QLatin1String("proficient") ? tr("proficient")
                                 : r.verdict == QLatin1String("passed")   ? tr("passed (once)")
                                 : r.verdict == QLatin1String("not yet")  ? tr("not yet")
@@ -148,8 +194,8 @@ void ClassDialog::fill() {
         if (!r.standardNote.isEmpty()) v->setToolTip(r.standardNote);
         if (r.verdict == QLatin1String("proficient")) v->setBackground(QColor(0xc8, 0xe6, 0xc9));
         else if (r.verdict == QLatin1String("not yet")) v->setBackground(QColor(0xff, 0xe0, 0xb2));
-        mTable->setItem(i, 5, v);
-        mTable->setItem(i, 6, new QTableWidgetItem(locale.toString(r.latestUtc.toLocalTime(), QLocale::ShortFormat)));
+        mTable->setItem(i, 6, v);
+        mTable->setItem(i, 7, new QTableWidgetItem(locale.toString(r.latestUtc.toLocalTime(), QLocale::ShortFormat)));
     }
     mTable->setSortingEnabled(true);
     mTable->resizeColumnsToContents();
@@ -161,7 +207,7 @@ QString ClassDialog::exportCsv(const QString& path) const {
     if (path == mLocal) return tr("%1 is the results database: choose another file").arg(path);
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) return tr("%1: cannot be written (%2)").arg(path, file.errorString());
-    file.write(classSummaryCsv(mRows).toUtf8());
+    file.write(classSummaryCsv(mShown).toUtf8());  // what the view shows
     if (!file.commit()) return tr("%1: cannot be written (%2)").arg(path, file.errorString());
     return {};
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The instructor's Class view (Exercise > Class View…, docs/results-store.md): every trainee's
-// sessions, latest and best score per exercise and the verdict against the experts' marks, from
+// sessions, latest and best score per exercise and the verdict against the experts' marks, by
+// class, from
 // this workstation's database or the class's server, read off the GUI thread; CSV export.
 
 #include "app/report/ClassSummary.h"
@@ -31,6 +32,10 @@ public:
     bool refresh();
     bool busy() const { return mThread != nullptr; }
     const std::vector<ClassRow>& rows() const { return mRows; }
+    /// The rows the table shows (those of the chosen class), and what Export CSV… writes.
+    const std::vector<ClassRow>& shownRows() const { return mShown; }
+    /// Shows only `className`'s rows, when the rows have that class.
+    void setClassFilter(const QString& className);
     QString statusText() const;
     /// Writes the rows as CSV; "" or the problem.
     QString exportCsv(const QString& path) const;
@@ -41,15 +46,19 @@ signals:
 private:
     void onLoaded(const std::vector<ClassRow>& rows, const QString& error, const QString& source);
     void fill();
+    void showSummary();
 
     QString mLocal, mServer, mExamples;
     QComboBox* mSource = nullptr;
+    QComboBox* mClassFilter = nullptr;
+    QString mSourceText;
     QPushButton* mRefresh = nullptr;
     QPushButton* mExport = nullptr;
     QTableWidget* mTable = nullptr;
     QLabel* mStatus = nullptr;
     QThread* mThread = nullptr;
     std::vector<ClassRow> mRows;
+    std::vector<ClassRow> mShown;
 };
 
 }  // namespace palpate

@@ -141,6 +141,9 @@ RecordingTimeline::Marker markerOf(const RecordingEvent& e) {
         case EventKind::CommandsLost:
             return {e.tick, Kind::Problem,
                     RecorderPanel::tr("%1 command(s) lost: the replay may differ from here").arg(e.count)};
+        case EventKind::Divergence:
+            return {e.tick, Kind::Problem,
+                    RecorderPanel::tr("Divergence guard fired: %1").arg(QString::fromLatin1(divergenceKindName(e.divergence)))};
     }
     return {e.tick, Kind::Problem, text};
 }
@@ -716,11 +719,15 @@ void RecorderPanel::startSeekJob(std::uint64_t tick) {
         QElapsedTimer clock;
         clock.start();
         std::uint64_t ran = 0;
+        std::optional<std::uint64_t> reached;  // the target it stopped at, if it got there
         while (!mCancel.load()) {
             const std::uint64_t target = mSeekTarget.load();
             const bool started = player->recordedTick() != nullptr;
             const std::uint64_t current = player->currentTick();
-            if (started && current == target) break;
+            if (started && current == target) {
+                reached = target;
+                break;
+            }
             if (started && target < current) {
                 mSeekFrom.store(player->firstTick());
                 if (!player->seek(player->firstTick())) break;  // restart: replays the first tick
@@ -734,18 +741,26 @@ void RecorderPanel::startSeekJob(std::uint64_t tick) {
         }
         const double usPerTick = ran > 0 ? double(clock.nsecsElapsed()) * 1e-3 / double(ran) : 0.0;
         QMetaObject::invokeMethod(
-            this, [this, usPerTick] {
+            this, [this, usPerTick, reached] {
                 if (usPerTick > 0.0) mUsPerTick = 0.5 * mUsPerTick + 0.5 * usPerTick;
-                onSeekFinished();
+                onSeekFinished(reached);
             },
             Qt::QueuedConnection);
     });
     updateTimeLabels();
 }
 
-void RecorderPanel::onSeekFinished() {
+void RecorderPanel::onSeekFinished(std::optional<std::uint64_t> reachedTick) {
+    if (mJob != Job::Seek) return;  // cancelled: a new recording is opening, or playback closed
     finishWorker();
     if (!mPlayer) return;
+    // Retargeted after the worker reached its last target and before this arrived: go on there.
+    // (A replay that stopped short reached nothing and is not chased again.)
+    const std::uint64_t target = mSeekTarget.load();
+    if (reachedTick && *reachedTick != target) {
+        seekTo(target);
+        if (mJob == Job::Seek) return;  // far enough for the worker again
+    }
     presentFrame();
     updateVerdict();
     mFrameClock.restart();  // playing on: the seek's time is not played through

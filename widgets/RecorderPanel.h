@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QComboBox;
@@ -159,7 +160,7 @@ private:
 
     void startWorker(std::function<void()> work);
     void onOpenFinished(const std::shared_ptr<OpenResult>& result);
-    void onSeekFinished();
+    void onSeekFinished(std::optional<std::uint64_t> reachedTick);
     void finishWorker();
     void pollProgress();
     void startSeekJob(std::uint64_t tick);

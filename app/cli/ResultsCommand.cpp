@@ -3,10 +3,22 @@
 // results that the server has not acknowledged (local first: nothing is lost while it is away).
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+
+#include <iostream>
+
+#ifndef PALPATE_HAVE_CHARTS
+namespace palpate::cli {
+int resultsCommand(const std::vector<std::string>&) {
+    std::cerr << "results: needs a build with the GUI (Qt SQL); this one has none\n";
+    return 2;
+}
+}  // namespace palpate::cli
+#else
 #include "app/cli/ResultsLocation.h"
 #include "app/common/DefaultScene.h"
 #include "app/report/ClassSummary.h"
 #include "app/report/ResultSync.h"
+#include "app/report/ResultsRoles.h"
 #include "app/report/ResultsDatabase.h"
 
 #include <QDir>
@@ -33,10 +45,12 @@ void resultsUsage(std::ostream& out) {
            "  palpate-cli results list [--db LOCATION] [--json]\n"
            "  palpate-cli results export --csv FILE [--db LOCATION]\n"
            "  palpate-cli results sync --db URL [--local FILE] [--json]\n"
-           "  palpate-cli results class [--db LOCATION] [--json] [--csv FILE]\n"
+           "  palpate-cli results class [--db LOCATION] [--class NAME] [--json] [--csv FILE]\n"
+           "  palpate-cli results grant --db URL (--workstation ROLE --class NAME | --instructor ROLE)\n"
            "      LOCATION: an SQLite file (default: the GUI's results.sqlite) or postgresql://[user@]host[:port]/db\n"
            "      sync: copies this workstation's results (--local, default the GUI's) to the server URL; the\n"
-           "      password comes from ~/.pgpass or PGPASSFILE, never from the URL\n";
+           "      password comes from ~/.pgpass or PGPASSFILE, never from the URL\n"
+           "      grant: run as the tables' owner; ROLE is a login role the server's administrator made\n";
 }
 
 /// Opens `location`; a missing SQLite file is an error here (these commands only read it).
@@ -78,10 +92,17 @@ int listCommand(const Args& args) {
                             {"expert", r.expert},
                             {"uid", text(r.uid)},
                             {"workstation", text(r.workstation)},
+                            {"class", text(r.traineeClass)},
+                            {"submitted_by", text(r.submittedBy)},
                             {"synced", db.isServer() ? Json(nullptr) : Json(!r.syncedUtc.isEmpty())}});
-        std::cout << Json{{"database", text(db.path())}, {"results", list}}.dump(2) << "\n";
+        Json out{{"database", text(db.path())}};
+        if (db.isServer())
+            out["connection"] = {{"role", text(db.serverRole())}, {"class", text(db.className())}, {"tls", db.isEncrypted()}};
+        out["results"] = list;
+        std::cout << out.dump(2) << "\n";
         return 0;
     }
+    if (db.isServer()) std::cout << text(db.path()) << " (" << text(db.connectionDescription()) << ")\n";
     if (results.empty()) std::cout << "no results in " << text(db.path()) << "\n";
     for (const ResultRecord& r : results)
         std::cout << text(r.startedUtc.toString(Qt::ISODate)) << "  " << std::left << std::setw(16) << text(r.traineeName)
@@ -105,9 +126,10 @@ int exportCommand(const Args& args) {
     ResultsDatabase db;
     if (!openExisting(db, location, "export")) return 1;
     std::ostringstream out;
-    out << "trainee,exercise,exercise_path,time,duration_s,score,outcome,expert,workstation,uid\n";
+    out << "trainee,class,exercise,exercise_path,time,duration_s,score,outcome,expert,workstation,uid\n";
     for (const ResultRecord& r : db.allResults())
-        out << csvField(text(r.traineeName)) << ',' << csvField(text(r.exerciseName)) << ','
+        out << csvField(text(r.traineeName)) << ',' << csvField(text(r.traineeClass)) << ','
+            << csvField(text(r.exerciseName)) << ','
             << csvField(text(r.exercisePath)) << ',' << text(r.startedUtc.toString(Qt::ISODate)) << ',' << r.durationS
             << ',' << r.score << ',' << text(outcomeKey(r.outcome)) << ',' << (r.expert ? 1 : 0) << ','
             << csvField(text(r.workstation)) << ',' << text(r.uid) << '\n';
@@ -130,8 +152,11 @@ int classCommand(const Args& args) {
         }
     ResultsDatabase db;
     if (!openExisting(db, location, "class")) return 1;
+    std::vector<ResultRecord> results = db.allResults();
+    if (const auto only = args.option("class"))
+        std::erase_if(results, [&](const ResultRecord& r) { return r.traineeClass != QString::fromStdString(*only); });
     const std::vector<ClassRow> rows =
-        classSummary(db.allResults(), defaultExerciseLookup(QFileInfo(QString::fromStdString(findResource(kExampleExercise))).absolutePath()));
+        classSummary(results, defaultExerciseLookup(QFileInfo(QString::fromStdString(findResource(kExampleExercise))).absolutePath()));
     if (const auto csv = args.option("csv")) {
         std::ofstream file(*csv);
         file << classSummaryCsv(rows).toStdString();
@@ -144,6 +169,7 @@ int classCommand(const Args& args) {
         Json list = Json::array();
         for (const ClassRow& r : rows)
             list.push_back({{"trainee", text(r.trainee)},
+                            {"class", text(r.className)},
                             {"exercise", text(r.exercise)},
                             {"sessions", r.sessions},
                             {"latest_score", r.latestScore},
@@ -186,7 +212,8 @@ int syncCommand(const Args& args) {
                           {"sent", report.sent},
                           {"already_there", report.alreadyThere},
                           {"waiting", report.waiting},
-                          {"error", text(report.error)}}
+                          {"error", text(report.error)},
+                          {"connection", text(report.connection)}}
                          .dump(2)
                   << "\n";
     else
@@ -200,6 +227,40 @@ int syncCommand(const Args& args) {
     return 0;
 }
 
+/// The server's roles: a workstation of a class, or an instructor (docs/results-store.md, "Roles").
+int grantCommand(const Args& args) {
+    const auto url = args.option("db");
+    const auto workstation = args.option("workstation"), instructor = args.option("instructor");
+    if (!url || !isServerLocation(QString::fromStdString(*url))) {
+        std::cerr << "results grant: --db postgresql://host/database (the class's server) is required\n";
+        return 2;
+    }
+    if (bool(workstation) == bool(instructor) || (workstation && !args.option("class")) ||
+        (instructor && args.option("class"))) {
+        std::cerr << "results grant: give --workstation ROLE --class NAME, or --instructor ROLE\n";
+        return 2;
+    }
+    ResultsDatabase server;
+    QString error;
+    if (!server.open(QString::fromStdString(*url), &error)) {
+        std::cerr << "results grant: " << text(error) << "\n";
+        return 1;
+    }
+    const bool ok = workstation ? grantWorkstation(server, QString::fromStdString(*workstation),
+                                                   QString::fromStdString(*args.option("class")), &error)
+                                : grantInstructor(server, QString::fromStdString(*instructor), &error);
+    if (!ok) {
+        std::cerr << "results grant: " << text(error) << "\n";
+        return 1;
+    }
+    if (workstation)
+        std::cout << *workstation << ": a workstation of class " << *args.option("class")
+                  << " (adds its class's trainees, sends its own results, reads its class)\n";
+    else
+        std::cout << *instructor << ": an instructor (reads every class)\n";
+    return 0;
+}
+
 }  // namespace
 
 int resultsCommand(const std::vector<std::string>& words) {
@@ -209,7 +270,7 @@ int resultsCommand(const std::vector<std::string>& words) {
     }
     const std::string sub = words.front();
     const std::vector<std::string> rest(words.begin() + 1, words.end());
-    const Args args(rest, {"json"}, {"db", "csv", "local"});
+    const Args args(rest, {"json"}, {"db", "csv", "local", "class", "workstation", "instructor"});
     if (!args.ok()) {
         std::cerr << "palpate-cli results " << sub << ": " << args.error() << "\n";
         return 2;
@@ -218,9 +279,12 @@ int resultsCommand(const std::vector<std::string>& words) {
     if (sub == "export") return exportCommand(args);
     if (sub == "sync") return syncCommand(args);
     if (sub == "class") return classCommand(args);
+    if (sub == "grant") return grantCommand(args);
     std::cerr << "palpate-cli results: unknown subcommand '" << sub << "'\n";
     resultsUsage(std::cerr);
     return 2;
 }
 
 }  // namespace palpate::cli
+
+#endif  // PALPATE_HAVE_CHARTS

@@ -1,3 +1,5 @@
+// Built with the GUI only: the data folder is Qt's (QStandardPaths).
+#ifdef PALPATE_HAVE_CHARTS
 #include "app/cli/ResultsLocation.h"
 
 #include <QCoreApplication>
@@ -17,3 +19,5 @@ std::string defaultDatabasePath() {
 }
 
 }  // namespace palpate::cli
+
+#endif  // PALPATE_HAVE_CHARTS

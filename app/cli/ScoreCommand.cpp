@@ -10,8 +10,15 @@
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
 #ifdef PALPATE_HAVE_CHARTS
+#include "app/cli/ResultsLocation.h"
+#include "app/cli/StoreSession.h"
+#include "app/report/ResultSync.h"
+#include "app/report/ResultsDatabase.h"
 #include "app/report/ScoreReportFromRecording.h"
 #include "app/report/ScoreReportPdf.h"
+
+#include <QDir>
+#include <QFileInfo>
 #endif
 
 #include <nlohmann/json.hpp>
@@ -20,8 +27,94 @@
 
 namespace palpate::cli {
 
+namespace {
+
+bool isServerLocationText(const std::string& location) {
+    return location.rfind("postgresql://", 0) == 0 || location.rfind("postgres://", 0) == 0;
+}
+
+#ifdef PALPATE_HAVE_CHARTS
+/// Stores the scored recording as the trainee's session: in the SQLite file --db names (default:
+/// the GUI's), or, for a --db server, on this workstation first (--local, default the GUI's) and
+/// then sent with whatever else waits. A server that does not answer leaves it waiting: stored all
+/// the same (exit 0), and said on stderr. --json adds "proficiency" (judged against the trainee's
+/// sessions before this one) and "stored".
+int storeScore(const Args& args, const ScoreReport& report, std::optional<Exercise> exercise, const std::string& recording) {
+    const std::string trainee = *args.option("trainee");
+    const std::string location = args.option("db").value_or(defaultDatabasePath());
+    const bool server = isServerLocationText(location);
+    const std::string localPath = server ? args.option("local").value_or(defaultDatabasePath()) : location;
+    const RecordingReader reader = RecordingReader::open(recording);
+    std::vector<std::string> noteErrors;
+    const std::optional<Exercise> graded = exercise ? exercise : recordedExercise(reader.header(), noteErrors);
+    const std::string exerciseFile = args.option("exercise").value_or("");
+    auto j = nlohmann::json::parse(scoreReportToJson(report));
+    // Judged before it is stored: the trainee's earlier sessions, then this one.
+    bool known = false;
+    if (QFileInfo::exists(QString::fromStdString(localPath))) {
+        ResultsDatabase before;
+        if (before.open(QString::fromStdString(localPath)))
+            for (const TraineeRecord& t : before.trainees()) known |= t.name.toStdString() == trainee;
+    }
+    if (graded && known) {
+        std::string error;
+        const std::string proficiency =
+            proficiencyJsonForScore(report, *graded, exerciseFile, localPath, trainee, error);
+        if (!error.empty()) {
+            std::cerr << "score: --db: " << error << "\n";
+            return 1;
+        }
+        if (!proficiency.empty()) j["proficiency"] = nlohmann::json::parse(proficiency);
+    }
+    QDir().mkpath(QFileInfo(QString::fromStdString(localPath)).absolutePath());
+    ResultsDatabase local;
+    QString qerror;
+    if (!local.open(QString::fromStdString(localPath), &qerror)) {
+        std::cerr << "score: " << qerror.toStdString() << "\n";
+        return 1;
+    }
+    const QString exercisePath = exerciseFile.empty() ? QString() : exerciseKey(QString::fromStdString(exerciseFile), QString());
+    const StoredSession session = storeScoredSession(local, trainee, report, graded, exercisePath, reader, recording, false);
+    if (!session.notice.empty()) std::cerr << "score: " << session.notice << "\n";
+    if (!session.stored || !session.error.empty()) {
+        std::cerr << "score: " << session.error << "\n";
+        return 1;
+    }
+    nlohmann::json stored = {{"database", local.path().toStdString()}, {"result_id", session.resultId},
+                             {"trainee", trainee}, {"staircase", session.staircase}};
+    if (server) {
+        ResultsDatabase remote;
+        SyncReport sync;
+        if (!remote.open(QString::fromStdString(location), &qerror)) {
+            sync.waiting = int(local.unsyncedResults().size());
+            sync.error = qerror;
+        } else {
+            sync = syncResults(local, remote);
+        }
+        stored["server"] = remote.isOpen() ? remote.path().toStdString() : location;
+        stored["sent"] = sync.sent + sync.alreadyThere;
+        stored["waiting"] = sync.waiting;
+        stored["server_error"] = sync.error.toStdString();
+        if (!sync.error.isEmpty())
+            std::cerr << "score: stored on this workstation (" << local.path().toStdString() << "); " << sync.waiting
+                      << " result(s) wait for the server: " << sync.error.toStdString()
+                      << " (palpate-cli results sync, or the window, sends them when it answers)\n";
+    }
+    if (args.flag("json")) {
+        j["stored"] = stored;
+        std::cout << j.dump(2) << "\n";
+    } else {
+        std::cout << scoreReportToText(report) << "stored for " << trainee << " in " << local.path().toStdString()
+                  << (server && stored["server_error"].get<std::string>().empty() ? " and on the server" : "") << "\n";
+    }
+    return 0;
+}
+#endif
+
+}  // namespace
+
 int scoreCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"exercise", "recording", "mesh", kMeshUnitOption, "pdf", "trainee", "db"});
+    Args args(words, {"json", "no-store"}, {"exercise", "recording", "mesh", kMeshUnitOption, "pdf", "trainee", "db", "local"});
     if (!args.ok()) {
         std::cerr << "score: " << args.error() << "\n";
         return 2;
@@ -43,15 +136,28 @@ int scoreCommand(const std::vector<std::string>& words) {
         return 2;
     }
 #endif
-    if (args.option("trainee") && !pdf && !args.option("db")) {
-        std::cerr << "score: --trainee names the trainee on the --pdf report, or whose progress --db holds; give --pdf FILE "
-                     "or --db FILE\n";
-        return 2;
-    }
     if (args.option("db") && !args.option("trainee")) {
-        std::cerr << "score: --db FILE goes with --trainee NAME (the trainee whose proficiency to judge)\n";
+        std::cerr << "score: --db LOCATION goes with --trainee NAME (whose result it stores)\n";
         return 2;
     }
+    // --trainee stores the result (docs/results-store.md, "Command line"), unless --no-store: then
+    // it only names the trainee on the --pdf report.
+    const bool store = args.option("trainee") && !args.flag("no-store");
+    if (args.flag("no-store") && !(args.option("trainee") && pdf && !args.option("db"))) {
+        std::cerr << "score: --no-store goes with --trainee NAME and --pdf FILE (the name on the report), without --db\n";
+        return 2;
+    }
+    if (args.option("local") && !(args.option("db") && isServerLocationText(*args.option("db")))) {
+        std::cerr << "score: --local FILE goes with --db postgresql://... (where the result waits for the server)\n";
+        return 2;
+    }
+#ifndef PALPATE_HAVE_CHARTS
+    if (store) {
+        std::cerr << "score: storing a result needs a build with the GUI (Qt SQL); this one has none (--no-store only names "
+                     "the trainee on the report)\n";
+        return 2;
+    }
+#endif
     if (pdf) {
         // The report never replaces what it is made from.
         for (const auto& [input, what] : {std::pair{*recording, "recording"},
@@ -116,28 +222,9 @@ int scoreCommand(const std::vector<std::string>& words) {
             return 1;
         }
     }
-    if (args.flag("json") && args.option("db")) {
-        // The trainee's progress against the experts' standard (docs/scoring.md, "Proficiency").
-        std::optional<Exercise> graded = exercise;
-        if (!graded) {
-            std::vector<std::string> errors;
-            graded = recordedExercise(RecordingReader::open(*recording).header(), errors);
-        }
-        auto j = nlohmann::json::parse(scoreReportToJson(report));
-        if (graded) {
-            std::string error;
-            const std::string proficiency =
-                proficiencyJsonForScore(report, *graded, args.option("exercise").value_or(""), *args.option("db"),
-                                        *args.option("trainee"), error);
-            if (!error.empty()) {
-                std::cerr << "score: --db: " << error << "\n";
-                return 1;
-            }
-            if (!proficiency.empty()) j["proficiency"] = nlohmann::json::parse(proficiency);
-        }
-        std::cout << j.dump(2) << "\n";
-        return 0;
-    }
+#ifdef PALPATE_HAVE_CHARTS
+    if (store) return storeScore(args, report, exercise, *recording);
+#endif
     if (args.flag("json")) std::cout << scoreReportToJson(report) << "\n";
     else std::cout << scoreReportToText(report);
     return 0;

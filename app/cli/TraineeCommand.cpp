@@ -15,6 +15,7 @@
 #include "app/report/LearningCurve.h"
 #include "app/report/ResultsDatabase.h"
 #include "app/cli/ResultsLocation.h"
+#include "app/cli/StoreSession.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -165,75 +166,20 @@ int addSessionCommand(const std::vector<std::string>& words) {
     }
     ResultsDatabase db;
     if (!openDatabase(db, args, "add-session", false)) return 1;
-    QString qerror;
-    const qint64 trainee = db.addTrainee(QString::fromStdString(*args.option("trainee")), &qerror);
-    if (trainee < 0) {
-        std::cerr << "trainee add-session: " << qerror.toStdString() << "\n";
-        return 1;
-    }
-    const QString name = QString::fromStdString(exercise ? exercise->name : report.exerciseName);
-    const QDateTime started = reader.header().startUnixUs > 0
-                                  ? QDateTime::fromMSecsSinceEpoch(reader.header().startUnixUs / 1000, Qt::UTC)
-                                  : QDateTime::currentDateTimeUtc();
     const bool expert = args.flag("expert");
-    const qint64 id = db.addResult(trainee, report, name, exercisePath, started, report.guidance.exerciseTimeS,
-                                   QFileInfo(QString::fromStdString(recording)).absoluteFilePath(), expert, &qerror);
-    if (id < 0) {
-        std::cerr << "trainee add-session: " << qerror.toStdString() << "\n";
+    const StoredSession session =
+        storeScoredSession(db, *args.option("trainee"), report, exercise, exercisePath, reader, recording, expert);
+    if (!session.notice.empty()) std::cerr << "trainee add-session: " << session.notice << "\n";
+    if (!session.error.empty()) {
+        std::cerr << "trainee add-session: " << session.error << "\n";
         return 1;
     }
-    Json out = {{"result_id", id}, {"trainee", *args.option("trainee")}, {"exercise", name.toStdString()},
-                {"score", report.score}, {"expert", expert}, {"staircase", nullptr}};
-    // A trial moves the trainee's staircase; an expert's reference session does not.
-    const std::optional<bool> trial = staircaseTrialPassed(report);
-    // A stopped session is no trial (its partial findings are not a result), nor an expert's.
-    if (!expert && trial && isScored(outcomeOf(report)) && exercise && exercise->detectLumps.staircase) {
-        const QString key = exerciseKey(exercisePath, name);
-        const QString stored = db.staircase(trainee, key);
-        std::optional<Staircase> staircase;
-        if (!stored.isEmpty()) {
-            std::string why;
-            staircase = Staircase::fromJson(stored.toStdString(), why);
-            if (!staircase) {
-                std::cerr << "trainee add-session: the stored staircase of " << key.toStdString() << ": " << why
-                          << "; the session is stored, the staircase not moved\n";
-                return 1;
-            }
-            staircase->redefine(*exercise->detectLumps.staircase);
-        } else {
-            if (const std::string problem = staircaseDefProblem(*exercise->detectLumps.staircase); !problem.empty()) {
-                std::cerr << "trainee add-session: " << problem << "\n";
-                return 1;
-            }
-            staircase.emplace(*exercise->detectLumps.staircase);
-        }
-        // A trial counts at the level it ran at: the lumps of the exercise the recording carries
-        // (run --level writes them there). A session at another level is stored, but is not this
-        // staircase's trial.
-        std::vector<std::string> noteErrors;
-        const std::optional<Exercise> ran = recordedExercise(reader.header(), noteErrors);
-        const std::optional<double> ranLevel = ran ? staircaseLevelOf(*ran, staircase->def()) : std::nullopt;
-        if (!ranLevel || std::fabs(*ranLevel - staircase->level()) > 1e-9) {
-            std::cerr << "trainee add-session: the session ran "
-                      << (ranLevel ? "at " + std::string(staircaseParameterName(staircase->def().parameter)) + " " +
-                                         std::to_string(*ranLevel)
-                                   : std::string("without a level the recording says"))
-                      << ", the staircase is at " << staircase->level()
-                      << " (palpate-cli run --exercise FILE --level " << staircase->level()
-                      << "): stored, but not a trial of the staircase\n";
-            if (args.flag("json")) std::cout << out.dump(2) << "\n";
-            return 0;
-        }
-        staircase->record(*trial);
-        if (!db.putStaircase(trainee, key, QString::fromStdString(staircase->toJson()), &qerror)) {
-            std::cerr << "trainee add-session: " << qerror.toStdString() << "\n";
-            return 1;
-        }
-        out["staircase"] = {{"passed", *trial}, {"level", staircase->level()}};
-    }
+    const Json out = {{"result_id", session.resultId}, {"trainee", *args.option("trainee")},
+                      {"exercise", session.exerciseName}, {"score", report.score}, {"expert", expert},
+                      {"staircase", session.staircase}};
     if (args.flag("json")) std::cout << out.dump(2) << "\n";
     else
-        std::cout << "stored session " << id << " of '" << name.toStdString() << "' for "
+        std::cout << "stored session " << session.resultId << " of '" << session.exerciseName << "' for "
                   << *args.option("trainee") << (expert ? " (expert)" : "") << ": score " << report.score << "\n";
     return 0;
 }

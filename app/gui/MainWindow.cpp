@@ -1177,8 +1177,10 @@ void MainWindow::createExerciseDocks() {
         mResultsLabel->setText(text);
         mResultsLabel->setVisible(!text.isEmpty());
         const SyncReport& last = mUploader->lastReport();
+        // Who the server takes this workstation for (its role and class) and whether it is encrypted.
         mResultsLabel->setToolTip(last.error.isEmpty()
-                                      ? tr("Results kept on this workstation and copied to %1").arg(mUploader->serverUrl())
+                                      ? tr("Results kept on this workstation and copied to %1 (%2)")
+                                            .arg(mUploader->serverUrl(), last.connection)
                                       : tr("The last copy to %1 stopped: %2").arg(mUploader->serverUrl(), last.error));
     });
     connect(mExercises, &ExerciseController::resultStored, mUploader, &ResultUploader::syncNow);

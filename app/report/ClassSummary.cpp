@@ -8,17 +8,19 @@
 #include <QFileInfo>
 
 #include <map>
+#include <tuple>
 
 namespace palpate {
 
 std::vector<ClassRow> classSummary(const std::vector<ResultRecord>& results, const ExerciseLookup& lookup) {
     // Expert sessions per exercise (the marks) and trainees' scored sessions per (trainee, exercise).
     std::map<QString, std::vector<const ResultRecord*>> experts;
-    std::map<std::pair<QString, QString>, std::vector<const ResultRecord*>> sessions;
+    // By class, then trainee, then exercise: the view's order.
+    std::map<std::tuple<QString, QString, QString>, std::vector<const ResultRecord*>> sessions;
     for (const ResultRecord& r : results) {
         if (!isScored(r.outcome)) continue;
         if (r.expert) experts[r.exerciseName].push_back(&r);
-        else sessions[{r.traineeName, r.exerciseName}].push_back(&r);
+        else sessions[{r.traineeClass, r.traineeName, r.exerciseName}].push_back(&r);
     }
     std::map<QString, std::optional<Exercise>> exercises;
     auto exerciseNamed = [&](const QString& name, const std::vector<const ResultRecord*>& rows) -> const std::optional<Exercise>& {
@@ -35,19 +37,21 @@ std::vector<ClassRow> classSummary(const std::vector<ResultRecord>& results, con
     for (const auto& [key, rows] : sessions) {
         // Oldest first (the results come ordered by start time).
         ClassRow row;
-        row.trainee = key.first;
-        row.exercise = key.second;
+        const auto& [className, trainee, exerciseName] = key;
+        row.className = className;
+        row.trainee = trainee;
+        row.exercise = exerciseName;
         row.sessions = int(rows.size());
         row.latestScore = rows.back()->score;
         row.latestUtc = rows.back()->startedUtc;
         for (const ResultRecord* r : rows) row.bestScore = std::max(row.bestScore, r->score);
-        const std::optional<Exercise>& exercise = exerciseNamed(key.second, rows);
+        const std::optional<Exercise>& exercise = exerciseNamed(exerciseName, rows);
         if (!exercise) {
             row.verdict = QStringLiteral("no standard");
             row.standardNote = QStringLiteral("the exercise file was not found");
         } else {
             std::vector<MetricValues> expertValues, values;
-            for (const ResultRecord* r : experts[key.second]) expertValues.push_back(storedMetricValues(*r));
+            for (const ResultRecord* r : experts[exerciseName]) expertValues.push_back(storedMetricValues(*r));
             for (const ResultRecord* r : rows) values.push_back(storedMetricValues(*r));
             const ProficiencyStandard standard = buildProficiencyStandard(*exercise, expertValues);
             if (!standard.valid()) {
@@ -70,9 +74,9 @@ QString classSummaryCsv(const std::vector<ClassRow>& rows) {
         if (!s.contains(QLatin1Char(',')) && !s.contains(QLatin1Char('"')) && !s.contains(QLatin1Char('\n'))) return s;
         return QLatin1Char('"') + s.replace(QLatin1Char('"'), QStringLiteral("\"\"")) + QLatin1Char('"');
     };
-    QString out = QStringLiteral("trainee,exercise,sessions,latest_score,latest_time,best_score,verdict,note\n");
+    QString out = QStringLiteral("class,trainee,exercise,sessions,latest_score,latest_time,best_score,verdict,note\n");
     for (const ClassRow& r : rows)
-        out += QStringList{field(r.trainee), field(r.exercise), QString::number(r.sessions), QString::number(r.latestScore),
+        out += QStringList{field(r.className), field(r.trainee), field(r.exercise), QString::number(r.sessions), QString::number(r.latestScore),
                            r.latestUtc.toString(Qt::ISODate), QString::number(r.bestScore), r.verdict,
                            field(r.standardNote)}
                    .join(QLatin1Char(',')) +

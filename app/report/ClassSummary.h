@@ -16,6 +16,7 @@
 namespace palpate {
 
 struct ClassRow {
+    QString className;         ///< the trainee's class on the server ("" when none)
     QString trainee;
     QString exercise;
     int sessions = 0;          ///< scored sessions (not stopped, not an expert's)
@@ -32,7 +33,7 @@ struct ClassRow {
 /// when it cannot be read.
 using ExerciseLookup = std::function<std::optional<Exercise>(const QString& path, const QString& name)>;
 
-/// The rows, by trainee then exercise. Trainees with no scored session of an exercise have no row
+/// The rows, by class, trainee, then exercise. Trainees with no scored session of an exercise have no row
 /// for it.
 std::vector<ClassRow> classSummary(const std::vector<ResultRecord>& results, const ExerciseLookup& lookup);
 

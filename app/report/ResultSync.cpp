@@ -12,6 +12,7 @@ SyncReport syncResults(ResultsDatabase& local, ResultsDatabase& server) {
         report.error = QStringLiteral("both databases must be open");
         return report;
     }
+    report.connection = server.connectionDescription();
     for (const ResultRecord& r : pending) {
         QString error;
         const std::optional<bool> inserted = server.importResult(r, r.traineeName, &error);

@@ -17,6 +17,7 @@ struct SyncReport {
     int alreadyThere = 0;  ///< the server had them (an earlier copy whose mark was lost)
     int waiting = 0;       ///< still to send after this run
     QString error;         ///< "" or why the copy stopped (the server's words)
+    QString connection;    ///< the server's connectionDescription() ("" when it did not answer)
 };
 
 /// Copies `local`'s unsent results to `server`. Both must be open.

@@ -9,7 +9,9 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QSqlDriver>
 #include <QSqlError>
+#include <QSqlField>
 #include <QSqlQuery>
 #include <QVariant>
 
@@ -65,6 +67,15 @@ const char* const kMigrateV4ToV5[] = {
     "ALTER TABLE results ADD COLUMN workstation TEXT NOT NULL DEFAULT ''",
     "ALTER TABLE results ADD COLUMN synced_utc TEXT NOT NULL DEFAULT ''",
     "ALTER TABLE trainees ADD COLUMN class_name TEXT NOT NULL DEFAULT ''",
+};
+
+// Version 6 (docs/results-store.md, "Roles"): the database role that put a result on the server
+// (a workstation may insert only its own), and which class each workstation role belongs to (a
+// workstation reads its class only). Both are empty on a workstation's own SQLite file.
+const char* const kMigrateV5ToV6[] = {
+    "ALTER TABLE results ADD COLUMN submitted_by TEXT NOT NULL DEFAULT ''",
+    "CREATE TABLE class_workstations (role_name TEXT PRIMARY KEY, class_name TEXT NOT NULL)",
+    "PRAGMA user_version = 6",
 };
 
 // The server keeps its version in a table (PostgreSQL has no user_version); made with version 1.
@@ -168,6 +179,9 @@ bool ResultsDatabase::fail(const QString& problem, QString* error) const {
 }
 
 void ResultsDatabase::close() {
+    mRole.clear();
+    mClassName.clear();
+    mEncrypted = false;
     if (!mDb.isValid()) return;
     mDb.close();
     mDb = QSqlDatabase();
@@ -275,9 +289,11 @@ bool ResultsDatabase::openServer(const QString& location, QString* error) {
     QSqlQuery q(mDb);
     q.exec(QStringLiteral("SELECT pg_advisory_lock(%1)").arg(kMigrationLock));
     int version = -1;
+    QString versionError;
     if (q.exec(QStringLiteral("SELECT version FROM palpate_schema")) && q.next()) {
         version = q.value(0).toInt();
     } else {
+        versionError = q.lastError().databaseText();
         q.exec(QStringLiteral("SELECT count(*) FROM information_schema.tables WHERE table_schema = current_schema()"));
         if (q.next() && q.value(0).toInt() == 0) version = 0;
     }
@@ -286,6 +302,15 @@ bool ResultsDatabase::openServer(const QString& location, QString* error) {
         QSqlQuery u(mDb);
         u.exec(QStringLiteral("SELECT pg_advisory_unlock(%1)").arg(kMigrationLock));
     };
+    // (information_schema lists only the tables a role may use: a role with no grants sees none.)
+    if (versionError.contains(QLatin1String("permission denied"))) {
+        unlock();
+        close();
+        return fail(tr("this role may not read the results (%1): the instructor grants it a workstation or instructor role "
+                       "(palpate-cli results grant, docs/results-store.md)")
+                        .arg(versionError.trimmed()),
+                    error);
+    }
     if (version < 0) {
         unlock();
         close();
@@ -303,8 +328,45 @@ bool ResultsDatabase::openServer(const QString& location, QString* error) {
         close();
         return false;
     }
+    // Who this is on the server: a workstation role belongs to one class (ResultsRoles.h), and
+    // its trainees are that class's.
+    if (!q.exec(QStringLiteral("SELECT CAST(current_user AS TEXT),"
+                               " COALESCE((SELECT class_name FROM class_workstations WHERE role_name = CAST(current_user AS TEXT)), ''),"
+                               " COALESCE((SELECT ssl FROM pg_stat_ssl WHERE pid = pg_backend_pid()), false)")) ||
+        !q.next()) {
+        const QString why = q.lastError().text();
+        close();
+        return fail(tr("cannot read this connection's role: %1").arg(why), error);
+    }
+    mRole = q.value(0).toString();
+    mClassName = q.value(1).toString();
+    mEncrypted = q.value(2).toBool();
+    q.finish();
     mLastError.clear();
     return true;
+}
+
+QString ResultsDatabase::connectionDescription() const {
+    if (!mServer || !isOpen()) return {};
+    QString out = mClassName.isEmpty() ? tr("role %1").arg(mRole) : tr("role %1, class %2").arg(mRole, mClassName);
+    return out + (mEncrypted ? tr(", TLS") : tr(", no TLS"));
+}
+
+bool ResultsDatabase::runStatements(const QStringList& statements, QString* error) {
+    if (!isOpen()) return fail(tr("not open"), error);
+    const QString why = runInTransaction(mDb, statements);
+    if (!why.isEmpty()) return fail(why, error);
+    return true;
+}
+
+QString ResultsDatabase::quotedIdentifier(const QString& name) const {
+    return mDb.driver()->escapeIdentifier(name, QSqlDriver::FieldName);
+}
+
+QString ResultsDatabase::quotedText(const QString& text) const {
+    QSqlField field(QStringLiteral("text"), QMetaType(QMetaType::QString));
+    field.setValue(text);
+    return mDb.driver()->formatValue(field);
 }
 
 bool ResultsDatabase::migrate(int from, QString* error) {
@@ -348,6 +410,11 @@ bool ResultsDatabase::migrate(int from, QString* error) {
         const QString why = migrateV4ToV5();
         if (!why.isEmpty()) return fail(tr("cannot migrate from schema version 4 to 5: %1").arg(why), error);
         from = 5;
+    }
+    if (from == 5) {
+        const QString why = runInTransaction(mDb, adapted(std::begin(kMigrateV5ToV6), std::end(kMigrateV5ToV6)));
+        if (!why.isEmpty()) return fail(tr("cannot migrate from schema version 5 to 6: %1").arg(why), error);
+        from = 6;
     }
     return true;
 }
@@ -464,17 +531,22 @@ qint64 ResultsDatabase::addTrainee(const QString& name, QString* error) {
             q.finish();
             // Two workstations adding the same trainee at once: the second insert does nothing and
             // the name is read again (the name is unique).
-            q.prepare(QStringLiteral("INSERT INTO trainees (name, created) VALUES (?, ?) ON CONFLICT (name) DO NOTHING"));
+            // A workstation's new trainee is of its class (on a file, and for an unassigned role: none).
+            q.prepare(QStringLiteral(
+                "INSERT INTO trainees (name, created, class_name) VALUES (?, ?, ?) ON CONFLICT (name) DO NOTHING"));
             q.addBindValue(trimmed);
             q.addBindValue(isoUtc(QDateTime::currentDateTimeUtc()));
+            q.addBindValue(mClassName.isNull() ? QString(QLatin1String("")) : mClassName);
             if (!q.exec()) {
                 why = q.lastError().text();
             } else {
                 q.finish();
                 q.prepare(QStringLiteral("SELECT id FROM trainees WHERE name = ?"));
                 q.addBindValue(trimmed);
-                if (q.exec() && q.next()) id = q.value(0).toLongLong();
-                else why = q.lastError().text();
+                if (!q.exec()) why = q.lastError().text();
+                else if (q.next()) id = q.value(0).toLongLong();
+                // The name is taken, by a trainee this role may not see: one of another class.
+                else why = tr("the server already has a trainee of that name in another class");
             }
         }
     }
@@ -490,12 +562,13 @@ std::vector<TraineeRecord> ResultsDatabase::trainees() const {
     std::vector<TraineeRecord> out;
     if (!isOpen()) return out;
     QSqlQuery q(mDb);
-    if (!q.exec(QStringLiteral("SELECT id, name, created FROM trainees ORDER BY name, id"))) {
+    if (!q.exec(QStringLiteral("SELECT id, name, created, class_name FROM trainees ORDER BY name, id"))) {
         mLastError = tr("%1: %2").arg(mPath, q.lastError().text());
         return out;
     }
     while (q.next())
-        out.push_back({q.value(0).toLongLong(), q.value(1).toString(), fromIsoUtc(q.value(2).toString())});
+        out.push_back({q.value(0).toLongLong(), q.value(1).toString(), fromIsoUtc(q.value(2).toString()),
+                       q.value(3).toString()});
     return out;
 }
 
@@ -595,9 +668,11 @@ std::optional<bool> ResultsDatabase::importResult(const ResultRecord& r, const Q
     // The uid is unique: a result sent twice (a retry after a lost answer) stays one row.
     q.prepare(QStringLiteral(
         "INSERT INTO results (trainee_id, exercise_name, exercise_path, started_utc, duration_s, score, metrics_json,"
-        " rubric_json, recording_path, outcome, expert, aids_json, uid, workstation)"
+        " rubric_json, recording_path, outcome, expert, aids_json, uid, workstation, submitted_by)"
         " VALUES (?, COALESCE(?, ''), COALESCE(?, ''), ?, ?, ?, COALESCE(?, ''), COALESCE(?, ''), COALESCE(?, ''),"
-        " COALESCE(?, ''), ?, COALESCE(?, '[]'), ?, COALESCE(?, '')) ON CONFLICT (uid) DO NOTHING RETURNING id"));
+        " COALESCE(?, ''), ?, COALESCE(?, '[]'), ?, COALESCE(?, ''), %1) ON CONFLICT (uid) DO NOTHING RETURNING id")
+                  // The server's row says which role sent it (a workstation may send only its own).
+                  .arg(mServer ? QStringLiteral("CAST(current_user AS TEXT)") : QStringLiteral("''")));
     q.addBindValue(trainee);
     q.addBindValue(r.exerciseName);
     q.addBindValue(r.exercisePath);
@@ -630,7 +705,7 @@ std::vector<ResultRecord> ResultsDatabase::selectResults(const QString& where, c
     q.prepare(QStringLiteral(
         "SELECT r.id, r.trainee_id, r.exercise_name, r.exercise_path, r.started_utc, r.duration_s, r.score,"
         " r.metrics_json, r.rubric_json, r.recording_path, r.outcome, r.expert, r.aids_json, r.uid, r.workstation,"
-        " r.synced_utc, t.name FROM results r JOIN trainees t ON t.id = r.trainee_id WHERE %1"
+        " r.synced_utc, t.name, r.submitted_by, t.class_name FROM results r JOIN trainees t ON t.id = r.trainee_id WHERE %1"
         " ORDER BY r.started_utc, r.id")
                   .arg(where));
     q.addBindValue(bind);
@@ -657,6 +732,8 @@ std::vector<ResultRecord> ResultsDatabase::selectResults(const QString& where, c
         r.workstation = q.value(14).toString();
         r.syncedUtc = q.value(15).toString();
         r.traineeName = q.value(16).toString();
+        r.submittedBy = q.value(17).toString();
+        r.traineeClass = q.value(18).toString();
         out.push_back(std::move(r));
     }
     return out;

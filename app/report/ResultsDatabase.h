@@ -23,6 +23,7 @@ struct TraineeRecord {
     qint64 id = -1;
     QString name;
     QDateTime created;  ///< UTC
+    QString className;  ///< the class on the server ("" on a workstation's own file, or unassigned)
 };
 
 /// How a stored session ended. A stopped one (Stop, or the recording stopped) is kept and listed,
@@ -59,7 +60,9 @@ struct ResultRecord {
     QString uid;            ///< unique across workstations (a UUID): the same result has the same uid everywhere
     QString workstation;    ///< the host that scored it
     QString syncedUtc;      ///< when it reached the shared server ("" while waiting); local databases only
+    QString submittedBy;    ///< the database role that put it on the server ("" elsewhere)
     QString traineeName;    ///< filled by allResults()
+    QString traineeClass;   ///< the trainee's class (TraineeRecord::className)
 };
 
 /// Whether `location` names a PostgreSQL server (postgresql:// or postgres://) rather than an
@@ -77,7 +80,7 @@ class ResultsDatabase {
     Q_DECLARE_TR_FUNCTIONS(palpate::ResultsDatabase)
 public:
     /// The version this build writes; files with a newer one are refused, older ones migrated.
-    static constexpr int kSchemaVersion = 5;
+    static constexpr int kSchemaVersion = 6;
 
     ResultsDatabase();
     ~ResultsDatabase();
@@ -129,6 +132,21 @@ public:
     bool putStaircase(qint64 traineeId, const QString& exerciseKey, const QString& stateJson, QString* error = nullptr);
     QString lastError() const { return mLastError; }
 
+    /// On a server: the role this connection logged in as, its class (docs/results-store.md,
+    /// "Roles"; "" when the role is in none), and whether the connection is encrypted (TLS).
+    QString serverRole() const { return mRole; }
+    QString className() const { return mClassName; }
+    bool isEncrypted() const { return mEncrypted; }
+    /// "role alice, class 3B, TLS" (or "no TLS"): for tooltips and `results list`; "" for a file.
+    QString connectionDescription() const;
+
+    /// Runs `statements` in one transaction (the server's roles and grants, ResultsRoles.h); the
+    /// first failure rolls back and names the statement's problem.
+    bool runStatements(const QStringList& statements, QString* error = nullptr);
+    /// `name` quoted as an SQL identifier, and `text` as a string literal, in this back-end's words.
+    QString quotedIdentifier(const QString& name) const;
+    QString quotedText(const QString& text) const;
+
     /// Writes an empty version-1 file (no recording_path): kept so that the migration is tested
     /// against the real old schema, not a guess at it.
     static bool createVersion1(const QString& path, QString* error = nullptr);
@@ -150,6 +168,9 @@ private:
     QString mConnection;
     QString mPath;
     bool mServer = false;
+    QString mRole;
+    QString mClassName;
+    bool mEncrypted = false;
     QSqlDatabase mDb;
     mutable QString mLastError;
 };

@@ -48,6 +48,10 @@ echo "Depends: $depends"
 for dep in libqt6widgets6 libqt6opengl6 libqt6charts6 libqt6sql6 libqt6sql6-sqlite qt6-qpa-plugins libc6; do
   if grep -Eq "(^|, )$dep( |,|$)" <<<"$depends"; then echo "ok: depends on $dep"; else echo "FAIL: no dependency on $dep"; failures=$((failures + 1)); fi
 done
+recommends="$(dpkg-deb -f "$deb" Recommends)"
+echo "Recommends: $recommends"
+if grep -Eq "(^|, )libqt6sql6-psql( |,|$)" <<<"$recommends"; then echo "ok: recommends libqt6sql6-psql"; else
+  echo "FAIL: does not recommend libqt6sql6-psql (the class's server)"; failures=$((failures + 1)); fi
 [ "$(dpkg-deb -f "$deb" Package)" = palpate ] || { echo "FAIL: package name is not palpate"; failures=$((failures + 1)); }
 
 # The unpacked binaries run and find their resources where they are installed.

@@ -146,8 +146,14 @@ TEST(ScoreReportPdf, ScoredRecordingIsReadable) {
     const std::string recording = recordPressTargets(dir);
     const std::string pdf = dir.file("report.pdf");
     const auto r = runCli("score --exercise " + shellQuote(exampleFile("press_targets.json")) + " --recording " +
-                          shellQuote(recording) + " --pdf " + shellQuote(pdf) + " --trainee 'Erika Mustermann' --json");
+                          shellQuote(recording) + " --pdf " + shellQuote(pdf) + " --trainee 'Erika Mustermann' --json --db " +
+                          shellQuote(dir.file("results.sqlite")));
     ASSERT_EQ(r.exitCode, 0) << r.output;
+    // --trainee stores the result too (here in --db): the report and the stored row say the same.
+    const auto stored = nlohmann::json::parse(r.output)["stored"];
+    EXPECT_EQ(stored["trainee"], "Erika Mustermann");
+    EXPECT_GT(stored["result_id"].get<long long>(), 0);
+    EXPECT_TRUE(std::filesystem::exists(dir.file("results.sqlite")));
     const auto j = nlohmann::json::parse(r.output);
     ASSERT_EQ(j["targets"].size(), 3u);
     const std::vector<PdfPage> pages = expectReadable(pdf);
@@ -179,11 +185,12 @@ TEST(ScoreReportPdf, ScoredRecordingIsReadable) {
     EXPECT_LT(labels[0]->xMax, labels[1]->xMin);
     EXPECT_LT(labels[1]->xMax, labels[2]->xMin);
     EXPECT_LT(labels[2]->yMax, labels[1]->yMin);  // [1.5, 2.5] N above [1, 2] N
-    // Nothing left beside the report (it is written to a temporary file and renamed).
+    // Nothing left beside the report (it is written to a temporary file and renamed) and the
+    // database it was stored in.
     std::vector<std::string> files;
     for (const auto& e : std::filesystem::directory_iterator(dir.path())) files.push_back(e.path().filename().string());
     std::sort(files.begin(), files.end());
-    EXPECT_EQ(files, (std::vector<std::string>{"press.palprec", "report.pdf"}));
+    EXPECT_EQ(files, (std::vector<std::string>{"press.palprec", "report.pdf", "results.sqlite"}));
 }
 
 TEST(ScoreReportPdf, ADetectLumpsReportHasTheLumpsTheSurfaceExaminedAndTheForceByPhase) {
@@ -192,7 +199,7 @@ TEST(ScoreReportPdf, ADetectLumpsReportHasTheLumpsTheSurfaceExaminedAndTheForceB
     test::runScriptedSession(test::loadExampleExercise("detect_lumps"),
                              test::loadTraineeScript(exampleFile("detect_lumps.light.path")), recording);
     const std::string pdf = dir.file("lumps.pdf");
-    const auto r = runCli("score --recording " + shellQuote(recording) + " --pdf " + shellQuote(pdf) + " --trainee Di");
+    const auto r = runCli("score --recording " + shellQuote(recording) + " --pdf " + shellQuote(pdf) + " --trainee Di --no-store");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const std::vector<PdfPage> pages = expectReadable(pdf);  // nothing overlaps, every line on its page
     const std::string text = allText(pages);
@@ -227,7 +234,7 @@ TEST(ScoreReportPdf, LongNamesAndManyTargetsStayReadable) {
     const std::string pdf = dir.file("long.pdf");
     const std::string trainee = "Maria Magdalena Josefina von und zu Hohenberg-Schwarzenfeld-Lichtenstein";
     const auto r = runCli("score --exercise " + shellQuote(exercise) + " --recording " + shellQuote(recording) +
-                          " --pdf " + shellQuote(pdf) + " --trainee " + shellQuote(trainee) + " --json");
+                          " --pdf " + shellQuote(pdf) + " --trainee " + shellQuote(trainee) + " --json --no-store");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto j = nlohmann::json::parse(r.output);
     ASSERT_EQ(j["targets"].size(), 43u);
@@ -277,8 +284,11 @@ TEST(ScoreReportPdf, NeverOverwritesAnInputAndFailsCleanly) {
                " --pdf " + shellQuote(pdf));
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_EQ(test::readBytes(pdf), pdfBytes);
-    // --trainee belongs to --pdf.
-    EXPECT_EQ(runCli(base + " --trainee X").exitCode, 2);
+    // --no-store only names the trainee on a --pdf report; --local is where a result waits for a server.
+    EXPECT_EQ(runCli(base + " --trainee X --no-store").exitCode, 2);
+    EXPECT_EQ(runCli(base + " --pdf " + shellQuote(pdf) + " --no-store").exitCode, 2);
+    EXPECT_EQ(runCli(base + " --trainee X --local " + shellQuote(dir.file("l.sqlite"))).exitCode, 2);
+    EXPECT_FALSE(std::filesystem::exists(dir.file("l.sqlite")));
 }
 
 }  // namespace

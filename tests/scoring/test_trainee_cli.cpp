@@ -134,9 +134,15 @@ TEST(TraineeCli, CurveStandardProficiencyPngAndErrors) {
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.output.find("garbage.sqlite"), std::string::npos) << r.output;
     EXPECT_EQ(test::readBytes(garbage).size(), 4096u);  // left as it was
+    // score --trainee stores: a new trainee is added, with nothing earlier to judge against.
     r = runCli("score --recording " + shellQuote(good) + " --db " + db + " --trainee Zed --json");
-    EXPECT_EQ(r.exitCode, 1);
-    EXPECT_NE(r.output.find("Zed"), std::string::npos) << r.output;
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    j = nlohmann::json::parse(r.output);
+    EXPECT_FALSE(j.contains("proficiency")) << r.output;
+    EXPECT_EQ(j["stored"]["trainee"], "Zed");
+    r = runCli("trainee curve --db " + db + " --trainee Zed --exercise " + exercise + " --json");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(nlohmann::json::parse(r.output)["sessions"].size(), 1u);
     r = runCli("trainee staircase --db " + db + " --trainee Bo --exercise " + exercise);
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.output.find("has no staircase"), std::string::npos) << r.output;

@@ -261,7 +261,7 @@ TEST(ChartsPanel, CsvSavesAndLoadsBackWithTheTissue) {
     ChartsPanel panel;
     QSignalSpy finished(&panel, &ChartsPanel::sweepFinished);
     TissuePreset applied;
-    applied.tissue = TissueProperties{.youngsModulusKPa = 5.4, .poissonRatio = 0.49, .toolRadiusMm = 5.0, .source = "test"};
+    applied.tissue = TissueProperties{.youngsModulusKPa = 5.4, .poissonRatio = 0.49, .toolRadiusMm = 5.0, .source = "test", .stiffeningSource = ""};
     panel.setCurrentConfiguration(applied, ParameterPanel::toolContactOf(applied), 1442);
     SweepDef def = tinySweep();
     def.contact = ParameterPanel::toolContactOf(applied);

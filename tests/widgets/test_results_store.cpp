@@ -9,6 +9,7 @@
 #include "app/report/ResultSync.h"
 #include "app/report/ResultUploader.h"
 #include "app/report/ResultsDatabase.h"
+#include "tests/widgets/ResultsServer.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -30,64 +31,15 @@
 #include <vector>
 
 using namespace palpate;
+using palpate::test::clearServer;
+using palpate::test::serverUrl;
 
 namespace {
 
-ScoreReport report(double score) {
-    ScoreReport r;
-    r.exerciseName = "Press two targets";
-    r.score = score;
-    r.guidance.completed = true;
-    return r;
-}
+ScoreReport report(double score) { return palpate::test::completedReport(score); }
 
-/// The server pg_virtualenv started, as a URL without its password (libpq reads PGPASSWORD).
-QString serverUrl() {
-    const QByteArray host = qgetenv("PGHOST"), port = qgetenv("PGPORT"), user = qgetenv("PGUSER"),
-                     database = qgetenv("PGDATABASE");
-    if (host.isEmpty() || database.isEmpty()) return {};
-    return QStringLiteral("postgresql://%1@%2:%3/%4")
-        .arg(QString::fromUtf8(user), QString::fromUtf8(host), QString::fromUtf8(port.isEmpty() ? "5432" : port),
-             QString::fromUtf8(database));
-}
-
-#define REQUIRE_SERVER()                                                                             \
-    if (serverUrl().isEmpty()) GTEST_SKIP() << "no PostgreSQL server (run under pg_virtualenv)"; \
-    static_assert(true)
-
-/// Empties the server's tables between tests (one cluster serves them all).
-void clearServer() {
-    ResultsDatabase db;
-    QString error;
-    ASSERT_TRUE(db.open(serverUrl(), &error)) << error.toStdString();
-    db.close();
-    const QString name = QStringLiteral("clear");
-    {
-        QSqlDatabase raw = QSqlDatabase::addDatabase(QStringLiteral("QPSQL"), name);
-        raw.setHostName(qEnvironmentVariable("PGHOST"));
-        raw.setPort(qEnvironmentVariableIntValue("PGPORT"));
-        raw.setDatabaseName(qEnvironmentVariable("PGDATABASE"));
-        raw.setUserName(qEnvironmentVariable("PGUSER"));
-        ASSERT_TRUE(raw.open());
-        QSqlQuery q(raw);
-        ASSERT_TRUE(q.exec(QStringLiteral("TRUNCATE results, staircases, trainees RESTART IDENTITY")));
-    }
-    QSqlDatabase::removeDatabase(name);
-}
-
-/// A workstation's database with `count` results of `trainee`.
 QString workstation(const QTemporaryDir& dir, const QString& name, const QString& trainee, int count) {
-    const QString path = dir.filePath(name + QStringLiteral(".sqlite"));
-    ResultsDatabase db;
-    QString error;
-    EXPECT_TRUE(db.open(path, &error)) << error.toStdString();
-    const qint64 id = db.addTrainee(trainee, &error);
-    for (int i = 0; i < count; ++i)
-        EXPECT_GE(db.addResult(id, report(50.0 + i), QStringLiteral("Press two targets"), QStringLiteral("/e.json"),
-                               QDateTime::currentDateTimeUtc(), 10.0, QString(), &error),
-                  0)
-            << error.toStdString();
-    return path;
+    return palpate::test::workstationFile(dir, name, trainee, count, 50.0);
 }
 
 class Backends : public ::testing::TestWithParam<bool> {
