@@ -41,6 +41,8 @@ ClassDialog::ClassDialog(const QString& localPath, const QString& serverUrl, con
                                        tr("Against the marks"), tr("Last session")});
     mTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
     mTable->setSelectionBehavior(QAbstractItemView::SelectRows);
+    // The rows come by class, then trainee: the first sort (by class, stable) keeps that order.
+    mTable->horizontalHeader()->setSortIndicator(0, Qt::AscendingOrder);
     mTable->setSortingEnabled(true);
     mTable->horizontalHeader()->setStretchLastSection(true);
     mTable->verticalHeader()->hide();
@@ -78,7 +80,7 @@ ClassDialog::ClassDialog(const QString& localPath, const QString& serverUrl, con
         const QString problem = exportCsv(path);
         mStatus->setText(problem.isEmpty() ? tr("Exported %1 rows to %2.").arg(mShown.size()).arg(path) : problem);
     });
-    resize(820, 480);
+    resize(900, 480);
     refresh();
 }
 

@@ -182,7 +182,8 @@ int classCommand(const Args& args) {
     }
     if (rows.empty()) std::cout << "no trainee has a scored session in " << text(db.path()) << "\n";
     for (const ClassRow& r : rows)
-        std::cout << std::left << std::setw(16) << text(r.trainee) << std::setw(28) << text(r.exercise) << std::right
+        std::cout << std::left << std::setw(8) << (r.className.isEmpty() ? std::string("-") : text(r.className))
+                  << std::setw(16) << text(r.trainee) << std::setw(28) << text(r.exercise) << std::right
                   << std::setw(4) << r.sessions << std::fixed << std::setprecision(1) << std::setw(8) << r.latestScore
                   << std::setw(8) << r.bestScore << "  " << text(r.verdict)
                   << (r.standardNote.isEmpty() ? "" : " (" + text(r.standardNote) + ")") << "\n";

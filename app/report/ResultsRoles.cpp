@@ -70,11 +70,15 @@ QString roleMissing(ResultsDatabase& db, const QString& role) {
     return db.runStatements(check, &error) ? QString() : error;
 }
 
+/// The server's notices ("policy ... does not exist, skipping", "role is not a member") are not
+/// news to the administrator: only errors are reported.
+const QString kQuiet = QStringLiteral("SET LOCAL client_min_messages = error");
+
 }  // namespace
 
 bool secureResultsServer(ResultsDatabase& server, QString* error) {
     if (!needsServer(server, error)) return false;
-    QStringList s;
+    QStringList s{kQuiet};
     for (const char* role : {kWorkstationGroupRole, kInstructorGroupRole})
         s << QStringLiteral("DO $$ BEGIN IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = '%1') THEN"
                             " CREATE ROLE %1 NOLOGIN; END IF; END $$")
@@ -97,7 +101,7 @@ bool grantWorkstation(ResultsDatabase& server, const QString& role, const QStrin
     const QString r = server.quotedIdentifier(role);
     // One kind of role each: a workstation is not also an instructor.
     return server.runStatements(
-        {QStringLiteral("REVOKE palpate_instructor FROM %1").arg(r), QStringLiteral("GRANT palpate_workstation TO %1").arg(r),
+        {kQuiet, QStringLiteral("REVOKE palpate_instructor FROM %1").arg(r), QStringLiteral("GRANT palpate_workstation TO %1").arg(r),
          QStringLiteral("INSERT INTO class_workstations (role_name, class_name) VALUES (%1, %2)"
                         " ON CONFLICT (role_name) DO UPDATE SET class_name = excluded.class_name")
              .arg(server.quotedText(role), server.quotedText(className.trimmed()))},
@@ -112,7 +116,7 @@ bool grantInstructor(ResultsDatabase& server, const QString& role, QString* erro
     }
     if (!secureResultsServer(server, error)) return false;
     const QString r = server.quotedIdentifier(role);
-    return server.runStatements({QStringLiteral("REVOKE palpate_workstation FROM %1").arg(r),
+    return server.runStatements({kQuiet, QStringLiteral("REVOKE palpate_workstation FROM %1").arg(r),
                                  QStringLiteral("DELETE FROM class_workstations WHERE role_name = %1").arg(server.quotedText(role)),
                                  QStringLiteral("GRANT palpate_instructor TO %1").arg(r)},
                                 error);

@@ -210,6 +210,61 @@ TEST(TraineeMode, AStoredResultWaitsForTheClassServerInTheStatusBar) {
     EXPECT_FALSE(view.exportCsv(window->exercises().database().path()).isEmpty());  // never over the database
 }
 
+// The Class view by class: the rows of two classes (as an instructor reads them from the server;
+// here a file whose trainees have classes), one class chosen, and Export CSV… writes what is shown.
+TEST(ClassViewTest, ShowsOneClassAndExportsWhatItShows) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("class.sqlite"));
+    {
+        ResultsDatabase db;
+        QString error;
+        ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
+        ScoreReport done;
+        done.score = 80.0;
+        done.guidance.completed = true;
+        for (const char* name : {"Ann", "Ben", "Cleo"}) {
+            const qint64 id = db.addTrainee(QString::fromLatin1(name));
+            ASSERT_GE(db.addResult(id, done, QStringLiteral("Press three targets"), QString(), QDateTime::currentDateTimeUtc(),
+                                   20.0, QString(), &error),
+                      0)
+                << error.toStdString();
+        }
+        // The server's word for a trainee's class (docs/results-store.md, "Roles"), written here by hand.
+        ASSERT_TRUE(db.runStatements({QStringLiteral("UPDATE trainees SET class_name = '3A' WHERE name IN ('Ann', 'Ben')"),
+                                      QStringLiteral("UPDATE trainees SET class_name = '3B' WHERE name = 'Cleo'")},
+                                     &error))
+            << error.toStdString();
+    }
+    ClassDialog view(path, QString(), QFileInfo(resource("exercises/press_targets.json")).absolutePath());
+    QSignalSpy loaded(&view, &ClassDialog::loaded);
+    ASSERT_TRUE(loaded.wait(30000) || loaded.count() == 1);
+    ASSERT_EQ(view.rows().size(), 3u);
+    auto* table = view.findChild<QTableWidget*>(QStringLiteral("classTable"));
+    auto* filter = view.findChild<QComboBox*>(QStringLiteral("classFilterCombo"));
+    ASSERT_NE(filter, nullptr);
+    EXPECT_TRUE(filter->isEnabled());
+    EXPECT_EQ(filter->count(), 3);  // All, 3A, 3B
+    EXPECT_EQ(table->item(0, 0)->text(), QStringLiteral("3A"));
+    EXPECT_EQ(table->item(2, 0)->text(), QStringLiteral("3B"));
+    view.setClassFilter(QStringLiteral("3B"));
+    ASSERT_EQ(table->rowCount(), 1);
+    EXPECT_EQ(table->item(0, 1)->text(), QStringLiteral("Cleo"));
+    EXPECT_TRUE(view.statusText().contains(QStringLiteral("1 trainee"))) << view.statusText().toStdString();
+    const QString csv = dir.filePath(QStringLiteral("3b.csv"));
+    ASSERT_EQ(view.exportCsv(csv), QString());
+    QFile file(csv);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = file.readAll().trimmed().split('\n');
+    ASSERT_EQ(lines.size(), 2);
+    EXPECT_TRUE(lines[0].startsWith("class,trainee,"));
+    EXPECT_TRUE(lines[1].startsWith("3B,Cleo,"));
+    // A refresh keeps the chosen class.
+    ASSERT_TRUE(view.refresh());
+    ASSERT_TRUE(loaded.wait(30000));
+    EXPECT_EQ(filter->currentText(), QStringLiteral("3B"));
+    EXPECT_EQ(table->rowCount(), 1);
+}
+
 // The score depends only on what the trainee did: a scripted trainee's path starts with the
 // exercise's recording, so a window that is slow to start recording (a busy machine: here 5 s of
 // ticks pass before the window looks) scores as a prompt one does, and so does a second run.
