@@ -4535,24 +4535,24 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
 <context>
     <name>palpate::ResultUploader</name>
     <message>
-        <source>Results: sending to the class&apos;s server…</source>
-        <translation>Ergebnisse: werden an den Server der Klasse gesendet…</translation>
+        <source>Results: sending…</source>
+        <translation>Ergebnisse: werden gesendet…</translation>
     </message>
     <message>
-        <source>Results: all on the class&apos;s server</source>
-        <translation>Ergebnisse: alle auf dem Server der Klasse</translation>
+        <source>Results: all sent</source>
+        <translation>Ergebnisse: alle gesendet</translation>
     </message>
     <message>
-        <source>Results: 1 waiting for the class&apos;s server</source>
-        <translation>Ergebnisse: 1 wartet auf den Server der Klasse</translation>
+        <source>Results: server does not answer</source>
+        <translation>Ergebnisse: Server antwortet nicht</translation>
     </message>
     <message>
-        <source>Results: %1 waiting for the class&apos;s server</source>
-        <translation>Ergebnisse: %1 warten auf den Server der Klasse</translation>
+        <source>Results: 1 waiting</source>
+        <translation>Ergebnisse: 1 wartet</translation>
     </message>
     <message>
-        <source>Results: none waiting; the class&apos;s server does not answer</source>
-        <translation>Ergebnisse: keine warten; der Server der Klasse antwortet nicht</translation>
+        <source>Results: %1 waiting</source>
+        <translation>Ergebnisse: %1 warten</translation>
     </message>
 </context>
 <context>

@@ -4531,24 +4531,24 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
 <context>
     <name>palpate::ResultUploader</name>
     <message>
-        <source>Results: sending to the class&apos;s server…</source>
-        <translation>Keputusan: dihantar ke pelayan kelas…</translation>
+        <source>Results: sending…</source>
+        <translation>Keputusan: sedang dihantar…</translation>
     </message>
     <message>
-        <source>Results: all on the class&apos;s server</source>
-        <translation>Keputusan: semua di pelayan kelas</translation>
+        <source>Results: all sent</source>
+        <translation>Keputusan: semua dihantar</translation>
     </message>
     <message>
-        <source>Results: 1 waiting for the class&apos;s server</source>
-        <translation>Keputusan: 1 menunggu pelayan kelas</translation>
+        <source>Results: server does not answer</source>
+        <translation>Keputusan: pelayan tidak menjawab</translation>
     </message>
     <message>
-        <source>Results: %1 waiting for the class&apos;s server</source>
-        <translation>Keputusan: %1 menunggu pelayan kelas</translation>
+        <source>Results: 1 waiting</source>
+        <translation>Keputusan: 1 menunggu</translation>
     </message>
     <message>
-        <source>Results: none waiting; the class&apos;s server does not answer</source>
-        <translation>Keputusan: tiada yang menunggu; pelayan kelas tidak menjawab</translation>
+        <source>Results: %1 waiting</source>
+        <translation>Keputusan: %1 menunggu</translation>
     </message>
 </context>
 <context>

@@ -76,11 +76,10 @@ void ResultUploader::onFinished(const SyncReport& report) {
 
 QString ResultUploader::statusText() const {
     if (mServer.isEmpty()) return {};
-    if (!mHaveReport) return tr("Results: sending to the class's server…");
-    if (mLast.waiting == 0)
-        return mLast.error.isEmpty() ? tr("Results: all on the class's server")
-                                     : tr("Results: none waiting; the class's server does not answer");
-    return mLast.waiting == 1 ? tr("Results: 1 waiting for the class's server") : tr("Results: %1 waiting for the class's server").arg(mLast.waiting);
+    // Short: the status bar has many fields (the tooltip says which server and why).
+    if (!mHaveReport) return tr("Results: sending…");
+    if (mLast.waiting == 0) return mLast.error.isEmpty() ? tr("Results: all sent") : tr("Results: server does not answer");
+    return mLast.waiting == 1 ? tr("Results: 1 waiting") : tr("Results: %1 waiting").arg(mLast.waiting);
 }
 
 }  // namespace palpate

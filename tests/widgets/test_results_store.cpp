@@ -254,7 +254,8 @@ TEST(ResultUploaderTest, SaysWhatWaitsAndSendsWhenTheServerAnswers) {
     ASSERT_TRUE(QTest::qWaitFor([&] { return uploader.hasReport() && !uploader.busy(); }, 30000));
     EXPECT_TRUE(uploader.lastReport().error.isEmpty()) << uploader.lastReport().error.toStdString();
     EXPECT_EQ(uploader.lastReport().sent, 2);
-    EXPECT_TRUE(uploader.statusText().contains(QStringLiteral("all on"))) << uploader.statusText().toStdString();
+    EXPECT_TRUE(uploader.statusText().contains(QStringLiteral("all sent"))) << uploader.statusText().toStdString();
+    EXPECT_TRUE(uploader.lastReport().connection.contains(QStringLiteral("role "))) << uploader.lastReport().connection.toStdString();
 }
 
 /// A scored press-targets session with these completion and time values.
