@@ -739,10 +739,12 @@ TissueProperties ParameterPanel::tissueInFields(const std::string& source) const
 }
 
 bool ParameterPanel::tissueFieldsShow(const TissueProperties& tissue) const {
+    TissuePreset holder;
+    holder.tissue = tissue;
     for (const PanelField& f : mFields)
         if (f.section == "tissue") {
             const auto* spin = qobject_cast<const QDoubleSpinBox*>(f.widget);
-            if (spin->value() != shownAs(spin, f.get(TissuePreset{.tissue = tissue}))) return false;
+            if (spin->value() != shownAs(spin, f.get(holder))) return false;
         }
     return true;
 }
