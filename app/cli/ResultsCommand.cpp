@@ -47,6 +47,7 @@ void resultsUsage(std::ostream& out) {
            "  palpate-cli results sync --db URL [--local FILE] [--json]\n"
            "  palpate-cli results class [--db LOCATION] [--class NAME] [--json] [--csv FILE]\n"
            "  palpate-cli results grant --db URL (--workstation ROLE --class NAME | --instructor ROLE)\n"
+           "  palpate-cli results revoke --db URL --role ROLE\n"
            "      LOCATION: an SQLite file (default: the GUI's results.sqlite) or postgresql://[user@]host[:port]/db\n"
            "      sync: copies this workstation's results (--local, default the GUI's) to the server URL; the\n"
            "      password comes from ~/.pgpass or PGPASSFILE, never from the URL\n"
@@ -262,6 +263,24 @@ int grantCommand(const Args& args) {
     return 0;
 }
 
+/// Takes a role's kind away (docs/results-store.md, "Roles").
+int revokeCommand(const Args& args) {
+    const auto url = args.option("db");
+    const auto role = args.option("role");
+    if (!url || !isServerLocation(QString::fromStdString(*url)) || !role) {
+        std::cerr << "results revoke: --db postgresql://host/database and --role ROLE are required\n";
+        return 2;
+    }
+    ResultsDatabase server;
+    QString error;
+    if (!server.open(QString::fromStdString(*url), &error) || !revokeRole(server, QString::fromStdString(*role), &error)) {
+        std::cerr << "results revoke: " << text(error) << "\n";
+        return 1;
+    }
+    std::cout << *role << ": neither a workstation nor an instructor now (what it sent stays)\n";
+    return 0;
+}
+
 }  // namespace
 
 int resultsCommand(const std::vector<std::string>& words) {
@@ -271,7 +290,7 @@ int resultsCommand(const std::vector<std::string>& words) {
     }
     const std::string sub = words.front();
     const std::vector<std::string> rest(words.begin() + 1, words.end());
-    const Args args(rest, {"json"}, {"db", "csv", "local", "class", "workstation", "instructor"});
+    const Args args(rest, {"json"}, {"db", "csv", "local", "class", "workstation", "instructor", "role"});
     if (!args.ok()) {
         std::cerr << "palpate-cli results " << sub << ": " << args.error() << "\n";
         return 2;
@@ -281,6 +300,7 @@ int resultsCommand(const std::vector<std::string>& words) {
     if (sub == "sync") return syncCommand(args);
     if (sub == "class") return classCommand(args);
     if (sub == "grant") return grantCommand(args);
+    if (sub == "revoke") return revokeCommand(args);
     std::cerr << "palpate-cli results: unknown subcommand '" << sub << "'\n";
     resultsUsage(std::cerr);
     return 2;

@@ -122,4 +122,18 @@ bool grantInstructor(ResultsDatabase& server, const QString& role, QString* erro
                                 error);
 }
 
+bool revokeRole(ResultsDatabase& server, const QString& role, QString* error) {
+    if (!needsServer(server, error)) return false;
+    if (const QString missing = roleMissing(server, role); !missing.isEmpty()) {
+        if (error) *error = missing;
+        return false;
+    }
+    if (!secureResultsServer(server, error)) return false;
+    const QString r = server.quotedIdentifier(role);
+    return server.runStatements({kQuiet, QStringLiteral("REVOKE palpate_workstation FROM %1").arg(r),
+                                 QStringLiteral("REVOKE palpate_instructor FROM %1").arg(r),
+                                 QStringLiteral("DELETE FROM class_workstations WHERE role_name = %1").arg(server.quotedText(role))},
+                                error);
+}
+
 }  // namespace palpate

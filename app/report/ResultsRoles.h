@@ -22,5 +22,8 @@ bool secureResultsServer(ResultsDatabase& server, QString* error = nullptr);
 bool grantWorkstation(ResultsDatabase& server, const QString& role, const QString& className, QString* error = nullptr);
 /// Makes the login role `role` an instructor: reads everything, writes nothing.
 bool grantInstructor(ResultsDatabase& server, const QString& role, QString* error = nullptr);
+/// Takes both kinds from `role` (a machine retired, a password leaked): it reads and sends nothing
+/// more. What it sent stays.
+bool revokeRole(ResultsDatabase& server, const QString& role, QString* error = nullptr);
 
 }  // namespace palpate

@@ -215,6 +215,16 @@ TEST_F(ServerRoles, WorkstationsSendTheirOwnAndReadTheirClassInstructorsReadAll)
     EXPECT_EQ(moved.className(), QStringLiteral("3B"));
     ASSERT_EQ(moved.allResults().size(), 2u);
     EXPECT_EQ(moved.allResults().front().traineeName, QStringLiteral("Bo"));
+
+    // Revoked (a machine retired): it reads and sends nothing more; what it sent stays.
+    ASSERT_TRUE(revokeRole(admin, QStringLiteral("ws_b"), &error)) << error.toStdString();
+    ResultsDatabase retired;
+    EXPECT_FALSE(retired.open(serverUrl(QStringLiteral("ws_b")), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("may not read the results"))) << error.toStdString();
+    const SyncReport late = syncAs(bFile, QStringLiteral("ws_b"));
+    EXPECT_FALSE(late.error.isEmpty());
+    EXPECT_EQ(teacher.allResults().size(), 5u);
+    EXPECT_FALSE(revokeRole(admin, QStringLiteral("nobody"), &error));
 }
 
 /// Runs a program; its exit code and what it wrote.
@@ -402,6 +412,13 @@ TEST_F(ServerRoles, ScoreStoresAndSendsAndGrantNamesWhatIsWrong) {
                    QStringLiteral("teacher")})
                   .code,
               2);  // not a server
+    // Revoked, the workstation's login reads nothing more.
+    r = cli({QStringLiteral("results"), QStringLiteral("revoke"), QStringLiteral("--db"), url, QStringLiteral("--role"), QStringLiteral("ws_a")});
+    EXPECT_EQ(r.code, 0) << r.err.toStdString();
+    r = cli({QStringLiteral("results"), QStringLiteral("list"), QStringLiteral("--db"), serverUrl(QStringLiteral("ws_a"))});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(r.err.contains("may not read the results")) << r.err.toStdString();
+    EXPECT_EQ(cli({QStringLiteral("results"), QStringLiteral("revoke"), QStringLiteral("--db"), url}).code, 2);  // no role
 }
 
 }  // namespace
