@@ -87,17 +87,27 @@ bool secureResultsServer(ResultsDatabase& server, QString* error) {
     return server.runStatements(s, error);
 }
 
+namespace {
+
+/// Before a role's kind changes: a server, a role it has, and the group roles and policies in place.
+bool readyToChange(ResultsDatabase& server, const QString& role, QString* error) {
+    if (!needsServer(server, error)) return false;
+    if (const QString missing = roleMissing(server, role); !missing.isEmpty()) {
+        if (error) *error = missing;
+        return false;
+    }
+    return secureResultsServer(server, error);
+}
+
+}  // namespace
+
 bool grantWorkstation(ResultsDatabase& server, const QString& role, const QString& className, QString* error) {
     if (!needsServer(server, error)) return false;
     if (className.trimmed().isEmpty()) {
         if (error) *error = Tr::tr("a workstation needs a class (--class NAME)");
         return false;
     }
-    if (const QString missing = roleMissing(server, role); !missing.isEmpty()) {
-        if (error) *error = missing;
-        return false;
-    }
-    if (!secureResultsServer(server, error)) return false;
+    if (!readyToChange(server, role, error)) return false;
     const QString r = server.quotedIdentifier(role);
     // One kind of role each: a workstation is not also an instructor.
     return server.runStatements(
@@ -109,12 +119,7 @@ bool grantWorkstation(ResultsDatabase& server, const QString& role, const QStrin
 }
 
 bool grantInstructor(ResultsDatabase& server, const QString& role, QString* error) {
-    if (!needsServer(server, error)) return false;
-    if (const QString missing = roleMissing(server, role); !missing.isEmpty()) {
-        if (error) *error = missing;
-        return false;
-    }
-    if (!secureResultsServer(server, error)) return false;
+    if (!readyToChange(server, role, error)) return false;
     const QString r = server.quotedIdentifier(role);
     return server.runStatements({kQuiet, QStringLiteral("REVOKE palpate_workstation FROM %1").arg(r),
                                  QStringLiteral("DELETE FROM class_workstations WHERE role_name = %1").arg(server.quotedText(role)),
@@ -123,12 +128,7 @@ bool grantInstructor(ResultsDatabase& server, const QString& role, QString* erro
 }
 
 bool revokeRole(ResultsDatabase& server, const QString& role, QString* error) {
-    if (!needsServer(server, error)) return false;
-    if (const QString missing = roleMissing(server, role); !missing.isEmpty()) {
-        if (error) *error = missing;
-        return false;
-    }
-    if (!secureResultsServer(server, error)) return false;
+    if (!readyToChange(server, role, error)) return false;
     const QString r = server.quotedIdentifier(role);
     return server.runStatements({kQuiet, QStringLiteral("REVOKE palpate_workstation FROM %1").arg(r),
                                  QStringLiteral("REVOKE palpate_instructor FROM %1").arg(r),
