@@ -159,10 +159,13 @@ int scoreCommand(const std::vector<std::string>& words) {
     }
 #endif
     if (pdf) {
-        // The report never replaces what it is made from.
+        // The report never replaces what it is made from, nor the database the result goes to.
+        const std::string db = args.option("db").value_or("");
         for (const auto& [input, what] : {std::pair{*recording, "recording"},
                                           {args.option("exercise").value_or(""), "exercise"},
-                                          {args.option("mesh").value_or(""), "mesh"}})
+                                          {args.option("mesh").value_or(""), "mesh"},
+                                          {isServerLocationText(db) ? std::string() : db, "results database"},
+                                          {args.option("local").value_or(""), "results database"}})
             if (!input.empty() && sameFile(*pdf, input)) {
                 std::cerr << "score: --pdf " << *pdf << " is the " << what
                           << " file: the report is never written over an input; choose another file\n";

@@ -289,6 +289,14 @@ TEST(ScoreReportPdf, NeverOverwritesAnInputAndFailsCleanly) {
     EXPECT_EQ(runCli(base + " --pdf " + shellQuote(pdf) + " --no-store").exitCode, 2);
     EXPECT_EQ(runCli(base + " --trainee X --local " + shellQuote(dir.file("l.sqlite"))).exitCode, 2);
     EXPECT_FALSE(std::filesystem::exists(dir.file("l.sqlite")));
+    // Nor is the report written over the database the result goes to.
+    const std::string db = dir.file("results.sqlite");
+    ASSERT_EQ(runCli(base + " --trainee X --db " + shellQuote(db)).exitCode, 0);
+    const auto dbBytes = test::readBytes(db);
+    const auto over = runCli(base + " --trainee X --db " + shellQuote(db) + " --pdf " + shellQuote(db));
+    EXPECT_EQ(over.exitCode, 2);
+    EXPECT_NE(over.output.find("results database"), std::string::npos) << over.output;
+    EXPECT_EQ(test::readBytes(db), dbBytes);
 }
 
 }  // namespace
