@@ -9,6 +9,7 @@
 #include "engine/exercise/RecordedExercise.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
+#include "app/report/ServerLocation.h"
 #ifdef PALPATE_HAVE_CHARTS
 #include "app/cli/ResultsLocation.h"
 #include "app/cli/StoreSession.h"
@@ -28,10 +29,6 @@
 namespace palpate::cli {
 
 namespace {
-
-bool isServerLocationText(const std::string& location) {
-    return location.rfind("postgresql://", 0) == 0 || location.rfind("postgres://", 0) == 0;
-}
 
 #ifdef PALPATE_HAVE_CHARTS
 /// Stores the scored recording as the trainee's session: in the SQLite file --db names (default:

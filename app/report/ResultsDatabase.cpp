@@ -1,5 +1,7 @@
 #include "app/report/ResultsDatabase.h"
 
+#include "app/report/ServerLocation.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QSysInfo>
@@ -124,9 +126,7 @@ QString runInTransaction(QSqlDatabase& db, const char* const* begin, const char*
 
 }  // namespace
 
-bool isServerLocation(const QString& location) {
-    return location.startsWith(QLatin1String("postgresql://")) || location.startsWith(QLatin1String("postgres://"));
-}
+bool isServerLocation(const QString& location) { return isServerLocationText(location.toStdString()); }
 
 QString ResultsDatabase::adapt(const char* statement) const {
     QString s = QString::fromLatin1(statement);
