@@ -157,7 +157,7 @@ function(palpate_modules_finish)
   add_custom_target(palpate_include_check ALL DEPENDS "${stamp}")
   if(PALPATE_BUILD_TESTS)
     add_test(NAME include_check
-      COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${PROJECT_SOURCE_DIR} -DGRAPH=${graph_file} -P "${script}")
+      COMMAND ${PALPATE_TEST_WRAPPER} ${CMAKE_COMMAND} -DSOURCE_DIR=${PROJECT_SOURCE_DIR} -DGRAPH=${graph_file} -P "${script}")
   endif()
 endfunction()
 

@@ -11,7 +11,7 @@ packages=(
   libopenmesh-dev libglm-dev nlohmann-json3-dev libeigen3-dev libcgal-dev
   libhidapi-dev libusb-1.0-0-dev umockdev libumockdev-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth poppler-utils
+  xvfb xauth poppler-utils fonts-dejavu-core
   desktop-file-utils appstream dpkg-dev librsvg2-bin qt6-translations-l10n
 )
 

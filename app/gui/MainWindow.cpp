@@ -1256,6 +1256,11 @@ void MainWindow::createEditorDock() {
             return;
         }
         if (mSession->touchAvailable()) setTouchMode(true);
+        // The instructor tries it beside the editor, in its tab group: a column of its own would
+        // take a third of the viewport (docs/user-guide.md, "Try it").
+        if (mMode == Mode::Instructor && mExerciseDock->isHidden() && !mEditorDock->isHidden()
+            && !mEditorDock->isFloating())
+            tabifyDockWidget(mEditorDock, mExerciseDock);
         mExerciseDock->show();
         mExerciseDock->raise();
     });
@@ -1405,6 +1410,11 @@ void MainWindow::createExerciseMenu() {
 void MainWindow::setMode(Mode mode) {
     mMode = mode;
     const bool instructor = mode == Mode::Instructor;
+    // A trainee's Exercise dock is beside History, where Try it may have taken it from.
+    if (!instructor && tabifiedDockWidgets(mExerciseDock).contains(mEditorDock)) {
+        addDockWidget(Qt::LeftDockWidgetArea, mExerciseDock);
+        tabifyDockWidget(mExerciseDock, mHistoryDock);
+    }
     // Trainees get the exercise and their history; the tissue's parameters and the charts are the
     // instructor's (a trainee must not make the task easier).
     mParameterDock->setVisible(instructor);

@@ -24,6 +24,7 @@
 #include <QScrollBar>
 #include <QApplication>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDir>
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -1108,17 +1109,42 @@ TEST_F(EditorInTheWindow, TryItLeavesTouchModeOnSoThatPressingPresses) {
     window->touchModeAction()->trigger();  // the instructor had turned touch mode off
     ASSERT_FALSE(window->touchMode());
 
+    const int viewportWidthPx = viewport->width();
     child<QPushButton>(*editor, "previewButton")->click();
     ASSERT_TRUE(window->exercises().running());
     EXPECT_TRUE(window->touchMode());
     EXPECT_TRUE(window->touchModeAction()->isChecked());
     EXPECT_EQ(window->session().deviceUri(), HapticSession::kInteractiveDeviceUri);
     window->advanceTicks(200);
-    sendMouse(*viewport, QEvent::MouseButtonPress, centre, Qt::LeftButton, Qt::LeftButton);
+    // The Exercise dock opens beside the editor, not as a column of its own that squeezes the
+    // tissue out of sight (at 1100 px it had left the viewport 255 px of 588).
+    QApplication::processEvents();
+    EXPECT_GE(viewport->width(), viewportWidthPx * 9 / 10);
+    EXPECT_TRUE(window->tabifiedDockWidgets(window->findChild<QDockWidget*>(QStringLiteral("exerciseDock")))
+                    .contains(window->findChild<QDockWidget*>(QStringLiteral("exerciseEditorDock"))));
+    // The instructor presses where the tissue is now.
+    const QPointF at(viewport->width() / 2.0, viewport->height() / 2.0);
+    ASSERT_TRUE(window->viewport()->pickVertexAt(at, viewport->size()));
+    sendMouse(*viewport, QEvent::MouseButtonPress, at, Qt::LeftButton, Qt::LeftButton);
     window->advanceTicks(300);
     EXPECT_TRUE(window->session().observed().contact);
     EXPECT_GT(force(), 0.0);
-    sendMouse(*viewport, QEvent::MouseButtonRelease, centre, Qt::LeftButton, Qt::NoButton);
+    sendMouse(*viewport, QEvent::MouseButtonRelease, at, Qt::LeftButton, Qt::NoButton);
+}
+
+TEST_F(EditorInTheWindow, TheExerciseDockGoesBackBesideHistoryForTheTrainee) {
+    addTargetByClicking();
+    child<QPushButton>(*editor, "previewButton")->click();
+    ASSERT_TRUE(window->exercises().running());
+    auto* exerciseDock = window->findChild<QDockWidget*>(QStringLiteral("exerciseDock"));
+    auto* historyDock = window->findChild<QDockWidget*>(QStringLiteral("historyDock"));
+    ASSERT_EQ(window->dockWidgetArea(exerciseDock), Qt::RightDockWidgetArea);
+    window->exercises().stop();
+    window->setMode(MainWindow::Mode::Trainee);
+    QApplication::processEvents();
+    EXPECT_EQ(window->dockWidgetArea(exerciseDock), Qt::LeftDockWidgetArea);
+    EXPECT_TRUE(window->tabifiedDockWidgets(exerciseDock).contains(historyDock));
+    EXPECT_TRUE(exerciseDock->isVisible());
 }
 
 TEST_F(EditorInTheWindow, TryItWithAScriptedDeviceHandsTheToolToTheMouse) {
