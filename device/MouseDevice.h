@@ -5,7 +5,7 @@
 // to it are kept only so the GUI can show what would have been rendered.
 
 #include "device/HapticDevice.h"
-#include "engine/concurrency/SeqLock.h"
+#include "base/concurrency/SeqLock.h"
 
 #include <glm/vec3.hpp>
 

@@ -5,7 +5,7 @@
 // the two faults the safety filter and the loop must survive.
 
 #include "device/HapticDevice.h"
-#include "engine/concurrency/SeqLock.h"
+#include "base/concurrency/SeqLock.h"
 #include "device/WaypointFile.h"
 
 #include <glm/vec3.hpp>

@@ -1,6 +1,6 @@
 #include "device/WaypointFile.h"
 
-#include "engine/io/InputFile.h"
+#include "base/io/InputFile.h"
 
 #include <charconv>
 #include <cmath>

@@ -26,9 +26,9 @@ inline constexpr double kMaxWaypointCoordinateMm = 1.0e6;
 bool parseWaypoints(std::string_view text, std::string_view sourceName, std::vector<Waypoint>& out,
                     std::string& error);
 
-/// Reads and parses a waypoint file through the bounded reader (engine/io/InputFile.h): missing
+/// Reads and parses a waypoint file through the bounded reader (base/io/InputFile.h): missing
 /// paths, FIFOs, devices, directories, unreadable files and files beyond kWaypointFile's limit
-/// (engine/io/FileLimits.h) are errors that name the path.
+/// (base/io/FileLimits.h) are errors that name the path.
 bool loadWaypointFile(const std::string& path, std::vector<Waypoint>& out, std::string& error);
 
 }  // namespace palpate

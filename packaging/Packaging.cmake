@@ -6,7 +6,7 @@
 #   share/icons/hicolor/scalable/apps/org.palpate.Palpate.svg and .../NxN/apps/org.palpate.Palpate.png
 #   share/metainfo/org.palpate.Palpate.metainfo.xml
 #   lib/udev/rules.d/70-palpate-*.rules        (udev reads these only under /usr/lib or /lib)
-#   share/palpate/{meshes,presets,exercises}    (found by cli::findResource via <exe>/../share/palpate)
+#   share/palpate/{meshes,presets,exercises}    (found by findResource via <exe>/../share/palpate)
 #   share/doc/palpate/user-guide.md, guide/*.png (Help > User Guide)
 # `cpack -G DEB` in the build directory makes palpate_<version>_<arch>.deb.
 include(GNUInstallDirs)

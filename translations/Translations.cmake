@@ -2,9 +2,9 @@
 # are built from translations/palpate_<lang>.ts by lrelease and embedded in palpate_gui as
 # :/i18n/palpate_<lang>.qm (app/gui/FirstRun.cpp loads them).
 #
-# After changing user-visible strings in app/gui/, widgets/ or app/report/:
+# After changing user-visible strings in app/gui/, widgets/, results/ or report/:
 #   cmake --build build/release --target update_translations
-# runs lupdate over app/gui, widgets, app/report and the engine's field tables and rewrites translations/*.ts (new strings come in as
+# runs lupdate over app/gui, widgets, results, report and the engine's field tables and rewrites translations/*.ts (new strings come in as
 # unfinished, removed ones are dropped); translate the unfinished entries (Qt Linguist, or by
 # hand), and the translations_complete test passes again.
 find_package(Qt6 REQUIRED COMPONENTS LinguistTools)
@@ -15,9 +15,10 @@ set(PALPATE_TS_FILES
 file(GLOB PALPATE_TR_SOURCES CONFIGURE_DEPENDS
   "${PROJECT_SOURCE_DIR}/app/gui/*.cpp" "${PROJECT_SOURCE_DIR}/app/gui/*.h"
   "${PROJECT_SOURCE_DIR}/widgets/*.cpp" "${PROJECT_SOURCE_DIR}/widgets/*.h"
-  "${PROJECT_SOURCE_DIR}/app/report/*.cpp" "${PROJECT_SOURCE_DIR}/app/report/*.h")
+  "${PROJECT_SOURCE_DIR}/results/*.cpp" "${PROJECT_SOURCE_DIR}/results/*.h"
+  "${PROJECT_SOURCE_DIR}/report/*.cpp" "${PROJECT_SOURCE_DIR}/report/*.h")
 # The engine's parameter tables hold the labels and tooltips the Parameters panel shows, marked
-# with PALPATE_TRANSLATE_NOOP (engine/params/FieldTable.h), which lupdate reads as QT_TRANSLATE_NOOP.
+# with PALPATE_TRANSLATE_NOOP (base/params/FieldTable.h), which lupdate reads as QT_TRANSLATE_NOOP.
 file(GLOB_RECURSE PALPATE_TR_ENGINE_SOURCES CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/engine/*.cpp")
 list(APPEND PALPATE_TR_SOURCES ${PALPATE_TR_ENGINE_SOURCES})
 

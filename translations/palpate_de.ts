@@ -3319,56 +3319,8 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
         <translation>Deformationsmodell</translation>
     </message>
     <message>
-        <source>ring count</source>
-        <translation>Ringanzahl</translation>
-    </message>
-    <message>
-        <source>slope limit</source>
-        <translation>Steigungsgrenze</translation>
-    </message>
-    <message>
-        <source>spring stiffness</source>
-        <translation>Federsteifigkeit</translation>
-    </message>
-    <message>
-        <source>damping ratio</source>
-        <translation>Dämpfungsgrad</translation>
-    </message>
-    <message>
-        <source>contact stiffness</source>
-        <translation>Kontaktsteifigkeit</translation>
-    </message>
-    <message>
-        <source>force relaxation</source>
-        <translation>Kraftrelaxation</translation>
-    </message>
-    <message>
-        <source>vertex mass</source>
-        <translation>Knotenmasse</translation>
-    </message>
-    <message>
-        <source>octree depth</source>
-        <translation>Octree-Tiefe</translation>
-    </message>
-    <message>
-        <source>leaf capacity</source>
-        <translation>Blattkapazität</translation>
-    </message>
-    <message>
         <source>haptic rate</source>
         <translation>Haptikrate</translation>
-    </message>
-    <message>
-        <source>Young&apos;s modulus</source>
-        <translation>Elastizitätsmodul</translation>
-    </message>
-    <message>
-        <source>Poisson&apos;s ratio</source>
-        <translation>Poissonzahl</translation>
-    </message>
-    <message>
-        <source>tool radius</source>
-        <translation>Werkzeugradius</translation>
     </message>
     <message>
         <source>Model and loop</source>
@@ -3405,22 +3357,6 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>Load a shipped tissue preset: E, ν, the tool radius and slopes calibrated for the default stomach mesh (one undoable step). Each entry&apos;s tooltip names its source.</source>
         <translation>Eine mitgelieferte Gewebevorgabe laden: E, ν, der Werkzeugradius und Steigungen, kalibriert für das Standard-Magennetz (ein rückgängig machbarer Schritt). Der Tooltip jedes Eintrags nennt seine Quelle.</translation>
-    </message>
-    <message>
-        <source>Young&apos;s modulus E:</source>
-        <translation>Elastizitätsmodul E:</translation>
-    </message>
-    <message>
-        <source>Stiffness of the tissue, kPa (soft tissue: about 1 to 30 kPa).</source>
-        <translation>Steifigkeit des Gewebes, kPa (Weichgewebe: etwa 1 bis 30 kPa).</translation>
-    </message>
-    <message>
-        <source>Poisson&apos;s ratio ν:</source>
-        <translation>Poissonzahl ν:</translation>
-    </message>
-    <message>
-        <source>Tool radius a:</source>
-        <translation>Werkzeugradius a:</translation>
     </message>
     <message>
         <source>Ca&amp;librate slopes</source>
@@ -3479,18 +3415,6 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
         <translation>Welches Modell das Gewebe verformt: die Slope-Ring-Methoden (unsere und die drei des Artikels), dann die anderen Modelle der Literatur (docs/models.md).</translation>
     </message>
     <message>
-        <source>Symplectic Euler</source>
-        <translation>Symplektischer Euler</translation>
-    </message>
-    <message>
-        <source>RK4</source>
-        <translation>RK4</translation>
-    </message>
-    <message>
-        <source>Backward Euler (implicit)</source>
-        <translation>Impliziter Euler</translation>
-    </message>
-    <message>
         <source>Haptic rate:</source>
         <translation>Haptikrate:</translation>
     </message>
@@ -3503,18 +3427,6 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
         <translation>Ticks pro Sekunde der Haptikschleife, %1..%2 Hz (Haptik läuft meist mit 1000 Hz).</translation>
     </message>
     <message>
-        <source>Ring count:</source>
-        <translation>Ringanzahl:</translation>
-    </message>
-    <message>
-        <source>Rings of neighbours displaced with the touched vertex (ring r: the vertices r edges away). The paper uses 2; each ring adds a slope below.</source>
-        <translation>Ringe von Nachbarn, die mit dem berührten Knoten verschoben werden (Ring r: die Knoten r Kanten entfernt). Der Artikel verwendet 2; jeder Ring fügt unten eine Steigung hinzu.</translation>
-    </message>
-    <message>
-        <source>Slope magnitude |m| in mm/N: how far the vertex moves per newton of contact force; the model applies the paper&apos;s sign (m &lt; 0), which moves the vertex into the tissue.</source>
-        <translation>Steigungsbetrag |m| in mm/N: wie weit sich der Knoten pro Newton Kontaktkraft bewegt; das Modell wendet das Vorzeichen des Artikels an (m &lt; 0), das den Knoten ins Gewebe bewegt.</translation>
-    </message>
-    <message>
         <source>Read with signs, the paper&apos;s &quot;m1 &gt; m2 &gt; m3&quot; would move the outer rings further than the touched vertex. Palpate orders the magnitudes instead, |m1| &gt; |m2| &gt; |m3| &gt; …, so the displacement decays away from the touched vertex.</source>
         <translation>Mit Vorzeichen gelesen würde „m1 &gt; m2 &gt; m3“ des Artikels die äußeren Ringe weiter bewegen als den berührten Knoten. Palpate ordnet stattdessen die Beträge, |m1| &gt; |m2| &gt; |m3| &gt; …, sodass die Verschiebung vom berührten Knoten weg abnimmt.</translation>
     </message>
@@ -3523,72 +3435,8 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
         <translation>Der Bereich des Artikels ist (0, 1) mm/N; größere Werte brauchen eine angehobene Steigungsgrenze und eine stabile Schleifenverstärkung.</translation>
     </message>
     <message>
-        <source>Slope limit:</source>
-        <translation>Steigungsgrenze:</translation>
-    </message>
-    <message>
-        <source>Every slope magnitude must stay below this limit. The paper&apos;s range ends at 1 mm/N; calibrated soft tissue may need more (at most 100 mm/N), allowed while the loop gain stays stable. Slopes above 1 mm/N are marked as outside the paper&apos;s range.</source>
-        <translation>Jeder Steigungsbetrag muss unter dieser Grenze bleiben. Der Bereich des Artikels endet bei 1 mm/N; kalibriertes Weichgewebe kann mehr brauchen (höchstens 100 mm/N), erlaubt, solange die Schleifenverstärkung stabil bleibt. Steigungen über 1 mm/N werden als außerhalb des Bereichs des Artikels markiert.</translation>
-    </message>
-    <message>
-        <source>Spring stiffness k:</source>
-        <translation>Federsteifigkeit k:</translation>
-    </message>
-    <message>
-        <source>Stiffness of the springs that tie each vertex to its rest position. The touched vertex&apos;s spring reaction is the force rendered to the user.</source>
-        <translation>Steifigkeit der Federn, die jeden Knoten an seine Ruhelage binden. Die Federreaktion des berührten Knotens ist die Kraft, die der Benutzer spürt.</translation>
-    </message>
-    <message>
-        <source>Damping ratio:</source>
-        <translation>Dämpfungsgrad:</translation>
-    </message>
-    <message>
-        <source>Damping of the return springs as a fraction of critical: 1 returns without overshoot, below 1 the tissue rings before it settles (0..100).</source>
-        <translation>Dämpfung der Rückstellfedern als Anteil der kritischen: 1 kehrt ohne Überschwingen zurück, unter 1 schwingt das Gewebe, bevor es zur Ruhe kommt (0..100).</translation>
-    </message>
-    <message>
-        <source>Contact stiffness k_c:</source>
-        <translation>Kontaktsteifigkeit k_c:</translation>
-    </message>
-    <message>
-        <source>Stiffness of the tool-tissue contact (a penalty spring). The loop gain is |m1| × k_c.</source>
-        <translation>Steifigkeit des Kontakts zwischen Werkzeug und Gewebe (eine Straffeder). Die Schleifenverstärkung ist |m1| × k_c.</translation>
-    </message>
-    <message>
-        <source>Force relaxation α:</source>
-        <translation>Kraftrelaxation α:</translation>
-    </message>
-    <message>
         <source>automatic</source>
         <translation>automatisch</translation>
-    </message>
-    <message>
-        <source>Per-tick relaxation α of the contact force, in (0, 1]. Automatic (0) uses α = 1 / (1 + gain), which solves the contact in one tick for any gain. The update is stable while α·(1 + gain) &lt; 2.</source>
-        <translation>Relaxation α der Kontaktkraft pro Tick, in (0, 1]. Automatisch (0) verwendet α = 1 / (1 + Verstärkung), was den Kontakt für jede Verstärkung in einem Tick löst. Das Update ist stabil, solange α·(1 + Verstärkung) &lt; 2.</translation>
-    </message>
-    <message>
-        <source>Vertex mass:</source>
-        <translation>Knotenmasse:</translation>
-    </message>
-    <message>
-        <source>Lumped mass per vertex, for the relaxation after the tool lets go.</source>
-        <translation>Konzentrierte Masse pro Knoten, für die Relaxation, nachdem das Werkzeug loslässt.</translation>
-    </message>
-    <message>
-        <source>Max depth:</source>
-        <translation>Max. Tiefe:</translation>
-    </message>
-    <message>
-        <source>Levels below the octree&apos;s root (1..20).</source>
-        <translation>Ebenen unter der Wurzel des Octrees (1..20).</translation>
-    </message>
-    <message>
-        <source>Leaf capacity:</source>
-        <translation>Blattkapazität:</translation>
-    </message>
-    <message>
-        <source>A node with at most this many vertices is not split (1..100000).</source>
-        <translation>Ein Knoten des Baums mit höchstens so vielen Netzknoten wird nicht geteilt (1..100000).</translation>
     </message>
     <message>
         <source>Open preset…</source>
@@ -3773,6 +3621,208 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
         <translation>Vorgabe speichern</translation>
     </message>
     <message>
+        <source>α·(1 + gain) = %1 &lt; 2: loop-gain margin %2&#xa0;%</source>
+        <translation>α·(1 + Verstärkung) = %1 &lt; 2: Reserve der Schleifenverstärkung %2&#xa0;%</translation>
+    </message>
+    <message>
+        <source>Far beyond the stability margin: Apply asks for confirmation</source>
+        <translation>Weit jenseits der Stabilitätsreserve: „Übernehmen“ fragt nach einer Bestätigung</translation>
+    </message>
+    <message>
+        <source>Close to the stability margin: %1&#xa0;% left (warning below %2&#xa0;%)</source>
+        <translation>Nahe an der Stabilitätsgrenze: %1&#xa0;% Reserve (Warnung unter %2&#xa0;%)</translation>
+    </message>
+    <message>
+        <source>The contact force iteration converges while α·(1 + gain) &lt; 2, with the loop gain |m1| × k_c (docs/method.md): the loop-gain margin is 1 − α·(1 + gain) / 2. What the model renders, k_s·|m1|·k_c / (1 + gain) (and, for ours with friction, the proxy&apos;s spring), must stay below the stiffness the device renders passively at the haptic rate (1 N/mm at 1 kHz); a lagging or alternating relaxation (α away from 1 / (1 + gain)) asks more of it (docs/stability.md).</source>
+        <translation>Die Iteration der Kontaktkraft konvergiert, solange α·(1 + Verstärkung) &lt; 2, mit der Schleifenverstärkung |m1| × k_c (docs/method.md): die Reserve der Schleifenverstärkung ist 1 − α·(1 + Verstärkung) / 2. Was das Modell darstellt, k_s·|m1|·k_c / (1 + Verstärkung) (und bei unserem Modell mit Reibung die Feder des Proxys), muss unter der Steifigkeit bleiben, die das Gerät bei der Haptikrate passiv darstellt (1 N/mm bei 1 kHz); eine nachlaufende oder alternierende Relaxation (α abseits von 1 / (1 + Verstärkung)) verlangt mehr davon (docs/stability.md).</translation>
+    </message>
+    <message>
+        <source>How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the explicit mass-spring integrators&apos; step bound h·ω_max &lt; 2 (RK4 2.78), ω_max from Gershgorin&apos;s bound and the sub-steps the model takes; and for every model the stiffness it renders (for mass-spring measured on the mesh) against the stiffness the device renders passively (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has no step bound.</source>
+        <translation>Wie weit der Satz von seiner hergeleiteten Stabilitätsgrenze bei der Haptikrate entfernt ist (docs/stability.md): die Schrittgrenze der expliziten Masse-Feder-Integratoren h·ω_max &lt; 2 (RK4 2,78), ω_max aus der Gerschgorin-Schranke und den Teilschritten des Modells; und für jedes Modell die dargestellte Steifigkeit (bei Masse-Feder am Netz gemessen) gegenüber der Steifigkeit, die das Gerät passiv darstellt (Colgate und Brown, 1 N/mm bei 1 kHz). Impliziter Euler hat keine Schrittgrenze.</translation>
+    </message>
+    <message>
+        <source>&amp;Revert</source>
+        <translation>&amp;Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Set the fields back to what the haptic loop runs (one undoable step).</source>
+        <translation>Setzt die Felder auf das zurück, was die Haptikschleife verwendet (ein rückgängig machbarer Schritt).</translation>
+    </message>
+    <message>
+        <source>Applied to the running tissue at %1</source>
+        <translation>Um %1 auf das laufende Gewebe angewendet</translation>
+    </message>
+    <message>
+        <source>Revert to the running tissue</source>
+        <translation>Auf das laufende Gewebe zurücksetzen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more</source>
+        <translation>
+            <numerusform>%n weiteres</numerusform>
+            <numerusform>%n weitere</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not applied: %1 differ from the running tissue. Apply (Ctrl+Return) sends them; Revert goes back to what runs.</source>
+        <translation>Nicht angewendet: %1 weichen vom laufenden Gewebe ab. Anwenden (Strg+Eingabe) sendet sie; Zurücksetzen stellt her, was läuft.</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::Parameters</name>
+    <message>
+        <source>ring count</source>
+        <translation>Ringanzahl</translation>
+    </message>
+    <message>
+        <source>slope limit</source>
+        <translation>Steigungsgrenze</translation>
+    </message>
+    <message>
+        <source>spring stiffness</source>
+        <translation>Federsteifigkeit</translation>
+    </message>
+    <message>
+        <source>damping ratio</source>
+        <translation>Dämpfungsgrad</translation>
+    </message>
+    <message>
+        <source>contact stiffness</source>
+        <translation>Kontaktsteifigkeit</translation>
+    </message>
+    <message>
+        <source>force relaxation</source>
+        <translation>Kraftrelaxation</translation>
+    </message>
+    <message>
+        <source>vertex mass</source>
+        <translation>Knotenmasse</translation>
+    </message>
+    <message>
+        <source>octree depth</source>
+        <translation>Octree-Tiefe</translation>
+    </message>
+    <message>
+        <source>leaf capacity</source>
+        <translation>Blattkapazität</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus</source>
+        <translation>Elastizitätsmodul</translation>
+    </message>
+    <message>
+        <source>Poisson&apos;s ratio</source>
+        <translation>Poissonzahl</translation>
+    </message>
+    <message>
+        <source>tool radius</source>
+        <translation>Werkzeugradius</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus E:</source>
+        <translation>Elastizitätsmodul E:</translation>
+    </message>
+    <message>
+        <source>Stiffness of the tissue, kPa (soft tissue: about 1 to 30 kPa).</source>
+        <translation>Steifigkeit des Gewebes, kPa (Weichgewebe: etwa 1 bis 30 kPa).</translation>
+    </message>
+    <message>
+        <source>Poisson&apos;s ratio ν:</source>
+        <translation>Poissonzahl ν:</translation>
+    </message>
+    <message>
+        <source>Tool radius a:</source>
+        <translation>Werkzeugradius a:</translation>
+    </message>
+    <message>
+        <source>Symplectic Euler</source>
+        <translation>Symplektischer Euler</translation>
+    </message>
+    <message>
+        <source>RK4</source>
+        <translation>RK4</translation>
+    </message>
+    <message>
+        <source>Backward Euler (implicit)</source>
+        <translation>Impliziter Euler</translation>
+    </message>
+    <message>
+        <source>Ring count:</source>
+        <translation>Ringanzahl:</translation>
+    </message>
+    <message>
+        <source>Rings of neighbours displaced with the touched vertex (ring r: the vertices r edges away). The paper uses 2; each ring adds a slope below.</source>
+        <translation>Ringe von Nachbarn, die mit dem berührten Knoten verschoben werden (Ring r: die Knoten r Kanten entfernt). Der Artikel verwendet 2; jeder Ring fügt unten eine Steigung hinzu.</translation>
+    </message>
+    <message>
+        <source>Slope magnitude |m| in mm/N: how far the vertex moves per newton of contact force; the model applies the paper&apos;s sign (m &lt; 0), which moves the vertex into the tissue.</source>
+        <translation>Steigungsbetrag |m| in mm/N: wie weit sich der Knoten pro Newton Kontaktkraft bewegt; das Modell wendet das Vorzeichen des Artikels an (m &lt; 0), das den Knoten ins Gewebe bewegt.</translation>
+    </message>
+    <message>
+        <source>Slope limit:</source>
+        <translation>Steigungsgrenze:</translation>
+    </message>
+    <message>
+        <source>Every slope magnitude must stay below this limit. The paper&apos;s range ends at 1 mm/N; calibrated soft tissue may need more (at most 100 mm/N), allowed while the loop gain stays stable. Slopes above 1 mm/N are marked as outside the paper&apos;s range.</source>
+        <translation>Jeder Steigungsbetrag muss unter dieser Grenze bleiben. Der Bereich des Artikels endet bei 1 mm/N; kalibriertes Weichgewebe kann mehr brauchen (höchstens 100 mm/N), erlaubt, solange die Schleifenverstärkung stabil bleibt. Steigungen über 1 mm/N werden als außerhalb des Bereichs des Artikels markiert.</translation>
+    </message>
+    <message>
+        <source>Spring stiffness k:</source>
+        <translation>Federsteifigkeit k:</translation>
+    </message>
+    <message>
+        <source>Stiffness of the springs that tie each vertex to its rest position. The touched vertex&apos;s spring reaction is the force rendered to the user.</source>
+        <translation>Steifigkeit der Federn, die jeden Knoten an seine Ruhelage binden. Die Federreaktion des berührten Knotens ist die Kraft, die der Benutzer spürt.</translation>
+    </message>
+    <message>
+        <source>Damping ratio:</source>
+        <translation>Dämpfungsgrad:</translation>
+    </message>
+    <message>
+        <source>Damping of the return springs as a fraction of critical: 1 returns without overshoot, below 1 the tissue rings before it settles (0..100).</source>
+        <translation>Dämpfung der Rückstellfedern als Anteil der kritischen: 1 kehrt ohne Überschwingen zurück, unter 1 schwingt das Gewebe, bevor es zur Ruhe kommt (0..100).</translation>
+    </message>
+    <message>
+        <source>Contact stiffness k_c:</source>
+        <translation>Kontaktsteifigkeit k_c:</translation>
+    </message>
+    <message>
+        <source>Stiffness of the tool-tissue contact (a penalty spring). The loop gain is |m1| × k_c.</source>
+        <translation>Steifigkeit des Kontakts zwischen Werkzeug und Gewebe (eine Straffeder). Die Schleifenverstärkung ist |m1| × k_c.</translation>
+    </message>
+    <message>
+        <source>Force relaxation α:</source>
+        <translation>Kraftrelaxation α:</translation>
+    </message>
+    <message>
+        <source>Per-tick relaxation α of the contact force, in (0, 1]. Automatic (0) uses α = 1 / (1 + gain), which solves the contact in one tick for any gain. The update is stable while α·(1 + gain) &lt; 2.</source>
+        <translation>Relaxation α der Kontaktkraft pro Tick, in (0, 1]. Automatisch (0) verwendet α = 1 / (1 + Verstärkung), was den Kontakt für jede Verstärkung in einem Tick löst. Das Update ist stabil, solange α·(1 + Verstärkung) &lt; 2.</translation>
+    </message>
+    <message>
+        <source>Vertex mass:</source>
+        <translation>Knotenmasse:</translation>
+    </message>
+    <message>
+        <source>Lumped mass per vertex, for the relaxation after the tool lets go.</source>
+        <translation>Konzentrierte Masse pro Knoten, für die Relaxation, nachdem das Werkzeug loslässt.</translation>
+    </message>
+    <message>
+        <source>Max depth:</source>
+        <translation>Max. Tiefe:</translation>
+    </message>
+    <message>
+        <source>Levels below the octree&apos;s root (1..20).</source>
+        <translation>Ebenen unter der Wurzel des Octrees (1..20).</translation>
+    </message>
+    <message>
+        <source>Leaf capacity:</source>
+        <translation>Blattkapazität:</translation>
+    </message>
+    <message>
+        <source>A node with at most this many vertices is not split (1..100000).</source>
+        <translation>Ein Knoten des Baums mit höchstens so vielen Netzknoten wird nicht geteilt (1..100000).</translation>
+    </message>
+    <message>
         <source>vertices</source>
         <translation>Knoten</translation>
     </message>
@@ -3947,53 +3997,6 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
     <message>
         <source>While the tool slides, the sideways force is μd times the normal force (0..5, at most μs).</source>
         <translation>Während das Werkzeug gleitet, ist die seitliche Kraft μd mal die Normalkraft (0..5, höchstens μs).</translation>
-    </message>
-    <message>
-        <source>α·(1 + gain) = %1 &lt; 2: loop-gain margin %2&#xa0;%</source>
-        <translation>α·(1 + Verstärkung) = %1 &lt; 2: Reserve der Schleifenverstärkung %2&#xa0;%</translation>
-    </message>
-    <message>
-        <source>Far beyond the stability margin: Apply asks for confirmation</source>
-        <translation>Weit jenseits der Stabilitätsreserve: „Übernehmen“ fragt nach einer Bestätigung</translation>
-    </message>
-    <message>
-        <source>Close to the stability margin: %1&#xa0;% left (warning below %2&#xa0;%)</source>
-        <translation>Nahe an der Stabilitätsgrenze: %1&#xa0;% Reserve (Warnung unter %2&#xa0;%)</translation>
-    </message>
-    <message>
-        <source>The contact force iteration converges while α·(1 + gain) &lt; 2, with the loop gain |m1| × k_c (docs/method.md): the loop-gain margin is 1 − α·(1 + gain) / 2. What the model renders, k_s·|m1|·k_c / (1 + gain) (and, for ours with friction, the proxy&apos;s spring), must stay below the stiffness the device renders passively at the haptic rate (1 N/mm at 1 kHz); a lagging or alternating relaxation (α away from 1 / (1 + gain)) asks more of it (docs/stability.md).</source>
-        <translation>Die Iteration der Kontaktkraft konvergiert, solange α·(1 + Verstärkung) &lt; 2, mit der Schleifenverstärkung |m1| × k_c (docs/method.md): die Reserve der Schleifenverstärkung ist 1 − α·(1 + Verstärkung) / 2. Was das Modell darstellt, k_s·|m1|·k_c / (1 + Verstärkung) (und bei unserem Modell mit Reibung die Feder des Proxys), muss unter der Steifigkeit bleiben, die das Gerät bei der Haptikrate passiv darstellt (1 N/mm bei 1 kHz); eine nachlaufende oder alternierende Relaxation (α abseits von 1 / (1 + Verstärkung)) verlangt mehr davon (docs/stability.md).</translation>
-    </message>
-    <message>
-        <source>How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the explicit mass-spring integrators&apos; step bound h·ω_max &lt; 2 (RK4 2.78), ω_max from Gershgorin&apos;s bound and the sub-steps the model takes; and for every model the stiffness it renders (for mass-spring measured on the mesh) against the stiffness the device renders passively (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has no step bound.</source>
-        <translation>Wie weit der Satz von seiner hergeleiteten Stabilitätsgrenze bei der Haptikrate entfernt ist (docs/stability.md): die Schrittgrenze der expliziten Masse-Feder-Integratoren h·ω_max &lt; 2 (RK4 2,78), ω_max aus der Gerschgorin-Schranke und den Teilschritten des Modells; und für jedes Modell die dargestellte Steifigkeit (bei Masse-Feder am Netz gemessen) gegenüber der Steifigkeit, die das Gerät passiv darstellt (Colgate und Brown, 1 N/mm bei 1 kHz). Impliziter Euler hat keine Schrittgrenze.</translation>
-    </message>
-    <message>
-        <source>&amp;Revert</source>
-        <translation>&amp;Zurücksetzen</translation>
-    </message>
-    <message>
-        <source>Set the fields back to what the haptic loop runs (one undoable step).</source>
-        <translation>Setzt die Felder auf das zurück, was die Haptikschleife verwendet (ein rückgängig machbarer Schritt).</translation>
-    </message>
-    <message>
-        <source>Applied to the running tissue at %1</source>
-        <translation>Um %1 auf das laufende Gewebe angewendet</translation>
-    </message>
-    <message>
-        <source>Revert to the running tissue</source>
-        <translation>Auf das laufende Gewebe zurücksetzen</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n more</source>
-        <translation>
-            <numerusform>%n weiteres</numerusform>
-            <numerusform>%n weitere</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Not applied: %1 differ from the running tissue. Apply (Ctrl+Return) sends them; Revert goes back to what runs.</source>
-        <translation>Nicht angewendet: %1 weichen vom laufenden Gewebe ab. Anwenden (Strg+Eingabe) sendet sie; Zurücksetzen stellt her, was läuft.</translation>
     </message>
     <message>
         <source>Stiffening knots:</source>

@@ -3316,56 +3316,8 @@ pemapar %5</translation>
         <translation>model ubah bentuk</translation>
     </message>
     <message>
-        <source>ring count</source>
-        <translation>bilangan gelang</translation>
-    </message>
-    <message>
-        <source>slope limit</source>
-        <translation>had cerun</translation>
-    </message>
-    <message>
-        <source>spring stiffness</source>
-        <translation>kekakuan spring</translation>
-    </message>
-    <message>
-        <source>damping ratio</source>
-        <translation>nisbah redaman</translation>
-    </message>
-    <message>
-        <source>contact stiffness</source>
-        <translation>kekakuan sentuhan</translation>
-    </message>
-    <message>
-        <source>force relaxation</source>
-        <translation>pengenduran daya</translation>
-    </message>
-    <message>
-        <source>vertex mass</source>
-        <translation>jisim bucu</translation>
-    </message>
-    <message>
-        <source>octree depth</source>
-        <translation>kedalaman octree</translation>
-    </message>
-    <message>
-        <source>leaf capacity</source>
-        <translation>kapasiti daun</translation>
-    </message>
-    <message>
         <source>haptic rate</source>
         <translation>kadar haptik</translation>
-    </message>
-    <message>
-        <source>Young&apos;s modulus</source>
-        <translation>modulus Young</translation>
-    </message>
-    <message>
-        <source>Poisson&apos;s ratio</source>
-        <translation>nisbah Poisson</translation>
-    </message>
-    <message>
-        <source>tool radius</source>
-        <translation>jejari alat</translation>
     </message>
     <message>
         <source>Model and loop</source>
@@ -3402,22 +3354,6 @@ pemapar %5</translation>
     <message>
         <source>Load a shipped tissue preset: E, ν, the tool radius and slopes calibrated for the default stomach mesh (one undoable step). Each entry&apos;s tooltip names its source.</source>
         <translation>Muatkan praset tisu yang disertakan: E, ν, jejari alat dan cerun yang ditentukur untuk jejaring perut lalai (satu langkah boleh dibuat asal). Petua alat setiap entri menamakan sumbernya.</translation>
-    </message>
-    <message>
-        <source>Young&apos;s modulus E:</source>
-        <translation>Modulus Young E:</translation>
-    </message>
-    <message>
-        <source>Stiffness of the tissue, kPa (soft tissue: about 1 to 30 kPa).</source>
-        <translation>Kekakuan tisu, kPa (tisu lembut: kira-kira 1 hingga 30 kPa).</translation>
-    </message>
-    <message>
-        <source>Poisson&apos;s ratio ν:</source>
-        <translation>Nisbah Poisson ν:</translation>
-    </message>
-    <message>
-        <source>Tool radius a:</source>
-        <translation>Jejari alat a:</translation>
     </message>
     <message>
         <source>Ca&amp;librate slopes</source>
@@ -3476,18 +3412,6 @@ pemapar %5</translation>
         <translation>Model yang mengubah bentuk tisu: kaedah gelang-cerun (kami dan tiga kaedah kertas kerja), kemudian model lain daripada literatur (docs/models.md).</translation>
     </message>
     <message>
-        <source>Symplectic Euler</source>
-        <translation>Euler simplektik</translation>
-    </message>
-    <message>
-        <source>RK4</source>
-        <translation>RK4</translation>
-    </message>
-    <message>
-        <source>Backward Euler (implicit)</source>
-        <translation>Euler ke belakang (tersirat)</translation>
-    </message>
-    <message>
         <source>Haptic rate:</source>
         <translation>Kadar haptik:</translation>
     </message>
@@ -3500,18 +3424,6 @@ pemapar %5</translation>
         <translation>Tik sesaat gelung haptik, %1..%2 Hz (haptik biasanya berjalan pada 1000 Hz).</translation>
     </message>
     <message>
-        <source>Ring count:</source>
-        <translation>Bilangan gelang:</translation>
-    </message>
-    <message>
-        <source>Rings of neighbours displaced with the touched vertex (ring r: the vertices r edges away). The paper uses 2; each ring adds a slope below.</source>
-        <translation>Gelang jiran yang dianjak bersama bucu yang disentuh (gelang r: bucu yang r tepi jauhnya). Kertas kerja menggunakan 2; setiap gelang menambah satu cerun di bawah.</translation>
-    </message>
-    <message>
-        <source>Slope magnitude |m| in mm/N: how far the vertex moves per newton of contact force; the model applies the paper&apos;s sign (m &lt; 0), which moves the vertex into the tissue.</source>
-        <translation>Magnitud cerun |m| dalam mm/N: sejauh mana bucu bergerak bagi setiap newton daya sentuhan; model menggunakan tanda kertas kerja (m &lt; 0), yang menggerakkan bucu ke dalam tisu.</translation>
-    </message>
-    <message>
         <source>Read with signs, the paper&apos;s &quot;m1 &gt; m2 &gt; m3&quot; would move the outer rings further than the touched vertex. Palpate orders the magnitudes instead, |m1| &gt; |m2| &gt; |m3| &gt; …, so the displacement decays away from the touched vertex.</source>
         <translation>Dibaca dengan tanda, &quot;m1 &gt; m2 &gt; m3&quot; kertas kerja akan menggerakkan gelang luar lebih jauh daripada bucu yang disentuh. Palpate sebaliknya menyusun magnitud, |m1| &gt; |m2| &gt; |m3| &gt; …, supaya anjakan berkurang menjauhi bucu yang disentuh.</translation>
     </message>
@@ -3520,72 +3432,8 @@ pemapar %5</translation>
         <translation>Julat kertas kerja ialah (0, 1) mm/N; nilai lebih besar memerlukan had cerun yang dinaikkan dan gandaan gelung yang stabil.</translation>
     </message>
     <message>
-        <source>Slope limit:</source>
-        <translation>Had cerun:</translation>
-    </message>
-    <message>
-        <source>Every slope magnitude must stay below this limit. The paper&apos;s range ends at 1 mm/N; calibrated soft tissue may need more (at most 100 mm/N), allowed while the loop gain stays stable. Slopes above 1 mm/N are marked as outside the paper&apos;s range.</source>
-        <translation>Setiap magnitud cerun mesti kekal di bawah had ini. Julat kertas kerja berakhir pada 1 mm/N; tisu lembut yang ditentukur mungkin memerlukan lebih (paling banyak 100 mm/N), dibenarkan selagi gandaan gelung kekal stabil. Cerun melebihi 1 mm/N ditanda sebagai di luar julat kertas kerja.</translation>
-    </message>
-    <message>
-        <source>Spring stiffness k:</source>
-        <translation>Kekakuan spring k:</translation>
-    </message>
-    <message>
-        <source>Stiffness of the springs that tie each vertex to its rest position. The touched vertex&apos;s spring reaction is the force rendered to the user.</source>
-        <translation>Kekakuan spring yang mengikat setiap bucu pada kedudukan rehatnya. Tindak balas spring bucu yang disentuh ialah daya yang dirasai pengguna.</translation>
-    </message>
-    <message>
-        <source>Damping ratio:</source>
-        <translation>Nisbah redaman:</translation>
-    </message>
-    <message>
-        <source>Damping of the return springs as a fraction of critical: 1 returns without overshoot, below 1 the tissue rings before it settles (0..100).</source>
-        <translation>Redaman spring pemulih sebagai pecahan redaman genting: 1 kembali tanpa lajakan, di bawah 1 tisu berayun sebelum tenang (0..100).</translation>
-    </message>
-    <message>
-        <source>Contact stiffness k_c:</source>
-        <translation>Kekakuan sentuhan k_c:</translation>
-    </message>
-    <message>
-        <source>Stiffness of the tool-tissue contact (a penalty spring). The loop gain is |m1| × k_c.</source>
-        <translation>Kekakuan sentuhan alat-tisu (spring penalti). Gandaan gelung ialah |m1| × k_c.</translation>
-    </message>
-    <message>
-        <source>Force relaxation α:</source>
-        <translation>Pengenduran daya α:</translation>
-    </message>
-    <message>
         <source>automatic</source>
         <translation>automatik</translation>
-    </message>
-    <message>
-        <source>Per-tick relaxation α of the contact force, in (0, 1]. Automatic (0) uses α = 1 / (1 + gain), which solves the contact in one tick for any gain. The update is stable while α·(1 + gain) &lt; 2.</source>
-        <translation>Pengenduran α daya sentuhan setiap tik, dalam (0, 1]. Automatik (0) menggunakan α = 1 / (1 + gandaan), yang menyelesaikan sentuhan dalam satu tik untuk sebarang gandaan. Kemas kini stabil selagi α·(1 + gandaan) &lt; 2.</translation>
-    </message>
-    <message>
-        <source>Vertex mass:</source>
-        <translation>Jisim bucu:</translation>
-    </message>
-    <message>
-        <source>Lumped mass per vertex, for the relaxation after the tool lets go.</source>
-        <translation>Jisim tergumpal setiap bucu, untuk pengenduran selepas alat dilepaskan.</translation>
-    </message>
-    <message>
-        <source>Max depth:</source>
-        <translation>Kedalaman maks.:</translation>
-    </message>
-    <message>
-        <source>Levels below the octree&apos;s root (1..20).</source>
-        <translation>Aras di bawah akar octree (1..20).</translation>
-    </message>
-    <message>
-        <source>Leaf capacity:</source>
-        <translation>Kapasiti daun:</translation>
-    </message>
-    <message>
-        <source>A node with at most this many vertices is not split (1..100000).</source>
-        <translation>Nod dengan paling banyak bilangan bucu ini tidak dipecahkan (1..100000).</translation>
     </message>
     <message>
         <source>Open preset…</source>
@@ -3770,6 +3618,207 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
         <translation>Simpan praset</translation>
     </message>
     <message>
+        <source>α·(1 + gain) = %1 &lt; 2: loop-gain margin %2&#xa0;%</source>
+        <translation>α·(1 + gandaan) = %1 &lt; 2: margin gandaan gelung %2&#xa0;%</translation>
+    </message>
+    <message>
+        <source>Far beyond the stability margin: Apply asks for confirmation</source>
+        <translation>Jauh melepasi margin kestabilan: Guna meminta pengesahan</translation>
+    </message>
+    <message>
+        <source>Close to the stability margin: %1&#xa0;% left (warning below %2&#xa0;%)</source>
+        <translation>Hampir dengan had kestabilan: tinggal %1&#xa0;% (amaran di bawah %2&#xa0;%)</translation>
+    </message>
+    <message>
+        <source>The contact force iteration converges while α·(1 + gain) &lt; 2, with the loop gain |m1| × k_c (docs/method.md): the loop-gain margin is 1 − α·(1 + gain) / 2. What the model renders, k_s·|m1|·k_c / (1 + gain) (and, for ours with friction, the proxy&apos;s spring), must stay below the stiffness the device renders passively at the haptic rate (1 N/mm at 1 kHz); a lagging or alternating relaxation (α away from 1 / (1 + gain)) asks more of it (docs/stability.md).</source>
+        <translation>Lelaran daya sentuhan menumpu selagi α·(1 + gandaan) &lt; 2, dengan gandaan gelung |m1| × k_c (docs/method.md): margin gandaan gelung ialah 1 − α·(1 + gandaan) / 2. Apa yang dipaparkan oleh model, k_s·|m1|·k_c / (1 + gandaan) (dan, bagi model kami dengan geseran, spring proksi), mesti kekal di bawah kekakuan yang dipaparkan secara pasif oleh peranti pada kadar haptik (1 N/mm pada 1 kHz); pengenduran yang lewat atau berselang-seli (α jauh daripada 1 / (1 + gandaan)) memerlukan lebih daripadanya (docs/stability.md).</translation>
+    </message>
+    <message>
+        <source>How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the explicit mass-spring integrators&apos; step bound h·ω_max &lt; 2 (RK4 2.78), ω_max from Gershgorin&apos;s bound and the sub-steps the model takes; and for every model the stiffness it renders (for mass-spring measured on the mesh) against the stiffness the device renders passively (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has no step bound.</source>
+        <translation>Sejauh mana set ini daripada had kestabilan terbitannya pada kadar haptik (docs/stability.md): had langkah pengamir jisim-spring eksplisit h·ω_max &lt; 2 (RK4 2.78), ω_max daripada had Gershgorin dan sub-langkah yang diambil oleh model; dan bagi setiap model kekakuan yang dipaparkannya (bagi jisim-spring diukur pada jejaring) berbanding kekakuan yang dipaparkan secara pasif oleh peranti (Colgate dan Brown, 1 N/mm pada 1 kHz). Euler ke belakang tiada had langkah.</translation>
+    </message>
+    <message>
+        <source>&amp;Revert</source>
+        <translation>&amp;Kembalikan</translation>
+    </message>
+    <message>
+        <source>Set the fields back to what the haptic loop runs (one undoable step).</source>
+        <translation>Kembalikan medan kepada apa yang dijalankan oleh gelung haptik (satu langkah boleh buat asal).</translation>
+    </message>
+    <message>
+        <source>Applied to the running tissue at %1</source>
+        <translation>Digunakan pada tisu yang berjalan pada %1</translation>
+    </message>
+    <message>
+        <source>Revert to the running tissue</source>
+        <translation>Kembali kepada tisu yang berjalan</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more</source>
+        <translation>
+            <numerusform>%n lagi</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not applied: %1 differ from the running tissue. Apply (Ctrl+Return) sends them; Revert goes back to what runs.</source>
+        <translation>Belum digunakan: %1 berbeza daripada tisu yang berjalan. Guna (Ctrl+Return) menghantarnya; Kembalikan kembali kepada apa yang berjalan.</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::Parameters</name>
+    <message>
+        <source>ring count</source>
+        <translation>bilangan gelang</translation>
+    </message>
+    <message>
+        <source>slope limit</source>
+        <translation>had cerun</translation>
+    </message>
+    <message>
+        <source>spring stiffness</source>
+        <translation>kekakuan spring</translation>
+    </message>
+    <message>
+        <source>damping ratio</source>
+        <translation>nisbah redaman</translation>
+    </message>
+    <message>
+        <source>contact stiffness</source>
+        <translation>kekakuan sentuhan</translation>
+    </message>
+    <message>
+        <source>force relaxation</source>
+        <translation>pengenduran daya</translation>
+    </message>
+    <message>
+        <source>vertex mass</source>
+        <translation>jisim bucu</translation>
+    </message>
+    <message>
+        <source>octree depth</source>
+        <translation>kedalaman octree</translation>
+    </message>
+    <message>
+        <source>leaf capacity</source>
+        <translation>kapasiti daun</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus</source>
+        <translation>modulus Young</translation>
+    </message>
+    <message>
+        <source>Poisson&apos;s ratio</source>
+        <translation>nisbah Poisson</translation>
+    </message>
+    <message>
+        <source>tool radius</source>
+        <translation>jejari alat</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus E:</source>
+        <translation>Modulus Young E:</translation>
+    </message>
+    <message>
+        <source>Stiffness of the tissue, kPa (soft tissue: about 1 to 30 kPa).</source>
+        <translation>Kekakuan tisu, kPa (tisu lembut: kira-kira 1 hingga 30 kPa).</translation>
+    </message>
+    <message>
+        <source>Poisson&apos;s ratio ν:</source>
+        <translation>Nisbah Poisson ν:</translation>
+    </message>
+    <message>
+        <source>Tool radius a:</source>
+        <translation>Jejari alat a:</translation>
+    </message>
+    <message>
+        <source>Symplectic Euler</source>
+        <translation>Euler simplektik</translation>
+    </message>
+    <message>
+        <source>RK4</source>
+        <translation>RK4</translation>
+    </message>
+    <message>
+        <source>Backward Euler (implicit)</source>
+        <translation>Euler ke belakang (tersirat)</translation>
+    </message>
+    <message>
+        <source>Ring count:</source>
+        <translation>Bilangan gelang:</translation>
+    </message>
+    <message>
+        <source>Rings of neighbours displaced with the touched vertex (ring r: the vertices r edges away). The paper uses 2; each ring adds a slope below.</source>
+        <translation>Gelang jiran yang dianjak bersama bucu yang disentuh (gelang r: bucu yang r tepi jauhnya). Kertas kerja menggunakan 2; setiap gelang menambah satu cerun di bawah.</translation>
+    </message>
+    <message>
+        <source>Slope magnitude |m| in mm/N: how far the vertex moves per newton of contact force; the model applies the paper&apos;s sign (m &lt; 0), which moves the vertex into the tissue.</source>
+        <translation>Magnitud cerun |m| dalam mm/N: sejauh mana bucu bergerak bagi setiap newton daya sentuhan; model menggunakan tanda kertas kerja (m &lt; 0), yang menggerakkan bucu ke dalam tisu.</translation>
+    </message>
+    <message>
+        <source>Slope limit:</source>
+        <translation>Had cerun:</translation>
+    </message>
+    <message>
+        <source>Every slope magnitude must stay below this limit. The paper&apos;s range ends at 1 mm/N; calibrated soft tissue may need more (at most 100 mm/N), allowed while the loop gain stays stable. Slopes above 1 mm/N are marked as outside the paper&apos;s range.</source>
+        <translation>Setiap magnitud cerun mesti kekal di bawah had ini. Julat kertas kerja berakhir pada 1 mm/N; tisu lembut yang ditentukur mungkin memerlukan lebih (paling banyak 100 mm/N), dibenarkan selagi gandaan gelung kekal stabil. Cerun melebihi 1 mm/N ditanda sebagai di luar julat kertas kerja.</translation>
+    </message>
+    <message>
+        <source>Spring stiffness k:</source>
+        <translation>Kekakuan spring k:</translation>
+    </message>
+    <message>
+        <source>Stiffness of the springs that tie each vertex to its rest position. The touched vertex&apos;s spring reaction is the force rendered to the user.</source>
+        <translation>Kekakuan spring yang mengikat setiap bucu pada kedudukan rehatnya. Tindak balas spring bucu yang disentuh ialah daya yang dirasai pengguna.</translation>
+    </message>
+    <message>
+        <source>Damping ratio:</source>
+        <translation>Nisbah redaman:</translation>
+    </message>
+    <message>
+        <source>Damping of the return springs as a fraction of critical: 1 returns without overshoot, below 1 the tissue rings before it settles (0..100).</source>
+        <translation>Redaman spring pemulih sebagai pecahan redaman genting: 1 kembali tanpa lajakan, di bawah 1 tisu berayun sebelum tenang (0..100).</translation>
+    </message>
+    <message>
+        <source>Contact stiffness k_c:</source>
+        <translation>Kekakuan sentuhan k_c:</translation>
+    </message>
+    <message>
+        <source>Stiffness of the tool-tissue contact (a penalty spring). The loop gain is |m1| × k_c.</source>
+        <translation>Kekakuan sentuhan alat-tisu (spring penalti). Gandaan gelung ialah |m1| × k_c.</translation>
+    </message>
+    <message>
+        <source>Force relaxation α:</source>
+        <translation>Pengenduran daya α:</translation>
+    </message>
+    <message>
+        <source>Per-tick relaxation α of the contact force, in (0, 1]. Automatic (0) uses α = 1 / (1 + gain), which solves the contact in one tick for any gain. The update is stable while α·(1 + gain) &lt; 2.</source>
+        <translation>Pengenduran α daya sentuhan setiap tik, dalam (0, 1]. Automatik (0) menggunakan α = 1 / (1 + gandaan), yang menyelesaikan sentuhan dalam satu tik untuk sebarang gandaan. Kemas kini stabil selagi α·(1 + gandaan) &lt; 2.</translation>
+    </message>
+    <message>
+        <source>Vertex mass:</source>
+        <translation>Jisim bucu:</translation>
+    </message>
+    <message>
+        <source>Lumped mass per vertex, for the relaxation after the tool lets go.</source>
+        <translation>Jisim tergumpal setiap bucu, untuk pengenduran selepas alat dilepaskan.</translation>
+    </message>
+    <message>
+        <source>Max depth:</source>
+        <translation>Kedalaman maks.:</translation>
+    </message>
+    <message>
+        <source>Levels below the octree&apos;s root (1..20).</source>
+        <translation>Aras di bawah akar octree (1..20).</translation>
+    </message>
+    <message>
+        <source>Leaf capacity:</source>
+        <translation>Kapasiti daun:</translation>
+    </message>
+    <message>
+        <source>A node with at most this many vertices is not split (1..100000).</source>
+        <translation>Nod dengan paling banyak bilangan bucu ini tidak dipecahkan (1..100000).</translation>
+    </message>
+    <message>
         <source>vertices</source>
         <translation>bucu</translation>
     </message>
@@ -3944,52 +3993,6 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
     <message>
         <source>While the tool slides, the sideways force is μd times the normal force (0..5, at most μs).</source>
         <translation>Semasa alat menggelongsor, daya sisi ialah μd kali daya normal (0..5, paling banyak μs).</translation>
-    </message>
-    <message>
-        <source>α·(1 + gain) = %1 &lt; 2: loop-gain margin %2&#xa0;%</source>
-        <translation>α·(1 + gandaan) = %1 &lt; 2: margin gandaan gelung %2&#xa0;%</translation>
-    </message>
-    <message>
-        <source>Far beyond the stability margin: Apply asks for confirmation</source>
-        <translation>Jauh melepasi margin kestabilan: Guna meminta pengesahan</translation>
-    </message>
-    <message>
-        <source>Close to the stability margin: %1&#xa0;% left (warning below %2&#xa0;%)</source>
-        <translation>Hampir dengan had kestabilan: tinggal %1&#xa0;% (amaran di bawah %2&#xa0;%)</translation>
-    </message>
-    <message>
-        <source>The contact force iteration converges while α·(1 + gain) &lt; 2, with the loop gain |m1| × k_c (docs/method.md): the loop-gain margin is 1 − α·(1 + gain) / 2. What the model renders, k_s·|m1|·k_c / (1 + gain) (and, for ours with friction, the proxy&apos;s spring), must stay below the stiffness the device renders passively at the haptic rate (1 N/mm at 1 kHz); a lagging or alternating relaxation (α away from 1 / (1 + gain)) asks more of it (docs/stability.md).</source>
-        <translation>Lelaran daya sentuhan menumpu selagi α·(1 + gandaan) &lt; 2, dengan gandaan gelung |m1| × k_c (docs/method.md): margin gandaan gelung ialah 1 − α·(1 + gandaan) / 2. Apa yang dipaparkan oleh model, k_s·|m1|·k_c / (1 + gandaan) (dan, bagi model kami dengan geseran, spring proksi), mesti kekal di bawah kekakuan yang dipaparkan secara pasif oleh peranti pada kadar haptik (1 N/mm pada 1 kHz); pengenduran yang lewat atau berselang-seli (α jauh daripada 1 / (1 + gandaan)) memerlukan lebih daripadanya (docs/stability.md).</translation>
-    </message>
-    <message>
-        <source>How far the set is from its derived stability bound at the haptic rate (docs/stability.md): the explicit mass-spring integrators&apos; step bound h·ω_max &lt; 2 (RK4 2.78), ω_max from Gershgorin&apos;s bound and the sub-steps the model takes; and for every model the stiffness it renders (for mass-spring measured on the mesh) against the stiffness the device renders passively (Colgate and Brown, 1 N/mm at 1 kHz). Backward Euler has no step bound.</source>
-        <translation>Sejauh mana set ini daripada had kestabilan terbitannya pada kadar haptik (docs/stability.md): had langkah pengamir jisim-spring eksplisit h·ω_max &lt; 2 (RK4 2.78), ω_max daripada had Gershgorin dan sub-langkah yang diambil oleh model; dan bagi setiap model kekakuan yang dipaparkannya (bagi jisim-spring diukur pada jejaring) berbanding kekakuan yang dipaparkan secara pasif oleh peranti (Colgate dan Brown, 1 N/mm pada 1 kHz). Euler ke belakang tiada had langkah.</translation>
-    </message>
-    <message>
-        <source>&amp;Revert</source>
-        <translation>&amp;Kembalikan</translation>
-    </message>
-    <message>
-        <source>Set the fields back to what the haptic loop runs (one undoable step).</source>
-        <translation>Kembalikan medan kepada apa yang dijalankan oleh gelung haptik (satu langkah boleh buat asal).</translation>
-    </message>
-    <message>
-        <source>Applied to the running tissue at %1</source>
-        <translation>Digunakan pada tisu yang berjalan pada %1</translation>
-    </message>
-    <message>
-        <source>Revert to the running tissue</source>
-        <translation>Kembali kepada tisu yang berjalan</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n more</source>
-        <translation>
-            <numerusform>%n lagi</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Not applied: %1 differ from the running tissue. Apply (Ctrl+Return) sends them; Revert goes back to what runs.</source>
-        <translation>Belum digunakan: %1 berbeza daripada tisu yang berjalan. Guna (Ctrl+Return) menghantarnya; Kembalikan kembali kepada apa yang berjalan.</translation>
     </message>
     <message>
         <source>Stiffening knots:</source>

@@ -2,7 +2,7 @@
 
 #include "widgets/SaveFileChoice.h"
 #include "engine/accuracy/SweepCsv.h"
-#include "app/report/SpeedAccuracyChart.h"
+#include "report/SpeedAccuracyChart.h"
 #include "widgets/FeelPanel.h"
 #include "widgets/StiffeningPanel.h"
 #include "engine/accuracy/OrganSweep.h"

@@ -1,6 +1,6 @@
 #include "widgets/ClassDialog.h"
 
-#include "app/report/ResultsDatabase.h"
+#include "results/ResultsDatabase.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

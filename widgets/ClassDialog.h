@@ -4,7 +4,7 @@
 // class, from
 // this workstation's database or the class's server, read off the GUI thread; CSV export.
 
-#include "app/report/ClassSummary.h"
+#include "results/ClassSummary.h"
 
 #include <QDialog>
 #include <QString>

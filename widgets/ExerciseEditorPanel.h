@@ -64,7 +64,7 @@ public:
     /// Asks the user; gets the exercise's name. Tests set one that answers without a dialog.
     using DiscardQuestion = std::function<DiscardAnswer(const QString& exerciseName)>;
 
-    /// `findResource` finds files under resources/ (the app's cli::findResource); the mesh and
+    /// `findResource` finds files under resources/ (the app's findResource); the mesh and
     /// preset lists come from the resources/ it finds.
     explicit ExerciseEditorPanel(ResourceFinder findResource, QWidget* parent = nullptr);
     ~ExerciseEditorPanel() override;

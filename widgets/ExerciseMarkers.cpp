@@ -1,6 +1,6 @@
 #include "widgets/ExerciseMarkers.h"
 
-#include "app/report/HeatColour.h"
+#include "report/HeatColour.h"
 
 #include "widgets/OrbitCamera.h"
 

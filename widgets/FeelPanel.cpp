@@ -1,6 +1,6 @@
 #include "widgets/FeelPanel.h"
 
-#include "app/report/FeelChart.h"
+#include "report/FeelChart.h"
 #include "engine/bench/FeelCsv.h"
 
 #include <QComboBox>

@@ -1,5 +1,5 @@
 #pragma once
-// The Charts dock's feel chart (app/report/FeelChart.h): every model's force step against its tick
+// The Charts dock's feel chart (report/FeelChart.h): every model's force step against its tick
 // cost, from a feel bench CSV (palpate-cli bench feel --csv; the committed docs/bench/feel.csv is
 // shown when the dock is first seen, without measuring again: the bench runs the real haptic loop
 // beside busy processes, which is the command line's job, not the window's).

@@ -1,6 +1,7 @@
 #include "widgets/HistoryPanel.h"
 
-#include "app/report/LearningCurve.h"
+#include "results/LearningCurve.h"
+#include "report/LearningCurveImage.h"
 #include "engine/exercise/ExerciseFile.h"
 #include "widgets/GuardedLoad.h"
 

@@ -3,7 +3,7 @@
 // session marked but not scored, and the results as a table below. A result with a recording can be exported as a PDF report or replayed: the
 // window re-scores the recording (the same score bit for bit) or opens it in the Recorder.
 
-#include "app/report/ResultsDatabase.h"
+#include "results/ResultsDatabase.h"
 
 #include <QWidget>
 

@@ -62,6 +62,9 @@ struct PanelField {
 
 namespace {
 
+/// A field table's text in the user's language (the engine's context, base/params/FieldTable.h).
+QString fieldText(const char* text) { return QCoreApplication::translate(kFieldTextContext, text); }
+
 /// Every row of `table` (each stored entry of a list its own field, when `lists`) as PanelFields
 /// reading and writing `member` of a TissuePreset.
 template <class S>
@@ -584,8 +587,8 @@ QString ParameterPanel::fieldName(int edit) const {
     if (f.index >= 0 && std::string(f.spec->key) != "slopeMagnitudeMmPerN")
         return QString::fromStdString(f.spec->itemName(f.index));
     if (f.index >= 0) return slopeLabel(f.index);
-    if (*f.spec->name) return tr(f.spec->name);
-    QString label = tr(f.spec->label);
+    if (*f.spec->name) return fieldText(f.spec->name);
+    QString label = fieldText(f.spec->label);
     if (label.endsWith(QLatin1Char(':'))) label.chop(1);
     return label;
 }
@@ -640,15 +643,15 @@ void ParameterPanel::retranslateUi() {
     // Every table field: its label, tooltip and unit from the engine's table, translated here.
     for (const PanelField& f : mFields) {
         QFormLayout* form = qobject_cast<QFormLayout*>(f.widget->parentWidget()->layout());
-        if (f.index < 0 && form) setRowLabel(form, f.widget, tr(f.spec->label));
-        f.widget->setToolTip(tr(f.spec->tip));
+        if (f.index < 0 && form) setRowLabel(form, f.widget, fieldText(f.spec->label));
+        f.widget->setToolTip(fieldText(f.spec->tip));
         // Units are international ("mm/N"); tr() translates the few that are words ("vertices").
-        const QString suffix = *f.spec->unit ? QLatin1Char(' ') + tr(f.spec->unit) : QString();
+        const QString suffix = *f.spec->unit ? QLatin1Char(' ') + fieldText(f.spec->unit) : QString();
         if (auto* spin = qobject_cast<QDoubleSpinBox*>(f.widget)) spin->setSuffix(suffix);
         if (auto* ints = qobject_cast<QSpinBox*>(f.widget)) ints->setSuffix(suffix);
         if (auto* combo = qobject_cast<QComboBox*>(f.widget))
             for (int i = 0; i < combo->count() && i < int(f.spec->choiceLabels.size()); ++i)
-                combo->setItemText(i, tr(f.spec->choiceLabels[std::size_t(i)]));
+                combo->setItemText(i, fieldText(f.spec->choiceLabels[std::size_t(i)]));
     }
     setRowLabel(mModelForm, mRateSpin, tr("Haptic rate:"));
     mRateSpin->setSuffix(tr(" Hz"));
@@ -658,7 +661,7 @@ void ParameterPanel::retranslateUi() {
 
     const auto slope = std::find_if(mFields.begin(), mFields.end(), [](const PanelField& f) { return f.index == 0; });
     const QString slopeTip =
-        tr(slope->spec->tip) + QStringLiteral("\n\n") +
+        fieldText(slope->spec->tip) + QStringLiteral("\n\n") +
         tr("Read with signs, the paper's \"m1 > m2 > m3\" would move the outer rings further than the touched "
            "vertex. Palpate orders the magnitudes instead, |m1| > |m2| > |m3| > …, so the displacement decays away "
            "from the touched vertex.") +

@@ -181,7 +181,7 @@ private:
     void syncTissueCombo();
     void updateCalibrationLabel();
 
-    // Fields. mFields: every field of the engine's tables the panel edits (engine/params/
+    // Fields. mFields: every field of the engine's tables the panel edits (base/params/
     // FieldTable.h), each with its widget; the pointers below are some of those widgets.
     std::vector<PanelField> mFields;
     QComboBox* mModelCombo = nullptr;

@@ -1,6 +1,6 @@
 #include "widgets/PreferencesDialog.h"
 
-#include "app/report/ResultsDatabase.h"
+#include "results/ResultsDatabase.h"
 
 #include "device/open/DeviceUri.h"
 

@@ -1,6 +1,6 @@
 #include "widgets/ScoreCard.h"
 
-#include "app/report/PalpationSummaryText.h"
+#include "report/PalpationSummaryText.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>

@@ -5,12 +5,12 @@
 #include "app/cli/Args.h"
 #include "app/cli/BusyProcesses.h"
 #include "app/cli/Commands.h"
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "engine/bench/FeelBench.h"
 #include "engine/bench/FeelCsv.h"
 
 #ifdef PALPATE_HAVE_CHARTS
-#include "app/report/FeelChartImage.h"
+#include "report/FeelChartImage.h"
 #endif
 
 #include <nlohmann/json.hpp>

@@ -4,7 +4,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/MeshOption.h"
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/cli/ToolContactOptions.h"
 #include "engine/core/Octree.h"
 #include "engine/core/SceneTarget.h"

@@ -4,7 +4,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/MeshOption.h"
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "device/open/DeviceUri.h"
 #include "device/SimulatedDevice.h"
 #include "engine/loop/HapticLoop.h"

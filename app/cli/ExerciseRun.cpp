@@ -1,6 +1,6 @@
 #include "app/cli/ExerciseRun.h"
 
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "engine/scoring/Staircase.h"
 
 #include <algorithm>

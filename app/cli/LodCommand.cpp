@@ -3,7 +3,7 @@
 // ring count on this machine and picks the cheapest that meets an accuracy target and a tick budget.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/cli/MeshOption.h"
 #include "app/cli/ToolContactOptions.h"
 #include "engine/scene/TissuePreset.h"

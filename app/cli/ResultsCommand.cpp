@@ -15,11 +15,11 @@ int resultsCommand(const std::vector<std::string>&) {
 }  // namespace palpate::cli
 #else
 #include "app/cli/ResultsLocation.h"
-#include "app/common/DefaultScene.h"
-#include "app/report/ClassSummary.h"
-#include "app/report/ResultSync.h"
-#include "app/report/ResultsRoles.h"
-#include "app/report/ResultsDatabase.h"
+#include "base/resources/ShippedResources.h"
+#include "results/ClassSummary.h"
+#include "results/ResultSync.h"
+#include "results/ResultsRoles.h"
+#include "results/ResultsDatabase.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -2,7 +2,7 @@
 // the GUI), optionally recorded to a file for info/verify/export/replay (RecordCommand.cpp).
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/cli/ExerciseRun.h"
 #include "app/cli/MeshOption.h"
 #include "device/open/DeviceUri.h"

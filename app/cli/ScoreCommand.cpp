@@ -5,18 +5,18 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/MeshOption.h"
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "engine/exercise/RecordedExercise.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
-#include "app/report/ServerLocation.h"
+#include "results/ServerLocation.h"
 #ifdef PALPATE_HAVE_CHARTS
 #include "app/cli/ResultsLocation.h"
 #include "app/cli/StoreSession.h"
-#include "app/report/ResultSync.h"
-#include "app/report/ResultsDatabase.h"
-#include "app/report/ScoreReportFromRecording.h"
-#include "app/report/ScoreReportPdf.h"
+#include "results/ResultSync.h"
+#include "results/ResultsDatabase.h"
+#include "report/ScoreReportFromRecording.h"
+#include "report/ScoreReportPdf.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -6,7 +6,7 @@
 #include "engine/stability/StabilityModels.h"
 
 #ifdef PALPATE_HAVE_CHARTS
-#include "app/report/StabilityMapImage.h"
+#include "report/StabilityMapImage.h"
 #endif
 
 #include <nlohmann/json.hpp>

@@ -3,7 +3,7 @@
 // `score --trainee` do (docs/scoring.md, "Proficiency" and "Staircase"): the trainee is added when
 // new, the result committed, and the trainee's staircase moved when the session is its trial.
 
-#include "app/report/ResultsDatabase.h"
+#include "results/ResultsDatabase.h"
 #include "engine/exercise/Exercise.h"
 #include "engine/exercise/ScoreReport.h"
 #include "engine/record/RecordingReader.h"

@@ -7,7 +7,7 @@
 #include "engine/accuracy/OrganSweep.h"
 
 #ifdef PALPATE_HAVE_CHARTS
-#include "app/report/SweepChartImage.h"
+#include "report/SweepChartImage.h"
 #endif
 
 #include <fstream>

@@ -4,7 +4,7 @@
 // Also the proficiency object `palpate-cli score --db --trainee` adds to its JSON.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "engine/exercise/ExerciseFile.h"
 #include "engine/exercise/RecordedExercise.h"
 #include "engine/record/RecordingReader.h"
@@ -12,8 +12,9 @@
 #include "engine/scoring/ReplayScorer.h"
 #include "engine/scoring/Staircase.h"
 #ifdef PALPATE_HAVE_CHARTS
-#include "app/report/LearningCurve.h"
-#include "app/report/ResultsDatabase.h"
+#include "report/LearningCurveImage.h"
+#include "results/LearningCurve.h"
+#include "results/ResultsDatabase.h"
 #include "app/cli/ResultsLocation.h"
 #include "app/cli/StoreSession.h"
 

@@ -4,15 +4,15 @@
 #include "engine/scoring/Staircase.h"
 #include "widgets/PreferencesDialog.h"
 
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "engine/exercise/ExerciseFile.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
 #include "widgets/GuardedLoad.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/ScoreCard.h"
-#include "app/report/ScoreReportFromRecording.h"
-#include "app/report/ScoreReportPdf.h"
+#include "report/ScoreReportFromRecording.h"
+#include "report/ScoreReportPdf.h"
 #include "widgets/TraineePanel.h"
 #include "widgets/Viewport.h"
 
@@ -109,7 +109,7 @@ QString ExerciseController::addTrainee(const QString& name) {
 
 void ExerciseController::listExampleExercises() {
     QList<QPair<QString, QString>> list;
-    const std::string anchor = cli::findResource("exercises/press_targets.json");
+    const std::string anchor = findResource("exercises/press_targets.json");
     if (!anchor.empty()) {
         const QDir dir = QFileInfo(QString::fromStdString(anchor)).absoluteDir();
         for (const QFileInfo& file : dir.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
@@ -135,7 +135,7 @@ void ExerciseController::followMesh(const QString& meshPath) {
     for (const auto& [title, path] : mPanel.exercises()) {
         const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
         if (!loaded.exercise) continue;
-        const std::string mesh = resolveExercisePath(*loaded.exercise, loaded.exercise->meshPath, cli::findResource);
+        const std::string mesh = resolveExercisePath(*loaded.exercise, loaded.exercise->meshPath, findResource);
         if (!mesh.empty() && QFileInfo(QString::fromStdString(mesh)).canonicalFilePath() == shown) {
             if (path != mPanel.exercisePath()) mPanel.addExercise(title, path);
             return;
@@ -196,7 +196,7 @@ QString ExerciseController::begin(const Exercise& requested, bool preview) {
     }
     std::optional<ExerciseAssets> assets;
     try {
-        assets = loadExerciseAssets(exercise, cli::findResource, errors);
+        assets = loadExerciseAssets(exercise, findResource, errors);
     } catch (const std::exception& e) {  // the loaders should not throw; no file may abort the window
         errors.push_back(exercise.sourcePath + ": " + e.what());
     }
@@ -263,7 +263,7 @@ void ExerciseController::startRecording() {
         return;
     }
     LiveScorerDef def;
-    def.options.findResource = cli::findResource;
+    def.options.findResource = findResource;
     mLive = std::make_unique<LiveScorer>(path.toStdString(), mAssets->exercise, def);
     mRecordingPath = path;
     emit recordingStateChanged(true, path);
@@ -484,7 +484,7 @@ QString ExerciseController::exportReportPdf(const QString& recordingPath, const 
             .arg(QDir::toNativeSeparators(path));
     // The same report as `palpate-cli score --pdf`: the recording re-scored (app/report).
     ReplayScorerDef options;
-    options.findResource = cli::findResource;
+    options.findResource = findResource;
     ScoreReportContent content;
     QString error;
     if (!scoreReportFromRecording(recordingPath, nullptr, trainee, options, content, &error) ||

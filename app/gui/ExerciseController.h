@@ -14,7 +14,7 @@
 #include "engine/scoring/ExerciseSession.h"
 #include "engine/scoring/Staircase.h"
 #include "engine/scoring/LiveScorer.h"
-#include "app/report/ResultsDatabase.h"
+#include "results/ResultsDatabase.h"
 
 #include <QDateTime>
 #include <QObject>

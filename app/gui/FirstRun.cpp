@@ -1,7 +1,7 @@
 #include "app/gui/FirstRun.h"
-#include "app/report/ResultUploader.h"
+#include "results/ResultUploader.h"
 
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/ExerciseController.h"
 #include "app/gui/MainWindow.h"
 #include "widgets/ParameterPanel.h"
@@ -66,10 +66,10 @@ void warn(MainWindow& window, const QString& title, const QString& error) {
 }
 
 void openSampleScene(MainWindow& window) {
-    const QString mesh = QString::fromStdString(cli::findResource(cli::kDefaultMesh));
+    const QString mesh = QString::fromStdString(findResource(kDefaultMesh));
     if (mesh.isEmpty()) {
         warn(window, FirstRun::tr("Cannot open the sample scene"),
-             FirstRun::tr("The sample mesh %1 was not found (set PALPATE_RESOURCES).").arg(QLatin1String(cli::kDefaultMesh)));
+             FirstRun::tr("The sample mesh %1 was not found (set PALPATE_RESOURCES).").arg(QLatin1String(kDefaultMesh)));
         return;
     }
     warn(window, FirstRun::tr("Cannot open the sample scene"), window.loadMesh(mesh));
@@ -88,7 +88,7 @@ void tryTouchMode(MainWindow& window) {
 }
 
 void runExampleExercise(MainWindow& window) {
-    const QString exercise = QString::fromStdString(cli::findResource("exercises/press_targets.json"));
+    const QString exercise = QString::fromStdString(findResource("exercises/press_targets.json"));
     if (exercise.isEmpty()) {
         warn(window, FirstRun::tr("Cannot run the example exercise"),
              FirstRun::tr("The example exercise exercises/press_targets.json was not found (set PALPATE_RESOURCES)."));
@@ -271,7 +271,7 @@ PreferencesDialog* openPreferences(MainWindow& window) {
 QString userGuidePath() {
     QStringList candidates;
     candidates << QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("../share/doc/palpate/user-guide.md"));
-    if (const std::string source = cli::findResource("../docs/user-guide.md"); !source.empty())
+    if (const std::string source = findResource("../docs/user-guide.md"); !source.empty())
         candidates << QString::fromStdString(source);
     for (const QString& path : candidates)
         if (QFileInfo(path).isFile()) return QFileInfo(path).canonicalFilePath();

@@ -5,7 +5,7 @@
 #include "engine/loop/HapticSnapshot.h"
 #include "engine/scene/TissuePreset.h"
 #include "engine/scoring/TargetReachability.h"
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/ExerciseController.h"
 #include "app/gui/FirstRun.h"
 #include "widgets/ChartsPanel.h"
@@ -15,7 +15,7 @@
 #include "widgets/HistoryPanel.h"
 #include "widgets/LodPanel.h"
 #include "widgets/ClassDialog.h"
-#include "app/report/ResultUploader.h"
+#include "results/ResultUploader.h"
 #include "engine/accuracy/StiffeningCalibration.h"
 #include "widgets/MeshImportDialog.h"
 #include "widgets/MeshSizeText.h"
@@ -162,7 +162,7 @@ void MainWindow::createDocks() {
     // Calibrate slopes works on the mesh being drawn; the panel asks for it each time, never keeps it.
     mParameterPanel->setMeshProvider([this]() -> const TissueMesh* { return mSession->drawnMesh().get(); });
     // The shipped tissues (resources/presets/tissues/*.json), found through one of them.
-    if (const std::string anchor = cli::findResource("presets/tissues/phantom_gel.json"); !anchor.empty())
+    if (const std::string anchor = findResource("presets/tissues/phantom_gel.json"); !anchor.empty())
         mParameterPanel->setTissuePresetDirectory(QFileInfo(QString::fromStdString(anchor)).absolutePath());
     mParameterDock = new QDockWidget(tr("Parameters"), this);
     mParameterDock->setObjectName(QStringLiteral("parametersDock"));
@@ -209,8 +209,8 @@ void MainWindow::createDocks() {
     mParameterDock->raise();
     // The committed sweep (docs/ beside resources/), shown without measuring again when the dock is
     // first shown; without it the chart says how to make one.
-    mChartsPanel->setDefaultCsv(QString::fromStdString(cli::findResource("../docs/bench/sweep.csv")));
-    mChartsPanel->feelPanel()->setDefaultCsv(QString::fromStdString(cli::findResource("../docs/bench/feel.csv")));
+    mChartsPanel->setDefaultCsv(QString::fromStdString(findResource("../docs/bench/sweep.csv")));
+    mChartsPanel->feelPanel()->setDefaultCsv(QString::fromStdString(findResource("../docs/bench/feel.csv")));
     updateChartsConfiguration();
     createRecorderDock();
     createExerciseDocks();
@@ -919,7 +919,7 @@ QString MainWindow::statusText() const {
 QString MainWindow::meshDialogFolder() const {
     const QString last = QSettings().value(kMeshFolderKey).toString();
     if (!last.isEmpty() && QFileInfo(last).isDir()) return last;
-    const std::string bundled = cli::findResource(cli::kDefaultMesh);
+    const std::string bundled = findResource(kDefaultMesh);
     return bundled.empty() ? QString() : QFileInfo(QString::fromStdString(bundled)).absolutePath();
 }
 
@@ -1187,7 +1187,7 @@ void MainWindow::createExerciseDocks() {
 }
 
 void MainWindow::createEditorDock() {
-    mEditor = new ExerciseEditorPanel(cli::findResource, this);
+    mEditor = new ExerciseEditorPanel(findResource, this);
     mEditorDock = new QDockWidget(tr("Exercise Editor"), this);
     mEditorDock->setObjectName(QStringLiteral("exerciseEditorDock"));
     mEditorDock->setWidget(mEditor);
@@ -1380,7 +1380,7 @@ void MainWindow::createExerciseMenu() {
     menu->addAction(tr("&Class View…"), this, [this] {
         // Every trainee of the class: this workstation's results, or the class's server's.
         auto* dialog = new ClassDialog(mExercises->database().path(), Preferences::load().resultsServer,
-                                       QFileInfo(QString::fromStdString(cli::findResource("exercises/press_targets.json")))
+                                       QFileInfo(QString::fromStdString(findResource("exercises/press_targets.json")))
                                            .absolutePath(),
                                        this);
         dialog->setAttribute(Qt::WA_DeleteOnClose);
@@ -1454,7 +1454,7 @@ void MainWindow::newTraineeDialog() {
 }
 
 void MainWindow::openExerciseDialog() {
-    const QString start = QFileInfo(QString::fromStdString(cli::findResource("exercises/press_targets.json"))).absolutePath();
+    const QString start = QFileInfo(QString::fromStdString(findResource("exercises/press_targets.json"))).absolutePath();
     const QString path = QFileDialog::getOpenFileName(this, tr("Open Exercise"), start, tr("Exercises (*.json)"));
     if (path.isEmpty()) return;
     if (const QString error = mExercises->addExerciseFile(path); !error.isEmpty())

@@ -5,7 +5,7 @@
 // snapshots (docs/architecture.md) and sends it commands. Docks (parameters, device, recorder...) come later.
 
 #include "app/gui/HapticSession.h"
-#include "app/report/ResultsDatabase.h"
+#include "results/ResultsDatabase.h"
 #include "widgets/ViewportFactory.h"
 
 #include <QElapsedTimer>

@@ -1,6 +1,6 @@
 // palpate: the GUI. Exit codes: 0 success, 1 failure (bad mesh or device, screenshot not written),
 // 2 bad usage.
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/FirstRun.h"
 #include "app/gui/GuiApplication.h"
 #include "app/gui/MainWindow.h"
@@ -268,10 +268,10 @@ int runGui(int argc, char** argv) {
 
     QString meshPath = parser.value(meshOption);
     if (meshPath.isEmpty()) {
-        meshPath = QString::fromStdString(palpate::cli::findResource(palpate::cli::kDefaultMesh));
+        meshPath = QString::fromStdString(palpate::findResource(palpate::kDefaultMesh));
         if (meshPath.isEmpty())
             return fail(QStringLiteral("the default mesh %1 was not found (set PALPATE_RESOURCES)")
-                            .arg(QLatin1String(palpate::cli::kDefaultMesh)));
+                            .arg(QLatin1String(palpate::kDefaultMesh)));
     }
 
     if (headless) {

@@ -8,7 +8,7 @@
 
 #include "device/HapticDevice.h"
 #include "device/IoThread.h"
-#include "engine/concurrency/SeqLock.h"
+#include "base/concurrency/SeqLock.h"
 #include "device/hid/HidPidCodec.h"
 #include "device/hid/HidTransport.h"
 #include "device/hid/SpaceMouseDevice.h"

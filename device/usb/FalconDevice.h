@@ -9,7 +9,7 @@
 
 #include "device/HapticDevice.h"
 #include "device/IoThread.h"
-#include "engine/concurrency/SeqLock.h"
+#include "base/concurrency/SeqLock.h"
 #include "device/usb/FalconKinematics.h"
 #include "device/usb/FalconProtocol.h"
 #include "device/usb/HotplugTracker.h"

@@ -10,7 +10,7 @@
 // settles; after it, it lifts off the last one.
 
 #include "engine/core/TissueMesh.h"
-#include "engine/params/Problem.h"
+#include "base/params/Problem.h"
 
 #include <glm/vec3.hpp>
 

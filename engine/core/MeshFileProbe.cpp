@@ -1,6 +1,6 @@
 #include "engine/core/MeshFileProbe.h"
 
-#include "engine/io/InputFile.h"
+#include "base/io/InputFile.h"
 
 #include <algorithm>
 #include <cctype>
@@ -26,7 +26,7 @@ std::string lowerExtension(const std::string& path) {
 }
 
 /// "N vertices, more than the M a mesh may have" when a declared count is beyond the limits of
-/// engine/io/FileLimits.h (checked before anything is sized by it); "" otherwise.
+/// base/io/FileLimits.h (checked before anything is sized by it); "" otherwise.
 std::string countProblem(long long vertices, long long faces) {
     if (vertices > 0 && std::uint64_t(vertices) > kMaxMeshVertices)
         return "declares " + std::to_string(vertices) + " vertices, more than the " +

@@ -9,9 +9,9 @@
 namespace palpate {
 
 /// Returns "" when the file looks structurally whole, else the problem (without the path). The file
-/// is read through the bounded reader (engine/io/InputFile.h): a FIFO, a device, a directory or a
+/// is read through the bounded reader (base/io/InputFile.h): a FIFO, a device, a directory or a
 /// file beyond kMeshFile's limit is refused before it is read; declared vertex and face counts
-/// beyond kMaxMeshVertices / kMaxMeshFaces (engine/io/FileLimits.h) are refused too.
+/// beyond kMaxMeshVertices / kMaxMeshFaces (base/io/FileLimits.h) are refused too.
 std::string probeMeshFile(const std::string& path);
 
 /// The same for a file's bytes; `extension` is lower case without the dot ("off").

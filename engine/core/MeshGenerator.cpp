@@ -79,7 +79,7 @@ TissueMesh::LoadResult generateMesh(GeneratedShape shape, std::size_t vertexCoun
         TissueMesh::LoadResult r;
         r.report.source = source;
         r.report.errors.push_back(source + ": more than the " + std::to_string(kMaxMeshVertices) +
-                                  " vertices a mesh may have (engine/io/FileLimits.h)");
+                                  " vertices a mesh may have (base/io/FileLimits.h)");
         return r;
     }
     const TubeShape tube = shape == GeneratedShape::Sphere ? sphereShape() : stomachShape();

@@ -4,7 +4,7 @@
 // count >= 8 is reachable and the surface is closed, manifold and genus 0 (F = 2V - 4).
 
 #include "engine/core/TissueMesh.h"
-#include "engine/io/FileLimits.h"
+#include "base/io/FileLimits.h"
 
 #include <optional>
 #include <string>

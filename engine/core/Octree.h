@@ -4,7 +4,7 @@
 // linear (the paper's "previous"), the paper's searchNode kept as written, and our exact one.
 
 #include "engine/core/TissueMesh.h"
-#include "engine/params/FieldTable.h"
+#include "base/params/FieldTable.h"
 
 #include <glm/vec3.hpp>
 
@@ -19,7 +19,7 @@ struct OctreeDef {
     int leafCapacity = 16;  ///< a node with at most this many vertices is not split, >= 1
 };
 
-/// The fields of OctreeDef in file order (engine/params/FieldTable.h).
+/// The fields of OctreeDef in file order (base/params/FieldTable.h).
 FieldTable<OctreeDef> octreeFields();
 /// Every problem of the definition, each naming the field; empty when usable.
 Problems validateOctreeDef(const OctreeDef& def);

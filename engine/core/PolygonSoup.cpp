@@ -3,8 +3,8 @@
 #include "engine/core/CountedText.h"
 
 #include "engine/core/MeshFileProbe.h"
-#include "engine/io/FileLimits.h"
-#include "engine/io/InputFile.h"
+#include "base/io/FileLimits.h"
+#include "base/io/InputFile.h"
 
 // Only CGAL's soup readers: they read points and polygons as written, without building a
 // half-edge structure that would split or drop faulty faces (docs/meshes.md, "Reading").

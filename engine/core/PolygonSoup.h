@@ -22,7 +22,7 @@ struct PolygonSoup {
 };
 
 /// Reads OBJ, OFF (plain ASCII), PLY (ASCII and binary), STL (ASCII and binary) or OM through the
-/// bounded reader (engine/io/InputFile.h, kMeshFile). The bytes are sanitised first (trailing NULs,
+/// bounded reader (base/io/InputFile.h, kMeshFile). The bytes are sanitised first (trailing NULs,
 /// line ends, tabs, a byte-order mark; OBJ corner syntax and records), then checked by
 /// probeMeshBytes (engine/core/MeshFileProbe.h). Returns "" on success, else the problem without
 /// the path ("line 12: a face refers to vertex 40, but the file has 38"); the soup is then empty.

@@ -2,8 +2,8 @@
 
 #include "engine/core/PolygonSoup.h"
 #include "engine/core/SpaceFillingCurve.h"
-#include "engine/io/AtomicFile.h"
-#include "engine/io/InputFile.h"
+#include "base/io/AtomicFile.h"
+#include "base/io/InputFile.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -297,7 +297,7 @@ std::string TissueMesh::save(const std::string& path) const {
     for (std::size_t v = 0; v < mRestMm.size(); ++v)
         handles[v] = om.add_vertex(OmMesh::Point(mRestMm[v].x, mRestMm[v].y, mRestMm[v].z));
     for (const auto& t : mTriangles) om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
-    // Written in memory first, then atomically (engine/io/AtomicFile.h): a full disk or a write
+    // Written in memory first, then atomically (base/io/AtomicFile.h): a full disk or a write
     // error leaves the target as it was and is reported with its reason, never a truncated file.
     std::ostringstream bytes(std::ios::out | std::ios::binary);
     std::string extension = std::filesystem::path(path).extension().string();

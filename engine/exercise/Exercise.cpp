@@ -1,6 +1,6 @@
 #include "engine/exercise/Exercise.h"
 
-#include "engine/io/FileLimits.h"
+#include "base/io/FileLimits.h"
 
 #include <algorithm>
 #include <cmath>

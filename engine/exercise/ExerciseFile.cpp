@@ -1,8 +1,8 @@
 #include "engine/exercise/ExerciseFile.h"
 
-#include "engine/io/AtomicFile.h"
-#include "engine/io/InputFile.h"
-#include "engine/io/JsonReader.h"
+#include "base/io/AtomicFile.h"
+#include "base/io/InputFile.h"
+#include "base/io/JsonReader.h"
 #include "engine/record/RecordingFormat.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #include "engine/lod/LevelCache.h"
 
-#include "engine/io/AtomicFile.h"
-#include "engine/io/InputFile.h"
+#include "base/io/AtomicFile.h"
+#include "base/io/InputFile.h"
 #include "engine/core/MeshHash.h"
 
 #include <nlohmann/json.hpp>

@@ -24,7 +24,7 @@ std::optional<MeshLevels> readLevelCache(const std::string& cacheDir, const Tiss
                                          const LevelDef& options, std::string& why,
                                          const LodProgressFn& progress = {}, const std::atomic<bool>* cancel = nullptr);
 
-/// Writes the coarse levels and then the index, each atomically (engine/io/AtomicFile.h), so a crash
+/// Writes the coarse levels and then the index, each atomically (base/io/AtomicFile.h), so a crash
 /// leaves either no index or a complete cache. Returns "" or the problem, naming the path.
 std::string writeLevelCache(const std::string& cacheDir, const MeshLevels& levels, const LevelDef& options);
 

@@ -1,7 +1,7 @@
 #include "engine/loop/HapticLoop.h"
 
 #include "engine/core/HapticRate.h"
-#include "engine/params/FieldTable.h"
+#include "base/params/FieldTable.h"
 
 #include <glm/geometric.hpp>
 

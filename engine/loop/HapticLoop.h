@@ -10,8 +10,8 @@
 #include "engine/scene/HapticScene.h"
 #include "engine/loop/HapticSnapshot.h"
 #include "engine/loop/LatencyHistogram.h"
-#include "engine/concurrency/SpscQueue.h"
-#include "engine/concurrency/TripleBuffer.h"
+#include "base/concurrency/SpscQueue.h"
+#include "base/concurrency/TripleBuffer.h"
 #include "engine/loop/RecorderSink.h"
 #include "engine/stability/DivergenceGuard.h"
 

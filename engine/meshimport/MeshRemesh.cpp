@@ -1,6 +1,6 @@
 #include "engine/meshimport/MeshRemesh.h"
 
-#include "engine/io/FileLimits.h"
+#include "base/io/FileLimits.h"
 #include "engine/meshimport/CgalSurface.h"
 
 #include <CGAL/Polygon_mesh_processing/border.h>

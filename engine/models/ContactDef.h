@@ -4,7 +4,7 @@
 // calibrated for, the friction coefficients); presetModelDef copies them here. A definition built
 // without a preset gets a point tool without friction.
 
-#include "engine/params/Problem.h"
+#include "base/params/Problem.h"
 
 #include <cmath>
 #include <string>

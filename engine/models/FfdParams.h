@@ -3,7 +3,7 @@
 // a trivariate Bernstein lattice of control points; the tool moves the control points nearest the
 // contact (docs/models.md).
 
-#include "engine/params/FieldTable.h"
+#include "base/params/FieldTable.h"
 
 #include <string>
 #include <vector>
@@ -28,7 +28,7 @@ struct FfdParams {
     double stiffnessNPerMm = 0.125;
 };
 
-/// The fields of FfdParams in file order (engine/params/FieldTable.h).
+/// The fields of FfdParams in file order (base/params/FieldTable.h).
 FieldTable<FfdParams> ffdFields();
 
 /// Every problem found, each naming the field; empty when valid.

@@ -8,9 +8,9 @@ namespace {
 
 // Indexed by MassSpringIntegrator.
 constexpr const char* kIntegratorNames[] = {"symplectic", "rk4", "implicit"};
-constexpr const char* kIntegratorLabels[] = {PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Symplectic Euler"),
-                                             PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "RK4"),
-                                             PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+constexpr const char* kIntegratorLabels[] = {PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Symplectic Euler"),
+                                             PALPATE_TRANSLATE_NOOP("palpate::Parameters", "RK4"),
+                                             PALPATE_TRANSLATE_NOOP("palpate::Parameters",
                                                                     "Backward Euler (implicit)")};
 
 constexpr FieldDef<MassSpringParams> kFields[] = {
@@ -21,8 +21,8 @@ constexpr FieldDef<MassSpringParams> kFields[] = {
          .lo = 0,
          .hi = kNoLimit,
          .lower = Bound::Open,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Vertex mass m:"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Lumped mass per vertex, kg."),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Vertex mass m:"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Lumped mass per vertex, kg."),
          .decimals = 7,
          .step = 0.0005}),
     field<&MassSpringParams::anchorStiffnessNPerMm>(
@@ -32,8 +32,8 @@ constexpr FieldDef<MassSpringParams> kFields[] = {
          .lo = 0,
          .hi = kNoLimit,
          .lower = Bound::Open,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Anchor stiffness k_a:"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Anchor stiffness k_a:"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::Parameters",
                                        "Spring from each vertex to its rest position, N/mm: what holds the shape."),
          .decimals = 6,
          .step = 0.01}),
@@ -43,8 +43,8 @@ constexpr FieldDef<MassSpringParams> kFields[] = {
          .unit = "N/mm",
          .lo = 0,
          .hi = kNoLimit,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Edge stiffness k_e:"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Edge stiffness k_e:"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::Parameters",
                                        "Spring along each mesh edge, N/mm: spreads the dent to the neighbours."),
          .decimals = 6,
          .step = 0.05}),
@@ -55,8 +55,8 @@ constexpr FieldDef<MassSpringParams> kFields[] = {
          .lo = 0,
          .hi = kNoLimit,
          .lower = Bound::Open,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Contact stiffness k_c:"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Contact stiffness k_c:"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::Parameters",
                                        "Penalty stiffness between the tool tip and the touched vertex, N/mm."),
          .decimals = 6,
          .step = 0.1}),
@@ -65,9 +65,9 @@ constexpr FieldDef<MassSpringParams> kFields[] = {
          .jsonKey = "damping_ratio",
          .lo = 0,
          .hi = 100,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Damping ratio ζ:"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Damping ratio ζ:"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Velocity damping as a fraction of the anchor spring's critical damping (0..100)."),
          .decimals = 3,
          .step = 0.1}),
@@ -76,9 +76,9 @@ constexpr FieldDef<MassSpringParams> kFields[] = {
          .jsonKey = "substeps",
          .lo = 0,
          .hi = 100000,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Sub-steps:"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Sub-steps:"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Explicit integrators: sub-steps per tick; 0 = automatic (inside the stability bound); at most the "
              "max sub-steps.")}),
     field<&MassSpringParams::maxSubsteps>(
@@ -86,16 +86,16 @@ constexpr FieldDef<MassSpringParams> kFields[] = {
          .jsonKey = "max_substeps",
          .lo = 1,
          .hi = 100000,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Max sub-steps:"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Max sub-steps:"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::Parameters",
                                        "Cap on automatic sub-steps (bounded work per tick).")}),
     field<&MassSpringParams::cgMaxIterations>(
         {.key = "cgMaxIterations",
          .jsonKey = "cg_max_iterations",
          .lo = 1,
          .hi = 100000,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "CG iterations (max):"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "CG iterations (max):"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::Parameters",
                                        "Backward Euler: conjugate-gradient iteration cap.")}),
     field<&MassSpringParams::cgTolerance>(
         {.key = "cgTolerance",
@@ -104,9 +104,9 @@ constexpr FieldDef<MassSpringParams> kFields[] = {
          .hi = 1,
          .lower = Bound::Open,
          .upper = Bound::Open,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "CG tolerance:"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "CG tolerance:"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Backward Euler: relative residual at which conjugate gradients stop, in (0, 1)."),
          .decimals = 12,
          .step = 1e-6}),
@@ -115,16 +115,16 @@ constexpr FieldDef<MassSpringParams> kFields[] = {
          .jsonKey = "local_ring_count",
          .lo = 1,
          .hi = kMaxRings,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Simulated rings:"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Simulated rings:"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Rings of the touched vertex that are simulated; everything else is pinned at rest."),
          .onlyFor = "mass-spring-local"}),
     field<&MassSpringParams::localIntegrator>(
         {.key = "localIntegrator",
          .jsonKey = "local_integrator",
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Integrator:"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Integrator:"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::Parameters",
                                        "The local variant's integrator: symplectic Euler, RK4 or backward Euler."),
          .choices = kIntegratorNames,
          .choiceLabels = kIntegratorLabels,
@@ -137,9 +137,9 @@ constexpr FieldDef<MassSpringParams> kFields[] = {
          .lo = 0,
          .hi = kNoLimit,
          .lower = Bound::Open,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Rest tolerance:"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Rest tolerance:"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "A vertex outside the rings this close to rest and moving less than this per tick stops being "
              "simulated, mm."),
          .decimals = 9,

@@ -4,7 +4,7 @@
 // touched vertex. Stiffnesses are per spring (N/mm), as in the classic models, so the same numbers
 // give a dimple the same number of edges wide at every resolution (see docs/models.md).
 
-#include "engine/params/FieldTable.h"
+#include "base/params/FieldTable.h"
 
 #include <optional>
 #include <string>
@@ -55,7 +55,7 @@ struct MassSpringParams {
     double restEpsilonMm = 1e-4;
 };
 
-/// The fields of MassSpringParams in file order (engine/params/FieldTable.h).
+/// The fields of MassSpringParams in file order (base/params/FieldTable.h).
 FieldTable<MassSpringParams> massSpringFields();
 
 /// Every problem found, each naming the field; empty when valid.

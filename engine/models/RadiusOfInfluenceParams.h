@@ -3,7 +3,7 @@
 // vertex within a radius of the contact moves by a polynomial profile of its distance,
 // phi(rho) = sum_k c_k rho^k with rho = distance / radius, whatever the mesh's edges.
 
-#include "engine/params/FieldTable.h"
+#include "base/params/FieldTable.h"
 
 #include <array>
 #include <string>
@@ -33,7 +33,7 @@ double evaluateProfile(const RadiusOfInfluenceParams& params, double rho);
 /// Coefficients of (1 - rho)^degree, the default family: zero with zero slope at the radius for degree >= 2.
 std::array<double, kMaxProfileDegree + 1> powerProfileCoefficients(int degree);
 
-/// The fields of RadiusOfInfluenceParams in file order (engine/params/FieldTable.h). Setting the
+/// The fields of RadiusOfInfluenceParams in file order (base/params/FieldTable.h). Setting the
 /// degree to a new value resets the coefficients to (1 - rho)^degree; a file's coefficients,
 /// read after it, replace them.
 FieldTable<RadiusOfInfluenceParams> radiusOfInfluenceFields();

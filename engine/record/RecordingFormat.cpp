@@ -63,7 +63,7 @@ const char* chunkStatusText(ChunkStatus status) {
 
 // --- parameters, scene, device ---
 
-// The parameters in their table's order (engine/params/FieldTable.h), every stored list entry
+// The parameters in their table's order (base/params/FieldTable.h), every stored list entry
 // included: whole numbers as i32, the rest as f64 (docs/recording.md has the layout).
 bool isStiffeningField(const char* key) { return std::string(key).rfind("stiffening", 0) == 0; }
 

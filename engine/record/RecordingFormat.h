@@ -16,7 +16,7 @@
 #include "engine/models/slopering/SlopeRingMethod.h"
 #include "engine/models/ContactDef.h"
 #include "engine/models/slopering/SlopeRingParams.h"
-#include "engine/io/FileLimits.h"
+#include "base/io/FileLimits.h"
 #include "engine/record/ByteIo.h"
 
 #include <cstdint>
@@ -44,7 +44,7 @@ inline constexpr std::size_t kChunkOverheadBytes = kChunkHeaderBytes + 4;
 // The format's limits, stated once: the reader refuses anything larger (so that garbage never
 // makes it allocate or loop without bound) and the writer refuses to write it (validateRecordingHeader,
 // the event texts), so that every file the recorder writes reads back. They are sized from the
-// input files a session embeds (engine/io/FileLimits.h), so that every preset that loads and the
+// input files a session embeds (base/io/FileLimits.h), so that every preset that loads and the
 // documented exercise limits (docs/scoring.md: 1000 targets, 10 000 path points) fit.
 inline constexpr std::size_t kMaxPathBytes = 4096;
 inline constexpr std::size_t kMaxNameBytes = 256;

@@ -1,6 +1,6 @@
 #include "engine/record/RecordingReader.h"
 
-#include "engine/io/InputFile.h"
+#include "base/io/InputFile.h"
 #include "engine/record/TickCodec.h"
 
 #include <unistd.h>
@@ -46,7 +46,7 @@ bool holdsRecordingMagic(int fd, std::uint64_t sizeBytes) {
 }
 
 /// Reads `path` into `bytes`, which holds what an earlier look read (a live reader reads only what
-/// was appended). Through the bounded reader (engine/io/InputFile.h): a FIFO, a device (/dev/zero)
+/// was appended). Through the bounded reader (base/io/InputFile.h): a FIFO, a device (/dev/zero)
 /// or a directory is a message naming the path, never a hang, runaway memory or std::bad_alloc.
 std::string readRecordingFile(const std::string& path, std::vector<std::uint8_t>& bytes) {
     std::string error;

@@ -13,7 +13,7 @@
 
 #include "engine/loop/RecorderSink.h"
 #include "engine/record/RecordingFormat.h"
-#include "engine/concurrency/SpscRing.h"
+#include "base/concurrency/SpscRing.h"
 #include "engine/record/TickCodec.h"
 
 #include <atomic>

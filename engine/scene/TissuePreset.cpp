@@ -1,9 +1,9 @@
 #include "engine/scene/TissuePreset.h"
 
-#include "engine/io/AtomicFile.h"
+#include "base/io/AtomicFile.h"
 #include "engine/core/HapticRate.h"
-#include "engine/io/InputFile.h"
-#include "engine/io/JsonFields.h"
+#include "base/io/InputFile.h"
+#include "base/io/JsonFields.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,9 +25,9 @@ constexpr FieldDef<TissueProperties> kTissueFields[] = {
          .lo = 0,
          .hi = 1e9,
          .lower = Bound::Open,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Young's modulus E:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Young's modulus"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Young's modulus E:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Young's modulus"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::Parameters",
                                        "Stiffness of the tissue, kPa (soft tissue: about 1 to 30 kPa)."),
          .decimals = 4,
          .step = 0.1,
@@ -37,10 +37,10 @@ constexpr FieldDef<TissueProperties> kTissueFields[] = {
          .jsonKey = "poisson_ratio",
          .lo = 0,
          .hi = 0.4999,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Poisson's ratio ν:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Poisson's ratio"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Poisson's ratio ν:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Poisson's ratio"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "How the tissue bulges sideways when pressed, 0..0.4999 (soft tissue is nearly incompressible: about "
              "0.45 to 0.49; 0.5 would be incompressible)."),
          .decimals = 4,
@@ -52,9 +52,9 @@ constexpr FieldDef<TissueProperties> kTissueFields[] = {
          .unit = "mm",
          .lo = 0.01,
          .hi = 1000,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Tool radius a:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "tool radius"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Radius of the probe's flat tip, mm (0.01..1000)."),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Tool radius a:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "tool radius"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Radius of the probe's flat tip, mm (0.01..1000)."),
          .decimals = 3,
          .step = 0.5}),
     field<&TissueProperties::staticFriction>(
@@ -62,10 +62,10 @@ constexpr FieldDef<TissueProperties> kTissueFields[] = {
          .jsonKey = "static_friction",
          .lo = 0,
          .hi = 5,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Static friction μs:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "static friction coefficient"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Static friction μs:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "static friction coefficient"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Coulomb friction between tool and tissue: the tool sticks until the sideways force exceeds μs times "
              "the normal force (0..5; 0 and 0: no friction). Moist soft tissue: about 0.3."),
          .decimals = 3,
@@ -75,10 +75,10 @@ constexpr FieldDef<TissueProperties> kTissueFields[] = {
          .jsonKey = "dynamic_friction",
          .lo = 0,
          .hi = 5,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Sliding friction μd:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "sliding friction coefficient"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Sliding friction μd:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "sliding friction coefficient"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "While the tool slides, the sideways force is μd times the normal force (0..5, at most μs)."),
          .decimals = 3,
          .step = 0.05}),
@@ -87,10 +87,10 @@ constexpr FieldDef<TissueProperties> kTissueFields[] = {
          .jsonKey = "stiffening_exponent",
          .lo = 0,
          .hi = 100,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Stiffening exponent b:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "stiffening exponent"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Stiffening exponent b:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "stiffening exponent"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "How fast the tissue stiffens with strain: b of the exponential law of the hyperelastic reference "
              "(0..100; 0: neo-Hookean). Calibration turns it into stiffening knots."),
          .decimals = 4,

@@ -10,7 +10,7 @@
 #include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/lod/LodNeeds.h"
 #include "engine/models/ModelRegistry.h"
-#include "engine/params/FieldTable.h"
+#include "base/params/FieldTable.h"
 
 #include <optional>
 #include <string>
@@ -42,7 +42,7 @@ struct TissueProperties {
     /// Where b came from ("stiffening_source", optional): "" when b is 0 by assumption.
     std::string stiffeningSource;
 };
-/// The numeric fields of TissueProperties in file order (engine/params/FieldTable.h); "source" is
+/// The numeric fields of TissueProperties in file order (base/params/FieldTable.h); "source" is
 /// a required string beside them.
 FieldTable<TissueProperties> tissueFields();
 Problems validateTissueProperties(const TissueProperties& tissue);

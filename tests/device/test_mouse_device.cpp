@@ -4,7 +4,7 @@
 
 #include "tests/support/AllocationCounter.h"
 #include "device/MouseDevice.h"
-#include "engine/concurrency/SeqLock.h"
+#include "base/concurrency/SeqLock.h"
 
 #include <gtest/gtest.h>
 

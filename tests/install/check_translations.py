@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fails when a translation is not complete: runs lupdate over app/gui, widgets, app/report and engine (its parameter tables) on a COPY of each
+"""Fails when a translation is not complete: runs lupdate over app/gui, widgets, results, report and engine (its parameter tables) on a COPY of each
 translations/*.ts (the committed files are never rewritten) and lists every entry that is unfinished
 (a new or changed string) or obsolete/vanished (a string the sources no longer have).
 
@@ -31,7 +31,8 @@ def main():
             run = subprocess.run([lupdate, "-locations", "none", "-I", source,
                                   "-tr-function-alias", "QT_TRANSLATE_NOOP+=PALPATE_TRANSLATE_NOOP",
                                   os.path.join(source, "app", "gui"), os.path.join(source, "widgets"),
-                                  os.path.join(source, "app", "report"), os.path.join(source, "engine"),
+                                  os.path.join(source, "results"), os.path.join(source, "report"),
+                                  os.path.join(source, "engine"),
                                   "-ts", copy], capture_output=True, text=True)
             if run.returncode != 0:
                 print(run.stdout, run.stderr)

@@ -1,8 +1,8 @@
-// libFuzzer target for the JSON reader every versioned file goes through (engine/io/JsonReader):
+// libFuzzer target for the JSON reader every versioned file goes through (base/io/JsonReader):
 // any bytes, no exception; a parse fails exactly when it records an error naming the source; what
 // parses is written and parsed again to the same value. Built as `fuzz_json` by the `fuzz` preset;
 // io_tests runs the same function over tests/io/corpus/json and deterministic mutations of it.
-#include "engine/io/JsonReader.h"
+#include "base/io/JsonReader.h"
 #include "tests/io/FuzzCheck.h"
 
 #include <cstdint>

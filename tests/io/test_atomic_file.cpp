@@ -1,8 +1,8 @@
-// Atomic writes (engine/io/AtomicFile.h): a write that fails (a file-size limit stands in for a
+// Atomic writes (base/io/AtomicFile.h): a write that fails (a file-size limit stands in for a
 // full disk) names the path and the reason, leaves the old file as it was and no temporary behind;
 // the temporary's name is unique, so another writer's file is never touched; a special file in the
 // target's place is not replaced.
-#include "engine/io/AtomicFile.h"
+#include "base/io/AtomicFile.h"
 #include "tests/io/ChildProcess.h"
 #include "tests/io/IoTestDir.h"
 

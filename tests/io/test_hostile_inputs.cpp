@@ -7,7 +7,7 @@
 #include "engine/core/MeshGenerator.h"
 #include "engine/core/TissueMesh.h"
 #include "engine/exercise/ExerciseFile.h"
-#include "engine/io/FileLimits.h"
+#include "base/io/FileLimits.h"
 #include "engine/lod/LevelCache.h"
 #include "engine/scene/TissuePreset.h"
 #include "engine/scoring/ExerciseSession.h"

@@ -1,7 +1,7 @@
-// The bounded reader (engine/io/InputFile.h): a FIFO, a device and a directory are refused by what
+// The bounded reader (base/io/InputFile.h): a FIFO, a device and a directory are refused by what
 // the opened descriptor is, without blocking or reading; a file beyond the format's limit is
 // refused by its size before it is read; the limit itself is readable.
-#include "engine/io/InputFile.h"
+#include "base/io/InputFile.h"
 #include "tests/io/IoTestDir.h"
 
 #include <gtest/gtest.h>

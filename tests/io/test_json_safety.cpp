@@ -3,8 +3,8 @@
 // the JSON library leaves a loader; a writer refuses what its reader would refuse; the documented
 // exercise limits (1000 targets, 10 000 path points) fit in an exercise file.
 #include "engine/exercise/ExerciseFile.h"
-#include "engine/io/FileLimits.h"
-#include "engine/io/JsonReader.h"
+#include "base/io/FileLimits.h"
+#include "base/io/JsonReader.h"
 #include "engine/scene/TissuePreset.h"
 #include "engine/scoring/ExerciseSession.h"
 #include "tests/io/IoTestDir.h"

@@ -15,7 +15,7 @@ get_filename_component(ROOT "${ROOT}" ABSOLUTE)
 get_filename_component(SELF "${CMAKE_CURRENT_LIST_FILE}" ABSOLUTE)
 
 # What is scanned: these folders (recursively) and files, relative to ROOT.
-set(scan_dirs engine device widgets app tests scripts packaging resources docs)
+set(scan_dirs base device engine results report widgets app cmake tests scripts packaging resources docs)
 set(scan_globs translations/*.cmake translations/*.md README.md CMakeLists.txt)
 # Binary and bulk data formats: never read.
 set(skip_ext_regex "\\.(png|jpe?g|gif|ico|pdf|qm|palprec|off|obj|ply|stl|om|sqlite|db|gz|xz|zip|deb|so|a|o)$")

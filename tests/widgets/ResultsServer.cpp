@@ -1,6 +1,6 @@
 #include "tests/widgets/ResultsServer.h"
 
-#include "app/report/ResultsDatabase.h"
+#include "results/ResultsDatabase.h"
 
 #include <QSqlError>
 #include <QSqlQuery>

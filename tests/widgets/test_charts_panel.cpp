@@ -8,8 +8,8 @@
 #include "widgets/ChartsPanel.h"
 #include "widgets/ParameterPanel.h"
 #include "widgets/StiffeningPanel.h"
-#include "app/report/SpeedAccuracyChart.h"
-#include "app/report/SweepChartImage.h"
+#include "report/SpeedAccuracyChart.h"
+#include "report/SweepChartImage.h"
 
 #include <QAbstractButton>
 #include <QApplication>

@@ -3,7 +3,7 @@
 // file for sim:path:FILE, emits connect requests without owning the loop, shows the spec and the
 // live state, and raises a red banner when the connected device is lost until it is Ready and armed.
 // Set PALPATE_DEVICE_PANEL_PNG_DIR to keep the rendered panels as PNGs.
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/MainWindow.h"
 #include "device/open/DeviceUri.h"
 #include "device/SafetyFilter.h"
@@ -437,7 +437,7 @@ private:
 TEST(DevicePanelWindow, AForceClampedToTheDeviceMaximumIsShownAsClipped) {
     MainWindow window(RendererChoice::Software, LoopMode::Stepped);
     ASSERT_EQ(window.setDeviceUri(QStringLiteral("sim:stroke")), QString());
-    ASSERT_EQ(window.loadMesh(QString::fromStdString(cli::findResource(cli::kDefaultMesh))), QString());
+    ASSERT_EQ(window.loadMesh(QString::fromStdString(findResource(kDefaultMesh))), QString());
     TissuePreset stiff = window.session().preset();
     stiff.params.springStiffnessNPerMm *= 4.0;  // rendered stiffness x4: several newtons at the press's depth
     window.parameterPanel()->setPreset(stiff);
@@ -465,7 +465,7 @@ TEST(DevicePanelWindow, HardwareOpensOffTheGuiThreadAndFailuresAreShown) {
     {
         MainWindow window(RendererChoice::Software, LoopMode::Threaded);
         ASSERT_EQ(window.setDeviceUri(QStringLiteral("sim:stroke")), QString());
-        ASSERT_EQ(window.loadMesh(QString::fromStdString(cli::findResource(cli::kDefaultMesh))), QString());
+        ASSERT_EQ(window.loadMesh(QString::fromStdString(findResource(kDefaultMesh))), QString());
         ASSERT_TRUE(window.session().threadRunning());
 
         // Returns while the device is still opening; the loop keeps the old device meanwhile.

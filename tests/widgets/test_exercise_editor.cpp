@@ -6,7 +6,7 @@
 // question; targets whose window the mouse cannot reach are warned about, the first target gets a
 // window it can, and every shipped example can be done with the mouse; in the main window,
 // clicking places targets while touch mode is on, and Try it leaves touch mode on.
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/ExerciseController.h"
 #include "app/gui/HapticSession.h"
 #include "app/gui/MainWindow.h"
@@ -875,7 +875,7 @@ namespace {
 
 /// The stomach drawn, a new press-targets exercise on it with its default tissue, one target placed.
 struct StomachWithATarget {
-    DrawnMesh drawn = loadMesh(cli::kDefaultMesh);
+    DrawnMesh drawn = loadMesh(kDefaultMesh);
     Editor editor;
     VertexId vertex = 1200;
     StomachWithATarget() {
@@ -956,7 +956,7 @@ TEST(ExerciseEditor, AWindowTheMouseCannotReachIsWarnedAboutUntilItIsFixed) {
 }
 
 TEST(ExerciseEditor, ATraceBandTheMouseCannotReachIsWarnedAboutAndANewOneCan) {
-    const DrawnMesh drawn = loadMesh(cli::kDefaultMesh);
+    const DrawnMesh drawn = loadMesh(kDefaultMesh);
     Editor editor;
     editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
     editor.panel.newExercise(ExerciseType::Trace);
@@ -1026,7 +1026,7 @@ class EditorInTheWindow : public ::testing::Test {
 protected:
     void SetUp() override {
         window = std::make_unique<MainWindow>(RendererChoice::Software, LoopMode::Stepped);
-        ASSERT_EQ(window->loadMesh(QString::fromStdString(cli::findResource(cli::kDefaultMesh))), QString());
+        ASSERT_EQ(window->loadMesh(QString::fromStdString(findResource(kDefaultMesh))), QString());
         ASSERT_EQ(window->setDeviceUri(QLatin1String(HapticSession::kInteractiveDeviceUri)), QString());
         window->setMode(MainWindow::Mode::Instructor);
         window->resize(1100, 700);

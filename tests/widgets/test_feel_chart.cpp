@@ -1,11 +1,11 @@
-// The feel chart (app/report/FeelChart.h) and the Charts dock's Feel tab under
+// The feel chart (report/FeelChart.h) and the Charts dock's Feel tab under
 // QT_QPA_PLATFORM=offscreen: one series per model with the points above the goal counted, the
 // goal line, both x axes; the PNG; the panel reading a feel bench CSV (and refusing a bad one,
 // keeping what it showed); palpate-cli bench feel --png run as a process (PALPATE_CLI_PATH). Shares
 // chart_tests' main() in test_charts_panel.cpp.
 #include "app/gui/MainWindow.h"
-#include "app/report/FeelChart.h"
-#include "app/report/FeelChartImage.h"
+#include "report/FeelChart.h"
+#include "report/FeelChartImage.h"
 #include "engine/bench/FeelCsv.h"
 #include "widgets/ChartsPanel.h"
 #include "widgets/FeelPanel.h"

@@ -2,7 +2,7 @@
 // "Don't show this again", its three actions on a real stepped MainWindow), the Preferences dialog
 // (fields, validation, the QSettings keys) and what the preferences do to a window, the Help menu's
 // User Guide (F1, shown in the guide window; no browser is started) and formatForce. Own main().
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/ExerciseController.h"
 #include "app/gui/FirstRun.h"
 #include "app/gui/MainWindow.h"
@@ -52,7 +52,7 @@ std::unique_ptr<MainWindow> makeWindow() {
             if (a->menu() && a->menu()->actions().size() > 0 && a->text() == MainWindow::tr("&Edit")) edit = a->menu();
         installFirstRunActions(*window, edit, menus.last()->menu());
     }
-    const std::string mesh = cli::findResource(cli::kDefaultMesh);
+    const std::string mesh = findResource(kDefaultMesh);
     EXPECT_FALSE(mesh.empty());
     EXPECT_EQ(window->setDeviceUri(QStringLiteral("sim:press")), QString());
     EXPECT_EQ(window->loadMesh(QString::fromStdString(mesh)), QString());
@@ -123,7 +123,7 @@ TEST_F(FirstRunTest, WelcomeTouchModeSwitchesToTheMouse) {
 
 TEST_F(FirstRunTest, WelcomeSampleSceneAndExampleExercise) {
     auto window = makeWindow();
-    EXPECT_EQ(window->loadMesh(QString::fromStdString(cli::findResource("meshes/sphere_1442.off"))), QString());
+    EXPECT_EQ(window->loadMesh(QString::fromStdString(findResource("meshes/sphere_1442.off"))), QString());
     showWelcome(*window)->sampleSceneButton()->click();
     EXPECT_TRUE(QString::fromStdString(window->session().drawnPath()).endsWith(QLatin1String("stomach_3970.off")));
 

@@ -4,7 +4,7 @@
 // core context can be created. The scene is the default one stepped into contact (deterministic).
 #include "ImageChecks.h"
 
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/HapticSession.h"
 #include "app/gui/ViewportBenchmark.h"
 #include "widgets/MeshViewport.h"
@@ -36,7 +36,7 @@ constexpr int kTicksIntoContact = 1500;
 constexpr int kWidthPx = 640;
 constexpr int kHeightPx = 480;
 
-QString defaultMeshPath() { return QString::fromStdString(cli::findResource(cli::kDefaultMesh)); }
+QString defaultMeshPath() { return QString::fromStdString(findResource(kDefaultMesh)); }
 
 /// Saves a picture next to the test's working directory for a look when a check fails.
 void keep(const QImage& image, const char* name) {

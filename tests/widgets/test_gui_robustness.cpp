@@ -5,7 +5,7 @@
 // loop runs on; a thread that cannot be created ends the GUI with a message, not a hang; a file-size
 // limit is a write error; a broken results database is named with its path and reason. Some run
 // the real `palpate` binary, as a user does. Own main() (a GuiApplication).
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/ExerciseController.h"
 #include "app/gui/FirstRun.h"
 #include "app/gui/GuiApplication.h"
@@ -48,7 +48,7 @@ using namespace palpate;
 
 namespace {
 
-QString resource(const char* relative) { return QString::fromStdString(cli::findResource(relative)); }
+QString resource(const char* relative) { return QString::fromStdString(findResource(relative)); }
 QString defaultMesh() { return resource("meshes/stomach_3970.off"); }
 
 struct GuiRun {

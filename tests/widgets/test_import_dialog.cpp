@@ -3,7 +3,7 @@
 // changes the size it shows, Import never writes over its input, and writes a mesh in mm that the
 // window opens (its status bar says the size); Open Mesh asks once about an implausible size and
 // the answer is used when the file is opened again. Own main().
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "tests/support/IsolatedSettings.h"
 #include "app/gui/MainWindow.h"
 #include "engine/core/TissueMesh.h"
@@ -43,7 +43,7 @@ namespace {
 
 /// The bundled sphere's mesh (about 86 mm across).
 TissueMesh sphere() {
-    auto loaded = TissueMesh::load(cli::findResource("meshes/sphere_1442.off"));
+    auto loaded = TissueMesh::load(findResource("meshes/sphere_1442.off"));
     EXPECT_TRUE(loaded.mesh) << loaded.error();
     return std::move(*loaded.mesh);
 }
@@ -301,7 +301,7 @@ TEST_F(MeshImportTest, OpenAsksOnceAboutTheUnitAndRemembersTheAnswer) {
     EXPECT_EQ(MainWindow::rememberedMeshUnit(mCmFile)->text(), "cm");
 
     // Another mesh, then this one again: no question, read in cm.
-    ASSERT_EQ(window->loadMesh(QString::fromStdString(cli::findResource("meshes/stomach_1442.off"))), QString());
+    ASSERT_EQ(window->loadMesh(QString::fromStdString(findResource("meshes/stomach_1442.off"))), QString());
     asked = false;
     answerNextBox(QStringLiteral("openAsMillimetres"), asked);
     EXPECT_EQ(window->openMeshFile(mCmFile), QString());

@@ -1,6 +1,6 @@
 // The main window's docks reach the engine: Apply changes what the haptic loop computes, a bad
 // preset leaves the scene alone, the device dock switches devices, recent files are kept.
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/MainWindow.h"
 #include "engine/scene/TissuePreset.h"
 #include "widgets/DevicePanel.h"
@@ -16,7 +16,7 @@ using namespace palpate;
 
 namespace {
 
-QString meshPath() { return QString::fromStdString(cli::findResource(cli::kDefaultMesh)); }
+QString meshPath() { return QString::fromStdString(findResource(kDefaultMesh)); }
 
 /// A window in stepped mode, pressed into the tissue by the scripted press-and-hold.
 std::unique_ptr<MainWindow> pressedWindow() {
@@ -80,7 +80,7 @@ TEST(MainWindowDocks, BadPresetNamesTheKeyAndLeavesTheSceneAndParametersAlone) {
 
 TEST(MainWindowDocks, ShippedPresetLoadsAndApplies) {
     auto window = pressedWindow();
-    const QString preset = QString::fromStdString(cli::findResource("presets/default.json"));
+    const QString preset = QString::fromStdString(findResource("presets/default.json"));
     ASSERT_FALSE(preset.isEmpty());
     EXPECT_EQ(window->loadPresetFile(preset), QString());
     EXPECT_EQ(window->session().preset().name, "default");

@@ -2,7 +2,7 @@
 // methods first, each with a tooltip; the chosen model's own fields are shown and validated by
 // name; Apply switches the haptic session's model, and undo goes back. Offscreen, stepped loop;
 // main() is in test_viewport.cpp.
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/HapticSession.h"
 #include "widgets/ParameterCommands.h"
 #include "widgets/ParameterPanel.h"
@@ -106,8 +106,8 @@ TEST(ModelSelector, ShowsTheChosenModelsOwnFieldsAndNamesBadOnes) {
 }
 
 TEST(ModelSelector, ApplySwitchesTheSessionsModelAndUndoGoesBack) {
-    const std::string meshPath = cli::findResource(cli::kDefaultMesh);
-    ASSERT_FALSE(meshPath.empty()) << "resources/" << cli::kDefaultMesh << " not found";
+    const std::string meshPath = findResource(kDefaultMesh);
+    ASSERT_FALSE(meshPath.empty()) << "resources/" << kDefaultMesh << " not found";
     HapticSession session(LoopMode::Stepped);
     ASSERT_EQ(session.loadMesh(meshPath), "");
     session.step(1);

@@ -3,7 +3,7 @@
 // the recording plays back in the dock (markers, seeks that show the recorded tick, 4x faster than
 // 1x, a matching verdict at the end); garbage and damaged files are reported by name; Back to live
 // resumes the loop; a recording stops cleanly on a write problem and on window close.
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/MainWindow.h"
 #include "engine/replay/RecordingPlayer.h"
 #include "engine/record/RecordingReader.h"
@@ -43,7 +43,7 @@ namespace {
 constexpr int kWaitMs = 20000;
 constexpr double kFrameS = 1.0 / 60.0;
 
-QString meshPath() { return QString::fromStdString(cli::findResource(cli::kDefaultMesh)); }
+QString meshPath() { return QString::fromStdString(findResource(kDefaultMesh)); }
 
 /// A stepped window with the scripted stroke on the default mesh, recording into `folder`.
 std::unique_ptr<MainWindow> liveWindow(const QString& folder) {
@@ -471,7 +471,7 @@ TEST_F(RecorderDock, BackToLiveResumesTheLiveLoop) {
 TEST_F(RecorderDock, StatusBarShowsTheRecordingsMeshInPlaybackAndTheLiveOneAfter) {
     auto window = liveWindow(sDir->path());
     // The live session on another mesh than the recording's (stomach_3970).
-    const QString sphere = QString::fromStdString(cli::findResource("meshes/sphere_1442.off"));
+    const QString sphere = QString::fromStdString(findResource("meshes/sphere_1442.off"));
     ASSERT_EQ(window->loadMesh(sphere), QString());
     window->advanceTicks(10);
     auto* meshStatus = window->findChild<QLabel*>(QStringLiteral("meshStatus"));
@@ -500,7 +500,7 @@ TEST_F(RecorderDock, StatusBarFollowsAMeshSwitchInTheRecording) {
     auto window = liveWindow(dir.path());
     ASSERT_EQ(window->startRecording(), QString());
     window->advanceTicks(500);
-    ASSERT_EQ(window->loadMesh(QString::fromStdString(cli::findResource("meshes/sphere_1442.off"))), QString());
+    ASSERT_EQ(window->loadMesh(QString::fromStdString(findResource("meshes/sphere_1442.off"))), QString());
     window->advanceTicks(500);
     ASSERT_EQ(window->stopRecording(), QString());
     const QString path = window->recorderPanel()->recordingPath();
@@ -572,7 +572,7 @@ TEST_F(RecorderDock, OpenMeshAndOpenRecordingDialogsStartInTheirOwnFolders) {
     const QString elsewhere = dir.filePath(QStringLiteral("old-recordings"));
     ASSERT_TRUE(QDir().mkpath(meshes) && QDir().mkpath(elsewhere));
     const QString sphere = QDir(meshes).filePath(QStringLiteral("sphere.off"));
-    ASSERT_TRUE(QFile::copy(QString::fromStdString(cli::findResource("meshes/sphere_1442.off")), sphere));
+    ASSERT_TRUE(QFile::copy(QString::fromStdString(findResource("meshes/sphere_1442.off")), sphere));
     const QString recording = QDir(elsewhere).filePath(QStringLiteral("old.palprec"));
     ASSERT_TRUE(QFile::copy(sPath, recording));
 

@@ -4,10 +4,10 @@
 // passwords come from a pgpass file, as on a workstation. And the connection is encrypted when the
 // server offers TLS, and verify-full refuses a server whose certificate the workstation does not
 // trust. These need the server pg_virtualenv starts (they are skipped without one).
-#include "app/report/ClassSummary.h"
-#include "app/report/ResultSync.h"
-#include "app/report/ResultsDatabase.h"
-#include "app/report/ResultsRoles.h"
+#include "results/ClassSummary.h"
+#include "results/ResultSync.h"
+#include "results/ResultsDatabase.h"
+#include "results/ResultsRoles.h"
 #include "tests/widgets/ResultsServer.h"
 
 #include <QDir>

@@ -2,8 +2,8 @@
 // and reopened gives back what was stored; a version-1 file is migrated to version 2 with its rows
 // kept; a newer schema, a file that is not a database and a folder that does not exist are refused
 // with a message naming the file; the PDF is written and pdftotext reads the score and the trainee.
-#include "app/report/ResultsDatabase.h"
-#include "app/report/ScoreReportPdf.h"
+#include "results/ResultsDatabase.h"
+#include "report/ScoreReportPdf.h"
 
 #include <QApplication>
 #include <QFile>

@@ -5,10 +5,10 @@
 // The PostgreSQL tests need a server: ctest runs this executable under pg_virtualenv (Debian's
 // postgresql-common), which starts a throw-away cluster and sets PGHOST, PGPORT, PGUSER, PGPASSWORD
 // and PGDATABASE; without them they are skipped (and the SQLite ones run).
-#include "app/report/ClassSummary.h"
-#include "app/report/ResultSync.h"
-#include "app/report/ResultUploader.h"
-#include "app/report/ResultsDatabase.h"
+#include "results/ClassSummary.h"
+#include "results/ResultSync.h"
+#include "results/ResultUploader.h"
+#include "results/ResultsDatabase.h"
 #include "tests/widgets/ResultsServer.h"
 
 #include <QCoreApplication>

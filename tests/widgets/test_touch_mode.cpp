@@ -1,7 +1,7 @@
 // Touch mode under QT_QPA_PLATFORM=offscreen, stepped (deterministic): the mouse: device, steered by
 // the viewport's left button (ray-picked on the drawn mesh), presses the tissue where it is touched,
 // lets go on release, and presses deeper as the wheel turns. Shares widget_tests' main().
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/HapticSession.h"
 #include "app/gui/MainWindow.h"
 
@@ -26,7 +26,7 @@ namespace {
 
 constexpr int kTicks = 300;
 
-QString meshPath() { return QString::fromStdString(cli::findResource(cli::kDefaultMesh)); }
+QString meshPath() { return QString::fromStdString(findResource(kDefaultMesh)); }
 
 void sendMouse(QWidget& widget, QEvent::Type type, QPointF at, Qt::MouseButton button, Qt::MouseButtons buttons,
                Qt::KeyboardModifiers modifiers = Qt::NoModifier) {

@@ -4,11 +4,11 @@
 // equals the score of replaying the recording the session left; the result (trainee, exercise,
 // score, metrics, recording) is in the database, which survives reopening; the History view plots
 // it; the score report PDF holds the score; errors are reported, not crashed on.
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/ExerciseController.h"
-#include "app/report/ScoreReportFromRecording.h"
+#include "report/ScoreReportFromRecording.h"
 #include "app/gui/MainWindow.h"
-#include "app/report/ResultUploader.h"
+#include "results/ResultUploader.h"
 #include "widgets/ClassDialog.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
@@ -26,7 +26,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/report/LearningCurve.h"
+#include "results/LearningCurve.h"
 #include "engine/exercise/RecordedExercise.h"
 #include "engine/scoring/Staircase.h"
 
@@ -60,7 +60,7 @@ using namespace palpate;
 
 namespace {
 
-QString resource(const char* relative) { return QString::fromStdString(cli::findResource(relative)); }
+QString resource(const char* relative) { return QString::fromStdString(findResource(relative)); }
 
 /// A stepped window whose device plays `script` (resources/exercises/...path), with the results
 /// database and the recordings in `dir`.
@@ -95,7 +95,7 @@ ScoreReport replayScore(const QString& recordingPath) {
     const RecordingReader reader = RecordingReader::open(recordingPath.toStdString());
     std::string error;
     ReplayScorerDef options;
-    options.findResource = cli::findResource;
+    options.findResource = findResource;
     ScoreReport report = scoreRecording(reader, nullptr, error, options);
     EXPECT_EQ(error, "");
     return report;
@@ -635,7 +635,7 @@ QString exerciseMesh(const QString& exercisePath) {
     const auto loaded = loadExercise(exercisePath.toStdString());
     if (!loaded.exercise) return {};
     return QFileInfo(QString::fromStdString(
-                         resolveExercisePath(*loaded.exercise, loaded.exercise->meshPath, cli::findResource)))
+                         resolveExercisePath(*loaded.exercise, loaded.exercise->meshPath, findResource)))
         .canonicalFilePath();
 }
 
@@ -691,8 +691,8 @@ TEST(ExerciseDock, APreviewShowsTheExerciseThatRuns) {
     ASSERT_TRUE(loaded.exercise);
     Exercise unsaved = *loaded.exercise;
     unsaved.name = "My new exercise";
-    unsaved.meshPath = resolveExercisePath(unsaved, unsaved.meshPath, cli::findResource);
-    unsaved.tissuePresetPath = resolveExercisePath(unsaved, unsaved.tissuePresetPath, cli::findResource);
+    unsaved.meshPath = resolveExercisePath(unsaved, unsaved.meshPath, findResource);
+    unsaved.tissuePresetPath = resolveExercisePath(unsaved, unsaved.tissuePresetPath, findResource);
     unsaved.sourcePath.clear();
     ASSERT_EQ(window->exercises().startPreview(unsaved), QString());
     EXPECT_TRUE(panel->exerciseTitle().contains(QStringLiteral("My new exercise"))) << panel->exerciseTitle().toStdString();

@@ -2,7 +2,7 @@
 // software renderer, which draws the mesh and the touched-vertex highlight; the window runs the
 // haptic loop stepped (deterministic) or on its thread (interactive), observes its snapshots, and
 // reports contact, force and the loop's health; bad meshes and devices give errors naming them.
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/HapticSession.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/SnapshotObserver.h"
@@ -37,7 +37,7 @@ namespace {
 
 constexpr int kTicksIntoContact = 800;  // the scripted stroke is pressing by then
 
-QString defaultMeshPath() { return QString::fromStdString(cli::findResource(cli::kDefaultMesh)); }
+QString defaultMeshPath() { return QString::fromStdString(findResource(kDefaultMesh)); }
 
 bool near(QRgb pixel, const QColor& colour, int tolerance) {
     return std::abs(qRed(pixel) - colour.red()) <= tolerance && std::abs(qGreen(pixel) - colour.green()) <= tolerance &&
@@ -93,7 +93,7 @@ TEST(ViewportFactory, PicksSoftwareUnderOffscreen) {
 
 TEST(SoftwareViewport, DrawsTheMeshAndTheTouchedVertexInContact) {
     const QString path = defaultMeshPath();
-    ASSERT_FALSE(path.isEmpty()) << "resources/" << cli::kDefaultMesh << " not found";
+    ASSERT_FALSE(path.isEmpty()) << "resources/" << kDefaultMesh << " not found";
     HapticSession session(LoopMode::Stepped);
     ASSERT_EQ(session.loadMesh(path.toStdString()), "");
     ASSERT_TRUE(session.drawnMesh());
@@ -306,7 +306,7 @@ TEST(MainWindow, RestartAndDeviceSwitchSwapTheLoopsSceneAndDevice) {
     EXPECT_EQ(window.session().deviceUri(), "sim:sine");
 
     // Another mesh: drawn once the loop runs it.
-    const QString other = QString::fromStdString(cli::findResource("meshes/sphere_1442.off"));
+    const QString other = QString::fromStdString(findResource("meshes/sphere_1442.off"));
     ASSERT_FALSE(other.isEmpty());
     ASSERT_EQ(window.loadMesh(other), QString());
     EXPECT_EQ(window.viewport()->scene().vertexCount(), 3970u);

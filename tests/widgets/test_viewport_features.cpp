@@ -3,7 +3,7 @@
 // observer's changed vertices and versions, the scene's dirty vertices, ranges and normals).
 #include "ImageChecks.h"
 
-#include "app/common/DefaultScene.h"
+#include "base/resources/ShippedResources.h"
 #include "app/gui/HapticSession.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/SnapshotObserver.h"
@@ -37,7 +37,7 @@ namespace {
 
 constexpr int kTicksIntoContact = 1500;  // the scripted stroke presses (what --screenshot --ticks 1500 shows)
 
-QString defaultMeshPath() { return QString::fromStdString(cli::findResource(cli::kDefaultMesh)); }
+QString defaultMeshPath() { return QString::fromStdString(findResource(kDefaultMesh)); }
 
 /// A stepped session on the default mesh, `ticks` ticks in, the newest snapshot applied.
 std::unique_ptr<HapticSession> steppedSession(int ticks) {

@@ -19,10 +19,10 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
          .jsonKey = "ring_count",
          .lo = 0,
          .hi = kMaxRings,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Ring count:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "ring count"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Ring count:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "ring count"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Rings of neighbours displaced with the touched vertex (ring r: the vertices r edges away). The paper "
              "uses 2; each ring adds a slope below."),
          .required = true,
@@ -36,7 +36,7 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
          .hi = kNoLimit,
          .lower = Bound::Open,
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Slope magnitude |m| in mm/N: how far the vertex moves per newton of contact force; the model applies "
              "the paper's sign (m < 0), which moves the vertex into the tissue."),
          .decimals = 9,
@@ -51,10 +51,10 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
          .lo = 0,
          .hi = 100,
          .lower = Bound::Open,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Slope limit:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "slope limit"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Slope limit:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "slope limit"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Every slope magnitude must stay below this limit. The paper's range ends at 1 mm/N; calibrated soft "
              "tissue may need more (at most 100 mm/N), allowed while the loop gain stays stable. Slopes above "
              "1 mm/N are marked as outside the paper's range."),
@@ -67,10 +67,10 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
          .lo = 0,
          .hi = kNoLimit,
          .lower = Bound::Open,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Contact stiffness k_c:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "contact stiffness"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Contact stiffness k_c:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "contact stiffness"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Stiffness of the tool-tissue contact (a penalty spring). The loop gain is |m1| × k_c."),
          .decimals = 4,
          .step = 0.1}),
@@ -79,10 +79,10 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
          .jsonKey = "force_relaxation",
          .lo = 0,
          .hi = 1,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Force relaxation α:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "force relaxation"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Force relaxation α:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "force relaxation"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Per-tick relaxation α of the contact force, in (0, 1]. Automatic (0) uses α = 1 / (1 + gain), which "
              "solves the contact in one tick for any gain. The update is stable while α·(1 + gain) < 2."),
          .decimals = 4,
@@ -94,10 +94,10 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
          .lo = 0,
          .hi = kNoLimit,
          .lower = Bound::Open,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Spring stiffness k:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "spring stiffness"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Spring stiffness k:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "spring stiffness"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Stiffness of the springs that tie each vertex to its rest position. The touched vertex's spring "
              "reaction is the force rendered to the user."),
          .decimals = 9,
@@ -107,10 +107,10 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
          .jsonKey = "damping_ratio",
          .lo = 0,
          .hi = 100,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Damping ratio:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "damping ratio"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Damping ratio:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "damping ratio"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Damping of the return springs as a fraction of critical: 1 returns without overshoot, below 1 the "
              "tissue rings before it settles (0..100)."),
          .decimals = 3,
@@ -122,9 +122,9 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
          .lo = 0,
          .hi = kNoLimit,
          .lower = Bound::Open,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Vertex mass:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "vertex mass"),
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Vertex mass:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "vertex mass"),
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::Parameters",
                                        "Lumped mass per vertex, for the relaxation after the tool lets go."),
          .decimals = 7,
          .step = 0.0005}),
@@ -133,10 +133,10 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
          .jsonKey = "stiffening_knots",
          .lo = 0,
          .hi = kMaxStiffeningKnots,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "Stiffening knots:"),
-         .name = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel", "stiffening knots"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Stiffening knots:"),
+         .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "stiffening knots"),
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Points of the strain-stiffening curve, calibrated from the hyperelastic reference. 0: linear tissue, "
              "the paper's model."),
          .entryLo = 0,
@@ -148,7 +148,7 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
          .lo = 0,
          .hi = kNoLimit,
          .lower = Bound::Open,
-         .tip = PALPATE_TRANSLATE_NOOP("palpate::ParameterPanel",
+         .tip = PALPATE_TRANSLATE_NOOP("palpate::Parameters",
                                        "Contact force above which the next stiffening compliance applies, N."),
          .decimals = 6,
          .step = 0.1,
@@ -161,7 +161,7 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
          .hi = 1,
          .lower = Bound::Open,
          .tip = PALPATE_TRANSLATE_NOOP(
-             "palpate::ParameterPanel",
+             "palpate::Parameters",
              "Above its knot the tissue yields this fraction of |m1| per further newton: below 1, it stiffens."),
          .decimals = 6,
          .step = 0.01,

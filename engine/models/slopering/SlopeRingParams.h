@@ -4,7 +4,7 @@
 // outward reaction force, into the tissue) is applied by the model. See docs/method.md.
 
 #include "engine/core/Rings.h"
-#include "engine/params/FieldTable.h"
+#include "base/params/FieldTable.h"
 
 #include <array>
 #include <string>
@@ -92,7 +92,7 @@ inline float unstiffenedForceN(const SlopeRingConstants& c, float effectiveN) {
 }
 SlopeRingConstants slopeRingConstants(const SlopeRingParams& params);
 
-/// The fields of SlopeRingParams in file order (engine/params/FieldTable.h).
+/// The fields of SlopeRingParams in file order (base/params/FieldTable.h).
 FieldTable<SlopeRingParams> slopeRingFields();
 
 /// Every problem found, each naming the field and the rule; empty when valid. Beyond the table's

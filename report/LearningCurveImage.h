@@ -1,0 +1,17 @@
+#pragma once
+// A trainee's learning curve as a PNG (palpate-cli trainee curve --png; docs/scoring.md,
+// "Proficiency"): one small plot per metric, the session number along x, the side of the experts'
+// pass mark that passes shaded, the mark drawn, each session's point green when it passed.
+
+#include "results/LearningCurveData.h"
+
+#include <string>
+
+namespace palpate {
+
+/// Renders the curve into a widthPx x heightPx PNG at `path` (a QApplication is made offscreen
+/// when the process has none). False with `error` when it cannot.
+bool renderLearningCurvePng(const LearningCurveData& data, const std::string& path, std::string* error,
+                            int widthPx = 1200, int heightPx = 800);
+
+}  // namespace palpate

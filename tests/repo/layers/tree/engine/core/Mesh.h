@@ -1,0 +1,2 @@
+#pragma once
+// An engine header the device fixture includes.
