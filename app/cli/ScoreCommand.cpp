@@ -1,7 +1,7 @@
 // palpate-cli score: the score of a recorded exercise session, with its breakdown. The recording
 // is replayed through the engine (the exercise's physics from the recording's note) and scored
 // tick by tick by the same scorer the live session uses (docs/scoring.md). --pdf writes the
-// printable report the GUI exports, through the same app/report code.
+// printable report the GUI exports, through the same report/ code.
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/MeshOption.h"

@@ -482,7 +482,7 @@ QString ExerciseController::exportReportPdf(const QString& recordingPath, const 
     if (out.exists() && in.exists() && out.canonicalFilePath() == in.canonicalFilePath())
         return tr("%1: is the recording the report is made from; choose another file for the PDF")
             .arg(QDir::toNativeSeparators(path));
-    // The same report as `palpate-cli score --pdf`: the recording re-scored (app/report).
+    // The same report as `palpate-cli score --pdf`: the recording re-scored (report/).
     ReplayScorerDef options;
     options.findResource = findResource;
     ScoreReportContent content;
