@@ -1,4 +1,5 @@
 #include "report/ScoreReportFromRecording.h"
+#include "engine/exercise/ExerciseKind.h"
 
 #include <glm/geometric.hpp>
 
@@ -21,15 +22,15 @@ struct TickSpan {
 /// (the guidance's current window: a press target's own, or the trace's band).
 std::vector<TickSpan> replayWindows(ReplayScorer& scorer, ExerciseType type) {
     std::vector<TickSpan> spans;
-    if (type == ExerciseType::FindLump) {
+    if (exerciseKind(type).palpation()) {  // no force window to shade
         scorer.advanceAll();
         return spans;
     }
     while (!scorer.scorer().over()) {
         const ScoreGuidance before = scorer.scorer().guidance();
         if (scorer.advanceTo(scorer.currentTick() + 1) == 0) break;
-        const int target = type == ExerciseType::PressTargets ? before.targetIndex : -1;
-        if (type == ExerciseType::PressTargets && target < 0) continue;
+        const int target = before.targetIndex;         // -1: no target (a trace's band)
+        if (before.targetCount > 0 && target < 0) continue;  // every target done
         if (!(before.forceMaxN > before.forceMinN)) continue;
         const std::uint64_t tick = scorer.currentTick();
         if (!spans.empty() && spans.back().targetIndex == target && spans.back().forceMinN == before.forceMinN &&
@@ -95,8 +96,8 @@ bool scoreReportFromRecording(const QString& recordingPath, const Exercise* exer
                                                          QString::fromStdString(device.uri));
     if (reader.header().startUnixUs > 0)
         content.sessionStart = QDateTime::fromMSecsSinceEpoch(reader.header().startUnixUs / 1000);
-    if (graded.type == ExerciseType::PressTargets) content.targets = graded.pressTargets.targets;
-    if (graded.type == ExerciseType::DetectLumps) content.lumps = graded.detectLumps.lumps;
+    content.targets = graded.pressTargets.targets;  // empty but for press targets
+    content.lumps = graded.detectLumps.lumps;       // empty but for detect lumps
     if (content.report.palpation) {
         content.surfaceMm = scorer->scorer().geometry().restMm();
         content.normals = scorer->scorer().geometry().normals();

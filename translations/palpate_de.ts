@@ -1616,6 +1616,25 @@
     </message>
 </context>
 <context>
+    <name>palpate::Exercises</name>
+    <message>
+        <source>Detect lumps</source>
+        <translation>Knoten finden</translation>
+    </message>
+    <message>
+        <source>Find the lump</source>
+        <translation>Die Verhärtung finden</translation>
+    </message>
+    <message>
+        <source>Press targets</source>
+        <translation>Ziele drücken</translation>
+    </message>
+    <message>
+        <source>Trace a path</source>
+        <translation>Einem Pfad folgen</translation>
+    </message>
+</context>
+<context>
     <name>palpate::FeelChart</name>
     <message>
         <source>No feel bench yet</source>
@@ -3219,6 +3238,193 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>cancelling…</source>
         <translation>wird abgebrochen…</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::Metrics</name>
+    <message>
+        <source>completion</source>
+        <translation>Erledigt</translation>
+    </message>
+    <message>
+        <source>share of the task done: targets achieved, lump marked, path covered, examination finished (else the surface examined)</source>
+        <translation>Anteil der erledigten Aufgabe: Ziele erreicht, Verhärtung markiert, Pfad abgedeckt, Untersuchung beendet (sonst der untersuchte Teil der Oberfläche)</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>exercise time until the task was complete (all of it if it was not)</source>
+        <translation>Übungszeit bis zum Abschluss der Aufgabe (die ganze, wenn sie nicht abgeschlossen wurde)</translation>
+    </message>
+    <message>
+        <source>target error</source>
+        <translation>Zielabweichung</translation>
+    </message>
+    <message>
+        <source>mean distance from the target while pressing inside its force window</source>
+        <translation>mittlerer Abstand vom Ziel, während die Kraft in seinem Kraftfenster lag</translation>
+    </message>
+    <message>
+        <source>hold in window fraction</source>
+        <translation>Anteil im Fenster gehalten</translation>
+    </message>
+    <message>
+        <source>time inside the force window / time on a target in contact</source>
+        <translation>Zeit im Kraftfenster / Zeit mit Kontakt auf einem Ziel</translation>
+    </message>
+    <message>
+        <source>peak force</source>
+        <translation>Spitzenkraft</translation>
+    </message>
+    <message>
+        <source>largest force rendered</source>
+        <translation>größte ausgegebene Kraft</translation>
+    </message>
+    <message>
+        <source>mean force</source>
+        <translation>mittlere Kraft</translation>
+    </message>
+    <message>
+        <source>mean force magnitude while in contact</source>
+        <translation>mittlerer Kraftbetrag während des Kontakts</translation>
+    </message>
+    <message>
+        <source>impulse</source>
+        <translation>Kraftstoß</translation>
+    </message>
+    <message>
+        <source>integral of the force magnitude over time</source>
+        <translation>Integral des Kraftbetrags über die Zeit</translation>
+    </message>
+    <message>
+        <source>excessive force events</source>
+        <translation>Überkraft-Ereignisse</translation>
+    </message>
+    <message>
+        <source>times the force rose above the excessive force</source>
+        <translation>wie oft die Kraft über die zu hohe Kraft stieg</translation>
+    </message>
+    <message>
+        <source>excessive force fraction</source>
+        <translation>Anteil mit Überkraft</translation>
+    </message>
+    <message>
+        <source>time above the excessive force / time in contact</source>
+        <translation>Zeit über der zu hohen Kraft / Zeit in Kontakt</translation>
+    </message>
+    <message>
+        <source>damage time</source>
+        <translation>Schadenszeit</translation>
+    </message>
+    <message>
+        <source>time with tissue displaced beyond the displacement limit</source>
+        <translation>Zeit, in der Gewebe über die Verschiebungsgrenze hinaus verschoben war</translation>
+    </message>
+    <message>
+        <source>damage area</source>
+        <translation>Schadensfläche</translation>
+    </message>
+    <message>
+        <source>largest surface area displaced beyond the limit at one time</source>
+        <translation>größte gleichzeitig über die Grenze hinaus verschobene Oberfläche</translation>
+    </message>
+    <message>
+        <source>max displacement</source>
+        <translation>größte Verschiebung</translation>
+    </message>
+    <message>
+        <source>largest displacement of any vertex from rest</source>
+        <translation>größte Verschiebung eines Knotens aus der Ruhelage</translation>
+    </message>
+    <message>
+        <source>path length</source>
+        <translation>Weglänge</translation>
+    </message>
+    <message>
+        <source>distance travelled by the tool tip</source>
+        <translation>von der Werkzeugspitze zurückgelegte Strecke</translation>
+    </message>
+    <message>
+        <source>economy</source>
+        <translation>Wirtschaftlichkeit</translation>
+    </message>
+    <message>
+        <source>ideal path length / path length (1 = no wasted motion)</source>
+        <translation>ideale Weglänge / Weglänge (1 = keine unnötige Bewegung)</translation>
+    </message>
+    <message>
+        <source>lump error</source>
+        <translation>Abweichung von der Verhärtung</translation>
+    </message>
+    <message>
+        <source>distance from the contact point at the mark to the inclusion centre</source>
+        <translation>Abstand des Kontaktpunkts bei der Markierung vom Mittelpunkt der Einlagerung</translation>
+    </message>
+    <message>
+        <source>contact fraction</source>
+        <translation>Kontaktanteil</translation>
+    </message>
+    <message>
+        <source>time in contact / tracing time</source>
+        <translation>Zeit in Kontakt / Nachfahrzeit</translation>
+    </message>
+    <message>
+        <source>band fraction</source>
+        <translation>Anteil im Kraftband</translation>
+    </message>
+    <message>
+        <source>time in contact with the force in the band / tracing time</source>
+        <translation>Zeit in Kontakt mit der Kraft im Band / Nachfahrzeit</translation>
+    </message>
+    <message>
+        <source>path distance</source>
+        <translation>Abstand vom Pfad</translation>
+    </message>
+    <message>
+        <source>mean distance of the contact point from the path while in contact</source>
+        <translation>mittlerer Abstand des Kontaktpunkts vom Pfad während des Kontakts</translation>
+    </message>
+    <message>
+        <source>sensitivity</source>
+        <translation>Sensitivität</translation>
+    </message>
+    <message>
+        <source>lumps found / lumps hidden</source>
+        <translation>gefundene Knoten / versteckte Knoten</translation>
+    </message>
+    <message>
+        <source>positive predictive value</source>
+        <translation>positiver Vorhersagewert</translation>
+    </message>
+    <message>
+        <source>findings on a lump / findings</source>
+        <translation>Befunde auf einem Knoten / Befunde</translation>
+    </message>
+    <message>
+        <source>false alarms</source>
+        <translation>Fehlalarme</translation>
+    </message>
+    <message>
+        <source>findings matched to no lump</source>
+        <translation>Befunde, die keinem Knoten zugeordnet sind</translation>
+    </message>
+    <message>
+        <source>localisation</source>
+        <translation>Lokalisierung</translation>
+    </message>
+    <message>
+        <source>mean distance from a found lump&apos;s centre to the finding on it</source>
+        <translation>mittlerer Abstand vom Mittelpunkt eines gefundenen Knotens zum Befund darauf</translation>
+    </message>
+    <message>
+        <source>coverage fraction</source>
+        <translation>abgedeckter Anteil</translation>
+    </message>
+    <message>
+        <source>surface area examined with at least the coverage force / surface area</source>
+        <translation>mit mindestens der Abdeckungskraft untersuchte Oberfläche / Oberfläche</translation>
     </message>
 </context>
 <context>

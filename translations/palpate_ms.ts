@@ -1616,6 +1616,25 @@
     </message>
 </context>
 <context>
+    <name>palpate::Exercises</name>
+    <message>
+        <source>Detect lumps</source>
+        <translation>Kesan ketulan</translation>
+    </message>
+    <message>
+        <source>Find the lump</source>
+        <translation>Cari ketulan</translation>
+    </message>
+    <message>
+        <source>Press targets</source>
+        <translation>Tekan sasaran</translation>
+    </message>
+    <message>
+        <source>Trace a path</source>
+        <translation>Jejaki laluan</translation>
+    </message>
+</context>
+<context>
     <name>palpate::FeelChart</name>
     <message>
         <source>No feel bench yet</source>
@@ -3216,6 +3235,193 @@ pemapar %5</translation>
     <message>
         <source>cancelling…</source>
         <translation>membatalkan…</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::Metrics</name>
+    <message>
+        <source>completion</source>
+        <translation>penyiapan</translation>
+    </message>
+    <message>
+        <source>share of the task done: targets achieved, lump marked, path covered, examination finished (else the surface examined)</source>
+        <translation>bahagian tugas yang selesai: sasaran dicapai, ketulan ditanda, laluan diliputi, pemeriksaan selesai (jika tidak, permukaan yang diperiksa)</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>masa</translation>
+    </message>
+    <message>
+        <source>exercise time until the task was complete (all of it if it was not)</source>
+        <translation>masa latihan sehingga tugas selesai (keseluruhannya jika tidak selesai)</translation>
+    </message>
+    <message>
+        <source>target error</source>
+        <translation>ralat sasaran</translation>
+    </message>
+    <message>
+        <source>mean distance from the target while pressing inside its force window</source>
+        <translation>jarak purata dari sasaran semasa menekan dalam tetingkap daya sasaran itu</translation>
+    </message>
+    <message>
+        <source>hold in window fraction</source>
+        <translation>pecahan tahanan dalam tetingkap</translation>
+    </message>
+    <message>
+        <source>time inside the force window / time on a target in contact</source>
+        <translation>masa dalam tetingkap daya / masa bersentuhan pada sasaran</translation>
+    </message>
+    <message>
+        <source>peak force</source>
+        <translation>daya puncak</translation>
+    </message>
+    <message>
+        <source>largest force rendered</source>
+        <translation>daya terbesar yang dihasilkan</translation>
+    </message>
+    <message>
+        <source>mean force</source>
+        <translation>daya purata</translation>
+    </message>
+    <message>
+        <source>mean force magnitude while in contact</source>
+        <translation>magnitud daya purata semasa bersentuhan</translation>
+    </message>
+    <message>
+        <source>impulse</source>
+        <translation>impuls</translation>
+    </message>
+    <message>
+        <source>integral of the force magnitude over time</source>
+        <translation>kamiran magnitud daya terhadap masa</translation>
+    </message>
+    <message>
+        <source>excessive force events</source>
+        <translation>peristiwa daya berlebihan</translation>
+    </message>
+    <message>
+        <source>times the force rose above the excessive force</source>
+        <translation>bilangan kali daya naik melebihi daya berlebihan</translation>
+    </message>
+    <message>
+        <source>excessive force fraction</source>
+        <translation>pecahan daya berlebihan</translation>
+    </message>
+    <message>
+        <source>time above the excessive force / time in contact</source>
+        <translation>masa melebihi daya berlebihan / masa bersentuhan</translation>
+    </message>
+    <message>
+        <source>damage time</source>
+        <translation>masa kerosakan</translation>
+    </message>
+    <message>
+        <source>time with tissue displaced beyond the displacement limit</source>
+        <translation>masa tisu teranjak melebihi had anjakan</translation>
+    </message>
+    <message>
+        <source>damage area</source>
+        <translation>luas kerosakan</translation>
+    </message>
+    <message>
+        <source>largest surface area displaced beyond the limit at one time</source>
+        <translation>luas permukaan terbesar yang teranjak melebihi had pada satu masa</translation>
+    </message>
+    <message>
+        <source>max displacement</source>
+        <translation>anjakan maksimum</translation>
+    </message>
+    <message>
+        <source>largest displacement of any vertex from rest</source>
+        <translation>anjakan terbesar mana-mana bucu dari kedudukan rehat</translation>
+    </message>
+    <message>
+        <source>path length</source>
+        <translation>panjang laluan</translation>
+    </message>
+    <message>
+        <source>distance travelled by the tool tip</source>
+        <translation>jarak yang dilalui oleh hujung alat</translation>
+    </message>
+    <message>
+        <source>economy</source>
+        <translation>ekonomi</translation>
+    </message>
+    <message>
+        <source>ideal path length / path length (1 = no wasted motion)</source>
+        <translation>panjang laluan ideal / panjang laluan (1 = tiada gerakan sia-sia)</translation>
+    </message>
+    <message>
+        <source>lump error</source>
+        <translation>ralat ketulan</translation>
+    </message>
+    <message>
+        <source>distance from the contact point at the mark to the inclusion centre</source>
+        <translation>jarak dari titik sentuhan semasa tanda ke pusat kemasukan</translation>
+    </message>
+    <message>
+        <source>contact fraction</source>
+        <translation>pecahan sentuhan</translation>
+    </message>
+    <message>
+        <source>time in contact / tracing time</source>
+        <translation>masa bersentuhan / masa menjejak</translation>
+    </message>
+    <message>
+        <source>band fraction</source>
+        <translation>pecahan dalam jalur</translation>
+    </message>
+    <message>
+        <source>time in contact with the force in the band / tracing time</source>
+        <translation>masa bersentuhan dengan daya dalam jalur / masa menjejak</translation>
+    </message>
+    <message>
+        <source>path distance</source>
+        <translation>jarak dari laluan</translation>
+    </message>
+    <message>
+        <source>mean distance of the contact point from the path while in contact</source>
+        <translation>jarak purata titik sentuhan dari laluan semasa bersentuhan</translation>
+    </message>
+    <message>
+        <source>sensitivity</source>
+        <translation>kepekaan</translation>
+    </message>
+    <message>
+        <source>lumps found / lumps hidden</source>
+        <translation>ketulan dijumpai / ketulan tersembunyi</translation>
+    </message>
+    <message>
+        <source>positive predictive value</source>
+        <translation>nilai ramalan positif</translation>
+    </message>
+    <message>
+        <source>findings on a lump / findings</source>
+        <translation>penemuan pada ketulan / penemuan</translation>
+    </message>
+    <message>
+        <source>false alarms</source>
+        <translation>penggera palsu</translation>
+    </message>
+    <message>
+        <source>findings matched to no lump</source>
+        <translation>penemuan yang tidak dipadankan dengan mana-mana ketulan</translation>
+    </message>
+    <message>
+        <source>localisation</source>
+        <translation>penyetempatan</translation>
+    </message>
+    <message>
+        <source>mean distance from a found lump&apos;s centre to the finding on it</source>
+        <translation>jarak purata dari pusat ketulan yang dijumpai ke penemuan padanya</translation>
+    </message>
+    <message>
+        <source>coverage fraction</source>
+        <translation>pecahan liputan</translation>
+    </message>
+    <message>
+        <source>surface area examined with at least the coverage force / surface area</source>
+        <translation>luas permukaan yang diperiksa dengan sekurang-kurangnya daya liputan / luas permukaan</translation>
     </message>
 </context>
 <context>

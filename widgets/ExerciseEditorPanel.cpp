@@ -10,6 +10,7 @@
 #include "engine/exercise/ExerciseGeometry.h"
 #include "engine/scene/TissuePreset.h"
 #include "engine/scoring/TargetReachability.h"
+#include "engine/exercise/ExerciseKind.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -1179,7 +1180,7 @@ void ExerciseEditorPanel::showExercise(const Exercise& exercise) {
         // The rubric: the metrics of the type; defaults in grey until the exercise sets a line.
         std::vector<Metric> metrics;
         for (std::size_t i = 0; i < kMetricCount; ++i)
-            if (metricApplies(Metric(i), e.type)) metrics.push_back(Metric(i));
+            if (exerciseKind(e.type).measures(Metric(i))) metrics.push_back(Metric(i));
         mRubricTable->setRowCount(int(metrics.size()));
         double totalWeight = 0.0;
         for (int r = 0; r < int(metrics.size()); ++r) {
@@ -1347,7 +1348,7 @@ void ExerciseEditorPanel::changeType(ExerciseType type) {
     e.type = type;
     // Rubric lines of metrics the new type does not measure would make the file invalid.
     for (std::size_t i = 0; i < kMetricCount; ++i)
-        if (!metricApplies(Metric(i), type)) e.rubric[i].reset();
+        if (!exerciseKind(type).measures(Metric(i))) e.rubric[i].reset();
     mSelected = -1;
     pushEdit(e, tr("Change the type to %1").arg(typeText(type).toLower()));
 }

@@ -2,6 +2,7 @@
 
 #include "base/resources/ShippedResources.h"
 #include "engine/scoring/Staircase.h"
+#include "engine/exercise/ExerciseKind.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,7 @@ std::unique_ptr<ExerciseRun> ExerciseRun::load(const std::string& exercisePath, 
     }
     if (!level.empty()) {
         const auto& staircase = loaded.exercise->detectLumps.staircase;
-        if (loaded.exercise->type != ExerciseType::DetectLumps || !staircase) {
+        if (!exerciseKind(loaded.exercise->type).adaptive() || !staircase) {
             error = "--level: " + exercisePath + " has no staircase (detect_lumps.staircase)";
             return nullptr;
         }
@@ -69,7 +70,7 @@ std::unique_ptr<ExerciseRun> ExerciseRun::load(const std::string& exercisePath, 
             error = "--done-at: '" + doneAt + "' is not a time in seconds";
             return nullptr;
         }
-        if (run->mAssets.exercise.type != ExerciseType::DetectLumps) {
+        if (!exerciseKind(run->mAssets.exercise.type).finishedByTrainee()) {
             error = "--done-at: the exercise '" + run->mAssets.exercise.name + "' is " +
                     std::string(exerciseTypeName(run->mAssets.exercise.type)) +
                     ", which ends by itself (only detect_lumps examinations are finished by the trainee)";

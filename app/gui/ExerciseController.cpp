@@ -15,6 +15,7 @@
 #include "report/ScoreReportPdf.h"
 #include "widgets/TraineePanel.h"
 #include "widgets/Viewport.h"
+#include "engine/exercise/ExerciseKind.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -168,7 +169,7 @@ QString ExerciseController::startPreview(const Exercise& exercise) { return begi
 std::optional<Staircase> ExerciseController::traineeStaircase(const Exercise& exercise, qint64 traineeId,
                                                               QString& key) const {
     const auto& def = exercise.detectLumps.staircase;
-    if (exercise.type != ExerciseType::DetectLumps || !def || !mDatabase.isOpen() || traineeId < 0) return std::nullopt;
+    if (!exerciseKind(exercise.type).adaptive() || !def || !mDatabase.isOpen() || traineeId < 0) return std::nullopt;
     if (!staircaseDefProblem(*def).empty()) return std::nullopt;
     key = exerciseKey(QString::fromStdString(exercise.sourcePath), QString::fromStdString(exercise.name));
     const QString stored = mDatabase.staircase(traineeId, key);
@@ -222,7 +223,7 @@ QString ExerciseController::begin(const Exercise& requested, bool preview) {
                                 .arg(*mStaircaseLevel, 0, 'g', 4)
                           : QString());
     mPanel.setExerciseDescription(QString::fromStdString(exercise.description));
-    mPanel.setFinishShown(exercise.type == ExerciseType::DetectLumps);
+    mPanel.setFinishShown(exerciseKind(exercise.type).finishedByTrainee());
     mGaugeLevel = preview ? 1.0 : gaugeLevelFor(exercise);
     mPanel.setGaugeLevel(mGaugeLevel);
     // The combo names what runs (a preview from the welcome page or the editor too).
@@ -380,7 +381,7 @@ double ExerciseController::gaugeLevelFor(const Exercise& exercise) const {
 
 bool ExerciseController::finishExamination() {
     if (mPhase != Phase::Running || !mSession.recordingSession() || !mAssets ||
-        mAssets->exercise.type != ExerciseType::DetectLumps)
+        !exerciseKind(mAssets->exercise.type).finishedByTrainee())
         return false;
     mSession.recordingSession()->mark(kExaminationDoneMark);
     emit message(tr("Examination finished"));

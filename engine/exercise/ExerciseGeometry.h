@@ -33,6 +33,39 @@ struct ResolvedLump {
     std::size_t footprintVertices = 0;  ///< vertices with this lump under them
 };
 
+/// What an exercise's kind places on the mesh (ExerciseKind::place fills its part; the rest stays
+/// empty).
+struct PlacedGeometry {
+    std::vector<ResolvedTarget> targets;      ///< press targets
+    VertexId lumpVertex = kNoVertex;          ///< find the lump: the inclusion's centre vertex
+    glm::vec3 lumpCentreMm{0.0f};
+    /// Find the lump, detect lumps: every vertex's compliance factor (1 where the tissue is as set).
+    std::vector<float> compliance;
+    std::size_t inclusionVertices = 0;        ///< vertices with a factor below 1
+    std::vector<ResolvedLump> lumps;          ///< detect lumps
+    std::vector<float> engageDepthMm;         ///< detect lumps: per vertex, where a lump begins to resist
+    std::vector<std::int16_t> lumpOfVertex;   ///< detect lumps: per vertex, the lump under it (-1: none)
+    std::vector<glm::vec3> pathMm;            ///< trace: the snapped polyline
+    std::vector<VertexId> pathVertices;
+    std::vector<glm::vec3> coverageMm;        ///< trace: points at most 1 mm apart along it
+    double pathLengthMm = 0.0;
+};
+
+/// Snaps an exercise's surface points to a mesh, for its kind's ExerciseKind::place.
+class GeometryPlacer {
+public:
+    /// The first problem goes to `error`.
+    GeometryPlacer(const TissueMesh& mesh, std::string& error) : mMesh(mesh), mError(error) {}
+    /// The vertex of `point` (engine numbering); kNoVertex, with the first problem naming `key`,
+    /// when its vertex is not on the mesh.
+    VertexId place(const SurfacePoint& point, const std::string& key);
+    const TissueMesh& mesh() const { return mMesh; }
+
+private:
+    const TissueMesh& mMesh;
+    std::string& mError;
+};
+
 class ExerciseGeometry {
 public:
     /// Null with `error` naming the key when a vertex is not on the mesh.
@@ -50,28 +83,28 @@ public:
     const std::vector<std::uint32_t>& neighbourStart() const { return mNeighbourStart; }
     const std::vector<VertexId>& neighbours() const { return mNeighbours; }
 
-    const std::vector<ResolvedTarget>& targets() const { return mTargets; }
+    const std::vector<ResolvedTarget>& targets() const { return mPlaced.targets; }
 
     /// Find the lump: the centre vertex and its rest position, and the factor of every vertex
     /// (1 outside the inclusion); empty for other types.
-    VertexId lumpVertex() const { return mLumpVertex; }
-    glm::vec3 lumpCentreMm() const { return mLumpCentreMm; }
-    const std::vector<float>& compliance() const { return mCompliance; }
-    std::size_t inclusionVertexCount() const { return mInclusionVertices; }
+    VertexId lumpVertex() const { return mPlaced.lumpVertex; }
+    glm::vec3 lumpCentreMm() const { return mPlaced.lumpCentreMm; }
+    const std::vector<float>& compliance() const { return mPlaced.compliance; }
+    std::size_t inclusionVertexCount() const { return mPlaced.inclusionVertices; }
     /// Detect lumps: the lumps, and for every vertex the depth below it at which a lump begins to
     /// resist (engageDepthMm, 0 where there is none: with compliance 1 it does not matter) and the
     /// lump under it (-1: none). The compliance above is 1 / contrast over a lump.
-    const std::vector<ResolvedLump>& lumps() const { return mLumps; }
-    const std::vector<float>& engageDepthMm() const { return mEngageDepthMm; }
-    const std::vector<std::int16_t>& lumpOfVertex() const { return mLumpOfVertex; }
+    const std::vector<ResolvedLump>& lumps() const { return mPlaced.lumps; }
+    const std::vector<float>& engageDepthMm() const { return mPlaced.engageDepthMm; }
+    const std::vector<std::int16_t>& lumpOfVertex() const { return mPlaced.lumpOfVertex; }
 
     /// Trace: the polyline (snapped points), its length, and the points coverage is counted on
     /// (spaced at most 1 mm along it).
-    const std::vector<glm::vec3>& pathMm() const { return mPathMm; }
+    const std::vector<glm::vec3>& pathMm() const { return mPlaced.pathMm; }
     /// The vertex (engine numbering) of each polyline point.
-    const std::vector<VertexId>& pathVertices() const { return mPathVertices; }
-    double pathLengthMm() const { return mPathLengthMm; }
-    const std::vector<glm::vec3>& coverageSamplesMm() const { return mCoverageMm; }
+    const std::vector<VertexId>& pathVertices() const { return mPlaced.pathVertices; }
+    double pathLengthMm() const { return mPlaced.pathLengthMm; }
+    const std::vector<glm::vec3>& coverageSamplesMm() const { return mPlaced.coverageMm; }
     /// Distance from p to the polyline.
     double distanceToPathMm(const glm::vec3& p) const;
 
@@ -87,17 +120,7 @@ private:
     std::vector<float> mVertexAreaMm2;
     std::vector<std::uint32_t> mNeighbourStart;
     std::vector<VertexId> mNeighbours;
-    std::vector<ResolvedTarget> mTargets;
-    VertexId mLumpVertex = kNoVertex;
-    glm::vec3 mLumpCentreMm{0.0f};
-    std::vector<float> mCompliance;
-    std::size_t mInclusionVertices = 0;
-    std::vector<ResolvedLump> mLumps;
-    std::vector<float> mEngageDepthMm;
-    std::vector<std::int16_t> mLumpOfVertex;
-    std::vector<glm::vec3> mPathMm, mCoverageMm;
-    std::vector<VertexId> mPathVertices;
-    double mPathLengthMm = 0.0;
+    PlacedGeometry mPlaced;
 };
 
 /// Gives a scene the exercise's physics: for find-the-lump, the inclusion's compliance factors,

@@ -1,7 +1,8 @@
 #pragma once
-// What a scored session measures. Each metric has a stable name (the key in exercise rubrics and
-// in `palpate-cli score --json`), a unit, and the exercise types it applies to; docs/scoring.md
-// defines each one exactly.
+// What a scored session measures. One row per metric (MetricRow): its stable name (the key in
+// exercise rubrics and in `palpate-cli score --json`), its text for people, unit, display and
+// default thresholds; the kinds of exercise say which they measure and weigh (ExerciseKind.h).
+// docs/scoring.md defines each one exactly.
 
 #include <array>
 #include <cstddef>
@@ -41,6 +42,39 @@ enum class Metric {
 
 inline constexpr std::size_t kMetricCount = std::size_t(Metric::Count);
 
+struct Exercise;
+
+/// How a metric's value is shown to people (docs/scoring.md, "Metrics").
+enum class MetricDisplay {
+    Percent,  ///< a fraction 0..1 shown as a percentage ("85 %")
+    Number,   ///< a quantity with its unit and `decimals` ("3.2 mm")
+    Count,    ///< a whole number of events or findings
+};
+
+/// Everything said about one metric, once: the rubric's key, its name and description for people
+/// (English; translated in the context kMetricTextContext), its unit, how it is shown, which way is
+/// better, whether every kind of exercise measures it (else the kinds that do say so,
+/// ExerciseKind::ownMetrics), and its default rubric thresholds for an exercise.
+struct MetricRow {
+    Metric metric;
+    std::string_view key;          ///< "completion", "time_s", ...
+    const char* name;              ///< "Completion"
+    const char* description;       ///< one line
+    const char* unit;              ///< "", "s", "mm", "N", "N s", "mm^2", "events", "findings"
+    MetricDisplay display;
+    int decimals;                  ///< Number: decimals shown
+    bool everyKind;                ///< every kind of exercise measures it
+    /// The default full and zero marks for this exercise (full better than zero).
+    void (*thresholds)(const Exercise& exercise, double& fullMarks, double& zeroMarks);
+    /// Whether a larger value is better (from the default thresholds' order).
+    bool higherIsBetter() const;
+};
+
+/// The translation context of the metric rows' names and descriptions, the engine's own.
+inline constexpr const char* kMetricTextContext = "palpate::Metrics";
+
+/// The row of a metric.
+const MetricRow& metricRow(Metric metric);
 /// The rubric key: "completion", "time_s", ...
 std::string_view metricName(Metric metric);
 /// Unit as shown ("", "s", "mm", "N", "N s", "mm^2", "events").
@@ -48,10 +82,5 @@ std::string_view metricUnit(Metric metric);
 /// One line for people (the breakdown, the GUI's score card tooltips).
 std::string_view metricDescription(Metric metric);
 std::optional<Metric> parseMetric(std::string_view name);
-/// Whether an exercise of this type measures the metric.
-bool metricApplies(Metric metric, ExerciseType type);
-
-std::string_view exerciseTypeName(ExerciseType type);  ///< "press_targets", "find_lump", "trace", "detect_lumps"
-std::optional<ExerciseType> parseExerciseType(std::string_view name);
 
 }  // namespace palpate

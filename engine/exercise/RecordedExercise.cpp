@@ -1,5 +1,7 @@
 #include "engine/exercise/RecordedExercise.h"
 
+#include "engine/exercise/ExerciseKind.h"
+
 #include "engine/scene/HapticScene.h"
 #include "engine/core/MeshHash.h"
 #include "engine/exercise/ExerciseFile.h"
@@ -16,7 +18,7 @@ std::optional<Exercise> recordedExercise(const RecordingHeader& header, std::vec
 std::function<std::string(HapticScene&)> recordedExercisePhysics(const RecordingHeader& header) {
     std::vector<std::string> errors;
     const std::optional<Exercise> exercise = recordedExercise(header, errors);
-    if (!exercise || (exercise->type != ExerciseType::FindLump && exercise->type != ExerciseType::DetectLumps)) return {};
+    if (!exercise || !exerciseKind(exercise->type).changesTissue()) return {};
     // The geometry is built once, on the first scene of the recorded mesh, and shared by the
     // copies of the function (the player rebuilds scenes when it seeks back).
     auto geometry = std::make_shared<std::shared_ptr<const ExerciseGeometry>>();

@@ -1,5 +1,7 @@
 #include "engine/exercise/ScoreReport.h"
 
+#include "engine/exercise/ExerciseKind.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
@@ -38,7 +40,7 @@ std::string scoreReportToJson(const ScoreReport& r, int indent) {
            {"first_tick", r.firstTick},
            {"last_tick", r.lastTick},
            {"marks", r.marks}};
-    if (r.type == ExerciseType::PressTargets) {
+    if (!r.targets.empty()) {  // press targets
         Json targets = Json::array();
         for (const TargetResult& t : r.targets)
             targets.push_back({{"achieved", t.achieved},

@@ -1,5 +1,7 @@
 #include "engine/scoring/ExerciseSession.h"
 
+#include "engine/exercise/ExerciseKind.h"
+
 #include "engine/record/RecordingSession.h"
 
 namespace palpate {
@@ -36,7 +38,7 @@ std::optional<ExerciseAssets> loadExerciseAssets(const Exercise& exercise, const
         errors.push_back(source + ": " + error);
         return std::nullopt;
     }
-    if ((exercise.type == ExerciseType::FindLump || exercise.type == ExerciseType::DetectLumps) &&
+    if (exerciseKind(exercise.type).changesTissue() &&
         (a.preset.modelKind != ModelKind::SlopeRing || a.preset.method != SlopeRingMethod::Coherent)) {
         errors.push_back(source + ": tissue_preset: " + a.presetPath + " uses the " + presetModelName(a.preset) +
                          " model; an exercise's lumps need the coherent model");

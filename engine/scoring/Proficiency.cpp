@@ -1,4 +1,5 @@
 #include "engine/scoring/Proficiency.h"
+#include "engine/exercise/ExerciseKind.h"
 
 #include <cmath>
 
@@ -23,7 +24,7 @@ ProficiencyStandard buildProficiencyStandard(const Exercise& exercise, const std
     const Rubric rubric = effectiveRubric(exercise);
     for (std::size_t i = 0; i < kMetricCount; ++i) {
         const Metric metric = Metric(i);
-        if (!metricApplies(metric, exercise.type)) continue;
+        if (!exerciseKind(exercise.type).measures(metric)) continue;
         const std::string name(metricName(metric));
         std::vector<double> values;
         for (const MetricValues& e : experts)

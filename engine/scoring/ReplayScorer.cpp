@@ -1,5 +1,7 @@
 #include "engine/scoring/ReplayScorer.h"
 
+#include "engine/exercise/ExerciseKind.h"
+
 #include "engine/core/MeshHash.h"
 #include "engine/exercise/RecordedExercise.h"
 
@@ -74,7 +76,7 @@ std::unique_ptr<ReplayScorer> ReplayScorer::open(const RecordingReader& reader, 
             s->mWarnings.push_back("the recording was made with another version of exercise '" + recorded->name +
                                    "': graded by " + exerciseName + ", replayed with the recorded one's physics");
     }
-    if (!recorded && grade.type == ExerciseType::FindLump)
+    if (!recorded && exerciseKind(grade.type).changesTissue())
         s->mWarnings.push_back("the recording does not carry the exercise: replayed without the inclusion (the damage "
                                "metrics are right only if the session had none)");
 

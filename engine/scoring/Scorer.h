@@ -8,9 +8,8 @@
 // allocates its result).
 
 #include "engine/exercise/ExerciseGeometry.h"
+#include "engine/exercise/ExerciseTask.h"
 #include "engine/exercise/ScoreReport.h"
-#include "engine/scoring/ForcePhases.h"
-#include "engine/scoring/PalpationCoverage.h"
 #include "engine/scoring/ScoreSample.h"
 
 #include <cstdint>
@@ -54,18 +53,14 @@ public:
     double scoreSoFar() const { return report(false).score; }
 
 private:
-    void scorePressTargets(const ScoreSample& s, double dt, double forceN, bool haveContactPoint);
-    void scoreFindLump(bool markNow, bool haveContactPoint);
-    void scoreTrace(const ScoreSample& s, double dt, double forceN, bool haveContactPoint);
-    void scoreDetectLumps(bool markNow, bool doneNow, bool haveContactPoint);
-    void examinePalpation(const ScoreSample& s, double dt, double forceN, bool haveContactPoint);
-    ScoreReport report(bool palpationDetail) const;
-    PalpationSummary palpationSummary(bool detail) const;
+    ScoreReport report(bool detail) const;
     void complete();
 
     std::shared_ptr<const ExerciseGeometry> mGeometry;
     const Exercise& mExercise;
     double mPeriodS;
+    /// What the exercise's kind asks the trainee to do (ExerciseKind::makeTask).
+    std::unique_ptr<ExerciseTask> mTask;
 
     // Stream state.
     bool mStarted = false;
@@ -86,7 +81,7 @@ private:
     std::uint64_t mTicksScored = 0, mTicksAfterEnd = 0;
     std::vector<std::string> mWarnings;
 
-    // Sums.
+    // Sums every kind measures.
     double mElapsedS = 0.0;
     double mCompletionTimeS = 0.0;
     double mPeakForceN = 0.0, mImpulseNs = 0.0;
@@ -95,34 +90,6 @@ private:
     double mExcessiveS = 0.0;
     double mDamageS = 0.0, mDamageAreaMm2 = 0.0, mMaxDisplacementMm = 0.0;
     double mPathLengthMm = 0.0;
-
-    // Press targets.
-    std::size_t mTarget = 0;
-    double mHoldS = 0.0;
-    bool mHoldStarted = false;  // the force was inside the current target's window on it
-    bool mCarriedPress = false; // the press that achieved the previous target goes on
-    std::vector<TargetResult> mTargets;
-    std::vector<double> mTargetErrorSumMmS, mTargetErrorS;
-
-    // Find the lump.
-    bool mMarked = false, mMarkMeasured = false;
-    double mLumpErrorMm = 0.0;
-
-    // Trace.
-    bool mTracing = false;
-    double mTracingS = 0.0, mTraceContactS = 0.0, mBandS = 0.0, mPathDistanceSumMmS = 0.0;
-    std::vector<std::uint8_t> mCovered;
-    std::size_t mCoveredCount = 0;
-
-    // Palpation (find the lump, detect lumps): what was examined, how firmly, what was found.
-    bool mPalpation = false;
-    std::optional<PalpationCoverage> mCoverage;
-    std::vector<ForceMotionSample> mPhaseSamples;  // reserved for the time limit: no allocation per tick
-    bool mHavePreviousContact = false;
-    glm::vec3 mPreviousContactMm{0.0f};
-    std::vector<glm::dvec3> mFindingsMm;
-    std::vector<double> mLumpMaxSinkMm;   // per lump: the deepest the surface sank over it
-    double mSoftForceSumN = 0.0, mSoftSinkSumMm = 0.0;  // away from lumps: the tissue's force per mm of sink
 
     ScoreGuidance mGuidance;
 };

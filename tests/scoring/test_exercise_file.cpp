@@ -5,6 +5,7 @@
 #include "tests/record/RecordTestRig.h"
 #include "tests/scoring/ScoringTestRig.h"
 #include "tests/scoring/SyntheticTicks.h"
+#include "engine/exercise/ExerciseKind.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-// Force by phase (engine/scoring/ForcePhases.h) on synthetic sessions whose percentiles are
+// Force by phase (engine/exercise/ForcePhases.h) on synthetic sessions whose percentiles are
 // worked out by hand.
 
-#include "engine/scoring/ForcePhases.h"
+#include "engine/exercise/ForcePhases.h"
 
 #include <gtest/gtest.h>
 

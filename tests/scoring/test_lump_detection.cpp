@@ -1,7 +1,7 @@
-// Detection scoring (engine/scoring/LumpDetection.h): hits, misses, false alarms, sensitivity,
+// Detection scoring (engine/exercise/LumpDetection.h): hits, misses, false alarms, sensitivity,
 // positive predictive value and localisation, with answers worked out by hand.
 
-#include "engine/scoring/LumpDetection.h"
+#include "engine/exercise/LumpDetection.h"
 
 #include <gtest/gtest.h>
 

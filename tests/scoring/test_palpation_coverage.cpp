@@ -1,8 +1,8 @@
-// Coverage (engine/scoring/PalpationCoverage.h) on a flat grid whose answers are counted by hand:
+// Coverage (engine/exercise/PalpationCoverage.h) on a flat grid whose answers are counted by hand:
 // a 20 x 20 mm square of 1 mm cells, each cut into two triangles, so every interior vertex stands
 // for 1 mm^2 and the whole surface is 400 mm^2.
 
-#include "engine/scoring/PalpationCoverage.h"
+#include "engine/exercise/PalpationCoverage.h"
 
 #include <gtest/gtest.h>
 

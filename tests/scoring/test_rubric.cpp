@@ -3,6 +3,7 @@
 #include "engine/exercise/Rubric.h"
 #include "engine/scoring/Scorer.h"
 #include "tests/scoring/SyntheticTicks.h"
+#include "engine/exercise/ExerciseKind.h"
 
 #include <gtest/gtest.h>
 

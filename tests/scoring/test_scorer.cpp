@@ -3,6 +3,7 @@
 #include "engine/scoring/Scorer.h"
 #include "tests/scoring/SyntheticTicks.h"
 #include "tests/support/AllocationCounter.h"
+#include "engine/exercise/ExerciseKind.h"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +20,7 @@ constexpr double kExact = 1e-12;
 /// Only these rubric lines weigh; every other line of the type gets weight 0.
 void onlyLines(Exercise& e, std::initializer_list<std::pair<Metric, RubricItem>> lines) {
     for (std::size_t i = 0; i < kMetricCount; ++i)
-        if (metricApplies(Metric(i), e.type)) e.rubric[i] = RubricItem{0.0, 1.0, 0.0};
+        if (exerciseKind(e.type).measures(Metric(i))) e.rubric[i] = RubricItem{0.0, 1.0, 0.0};
     for (const auto& [m, item] : lines) e.rubric[std::size_t(m)] = item;
 }
 

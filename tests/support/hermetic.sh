@@ -5,13 +5,15 @@
 # writes the user's ~/.config or ~/.local/share, and no test sees what an earlier one left behind.
 # A test that uses one settings file across several processes names it inside its own HOME.
 set -u
-root=$(mktemp -d "${TMPDIR:-/tmp}/palpate-test.XXXXXX") || exit 125
+# Under /tmp, which every user can reach: a server a test starts as another user (pg_virtualenv's
+# postgres) must get into the test's TMPDIR, and a caller's own TMPDIR may be private (mode 700).
+root=$(mktemp -d /tmp/palpate-test.XXXXXX 2>/dev/null || mktemp -d "${TMPDIR:-/tmp}/palpate-test.XXXXXX") || exit 125
 trap 'rm -rf "$root"' EXIT
 trap 'exit 143' TERM
 trap 'exit 130' INT
 mkdir -p "$root/home" "$root/config" "$root/data" "$root/cache" "$root/state" "$root/runtime" "$root/tmp"
 chmod 700 "$root/runtime"
-# Like /tmp: a server a test starts under another user (pg_virtualenv's postgres) writes there too.
+# Like /tmp: that server writes there too.
 chmod 755 "$root" && chmod 1777 "$root/tmp"
 
 export HOME="$root/home"

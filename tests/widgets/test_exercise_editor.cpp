@@ -18,6 +18,7 @@
 #include "engine/exercise/ExerciseFile.h"
 #include "engine/exercise/ExerciseGeometry.h"
 #include "engine/scoring/TargetReachability.h"
+#include "engine/exercise/ExerciseKind.h"
 
 #include <QAction>
 #include <QWheelEvent>
@@ -478,7 +479,7 @@ TEST(ExerciseEditor, RubricEditsAreStoredAndSurviveSaveAndLoad) {
     auto* table = child<QTableWidget>(editor.panel, "rubricTable");
     // The metrics of the type, and only those.
     int applying = 0;
-    for (std::size_t i = 0; i < kMetricCount; ++i) applying += metricApplies(Metric(i), ExerciseType::PressTargets);
+    for (std::size_t i = 0; i < kMetricCount; ++i) applying += exerciseKind(ExerciseType::PressTargets).measures(Metric(i));
     EXPECT_EQ(table->rowCount(), applying);
     EXPECT_EQ(rubricRow(editor.panel, "lump_error_mm"), -1);
 

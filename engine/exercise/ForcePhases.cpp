@@ -1,4 +1,4 @@
-#include "engine/scoring/ForcePhases.h"
+#include "engine/exercise/ForcePhases.h"
 
 #include <algorithm>
 #include <cmath>

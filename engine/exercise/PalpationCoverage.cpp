@@ -1,4 +1,4 @@
-#include "engine/scoring/PalpationCoverage.h"
+#include "engine/exercise/PalpationCoverage.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,4 +1,4 @@
-#include "engine/scoring/LumpDetection.h"
+#include "engine/exercise/LumpDetection.h"
 
 #include <glm/geometric.hpp>
 

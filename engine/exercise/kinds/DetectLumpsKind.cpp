@@ -1,0 +1,310 @@
+// Detect lumps (docs/scoring.md, "Detect lumps"): examine the surface for zero or more lumps
+// hidden under it, mark each, and say when done.
+
+#include "engine/exercise/kinds/Kinds.h"
+
+#include "base/io/FileLimits.h"
+#include "base/io/JsonReader.h"
+#include "base/params/FieldTable.h"
+#include "engine/exercise/ExerciseGeometry.h"
+#include "engine/exercise/LumpDetection.h"
+#include "engine/exercise/PalpationExamination.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace palpate {
+
+namespace {
+
+/// Below this covered share the examination was not systematic enough (feedback).
+constexpr double kLowCoverageFraction = 0.6;
+
+constexpr const char* kStaircaseParameters[] = {"contrast", "depth_mm"};
+
+/// The distance from `origin` along the unit direction `dir` to the sphere (centre, radius): the
+/// nearer crossing ahead, 0 when the origin is inside, negative when the ray misses it.
+double rayToSphereMm(const glm::dvec3& origin, const glm::dvec3& dir, const glm::dvec3& centre, double radius) {
+    const glm::dvec3 oc = origin - centre;
+    const double c = glm::dot(oc, oc) - radius * radius;
+    if (c <= 0.0) return 0.0;
+    const double b = glm::dot(oc, dir);
+    const double disc = b * b - c;
+    if (disc < 0.0 || b > 0.0) return -1.0;  // misses, or the sphere is behind
+    return -b - std::sqrt(disc);
+}
+
+void readStaircase(JsonReader& r, const Json& j, const std::string& path, StaircaseDef& out) {
+    if (!r.object(j, path, {"parameter", "start", "step", "easiest", "hardest", "down", "up"})) return;
+    std::string parameter;
+    if (r.text(j, path, "parameter", parameter, true)) {
+        if (parameter == kStaircaseParameters[0]) out.parameter = StaircaseDef::Parameter::Contrast;
+        else if (parameter == kStaircaseParameters[1]) out.parameter = StaircaseDef::Parameter::DepthMm;
+        else r.error(JsonReader::join(path, "parameter"), "unknown parameter '" + parameter + "' (use contrast or depth_mm)");
+    }
+    r.number(j, path, "start", out.start, true);
+    r.number(j, path, "step", out.step, true);
+    r.number(j, path, "easiest", out.easiest, true);
+    r.number(j, path, "hardest", out.hardest, true);
+    double down = out.down, up = out.up;
+    if (r.number(j, path, "down", down)) {
+        if (down != std::floor(down) || down < 1 || down > 10)
+            r.error(JsonReader::join(path, "down"), "must be a whole number from 1 to 10");
+        else out.down = int(down);
+    }
+    if (r.number(j, path, "up", up)) {
+        if (up != std::floor(up) || up < 1 || up > 10) r.error(JsonReader::join(path, "up"), "must be a whole number from 1 to 10");
+        else out.up = int(up);
+    }
+}
+
+void validateStaircase(ExerciseChecker& c, const StaircaseDef& s) {
+    const auto text = ExerciseChecker::text;
+    const std::string key = "detect_lumps.staircase";
+    const bool contrast = s.parameter == StaircaseDef::Parameter::Contrast;
+    // The levels a lump can take: a contrast above 1 (1 is no lump), a depth of 0 or more.
+    const double lo = contrast ? 1.0 : 0.0, hi = 100.0;
+    bool ok = c.range(key + ".easiest", s.easiest, lo, hi, contrast);
+    ok = c.range(key + ".hardest", s.hardest, lo, hi, contrast) && ok;
+    if (ok && s.easiest == s.hardest) c.error(key + ".hardest", "equals easiest: the staircase could not move");
+    if (ok && contrast && s.easiest < s.hardest)
+        c.error(key + ".easiest", text(s.easiest) + " is below hardest " + text(s.hardest) +
+                                      ": a higher contrast is easier to feel");
+    if (ok && !contrast && s.easiest > s.hardest)
+        c.error(key + ".easiest", text(s.easiest) + " mm is deeper than hardest " + text(s.hardest) +
+                                      " mm: a shallower lump is easier to feel");
+    if (ok) c.range(key + ".start", s.start, std::min(s.easiest, s.hardest), std::max(s.easiest, s.hardest));
+    if (ok) c.range(key + ".step", s.step, 0.0, std::fabs(s.easiest - s.hardest), true);
+    c.range(key + ".down", s.down, 1, 10);
+    c.range(key + ".up", s.up, 1, 10);
+}
+
+class DetectLumpsTask final : public ExerciseTask {
+public:
+    DetectLumpsTask(std::shared_ptr<const ExerciseGeometry> geometry, double periodS)
+        : mGeometry(geometry), mExamination(std::move(geometry), periodS) {
+        mFindingsMm.reserve(64);
+    }
+
+    bool step(const TaskTick& t, ScoreGuidance& g) override {
+        mExamination.add(t, g);
+        if (t.mark && t.haveContactPoint) mFindingsMm.push_back(glm::dvec3(t.contactPointMm));
+        g.findings = int(mFindingsMm.size());
+        return t.done;
+    }
+    // Finished by the trainee: done; cut off by the time limit: as far as the surface was
+    // examined (only an examination that touched nothing is nothing done).
+    double completion(const ScoreGuidance& g) const override {
+        return g.completed ? 1.0 : mExamination.coveredFraction();
+    }
+    void report(ScoreReport& r, MeasuredMetrics& metrics, bool detail) const override {
+        const Exercise& e = mGeometry->exercise();
+        PalpationSummary p = mExamination.summary(detail);
+        p.findingsMm = mFindingsMm;
+        const auto& lumps = mGeometry->lumps();
+        std::vector<HiddenLump> hidden;
+        for (const ResolvedLump& l : lumps) hidden.push_back({glm::dvec3(l.surfaceMm), l.def.radiusMm});
+        p.detection = scoreDetection(hidden, mFindingsMm, {e.detectLumps.toleranceMm});
+        // The deepest lump, and whether the surface over it ever sank as deep as its top.
+        std::size_t deepest = lumps.size();
+        for (std::size_t k = 0; k < lumps.size(); ++k)
+            if (deepest == lumps.size() || lumps[k].def.depthMm > lumps[deepest].def.depthMm) deepest = k;
+        const double forcePerMm = mExamination.forcePerMm().value_or(0.0);
+        if (deepest < lumps.size()) {
+            const double depthMm = lumps[deepest].def.depthMm;
+            if (forcePerMm > 0.0) p.deepestLumpReachForceN = depthMm * forcePerMm;
+            const double sunkMm = mExamination.lumpMaxSinkMm()[deepest];
+            const bool missed = p.detection->findingOfLump[deepest] < 0;
+            if (missed && sunkMm < depthMm) {
+                std::string text = "Pressed too lightly to reach the deepest lump: it lies " + oneDecimal(depthMm) +
+                                   " mm under the surface, and over it the surface sank " + oneDecimal(sunkMm) +
+                                   " mm at most.";
+                if (p.deepestLumpReachForceN)
+                    text += " Press to about " + oneDecimal(*p.deepestLumpReachForceN) + " N or more to feel it.";
+                p.feedback.push_back({"pressed_too_lightly", text});
+            }
+        }
+        if (p.detection->falseAlarms > 0)
+            p.feedback.push_back({"false_alarms", std::to_string(p.detection->falseAlarms) +
+                                                      (p.detection->falseAlarms == 1 ? " finding was" : " findings were") +
+                                                      " on no lump: mark only where the tissue resists more than around it."});
+        // Only an examination of the whole surface is judged on how much of it was covered (find
+        // the lump may go straight to it).
+        if (p.coverageFraction < kLowCoverageFraction)
+            p.feedback.push_back({"low_coverage", "Examined " + oneDecimal(100.0 * p.coverageFraction) + " % of the surface at " +
+                                                      oneDecimal(e.coverage.minForceN) +
+                                                      " N or more: cover all of it, in overlapping rows."});
+        mExamination.addCommonFeedback(p);
+        const DetectionResult& d = *p.detection;
+        metrics.put(Metric::Sensitivity, d.sensitivity.value_or(0.0), d.sensitivity.has_value());
+        metrics.put(Metric::PositivePredictiveValue, d.positivePredictive.value_or(0.0), d.positivePredictive.has_value());
+        metrics.put(Metric::FalseAlarms, double(d.falseAlarms));
+        const auto localisation = d.meanLocalisationMm();
+        metrics.put(Metric::LocalisationMm, localisation.value_or(0.0), localisation.has_value());
+        metrics.put(Metric::CoverageFraction, p.coverageFraction);
+        r.palpation = std::move(p);
+    }
+
+private:
+    std::shared_ptr<const ExerciseGeometry> mGeometry;
+    PalpationExamination mExamination;
+    std::vector<glm::dvec3> mFindingsMm;
+};
+
+class DetectLumpsKind final : public ExerciseKind {
+public:
+    ExerciseType type() const override { return ExerciseType::DetectLumps; }
+    std::string_view key() const override { return "detect_lumps"; }
+    const char* label() const override { return PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Detect lumps"); }
+    bool palpation() const override { return true; }
+    bool changesTissue() const override { return true; }
+    bool finishedByTrainee() const override { return true; }
+    bool adaptive() const override { return true; }
+
+    std::span<const Metric> ownMetrics() const override {
+        static constexpr Metric kOwn[] = {Metric::Sensitivity, Metric::PositivePredictiveValue, Metric::FalseAlarms,
+                                          Metric::LocalisationMm, Metric::CoverageFraction};
+        return kOwn;
+    }
+    std::span<const MetricWeight> defaultWeights() const override {
+        static constexpr MetricWeight kWeights[] = {
+            {Metric::Sensitivity, 35},   {Metric::FalseAlarms, 20},           {Metric::LocalisationMm, 10},
+            {Metric::CoverageFraction, 15}, {Metric::TimeS, 5},               {Metric::ExcessiveForceFraction, 5},
+            {Metric::DamageTimeS, 10},
+        };
+        return kWeights;
+    }
+    // Without lumps there is nothing to find or to localise: those lines do not count.
+    bool counts(const Exercise& e, Metric m) const override {
+        return !(e.detectLumps.lumps.empty() && (m == Metric::Sensitivity || m == Metric::LocalisationMm));
+    }
+
+    std::vector<std::string> sectionKeys() const override { return {"lumps", "tolerance_mm", "staircase"}; }
+    void readSection(JsonReader& r, const Json& s, Exercise& e) const override {
+        DetectLumpsDef& out = e.detectLumps;
+        const std::string path = "detect_lumps";
+        r.number(s, path, "tolerance_mm", out.toleranceMm);
+        if (!s.contains("lumps")) {
+            r.error("detect_lumps.lumps", "missing (an exercise without lumps says \"lumps\": [])");
+        } else if (!s.at("lumps").is_array()) {
+            r.error("detect_lumps.lumps", "must be an array of lumps");
+        } else {
+            const Json& a = s.at("lumps");
+            for (std::size_t i = 0; i < a.size() && i <= std::size_t(kMaxLumps); ++i) {
+                const std::string key = "detect_lumps.lumps[" + std::to_string(i) + "]";
+                LumpDef lump;
+                if (r.object(a[i], key, {"vertex", "point_mm", "radius_mm", "depth_mm", "contrast"})) {
+                    readSurfacePoint(r, a[i], key, lump.at);
+                    r.number(a[i], key, "radius_mm", lump.radiusMm, true);
+                    r.number(a[i], key, "depth_mm", lump.depthMm, true);
+                    r.number(a[i], key, "contrast", lump.contrast, true);
+                }
+                out.lumps.push_back(lump);
+            }
+        }
+        if (s.contains("staircase")) {
+            StaircaseDef staircase;
+            readStaircase(r, s.at("staircase"), "detect_lumps.staircase", staircase);
+            out.staircase = staircase;
+        }
+    }
+    Json writeSection(const Exercise& e) const override {
+        Json lumps = Json::array();
+        for (const LumpDef& l : e.detectLumps.lumps) {
+            Json o = surfacePointJson(l.at);
+            o["radius_mm"] = l.radiusMm;
+            o["depth_mm"] = l.depthMm;
+            o["contrast"] = l.contrast;
+            lumps.push_back(o);
+        }
+        Json d = {{"lumps", lumps}, {"tolerance_mm", e.detectLumps.toleranceMm}};
+        if (const auto& st = e.detectLumps.staircase)
+            d["staircase"] = {{"parameter", kStaircaseParameters[int(st->parameter)]},
+                              {"start", st->start},
+                              {"step", st->step},
+                              {"easiest", st->easiest},
+                              {"hardest", st->hardest},
+                              {"down", st->down},
+                              {"up", st->up}};
+        return d;
+    }
+    void validate(const Exercise& e, ExerciseChecker& c) const override {
+        const DetectLumpsDef& d = e.detectLumps;
+        if (d.lumps.size() > std::size_t(kMaxLumps))
+            c.error("detect_lumps.lumps", "has more than " + std::to_string(kMaxLumps) + " lumps");
+        for (std::size_t i = 0; i < d.lumps.size() && i < std::size_t(kMaxLumps); ++i) {
+            const LumpDef& l = d.lumps[i];
+            const std::string key = "detect_lumps.lumps[" + std::to_string(i) + "]";
+            c.point(key, l.at);
+            c.range(key + ".radius_mm", l.radiusMm, 0.0, 100.0, true);
+            c.range(key + ".depth_mm", l.depthMm, 0.0, 100.0);
+            c.range(key + ".contrast", l.contrast, 1.0, 100.0, true);
+        }
+        c.range("detect_lumps.tolerance_mm", d.toleranceMm, 0.0, 1000.0, true);
+        if (d.staircase) validateStaircase(c, *d.staircase);
+    }
+
+    void place(const Exercise& exercise, GeometryPlacer& placer, PlacedGeometry& placed, std::string&) const override {
+        const auto& rest = placer.mesh().restPositionsMm();
+        const auto& normals = placer.mesh().restNormals();
+        const std::size_t n = rest.size();
+        // Each vertex looks straight in (along its rest normal): the first lump that ray meets is
+        // the one under it, and how far in it lies is where pressing starts to meet it.
+        placed.compliance.assign(n, 1.0f);
+        placed.engageDepthMm.assign(n, 0.0f);
+        placed.lumpOfVertex.assign(n, -1);
+        std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
+        for (std::size_t k = 0; k < exercise.detectLumps.lumps.size(); ++k) {
+            const LumpDef& def = exercise.detectLumps.lumps[k];
+            ResolvedLump lump;
+            lump.def = def;
+            lump.vertex = placer.place(def.at, "detect_lumps.lumps[" + std::to_string(k) + "]");
+            if (lump.vertex == kNoVertex) break;
+            lump.surfaceMm = rest[lump.vertex];
+            const glm::dvec3 centre =
+                glm::dvec3(lump.surfaceMm) - (def.depthMm + def.radiusMm) * glm::dvec3(normals[lump.vertex]);
+            lump.centreMm = glm::vec3(centre);
+            for (VertexId v = 0; v < n; ++v) {
+                const double depth = rayToSphereMm(glm::dvec3(rest[v]), -glm::dvec3(normals[v]), centre, def.radiusMm);
+                // Met no deeper than the lump's centre lies under its own point: a ray that
+                // crosses the whole body to reach it from behind is not over it.
+                if (depth < 0.0 || depth > def.depthMm + def.radiusMm) continue;
+                const float c = float(1.0 / def.contrast);
+                // The nearest lump under a vertex is the one it meets; at equal depth the stiffer.
+                if (depth < nearest[v] || (depth == nearest[v] && c < placed.compliance[v])) {
+                    nearest[v] = depth;
+                    placed.compliance[v] = c;
+                    placed.engageDepthMm[v] = float(depth);
+                    placed.lumpOfVertex[v] = std::int16_t(k);
+                }
+            }
+            placed.lumps.push_back(lump);
+        }
+        for (VertexId v = 0; v < n; ++v)
+            if (placed.lumpOfVertex[v] >= 0 && std::size_t(placed.lumpOfVertex[v]) < placed.lumps.size()) {
+                ++placed.lumps[std::size_t(placed.lumpOfVertex[v])].footprintVertices;
+                ++placed.inclusionVertices;
+            }
+    }
+    std::vector<ExerciseDemand> demands(const Exercise& e) const override {
+        double deepest = 0.0;
+        for (const LumpDef& lump : e.detectLumps.lumps) deepest = std::max(deepest, lump.depthMm);
+        if (deepest > 0.0) return {{"the deepest lump (" + demandNumber(deepest) + " mm down)", 0.0, deepest}};
+        return {{"the firmest press allowed (" + demandNumber(e.excessiveForceN) + " N)", e.excessiveForceN, 0.0}};
+    }
+    std::unique_ptr<ExerciseTask> makeTask(std::shared_ptr<const ExerciseGeometry> geometry, double periodS) const override {
+        return std::make_unique<DetectLumpsTask>(std::move(geometry), periodS);
+    }
+};
+
+}  // namespace
+
+const ExerciseKind& detectLumpsKind() {
+    static const DetectLumpsKind kind;
+    return kind;
+}
+
+}  // namespace palpate

@@ -1,0 +1,135 @@
+// Find the lump (docs/scoring.md, "Find the lump"): a stiffer region of the tissue, found by
+// palpation and marked.
+
+#include "engine/exercise/kinds/Kinds.h"
+
+#include "base/io/JsonReader.h"
+#include "base/params/FieldTable.h"
+#include "engine/exercise/ExerciseGeometry.h"
+#include "engine/exercise/PalpationExamination.h"
+
+#include <glm/geometric.hpp>
+
+namespace palpate {
+
+namespace {
+
+double distance(const glm::vec3& a, const glm::vec3& b) { return glm::length(glm::dvec3(a) - glm::dvec3(b)); }
+
+class FindLumpTask final : public ExerciseTask {
+public:
+    FindLumpTask(std::shared_ptr<const ExerciseGeometry> geometry, double periodS)
+        : mGeometry(geometry), mExamination(std::move(geometry), periodS) {}
+
+    bool step(const TaskTick& t, ScoreGuidance& g) override {
+        mExamination.add(t, g);
+        if (!t.mark || mMarked) return false;
+        mMarked = true;
+        g.marked = true;
+        if (t.haveContactPoint) {
+            mLumpErrorMm = distance(t.contactPointMm, mGeometry->lumpCentreMm());
+            mMarkMeasured = true;
+        }
+        return true;
+    }
+    double completion(const ScoreGuidance&) const override { return mMarked ? 1.0 : 0.0; }
+    std::optional<double> idealPathMm(const glm::vec3& startMm) const override {
+        if (!mMarked) return std::nullopt;
+        return distance(startMm, mGeometry->lumpCentreMm());
+    }
+    void report(ScoreReport& r, MeasuredMetrics& metrics, bool detail) const override {
+        metrics.put(Metric::LumpErrorMm, mLumpErrorMm, mMarkMeasured);
+        r.palpation = mExamination.summary(detail);
+        mExamination.addCommonFeedback(*r.palpation);
+        metrics.put(Metric::CoverageFraction, r.palpation->coverageFraction);
+    }
+
+private:
+    std::shared_ptr<const ExerciseGeometry> mGeometry;
+    PalpationExamination mExamination;
+    bool mMarked = false, mMarkMeasured = false;
+    double mLumpErrorMm = 0.0;
+};
+
+class FindLumpKind final : public ExerciseKind {
+public:
+    ExerciseType type() const override { return ExerciseType::FindLump; }
+    std::string_view key() const override { return "find_lump"; }
+    const char* label() const override { return PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Find the lump"); }
+    bool palpation() const override { return true; }
+    bool changesTissue() const override { return true; }
+
+    std::span<const Metric> ownMetrics() const override {
+        static constexpr Metric kOwn[] = {Metric::Economy, Metric::LumpErrorMm, Metric::CoverageFraction};
+        return kOwn;
+    }
+    std::span<const MetricWeight> defaultWeights() const override {
+        static constexpr MetricWeight kWeights[] = {
+            {Metric::Completion, 20},           {Metric::LumpErrorMm, 40},
+            {Metric::TimeS, 10},                {Metric::ExcessiveForceEvents, 5},
+            {Metric::ExcessiveForceFraction, 10}, {Metric::DamageTimeS, 15},
+        };
+        return kWeights;
+    }
+
+    std::vector<std::string> sectionKeys() const override { return {"inclusion"}; }
+    void readSection(JsonReader& r, const Json& s, Exercise& e) const override {
+        if (!s.contains("inclusion")) {
+            r.error("find_lump.inclusion", "missing");
+            return;
+        }
+        const Json& inc = s.at("inclusion");
+        const std::string path = "find_lump.inclusion";
+        if (!r.object(inc, path, {"centre", "radius_mm", "stiffness_factor"})) return;
+        InclusionDef& d = e.findLump.inclusion;
+        if (!inc.contains("centre")) r.error(path + ".centre", "missing");
+        else if (r.object(inc.at("centre"), path + ".centre", {"vertex", "point_mm"}))
+            readSurfacePoint(r, inc.at("centre"), path + ".centre", d.centre);
+        r.number(inc, path, "radius_mm", d.radiusMm, true);
+        r.number(inc, path, "stiffness_factor", d.stiffnessFactor, true);
+    }
+    Json writeSection(const Exercise& e) const override {
+        const InclusionDef& d = e.findLump.inclusion;
+        return {{"inclusion",
+                 {{"centre", surfacePointJson(d.centre)}, {"radius_mm", d.radiusMm}, {"stiffness_factor", d.stiffnessFactor}}}};
+    }
+    void validate(const Exercise& e, ExerciseChecker& c) const override {
+        const InclusionDef& inc = e.findLump.inclusion;
+        c.point("find_lump.inclusion.centre", inc.centre);
+        c.range("find_lump.inclusion.radius_mm", inc.radiusMm, 0.0, 1000.0, true);
+        c.range("find_lump.inclusion.stiffness_factor", inc.stiffnessFactor, 0.0, 1.0, true);
+    }
+
+    void place(const Exercise& e, GeometryPlacer& placer, PlacedGeometry& placed, std::string&) const override {
+        const InclusionDef& inc = e.findLump.inclusion;
+        placed.lumpVertex = placer.place(inc.centre, "find_lump.inclusion.centre");
+        if (placed.lumpVertex == kNoVertex) return;
+        const auto& rest = placer.mesh().restPositionsMm();
+        const std::size_t n = rest.size();
+        placed.lumpCentreMm = rest[placed.lumpVertex];
+        placed.compliance.assign(n, 1.0f);
+        const double r2 = inc.radiusMm * inc.radiusMm;
+        for (VertexId v = 0; v < n; ++v) {
+            const glm::dvec3 d = glm::dvec3(rest[v]) - glm::dvec3(placed.lumpCentreMm);
+            if (glm::dot(d, d) <= r2) {
+                placed.compliance[v] = float(inc.stiffnessFactor);
+                ++placed.inclusionVertices;
+            }
+        }
+    }
+    std::vector<ExerciseDemand> demands(const Exercise& e) const override {
+        return {{"the firmest press allowed (" + demandNumber(e.excessiveForceN) + " N)", e.excessiveForceN, 0.0}};
+    }
+    std::unique_ptr<ExerciseTask> makeTask(std::shared_ptr<const ExerciseGeometry> geometry, double periodS) const override {
+        return std::make_unique<FindLumpTask>(std::move(geometry), periodS);
+    }
+};
+
+}  // namespace
+
+const ExerciseKind& findLumpKind() {
+    static const FindLumpKind kind;
+    return kind;
+}
+
+}  // namespace palpate
