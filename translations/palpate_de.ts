@@ -856,18 +856,6 @@
         <translation>Toleranz:</translation>
     </message>
     <message>
-        <source>Press targets</source>
-        <translation>Ziele drücken</translation>
-    </message>
-    <message>
-        <source>Find the lump</source>
-        <translation>Die Verhärtung finden</translation>
-    </message>
-    <message>
-        <source>Trace a path</source>
-        <translation>Einem Pfad folgen</translation>
-    </message>
-    <message>
         <source>A new exercise: press a sequence of surface targets, each with a force window and a hold.</source>
         <translation>Eine neue Übung: eine Folge von Zielen auf der Oberfläche drücken, jedes mit einem Kraftfenster und einer Haltezeit.</translation>
     </message>
@@ -1596,20 +1584,12 @@
         <translation>mesh_unit: Die Ansicht zeigt %1 in %2 gelesen, diese Übung liest es in %3: „Dieses Netz zeigen“ drücken, um Punkte per Klick zu setzen</translation>
     </message>
     <message>
-        <source>Detect lumps</source>
-        <translation>Knoten finden</translation>
-    </message>
-    <message>
         <source>%1 is a detect-lumps exercise, which this editor cannot edit yet: edit its file (docs/scoring.md lists the keys); trainees can run it.</source>
         <translation>%1 ist eine Übung „Knoten finden“, die dieser Editor noch nicht bearbeiten kann: Bearbeiten Sie die Datei (docs/scoring.md nennt die Schlüssel); Lernende können sie ausführen.</translation>
     </message>
 </context>
 <context>
     <name>palpate::ExerciseMarkers</name>
-    <message>
-        <source>lump %1, %2 mm deep</source>
-        <translation>Knoten %1, %2 mm tief</translation>
-    </message>
     <message>
         <source>examined: %1 to %2 N (largest force)</source>
         <translation>untersucht: %1 bis %2 N (größte Kraft)</translation>
@@ -1632,6 +1612,109 @@
     <message>
         <source>Trace a path</source>
         <translation>Einem Pfad folgen</translation>
+    </message>
+    <message>
+        <source>lump %1, %2 mm deep</source>
+        <translation>Knoten %1, %2 mm tief</translation>
+    </message>
+    <message>
+        <source>Mark a lump where the tool presses now (M)</source>
+        <translation>Einen Knoten dort markieren, wo das Werkzeug jetzt drückt (M)</translation>
+    </message>
+    <message>
+        <source>Search the whole surface, press in where it feels different, Mark (M) each lump; Finish (F7) when done</source>
+        <translation>Die ganze Oberfläche absuchen, wo es sich anders anfühlt eindrücken, jeden Knoten markieren (M); zum Schluss Beenden (F7)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n finding(s) marked</source>
+        <translation>
+            <numerusform>%n Befund markiert</numerusform>
+            <numerusform>%n Befunde markiert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>in contact</source>
+        <translation>in Kontakt</translation>
+    </message>
+    <message>
+        <source>not in contact</source>
+        <translation>nicht in Kontakt</translation>
+    </message>
+    <message>
+        <source>surface examined %p%</source>
+        <translation>Oberfläche untersucht %p%</translation>
+    </message>
+    <message>
+        <source>lump</source>
+        <translation>Verhärtung</translation>
+    </message>
+    <message>
+        <source>Marked. Mark again to correct, or Stop to finish.</source>
+        <translation>Markiert. Erneut markieren, um zu korrigieren, oder „Stoppen“, um abzuschließen.</translation>
+    </message>
+    <message>
+        <source>Palpate gently; press Mark (M) while you press on the lump</source>
+        <translation>Behutsam abtasten; „Markieren“ (M) drücken, während Sie auf die Verhärtung drücken</translation>
+    </message>
+    <message>
+        <source>In contact</source>
+        <translation>In Kontakt</translation>
+    </message>
+    <message>
+        <source>Not in contact</source>
+        <translation>Kein Kontakt</translation>
+    </message>
+    <message>
+        <source>marked</source>
+        <translation>markiert</translation>
+    </message>
+    <message>
+        <source>not marked yet</source>
+        <translation>noch nicht markiert</translation>
+    </message>
+    <message>
+        <source>Target %1 of %2: press with %3 and hold</source>
+        <translation>Ziel %1 von %2: mit %3 drücken und halten</translation>
+    </message>
+    <message>
+        <source>On target</source>
+        <translation>Auf dem Ziel</translation>
+    </message>
+    <message>
+        <source>Move to the blue marker (%1 mm away)</source>
+        <translation>Zur blauen Markierung bewegen (%1 mm entfernt)</translation>
+    </message>
+    <message>
+        <source>hold %p%</source>
+        <translation>halten %p%</translation>
+    </message>
+    <message>
+        <source>All targets done</source>
+        <translation>Alle Ziele erledigt</translation>
+    </message>
+    <message>
+        <source>No target left</source>
+        <translation>Kein Ziel mehr</translation>
+    </message>
+    <message>
+        <source>start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>end</source>
+        <translation>Ende</translation>
+    </message>
+    <message>
+        <source>Follow the line with %1</source>
+        <translation>Der Linie mit %1 folgen</translation>
+    </message>
+    <message>
+        <source>%1 mm from the line</source>
+        <translation>%1 mm von der Linie</translation>
+    </message>
+    <message>
+        <source>covered %p%</source>
+        <translation>abgedeckt %p%</translation>
     </message>
 </context>
 <context>
@@ -5585,66 +5668,6 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
         <translation>Wird gestartet…</translation>
     </message>
     <message>
-        <source>Target %1 of %2: press with %3 and hold</source>
-        <translation>Ziel %1 von %2: mit %3 drücken und halten</translation>
-    </message>
-    <message>
-        <source>On target</source>
-        <translation>Auf dem Ziel</translation>
-    </message>
-    <message>
-        <source>Move to the blue marker (%1 mm away)</source>
-        <translation>Zur blauen Markierung bewegen (%1 mm entfernt)</translation>
-    </message>
-    <message>
-        <source>hold %p%</source>
-        <translation>halten %p%</translation>
-    </message>
-    <message>
-        <source>All targets done</source>
-        <translation>Alle Ziele erledigt</translation>
-    </message>
-    <message>
-        <source>No target left</source>
-        <translation>Kein Ziel mehr</translation>
-    </message>
-    <message>
-        <source>Marked. Mark again to correct, or Stop to finish.</source>
-        <translation>Markiert. Erneut markieren, um zu korrigieren, oder „Stoppen“, um abzuschließen.</translation>
-    </message>
-    <message>
-        <source>Palpate gently; press Mark (M) while you press on the lump</source>
-        <translation>Behutsam abtasten; „Markieren“ (M) drücken, während Sie auf die Verhärtung drücken</translation>
-    </message>
-    <message>
-        <source>In contact</source>
-        <translation>In Kontakt</translation>
-    </message>
-    <message>
-        <source>Not in contact</source>
-        <translation>Kein Kontakt</translation>
-    </message>
-    <message>
-        <source>marked</source>
-        <translation>markiert</translation>
-    </message>
-    <message>
-        <source>not marked yet</source>
-        <translation>noch nicht markiert</translation>
-    </message>
-    <message>
-        <source>Follow the line with %1</source>
-        <translation>Der Linie mit %1 folgen</translation>
-    </message>
-    <message>
-        <source>%1 mm from the line</source>
-        <translation>%1 mm von der Linie</translation>
-    </message>
-    <message>
-        <source>covered %p%</source>
-        <translation>abgedeckt %p%</translation>
-    </message>
-    <message>
         <source>Time left %1 s · score so far %2</source>
         <translation>Verbleibende Zeit %1 s · bisherige Punktzahl %2</translation>
     </message>
@@ -5659,33 +5682,6 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
     <message>
         <source>End the examination: every lump you found is marked (F7)</source>
         <translation>Untersuchung beenden: Jeder gefundene Knoten ist markiert (F7)</translation>
-    </message>
-    <message>
-        <source>Mark a lump where the tool presses now (M)</source>
-        <translation>Einen Knoten dort markieren, wo das Werkzeug jetzt drückt (M)</translation>
-    </message>
-    <message>
-        <source>Search the whole surface, press in where it feels different, Mark (M) each lump; Finish (F7) when done</source>
-        <translation>Die ganze Oberfläche absuchen, wo es sich anders anfühlt eindrücken, jeden Knoten markieren (M); zum Schluss Beenden (F7)</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n finding(s) marked</source>
-        <translation>
-            <numerusform>%n Befund markiert</numerusform>
-            <numerusform>%n Befunde markiert</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>in contact</source>
-        <translation>in Kontakt</translation>
-    </message>
-    <message>
-        <source>not in contact</source>
-        <translation>nicht in Kontakt</translation>
-    </message>
-    <message>
-        <source>surface examined %p%</source>
-        <translation>Oberfläche untersucht %p%</translation>
     </message>
     <message>
         <source>E&amp;xpert reference session</source>

@@ -856,18 +856,6 @@
         <translation>Toleransi:</translation>
     </message>
     <message>
-        <source>Press targets</source>
-        <translation>Tekan sasaran</translation>
-    </message>
-    <message>
-        <source>Find the lump</source>
-        <translation>Cari ketulan</translation>
-    </message>
-    <message>
-        <source>Trace a path</source>
-        <translation>Jejaki laluan</translation>
-    </message>
-    <message>
         <source>A new exercise: press a sequence of surface targets, each with a force window and a hold.</source>
         <translation>Latihan baharu: tekan satu jujukan sasaran pada permukaan, setiap satu dengan tetingkap daya dan tempoh tahan.</translation>
     </message>
@@ -1596,20 +1584,12 @@
         <translation>mesh_unit: paparan menunjukkan %1 dibaca dalam %2, latihan ini membacanya dalam %3: tekan Tunjukkan jejaring ini untuk meletakkan titik dengan mengklik</translation>
     </message>
     <message>
-        <source>Detect lumps</source>
-        <translation>Kesan ketulan</translation>
-    </message>
-    <message>
         <source>%1 is a detect-lumps exercise, which this editor cannot edit yet: edit its file (docs/scoring.md lists the keys); trainees can run it.</source>
         <translation>%1 ialah latihan kesan ketulan yang belum boleh disunting oleh penyunting ini: sunting failnya (docs/scoring.md menyenaraikan kunci); pelatih boleh menjalankannya.</translation>
     </message>
 </context>
 <context>
     <name>palpate::ExerciseMarkers</name>
-    <message>
-        <source>lump %1, %2 mm deep</source>
-        <translation>ketulan %1, sedalam %2 mm</translation>
-    </message>
     <message>
         <source>examined: %1 to %2 N (largest force)</source>
         <translation>diperiksa: %1 hingga %2 N (daya terbesar)</translation>
@@ -1632,6 +1612,108 @@
     <message>
         <source>Trace a path</source>
         <translation>Jejaki laluan</translation>
+    </message>
+    <message>
+        <source>lump %1, %2 mm deep</source>
+        <translation>ketulan %1, sedalam %2 mm</translation>
+    </message>
+    <message>
+        <source>Mark a lump where the tool presses now (M)</source>
+        <translation>Tanda ketulan di tempat alat menekan sekarang (M)</translation>
+    </message>
+    <message>
+        <source>Search the whole surface, press in where it feels different, Mark (M) each lump; Finish (F7) when done</source>
+        <translation>Cari seluruh permukaan, tekan di tempat yang terasa berbeza, Tanda (M) setiap ketulan; Tamat (F7) apabila selesai</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n finding(s) marked</source>
+        <translation>
+            <numerusform>%n penemuan ditanda</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>in contact</source>
+        <translation>bersentuhan</translation>
+    </message>
+    <message>
+        <source>not in contact</source>
+        <translation>tidak bersentuhan</translation>
+    </message>
+    <message>
+        <source>surface examined %p%</source>
+        <translation>permukaan diperiksa %p%</translation>
+    </message>
+    <message>
+        <source>lump</source>
+        <translation>ketulan</translation>
+    </message>
+    <message>
+        <source>Marked. Mark again to correct, or Stop to finish.</source>
+        <translation>Ditanda. Tanda lagi untuk membetulkan, atau Henti untuk selesai.</translation>
+    </message>
+    <message>
+        <source>Palpate gently; press Mark (M) while you press on the lump</source>
+        <translation>Palpasi dengan lembut; tekan Tanda (M) semasa anda menekan ketulan</translation>
+    </message>
+    <message>
+        <source>In contact</source>
+        <translation>Bersentuhan</translation>
+    </message>
+    <message>
+        <source>Not in contact</source>
+        <translation>Tidak bersentuhan</translation>
+    </message>
+    <message>
+        <source>marked</source>
+        <translation>ditanda</translation>
+    </message>
+    <message>
+        <source>not marked yet</source>
+        <translation>belum ditanda</translation>
+    </message>
+    <message>
+        <source>Target %1 of %2: press with %3 and hold</source>
+        <translation>Sasaran %1 daripada %2: tekan dengan %3 dan tahan</translation>
+    </message>
+    <message>
+        <source>On target</source>
+        <translation>Pada sasaran</translation>
+    </message>
+    <message>
+        <source>Move to the blue marker (%1 mm away)</source>
+        <translation>Bergerak ke penanda biru (%1 mm jauhnya)</translation>
+    </message>
+    <message>
+        <source>hold %p%</source>
+        <translation>tahan %p%</translation>
+    </message>
+    <message>
+        <source>All targets done</source>
+        <translation>Semua sasaran selesai</translation>
+    </message>
+    <message>
+        <source>No target left</source>
+        <translation>Tiada sasaran lagi</translation>
+    </message>
+    <message>
+        <source>start</source>
+        <translation>mula</translation>
+    </message>
+    <message>
+        <source>end</source>
+        <translation>tamat</translation>
+    </message>
+    <message>
+        <source>Follow the line with %1</source>
+        <translation>Ikut garisan dengan %1</translation>
+    </message>
+    <message>
+        <source>%1 mm from the line</source>
+        <translation>%1 mm dari garisan</translation>
+    </message>
+    <message>
+        <source>covered %p%</source>
+        <translation>diliputi %p%</translation>
     </message>
 </context>
 <context>
@@ -5581,66 +5663,6 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
         <translation>Sedang bermula…</translation>
     </message>
     <message>
-        <source>Target %1 of %2: press with %3 and hold</source>
-        <translation>Sasaran %1 daripada %2: tekan dengan %3 dan tahan</translation>
-    </message>
-    <message>
-        <source>On target</source>
-        <translation>Pada sasaran</translation>
-    </message>
-    <message>
-        <source>Move to the blue marker (%1 mm away)</source>
-        <translation>Bergerak ke penanda biru (%1 mm jauhnya)</translation>
-    </message>
-    <message>
-        <source>hold %p%</source>
-        <translation>tahan %p%</translation>
-    </message>
-    <message>
-        <source>All targets done</source>
-        <translation>Semua sasaran selesai</translation>
-    </message>
-    <message>
-        <source>No target left</source>
-        <translation>Tiada sasaran lagi</translation>
-    </message>
-    <message>
-        <source>Marked. Mark again to correct, or Stop to finish.</source>
-        <translation>Ditanda. Tanda lagi untuk membetulkan, atau Henti untuk selesai.</translation>
-    </message>
-    <message>
-        <source>Palpate gently; press Mark (M) while you press on the lump</source>
-        <translation>Palpasi dengan lembut; tekan Tanda (M) semasa anda menekan ketulan</translation>
-    </message>
-    <message>
-        <source>In contact</source>
-        <translation>Bersentuhan</translation>
-    </message>
-    <message>
-        <source>Not in contact</source>
-        <translation>Tidak bersentuhan</translation>
-    </message>
-    <message>
-        <source>marked</source>
-        <translation>ditanda</translation>
-    </message>
-    <message>
-        <source>not marked yet</source>
-        <translation>belum ditanda</translation>
-    </message>
-    <message>
-        <source>Follow the line with %1</source>
-        <translation>Ikut garisan dengan %1</translation>
-    </message>
-    <message>
-        <source>%1 mm from the line</source>
-        <translation>%1 mm dari garisan</translation>
-    </message>
-    <message>
-        <source>covered %p%</source>
-        <translation>diliputi %p%</translation>
-    </message>
-    <message>
         <source>Time left %1 s · score so far %2</source>
         <translation>Baki masa %1 s · markah setakat ini %2</translation>
     </message>
@@ -5655,32 +5677,6 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
     <message>
         <source>End the examination: every lump you found is marked (F7)</source>
         <translation>Tamatkan pemeriksaan: setiap ketulan yang ditemui telah ditanda (F7)</translation>
-    </message>
-    <message>
-        <source>Mark a lump where the tool presses now (M)</source>
-        <translation>Tanda ketulan di tempat alat menekan sekarang (M)</translation>
-    </message>
-    <message>
-        <source>Search the whole surface, press in where it feels different, Mark (M) each lump; Finish (F7) when done</source>
-        <translation>Cari seluruh permukaan, tekan di tempat yang terasa berbeza, Tanda (M) setiap ketulan; Tamat (F7) apabila selesai</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n finding(s) marked</source>
-        <translation>
-            <numerusform>%n penemuan ditanda</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>in contact</source>
-        <translation>bersentuhan</translation>
-    </message>
-    <message>
-        <source>not in contact</source>
-        <translation>tidak bersentuhan</translation>
-    </message>
-    <message>
-        <source>surface examined %p%</source>
-        <translation>permukaan diperiksa %p%</translation>
     </message>
     <message>
         <source>E&amp;xpert reference session</source>

@@ -1,5 +1,7 @@
 #include "widgets/ExerciseEditorPanel.h"
 
+#include "widgets/ExerciseText.h"
+
 #include "widgets/SaveFileChoice.h"
 #include "widgets/GuardedLoad.h"
 #include "widgets/ScrollWheelGuard.h"
@@ -727,13 +729,7 @@ void ExerciseEditorPanel::buildTypePages() {
 }
 
 QString ExerciseEditorPanel::typeText(ExerciseType type) const {
-    switch (type) {
-        case ExerciseType::PressTargets: return tr("Press targets");
-        case ExerciseType::FindLump: return tr("Find the lump");
-        case ExerciseType::Trace: return tr("Trace a path");
-        case ExerciseType::DetectLumps: return tr("Detect lumps");
-    }
-    return {};
+    return exerciseText(ViewText{exerciseKind(type).label()});
 }
 
 void ExerciseEditorPanel::retranslateUi() {

@@ -1,5 +1,8 @@
 #include "widgets/ExerciseMarkers.h"
 
+#include "engine/exercise/ExerciseKind.h"
+#include "widgets/ExerciseText.h"
+
 #include "report/HeatColour.h"
 
 #include "widgets/OrbitCamera.h"
@@ -101,78 +104,18 @@ QColor exerciseMarkerColour(ExerciseMarker::Kind kind) {
 ExerciseMarkers exerciseMarkers(const ExerciseGeometry& geometry, MarkerAudience audience,
                                 const ScoreGuidance* guidance, int selectedIndex) {
     ExerciseMarkers out;
-    const Exercise& exercise = geometry.exercise();
-    const auto normalOf = [&](VertexId v) {
-        return v < geometry.normals().size() ? geometry.normals()[v] : glm::vec3(0.0f);
-    };
-    switch (exercise.type) {
-        case ExerciseType::PressTargets: {
-            const auto& targets = geometry.targets();
-            for (std::size_t i = 0; i < targets.size(); ++i) {
-                ExerciseMarker m;
-                m.kind = ExerciseMarker::Kind::Target;
-                if (guidance && guidance->targetIndex >= 0) {
-                    if (int(i) < guidance->targetIndex) m.kind = ExerciseMarker::Kind::DoneTarget;
-                    else if (int(i) == guidance->targetIndex) m.kind = ExerciseMarker::Kind::CurrentTarget;
-                } else if (guidance && guidance->completed) {
-                    m.kind = ExerciseMarker::Kind::DoneTarget;
-                }
-                m.positionMm = targets[i].pointMm;
-                m.normal = normalOf(targets[i].vertex);
-                m.label = QString::number(i + 1);
-                // The tolerance circle helps the instructor place targets and the trainee aim.
-                m.radiusMm = targets[i].def.toleranceMm;
-                m.selected = int(i) == selectedIndex;
-                out.markers.push_back(m);
-            }
-            break;
-        }
-        case ExerciseType::FindLump: {
-            if (audience == MarkerAudience::Instructor && geometry.lumpVertex() != kNoVertex) {
-                ExerciseMarker m;
-                m.kind = ExerciseMarker::Kind::Inclusion;
-                m.positionMm = geometry.lumpCentreMm();
-                m.normal = normalOf(geometry.lumpVertex());
-                m.radiusMm = exercise.findLump.inclusion.radiusMm;
-                m.label = QStringLiteral("lump");
-                m.selected = selectedIndex == 0;
-                out.markers.push_back(m);
-            }
-            break;
-        }
-        case ExerciseType::DetectLumps: {
-            // Hidden from the trainee until the examination is over: then where they were.
-            const bool show = audience == MarkerAudience::Instructor || (guidance && guidance->over());
-            if (!show) break;
-            const auto& lumps = geometry.lumps();
-            for (std::size_t i = 0; i < lumps.size(); ++i) {
-                ExerciseMarker m;
-                m.kind = ExerciseMarker::Kind::Inclusion;
-                m.positionMm = lumps[i].surfaceMm;
-                m.normal = normalOf(lumps[i].vertex);
-                m.radiusMm = lumps[i].def.radiusMm;
-                m.label = QCoreApplication::translate("palpate::ExerciseMarkers", "lump %1, %2 mm deep")
-                              .arg(i + 1)
-                              .arg(lumps[i].def.depthMm, 0, 'f', 1);
-                m.selected = int(i) == selectedIndex;
-                out.markers.push_back(m);
-            }
-            break;
-        }
-        case ExerciseType::Trace: {
-            out.pathMm = geometry.pathMm();
-            for (std::size_t i = 0; i < exercise.trace.path.size() && i < geometry.pathMm().size(); ++i) {
-                ExerciseMarker m;
-                m.kind = ExerciseMarker::Kind::PathPoint;
-                m.positionMm = geometry.pathMm()[i];
-                const VertexId v = i < geometry.pathVertices().size() ? geometry.pathVertices()[i] : kNoVertex;
-                m.normal = normalOf(v);
-                m.label = i == 0 ? QStringLiteral("start") : (i + 1 == exercise.trace.path.size() ? QStringLiteral("end") : QString());
-                m.selected = int(i) == selectedIndex;
-                out.markers.push_back(m);
-            }
-            break;
-        }
+    const ExerciseDrawing drawing =
+        exerciseKind(geometry.exercise().type).draw(geometry, audience, guidance, selectedIndex);
+    out.pathMm = drawing.pathMm;
+    for (const SurfaceMarker& s : drawing.markers) {
+        ExerciseMarker m;
+        m.kind = s.kind;
+        m.positionMm = s.positionMm;
+        m.normal = s.normal;
+        m.label = exerciseText(s.label);
+        m.radiusMm = s.radiusMm;
+        m.selected = s.selected;
+        out.markers.push_back(m);
     }
     return out;
 }

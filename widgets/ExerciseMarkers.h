@@ -5,6 +5,7 @@
 // Both renderers paint them with QPainter over the scene, like the tool marker (SceneOverlay).
 
 #include "engine/exercise/ExerciseGeometry.h"
+#include "engine/exercise/ExerciseView.h"
 #include "engine/exercise/ScoreReport.h"
 
 #include <QColor>
@@ -23,7 +24,7 @@ namespace palpate {
 class OrbitCamera;
 
 struct ExerciseMarker {
-    enum class Kind { Target, CurrentTarget, DoneTarget, PathPoint, Inclusion, Mark };
+    using Kind = SurfaceMarkerKind;
     Kind kind = Kind::Target;
     glm::vec3 positionMm{0.0f};
     glm::vec3 normal{0.0f};  ///< outward rest normal (zero: unknown); markers facing away are faded
@@ -54,11 +55,9 @@ void addCoverageHeat(ExerciseMarkers& markers, const ExerciseGeometry& geometry,
 /// The heat map's colour for a force on the scale [minN, maxN] (tests look for it).
 QColor heatColour(double forceN, double minN, double maxN);
 
-/// Who looks at the exercise: the instructor sees everything, the trainee not the inclusion.
-enum class MarkerAudience { Instructor, Trainee };
-
-/// The markers of an exercise placed on a mesh. `guidance` (a running session) marks the current
-/// and the achieved targets; `selectedIndex` (instructor) is the target or path point being edited.
+/// The markers of an exercise placed on a mesh, as its kind draws them (ExerciseKind::draw).
+/// `guidance` (a running session) marks the current and the achieved targets; `selectedIndex`
+/// (instructor) is the item being edited.
 ExerciseMarkers exerciseMarkers(const ExerciseGeometry& geometry, MarkerAudience audience,
                                 const ScoreGuidance* guidance = nullptr, int selectedIndex = -1);
 

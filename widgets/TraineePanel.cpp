@@ -1,5 +1,8 @@
 #include "widgets/TraineePanel.h"
 
+#include "engine/exercise/ExerciseKind.h"
+#include "widgets/ExerciseText.h"
+
 #include "widgets/ForceGauge.h"
 #include "widgets/ScoreCard.h"
 
@@ -20,13 +23,6 @@
 
 namespace palpate {
 
-namespace {
-
-QString forceRange(double minN, double maxN) {
-    return QObject::tr("%1–%2 N").arg(minN, 0, 'g', 3).arg(maxN, 0, 'g', 3);
-}
-
-}  // namespace
 
 TraineePanel::TraineePanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
@@ -227,52 +223,15 @@ void TraineePanel::showGuidance(const Exercise& exercise, const ScoreGuidance& g
     mGauge->setExcessiveN(exercise.excessiveForceN);
     mGauge->setFullScaleN(std::max(4.0, exercise.excessiveForceN * 1.2));
     mGauge->setForceN(guidance.forceN);
-    QString instruction, detail;
-    int progressPercent = 0;
-    switch (exercise.type) {
-        case ExerciseType::PressTargets:
-            mGauge->setWindow(guidance.forceMinN, guidance.forceMaxN);
-            if (guidance.targetIndex >= 0) {
-                instruction = tr("Target %1 of %2: press with %3 and hold")
-                                  .arg(guidance.targetIndex + 1)
-                                  .arg(guidance.targetCount)
-                                  .arg(forceRange(guidance.forceMinN, guidance.forceMaxN));
-                detail = guidance.onTarget ? tr("On target")
-                                           : tr("Move to the blue marker (%1 mm away)").arg(guidance.distanceToTargetMm, 0, 'f', 0);
-                progressPercent = int(std::lround(100.0 * guidance.holdProgress));
-                mProgress->setFormat(tr("hold %p%"));
-            } else {
-                instruction = guidance.completed ? tr("All targets done") : tr("No target left");
-                progressPercent = 100;
-            }
-            break;
-        case ExerciseType::FindLump:
-            mGauge->setWindow(0.0, 0.0);
-            instruction = guidance.marked ? tr("Marked. Mark again to correct, or Stop to finish.")
-                                          : tr("Palpate gently; press Mark (M) while you press on the lump");
-            detail = guidance.contact ? tr("In contact") : tr("Not in contact");
-            progressPercent = guidance.marked ? 100 : 0;
-            mProgress->setFormat(guidance.marked ? tr("marked") : tr("not marked yet"));
-            break;
-        case ExerciseType::DetectLumps:
-            mGauge->setWindow(0.0, 0.0);
-            mMark->setToolTip(tr("Mark a lump where the tool presses now (M)"));
-            instruction = tr("Search the whole surface, press in where it feels different, Mark (M) each lump; "
-                             "Finish (F7) when done");
-            detail = tr("%n finding(s) marked", "", guidance.findings) + QStringLiteral(" · ") +
-                     (guidance.contact ? tr("in contact") : tr("not in contact"));
-            progressPercent = int(std::lround(100.0 * guidance.coverageFraction));
-            mProgress->setFormat(tr("surface examined %p%"));
-            break;
-        case ExerciseType::Trace:
-            mGauge->setWindow(guidance.forceMinN, guidance.forceMaxN);
-            instruction = tr("Follow the line with %1").arg(forceRange(guidance.forceMinN, guidance.forceMaxN));
-            detail = guidance.contact ? tr("%1 mm from the line").arg(guidance.distanceToPathMm, 0, 'f', 1)
-                                      : tr("Not in contact");
-            progressPercent = int(std::lround(100.0 * guidance.pathCovered));
-            mProgress->setFormat(tr("covered %p%"));
-            break;
-    }
+    const GuidanceView view = exerciseKind(exercise.type).guidance(exercise, guidance);
+    mGauge->setWindow(view.windowMinN, view.windowMaxN);
+    mMark->setToolTip(view.markTip.empty() ? tr("Mark the lump where the tool presses now (M)") : exerciseText(view.markTip));
+    const QString instruction = exerciseText(view.instruction);
+    QStringList details;
+    for (const ViewText& part : view.detail) details << exerciseText(part);
+    const QString detail = details.join(QStringLiteral(" · "));
+    const int progressPercent = int(std::lround(100.0 * view.progress));
+    if (!view.progressFormat.empty()) mProgress->setFormat(exerciseText(view.progressFormat));
     mInstruction->setText(instruction);
     mDetail->setText(detail);
     mProgress->setValue(std::clamp(progressPercent, 0, 100));

@@ -67,6 +67,8 @@ struct FieldSpec {
 /// QT_TRANSLATE_NOOP+=PALPATE_TRANSLATE_NOOP) without making the engine depend on Qt. Every field
 /// table's texts are in the context kFieldTextContext (lupdate needs the literal at each use).
 #define PALPATE_TRANSLATE_NOOP(context, text) text
+/// The same for a text with a plural (%n), which lupdate reads as QT_TRANSLATE_N_NOOP.
+#define PALPATE_TRANSLATE_N_NOOP(context, text) text
 
 /// The translation context of the field tables' labels, names, tips and choices: the engine's own,
 /// not a widget's. A panel translates them with QCoreApplication::translate(kFieldTextContext, ...).

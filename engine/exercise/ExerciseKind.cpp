@@ -1,6 +1,7 @@
 #include "engine/exercise/ExerciseKind.h"
 
 #include "base/io/JsonReader.h"
+#include "engine/exercise/ExerciseGeometry.h"
 #include "engine/exercise/kinds/Kinds.h"
 
 #include <algorithm>
@@ -75,6 +76,10 @@ Json surfacePointJson(const SurfacePoint& p) {
     if (p.vertex) j["vertex"] = *p.vertex;
     else j["point_mm"] = {double(p.pointMm.x), double(p.pointMm.y), double(p.pointMm.z)};
     return j;
+}
+
+glm::vec3 normalOf(const ExerciseGeometry& geometry, VertexId v) {
+    return v < geometry.normals().size() ? geometry.normals()[v] : glm::vec3(0.0f);
 }
 
 std::string demandNumber(double v) {

@@ -11,6 +11,7 @@
 #include "engine/exercise/ExerciseChecker.h"
 #include "engine/exercise/ExerciseDemands.h"
 #include "engine/exercise/ExerciseTask.h"
+#include "engine/exercise/ExerciseView.h"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -90,6 +91,13 @@ public:
     virtual std::vector<ExerciseDemand> demands(const Exercise& exercise) const = 0;
     /// The task that scores a session of the exercise.
     virtual std::unique_ptr<ExerciseTask> makeTask(std::shared_ptr<const ExerciseGeometry> geometry, double periodS) const = 0;
+
+    /// What the viewport draws of the exercise for `audience`; `guidance` (a running or finished
+    /// session) marks progress, `selected` (the instructor's) is the item being edited.
+    virtual ExerciseDrawing draw(const ExerciseGeometry& geometry, MarkerAudience audience,
+                                 const ScoreGuidance* guidance, int selected) const = 0;
+    /// What the trainee is told at this point of the session.
+    virtual GuidanceView guidance(const Exercise& exercise, const ScoreGuidance& guidance) const = 0;
 };
 
 /// The translation context of the kinds' texts (labels), the engine's own.

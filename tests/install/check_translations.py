@@ -29,7 +29,7 @@ def main():
             # The same sources and options as the update_translations target, except -no-obsolete:
             # here obsolete entries must show.
             run = subprocess.run([lupdate, "-locations", "none", "-I", source,
-                                  "-tr-function-alias", "QT_TRANSLATE_NOOP+=PALPATE_TRANSLATE_NOOP",
+                                  "-tr-function-alias", "QT_TRANSLATE_NOOP+=PALPATE_TRANSLATE_NOOP,QT_TRANSLATE_N_NOOP+=PALPATE_TRANSLATE_N_NOOP",
                                   os.path.join(source, "app", "gui"), os.path.join(source, "widgets"),
                                   os.path.join(source, "results"), os.path.join(source, "report"),
                                   os.path.join(source, "engine"),

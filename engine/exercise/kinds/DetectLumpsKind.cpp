@@ -298,6 +298,42 @@ public:
     std::unique_ptr<ExerciseTask> makeTask(std::shared_ptr<const ExerciseGeometry> geometry, double periodS) const override {
         return std::make_unique<DetectLumpsTask>(std::move(geometry), periodS);
     }
+
+    // Hidden from the trainee until the examination is over: then where they were.
+    ExerciseDrawing draw(const ExerciseGeometry& geometry, MarkerAudience audience, const ScoreGuidance* guidance,
+                         int selected) const override {
+        ExerciseDrawing out;
+        if (audience != MarkerAudience::Instructor && !(guidance && guidance->over())) return out;
+        const auto& lumps = geometry.lumps();
+        for (std::size_t i = 0; i < lumps.size(); ++i) {
+            SurfaceMarker m;
+            m.kind = SurfaceMarkerKind::Inclusion;
+            m.positionMm = lumps[i].surfaceMm;
+            m.normal = normalOf(geometry, lumps[i].vertex);
+            m.radiusMm = lumps[i].def.radiusMm;
+            m.label = ViewText{PALPATE_TRANSLATE_NOOP("palpate::Exercises", "lump %1, %2 mm deep")}
+                          .whole(double(i + 1))
+                          .fixed(lumps[i].def.depthMm, 1);
+            m.selected = int(i) == selected;
+            out.markers.push_back(m);
+        }
+        return out;
+    }
+    GuidanceView guidance(const Exercise&, const ScoreGuidance& g) const override {
+        GuidanceView v;
+        v.markTip = {PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Mark a lump where the tool presses now (M)")};
+        v.instruction = {PALPATE_TRANSLATE_NOOP("palpate::Exercises",
+                                                "Search the whole surface, press in where it feels different, Mark (M) each "
+                                                "lump; Finish (F7) when done")};
+        ViewText findings{PALPATE_TRANSLATE_N_NOOP("palpate::Exercises", "%n finding(s) marked")};
+        findings.count = g.findings;
+        v.detail.push_back(findings);
+        v.detail.push_back({g.contact ? PALPATE_TRANSLATE_NOOP("palpate::Exercises", "in contact")
+                                      : PALPATE_TRANSLATE_NOOP("palpate::Exercises", "not in contact")});
+        v.progress = g.coverageFraction;
+        v.progressFormat = {PALPATE_TRANSLATE_NOOP("palpate::Exercises", "surface examined %p%")};
+        return v;
+    }
 };
 
 }  // namespace

@@ -123,6 +123,34 @@ public:
     std::unique_ptr<ExerciseTask> makeTask(std::shared_ptr<const ExerciseGeometry> geometry, double periodS) const override {
         return std::make_unique<FindLumpTask>(std::move(geometry), periodS);
     }
+
+    // The inclusion is shown to the instructor who places it, never to the trainee who must find it.
+    ExerciseDrawing draw(const ExerciseGeometry& geometry, MarkerAudience audience, const ScoreGuidance*,
+                         int selected) const override {
+        ExerciseDrawing out;
+        if (audience != MarkerAudience::Instructor || geometry.lumpVertex() == kNoVertex) return out;
+        SurfaceMarker m;
+        m.kind = SurfaceMarkerKind::Inclusion;
+        m.positionMm = geometry.lumpCentreMm();
+        m.normal = normalOf(geometry, geometry.lumpVertex());
+        m.radiusMm = geometry.exercise().findLump.inclusion.radiusMm;
+        m.label = {PALPATE_TRANSLATE_NOOP("palpate::Exercises", "lump")};
+        m.selected = selected == 0;
+        out.markers.push_back(m);
+        return out;
+    }
+    GuidanceView guidance(const Exercise&, const ScoreGuidance& g) const override {
+        GuidanceView v;
+        v.instruction = {g.marked ? PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Marked. Mark again to correct, or Stop to finish.")
+                                  : PALPATE_TRANSLATE_NOOP("palpate::Exercises",
+                                                           "Palpate gently; press Mark (M) while you press on the lump")};
+        v.detail.push_back({g.contact ? PALPATE_TRANSLATE_NOOP("palpate::Exercises", "In contact")
+                                      : PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Not in contact")});
+        v.progress = g.marked ? 1.0 : 0.0;
+        v.progressFormat = {g.marked ? PALPATE_TRANSLATE_NOOP("palpate::Exercises", "marked")
+                                     : PALPATE_TRANSLATE_NOOP("palpate::Exercises", "not marked yet")};
+        return v;
+    }
 };
 
 }  // namespace

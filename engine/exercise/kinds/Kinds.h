@@ -21,5 +21,7 @@ void readSurfacePoint(JsonReader& reader, const Json& j, const std::string& path
 Json surfacePointJson(const SurfacePoint& point);
 /// A demand's number in its text ("2.5"): three significant digits.
 std::string demandNumber(double value);
+/// The rest normal of a vertex of the geometry (zero for kNoVertex).
+glm::vec3 normalOf(const ExerciseGeometry& geometry, VertexId vertex);
 
 }  // namespace palpate

@@ -237,6 +237,52 @@ public:
     std::unique_ptr<ExerciseTask> makeTask(std::shared_ptr<const ExerciseGeometry> geometry, double) const override {
         return std::make_unique<PressTargetsTask>(std::move(geometry));
     }
+
+    ExerciseDrawing draw(const ExerciseGeometry& geometry, MarkerAudience, const ScoreGuidance* guidance,
+                         int selected) const override {
+        ExerciseDrawing out;
+        const auto& targets = geometry.targets();
+        for (std::size_t i = 0; i < targets.size(); ++i) {
+            SurfaceMarker m;
+            m.kind = SurfaceMarkerKind::Target;
+            if (guidance && guidance->targetIndex >= 0) {
+                if (int(i) < guidance->targetIndex) m.kind = SurfaceMarkerKind::DoneTarget;
+                else if (int(i) == guidance->targetIndex) m.kind = SurfaceMarkerKind::CurrentTarget;
+            } else if (guidance && guidance->completed) {
+                m.kind = SurfaceMarkerKind::DoneTarget;
+            }
+            m.positionMm = targets[i].pointMm;
+            m.normal = normalOf(geometry, targets[i].vertex);
+            m.label = ViewText{"%1"}.whole(double(i + 1));
+            // The tolerance circle helps the instructor place targets and the trainee aim.
+            m.radiusMm = targets[i].def.toleranceMm;
+            m.selected = int(i) == selected;
+            out.markers.push_back(m);
+        }
+        return out;
+    }
+    GuidanceView guidance(const Exercise&, const ScoreGuidance& g) const override {
+        GuidanceView v;
+        v.windowMinN = g.forceMinN;
+        v.windowMaxN = g.forceMaxN;
+        if (g.targetIndex >= 0) {
+            v.instruction = ViewText{PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Target %1 of %2: press with %3 and hold")}
+                                .whole(g.targetIndex + 1)
+                                .whole(g.targetCount)
+                                .forceRange(g.forceMinN, g.forceMaxN);
+            v.detail.push_back(g.onTarget ? ViewText{PALPATE_TRANSLATE_NOOP("palpate::Exercises", "On target")}
+                                          : ViewText{PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Move to the blue marker (%1 mm away)")}
+                                                .fixed(g.distanceToTargetMm, 0));
+            v.progress = g.holdProgress;
+            v.progressFormat = {PALPATE_TRANSLATE_NOOP("palpate::Exercises", "hold %p%")};
+        } else {
+            v.instruction = {g.completed ? PALPATE_TRANSLATE_NOOP("palpate::Exercises", "All targets done")
+                                         : PALPATE_TRANSLATE_NOOP("palpate::Exercises", "No target left")};
+            v.progress = 1.0;
+            v.progressFormat = {PALPATE_TRANSLATE_NOOP("palpate::Exercises", "hold %p%")};
+        }
+        return v;
+    }
 };
 
 }  // namespace

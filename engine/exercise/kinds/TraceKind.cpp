@@ -169,6 +169,37 @@ public:
     std::unique_ptr<ExerciseTask> makeTask(std::shared_ptr<const ExerciseGeometry> geometry, double) const override {
         return std::make_unique<TraceTask>(std::move(geometry));
     }
+
+    ExerciseDrawing draw(const ExerciseGeometry& geometry, MarkerAudience, const ScoreGuidance*, int selected) const override {
+        ExerciseDrawing out;
+        out.pathMm = geometry.pathMm();
+        const std::size_t points = geometry.exercise().trace.path.size();
+        for (std::size_t i = 0; i < points && i < geometry.pathMm().size(); ++i) {
+            SurfaceMarker m;
+            m.kind = SurfaceMarkerKind::PathPoint;
+            m.positionMm = geometry.pathMm()[i];
+            const VertexId v = i < geometry.pathVertices().size() ? geometry.pathVertices()[i] : kNoVertex;
+            m.normal = normalOf(geometry, v);
+            if (i == 0) m.label = {PALPATE_TRANSLATE_NOOP("palpate::Exercises", "start")};
+            else if (i + 1 == points) m.label = {PALPATE_TRANSLATE_NOOP("palpate::Exercises", "end")};
+            m.selected = int(i) == selected;
+            out.markers.push_back(m);
+        }
+        return out;
+    }
+    GuidanceView guidance(const Exercise&, const ScoreGuidance& g) const override {
+        GuidanceView v;
+        v.windowMinN = g.forceMinN;
+        v.windowMaxN = g.forceMaxN;
+        v.instruction =
+            ViewText{PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Follow the line with %1")}.forceRange(g.forceMinN, g.forceMaxN);
+        v.detail.push_back(g.contact ? ViewText{PALPATE_TRANSLATE_NOOP("palpate::Exercises", "%1 mm from the line")}.fixed(
+                                           g.distanceToPathMm, 1)
+                                     : ViewText{PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Not in contact")});
+        v.progress = g.pathCovered;
+        v.progressFormat = {PALPATE_TRANSLATE_NOOP("palpate::Exercises", "covered %p%")};
+        return v;
+    }
 };
 
 }  // namespace
