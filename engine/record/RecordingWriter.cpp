@@ -71,9 +71,10 @@ std::string beingWritten(const std::string& path, int fd) {
            "); a recording has one writer: choose another file";
 }
 
-/// A new file at `path`, locked, ready for the header: created in place when nothing is there,
-/// else (replacing) created beside it as `tempPath`, to be renamed over the old file once the new
-/// recording has started. -1 with `error` on failure (nothing left behind).
+/// A new file beside `path` as `tempPath`, locked, ready for the header; it takes the name `path`
+/// (publishOutput) only once the header is on disk, so a kill -9 before that leaves `path` as it
+/// was (absent, or the recording it replaces), never an empty file. -1 with `error` on failure
+/// (nothing left behind).
 int openOutput(const std::string& path, bool replace, std::string& tempPath, std::string& error) {
     struct stat st {};
     const bool exists = ::stat(path.c_str(), &st) == 0;
@@ -94,14 +95,13 @@ int openOutput(const std::string& path, bool replace, std::string& tempPath, std
             ::close(old);  // also releases the probe's own lock
             if (locked) return -1;
         }
-        tempPath = path + ".partial-" + std::to_string(::getpid());
     }
-    const std::string& target = exists ? tempPath : path;
-    const int fd = ::open(target.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    tempPath = path + ".partial-" + std::to_string(::getpid());
+    const std::string& target = tempPath;
+    // O_TRUNC: one this process (pid) left behind when killed is its own to reuse.
+    const int fd = ::open(target.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (fd < 0) {
-        if (errno == EEXIST && !exists)  // created by someone else since stat
-            error = path + ": already exists; a recording replaces a file only when asked to";
-        else error = target + ": cannot create the recording: " + std::strerror(errno);
+        error = target + ": cannot create the recording: " + std::strerror(errno);
         return -1;
     }
     // Held until close: a second recorder on this path is refused (see beingWritten).
@@ -111,6 +111,21 @@ int openOutput(const std::string& path, bool replace, std::string& tempPath, std
         return -1;  // O_EXCL made it ours, but another process locked it at once: theirs now
     }
     return fd;
+}
+
+/// Gives the started recording (header on disk) its name: over the old file when replacing, else
+/// only if nothing took the name meanwhile (link refuses an existing one). "" or the problem.
+std::string publishOutput(const std::string& tempPath, const std::string& path, bool replacing) {
+    if (replacing) {
+        if (::rename(tempPath.c_str(), path.c_str()) != 0)
+            return path + ": cannot replace it with the new recording: " + std::strerror(errno);
+        return {};
+    }
+    if (::link(tempPath.c_str(), path.c_str()) != 0)
+        return errno == EEXIST ? path + ": already exists; a recording replaces a file only when asked to"
+                               : path + ": cannot create the recording: " + std::strerror(errno);
+    ::unlink(tempPath.c_str());
+    return {};
 }
 
 std::string writeErrorText(const std::string& path, int error, std::uint64_t ticksOnDisk) {
@@ -155,9 +170,10 @@ std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path
     encodeRecordingHeader(header, bytes);
 
     std::string tempPath;
+    const bool replacing = ::access(path.c_str(), F_OK) == 0;
     const int fd = openOutput(path, def.replaceExisting, tempPath, error);
     if (fd < 0) return nullptr;
-    const std::string& written = tempPath.empty() ? path : tempPath;
+    const std::string& written = tempPath;
     auto abandon = [&](std::unique_ptr<RecordingWriter> writer, const std::string& why) {
         if (writer) {
             writer->close();  // joins the thread; the fd is closed there
@@ -179,8 +195,8 @@ std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path
     int why = 0;
     if (writeAll(fd, bytes.data(), bytes.size(), why) != bytes.size())
         return abandon(std::move(writer), path + ": cannot write the recording header: " + std::strerror(why));
-    if (!tempPath.empty() && ::rename(tempPath.c_str(), path.c_str()) != 0)
-        return abandon(std::move(writer), path + ": cannot replace it with the new recording: " + std::strerror(errno));
+    if (const std::string problem = publishOutput(tempPath, path, replacing); !problem.empty())
+        return abandon(std::move(writer), problem);
     {
         std::lock_guard lock(writer->mMutex);
         writer->mWorking.bytes = bytes.size();

@@ -5,6 +5,7 @@
 #include "engine/core/MeshGenerator.h"
 #include "engine/fem/SurfaceFill.h"
 #include "tests/engine/TestMeshes.h"
+#include "tests/support/Meshes.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -17,12 +18,6 @@ namespace palpate {
 namespace {
 
 constexpr ElasticMaterial kMaterial{0.01, 0.45};
-
-TissueMesh sphere(std::size_t vertices) {
-    auto r = generateMesh(GeneratedShape::Sphere, vertices);
-    if (!r.mesh) throw std::runtime_error(r.error());
-    return std::move(*r.mesh);
-}
 
 /// Six times the volume enclosed by the triangles over the given node positions.
 double enclosed6(const std::vector<glm::dvec3>& p, const std::vector<std::array<VertexId, 3>>& triangles,
@@ -67,7 +62,7 @@ void expectValidFill(const TissueMesh& mesh, const FilledSurface& f) {
 }
 
 TEST(SurfaceFill, SphereFillIsPositiveConformingAndOnTheVertices) {
-    const TissueMesh mesh = sphere(500);
+    const TissueMesh mesh = test::sphereMesh(500);
     SurfaceFillDef o;
     o.layers = 3;
     const FilledSurface f = fillSurface(mesh, o);
@@ -112,7 +107,7 @@ TEST(SurfaceFill, RejectsBadInputWithAMessage) {
     auto open = test::gridPatch(5, 5).build("patch");
     ASSERT_TRUE(open.mesh);
     expectRejected([&] { fillSurface(*open.mesh); }, "open");
-    const TissueMesh mesh = sphere(200);
+    const TissueMesh mesh = test::sphereMesh(200);
     SurfaceFillDef zero;
     zero.thicknessMm = 0.0;
     expectRejected([&] { fillSurface(mesh, zero); }, "thickness");
@@ -134,7 +129,7 @@ TEST(SurfaceFill, RejectsBadInputWithAMessage) {
 }
 
 TEST(SurfaceFill, IndentingASpherePushesBackAndTheDentDecaysWithDistance) {
-    const TissueMesh mesh = sphere(1442);
+    const TissueMesh mesh = test::sphereMesh(1442);
     const SurfaceIndenter indenter(mesh, kMaterial);
     const VertexId touched = 700;
     const double radius = 6.0, delta = 1.0;

@@ -211,42 +211,6 @@ float dist2(const glm::vec3& a, const glm::vec3& b) {
 
 bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-TempDir::TempDir() {
-    static std::atomic<int> counter{0};
-    std::random_device rd;
-    for (int attempt = 0; attempt < 100; ++attempt) {
-        auto candidate = std::filesystem::temp_directory_path() /
-                         ("palpate-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + "-" +
-                          std::to_string(rd() % 1000000));
-        std::error_code ec;
-        if (std::filesystem::create_directory(candidate, ec)) {
-            mPath = candidate;
-            return;
-        }
-    }
-    throw std::runtime_error("TempDir: cannot create a temporary directory");
-}
-
-TempDir::~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(mPath, ec);
-}
-
-std::string TempDir::write(const std::string& name, const std::string& bytes) const {
-    const std::string path = file(name);
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    if (!out) throw std::runtime_error("TempDir: cannot write " + path);
-    return path;
-}
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 std::string toOff(const RawMesh& m) {
     std::ostringstream s;
     s << std::setprecision(9) << "OFF\n" << m.positions.size() << " " << m.triangles.size() << " 0\n";
@@ -336,27 +300,6 @@ std::string cliPath() {
 #else
     return {};
 #endif
-}
-
-CommandResult runCommand(const std::string& command) {
-    CommandResult result;
-    FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-    if (!pipe) return result;
-    char buffer[4096];
-    std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
-    const int status = ::pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-    return result;
-}
-
-std::string shellQuote(const std::string& text) {
-    std::string out = "'";
-    for (char c : text) {
-        if (c == '\'') out += "'\\''";
-        else out += c;
-    }
-    return out + "'";
 }
 
 }  // namespace palpate::test

@@ -1,9 +1,12 @@
 #pragma once
-// Small meshes with known answers for the engine tests, and helpers for temporary files.
+// Small meshes with known answers for the engine tests (temporary folders and the command runner
+// are tests/support's).
 // Everything here is computed from coordinates by hand-written formulas, never by the engine code
 // under test, so that the tests can disagree with it.
 
 #include "engine/core/TissueMesh.h"
+#include "tests/support/Shell.h"
+#include "tests/support/TempDir.h"
 
 #include <glm/vec3.hpp>
 
@@ -73,23 +76,6 @@ float dist2(const glm::vec3& a, const glm::vec3& b);
 
 bool isFinite(const glm::vec3& v);
 
-/// A fresh directory under the system temp dir, removed (with its contents) on destruction.
-class TempDir {
-public:
-    TempDir();
-    ~TempDir();
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const std::filesystem::path& path() const { return mPath; }
-    /// Writes `bytes` to `name` inside the directory and returns the full path.
-    std::string write(const std::string& name, const std::string& bytes) const;
-    std::string file(const std::string& name) const { return (mPath / name).string(); }
-
-private:
-    std::filesystem::path mPath;
-};
-
-std::string readFile(const std::string& path);
 
 /// Writers that do not depend on the engine (or OpenMesh), for full control over the bytes.
 std::string toOff(const RawMesh& mesh);
@@ -105,14 +91,5 @@ RawMesh rawOf(const TissueMesh& mesh);
 /// Where the command-line tool is (from the build), or "" if the tests were built without it.
 std::string cliPath();
 
-/// Runs a shell command, returns its exit status and its combined stdout and stderr.
-struct CommandResult {
-    int exitCode = -1;
-    std::string output;
-};
-CommandResult runCommand(const std::string& command);
-
-/// Single-quotes a path for /bin/sh.
-std::string shellQuote(const std::string& text);
 
 }  // namespace palpate::test

@@ -3,7 +3,7 @@
 // (the shim, an isolated HOME), fixtures cached across the suite's processes, digests of inputs,
 // and the product's own readers as judges of what a command left behind (docs/reliability.md).
 
-#include "ChildProcess.h"
+#include "tests/support/ChildProcess.h"
 
 #include <filesystem>
 #include <functional>
@@ -13,6 +13,12 @@
 #include <vector>
 
 namespace palpate::fault {
+
+using test::Child;
+using test::ChildResult;
+using test::ChildSpec;
+using test::nowS;
+using test::runChild;
 
 namespace fs = std::filesystem;
 

@@ -3,7 +3,7 @@
 // the temporary's name is unique, so another writer's file is never touched; a special file in the
 // target's place is not replaced.
 #include "base/io/AtomicFile.h"
-#include "tests/io/ChildProcess.h"
+#include "tests/io/FileSizeLimit.h"
 #include "tests/io/IoTestDir.h"
 
 #include <gtest/gtest.h>

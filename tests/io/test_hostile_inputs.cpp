@@ -11,7 +11,9 @@
 #include "engine/lod/LevelCache.h"
 #include "engine/scene/TissuePreset.h"
 #include "engine/scoring/ExerciseSession.h"
-#include "tests/io/ChildProcess.h"
+#include "tests/support/ChildProcess.h"
+
+#include <sys/resource.h>
 #include "tests/io/IoTestDir.h"
 
 #include <gtest/gtest.h>
@@ -55,8 +57,12 @@ struct Cli {
 Cli runCli(const std::vector<std::string>& args, rlim_t fileSizeLimit = RLIM_INFINITY) {
     std::vector<std::string> argv{PALPATE_CLI_PATH};
     argv.insert(argv.end(), args.begin(), args.end());
-    const auto r = test::runProgramWithFileSizeLimit(fileSizeLimit, argv);
-    return {r.exitCode, r.output};
+    test::ChildSpec spec;
+    spec.argv = argv;
+    if (fileSizeLimit != RLIM_INFINITY) spec.fileSizeBytes = fileSizeLimit;
+    spec.timeoutS = 60.0;
+    const test::ChildResult r = test::Child(spec).wait();
+    return {r.exited ? r.exitCode : -1, r.out + r.err};
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "engine/core/MeshGenerator.h"
 #include "engine/lod/MeshLevels.h"
+#include "tests/support/Meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -13,17 +14,7 @@
 
 namespace palpate::test {
 
-inline const TissueMesh& generated(GeneratedShape shape, std::size_t vertices) {
-    static std::map<std::pair<int, std::size_t>, TissueMesh> cache;
-    const auto key = std::make_pair(int(shape), vertices);
-    auto it = cache.find(key);
-    if (it == cache.end()) {
-        auto g = generateMesh(shape, vertices);
-        EXPECT_TRUE(g.mesh) << g.error();
-        it = cache.emplace(key, std::move(*g.mesh)).first;
-    }
-    return it->second;
-}
+inline const TissueMesh& generated(GeneratedShape shape, std::size_t vertices) { return generatedMesh(shape, vertices); }
 
 /// Levels with the default guards down to 200 vertices.
 inline const MeshLevels& levelsOf(GeneratedShape shape, std::size_t vertices) {

@@ -3,6 +3,7 @@
 #include "engine/loop/HapticLoop.h"
 #include "engine/core/MeshGenerator.h"
 #include "tests/support/AllocationCounter.h"
+#include "tests/support/Meshes.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -16,22 +17,10 @@ using namespace palpate;
 
 namespace {
 
-TissueMesh makeSphere(std::size_t n = 1442) {
-    auto generated = generateMesh(GeneratedShape::Sphere, n);
-    return std::move(*generated.mesh);
-}
-
-VertexId sideVertex(const TissueMesh& mesh) {
-    VertexId best = 0;
-    for (VertexId v = 1; v < mesh.vertexCount(); ++v)
-        if (mesh.restPositionsMm()[v].x > mesh.restPositionsMm()[best].x) best = v;
-    return best;
-}
-
 std::unique_ptr<SimulatedDevice> aimedDevice(const TissueMesh& mesh, SimTrajectory trajectory,
                                              SimulatedDeviceDef def = {}) {
     auto device = std::make_unique<SimulatedDevice>(trajectory, def);
-    const VertexId v = sideVertex(mesh);
+    const VertexId v = test::sideVertex(mesh);
     device->setScene(mesh.restPositionsMm()[v], mesh.restNormals()[v], glm::vec3(0, 1, 0));
     EXPECT_TRUE(device->open());
     return device;
@@ -44,7 +33,7 @@ struct Rig {
 
 Rig makeRig(SimTrajectory trajectory = SimTrajectory::Stroke, HapticLoopDef def = {},
             SlopeRingParams params = {}, SlopeRingMethod method = SlopeRingMethod::Coherent) {
-    TissueMesh mesh = makeSphere();
+    TissueMesh mesh = test::sphereMesh(1442);
     auto device = aimedDevice(mesh, trajectory);
     Rig rig;
     rig.device = device.get();
@@ -193,7 +182,7 @@ TEST(HapticLoop, CommandsValidateAndApplyAtATickBoundary) {
     EXPECT_NEAR(glm::length(rig.loop->newestSnapshot().commandedForceN), 2.0f * before, 0.05f * before);
 
     const auto firstScene = rig.loop->newestSnapshot().sceneId;
-    ASSERT_EQ(rig.loop->swapScene(HapticScene::create(makeSphere(642), slopeRingModelDef(SlopeRingParams{}))), "");
+    ASSERT_EQ(rig.loop->swapScene(HapticScene::create(test::sphereMesh(642), slopeRingModelDef(SlopeRingParams{}))), "");
     rig.loop->stepOnce();
     EXPECT_NE(rig.loop->newestSnapshot().sceneId, firstScene);
     rig.loop->collectRetired();
@@ -258,7 +247,7 @@ TEST(HapticLoop, ALateTickKeepsItsForce) {
         std::unique_ptr<SimulatedDevice> mInner;
         int mReads = 0;
     };
-    TissueMesh mesh = makeSphere();
+    TissueMesh mesh = test::sphereMesh(1442);
     auto stalling = std::make_unique<StallingDevice>(aimedDevice(mesh, SimTrajectory::PressHold));
     StallingDevice* device = stalling.get();
     device->stallAtRead = 2000;  // during the hold, in contact (tick counts, not seconds: a slow
@@ -278,10 +267,10 @@ TEST(HapticLoop, ALateTickKeepsItsForce) {
 }
 
 TEST(HapticLoopThreads, ObserverNeverSeesATornSnapshotUnderParameterChurn) {
-    TissueMesh mesh = makeSphere();
+    TissueMesh mesh = test::sphereMesh(1442);
     auto device = aimedDevice(mesh, SimTrajectory::Sine);
     SimulatedDevice reference(SimTrajectory::Sine);
-    const VertexId side = sideVertex(mesh);
+    const VertexId side = test::sideVertex(mesh);
     reference.setScene(mesh.restPositionsMm()[side], mesh.restNormals()[side], glm::vec3(0, 1, 0));
     reference.setTimeS(1.0 / 4000.0);  // the loop's first tick starts the script (sets the epoch)
     HapticLoopDef def = quietDef();
@@ -354,7 +343,7 @@ TEST(HapticLoop, QueuedScenesAndDevicesAreFreedWithTheLoop) {
     {
         Rig rig = makeRig(SimTrajectory::PressHold, quietDef());
         ASSERT_EQ(rig.loop->swapDevice(std::make_unique<CountedDevice>(&destroyed)), "");
-        ASSERT_EQ(rig.loop->swapScene(HapticScene::create(makeSphere(642), slopeRingModelDef(SlopeRingParams{}))), "");
+        ASSERT_EQ(rig.loop->swapScene(HapticScene::create(test::sphereMesh(642), slopeRingModelDef(SlopeRingParams{}))), "");
     }
     EXPECT_TRUE(destroyed);
 }

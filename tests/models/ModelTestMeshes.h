@@ -3,6 +3,7 @@
 
 #include "engine/core/MeshGenerator.h"
 #include "engine/core/TissueMesh.h"
+#include "tests/support/Meshes.h"
 
 #include <glm/geometric.hpp>
 
@@ -37,10 +38,5 @@ inline TissueMesh tetrahedronMesh(float r = 10.0f) {
     return std::move(*loaded.mesh);
 }
 
-inline TissueMesh sphereMesh(std::size_t vertices) {
-    auto generated = generateMesh(GeneratedShape::Sphere, vertices);
-    if (!generated.mesh) throw std::runtime_error(generated.error());
-    return std::move(*generated.mesh);
-}
 
 }  // namespace palpate::test

@@ -14,21 +14,6 @@
 
 namespace palpate::test {
 
-TempDir::TempDir() {
-    std::random_device rd;
-    for (int attempt = 0; attempt < 100; ++attempt) {
-        mPath = std::filesystem::temp_directory_path() /
-                ("palpate-record-" + std::to_string(::getpid()) + "-" + std::to_string(rd()));
-        if (std::filesystem::create_directory(mPath)) return;
-    }
-    throw std::runtime_error("cannot create a temporary directory");
-}
-
-TempDir::~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(mPath, ec);
-}
-
 namespace {
 
 std::string writeSphere(std::size_t vertices, const std::string& name) {
@@ -89,28 +74,6 @@ void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes)
     out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
-CommandResult runShell(const std::string& commandLine) {
-    CommandResult result;
-    FILE* pipe = ::popen((commandLine + " 2>&1").c_str(), "r");
-    if (!pipe) return result;
-    char buffer[4096];
-    std::size_t n;
-    while ((n = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
-    const int status = ::pclose(pipe);
-    if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
-    else if (WIFSIGNALED(status)) result.exitCode = 128 + WTERMSIG(status);
-    return result;
-}
-
-std::string shellQuote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) {
-        if (c == '\'') q += "'\\''";
-        else q += c;
-    }
-    return q + "'";
-}
-
-CommandResult runCli(const std::string& args) { return runShell(shellQuote(PALPATE_CLI_PATH) + " " + args); }
+CommandResult runCli(const std::string& args) { return runCommand(shellQuote(PALPATE_CLI_PATH) + " " + args); }
 
 }  // namespace palpate::test

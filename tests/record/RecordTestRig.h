@@ -6,6 +6,8 @@
 #include "engine/loop/HapticLoop.h"
 #include "engine/scene/TissuePreset.h"
 #include "engine/record/RecordingFormat.h"
+#include "tests/support/Shell.h"
+#include "tests/support/TempDir.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -14,17 +16,6 @@
 #include <vector>
 
 namespace palpate::test {
-
-class TempDir {
-public:
-    TempDir();
-    ~TempDir();
-    std::string file(const std::string& name) const { return (mPath / name).string(); }
-    const std::filesystem::path& path() const { return mPath; }
-
-private:
-    std::filesystem::path mPath;
-};
 
 /// A 1442-vertex sphere written once per process to an OFF file (the replay loads meshes by path).
 const std::string& sphereMeshPath();
@@ -51,13 +42,6 @@ std::unique_ptr<SimulatedDevice> aimedDevice(const TissueMesh& mesh, SimTrajecto
 std::vector<std::uint8_t> readBytes(const std::string& path);
 void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes);
 
-struct CommandResult {
-    int exitCode = -1;  ///< >= 128 when killed by a signal
-    std::string output; ///< stdout and stderr
-};
-/// Runs a shell command line.
-CommandResult runShell(const std::string& commandLine);
-std::string shellQuote(const std::string& s);
 /// Runs palpate-cli with these arguments (already quoted where needed).
 CommandResult runCli(const std::string& args);
 

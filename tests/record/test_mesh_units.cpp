@@ -207,7 +207,7 @@ namespace {
 
 /// stderr alone of a palpate-cli run (runShell merges the streams).
 CommandResult cliStderr(const std::string& args) {
-    return runShell("{ " + shellQuote(PALPATE_CLI_PATH) + " " + args + " 2>&1 >/dev/null; }");
+    return runCommand("{ " + shellQuote(PALPATE_CLI_PATH) + " " + args + " 2>&1 >/dev/null; }");
 }
 
 std::size_t countOf(const std::string& text, const std::string& word) {

@@ -45,7 +45,7 @@ void writeText(const std::string& path, const std::string& text) { std::ofstream
 
 /// palpate-cli under a timeout: a hang fails the test instead of stopping it (exit 124).
 CommandResult runCliWithin(const std::string& args) {
-    return runShell("timeout 60 " + shellQuote(PALPATE_CLI_PATH) + " " + args);
+    return runCommand("timeout 60 " + shellQuote(PALPATE_CLI_PATH) + " " + args);
 }
 
 nlohmann::json infoJson(const std::string& path) {
@@ -193,7 +193,7 @@ TEST(RecordCliThreads, ASecondWriterIsRefusedAndTheFirstRecordingSurvives) {
     const std::string cli = shellQuote(PALPATE_CLI_PATH);
     const std::string run = cli + " run --mesh " + shellQuote(sphereMeshPath()) + " --device sim:stroke --no-fifo";
     // The second starts once the first has written its header (the file is not empty).
-    const auto r = runShell("(" + run + " --seconds 3 --record " + shellQuote(path) + " >/dev/null 2>&1 &" +
+    const auto r = runCommand("(" + run + " --seconds 3 --record " + shellQuote(path) + " >/dev/null 2>&1 &" +
                             " for i in $(seq 200); do [ -s " + shellQuote(path) + " ] && break; sleep 0.05; done;" +
                             " " + run + " --seconds 0.5 --overwrite --record " + shellQuote(path) +
                             "; echo second=$?;" + " wait)");
@@ -217,7 +217,7 @@ TEST(RecordCliThreads, AnExistingFileIsReplacedOnlyWithOverwrite) {
     // A start that fails (no thread can be created: a 4 GB stack each under a 3 GB address space)
     // costs neither the old file nor a new one.
     if (!kSanitized) {
-        const auto failed = runShell("(ulimit -s 4000000 && ulimit -v 3000000 && exec timeout 60 " +
+        const auto failed = runCommand("(ulimit -s 4000000 && ulimit -v 3000000 && exec timeout 60 " +
                                      shellQuote(PALPATE_CLI_PATH) + " run --mesh " + shellQuote(sphereMeshPath()) +
                                      " --no-fifo --seconds 0.5 --overwrite --record " + shellQuote(path) + ")");
         EXPECT_EQ(failed.exitCode, 1) << failed.output;
@@ -276,7 +276,7 @@ TEST(RecordCliThreads, AFileSizeLimitIsNamedAndTheSummaryIsWhatTheFileHolds) {
     const std::string path = dir.file("limited.palprec");
     // 20 KiB: the limit is reached after about a second of sim:stroke. The CLI ignores SIGXFSZ, so
     // write(2) fails with EFBIG instead of the signal killing it.
-    const auto r = runShell("(ulimit -f 20 && exec " + shellQuote(PALPATE_CLI_PATH) + " run --mesh " +
+    const auto r = runCommand("(ulimit -f 20 && exec " + shellQuote(PALPATE_CLI_PATH) + " run --mesh " +
                             shellQuote(sphereMeshPath()) + " --device sim:stroke --no-fifo --seconds 4 --json" +
                             " --record " + shellQuote(path) + " 2>/dev/null)");
     ASSERT_EQ(r.exitCode, 1) << r.output;  // not 128 + SIGXFSZ
@@ -291,7 +291,7 @@ TEST(RecordCliThreads, AFileSizeLimitIsNamedAndTheSummaryIsWhatTheFileHolds) {
     EXPECT_EQ(info["damaged_regions"].get<int>(), 0);  // cut back to the last whole chunk
     EXPECT_NE(error.find(std::to_string(info["ticks"].get<std::uint64_t>()) + " ticks"), std::string::npos) << error;
     // The text summary says so too, on stderr.
-    const auto text = runShell("(ulimit -f 20 && exec " + shellQuote(PALPATE_CLI_PATH) + " run --mesh " +
+    const auto text = runCommand("(ulimit -f 20 && exec " + shellQuote(PALPATE_CLI_PATH) + " run --mesh " +
                                shellQuote(sphereMeshPath()) + " --device sim:stroke --no-fifo --seconds 4" +
                                " --overwrite --record " + shellQuote(path) + ")");
     EXPECT_EQ(text.exitCode, 1) << text.output;
@@ -301,12 +301,12 @@ TEST(RecordCliThreads, AFileSizeLimitIsNamedAndTheSummaryIsWhatTheFileHolds) {
 TEST(RecordCliThreads, AFullDiskIsNamedAndTheSummaryIsWhatTheFileHolds) {
     // A 16 KiB tmpfs, mounted in a private mount namespace (it goes with the shell), fills after
     // about a second of sim:stroke.
-    if (runShell("unshare -rm true").exitCode != 0) GTEST_SKIP() << "no user and mount namespaces here";
+    if (runCommand("unshare -rm true").exitCode != 0) GTEST_SKIP() << "no user and mount namespaces here";
     TempDir dir;
     std::filesystem::create_directory(dir.file("small"));
     const std::string cli = shellQuote(PALPATE_CLI_PATH);
     const std::string path = dir.file("small") + "/full.palprec";
-    const auto r = runShell("unshare -rm sh -c " +
+    const auto r = runCommand("unshare -rm sh -c " +
                             shellQuote("mount -t tmpfs -o size=16k tmpfs " + shellQuote(dir.file("small")) +
                                        " || exit 99; timeout 60 " + cli + " run --mesh " +
                                        shellQuote(sphereMeshPath()) + " --device sim:stroke --no-fifo --seconds 4" +
@@ -333,7 +333,7 @@ TEST(RecordCliThreads, AFailedExportLeavesTheOldCsvAndNoHalfFile) {
     ASSERT_EQ(runRecorded(dir.file("r.palprec")).exitCode, 0);
     writeText(dir.file("t.csv"), "an earlier export\n");
     // 8 KiB: the CSV of half a second (about 100 bytes a tick) does not fit.
-    const auto r = runShell("(ulimit -f 8 && exec " + shellQuote(PALPATE_CLI_PATH) + " record export-csv " +
+    const auto r = runCommand("(ulimit -f 8 && exec " + shellQuote(PALPATE_CLI_PATH) + " record export-csv " +
                             shellQuote(dir.file("r.palprec")) + " --out " + shellQuote(dir.file("t.csv")) + ")");
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("t.csv: writing failed: File too large"), std::string::npos) << r.output;
@@ -361,16 +361,16 @@ TEST(RecordCliThreads, ThreadsThatCannotStartAreAMessageNotAHangOrAnAbort) {
     // Every thread asks for a 4 GB stack under a 3 GB address space: none can be created.
     const std::string noThreads = "ulimit -s 4000000 && ulimit -v 3000000 && ";
     const std::string mesh = " --mesh " + shellQuote(sphereMeshPath()) + " --no-fifo --seconds 0.5";
-    const auto run = runShell("(" + noThreads + cli + " run" + mesh + " --record " + shellQuote(dir.file("a.palprec")) +
+    const auto run = runCommand("(" + noThreads + cli + " run" + mesh + " --record " + shellQuote(dir.file("a.palprec")) +
                               ")");
     EXPECT_EQ(run.exitCode, 1) << run.output;
     EXPECT_NE(run.output.find("could not start the haptic thread"), std::string::npos) << run.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("a.palprec")));  // no header-only file left
-    const auto loop = runShell("(" + noThreads + cli + " loop" + mesh + ")");
+    const auto loop = runCommand("(" + noThreads + cli + " loop" + mesh + ")");
     EXPECT_EQ(loop.exitCode, 1) << loop.output;
     EXPECT_NE(loop.output.find("could not start the observer thread"), std::string::npos) << loop.output;
     // One 1 GB stack fits in 1.7 GB, a second does not: the haptic thread runs, the writer cannot.
-    const auto writer = runShell("(ulimit -s 1048576 && ulimit -v 1700000 && " + cli + " run" + mesh + " --record " +
+    const auto writer = runCommand("(ulimit -s 1048576 && ulimit -v 1700000 && " + cli + " run" + mesh + " --record " +
                                  shellQuote(dir.file("b.palprec")) + ")");
     EXPECT_EQ(writer.exitCode, 1) << writer.output;
     EXPECT_NE(writer.output.find("b.palprec: cannot start the recording's writer thread"), std::string::npos)

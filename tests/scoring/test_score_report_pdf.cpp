@@ -36,7 +36,7 @@ struct PdfPage {
 /// The pages of `pdf` with their text lines, as pdftotext -bbox-layout finds them (points, origin
 /// top left). Fails the test when pdftotext is missing or fails.
 std::vector<PdfPage> readPdfLines(const std::string& pdf) {
-    const auto result = test::runShell("pdftotext -bbox-layout " + shellQuote(pdf) + " - 2>&1");
+    const auto result = test::runCommand("pdftotext -bbox-layout " + shellQuote(pdf) + " - 2>&1");
     if (result.exitCode != 0) {
         ADD_FAILURE() << "pdftotext -bbox-layout failed (it is in poppler-utils, scripts/install-deps.sh): "
                       << result.output;

@@ -10,6 +10,7 @@
 #include "engine/models/slopering/CoherentSlopeRing.h"
 #include "engine/models/MassSpringModel.h"
 #include "tests/support/AllocationCounter.h"
+#include "tests/support/Meshes.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -19,18 +20,6 @@
 using namespace palpate;
 
 namespace {
-
-TissueMesh sphere(std::size_t n = 242) {
-    auto generated = generateMesh(GeneratedShape::Sphere, n);
-    return std::move(*generated.mesh);
-}
-
-VertexId sideVertex(const TissueMesh& mesh) {
-    VertexId best = 0;
-    for (VertexId v = 1; v < mesh.vertexCount(); ++v)
-        if (mesh.restPositionsMm()[v].x > mesh.restPositionsMm()[best].x) best = v;
-    return best;
-}
 
 /// A hexagonal fan (a vertex and its six neighbours, flat) closed underneath by a seventh vertex:
 /// a closed mesh whose vertex 0 has exactly the six fan triangles on top.
@@ -138,8 +127,8 @@ TEST(DivergenceGuard, InversionBoundOfTheSlopeUpdateOnARaisedPatch) {
 }
 
 TEST(DivergenceGuard, NonFiniteForceOrPosition) {
-    const TissueMesh mesh = sphere();
-    const VertexId v = sideVertex(mesh);
+    const TissueMesh mesh = test::sphereMesh(242);
+    const VertexId v = test::sideVertex(mesh);
     DivergenceGuard guard;
     std::vector<glm::vec3> positions = mesh.restPositionsMm();
     EXPECT_FALSE(guard.check(mesh, positions, touching(v)));
@@ -149,8 +138,8 @@ TEST(DivergenceGuard, NonFiniteForceOrPosition) {
 }
 
 TEST(DivergenceGuard, EnergyGrowthButNotAFastPress) {
-    const TissueMesh mesh = sphere();
-    const VertexId v = sideVertex(mesh);
+    const TissueMesh mesh = test::sphereMesh(242);
+    const VertexId v = test::sideVertex(mesh);
     const std::vector<glm::vec3> positions = mesh.restPositionsMm();
     {
         // A hard press: 0 to 5 N in 50 ms, held: no verdict.
@@ -174,9 +163,9 @@ TEST(DivergenceGuard, EnergyGrowthButNotAFastPress) {
 }
 
 TEST(DivergenceGuard, SlopeRingBeyondItsBoundIsCaughtAndInsideIsNot) {
-    const TissueMesh mesh = sphere();
+    const TissueMesh mesh = test::sphereMesh(242);
     const Octree octree(mesh, OctreeDef{});
-    const VertexId v = sideVertex(mesh);
+    const VertexId v = test::sideVertex(mesh);
     const glm::vec3 tool = mesh.restPositionsMm()[v] - 0.5f * mesh.restNormals()[v];
     for (double factor : {0.95, 1.05}) {
         CoherentSlopeRing model(mesh, octree, SlopeRingParams{});
@@ -194,9 +183,9 @@ TEST(DivergenceGuard, SlopeRingBeyondItsBoundIsCaughtAndInsideIsNot) {
 }
 
 TEST(DivergenceGuard, MassSpringBeyondItsBoundIsCaughtAndInsideIsNot) {
-    const TissueMesh mesh = sphere();
+    const TissueMesh mesh = test::sphereMesh(242);
     const Octree octree(mesh, OctreeDef{});
-    const VertexId v = sideVertex(mesh);
+    const VertexId v = test::sideVertex(mesh);
     const glm::vec3 tool = mesh.restPositionsMm()[v] - 0.5f * mesh.restNormals()[v];
     MassSpringParams p;
     p.dampingRatio = 0.0;
@@ -217,9 +206,9 @@ TEST(DivergenceGuard, MassSpringBeyondItsBoundIsCaughtAndInsideIsNot) {
 }
 
 TEST(DivergenceGuard, CheckDoesNotAllocate) {
-    const TissueMesh mesh = sphere();
+    const TissueMesh mesh = test::sphereMesh(242);
     const Octree octree(mesh, OctreeDef{});
-    const VertexId v = sideVertex(mesh);
+    const VertexId v = test::sideVertex(mesh);
     const glm::vec3 tool = mesh.restPositionsMm()[v] - 0.5f * mesh.restNormals()[v];
     CoherentSlopeRing model(mesh, octree, SlopeRingParams{});
     DivergenceGuard guard;
@@ -230,8 +219,8 @@ TEST(DivergenceGuard, CheckDoesNotAllocate) {
 }
 
 TEST(DivergenceGuard, TheLoopZeroesTheForceResetsTheTissueAndRecordsTheEvent) {
-    TissueMesh mesh = sphere(1442);
-    const VertexId v = sideVertex(mesh);
+    TissueMesh mesh = test::sphereMesh(1442);
+    const VertexId v = test::sideVertex(mesh);
     auto device = std::make_unique<SimulatedDevice>(SimTrajectory::PressHold);
     device->setScene(mesh.restPositionsMm()[v], mesh.restNormals()[v], glm::vec3(0, 1, 0));
     ASSERT_TRUE(device->open());
@@ -284,8 +273,8 @@ TEST(DivergenceGuard, TheLoopZeroesTheForceResetsTheTissueAndRecordsTheEvent) {
 TEST(DivergenceGuard, NoFalseAlarmOnTheSimulatedTrajectoriesWithEveryMethod) {
     for (auto method : {SlopeRingMethod::Coherent, SlopeRingMethod::Proposed, SlopeRingMethod::Previous})
         for (auto trajectory : {SimTrajectory::PressHold, SimTrajectory::Stroke, SimTrajectory::Scan, SimTrajectory::Sine}) {
-            TissueMesh mesh = sphere(1442);
-            const VertexId v = sideVertex(mesh);
+            TissueMesh mesh = test::sphereMesh(1442);
+            const VertexId v = test::sideVertex(mesh);
             auto device = std::make_unique<SimulatedDevice>(trajectory);
             device->setScene(mesh.restPositionsMm()[v], mesh.restNormals()[v], glm::vec3(0, 1, 0));
             ASSERT_TRUE(device->open());

@@ -1,5 +1,6 @@
 #pragma once
-// A child process with a hard timeout: fork/exec, stdout and stderr through pipes (so a file-size
+// The one runner of programs with limits (the fault suite's, the hostile inputs'): a child process
+// with a hard timeout: fork/exec, stdout and stderr through pipes (so a file-size
 // limit on the child does not touch them), resource limits set in the child before exec, and the
 // whole process group killed with SIGKILL when the timeout passes (a hang is a failure, never a
 // stuck suite).
@@ -11,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace palpate::fault {
+namespace palpate::test {
 
 struct ChildSpec {
     std::vector<std::string> argv;
@@ -69,4 +70,4 @@ ChildResult runChild(const ChildSpec& spec);
 /// Monotonic seconds.
 double nowS();
 
-}  // namespace palpate::fault
+}  // namespace palpate::test

@@ -1,4 +1,4 @@
-#include "ChildProcess.h"
+#include "tests/support/ChildProcess.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -13,7 +13,7 @@
 
 extern char** environ;
 
-namespace palpate::fault {
+namespace palpate::test {
 
 double nowS() {
     timespec t{};
@@ -182,4 +182,4 @@ ChildResult runChild(const ChildSpec& spec) {
     return child.wait();
 }
 
-}  // namespace palpate::fault
+}  // namespace palpate::test
