@@ -4,6 +4,7 @@
 #include "engine/core/MeshGenerator.h"
 #include "tests/support/AllocationCounter.h"
 #include "tests/support/Meshes.h"
+#include "tests/support/StubDevice.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -322,22 +323,13 @@ TEST(HapticLoopThreads, ObserverNeverSeesATornSnapshotUnderParameterChurn) {
 TEST(HapticLoop, QueuedScenesAndDevicesAreFreedWithTheLoop) {
     // Sent but never applied (no tick ran): the loop's destructor frees them (LeakSanitizer in the
     // asan preset checks; here the device's destructor must run).
-    class CountedDevice final : public HapticDevice {
+    class CountedDevice final : public test::StubDevice {
     public:
         explicit CountedDevice(bool* destroyed) : mDestroyed(destroyed) {}
         ~CountedDevice() override { *mDestroyed = true; }
-        bool open() override { return true; }
-        void close() override {}
-        bool calibrate() override { return true; }
-        DeviceState state() const override { return DeviceState::Ready; }
-        const DeviceSpec& spec() const override { return mSpec; }
-        bool read(DeviceSample&) override { return false; }
-        void writeForce(const glm::vec3&) override {}
-        void emergencyStop() override {}
 
     private:
         bool* mDestroyed;
-        DeviceSpec mSpec;
     };
     bool destroyed = false;
     {

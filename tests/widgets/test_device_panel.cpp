@@ -10,6 +10,7 @@
 #include "engine/loop/HapticSnapshot.h"
 #include "widgets/DevicePanel.h"
 #include "widgets/ParameterPanel.h"
+#include "tests/support/StubDevice.h"
 
 #include <QDir>
 #include <QImage>
@@ -405,29 +406,22 @@ TEST_F(DevicePanelTest, ShowErrorKeepsTheConnectionAndConnectClearsIt) {
 // open is shown in the Device dock. A registered factory stands in for the hardware.
 namespace {
 
-class SlowDevice final : public HapticDevice {
+class SlowDevice final : public test::StubDevice {
 public:
-    SlowDevice(std::shared_ptr<std::atomic<bool>> release, bool succeed) : mRelease(std::move(release)), mSucceed(succeed) {}
+    SlowDevice(std::shared_ptr<std::atomic<bool>> release, bool succeed) : mRelease(std::move(release)), mSucceed(succeed) {
+        mState = DeviceState::Disconnected;
+    }
     bool open() override {
         for (int waitedMs = 0; waitedMs < 10000 && !mRelease->load(); ++waitedMs)
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
         mState = mSucceed ? DeviceState::Ready : DeviceState::Fault;
         return mSucceed;
     }
-    void close() override { mState = DeviceState::Disconnected; }
-    bool calibrate() override { return true; }
-    DeviceState state() const override { return mState; }
-    const DeviceSpec& spec() const override { return mSpec; }
-    bool read(DeviceSample&) override { return false; }
-    void writeForce(const glm::vec3&) override {}
-    void emergencyStop() override {}
     std::string lastError() const override { return mSucceed ? std::string() : "falcon:0: firmware file missing (test)"; }
 
 private:
     std::shared_ptr<std::atomic<bool>> mRelease;
     bool mSucceed;
-    DeviceState mState = DeviceState::Disconnected;
-    DeviceSpec mSpec;
 };
 
 }  // namespace
