@@ -2,6 +2,7 @@
 
 #include "report/ChartApplication.h"
 #include "report/ChartImage.h"
+#include "report/MetricText.h"
 
 #include <QAreaSeries>
 #include <QChart>
@@ -23,7 +24,7 @@ namespace {
 
 QChartView* metricPlot(const LearningCurveMetric& m, const std::vector<bool>& passed, double textScale, QWidget* parent) {
     auto* chart = new QChart;
-    chart->setTitle(m.name);
+    chart->setTitle(metricNameText(m.key.toStdString()));
     chart->legend()->hide();
     const int sessions = int(m.values.size());
     double lo = INFINITY, hi = -INFINITY;

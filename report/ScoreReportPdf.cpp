@@ -1,6 +1,7 @@
 #include "report/ScoreReportPdf.h"
 
 #include "report/HeatColour.h"
+#include "report/MetricText.h"
 #include "report/PalpationSummaryText.h"
 
 #include "report/ChartApplication.h"
@@ -34,7 +35,6 @@ struct Tr {
 };
 
 QString number(double v, int decimals) { return QLocale().toString(v, 'f', decimals); }
-QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), qsizetype(s.size())); }
 /// A force with one decimal, or two when it has them (a window of 0.65 – 1.65 N).
 QString forceText(double n) { return number(n, std::abs(n * 10.0 - std::round(n * 10.0)) < 1e-6 ? 1 : 2); }
 QString window(double minN, double maxN) { return Tr::tr("%1 – %2 N").arg(forceText(minN), forceText(maxN)); }
@@ -575,10 +575,8 @@ void drawReport(ReportLayout& layout, const ScoreReportContent& content) {
 
     std::vector<std::vector<Cell>> rows;
     for (const MetricResult& m : report.metrics) {
-        const QString unit = fromView(metricUnit(m.metric));
-        const QString value = m.measured ? number(m.value, 2) + (unit.isEmpty() ? QString() : QStringLiteral(" ") + unit)
-                                         : Tr::tr("n/a");
-        rows.push_back({{fromView(metricName(m.metric)), fromView(metricDescription(m.metric))},
+        const QString value = m.measured ? localMetricValueText(m.metric, m.value) : Tr::tr("n/a");
+        rows.push_back({{metricNameText(m.metric), metricDescriptionText(m.metric)},
                         {value, {}},
                         {number(m.subScore, 2), {}},
                         {number(m.weight, 1), {}},

@@ -46,7 +46,7 @@ LearningCurve learningCurve(const ResultsDatabase& db, qint64 traineeId, const E
     c.chart.title = title;
     for (const std::string& m : metrics) {
         LearningCurveMetric line;
-        line.name = QString::fromStdString(m);
+        line.key = QString::fromStdString(m);
         for (const MetricValues& s : c.values) {
             const auto it = s.find(m);
             line.values.push_back(it == s.end() ? std::nullopt : it->second);

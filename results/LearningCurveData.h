@@ -10,7 +10,7 @@
 namespace palpate {
 
 struct LearningCurveMetric {
-    QString name;                          ///< the metric's name
+    QString key;                           ///< the metric's key ("sensitivity"); report/ names it
     std::vector<std::optional<double>> values;  ///< per session, oldest first; nullopt: not measured
     std::optional<double> passMark;        ///< none: no standard for it
     bool higherIsBetter = true;

@@ -3509,6 +3509,14 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
         <source>surface area examined with at least the coverage force / surface area</source>
         <translation>mit mindestens der Abdeckungskraft untersuchte Oberfläche / Oberfläche</translation>
     </message>
+    <message>
+        <source>events</source>
+        <translation>Ereignisse</translation>
+    </message>
+    <message>
+        <source>findings</source>
+        <translation>Befunde</translation>
+    </message>
 </context>
 <context>
     <name>palpate::PalpationSummaryText</name>

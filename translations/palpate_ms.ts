@@ -3505,6 +3505,14 @@ pemapar %5</translation>
         <source>surface area examined with at least the coverage force / surface area</source>
         <translation>luas permukaan yang diperiksa dengan sekurang-kurangnya daya liputan / luas permukaan</translation>
     </message>
+    <message>
+        <source>events</source>
+        <translation>peristiwa</translation>
+    </message>
+    <message>
+        <source>findings</source>
+        <translation>penemuan</translation>
+    </message>
 </context>
 <context>
     <name>palpate::PalpationSummaryText</name>

@@ -7,6 +7,7 @@
 #include "widgets/ParameterCommands.h"
 
 #include "engine/core/HapticRate.h"
+#include "engine/stability/StabilityBounds.h"
 #include "engine/core/Octree.h"
 #include "engine/core/SceneTarget.h"
 #include "engine/models/slopering/SlopeRingModel.h"
@@ -1114,7 +1115,7 @@ void ParameterPanel::validate() {
         problems << tissueProblems(&badTissue);
         for (QWidget* field : badTissue) invalid.insert(field);
     }
-    if (!(p.hapticRateHz >= kMinHapticRateHz && p.hapticRateHz <= kMaxHapticRateHz)) {
+    if (!hapticRateInRange(p.hapticRateHz)) {
         problems << tr("haptic rate = %1 Hz must be in %2..%3 Hz")
                         .arg(number(p.hapticRateHz))
                         .arg(number(kMinHapticRateHz))
@@ -1125,11 +1126,11 @@ void ParameterPanel::validate() {
     // The slope model's loop gain and its bound, shown whether or not the rest is valid.
     const double gain = p.params.loopGain();
     const double alpha = p.params.effectiveRelaxation();
-    const double product = alpha * (1.0 + gain);
+    const double product = p.params.loopProduct();
     const bool automatic = p.params.forceRelaxation == 0.0;
     const QString alphaText = automatic ? tr("%1 (automatic)").arg(number(alpha)) : number(alpha);
     QString stability = tr("Loop gain |m1| × k_c = %1, α = %2").arg(number(gain), alphaText);
-    const bool unstable = !(std::isfinite(product) && product < 2.0);
+    const bool unstable = !(std::isfinite(product) && product < kLoopProductLimit);
     if (unstable) {
         stability += QLatin1Char('\n') +
                      tr("α·(1 + gain) = %1 ≥ 2: unstable (the surface oscillates and grows)").arg(number(product));
@@ -1139,7 +1140,7 @@ void ParameterPanel::validate() {
     } else {
         stability += QLatin1Char('\n') + tr("α·(1 + gain) = %1 < 2: loop-gain margin %2\u00a0%")
                                              .arg(number(product))
-                                             .arg(locale.toString(100.0 * (1.0 - product / 2.0), 'f', 0));
+                                             .arg(locale.toString(100.0 * slopeRingMargin(alpha, gain), 'f', 0));
     }
     // Every model's margin: the smaller of its own bound and the passivity of what it renders
     // (docs/stability.md section 7). Beyond it a set the validators allow is not refused: Apply

@@ -1,5 +1,6 @@
 #include "widgets/ScoreCard.h"
 
+#include "report/MetricText.h"
 #include "report/PalpationSummaryText.h"
 
 #include <QHBoxLayout>
@@ -11,41 +12,8 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
-#include <cmath>
 
 namespace palpate {
-
-QString formatMetricValue(const MetricResult& line) {
-    if (!line.measured) return QStringLiteral("-");
-    const QString unit = QString::fromUtf8(metricUnit(line.metric).data(), int(metricUnit(line.metric).size()));
-    double value = line.value;
-    QString text;
-    if (line.metric == Metric::Completion || line.metric == Metric::HoldInWindowFraction ||
-        line.metric == Metric::ExcessiveForceFraction || line.metric == Metric::ContactFraction ||
-        line.metric == Metric::BandFraction || line.metric == Metric::Economy ||
-        line.metric == Metric::Sensitivity || line.metric == Metric::PositivePredictiveValue ||
-        line.metric == Metric::CoverageFraction) {
-        text = QStringLiteral("%1 %").arg(100.0 * value, 0, 'f', 0);
-    } else if (line.metric == Metric::ExcessiveForceEvents || line.metric == Metric::FalseAlarms) {
-        text = QString::number(std::llround(value));
-    } else {
-        text = QString::number(value, 'f', std::abs(value) >= 100.0 ? 0 : 2);
-        if (!unit.isEmpty()) text += QLatin1Char(' ') + unit;
-    }
-    return text;
-}
-
-QString metricLabel(Metric metric) {
-    // The rubric key without its unit suffix (the value column carries the unit), in words.
-    QString key = QString::fromUtf8(metricName(metric).data(), int(metricName(metric).size()));
-    for (const char* suffix : {"_mm2", "_mm", "_ns", "_n", "_s"})
-        if (key.endsWith(QLatin1String(suffix))) {
-            key.chop(int(qstrlen(suffix)));
-            break;
-        }
-    key.replace(QLatin1Char('_'), QLatin1Char(' '));
-    return key;
-}
 
 ScoreCard::ScoreCard(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
@@ -146,11 +114,10 @@ void ScoreCard::setReport(const ScoreReport& report, const QString& traineeName)
     mTable->setRowCount(int(report.metrics.size()));
     for (int row = 0; row < int(report.metrics.size()); ++row) {
         const MetricResult& line = report.metrics[std::size_t(row)];
-        auto* name = new QTableWidgetItem(metricLabel(line.metric));
-        name->setToolTip(metricLabel(line.metric) + QStringLiteral(": ") +
-                         QString::fromUtf8(metricDescription(line.metric).data(), int(metricDescription(line.metric).size())));
+        auto* name = new QTableWidgetItem(metricNameText(line.metric));
+        name->setToolTip(metricNameText(line.metric) + QStringLiteral(": ") + metricDescriptionText(line.metric));
         mTable->setItem(row, 0, name);
-        mTable->setItem(row, 1, new QTableWidgetItem(formatMetricValue(line)));
+        mTable->setItem(row, 1, new QTableWidgetItem(line.measured ? localMetricValueText(line.metric, line.value) : QStringLiteral("-")));
         mTable->setItem(row, 2, new QTableWidgetItem(line.weight > 0.0 ? QStringLiteral("%1 %").arg(100.0 * line.subScore, 0, 'f', 0)
                                                                        : tr("not scored")));
         mTable->setItem(row, 3, new QTableWidgetItem(QString::number(line.contribution, 'f', 1)));

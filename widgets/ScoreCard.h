@@ -52,9 +52,4 @@ private:
     QPushButton* mHistory = nullptr;
 };
 
-/// A metric as the card names it: its rubric key in words, without the unit ("target error").
-QString metricLabel(Metric metric);
-/// A metric's value as the card and the PDF show it: with its unit, "-" when not measured.
-QString formatMetricValue(const MetricResult& line);
-
 }  // namespace palpate

@@ -6,6 +6,7 @@
 #include "engine/loop/HapticSnapshot.h"
 #include "engine/stability/DivergenceGuard.h"
 #include "engine/loop/RecorderSink.h"
+#include "engine/core/HapticRate.h"
 
 #include <glm/geometric.hpp>
 
@@ -171,7 +172,7 @@ Problems validateFeelBenchDef(const FeelBenchDef& def) {
                             "loop.passes = " + std::to_string(def.loop.passes) + " must be 1..100"});
     if (!(def.loop.restS >= 0.0 && def.loop.restS <= 10.0))
         problems.push_back({"loop.restS", -1, -1, "loop.restS must be 0..10 s"});
-    if (!(def.loop.rateHz >= 10.0 && def.loop.rateHz <= 10000.0))
+    if (!hapticRateInRange(def.loop.rateHz))
         problems.push_back({"loop.rateHz", -1, -1, "loop.rateHz must be 10..10000 Hz"});
     if (def.loadProcesses < 0 || def.loadProcesses > 64)
         problems.push_back({"loadProcesses", -1, -1,

@@ -2,6 +2,7 @@
 
 #include "engine/core/SceneTarget.h"
 #include "engine/lod/NearestTriangle.h"
+#include "engine/core/HapticRate.h"
 
 #include <glm/geometric.hpp>
 
@@ -68,7 +69,7 @@ Problems validateSlideDef(const SlideDef& def) {
     nonNegative(def.breakawayS, "breakawayS", "s");
     positive(def.liftS, "liftS", "s");
     nonNegative(def.approachHeightMm, "approachHeightMm", "mm");
-    if (!(std::isfinite(def.rateHz) && def.rateHz >= 10.0 && def.rateHz <= 10000.0))
+    if (!hapticRateInRange(def.rateHz))
         problems.push_back({"rateHz", -1, -1, "rateHz = " + std::to_string(def.rateHz) + " Hz must be in 10..10000"});
     if (problems.empty() && ticksOf(def.slideS - def.breakawayS, def.rateHz) < 2)
         problems.push_back({"breakawayS", -1, -1,

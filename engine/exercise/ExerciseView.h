@@ -25,6 +25,9 @@ struct ViewText {
         double a = 0.0, b = 0.0;
         int decimals = 0;
     };
+    ViewText() = default;
+    ViewText(const char* sourceText, int pluralCount = -1) : text(sourceText), count(pluralCount) {}
+
     const char* text = "";
     int count = -1;  ///< >= 0: the plural's %n
     std::vector<Arg> args;

@@ -3,6 +3,9 @@
 #include "base/params/FieldTable.h"
 #include "engine/exercise/Exercise.h"
 
+#include <cmath>
+#include <cstdio>
+
 namespace palpate {
 
 namespace {
@@ -69,7 +72,7 @@ constexpr MetricRow kRows[kMetricCount] = {
          zero = 0.5 * e.excessiveForceN * e.timeLimitS;
      }},
     {Metric::ExcessiveForceEvents, "excessive_force_events", PALPATE_TRANSLATE_NOOP("palpate::Metrics", "excessive force events"),
-     PALPATE_TRANSLATE_NOOP("palpate::Metrics", "times the force rose above the excessive force"), "events", kCount, 0, true, fixed<0, 5000>},
+     PALPATE_TRANSLATE_NOOP("palpate::Metrics", "times the force rose above the excessive force"), PALPATE_TRANSLATE_NOOP("palpate::Metrics", "events"), kCount, 0, true, fixed<0, 5000>},
     {Metric::ExcessiveForceFraction, "excessive_force_fraction", PALPATE_TRANSLATE_NOOP("palpate::Metrics", "excessive force fraction"),
      PALPATE_TRANSLATE_NOOP("palpate::Metrics", "time above the excessive force / time in contact"), "", kPercent, 0, true, fixed<0, 200>},
     {Metric::DamageTimeS, "damage_time_s", PALPATE_TRANSLATE_NOOP("palpate::Metrics", "damage time"),
@@ -109,7 +112,7 @@ constexpr MetricRow kRows[kMetricCount] = {
     {Metric::PositivePredictiveValue, "positive_predictive_value", PALPATE_TRANSLATE_NOOP("palpate::Metrics", "positive predictive value"),
      PALPATE_TRANSLATE_NOOP("palpate::Metrics", "findings on a lump / findings"), "", kPercent, 0, false, fixed<1000, 0>},
     {Metric::FalseAlarms, "false_alarms", PALPATE_TRANSLATE_NOOP("palpate::Metrics", "false alarms"),
-     PALPATE_TRANSLATE_NOOP("palpate::Metrics", "findings matched to no lump"), "findings", kCount, 0, false, fixed<0, 3000>},
+     PALPATE_TRANSLATE_NOOP("palpate::Metrics", "findings matched to no lump"), PALPATE_TRANSLATE_NOOP("palpate::Metrics", "findings"), kCount, 0, false, fixed<0, 3000>},
     // A hit lies at most radius + tolerance from its lump's centre: that is zero marks.
     {Metric::LocalisationMm, "localisation_mm", PALPATE_TRANSLATE_NOOP("palpate::Metrics", "localisation"),
      PALPATE_TRANSLATE_NOOP("palpate::Metrics", "mean distance from a found lump's centre to the finding on it"), "mm", kNumber, 2, false,
@@ -146,6 +149,25 @@ std::optional<Metric> parseMetric(std::string_view name) {
     for (const MetricRow& row : kRows)
         if (row.key == name) return row.metric;
     return std::nullopt;
+}
+
+MetricShown metricShown(Metric metric, double value) {
+    const MetricRow& row = metricRow(metric);
+    switch (row.display) {
+    case MetricDisplay::Percent: return {100.0 * value, row.decimals, "%"};
+    case MetricDisplay::Count: return {std::round(value), 0, row.unit};
+    case MetricDisplay::Number: break;
+    }
+    return {value, row.decimals, row.unit};
+}
+
+std::string metricValueText(Metric metric, double value) {
+    const MetricShown shown = metricShown(metric, value);
+    char text[64];
+    std::snprintf(text, sizeof(text), "%.*f", shown.decimals, shown.number);
+    std::string out = text;
+    if (!shown.unit.empty()) out.append(" ").append(shown.unit);
+    return out;
 }
 
 }  // namespace palpate

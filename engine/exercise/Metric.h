@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace palpate {
@@ -82,5 +83,17 @@ std::string_view metricUnit(Metric metric);
 /// One line for people (the breakdown, the GUI's score card tooltips).
 std::string_view metricDescription(Metric metric);
 std::optional<Metric> parseMetric(std::string_view name);
+
+/// A value as people read it, from its row's display (docs/scoring.md, "Metrics"): the number to
+/// print, its decimals and what follows it ("%" for a fraction shown as a percentage, else the
+/// unit, possibly empty). Every surface (score card, PDF, text, learning curve) formats from this.
+struct MetricShown {
+    double number;
+    int decimals;
+    std::string_view unit;
+};
+MetricShown metricShown(Metric metric, double value);
+/// The value as text in the C locale: "85 %", "3.20 mm", "2 findings" (the CLI's text report).
+std::string metricValueText(Metric metric, double value);
 
 }  // namespace palpate

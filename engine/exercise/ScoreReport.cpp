@@ -59,18 +59,12 @@ std::string scoreReportToJson(const ScoreReport& r, int indent) {
                 lumps.push_back({{"hit", d->findingOfLump[k] >= 0},
                                  {"finding", d->findingOfLump[k] >= 0 ? Json(d->findingOfLump[k]) : Json(nullptr)},
                                  {"localisation_mm", d->findingOfLump[k] >= 0 ? Json(d->localisationMm[k]) : Json(nullptr)}});
-            j["detection"] = {{"hits", d->hits},
-                              {"misses", d->misses},
-                              {"false_alarms", d->falseAlarms},
-                              {"sensitivity", maybe(d->sensitivity)},
-                              {"ppv", maybe(d->positivePredictive)},
-                              {"localisation_mm", maybe(d->meanLocalisationMm())},
-                              {"lumps", lumps}};
+            // Sensitivity, predictive value, false alarms and localisation are metrics: "metrics" holds them.
+            j["detection"] = {{"hits", d->hits}, {"misses", d->misses}, {"lumps", lumps}};
             Json findings = Json::array();
             for (const glm::dvec3& f : p.findingsMm) findings.push_back({f.x, f.y, f.z});
             j["findings_mm"] = findings;
         }
-        j["coverage_pct"] = 100.0 * p.coverageFraction;
         j["coverage"] = {{"min_force_n", p.coverage.minForceN}, {"radius_mm", p.coverage.radiusMm}};
         auto phase = [](const std::optional<ForcePercentiles>& f) {
             if (!f) return Json(nullptr);
@@ -100,17 +94,14 @@ std::string scoreReportToText(const ScoreReport& r) {
                   std::string(exerciseTypeName(r.type)).c_str(), r.score,
                   r.guidance.completed ? ", completed" : (r.guidance.timeUp ? ", time up" : ", not completed"));
     out << line;
-    std::snprintf(line, sizeof(line), "  %-26s %12s %6s %7s %8s  %s\n", "metric", "value", "sub", "weight", "points",
+    std::snprintf(line, sizeof(line), "  %-26s %14s %6s %7s %8s  %s\n", "metric", "value", "sub", "weight", "points",
                   "full .. zero");
     out << line;
     for (const MetricResult& m : r.metrics) {
-        char value[32];
-        if (m.measured) std::snprintf(value, sizeof(value), "%.3f", m.value);
-        else std::snprintf(value, sizeof(value), "-");
-        const std::string unit(metricUnit(m.metric));
-        std::snprintf(line, sizeof(line), "  %-26s %12s %6.2f %7.1f %8.2f  %g .. %g%s%s\n",
-                      std::string(metricName(m.metric)).c_str(), value, m.subScore, m.weight, m.contribution,
-                      m.fullMarks, m.zeroMarks, unit.empty() ? "" : " ", unit.c_str());
+        const std::string value = m.measured ? metricValueText(m.metric, m.value) : "-";
+        const std::string range = metricValueText(m.metric, m.fullMarks) + " .. " + metricValueText(m.metric, m.zeroMarks);
+        std::snprintf(line, sizeof(line), "  %-26s %14s %6.2f %7.1f %8.2f  %s\n", std::string(metricName(m.metric)).c_str(),
+                      value.c_str(), m.subScore, m.weight, m.contribution, range.c_str());
         out << line;
     }
     for (std::size_t i = 0; i < r.targets.size(); ++i) {

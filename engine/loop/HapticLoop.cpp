@@ -47,7 +47,7 @@ void hashBytes(std::uint64_t& hash, const void* data, std::size_t size) {
 }  // namespace
 
 std::string validateHapticLoopDef(const HapticLoopDef& def) {
-    if (!std::isfinite(def.rateHz) || def.rateHz < kMinHapticRateHz || def.rateHz > kMaxHapticRateHz)
+    if (!hapticRateInRange(def.rateHz))
         return "haptic rate " + std::to_string(def.rateHz) + " Hz is out of range " + formatNumber(kMinHapticRateHz) +
                ".." + formatNumber(kMaxHapticRateHz) + " Hz";
     if (!std::isfinite(def.spinFraction) || def.spinFraction < 0.0 || def.spinFraction > 0.9)

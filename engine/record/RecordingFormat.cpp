@@ -1,6 +1,7 @@
 #include "engine/record/RecordingFormat.h"
 
 #include "engine/record/Crc32.h"
+#include "engine/core/HapticRate.h"
 
 #include <cmath>
 #include <cstring>
@@ -309,7 +310,7 @@ bool decodeRecordingHeader(const std::uint8_t* data, std::size_t size, Recording
     h.engineVersion = r.str("engineVersion", kMaxNameBytes);
     h.startUnixUs = std::int64_t(r.u64("startUnixUs"));
     h.rateHz = r.f64("rateHz");
-    if (r.ok() && !(h.rateHz >= 10.0 && h.rateHz <= 10000.0))
+    if (r.ok() && !hapticRateInRange(h.rateHz))
         r.fail("rateHz", std::to_string(h.rateHz) + " Hz is outside 10..10000");
     h.scene = decodeScene(r, "scene");
     h.device = decodeDevice(r, "device");

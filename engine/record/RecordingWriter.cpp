@@ -1,4 +1,5 @@
 #include "engine/record/RecordingWriter.h"
+#include "engine/core/HapticRate.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -157,7 +158,7 @@ std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path
         error = problem;
         return nullptr;
     }
-    if (!(header.rateHz >= 10.0 && header.rateHz <= 10000.0)) {
+    if (!hapticRateInRange(header.rateHz)) {
         error = "recording header: rateHz " + std::to_string(header.rateHz) + " is outside 10..10000";
         return nullptr;
     }

@@ -1,5 +1,7 @@
 #include "engine/stability/StabilityBounds.h"
 
+#include "engine/models/slopering/SlopeRingParams.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -8,11 +10,11 @@
 
 namespace palpate {
 
-double slopeRingMaxGain(double alpha) { return alpha > 0.0 ? 2.0 / alpha - 1.0 : kNoBound; }
+double slopeRingMaxGain(double alpha) { return alpha > 0.0 ? kLoopProductLimit / alpha - 1.0 : kNoBound; }
 
-double slopeRingMaxRelaxation(double gain) { return 2.0 / (1.0 + gain); }
+double slopeRingMaxRelaxation(double gain) { return kLoopProductLimit / (1.0 + gain); }
 
-double slopeRingMargin(double alpha, double gain) { return 1.0 - alpha * (1.0 + gain) / 2.0; }
+double slopeRingMargin(double alpha, double gain) { return 1.0 - alpha * (1.0 + gain) / kLoopProductLimit; }
 
 double symplecticEulerMaxStepS(double omega, double gamma) {
     // The step matrix of (u, w) has trace 1 + c - c h^2 omega^2 and determinant c = 1 / (1 + h gamma);

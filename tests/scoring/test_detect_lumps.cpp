@@ -412,15 +412,18 @@ TEST(ScriptedExaminers, ScoreJsonCarriesDetectionCoverageAndForceByPhase) {
     const auto j = nlohmann::json::parse(result.output.substr(result.output.find('{')));
     EXPECT_EQ(j["detection"]["hits"], 2);
     EXPECT_EQ(j["detection"]["misses"], 1);
-    EXPECT_EQ(j["detection"]["false_alarms"], 0);
-    EXPECT_NEAR(j["detection"]["sensitivity"].get<double>(), 2.0 / 3.0, 1e-9);
-    EXPECT_EQ(j["detection"]["ppv"], 1.0);
-    EXPECT_LT(j["detection"]["localisation_mm"].get<double>(), 2.0);
-    EXPECT_GT(j["coverage_pct"].get<double>(), 90.0);
+    EXPECT_EQ(j["metrics"]["false_alarms"], 0);
+    EXPECT_NEAR(j["metrics"]["sensitivity"].get<double>(), 2.0 / 3.0, 1e-9);
+    EXPECT_EQ(j["metrics"]["positive_predictive_value"], 1.0);
+    EXPECT_LT(j["metrics"]["localisation_mm"].get<double>(), 2.0);
+    EXPECT_GT(j["metrics"]["coverage_fraction"].get<double>(), 0.9);
+    // Each metric is said once: the detection and coverage sections do not repeat them.
+    for (const char* repeated : {"sensitivity", "ppv", "false_alarms", "localisation_mm"})
+        EXPECT_FALSE(j["detection"].contains(repeated)) << repeated;
+    EXPECT_FALSE(j.contains("coverage_pct"));
     EXPECT_TRUE(j["force_by_phase"]["search"]["p50_n"].is_number());
     EXPECT_TRUE(j["force_by_phase"]["palpation"]["p90_n"].is_number());
     EXPECT_EQ(j["feedback"][0]["key"], "pressed_too_lightly");
-    EXPECT_TRUE(j["metrics"]["sensitivity"].is_number());
 }
 
 }  // namespace

@@ -406,7 +406,9 @@ TEST(ScoreReportPdf, WritesReadableText) {
     EXPECT_TRUE(text.contains(QStringLiteral("Score: %1 / 100").arg(QLocale().toString(72.5, 'f', 1))))
         << text.toStdString();
     for (const char* word : {"Press", "two", "targets"}) EXPECT_TRUE(text.contains(QLatin1String(word))) << word;
-    EXPECT_TRUE(text.contains(QStringLiteral("peak_force_n"))) << text.toStdString();
+    // Metrics by their names for people, values in the metric's display.
+    EXPECT_TRUE(text.contains(QStringLiteral("Peak force"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Completion 100 %"))) << text.toStdString();
     EXPECT_TRUE(text.contains(QStringLiteral("Contribution"))) << text.toStdString();
     EXPECT_TRUE(text.contains(QStringLiteral("Time (s)"))) << text.toStdString();
     EXPECT_TRUE(text.contains(QStringLiteral("force window"))) << text.toStdString();

@@ -943,6 +943,36 @@ TEST(ScoreCardLayout, MetricNamesWrapInsteadOfBeingCutOff) {
     EXPECT_LE(table->width(), std::max(card.width(), table->minimumWidth()));
 }
 
+// The card names each metric from its row, translated, and shows its value in the user's locale.
+TEST(ScoreCardLayout, ValuesReadFromTheMetricRowsInTheLocale) {
+    ScoreReport report = reportOf(72.0, true);
+    auto line = [](Metric m, double value) {
+        MetricResult r;
+        r.metric = m;
+        r.measured = true;
+        r.value = value;
+        r.weight = 1.0;
+        return r;
+    };
+    report.metrics = {line(Metric::Completion, 0.85), line(Metric::PeakForceN, 3.2), line(Metric::FalseAlarms, 2.0)};
+    report.metrics.push_back(line(Metric::LumpErrorMm, 0.0));
+    report.metrics.back().measured = false;
+    const QLocale before;
+    QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    ScoreCard card;
+    card.setReport(report, QStringLiteral("Ada"));
+    QLocale::setDefault(before);
+    QTableWidget* table = card.breakdownTable();
+    ASSERT_EQ(table->rowCount(), 4);
+    EXPECT_EQ(table->item(0, 0)->text(), QStringLiteral("Completion"));
+    EXPECT_EQ(table->item(0, 1)->text(), QStringLiteral("85 %"));
+    EXPECT_EQ(table->item(1, 0)->text(), QStringLiteral("Peak force"));
+    EXPECT_EQ(table->item(1, 1)->text(), QStringLiteral("3,20 N"));
+    EXPECT_EQ(table->item(2, 1)->text(), QStringLiteral("2 findings"));
+    EXPECT_EQ(table->item(3, 1)->text(), QStringLiteral("-"));
+    EXPECT_TRUE(table->item(1, 0)->toolTip().contains(QStringLiteral("largest force rendered")));
+}
+
 int main(int argc, char** argv) {
     qputenv("QT_QPA_PLATFORM", "offscreen");
     QStandardPaths::setTestModeEnabled(true);  // QSettings and data folders of these tests are not the user's

@@ -235,11 +235,12 @@ Problems validateSlopeRingParams(const SlopeRingParams& p) {
     if (problems.empty()) {
         const double alpha = p.effectiveRelaxation();
         const double gain = p.loopGain();
-        if (alpha * (1.0 + gain) >= 2.0)
+        if (!(p.loopProduct() < kLoopProductLimit))
             problems.push_back({"forceRelaxation", -1, -1,
                                 "unstable: loop gain |m1| * contactStiffness = " + formatNumber(gain) +
                                     " with forceRelaxation " + formatNumber(alpha) + " gives alpha * (1 + gain) = " +
-                                    formatNumber(alpha * (1.0 + gain)) + ", which must stay below 2"});
+                                    formatNumber(p.loopProduct()) + ", which must stay below " +
+                                    formatNumber(kLoopProductLimit)});
     }
     return problems;
 }

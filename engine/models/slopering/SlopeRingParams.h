@@ -15,6 +15,11 @@ namespace palpate {
 /// Knots of the strain-stiffening curve (docs/method.md, "Tissue that stiffens with depth").
 inline constexpr int kMaxStiffeningKnots = 8;
 
+/// The slope model's loop is stable while alpha (1 + gain) stays below this (docs/stability.md,
+/// "The slope model's loop gain"): the one statement of the rule; the validator, the stability
+/// bounds and the Parameters panel read it.
+inline constexpr double kLoopProductLimit = 2.0;
+
 struct SlopeRingParams {
     /// Rings beyond the touched vertex (the paper uses 2).
     int ringCount = 2;
@@ -47,6 +52,9 @@ struct SlopeRingParams {
     std::array<double, kMaxStiffeningKnots> stiffeningCompliance{1, 1, 1, 1, 1, 1, 1, 1};  ///< in (0, 1], not rising
 
     double loopGain() const { return slopeMagnitudeMmPerN[0] * contactStiffnessNPerMm; }
+    /// alpha (1 + gain): the slope model's loop converges only while it stays below
+    /// kLoopProductLimit (docs/stability.md, "The slope model's loop gain").
+    double loopProduct() const { return effectiveRelaxation() * (1.0 + loopGain()); }
     double effectiveRelaxation() const { return forceRelaxation > 0.0 ? forceRelaxation : 1.0 / (1.0 + loopGain()); }
     /// The stiffness a held press renders, N/mm: R = k_s |m1| F with F = k_c d / (1 + g) at rest
     /// (docs/method.md, "Contact and force, per tick"). Stiffening tissue renders more on its

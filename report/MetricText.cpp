@@ -1,0 +1,31 @@
+#include "report/MetricText.h"
+
+#include <QCoreApplication>
+
+namespace palpate {
+
+QString metricNameText(Metric metric) {
+    QString name = QCoreApplication::translate(kMetricTextContext, metricRow(metric).name);
+    // The rows hold names as they read inside a sentence; a label starts with a capital.
+    if (!name.isEmpty()) name[0] = name[0].toUpper();
+    return name;
+}
+
+QString metricNameText(std::string_view key) {
+    if (const std::optional<Metric> metric = parseMetric(key)) return metricNameText(*metric);
+    return QString::fromUtf8(key.data(), qsizetype(key.size()));
+}
+
+QString metricDescriptionText(Metric metric) {
+    return QCoreApplication::translate(kMetricTextContext, metricRow(metric).description);
+}
+
+QString localMetricValueText(Metric metric, double value, const QLocale& locale) {
+    const MetricShown shown = metricShown(metric, value);
+    QString text = locale.toString(shown.number, 'f', shown.decimals);
+    // Units are NUL-terminated literals of the rows; words among them ("events") are translated.
+    if (!shown.unit.empty()) text += QLatin1Char(' ') + QCoreApplication::translate(kMetricTextContext, shown.unit.data());
+    return text;
+}
+
+}  // namespace palpate
