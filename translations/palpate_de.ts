@@ -3519,26 +3519,7 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     </message>
 </context>
 <context>
-    <name>palpate::PalpationSummaryText</name>
-    <message>
-        <source>Lumps found: %1 of %2, false alarms: %3 (sensitivity %4, predictive value %5)</source>
-        <translation>Gefundene Knoten: %1 von %2, Fehlalarme: %3 (Sensitivität %4, Vorhersagewert %5)</translation>
-    </message>
-    <message>
-        <source>Findings on a lump lay %1 mm from its centre on average</source>
-        <translation>Befunde auf einem Knoten lagen im Mittel %1 mm von seiner Mitte entfernt</translation>
-    </message>
-    <message>
-        <source>Surface examined at %1 N or more: %2 %</source>
-        <translation>Mit %1 N oder mehr untersuchte Oberfläche: %2 %</translation>
-    </message>
-    <message>
-        <source>Force: searching %1 N, palpating %2 N (medians; %3 times)</source>
-        <translation>Kraft: Suchen %1 N, Tasten %2 N (Mediane; %3-fach)</translation>
-    </message>
-</context>
-<context>
-    <name>palpate::ParameterPanel</name>
+    <name>palpate::Models</name>
     <message>
         <source>Mass-spring, symplectic Euler</source>
         <translation>Masse-Feder, symplektischer Euler</translation>
@@ -3595,6 +3576,60 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
         <source>The slope-ring update on rings of a tetrahedral fill of the surface (the paper&apos;s future work); uses the slopes and springs below. Cost: the rings of the tet graph.</source>
         <translation>Das Slope-Ring-Update auf Ringen einer Tetraederfüllung der Oberfläche (die künftige Arbeit des Artikels); verwendet die Steigungen und Federn unten. Aufwand: die Ringe des Tetraedergraphen.</translation>
     </message>
+    <message>
+        <source>Coherent rings (ours)</source>
+        <translation>Kohärente Ringe (unseres)</translation>
+    </message>
+    <message>
+        <source>Ours: exact warm-started nearest-vertex search, only the rings processed, incremental work per tick. Cost: the rings of the touched vertex.</source>
+        <translation>Unseres: exakte warmgestartete Suche nach dem nächsten Knoten, nur die Ringe verarbeitet, inkrementelle Arbeit pro Tick. Aufwand: die Ringe des berührten Knotens.</translation>
+    </message>
+    <message>
+        <source>Proposed (paper)</source>
+        <translation>Vorgeschlagen (Artikel)</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s method: its octree searchNode (faithful, can miss the nearest vertex) and only the rings. Cost: the rings of the touched vertex.</source>
+        <translation>Die Methode des Artikels: sein Octree-searchNode (getreu, kann den nächsten Knoten verfehlen) und nur die Ringe. Aufwand: die Ringe des berührten Knotens.</translation>
+    </message>
+    <message>
+        <source>Hybrid (paper)</source>
+        <translation>Hybrid (Artikel)</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s hybrid: its octree searchNode, and the whole model processed every tick. Cost: every vertex per tick, O(n).</source>
+        <translation>Der Hybrid des Artikels: sein Octree-searchNode, und das ganze Modell wird in jedem Tick verarbeitet. Aufwand: jeder Knoten pro Tick, O(n).</translation>
+    </message>
+    <message>
+        <source>Previous (paper)</source>
+        <translation>Vorherig (Artikel)</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s baseline: linear nearest-vertex search, and the whole model processed every tick. Cost: every vertex per tick, O(n).</source>
+        <translation>Die Basislinie des Artikels: lineare Suche nach dem nächsten Knoten, und das ganze Modell wird in jedem Tick verarbeitet. Aufwand: jeder Knoten pro Tick, O(n).</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::PalpationSummaryText</name>
+    <message>
+        <source>Lumps found: %1 of %2, false alarms: %3 (sensitivity %4, predictive value %5)</source>
+        <translation>Gefundene Knoten: %1 von %2, Fehlalarme: %3 (Sensitivität %4, Vorhersagewert %5)</translation>
+    </message>
+    <message>
+        <source>Findings on a lump lay %1 mm from its centre on average</source>
+        <translation>Befunde auf einem Knoten lagen im Mittel %1 mm von seiner Mitte entfernt</translation>
+    </message>
+    <message>
+        <source>Surface examined at %1 N or more: %2 %</source>
+        <translation>Mit %1 N oder mehr untersuchte Oberfläche: %2 %</translation>
+    </message>
+    <message>
+        <source>Force: searching %1 N, palpating %2 N (medians; %3 times)</source>
+        <translation>Kraft: Suchen %1 N, Tasten %2 N (Mediane; %3-fach)</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ParameterPanel</name>
     <message>
         <source>Undo</source>
         <translation>Rückgängig</translation>
@@ -3666,46 +3701,6 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>Deformation model:</source>
         <translation>Deformationsmodell:</translation>
-    </message>
-    <message>
-        <source>Coherent rings (ours)</source>
-        <translation>Kohärente Ringe (unseres)</translation>
-    </message>
-    <message>
-        <source>Proposed (paper)</source>
-        <translation>Vorgeschlagen (Artikel)</translation>
-    </message>
-    <message>
-        <source>Hybrid (paper)</source>
-        <translation>Hybrid (Artikel)</translation>
-    </message>
-    <message>
-        <source>Previous (paper)</source>
-        <translation>Vorherig (Artikel)</translation>
-    </message>
-    <message>
-        <source>Ours: exact warm-started nearest-vertex search, only the rings processed, incremental work per tick.</source>
-        <translation>Unseres: exakte warmgestartete Suche nach dem nächsten Knoten, nur die Ringe verarbeitet, inkrementelle Arbeit pro Tick.</translation>
-    </message>
-    <message>
-        <source>The paper&apos;s method: its octree searchNode (faithful, can miss the nearest vertex) and only the rings.</source>
-        <translation>Die Methode des Artikels: sein Octree-searchNode (getreu, kann den nächsten Knoten verfehlen) und nur die Ringe.</translation>
-    </message>
-    <message>
-        <source>The paper&apos;s hybrid: its octree searchNode, and the whole model processed every tick.</source>
-        <translation>Der Hybrid des Artikels: sein Octree-searchNode, und das ganze Modell wird in jedem Tick verarbeitet.</translation>
-    </message>
-    <message>
-        <source>The paper&apos;s baseline: linear nearest-vertex search, and the whole model processed every tick.</source>
-        <translation>Die Basislinie des Artikels: lineare Suche nach dem nächsten Knoten, und das ganze Modell wird in jedem Tick verarbeitet.</translation>
-    </message>
-    <message>
-        <source>Cost: the rings of the touched vertex.</source>
-        <translation>Aufwand: die Ringe des berührten Knotens.</translation>
-    </message>
-    <message>
-        <source>Cost: every vertex per tick, O(n).</source>
-        <translation>Aufwand: jeder Knoten pro Tick, O(n).</translation>
     </message>
     <message>
         <source>Which model deforms the tissue: the slope-ring methods (ours and the paper&apos;s three), then the literature&apos;s other models (docs/models.md).</source>

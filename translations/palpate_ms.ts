@@ -3515,26 +3515,7 @@ pemapar %5</translation>
     </message>
 </context>
 <context>
-    <name>palpate::PalpationSummaryText</name>
-    <message>
-        <source>Lumps found: %1 of %2, false alarms: %3 (sensitivity %4, predictive value %5)</source>
-        <translation>Ketulan ditemui: %1 daripada %2, penggera palsu: %3 (kepekaan %4, nilai ramalan %5)</translation>
-    </message>
-    <message>
-        <source>Findings on a lump lay %1 mm from its centre on average</source>
-        <translation>Penemuan pada ketulan terletak purata %1 mm dari pusatnya</translation>
-    </message>
-    <message>
-        <source>Surface examined at %1 N or more: %2 %</source>
-        <translation>Permukaan diperiksa pada %1 N atau lebih: %2 %</translation>
-    </message>
-    <message>
-        <source>Force: searching %1 N, palpating %2 N (medians; %3 times)</source>
-        <translation>Daya: mencari %1 N, meraba %2 N (median; %3 kali)</translation>
-    </message>
-</context>
-<context>
-    <name>palpate::ParameterPanel</name>
+    <name>palpate::Models</name>
     <message>
         <source>Mass-spring, symplectic Euler</source>
         <translation>Jisim-spring, Euler simplektik</translation>
@@ -3591,6 +3572,60 @@ pemapar %5</translation>
         <source>The slope-ring update on rings of a tetrahedral fill of the surface (the paper&apos;s future work); uses the slopes and springs below. Cost: the rings of the tet graph.</source>
         <translation>Kemas kini gelang-cerun pada gelang isian tetrahedron permukaan (kerja masa depan kertas kerja); menggunakan cerun dan spring di bawah. Kos: gelang graf tet.</translation>
     </message>
+    <message>
+        <source>Coherent rings (ours)</source>
+        <translation>Gelang koheren (kami)</translation>
+    </message>
+    <message>
+        <source>Ours: exact warm-started nearest-vertex search, only the rings processed, incremental work per tick. Cost: the rings of the touched vertex.</source>
+        <translation>Kami: carian bucu terdekat yang tepat dan bermula panas, hanya gelang diproses, kerja berperingkat setiap tik. Kos: gelang bucu yang disentuh.</translation>
+    </message>
+    <message>
+        <source>Proposed (paper)</source>
+        <translation>Dicadangkan (kertas kerja)</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s method: its octree searchNode (faithful, can miss the nearest vertex) and only the rings. Cost: the rings of the touched vertex.</source>
+        <translation>Kaedah kertas kerja: searchNode octree-nya (setia, boleh terlepas bucu terdekat) dan hanya gelang. Kos: gelang bucu yang disentuh.</translation>
+    </message>
+    <message>
+        <source>Hybrid (paper)</source>
+        <translation>Hibrid (kertas kerja)</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s hybrid: its octree searchNode, and the whole model processed every tick. Cost: every vertex per tick, O(n).</source>
+        <translation>Hibrid kertas kerja: searchNode octree-nya, dan seluruh model diproses setiap tik. Kos: setiap bucu bagi setiap tik, O(n).</translation>
+    </message>
+    <message>
+        <source>Previous (paper)</source>
+        <translation>Terdahulu (kertas kerja)</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s baseline: linear nearest-vertex search, and the whole model processed every tick. Cost: every vertex per tick, O(n).</source>
+        <translation>Garis dasar kertas kerja: carian bucu terdekat secara linear, dan seluruh model diproses setiap tik. Kos: setiap bucu bagi setiap tik, O(n).</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::PalpationSummaryText</name>
+    <message>
+        <source>Lumps found: %1 of %2, false alarms: %3 (sensitivity %4, predictive value %5)</source>
+        <translation>Ketulan ditemui: %1 daripada %2, penggera palsu: %3 (kepekaan %4, nilai ramalan %5)</translation>
+    </message>
+    <message>
+        <source>Findings on a lump lay %1 mm from its centre on average</source>
+        <translation>Penemuan pada ketulan terletak purata %1 mm dari pusatnya</translation>
+    </message>
+    <message>
+        <source>Surface examined at %1 N or more: %2 %</source>
+        <translation>Permukaan diperiksa pada %1 N atau lebih: %2 %</translation>
+    </message>
+    <message>
+        <source>Force: searching %1 N, palpating %2 N (medians; %3 times)</source>
+        <translation>Daya: mencari %1 N, meraba %2 N (median; %3 kali)</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::ParameterPanel</name>
     <message>
         <source>Undo</source>
         <translation>Buat asal</translation>
@@ -3662,46 +3697,6 @@ pemapar %5</translation>
     <message>
         <source>Deformation model:</source>
         <translation>Model ubah bentuk:</translation>
-    </message>
-    <message>
-        <source>Coherent rings (ours)</source>
-        <translation>Gelang koheren (kami)</translation>
-    </message>
-    <message>
-        <source>Proposed (paper)</source>
-        <translation>Dicadangkan (kertas kerja)</translation>
-    </message>
-    <message>
-        <source>Hybrid (paper)</source>
-        <translation>Hibrid (kertas kerja)</translation>
-    </message>
-    <message>
-        <source>Previous (paper)</source>
-        <translation>Terdahulu (kertas kerja)</translation>
-    </message>
-    <message>
-        <source>Ours: exact warm-started nearest-vertex search, only the rings processed, incremental work per tick.</source>
-        <translation>Kami: carian bucu terdekat yang tepat dan bermula panas, hanya gelang diproses, kerja berperingkat setiap tik.</translation>
-    </message>
-    <message>
-        <source>The paper&apos;s method: its octree searchNode (faithful, can miss the nearest vertex) and only the rings.</source>
-        <translation>Kaedah kertas kerja: searchNode octree-nya (setia, boleh terlepas bucu terdekat) dan hanya gelang.</translation>
-    </message>
-    <message>
-        <source>The paper&apos;s hybrid: its octree searchNode, and the whole model processed every tick.</source>
-        <translation>Hibrid kertas kerja: searchNode octree-nya, dan seluruh model diproses setiap tik.</translation>
-    </message>
-    <message>
-        <source>The paper&apos;s baseline: linear nearest-vertex search, and the whole model processed every tick.</source>
-        <translation>Garis dasar kertas kerja: carian bucu terdekat secara linear, dan seluruh model diproses setiap tik.</translation>
-    </message>
-    <message>
-        <source>Cost: the rings of the touched vertex.</source>
-        <translation>Kos: gelang bucu yang disentuh.</translation>
-    </message>
-    <message>
-        <source>Cost: every vertex per tick, O(n).</source>
-        <translation>Kos: setiap bucu bagi setiap tik, O(n).</translation>
     </message>
     <message>
         <source>Which model deforms the tissue: the slope-ring methods (ours and the paper&apos;s three), then the literature&apos;s other models (docs/models.md).</source>

@@ -241,20 +241,20 @@ void ChartsPanel::setCurrentConfiguration(const TissuePreset& applied, const Too
     mApplied = applied;
     mContact = contact;
     mMeshVertices = meshVertices;
-    mStiffeningPanel->setTissue(contact, applied.params);
+    mStiffeningPanel->setTissue(contact, applied.model.slopeRing);
     updateHighlight();
 }
 
 void ChartsPanel::updateHighlight() {
     // Slope-ring methods are charted per ring count; every other model is one series by its name.
-    const std::string series = mApplied.modelKind == ModelKind::SlopeRing
-                                   ? sweepSeriesName(mApplied.method, mApplied.params.ringCount)
+    const std::string series = mApplied.model.kind == ModelKind::SlopeRing
+                                   ? sweepSeriesName(mApplied.model.slopeRingMethod, mApplied.model.slopeRing.ringCount)
                                    : presetModelName(mApplied);
     mChart->setHighlight(series, mMeshVertices);
     const QString name = series.empty() ? tr("%1 with %2 rings")
-                                              .arg(QString::fromLatin1(methodName(mApplied.method).data(),
-                                                                       qsizetype(methodName(mApplied.method).size())))
-                                              .arg(mApplied.params.ringCount)
+                                              .arg(QString::fromLatin1(methodName(mApplied.model.slopeRingMethod).data(),
+                                                                       qsizetype(methodName(mApplied.model.slopeRingMethod).size())))
+                                              .arg(mApplied.model.slopeRing.ringCount)
                                         : QString::fromStdString(series);
     QString text;
     if (mMeshVertices == 0)
@@ -271,7 +271,7 @@ void ChartsPanel::updateHighlight() {
 SweepDef ChartsPanel::sweepDefinition() const {
     SweepDef def;
     def.contact = mContact;
-    def.base = mApplied.params;
+    def.base = mApplied.model.slopeRing;
     if (mQuickCheck->isChecked()) {
         def.shapes = {GeneratedShape::Sphere};
         def.sizes = {1442, 3970};

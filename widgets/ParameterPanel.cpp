@@ -67,10 +67,9 @@ namespace {
 QString fieldText(const char* text) { return QCoreApplication::translate(kFieldTextContext, text); }
 
 /// Every row of `table` (each stored entry of a list its own field, when `lists`) as PanelFields
-/// reading and writing `member` of a TissuePreset.
-template <class S>
-void addFields(std::vector<PanelField>& out, const char* section, S TissuePreset::*member, FieldTable<S> table,
-               bool lists = true) {
+/// reading and writing the part of a TissuePreset `part` returns (a generic lambda: const and not).
+template <class S, class Part>
+void addFields(std::vector<PanelField>& out, const char* section, Part part, FieldTable<S> table, bool lists = true) {
     for (const FieldDef<S>& f : table) {
         const bool list = f.type == FieldType::RealList;
         if (list && !lists) continue;
@@ -82,71 +81,27 @@ void addFields(std::vector<PanelField>& out, const char* section, S TissuePreset
             field.section = section;
             const FieldDef<S>* row = &f;  // a row of the engine's static table
             const int index = field.index;
-            field.get = [member, row, index](const TissuePreset& p) { return row->get(p.*member, index); };
-            field.set = [member, row, index](TissuePreset& p, double v) { row->set(p.*member, index, v); };
+            field.get = [part, row, index](const TissuePreset& p) { return row->get(part(p), index); };
+            field.set = [part, row, index](TissuePreset& p, double v) { row->set(part(p), index, v); };
             out.push_back(std::move(field));
         }
     }
 }
 
-constexpr SlopeRingMethod kMethods[] = {SlopeRingMethod::Coherent, SlopeRingMethod::Proposed, SlopeRingMethod::Hybrid,
-                                        SlopeRingMethod::Previous};
+/// The section of its own fields a model shows in the model-parameters form; "" for the models
+/// that run on the slope-ring rows (shown in the slope and spring groups).
+std::string modelParamsSectionOf(const ModelDescriptor& model) {
+    return model.section == std::string_view("slope_ring") ? std::string() : std::string(model.section);
+}
 
-/// The registry models after the slope-ring methods in the combo, with what each is and its cost class.
-struct RegistryModelText {
-    const char* name;  // modelNames()'s spelling
-    const char* text;
-    const char* tip;
-};
-constexpr RegistryModelText kRegistryModels[] = {
-    {"mass-spring-symplectic", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Mass-spring, symplectic Euler"),
-     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
-                       "Masses on the vertices, edge and anchor springs, penalty contact; explicit symplectic Euler "
-                       "with automatic sub-steps. Cost: every vertex per sub-step, O(n).")},
-    {"mass-spring-rk4", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Mass-spring, RK4"),
-     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
-                       "The mass-spring model with classic Runge-Kutta 4 (four stages per sub-step). Cost: every "
-                       "vertex, four times per sub-step, O(n): over 1 ms from a few thousand vertices.")},
-    {"mass-spring-implicit", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Mass-spring, backward Euler"),
-     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
-                       "The mass-spring model with the implicit backward Euler step (conjugate gradients): "
-                       "unconditionally stable, dissipative. Cost: every vertex per CG iteration, O(n).")},
-    {"mass-spring-local", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Mass-spring, local rings"),
-     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
-                       "The mass-spring model on the touched vertex's rings only (and what still moves); the rest "
-                       "is pinned at rest. Cost: the rings, about the same at every mesh size.")},
-    {"radius-of-influence", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Radius of influence (Basdogan)"),
-     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
-                       "Geometric: every vertex within a radius follows the tool by a polynomial profile of its "
-                       "distance; force k_s × depth. Cost: the vertices within the radius.")},
-    {"ffd", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Free-form deformation (FFD)"),
-     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
-                       "Geometric: the mesh embedded in a Bernstein lattice whose control points near the contact "
-                       "move; force k_s × depth. Cost: every vertex per tick, O(n).")},
-    {"volumetric-rings", QT_TRANSLATE_NOOP("palpate::ParameterPanel", "Volumetric slope-rings"),
-     QT_TRANSLATE_NOOP("palpate::ParameterPanel",
-                       "The slope-ring update on rings of a tetrahedral fill of the surface (the paper's future "
-                       "work); uses the slopes and springs below. Cost: the rings of the tet graph.")},
-};
-
-/// The registry models whose own section of fields the model-parameters form shows.
-struct ModelSection {
-    const char* section;  ///< the preset file's section, as mFields names it
-    std::vector<ModelKind> kinds;
-};
-const ModelSection kModelSections[] = {
-    {"mass_spring",
-     {ModelKind::MassSpringSymplectic, ModelKind::MassSpringRk4, ModelKind::MassSpringImplicit,
-      ModelKind::MassSpringLocal}},
-    {"radius_of_influence", {ModelKind::RadiusOfInfluence}},
-    {"ffd", {ModelKind::Ffd}},
-};
-
-/// The section whose fields a model shows in the model-parameters form; "" for the slope rows.
-std::string modelSectionOf(ModelKind kind) {
-    for (const ModelSection& m : kModelSections)
-        if (std::find(m.kinds.begin(), m.kinds.end(), kind) != m.kinds.end()) return m.section;
-    return {};
+/// Every section the model-parameters form holds, in the selector's order.
+std::vector<std::string> modelParamsSections() {
+    std::vector<std::string> sections;
+    for (const ModelDescriptor& d : modelDescriptors())
+        if (const std::string s = modelParamsSectionOf(d);
+            !s.empty() && std::find(sections.begin(), sections.end(), s) == sections.end())
+            sections.push_back(s);
+    return sections;
 }
 
 /// "mass_spring" -> "massSpring"
@@ -275,11 +230,12 @@ void ParameterPanel::buildUi() {
 
     // The fields, from the engine's tables; the tissue's are read from the preset's optional
     // properties (the defaults when it has none) and written by tissueFromFields.
-    addFields(mFields, "slope_ring", &TissuePreset::params, slopeRingFields());
-    addFields(mFields, "octree", &TissuePreset::octree, octreeFields());
-    addFields(mFields, "mass_spring", &TissuePreset::massSpring, massSpringFields(), false);
-    addFields(mFields, "radius_of_influence", &TissuePreset::radiusOfInfluence, radiusOfInfluenceFields(), false);
-    addFields(mFields, "ffd", &TissuePreset::ffd, ffdFields(), false);
+    addFields(mFields, "slope_ring", [](auto& p) -> auto& { return p.model.slopeRing; }, slopeRingFields());
+    addFields(mFields, "octree", [](auto& p) -> auto& { return p.octree; }, octreeFields());
+    addFields(mFields, "mass_spring", [](auto& p) -> auto& { return p.model.massSpring; }, massSpringFields(), false);
+    addFields(mFields, "radius_of_influence", [](auto& p) -> auto& { return p.model.radiusOfInfluence; },
+              radiusOfInfluenceFields(), false);
+    addFields(mFields, "ffd", [](auto& p) -> auto& { return p.model.ffd; }, ffdFields(), false);
     for (const FieldDef<TissueProperties>& f : tissueFields()) {
         PanelField field;
         field.spec = &f.spec;
@@ -290,7 +246,7 @@ void ParameterPanel::buildUi() {
         mFields.push_back(std::move(field));
     }
     // Each field of `section` whose key passes `pick` into `form`, in table order.
-    auto place = [this](const char* section, QFormLayout* form, QWidget* parent, auto pick) {
+    auto place = [this](const std::string& section, QFormLayout* form, QWidget* parent, auto pick) {
         for (PanelField& f : mFields)
             if (f.section == section && pick(std::string(f.spec->key))) {
                 QWidget* widget = createFieldWidget(f, parent);
@@ -333,10 +289,12 @@ void ParameterPanel::buildUi() {
     newForm(mModelGroup, mModelForm, "modelGroup");
     mModelCombo = new QComboBox(mModelGroup);
     mModelCombo->setObjectName(QStringLiteral("modelCombo"));
-    for (SlopeRingMethod method : kMethods) mModelCombo->addItem(QString(), modelData(methodName(method)));
-    // Then the other registry models, after a separator (the slope-ring methods first).
-    mModelCombo->insertSeparator(mModelCombo->count());
-    for (const RegistryModelText& m : kRegistryModels) mModelCombo->addItem(QString(), modelData(m.name));
+    // The slope-ring methods first, then the other registry models after a separator.
+    for (const bool slopeRing : {true, false}) {
+        if (!slopeRing) mModelCombo->insertSeparator(mModelCombo->count());
+        for (const ModelDescriptor& d : modelDescriptors())
+            if ((d.kind == ModelKind::SlopeRing) == slopeRing) mModelCombo->addItem(QString(), modelData(d.name));
+    }
     mModelForm->addRow(new QLabel(fields), mModelCombo);
     mRateSpin = doubleSpin(mModelGroup, "hapticRateSpin", 0.0, 10.0 * kMaxHapticRateHz, 1, 50.0);
     mModelForm->addRow(new QLabel(fields), mRateSpin);
@@ -369,7 +327,7 @@ void ParameterPanel::buildUi() {
     mTissueForm->addRow(calibrateBox);
 
     newForm(mModelParamsGroup, mModelParamsForm, "modelParamsGroup");
-    for (const ModelSection& m : kModelSections) place(m.section, mModelParamsForm, mModelParamsGroup, all);
+    for (const std::string& section : modelParamsSections()) place(section, mModelParamsForm, mModelParamsGroup, all);
 
     newForm(mSlopeGroup, mSlopeForm, "slopeGroup");
     auto slopeRows = [](const std::string& key) {
@@ -616,28 +574,11 @@ void ParameterPanel::retranslateUi() {
            "calibrated model leaves against the punch. One undoable step; Apply sends them."));
 
     setRowLabel(mModelForm, mModelCombo, tr("Deformation model:"));
-    const QString methodTexts[] = {tr("Coherent rings (ours)"), tr("Proposed (paper)"), tr("Hybrid (paper)"),
-                                   tr("Previous (paper)")};
-    const QString methodTips[] = {
-        tr("Ours: exact warm-started nearest-vertex search, only the rings processed, incremental work per tick."),
-        tr("The paper's method: its octree searchNode (faithful, can miss the nearest vertex) and only the rings."),
-        tr("The paper's hybrid: its octree searchNode, and the whole model processed every tick."),
-        tr("The paper's baseline: linear nearest-vertex search, and the whole model processed every tick.")};
-    for (int i = 0; i < mModelCombo->count(); ++i) {
-        const QString name = mModelCombo->itemData(i).toString();
-        for (int m = 0; m < int(std::size(kMethods)); ++m)
-            if (name == modelData(methodName(kMethods[m]))) {
-                mModelCombo->setItemText(i, methodTexts[m]);
-                const QString cost = m < 2 ? tr("Cost: the rings of the touched vertex.")
-                                           : tr("Cost: every vertex per tick, O(n).");
-                mModelCombo->setItemData(i, methodTips[m] + QLatin1Char(' ') + cost, Qt::ToolTipRole);
-            }
-        for (const RegistryModelText& m : kRegistryModels)
-            if (name == QLatin1String(m.name)) {
-                mModelCombo->setItemText(i, tr(m.text));
-                mModelCombo->setItemData(i, tr(m.tip), Qt::ToolTipRole);
-            }
-    }
+    for (int i = 0; i < mModelCombo->count(); ++i)
+        if (const ModelDescriptor* d = findModelDescriptor(mModelCombo->itemData(i).toString().toStdString())) {
+            mModelCombo->setItemText(i, QCoreApplication::translate(kModelTextContext, d->label));
+            mModelCombo->setItemData(i, QCoreApplication::translate(kModelTextContext, d->description), Qt::ToolTipRole);
+        }
     mModelCombo->setToolTip(
         tr("Which model deforms the tissue: the slope-ring methods (ours and the paper's three), "
            "then the literature's other models (docs/models.md)."));
@@ -718,8 +659,8 @@ void ParameterPanel::changeEvent(QEvent* event) {
 TissuePreset ParameterPanel::presetFromFields() const {
     TissuePreset preset = mShown;  // name, description and tissue properties are not fields
     if (const auto model = modelDefForName(mModelCombo->currentData().toString().toStdString())) {
-        preset.modelKind = model->kind;
-        if (model->kind == ModelKind::SlopeRing) preset.method = model->slopeRingMethod;
+        preset.model.kind = model->kind;
+        if (model->kind == ModelKind::SlopeRing) preset.model.slopeRingMethod = model->slopeRingMethod;
     }
     preset.hapticRateHz = mRateSpin->value();
     for (const PanelField& f : mFields) {
@@ -860,19 +801,19 @@ bool ParameterPanel::calibrateSlopes(QString* error) {
     SlopeCalibration calibration;
     ModelError measured;
     try {
-        calibration = calibrateSlopesFromPunch(*mesh, touched, contact, before.params);
+        calibration = calibrateSlopesFromPunch(*mesh, touched, contact, before.model.slopeRing);
         // The error the calibrated model leaves: a private model of the same mesh, pressed and let
         // settle (PressDef: 300 ticks), never the haptic loop's.
         const OctreeDef octreeDef = validateOctreeDef(before.octree).empty() ? before.octree : OctreeDef{};
         const Octree octree(*mesh, octreeDef);
-        const auto model = makeSlopeRing(*mesh, octree, calibration.params, before.method);
+        const auto model = makeSlopeRing(*mesh, octree, calibration.params, before.model.slopeRingMethod);
         measured = measureModelError(*model, *mesh, touched, contact);
     } catch (const std::exception& e) {
         return fail(tr("Not calibrated: %1").arg(QString::fromStdString(e.what())));
     }
 
     TissuePreset after = before;
-    after.params = calibration.params;
+    after.model.slopeRing = calibration.params;
     after.tissue = before.tissue.value_or(
         tissueInFields(tr("Parameters panel default (gelatin phantom, as palpate-cli)").toStdString()));
     if (!samePreset(before, after))
@@ -893,7 +834,7 @@ bool ParameterPanel::calibrateSlopes(QString* error) {
                      .arg(locale.toString(measured.indentationMm, 'f', 2))
                      .arg(measured.verticesCompared);
     for (const std::string& note : calibration.notes) lines << tr("Note: %1").arg(QString::fromStdString(note));
-    mCalibratedParams = mShown.params;  // as the fields hold them
+    mCalibratedParams = mShown.model.slopeRing;  // as the fields hold them
     mCalibrationText = lines.join(QLatin1Char('\n'));
     mCalibrationLabel->setProperty("problem", false);
     updateCalibrationLabel();
@@ -904,8 +845,8 @@ bool ParameterPanel::calibrateSlopes(QString* error) {
 void ParameterPanel::updateCalibrationLabel() {
     QString text = mCalibrationText;
     const bool stale = mCalibratedParams &&
-                       !(presetFromFields().params.slopeMagnitudeMmPerN == mCalibratedParams->slopeMagnitudeMmPerN &&
-                         presetFromFields().params.ringCount == mCalibratedParams->ringCount);
+                       !(presetFromFields().model.slopeRing.slopeMagnitudeMmPerN == mCalibratedParams->slopeMagnitudeMmPerN &&
+                         presetFromFields().model.slopeRing.ringCount == mCalibratedParams->ringCount);
     if (stale) text += QLatin1Char('\n') + tr("(for the calibrated slopes; the slopes have changed since)");
     mCalibrationLabel->setText(text);
     mCalibrationLabel->setVisible(!text.isEmpty());
@@ -1028,7 +969,7 @@ void ParameterPanel::updateUnappliedMarks() {
         // A slope beyond the ring count is hidden and not used: the ring count says the difference.
         if (f.section == "slope_ring" && f.index >= 0) {
             const bool isSlope = std::string(f.spec->key) == "slopeMagnitudeMmPerN";
-            if (isSlope ? f.index > rings : f.index >= mShown.params.stiffeningKnots) differs = false;
+            if (isSlope ? f.index > rings : f.index >= mShown.model.slopeRing.stiffeningKnots) differs = false;
         }
         mark(f.widget, differs, kFieldEdit0 + i);
     }
@@ -1061,18 +1002,17 @@ std::optional<StabilityMargin> ParameterPanel::stabilityMargin() const {
 }
 
 void ParameterPanel::updateModelRows() {
-    const auto model = modelDefForName(mModelCombo->currentData().toString().toStdString());
-    const ModelKind kind = model ? model->kind : ModelKind::SlopeRing;
-    const std::string section = modelSectionOf(kind);
-    const std::string name = model ? modelName(*model) : std::string();
+    const ModelDescriptor* model = findModelDescriptor(mModelCombo->currentData().toString().toStdString());
+    const std::string section = model ? modelParamsSectionOf(*model) : std::string();
+    const std::string name = model ? std::string(model->name) : std::string();
+    const std::vector<std::string> sections = modelParamsSections();
     for (const PanelField& f : mFields)
-        if (std::any_of(std::begin(kModelSections), std::end(kModelSections),
-                        [&](const ModelSection& m) { return f.section == m.section; }))
+        if (std::find(sections.begin(), sections.end(), f.section) != sections.end())
             mModelParamsForm->setRowVisible(f.widget,
                                             f.section == section && (!*f.spec->onlyFor || name == f.spec->onlyFor));
     mModelParamsGroup->setVisible(!section.empty());
-    // The slope rows stay for the slope-ring methods and volumetric-rings, which run on them.
-    const bool slopeRing = kind == ModelKind::SlopeRing || kind == ModelKind::VolumetricRings;
+    // The slope rows stay for the models that run on them (the slope-ring methods, volumetric-rings).
+    const bool slopeRing = !model || model->section == std::string_view("slope_ring");
     mSlopeGroup->setVisible(slopeRing);
     mSpringGroup->setVisible(slopeRing);
     mStabilityLabel->setVisible(true);  // every model has a margin (docs/stability.md section 7)
@@ -1105,9 +1045,9 @@ void ParameterPanel::validate() {
                              : message);
         }
     };
-    take("slope_ring", validateSlopeRingParams(p.params), false);
+    take("slope_ring", validateSlopeRingParams(p.model.slopeRing), false);
     // The chosen registry model's own validator.
-    if (const std::string section = modelSectionOf(p.modelKind); !section.empty())
+    if (const std::string section = modelParamsSectionOf(modelDescriptor(presetModelDef(p))); !section.empty())
         take(section, validateModelDef(presetModelDef(p)), true);
     take("octree", validateOctreeDef(p.octree), false);
     {
@@ -1124,10 +1064,10 @@ void ParameterPanel::validate() {
     }
 
     // The slope model's loop gain and its bound, shown whether or not the rest is valid.
-    const double gain = p.params.loopGain();
-    const double alpha = p.params.effectiveRelaxation();
-    const double product = p.params.loopProduct();
-    const bool automatic = p.params.forceRelaxation == 0.0;
+    const double gain = p.model.slopeRing.loopGain();
+    const double alpha = p.model.slopeRing.effectiveRelaxation();
+    const double product = p.model.slopeRing.loopProduct();
+    const bool automatic = p.model.slopeRing.forceRelaxation == 0.0;
     const QString alphaText = automatic ? tr("%1 (automatic)").arg(number(alpha)) : number(alpha);
     QString stability = tr("Loop gain |m1| × k_c = %1, α = %2").arg(number(gain), alphaText);
     const bool unstable = !(std::isfinite(product) && product < kLoopProductLimit);
@@ -1198,9 +1138,9 @@ void ParameterPanel::validate() {
     QStringList notes;
     QSet<QWidget*> outside;
     QStringList outsideNames;
-    for (int r = 0; r <= p.params.ringCount && r <= kMaxRings; ++r) {
+    for (int r = 0; r <= p.model.slopeRing.ringCount && r <= kMaxRings; ++r) {
         QDoubleSpinBox* spin = mSlopeSpins[std::size_t(r)];
-        if (p.params.slopeMagnitudeMmPerN[std::size_t(r)] >= kPaperSlopeMaxMmPerN && !invalid.contains(spin)) {
+        if (p.model.slopeRing.slopeMagnitudeMmPerN[std::size_t(r)] >= kPaperSlopeMaxMmPerN && !invalid.contains(spin)) {
             outside.insert(spin);
             outsideNames << QStringLiteral("|m%1|").arg(r + 1);
         }
@@ -1211,7 +1151,7 @@ void ParameterPanel::validate() {
                                       "mm/N and the loop-gain bound.")
                                  : tr("%1 are outside the paper's range (0, 1) mm/N: allowed by the slope limit %2 "
                                       "mm/N and the loop-gain bound.");
-        notes << text.arg(locale.createSeparatedList(outsideNames), number(p.params.slopeLimitMmPerN));
+        notes << text.arg(locale.createSeparatedList(outsideNames), number(p.model.slopeRing.slopeLimitMmPerN));
     }
     if (!mFileNote.isEmpty()) notes.prepend(mFileNote);
 

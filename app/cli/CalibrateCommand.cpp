@@ -69,7 +69,7 @@ int calibrateCommand(const std::vector<std::string>& words) {
             std::cerr << "palpate-cli calibrate: --rings: '" << *rings << "' is not in 1.." << kMaxRings << "\n";
             return 2;
         }
-        preset.params.ringCount = int(*n);
+        preset.model.slopeRing.ringCount = int(*n);
     }
     const std::string meshPath = args.option("mesh").value_or(findResource(kDefaultMesh));
     std::string unitError;
@@ -100,8 +100,8 @@ int calibrateCommand(const std::vector<std::string>& words) {
     const bool fem = args.flag("fem");
     std::vector<double> femField;
     const SlopeCalibration calibration =
-        fem ? calibrateSlopesFromFem(mesh, touched, choice.contact, preset.params, 1.0, &femField)
-            : calibrateSlopesFromPunch(mesh, touched, choice.contact, preset.params);
+        fem ? calibrateSlopesFromFem(mesh, touched, choice.contact, preset.model.slopeRing, 1.0, &femField)
+            : calibrateSlopesFromPunch(mesh, touched, choice.contact, preset.model.slopeRing);
     const Octree octree(mesh, preset.octree);
     CoherentSlopeRing model(mesh, octree, calibration.params);
     const ModelError error = measureModelError(model, mesh, touched, choice.contact);
@@ -228,8 +228,8 @@ int calibrateCommand(const std::vector<std::string>& words) {
         }
     }
     if (const auto out = args.option("out")) {
-        preset.params = p;
-        preset.method = SlopeRingMethod::Coherent;
+        preset.model.slopeRing = p;
+        preset.model.slopeRingMethod = SlopeRingMethod::Coherent;
         if (const auto name = args.option("name")) preset.name = *name;
         if (const auto description = args.option("description")) preset.description = *description;
         TissueProperties tissue;

@@ -85,8 +85,8 @@ int runCommand(const std::vector<std::string>& words) {
             std::cerr << "run: unknown --method '" << *name << "' (use previous, hybrid, proposed or coherent)\n";
             return 2;
         }
-        preset.method = *method;
-        preset.modelKind = ModelKind::SlopeRing;
+        preset.model.slopeRingMethod = *method;
+        preset.model.kind = ModelKind::SlopeRing;
     }
     // --model NAME: any registry model (docs/models.md), with the preset's parameters for it.
     if (auto name = args.option("model")) {
@@ -97,12 +97,12 @@ int runCommand(const std::vector<std::string>& words) {
             std::cerr << "run: unknown --model '" << *name << "' (use one of " << names << ")\n";
             return 2;
         }
-        if (args.option("method") && (model->kind != ModelKind::SlopeRing || model->slopeRingMethod != preset.method)) {
+        if (args.option("method") && (model->kind != ModelKind::SlopeRing || model->slopeRingMethod != preset.model.slopeRingMethod)) {
             std::cerr << "run: --model " << *name << " and --method " << *args.option("method") << " disagree\n";
             return 2;
         }
-        preset.modelKind = model->kind;
-        if (model->kind == ModelKind::SlopeRing) preset.method = model->slopeRingMethod;
+        preset.model.kind = model->kind;
+        if (model->kind == ModelKind::SlopeRing) preset.model.slopeRingMethod = model->slopeRingMethod;
     }
     if (auto rate = args.option("rate")) {
         const auto hz = parseNumber(*rate);
@@ -250,7 +250,7 @@ int runCommand(const std::vector<std::string>& words) {
     if (args.flag("json")) {
         nlohmann::json j{{"mesh", meshPath},
                          {"device", uri},
-                         {"method", std::string(methodName(preset.method))},
+                         {"method", std::string(methodName(preset.model.slopeRingMethod))},
                          {"model", presetModelName(preset)},
                          {"rate_hz", def.rateHz},
                          {"seconds", r.elapsedS},

@@ -153,10 +153,10 @@ std::string HapticSession::applyPreset(const TissuePreset& preset) {
         mPending = SceneRecord{};
         return handOverFresh(base);
     }
-    const bool needsScene = preset.method != before.method || preset.octree.maxDepth != before.octree.maxDepth ||
+    const bool needsScene = preset.model.slopeRingMethod != before.model.slopeRingMethod || preset.octree.maxDepth != before.octree.maxDepth ||
                             preset.octree.leafCapacity != before.octree.leafCapacity ||
-                            (preset.method != SlopeRingMethod::Coherent && preset.params.ringCount != before.params.ringCount) ||
-                            preset.modelKind != before.modelKind ||
+                            (preset.model.slopeRingMethod != SlopeRingMethod::Coherent && preset.model.slopeRing.ringCount != before.model.slopeRing.ringCount) ||
+                            preset.model.kind != before.model.kind ||
                             // The registry models other than volumetric-rings take no parameters at a tick boundary.
                             (!presetUsesSlopeRingParams(preset) && tissuePresetToJson(preset) != tissuePresetToJson(before));
     if (!needsScene) return mLoop->setModelParams(presetModelDef(preset));

@@ -1300,21 +1300,21 @@ void MainWindow::createLodDock() {
                 return;
             }
         TissuePreset preset = mParameterPanel->preset();
-        preset.params.ringCount = rings;
+        preset.model.slopeRing.ringCount = rings;
         // Linear or stiffening tissue as the plan decided (docs/lod.md): the knots fitted to this
         // preset's |m1|, or none.
         QString tissue;
         if (const auto& choice = mLodPanel->stiffeningChoice(); choice && choice->error.empty() && mLodPanel->stiffeningReference()) {
             if (choice->nonlinear) {
                 try {
-                    applyStiffening(knotsFromCurve(mLodPanel->stiffeningReference()->curve, preset.params.slopeMagnitudeMmPerN[0]),
-                                    preset.params);
-                    tissue = tr(", %1 stiffening knots").arg(preset.params.stiffeningKnots);
+                    applyStiffening(knotsFromCurve(mLodPanel->stiffeningReference()->curve, preset.model.slopeRing.slopeMagnitudeMmPerN[0]),
+                                    preset.model.slopeRing);
+                    tissue = tr(", %1 stiffening knots").arg(preset.model.slopeRing.stiffeningKnots);
                 } catch (const std::invalid_argument& e) {
                     tissue = tr(", linear tissue (the knots do not fit this preset: %1)").arg(QString::fromUtf8(e.what()));
                 }
             } else {
-                preset.params.stiffeningKnots = 0;
+                preset.model.slopeRing.stiffeningKnots = 0;
                 tissue = tr(", linear tissue");
             }
         }

@@ -46,7 +46,6 @@ std::unique_ptr<DeformationModel> makeSweepModel(const SweepModelDef& config, co
     modelDef.kind = config.kind;
     modelDef.slopeRingMethod = config.method;
     modelDef.slopeRing = calibration.params;
-    modelDef.volumetricRings.slopeRing = calibration.params;
     modelDef.radiusOfInfluence.radiusMm = def.press.regionInRadii * def.contact.toolRadiusMm;
     modelDef.radiusOfInfluence.stiffnessNPerMm = punchStiffnessNPerMm;
     modelDef.ffd.stiffnessNPerMm = punchStiffnessNPerMm;

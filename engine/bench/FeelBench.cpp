@@ -184,8 +184,8 @@ ModelDef feelModelDef(const TissuePreset& preset, const std::string& name) {
     const auto model = modelDefForName(name);
     if (!model) throw std::invalid_argument("unknown model '" + name + "'");
     TissuePreset p = preset;
-    p.modelKind = model->kind;
-    if (model->kind == ModelKind::SlopeRing) p.method = model->slopeRingMethod;
+    p.model.kind = model->kind;
+    if (model->kind == ModelKind::SlopeRing) p.model.slopeRingMethod = model->slopeRingMethod;
     return presetModelDef(p);
 }
 

@@ -7,27 +7,121 @@
 #include "engine/models/VolumetricRingsModel.h"
 #include "engine/models/slopering/SlopeRingModel.h"
 
+#include "base/params/FieldTable.h"
+
 #include <stdexcept>
 
 namespace palpate {
 
 namespace {
 
-struct Named {
-    const char* name;
-    ModelKind kind;
-};
-constexpr Named kModels[] = {
-    {"mass-spring-symplectic", ModelKind::MassSpringSymplectic},
-    {"mass-spring-rk4", ModelKind::MassSpringRk4},
-    {"mass-spring-implicit", ModelKind::MassSpringImplicit},
-    {"mass-spring-local", ModelKind::MassSpringLocal},
-    {"radius-of-influence", ModelKind::RadiusOfInfluence},
-    {"ffd", ModelKind::Ffd},
-    {"volumetric-rings", ModelKind::VolumetricRings},
-};
-constexpr SlopeRingMethod kSlopeRingMethods[] = {SlopeRingMethod::Coherent, SlopeRingMethod::Proposed,
-                                                 SlopeRingMethod::Hybrid, SlopeRingMethod::Previous};
+Problems validateSlopeRing(const ModelDef& def) {
+    Problems problems = validateSlopeRingParams(def.slopeRing);
+    const Problems contact = validateContactDef(def.contact);
+    problems.insert(problems.end(), contact.begin(), contact.end());
+    return problems;
+}
+Problems validateMassSpring(const ModelDef& def) { return validateMassSpringParams(def.massSpring); }
+Problems validateRadiusOfInfluence(const ModelDef& def) { return validateRadiusOfInfluenceParams(def.radiusOfInfluence); }
+Problems validateFfd(const ModelDef& def) { return validateFfdParams(def.ffd); }
+Problems validateVolumetricRings(const ModelDef& def) { return validateVolumetricRingsParams({def.slopeRing}); }
+
+std::unique_ptr<DeformationModel> makeSlopeRingModel(const ModelDef& def, const TissueMesh& mesh,
+                                                     const Octree& octree, const TetMesh&) {
+    auto model = makeSlopeRing(mesh, octree, def.slopeRing, def.slopeRingMethod);
+    model->setContact(def.contact);
+    return model;
+}
+template <MassSpringIntegrator Integrator>
+std::unique_ptr<DeformationModel> makeWholeMassSpring(const ModelDef& def, const TissueMesh& mesh,
+                                                      const Octree& octree, const TetMesh&) {
+    return std::make_unique<MassSpringModel>(mesh, octree, def.massSpring, Integrator, MassSpringScope::Whole);
+}
+std::unique_ptr<DeformationModel> makeLocalMassSpring(const ModelDef& def, const TissueMesh& mesh,
+                                                      const Octree& octree, const TetMesh&) {
+    return std::make_unique<MassSpringModel>(mesh, octree, def.massSpring, def.massSpring.localIntegrator,
+                                             MassSpringScope::Local);
+}
+std::unique_ptr<DeformationModel> makeRadiusOfInfluence(const ModelDef& def, const TissueMesh& mesh,
+                                                        const Octree& octree, const TetMesh&) {
+    return std::make_unique<RadiusOfInfluenceModel>(mesh, octree, def.radiusOfInfluence);
+}
+std::unique_ptr<DeformationModel> makeFfd(const ModelDef& def, const TissueMesh& mesh, const Octree& octree,
+                                          const TetMesh&) {
+    return std::make_unique<FfdModel>(mesh, octree, def.ffd);
+}
+std::unique_ptr<DeformationModel> makeVolumetricRings(const ModelDef& def, const TissueMesh& mesh,
+                                                      const Octree& octree, const TetMesh& tets) {
+    if (tets.nodeCount() == 0) throw std::invalid_argument("volumetric-rings: the tet mesh is empty");
+    return std::make_unique<VolumetricRingsModel>(mesh, octree, tets, VolumetricRingsParams{def.slopeRing});
+}
+
+std::vector<ModelDescriptor> buildDescriptors() {
+    const auto slopeRing = [](const char* name, SlopeRingMethod method, const char* label, const char* description) {
+        return ModelDescriptor{.name = name,
+                               .kind = ModelKind::SlopeRing,
+                               .slopeRingMethod = method,
+                               .label = label,
+                               .description = description,
+                               .section = "slope_ring",
+                               .validate = validateSlopeRing,
+                               .make = makeSlopeRingModel};
+    };
+    const auto other = [](const char* name, ModelKind kind, const char* label, const char* description,
+                          const char* section, auto validate, auto make) {
+        return ModelDescriptor{.name = name,
+                               .kind = kind,
+                               .slopeRingMethod = SlopeRingMethod::Coherent,
+                               .label = label,
+                               .description = description,
+                               .section = section,
+                               .validate = validate,
+                               .make = make,
+                               .needsTets = kind == ModelKind::VolumetricRings};
+    };
+    return {
+        other("mass-spring-symplectic", ModelKind::MassSpringSymplectic, PALPATE_TRANSLATE_NOOP("palpate::Models", "Mass-spring, symplectic Euler"),
+              PALPATE_TRANSLATE_NOOP("palpate::Models", "Masses on the vertices, edge and anchor springs, penalty contact; explicit symplectic Euler "
+                         "with automatic sub-steps. Cost: every vertex per sub-step, O(n)."),
+              "mass_spring", validateMassSpring, makeWholeMassSpring<MassSpringIntegrator::SymplecticEuler>),
+        other("mass-spring-rk4", ModelKind::MassSpringRk4, PALPATE_TRANSLATE_NOOP("palpate::Models", "Mass-spring, RK4"),
+              PALPATE_TRANSLATE_NOOP("palpate::Models", "The mass-spring model with classic Runge-Kutta 4 (four stages per sub-step). Cost: every "
+                         "vertex, four times per sub-step, O(n): over 1 ms from a few thousand vertices."),
+              "mass_spring", validateMassSpring, makeWholeMassSpring<MassSpringIntegrator::Rk4>),
+        other("mass-spring-implicit", ModelKind::MassSpringImplicit, PALPATE_TRANSLATE_NOOP("palpate::Models", "Mass-spring, backward Euler"),
+              PALPATE_TRANSLATE_NOOP("palpate::Models", "The mass-spring model with the implicit backward Euler step (conjugate gradients): "
+                         "unconditionally stable, dissipative. Cost: every vertex per CG iteration, O(n)."),
+              "mass_spring", validateMassSpring, makeWholeMassSpring<MassSpringIntegrator::BackwardEuler>),
+        other("mass-spring-local", ModelKind::MassSpringLocal, PALPATE_TRANSLATE_NOOP("palpate::Models", "Mass-spring, local rings"),
+              PALPATE_TRANSLATE_NOOP("palpate::Models", "The mass-spring model on the touched vertex's rings only (and what still moves); the rest "
+                         "is pinned at rest. Cost: the rings, about the same at every mesh size."),
+              "mass_spring", validateMassSpring, makeLocalMassSpring),
+        other("radius-of-influence", ModelKind::RadiusOfInfluence, PALPATE_TRANSLATE_NOOP("palpate::Models", "Radius of influence (Basdogan)"),
+              PALPATE_TRANSLATE_NOOP("palpate::Models", "Geometric: every vertex within a radius follows the tool by a polynomial profile of its "
+                         "distance; force k_s × depth. Cost: the vertices within the radius."),
+              "radius_of_influence", validateRadiusOfInfluence, makeRadiusOfInfluence),
+        other("ffd", ModelKind::Ffd, PALPATE_TRANSLATE_NOOP("palpate::Models", "Free-form deformation (FFD)"),
+              PALPATE_TRANSLATE_NOOP("palpate::Models", "Geometric: the mesh embedded in a Bernstein lattice whose control points near the contact "
+                         "move; force k_s × depth. Cost: every vertex per tick, O(n)."),
+              "ffd", validateFfd, makeFfd),
+        other("volumetric-rings", ModelKind::VolumetricRings, PALPATE_TRANSLATE_NOOP("palpate::Models", "Volumetric slope-rings"),
+              PALPATE_TRANSLATE_NOOP("palpate::Models", "The slope-ring update on rings of a tetrahedral fill of the surface (the paper's future "
+                         "work); uses the slopes and springs below. Cost: the rings of the tet graph."),
+              "slope_ring", validateVolumetricRings, makeVolumetricRings),
+        slopeRing("coherent", SlopeRingMethod::Coherent, PALPATE_TRANSLATE_NOOP("palpate::Models", "Coherent rings (ours)"),
+                  PALPATE_TRANSLATE_NOOP("palpate::Models", "Ours: exact warm-started nearest-vertex search, only the rings processed, incremental "
+                             "work per tick. Cost: the rings of the touched vertex.")),
+        slopeRing("proposed", SlopeRingMethod::Proposed, PALPATE_TRANSLATE_NOOP("palpate::Models", "Proposed (paper)"),
+                  PALPATE_TRANSLATE_NOOP("palpate::Models", "The paper's method: its octree searchNode (faithful, can miss the nearest vertex) and "
+                             "only the rings. Cost: the rings of the touched vertex.")),
+        slopeRing("hybrid", SlopeRingMethod::Hybrid, PALPATE_TRANSLATE_NOOP("palpate::Models", "Hybrid (paper)"),
+                  PALPATE_TRANSLATE_NOOP("palpate::Models", "The paper's hybrid: its octree searchNode, and the whole model processed every tick. "
+                             "Cost: every vertex per tick, O(n).")),
+        slopeRing("previous", SlopeRingMethod::Previous, PALPATE_TRANSLATE_NOOP("palpate::Models", "Previous (paper)"),
+                  PALPATE_TRANSLATE_NOOP("palpate::Models", "The paper's baseline: linear nearest-vertex search, and the whole model processed every "
+                             "tick. Cost: every vertex per tick, O(n).")),
+    };
+}
 
 void throwIfInvalid(const ModelDef& def) {
     const auto errors = validateModelDef(def);
@@ -39,6 +133,27 @@ void throwIfInvalid(const ModelDef& def) {
 
 }  // namespace
 
+const std::vector<ModelDescriptor>& modelDescriptors() {
+    static const std::vector<ModelDescriptor> descriptors = buildDescriptors();
+    return descriptors;
+}
+
+const ModelDescriptor* findModelDescriptor(std::string_view name) {
+    for (const ModelDescriptor& d : modelDescriptors())
+        if (name == d.name) return &d;
+    // Other spellings of the slope-ring methods ("palpate", as files written before named coherent).
+    if (const auto method = parseMethod(name))
+        for (const ModelDescriptor& d : modelDescriptors())
+            if (d.kind == ModelKind::SlopeRing && d.slopeRingMethod == *method) return &d;
+    return nullptr;
+}
+
+const ModelDescriptor& modelDescriptor(const ModelDef& def) {
+    for (const ModelDescriptor& d : modelDescriptors())
+        if (d.kind == def.kind && (d.kind != ModelKind::SlopeRing || d.slopeRingMethod == def.slopeRingMethod)) return d;
+    throw std::invalid_argument("unknown model kind " + std::to_string(int(def.kind)));
+}
+
 ModelDef slopeRingModelDef(const SlopeRingParams& params, SlopeRingMethod method) {
     ModelDef def;
     def.kind = ModelKind::SlopeRing;
@@ -49,30 +164,23 @@ ModelDef slopeRingModelDef(const SlopeRingParams& params, SlopeRingMethod method
 
 std::vector<std::string> modelNames() {
     std::vector<std::string> names;
-    for (const Named& m : kModels) names.emplace_back(m.name);
-    for (SlopeRingMethod method : kSlopeRingMethods) names.emplace_back(methodName(method));
+    for (const ModelDescriptor& d : modelDescriptors()) names.emplace_back(d.name);
     return names;
 }
 
 std::optional<ModelDef> modelDefForName(std::string_view name) {
+    const ModelDescriptor* d = findModelDescriptor(name);
+    if (!d) return std::nullopt;
     ModelDef def;
-    for (const Named& m : kModels)
-        if (name == m.name) {
-            def.kind = m.kind;
-            return def;
-        }
-    if (const auto method = parseMethod(name)) {
-        def.kind = ModelKind::SlopeRing;
-        def.slopeRingMethod = *method;
-        return def;
-    }
-    return std::nullopt;
+    def.kind = d->kind;
+    def.slopeRingMethod = d->slopeRingMethod;
+    return def;
 }
 
 std::string modelName(const ModelDef& def) {
-    if (def.kind == ModelKind::SlopeRing) return std::string(methodName(def.slopeRingMethod));
-    for (const Named& m : kModels)
-        if (m.kind == def.kind) return m.name;
+    for (const ModelDescriptor& d : modelDescriptors())
+        if (d.kind == def.kind && (d.kind != ModelKind::SlopeRing || d.slopeRingMethod == def.slopeRingMethod))
+            return d.name;
     return "unknown";
 }
 
@@ -83,30 +191,13 @@ double modelToolRadiusMm(const ModelDef& def) {
 }
 
 Problems validateModelDef(const ModelDef& def) {
-    switch (def.kind) {
-        case ModelKind::SlopeRing: {
-            Problems problems = validateSlopeRingParams(def.slopeRing);
-            const Problems contact = validateContactDef(def.contact);
-            problems.insert(problems.end(), contact.begin(), contact.end());
-            return problems;
-        }
-        case ModelKind::MassSpringSymplectic:
-        case ModelKind::MassSpringRk4:
-        case ModelKind::MassSpringImplicit:
-        case ModelKind::MassSpringLocal: return validateMassSpringParams(def.massSpring);
-        case ModelKind::RadiusOfInfluence: return validateRadiusOfInfluenceParams(def.radiusOfInfluence);
-        case ModelKind::Ffd: return validateFfdParams(def.ffd);
-        case ModelKind::VolumetricRings: return validateVolumetricRingsParams(def.volumetricRings);
-    }
+    for (const ModelDescriptor& d : modelDescriptors())
+        if (d.kind == def.kind) return d.validate(def);
     return {{"kind", -1, -1, "kind: unknown model kind " + std::to_string(int(def.kind))}};
 }
 
 const SlopeRingParams* slopeRingParamsOf(const ModelDef& def) {
-    switch (def.kind) {
-        case ModelKind::SlopeRing: return &def.slopeRing;
-        case ModelKind::VolumetricRings: return &def.volumetricRings.slopeRing;
-        default: return nullptr;
-    }
+    return modelDescriptor(def).section == std::string_view("slope_ring") ? &def.slopeRing : nullptr;
 }
 
 SlopeRingParams* slopeRingParamsOf(ModelDef& def) {
@@ -114,7 +205,7 @@ SlopeRingParams* slopeRingParamsOf(ModelDef& def) {
 }
 
 std::unique_ptr<DeformationModel> makeModel(const ModelDef& def, const TissueMesh& mesh, const Octree& octree) {
-    if (def.kind == ModelKind::VolumetricRings) {
+    if (modelDescriptor(def).needsTets) {
         throwIfInvalid(def);
         const TetMesh tets = fillSurfaceWithTets(mesh);  // throws std::invalid_argument naming the problem
         return makeModel(def, mesh, octree, tets);
@@ -125,32 +216,7 @@ std::unique_ptr<DeformationModel> makeModel(const ModelDef& def, const TissueMes
 std::unique_ptr<DeformationModel> makeModel(const ModelDef& def, const TissueMesh& mesh, const Octree& octree,
                                             const TetMesh& tets) {
     throwIfInvalid(def);
-    switch (def.kind) {
-        case ModelKind::SlopeRing: {
-            auto model = makeSlopeRing(mesh, octree, def.slopeRing, def.slopeRingMethod);
-            model->setContact(def.contact);
-            return model;
-        }
-        case ModelKind::MassSpringSymplectic:
-            return std::make_unique<MassSpringModel>(mesh, octree, def.massSpring,
-                                                     MassSpringIntegrator::SymplecticEuler, MassSpringScope::Whole);
-        case ModelKind::MassSpringRk4:
-            return std::make_unique<MassSpringModel>(mesh, octree, def.massSpring, MassSpringIntegrator::Rk4,
-                                                     MassSpringScope::Whole);
-        case ModelKind::MassSpringImplicit:
-            return std::make_unique<MassSpringModel>(mesh, octree, def.massSpring, MassSpringIntegrator::BackwardEuler,
-                                                     MassSpringScope::Whole);
-        case ModelKind::MassSpringLocal:
-            return std::make_unique<MassSpringModel>(mesh, octree, def.massSpring, def.massSpring.localIntegrator,
-                                                     MassSpringScope::Local);
-        case ModelKind::RadiusOfInfluence:
-            return std::make_unique<RadiusOfInfluenceModel>(mesh, octree, def.radiusOfInfluence);
-        case ModelKind::Ffd: return std::make_unique<FfdModel>(mesh, octree, def.ffd);
-        case ModelKind::VolumetricRings:
-            if (tets.nodeCount() == 0) throw std::invalid_argument("volumetric-rings: the tet mesh is empty");
-            return std::make_unique<VolumetricRingsModel>(mesh, octree, tets, def.volumetricRings);
-    }
-    throw std::invalid_argument("makeModel: unknown model kind " + std::to_string(int(def.kind)));
+    return modelDescriptor(def).make(def, mesh, octree, tets);
 }
 
 }  // namespace palpate

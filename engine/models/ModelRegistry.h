@@ -42,14 +42,44 @@ enum class ModelKind {
 struct ModelDef {
     ModelKind kind = ModelKind::SlopeRing;
     SlopeRingMethod slopeRingMethod = SlopeRingMethod::Coherent;
+    /// Slopes, springs and rings: of the slope-ring methods and of volumetric-rings (whose rings are
+    /// the tet graph's).
     SlopeRingParams slopeRing;
     MassSpringParams massSpring;
     RadiusOfInfluenceParams radiusOfInfluence;
     FfdParams ffd;
-    VolumetricRingsParams volumetricRings;
     /// The tool and friction (used by the coherent slope-ring method; the others touch with a point).
     ContactDef contact;
 };
+
+/// The translation context of the models' labels and descriptions, the engine's own.
+inline constexpr const char* kModelTextContext = "palpate::Models";
+
+/// Everything said about one model of the selector, once (docs/models.md, "Adding a model"): its
+/// stable name, its kind (and slope-ring method), its label and description for people (English;
+/// translated in kModelTextContext), the preset file's section holding its own parameters, and
+/// how it is checked and built.
+struct ModelDescriptor {
+    const char* name;                 ///< "coherent", "mass-spring-rk4", ...
+    ModelKind kind;
+    SlopeRingMethod slopeRingMethod;  ///< the method of a SlopeRing kind; Coherent for the others
+    const char* label;                ///< "Coherent rings (ours)"
+    const char* description;          ///< what it is and what a tick costs
+    const char* section;              ///< "slope_ring", "mass_spring", "radius_of_influence", "ffd"
+    /// Every problem of the definition's parameters for this model, each naming the field.
+    Problems (*validate)(const ModelDef& def);
+    /// Builds it from valid parameters; `tets` is the surface's tetrahedral fill (volumetric-rings).
+    std::unique_ptr<DeformationModel> (*make)(const ModelDef& def, const TissueMesh& mesh, const Octree& octree,
+                                              const TetMesh& tets);
+    bool needsTets = false;           ///< it runs on a tetrahedral fill of the surface
+};
+
+/// Every model, in modelNames()'s order (the registry models, then the slope-ring methods).
+const std::vector<ModelDescriptor>& modelDescriptors();
+/// The descriptor of a name; nullptr for an unknown one ("palpate" is read as coherent).
+const ModelDescriptor* findModelDescriptor(std::string_view name);
+/// The descriptor of a definition's kind (and method).
+const ModelDescriptor& modelDescriptor(const ModelDef& def);
 
 /// A slope-ring method's definition with these parameters.
 ModelDef slopeRingModelDef(const SlopeRingParams& params, SlopeRingMethod method = SlopeRingMethod::Coherent);

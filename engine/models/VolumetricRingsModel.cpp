@@ -90,7 +90,7 @@ void VolumetricRingsModel::applyParams() {
 
 bool VolumetricRingsModel::applyModelParams(const ModelDef& def) {
     if (def.kind != ModelKind::VolumetricRings) return false;
-    mParams = def.volumetricRings;
+    mParams = VolumetricRingsParams{def.slopeRing};
     applyParams();
     // New slopes or rings: the active set is rebuilt on the next tick; its nodes relax from where they are.
     if (mActiveCentre != kNoVertex) changeActiveSet(mActiveCentre, false);

@@ -14,8 +14,8 @@ RecordedScene describeScene(const TissueMesh& mesh, const std::string& meshPath,
     s.meshHash = meshHash(mesh);
     s.vertexCount = std::uint32_t(mesh.vertexCount());
     s.triangleCount = std::uint32_t(mesh.triangleCount());
-    s.method = preset.method;
-    s.params = preset.params;
+    s.method = preset.model.slopeRingMethod;
+    s.params = preset.model.slopeRing;
     s.contact = presetModelDef(preset).contact;
     s.octree = preset.octree;
     s.presetJson = tissuePresetToJson(preset);

@@ -149,10 +149,10 @@ std::unique_ptr<HapticScene> RecordingPlayer::buildScene(const RecordedScene& sc
         // only; its binary slope-ring parameters, method and octree stay the exact ones.
         const PresetLoadResult stored = parseTissuePreset(scene.presetJson, "presetJson");
         ModelDef model;
-        if (stored.preset && stored.preset->modelKind != ModelKind::SlopeRing) {
+        if (stored.preset && stored.preset->model.kind != ModelKind::SlopeRing) {
             TissuePreset preset = *stored.preset;
-            preset.params = scene.params;
-            preset.method = scene.method;
+            preset.model.slopeRing = scene.params;
+            preset.model.slopeRingMethod = scene.method;
             model = presetModelDef(preset);
         } else {
             model = slopeRingModelDef(scene.params, scene.method);

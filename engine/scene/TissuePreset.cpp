@@ -118,9 +118,40 @@ bool readSection(JsonReader& r, const Json& j, const char* section, FieldTable<S
     return problems.empty();
 }
 
-bool isMassSpring(ModelKind kind) {
-    return kind == ModelKind::MassSpringSymplectic || kind == ModelKind::MassSpringRk4 ||
-           kind == ModelKind::MassSpringImplicit || kind == ModelKind::MassSpringLocal;
+/// A preset section of one model's own parameters (ModelDescriptor::section): how it is read
+/// and checked, written, compared and copied. A model with a new parameter struct adds a row.
+struct ModelSectionIo {
+    const char* section;
+    bool (*read)(JsonReader& r, const Json& j, const char* section, ModelDef& def);
+    Json (*write)(const ModelDef& def);
+    bool (*same)(const ModelDef& a, const ModelDef& b);
+    void (*copy)(ModelDef& to, const ModelDef& from);
+};
+
+template <auto Member, auto Fields, auto Validate>
+constexpr ModelSectionIo sectionOf(const char* section) {
+    return {section,
+            [](JsonReader& r, const Json& j, const char* name, ModelDef& def) {
+                return readSection(r, j, name, Fields(), def.*Member, Validate);
+            },
+            [](const ModelDef& def) { return Json(fieldsToJson(Fields(), def.*Member)); },
+            [](const ModelDef& a, const ModelDef& b) { return sameFields(Fields(), a.*Member, b.*Member); },
+            [](ModelDef& to, const ModelDef& from) { to.*Member = from.*Member; }};
+}
+
+constexpr ModelSectionIo kModelSections[] = {
+    sectionOf<&ModelDef::slopeRing, slopeRingFields, validateSlopeRingParams>("slope_ring"),
+    sectionOf<&ModelDef::massSpring, massSpringFields, validateMassSpringParams>("mass_spring"),
+    sectionOf<&ModelDef::radiusOfInfluence, radiusOfInfluenceFields, validateRadiusOfInfluenceParams>(
+        "radius_of_influence"),
+    sectionOf<&ModelDef::ffd, ffdFields, validateFfdParams>("ffd"),
+};
+
+const ModelSectionIo& sectionOfModel(const ModelDef& def) {
+    const std::string_view section = modelDescriptor(def).section;
+    for (const ModelSectionIo& io : kModelSections)
+        if (section == io.section) return io;
+    throw std::logic_error("no preset section '" + std::string(section) + "' for the model " + modelName(def));
 }
 
 }  // namespace
@@ -134,14 +165,7 @@ ContactDef contactDefOf(const TissueProperties& tissue) {
 double presetToolRadiusMm(const TissuePreset& preset) { return modelToolRadiusMm(presetModelDef(preset)); }
 
 ModelDef presetModelDef(const TissuePreset& preset) {
-    ModelDef def;
-    def.kind = preset.modelKind;
-    def.slopeRingMethod = preset.method;
-    def.slopeRing = preset.params;
-    def.massSpring = preset.massSpring;
-    def.radiusOfInfluence = preset.radiusOfInfluence;
-    def.ffd = preset.ffd;
-    def.volumetricRings.slopeRing = preset.params;
+    ModelDef def = preset.model;
     def.contact = contactDefOf(preset.tissue.value_or(TissueProperties{}));
     return def;
 }
@@ -149,22 +173,12 @@ ModelDef presetModelDef(const TissuePreset& preset) {
 std::string presetModelName(const TissuePreset& preset) { return modelName(presetModelDef(preset)); }
 
 void setPresetModel(TissuePreset& preset, const ModelDef& def) {
-    preset.modelKind = def.kind;
-    switch (def.kind) {
-        case ModelKind::SlopeRing:
-            preset.method = def.slopeRingMethod;
-            preset.params = def.slopeRing;
-            break;
-        case ModelKind::VolumetricRings: preset.params = def.volumetricRings.slopeRing; break;
-        case ModelKind::RadiusOfInfluence: preset.radiusOfInfluence = def.radiusOfInfluence; break;
-        case ModelKind::Ffd: preset.ffd = def.ffd; break;
-        default: preset.massSpring = def.massSpring; break;
-    }
+    preset.model.kind = def.kind;
+    preset.model.slopeRingMethod = def.slopeRingMethod;
+    sectionOfModel(def).copy(preset.model, def);
 }
 
-bool presetUsesSlopeRingParams(const TissuePreset& preset) {
-    return preset.modelKind == ModelKind::SlopeRing || preset.modelKind == ModelKind::VolumetricRings;
-}
+bool presetUsesSlopeRingParams(const TissuePreset& preset) { return slopeRingParamsOf(preset.model) != nullptr; }
 
 FieldTable<TissueProperties> tissueFields() { return kTissueFields; }
 FieldTable<PresetStabilityMargin> stabilityMarginFields() { return kMarginFields; }
@@ -186,12 +200,11 @@ bool samePreset(const TissuePreset& a, const TissuePreset& b) {
                             (!a.tissue || (sameFields(tissueFields(), *a.tissue, *b.tissue) &&
                                            a.tissue->source == b.tissue->source &&
                                            a.tissue->stiffeningSource == b.tissue->stiffeningSource));
-    return a.name == b.name && a.description == b.description && a.modelKind == b.modelKind && a.method == b.method &&
-           sameFields(slopeRingFields(), a.params, b.params) &&
-           sameFields(massSpringFields(), a.massSpring, b.massSpring) &&
-           sameFields(radiusOfInfluenceFields(), a.radiusOfInfluence, b.radiusOfInfluence) &&
-           sameFields(ffdFields(), a.ffd, b.ffd) && sameFields(octreeFields(), a.octree, b.octree) &&
-           a.hapticRateHz == b.hapticRateHz && sameTissue;
+    const bool sameModel = a.model.kind == b.model.kind && a.model.slopeRingMethod == b.model.slopeRingMethod &&
+                           std::all_of(std::begin(kModelSections), std::end(kModelSections),
+                                       [&](const ModelSectionIo& io) { return io.same(a.model, b.model); });
+    return a.name == b.name && a.description == b.description && sameModel &&
+           sameFields(octreeFields(), a.octree, b.octree) && a.hapticRateHz == b.hapticRateHz && sameTissue;
 }
 
 namespace {
@@ -223,8 +236,8 @@ PresetLoadResult parsePresetText(const std::string& textIn, const std::string& s
         std::string model;
         r.text(j, "", "model", model);
         if (const auto def = modelDefForName(model)) {
-            preset.modelKind = def->kind;
-            if (def->kind == ModelKind::SlopeRing) preset.method = def->slopeRingMethod;
+            preset.model.kind = def->kind;
+            preset.model.slopeRingMethod = def->slopeRingMethod;
         } else if (j.at("model").is_string()) {
             std::string names;
             for (const std::string& n : modelNames()) names += (names.empty() ? "" : ", ") + n;
@@ -235,14 +248,8 @@ PresetLoadResult parsePresetText(const std::string& textIn, const std::string& s
 
     // Each model's own section, read whatever the model (a hand-written preset may keep several)
     // and checked by the model's validator.
-    if (j.contains("slope_ring"))
-        readSection(r, j, "slope_ring", slopeRingFields(), preset.params, validateSlopeRingParams);
-    if (j.contains("mass_spring"))
-        readSection(r, j, "mass_spring", massSpringFields(), preset.massSpring, validateMassSpringParams);
-    if (j.contains("radius_of_influence"))
-        readSection(r, j, "radius_of_influence", radiusOfInfluenceFields(), preset.radiusOfInfluence,
-                    validateRadiusOfInfluenceParams);
-    if (j.contains("ffd")) readSection(r, j, "ffd", ffdFields(), preset.ffd, validateFfdParams);
+    for (const ModelSectionIo& io : kModelSections)
+        if (j.contains(io.section)) io.read(r, j, io.section, preset.model);
     if (j.contains("octree")) readSection(r, j, "octree", octreeFields(), preset.octree, validateOctreeDef);
     if (j.contains("tissue")) {
         const Json& t = j.at("tissue");
@@ -314,19 +321,17 @@ PresetLoadResult loadTissuePreset(const std::string& path) {
 
 std::string tissuePresetToJson(const TissuePreset& preset) {
     Json j{{"format", kFormat},
-           {"version", preset.modelKind == ModelKind::SlopeRing ? 1 : kTissuePresetVersion},
+           {"version", preset.model.kind == ModelKind::SlopeRing ? 1 : kTissuePresetVersion},
            {"name", preset.name},
            {"description", preset.description},
            {"model", presetModelName(preset)},
            {"haptic_rate_hz", preset.hapticRateHz},
-           {"slope_ring", fieldsToJson(slopeRingFields(), preset.params)},
+           {"slope_ring", fieldsToJson(slopeRingFields(), preset.model.slopeRing)},
            {"octree", fieldsToJson(octreeFields(), preset.octree)}};
     // Only the section of the model in use (slope_ring always: the slope-ring methods and
     // volumetric-rings run on it, and the GUI keeps it for a switch back).
-    if (isMassSpring(preset.modelKind)) j["mass_spring"] = fieldsToJson(massSpringFields(), preset.massSpring);
-    if (preset.modelKind == ModelKind::RadiusOfInfluence)
-        j["radius_of_influence"] = fieldsToJson(radiusOfInfluenceFields(), preset.radiusOfInfluence);
-    if (preset.modelKind == ModelKind::Ffd) j["ffd"] = fieldsToJson(ffdFields(), preset.ffd);
+    const ModelSectionIo& own = sectionOfModel(preset.model);
+    if (!j.contains(own.section)) j[own.section] = own.write(preset.model);
     if (preset.tissue) {
         j["tissue"] = fieldsToJson(tissueFields(), *preset.tissue);
         j["tissue"]["source"] = preset.tissue->source;

@@ -6,8 +6,6 @@
 // them ("mass_spring", "radius_of_influence", "ffd"); volumetric-rings takes "slope_ring".
 
 #include "engine/core/Octree.h"
-#include "engine/models/slopering/SlopeRingMethod.h"
-#include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/lod/LodNeeds.h"
 #include "engine/models/ModelRegistry.h"
 #include "base/params/FieldTable.h"
@@ -61,16 +59,11 @@ FieldTable<PresetStabilityMargin> stabilityMarginFields();
 struct TissuePreset {
     std::string name = "default";
     std::string description;
-    /// Which model runs. ModelKind::SlopeRing: the slope-ring method `method`; any other kind is a
-    /// registry model (ModelDef's kinds), with its parameters below.
-    ModelKind modelKind = ModelKind::SlopeRing;
-    /// The slope-ring method (used when modelKind is SlopeRing).
-    SlopeRingMethod method = SlopeRingMethod::Coherent;
-    /// Slope-ring parameters: of the slope-ring methods and of volumetric-rings.
-    SlopeRingParams params;
-    MassSpringParams massSpring;  ///< the four mass-spring kinds
-    RadiusOfInfluenceParams radiusOfInfluence;
-    FfdParams ffd;
+    /// Which model runs and every model's parameters (engine/models/ModelRegistry.h): the file
+    /// holds the model's name, the "slope_ring" section (the slope-ring methods and
+    /// volumetric-rings run on it; kept for a switch back) and the model's own section. The
+    /// contact (tool radius, friction) is the tissue's: presetModelDef fills it in.
+    ModelDef model;
     OctreeDef octree;
     double hapticRateHz = 1000.0;
     std::optional<TissueProperties> tissue;
@@ -95,9 +88,9 @@ ModelDef presetModelDef(const TissuePreset& preset);
 double presetToolRadiusMm(const TissuePreset& preset);
 /// The preset's model name (modelNames()'s spelling).
 std::string presetModelName(const TissuePreset& preset);
-/// Sets the preset's model and that model's parameters from `def` (the other models' are kept).
+/// Sets the preset's model and that model's own section from `def` (the other sections are kept).
 void setPresetModel(TissuePreset& preset, const ModelDef& def);
-/// Whether the preset's model runs on `params` (slope-ring methods and volumetric-rings).
+/// Whether the preset's model runs on `model.slopeRing` (slope-ring methods and volumetric-rings).
 bool presetUsesSlopeRingParams(const TissuePreset& preset);
 
 /// True when every value of the two presets is the same (exact comparison): the undo check.

@@ -39,7 +39,7 @@ std::optional<ExerciseAssets> loadExerciseAssets(const Exercise& exercise, const
         return std::nullopt;
     }
     if (exerciseKind(exercise.type).changesTissue() &&
-        (a.preset.modelKind != ModelKind::SlopeRing || a.preset.method != SlopeRingMethod::Coherent)) {
+        (a.preset.model.kind != ModelKind::SlopeRing || a.preset.model.slopeRingMethod != SlopeRingMethod::Coherent)) {
         errors.push_back(source + ": tissue_preset: " + a.presetPath + " uses the " + presetModelName(a.preset) +
                          " model; an exercise's lumps need the coherent model");
         return std::nullopt;

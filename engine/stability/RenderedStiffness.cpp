@@ -123,7 +123,7 @@ std::optional<RenderedStiffness> renderedStiffness(const ModelDef& def, const Ti
             if (def.slopeRingMethod == SlopeRingMethod::Coherent && def.contact.staticFriction > 0.0)
                 out.lines.push_back(frictionProxy(def.slopeRing));
             break;
-        case ModelKind::VolumetricRings: out.lines.push_back(slopeRingNormal(def.volumetricRings.slopeRing)); break;
+        case ModelKind::VolumetricRings: out.lines.push_back(slopeRingNormal(def.slopeRing)); break;
         case ModelKind::RadiusOfInfluence:
             out.lines.push_back(pureSpring(def.radiusOfInfluence.stiffnessNPerMm));
             break;

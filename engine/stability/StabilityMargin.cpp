@@ -121,7 +121,7 @@ std::optional<StabilityMargin> stabilityMarginIfKnown(const ModelDef& def, const
     StabilityMargin bound;
     switch (def.kind) {
         case ModelKind::SlopeRing: bound = slopeRing(def.slopeRing); break;
-        case ModelKind::VolumetricRings: bound = slopeRing(def.volumetricRings.slopeRing); break;
+        case ModelKind::VolumetricRings: bound = slopeRing(def.slopeRing); break;
         case ModelKind::MassSpringSymplectic:
             bound = massSpring(def.massSpring, MassSpringIntegrator::SymplecticEuler, *meshOrNull, dtS);
             break;

@@ -105,7 +105,7 @@ CellOutcome runVolumetricRingsCell(const PressScene& scene, double slope1MmPerN,
     VolumetricRingsModel model(scene.mesh, scene.octree, scene.tets, VolumetricRingsParams{});
     ModelDef def;
     def.kind = ModelKind::VolumetricRings;
-    def.volumetricRings.slopeRing = slopeRingCellParams(slope1MmPerN, contactNPerMm, alpha);
+    def.slopeRing = slopeRingCellParams(slope1MmPerN, contactNPerMm, alpha);
     model.applyModelParams(def);
     return settles(scene, model, slope1MmPerN, contactNPerMm, ticks);
 }

@@ -24,7 +24,7 @@ TEST(FeelBench, ModelsAreBuiltFromThePresetWithItsToolAndFriction) {
     TissuePreset stiff;
     stiff.tissue = TissueProperties{};
     stiff.tissue->dynamicFriction = 0.15;
-    stiff.params.contactStiffnessNPerMm = 1.25;
+    stiff.model.slopeRing.contactStiffnessNPerMm = 1.25;
     const ModelDef own = feelModelDef(stiff, "coherent");
     EXPECT_DOUBLE_EQ(own.contact.dynamicFriction, 0.15);
     EXPECT_DOUBLE_EQ(own.slopeRing.contactStiffnessNPerMm, 1.25);

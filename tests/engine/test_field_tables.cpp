@@ -120,16 +120,16 @@ TEST(FieldTables, EveryFieldRoundTripsThroughAPresetFile) {
     for (const FieldDef<MassSpringParams>& f : massSpringFields()) {
         TissuePreset preset = *parseTissuePreset(tissuePresetToJson(TissuePreset{}), "p.json").preset;
         setPresetModel(preset, *modelDefForName("mass-spring-local"));
-        f.set(preset.massSpring, -1, otherValidValue(f));
-        ASSERT_TRUE(validateMassSpringParams(preset.massSpring).empty()) << f.spec.key;
+        f.set(preset.model.massSpring, -1, otherValidValue(f));
+        ASSERT_TRUE(validateMassSpringParams(preset.model.massSpring).empty()) << f.spec.key;
         roundTrip(preset, f.spec.key);
     }
     for (const FieldDef<FfdParams>& f : ffdFields()) {
         TissuePreset preset;
         setPresetModel(preset, *modelDefForName("ffd"));
-        f.set(preset.ffd, -1, f.spec.key == std::string("controlPointsPerAxis") ? 9 : otherValidValue(f));
-        ASSERT_TRUE(validateFfdParams(preset.ffd).empty())
-            << f.spec.key << joinedMessages(validateFfdParams(preset.ffd));
+        f.set(preset.model.ffd, -1, f.spec.key == std::string("controlPointsPerAxis") ? 9 : otherValidValue(f));
+        ASSERT_TRUE(validateFfdParams(preset.model.ffd).empty())
+            << f.spec.key << joinedMessages(validateFfdParams(preset.model.ffd));
         roundTrip(preset, f.spec.key);
     }
     for (const FieldDef<OctreeDef>& f : octreeFields()) {
@@ -148,9 +148,9 @@ TEST(FieldTables, EveryFieldRoundTripsThroughAPresetFile) {
         roundTrip(preset, f.spec.key);
     }
     TissuePreset slopes;
-    slopes.params.springStiffnessNPerMm = 2.5;
-    slopes.params.dampingRatio = 0.3;
-    slopes.params.ringCount = 4;
+    slopes.model.slopeRing.springStiffnessNPerMm = 2.5;
+    slopes.model.slopeRing.dampingRatio = 0.3;
+    slopes.model.slopeRing.ringCount = 4;
     roundTrip(slopes, "slope-ring fields");
 }
 

@@ -15,13 +15,13 @@ std::string validText() {
     TissuePreset p;
     p.name = "test";
     p.description = "a preset";
-    p.params.ringCount = 3;
-    p.params.slopeMagnitudeMmPerN = {0.7, 0.4, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.001};
-    p.params.springStiffnessNPerMm = 2.0;
+    p.model.slopeRing.ringCount = 3;
+    p.model.slopeRing.slopeMagnitudeMmPerN = {0.7, 0.4, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.001};
+    p.model.slopeRing.springStiffnessNPerMm = 2.0;
     p.octree.maxDepth = 8;
     p.octree.leafCapacity = 32;
     p.hapticRateHz = 2000;
-    p.method = SlopeRingMethod::Proposed;
+    p.model.slopeRingMethod = SlopeRingMethod::Proposed;
     p.tissue = TissueProperties{.youngsModulusKPa = 5.0, .poissonRatio = 0.45, .toolRadiusMm = 4.0, .staticFriction = 0.4, .dynamicFriction = 0.25, .source = "a textbook"};
     return tissuePresetToJson(p);
 }
@@ -53,13 +53,13 @@ TEST(TissuePreset, RoundTripKeepsEveryField) {
     const TissuePreset& p = *r.preset;
     EXPECT_EQ(p.name, "test");
     EXPECT_EQ(p.description, "a preset");
-    EXPECT_EQ(p.params.ringCount, 3);
-    EXPECT_EQ(p.params.slopeMagnitudeMmPerN[2], 0.2);
-    EXPECT_EQ(p.params.springStiffnessNPerMm, 2.0);
+    EXPECT_EQ(p.model.slopeRing.ringCount, 3);
+    EXPECT_EQ(p.model.slopeRing.slopeMagnitudeMmPerN[2], 0.2);
+    EXPECT_EQ(p.model.slopeRing.springStiffnessNPerMm, 2.0);
     EXPECT_EQ(p.octree.maxDepth, 8);
     EXPECT_EQ(p.octree.leafCapacity, 32);
     EXPECT_EQ(p.hapticRateHz, 2000);
-    EXPECT_EQ(p.method, SlopeRingMethod::Proposed);
+    EXPECT_EQ(p.model.slopeRingMethod, SlopeRingMethod::Proposed);
     ASSERT_TRUE(p.tissue);
     EXPECT_EQ(p.tissue->source, "a textbook");
     EXPECT_EQ(tissuePresetToJson(p), validText());

@@ -4,6 +4,7 @@
 #include "engine/scene/TissuePreset.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 using namespace palpate;
 
@@ -56,7 +57,7 @@ TEST(TissuePresetModels, EveryRegistryNameLoadsAndRoundTrips) {
 
 TEST(TissuePresetModels, SlopeRingPresetsAreWrittenAsBefore) {
     TissuePreset p;
-    p.method = SlopeRingMethod::Hybrid;
+    p.model.slopeRingMethod = SlopeRingMethod::Hybrid;
     const std::string text = tissuePresetToJson(p);
     EXPECT_NE(text.find("\"version\": 1,"), std::string::npos) << text;
     EXPECT_NE(text.find("\"model\": \"hybrid\""), std::string::npos);
@@ -77,22 +78,22 @@ TEST(TissuePresetModels, OnlyTheSectionOfTheModelInUseIsWritten) {
 
 TEST(TissuePresetModels, EachModelsParametersRoundTrip) {
     TissuePreset ms = presetFor("mass-spring-local");
-    ms.massSpring.vertexMassKg = 0.002;
-    ms.massSpring.anchorStiffnessNPerMm = 0.3;
-    ms.massSpring.edgeStiffnessNPerMm = 0.7;
-    ms.massSpring.contactStiffnessNPerMm = 1.25;
-    ms.massSpring.dampingRatio = 0.5;
-    ms.massSpring.substeps = 3;
-    ms.massSpring.maxSubsteps = 64;
-    ms.massSpring.cgMaxIterations = 40;
-    ms.massSpring.cgTolerance = 1e-7;
-    ms.massSpring.localRingCount = 4;
-    ms.massSpring.localIntegrator = MassSpringIntegrator::Rk4;
-    ms.massSpring.restEpsilonMm = 2e-4;
+    ms.model.massSpring.vertexMassKg = 0.002;
+    ms.model.massSpring.anchorStiffnessNPerMm = 0.3;
+    ms.model.massSpring.edgeStiffnessNPerMm = 0.7;
+    ms.model.massSpring.contactStiffnessNPerMm = 1.25;
+    ms.model.massSpring.dampingRatio = 0.5;
+    ms.model.massSpring.substeps = 3;
+    ms.model.massSpring.maxSubsteps = 64;
+    ms.model.massSpring.cgMaxIterations = 40;
+    ms.model.massSpring.cgTolerance = 1e-7;
+    ms.model.massSpring.localRingCount = 4;
+    ms.model.massSpring.localIntegrator = MassSpringIntegrator::Rk4;
+    ms.model.massSpring.restEpsilonMm = 2e-4;
     auto r = parseTissuePreset(tissuePresetToJson(ms), "my.json");
     ASSERT_TRUE(r.preset) << r.error();
-    const MassSpringParams& m = r.preset->massSpring;
-    EXPECT_EQ(r.preset->modelKind, ModelKind::MassSpringLocal);
+    const MassSpringParams& m = r.preset->model.massSpring;
+    EXPECT_EQ(r.preset->model.kind, ModelKind::MassSpringLocal);
     EXPECT_EQ(m.vertexMassKg, 0.002);
     EXPECT_EQ(m.anchorStiffnessNPerMm, 0.3);
     EXPECT_EQ(m.edgeStiffnessNPerMm, 0.7);
@@ -107,36 +108,36 @@ TEST(TissuePresetModels, EachModelsParametersRoundTrip) {
     EXPECT_EQ(m.restEpsilonMm, 2e-4);
 
     TissuePreset roi = presetFor("radius-of-influence");
-    roi.radiusOfInfluence.radiusMm = 17.5;
-    roi.radiusOfInfluence.degree = 4;
-    roi.radiusOfInfluence.coefficients = powerProfileCoefficients(4);
-    roi.radiusOfInfluence.stiffnessNPerMm = 0.2;
+    roi.model.radiusOfInfluence.radiusMm = 17.5;
+    roi.model.radiusOfInfluence.degree = 4;
+    roi.model.radiusOfInfluence.coefficients = powerProfileCoefficients(4);
+    roi.model.radiusOfInfluence.stiffnessNPerMm = 0.2;
     r = parseTissuePreset(tissuePresetToJson(roi), "my.json");
     ASSERT_TRUE(r.preset) << r.error();
-    EXPECT_EQ(r.preset->radiusOfInfluence.radiusMm, 17.5);
-    EXPECT_EQ(r.preset->radiusOfInfluence.degree, 4);
-    EXPECT_EQ(r.preset->radiusOfInfluence.coefficients, powerProfileCoefficients(4));
-    EXPECT_EQ(r.preset->radiusOfInfluence.stiffnessNPerMm, 0.2);
+    EXPECT_EQ(r.preset->model.radiusOfInfluence.radiusMm, 17.5);
+    EXPECT_EQ(r.preset->model.radiusOfInfluence.degree, 4);
+    EXPECT_EQ(r.preset->model.radiusOfInfluence.coefficients, powerProfileCoefficients(4));
+    EXPECT_EQ(r.preset->model.radiusOfInfluence.stiffnessNPerMm, 0.2);
 
     TissuePreset ffd = presetFor("ffd");
-    ffd.ffd.controlPointsPerAxis = 12;
-    ffd.ffd.movedPerAxis = 5;
-    ffd.ffd.marginFraction = 0.1;
-    ffd.ffd.stiffnessNPerMm = 0.3;
+    ffd.model.ffd.controlPointsPerAxis = 12;
+    ffd.model.ffd.movedPerAxis = 5;
+    ffd.model.ffd.marginFraction = 0.1;
+    ffd.model.ffd.stiffnessNPerMm = 0.3;
     r = parseTissuePreset(tissuePresetToJson(ffd), "my.json");
     ASSERT_TRUE(r.preset) << r.error();
-    EXPECT_EQ(r.preset->ffd.controlPointsPerAxis, 12);
-    EXPECT_EQ(r.preset->ffd.movedPerAxis, 5);
-    EXPECT_EQ(r.preset->ffd.marginFraction, 0.1);
-    EXPECT_EQ(r.preset->ffd.stiffnessNPerMm, 0.3);
+    EXPECT_EQ(r.preset->model.ffd.controlPointsPerAxis, 12);
+    EXPECT_EQ(r.preset->model.ffd.movedPerAxis, 5);
+    EXPECT_EQ(r.preset->model.ffd.marginFraction, 0.1);
+    EXPECT_EQ(r.preset->model.ffd.stiffnessNPerMm, 0.3);
 
     // volumetric-rings runs on the slope_ring section.
     TissuePreset vol = presetFor("volumetric-rings");
-    vol.params.ringCount = 3;
+    vol.model.slopeRing.ringCount = 3;
     r = parseTissuePreset(tissuePresetToJson(vol), "my.json");
     ASSERT_TRUE(r.preset) << r.error();
-    EXPECT_EQ(r.preset->modelKind, ModelKind::VolumetricRings);
-    EXPECT_EQ(presetModelDef(*r.preset).volumetricRings.slopeRing.ringCount, 3);
+    EXPECT_EQ(r.preset->model.kind, ModelKind::VolumetricRings);
+    EXPECT_EQ(presetModelDef(*r.preset).slopeRing.ringCount, 3);
 }
 
 TEST(TissuePresetModels, PresetsWrittenBeforeTheRenameReadAsTheCoherentMethod) {
@@ -150,13 +151,13 @@ TEST(TissuePresetModels, PresetsWrittenBeforeTheRenameReadAsTheCoherentMethod) {
 })";
     const auto r = parseTissuePreset(text, "old.json");
     ASSERT_TRUE(r.preset) << r.error();
-    EXPECT_EQ(r.preset->modelKind, ModelKind::SlopeRing);
-    EXPECT_EQ(r.preset->method, SlopeRingMethod::Coherent);
+    EXPECT_EQ(r.preset->model.kind, ModelKind::SlopeRing);
+    EXPECT_EQ(r.preset->model.slopeRingMethod, SlopeRingMethod::Coherent);
     EXPECT_EQ(presetModelName(*r.preset), "coherent");
     EXPECT_NE(tissuePresetToJson(*r.preset).find("\"model\": \"coherent\""), std::string::npos);
     const auto again = parseTissuePreset(tissuePresetToJson(*r.preset), "new.json");
     ASSERT_TRUE(again.preset) << again.error();
-    EXPECT_EQ(again.preset->method, SlopeRingMethod::Coherent);
+    EXPECT_EQ(again.preset->model.slopeRingMethod, SlopeRingMethod::Coherent);
 }
 
 TEST(TissuePresetModels, ADegreeWithoutCoefficientsIsThePowerProfile) {
@@ -169,9 +170,9 @@ TEST(TissuePresetModels, ADegreeWithoutCoefficientsIsThePowerProfile) {
 })";
     const auto r = parseTissuePreset(text, "my.json");
     ASSERT_TRUE(r.preset) << r.error();
-    EXPECT_EQ(r.preset->modelKind, ModelKind::RadiusOfInfluence);
-    EXPECT_EQ(r.preset->radiusOfInfluence.radiusMm, 20.0);
-    EXPECT_EQ(r.preset->radiusOfInfluence.coefficients, powerProfileCoefficients(3));
+    EXPECT_EQ(r.preset->model.kind, ModelKind::RadiusOfInfluence);
+    EXPECT_EQ(r.preset->model.radiusOfInfluence.radiusMm, 20.0);
+    EXPECT_EQ(r.preset->model.radiusOfInfluence.coefficients, powerProfileCoefficients(3));
 }
 
 TEST(TissuePresetModels, BadValuesAreNamedByKey) {
@@ -231,7 +232,47 @@ TEST(TissuePresetModels, OldPresetsLoadAsSlopeRingMethods) {
 })";
     const auto r = parseTissuePreset(old, "old.json");
     ASSERT_TRUE(r.preset) << r.error();
-    EXPECT_EQ(r.preset->modelKind, ModelKind::SlopeRing);
-    EXPECT_EQ(r.preset->method, SlopeRingMethod::Previous);
+    EXPECT_EQ(r.preset->model.kind, ModelKind::SlopeRing);
+    EXPECT_EQ(r.preset->model.slopeRingMethod, SlopeRingMethod::Previous);
     EXPECT_EQ(presetModelName(*r.preset), "previous");
+}
+
+// One descriptor per model says its name, kind, texts and section; the registry's names, the
+// definitions it makes and the preset's own section all follow from it.
+TEST(TissuePresetModels, EveryModelIsOneDescriptorWhoseSectionThePresetWrites) {
+    std::vector<std::string> names;
+    for (const ModelDescriptor& d : modelDescriptors()) {
+        names.emplace_back(d.name);
+        const auto def = modelDefForName(d.name);
+        ASSERT_TRUE(def) << d.name;
+        EXPECT_EQ(def->kind, d.kind) << d.name;
+        EXPECT_EQ(modelName(*def), d.name);
+        EXPECT_EQ(&modelDescriptor(*def), &d) << d.name;
+        if (d.kind == ModelKind::SlopeRing) EXPECT_EQ(methodName(d.slopeRingMethod), d.name);
+        EXPECT_GT(std::string_view(d.label).size(), 3u) << d.name;
+        EXPECT_NE(std::string_view(d.description).find("Cost:"), std::string_view::npos) << d.name;
+        // The preset file carries the model's own section (and the slope rings, always).
+        const auto json = nlohmann::json::parse(tissuePresetToJson(presetFor(d.name)));
+        EXPECT_TRUE(json.contains(d.section)) << d.name << " " << d.section;
+        EXPECT_EQ(slopeRingParamsOf(*def) != nullptr, std::string_view(d.section) == "slope_ring") << d.name;
+    }
+    EXPECT_EQ(names, modelNames());
+    // "palpate", the coherent method's former name, still finds it.
+    ASSERT_NE(findModelDescriptor("palpate"), nullptr);
+    EXPECT_STREQ(findModelDescriptor("palpate")->name, "coherent");
+    EXPECT_EQ(findModelDescriptor("no-such-model"), nullptr);
+}
+
+// A preset holds one ModelDef: setting a model keeps the other models' sections, and two presets
+// differing only in another model's section are not the same (the undo check sees every edit).
+TEST(TissuePresetModels, APresetKeepsEveryModelsSectionAndComparesThemAll) {
+    TissuePreset p = presetFor("ffd");
+    const double slope = p.model.slopeRing.slopeMagnitudeMmPerN[0];
+    setPresetModel(p, *modelDefForName("mass-spring-rk4"));
+    EXPECT_EQ(presetModelName(p), "mass-spring-rk4");
+    EXPECT_EQ(p.model.slopeRing.slopeMagnitudeMmPerN[0], slope);
+    TissuePreset q = p;
+    EXPECT_TRUE(samePreset(p, q));
+    q.model.radiusOfInfluence.radiusMm += 1.0;
+    EXPECT_FALSE(samePreset(p, q));
 }

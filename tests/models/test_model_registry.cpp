@@ -98,7 +98,7 @@ TEST(ModelRegistry, BuildsEveryModelAndNamesBadParameters) {
     def.ffd.controlPointsPerAxis = 1;
     check(def, "controlPointsPerAxis");
     def = *modelDefForName("volumetric-rings");
-    def.volumetricRings.slopeRing.contactStiffnessNPerMm = -1.0;
+    def.slopeRing.contactStiffnessNPerMm = -1.0;
     check(def, "contactStiffness");
     def = *modelDefForName("hybrid");
     def.slopeRing.ringCount = 12;

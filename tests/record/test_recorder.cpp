@@ -180,7 +180,7 @@ TEST(Recorder, SteppedTickWithRecorderDoesNotAllocate) {
     TempDir dir;
     for (auto method : {SlopeRingMethod::Coherent, SlopeRingMethod::Proposed}) {
         TissuePreset preset;
-        preset.method = method;
+        preset.model.slopeRingMethod = method;
         RecordRig rig = makeRecordRig(SimTrajectory::Stroke, preset);
         std::string error;
         auto session = RecordingSession::start(*rig.loop,

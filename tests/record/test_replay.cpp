@@ -77,7 +77,7 @@ TEST(Replay, SteppedRecordingReplaysBitExactly) {
             auto loaded = TissueMesh::load(smallSphereMeshPath());
             ASSERT_TRUE(loaded.mesh);
             TissuePreset preset;
-            preset.params.springStiffnessNPerMm = 2.0;
+            preset.model.slopeRing.springStiffnessNPerMm = 2.0;
             const RecordedScene description = describeScene(*loaded.mesh, smallSphereMeshPath(), preset);
             ASSERT_EQ(session.swapScene(HapticScene::create(std::move(*loaded.mesh), preset), description), "");
         }
@@ -108,7 +108,7 @@ TEST(Replay, EveryMethodReplaysBitExactly) {
     TempDir dir;
     for (auto method : {SlopeRingMethod::Previous, SlopeRingMethod::Hybrid, SlopeRingMethod::Proposed}) {
         TissuePreset preset;
-        preset.method = method;
+        preset.model.slopeRingMethod = method;
         RecordRig rig = makeRecordRig(SimTrajectory::Scan, preset);
         const std::string path = dir.file(std::string(methodName(method)) + ".palprec");
         recordStepped(rig, path, 2500);

@@ -56,8 +56,8 @@ struct Pressed {
 /// force settles; without `exercise`, plain tissue.
 Pressed press(double depthMm, const Exercise* exercise, double forceRelaxation = 0.0, int ticks = 5) {
     TissuePreset p = muscle();
-    p.params.forceRelaxation = forceRelaxation;
-    auto scene = HapticScene::create(sphere(), slopeRingModelDef(p.params), p.octree);
+    p.model.slopeRing.forceRelaxation = forceRelaxation;
+    auto scene = HapticScene::create(sphere(), slopeRingModelDef(p.model.slopeRing), p.octree);
     auto* deformer = dynamic_cast<CoherentSlopeRing*>(&scene->model());
     EXPECT_NE(deformer, nullptr);
     if (exercise) {
@@ -79,13 +79,13 @@ Pressed press(double depthMm, const Exercise* exercise, double forceRelaxation =
 /// The closed form (docs/scoring.md, "Lumps under the surface"): F = max(k_c d / (1 + g),
 /// k_c (d - (1 - c) z) / (1 + g c)), g = k_c |m1|, c = 1 / contrast.
 double closedFormF(double d, double z, double contrast) {
-    const SlopeRingParams p = muscle().params;
+    const SlopeRingParams p = muscle().model.slopeRing;
     const double m1 = p.slopeMagnitudeMmPerN[0], kc = p.contactStiffnessNPerMm, g = kc * m1, c = 1.0 / contrast;
     return std::max(kc * d / (1.0 + g), kc * (d - (1.0 - c) * z) / (1.0 + g * c));
 }
 
 TEST(LumpsUnderTheSurface, ForceFollowsTheClosedForm) {
-    const SlopeRingParams p = muscle().params;
+    const SlopeRingParams p = muscle().model.slopeRing;
     const double m1 = p.slopeMagnitudeMmPerN[0], ks = p.springStiffnessNPerMm;
     for (const double z : {2.0, 5.0, 8.0})
         for (const double d : {4.0, 10.0, 16.0}) {
@@ -126,8 +126,8 @@ TEST(LumpsUnderTheSurface, RelaxedUpdateSettlesOnTheSameForce) {
 
 TEST(LumpsUnderTheSurface, ALumpAtTheSurfaceIsTheUniformInclusionBitForBit) {
     TissuePreset p = muscle();
-    auto a = HapticScene::create(sphere(), slopeRingModelDef(p.params), p.octree);
-    auto b = HapticScene::create(sphere(), slopeRingModelDef(p.params), p.octree);
+    auto a = HapticScene::create(sphere(), slopeRingModelDef(p.model.slopeRing), p.octree);
+    auto b = HapticScene::create(sphere(), slopeRingModelDef(p.model.slopeRing), p.octree);
     auto* da = dynamic_cast<CoherentSlopeRing*>(&a->model());
     auto* db = dynamic_cast<CoherentSlopeRing*>(&b->model());
     std::vector<float> factors(sphere().vertexCount(), 1.0f);
@@ -144,7 +144,7 @@ TEST(LumpsUnderTheSurface, ALumpAtTheSurfaceIsTheUniformInclusionBitForBit) {
 
 TEST(LumpsUnderTheSurface, DepthsAreValidatedAndTheTickAllocatesNothing) {
     TissuePreset p = muscle();
-    auto scene = HapticScene::create(sphere(), slopeRingModelDef(p.params), p.octree);
+    auto scene = HapticScene::create(sphere(), slopeRingModelDef(p.model.slopeRing), p.octree);
     auto* d = dynamic_cast<CoherentSlopeRing*>(&scene->model());
     const std::size_t n = sphere().vertexCount();
     EXPECT_THROW(d->setLumps(std::vector<float>(n, 0.5f), std::vector<float>(n - 1, 1.0f)), std::invalid_argument);
@@ -315,7 +315,7 @@ TEST(ScriptedExaminers, TheLightPresserMissesTheDeepLumpAndIsToldWhy) {
     EXPECT_TRUE(hasFeedback(r, "pressed_too_lightly"));
     // The force that reaches the 8 mm lump: 8 mm of sink at k_s |m1| / |m1| = k_s N per mm.
     ASSERT_TRUE(r.palpation->deepestLumpReachForceN);
-    EXPECT_NEAR(*r.palpation->deepestLumpReachForceN, 8.0 * muscle().params.springStiffnessNPerMm, 0.15);
+    EXPECT_NEAR(*r.palpation->deepestLumpReachForceN, 8.0 * muscle().model.slopeRing.springStiffnessNPerMm, 0.15);
     const ScoreReport good = scoreScripted("detect_lumps", "good", dir);
     EXPECT_LT(r.score, good.score - 10.0);
 }

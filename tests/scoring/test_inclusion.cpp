@@ -35,7 +35,7 @@ TissuePreset preset(const std::string& name) {
 
 Model model(const TissuePreset& p, SlopeRingMethod method = SlopeRingMethod::Coherent) {
     Model m;
-    m.scene = HapticScene::create(sphere(), slopeRingModelDef(p.params, method), p.octree);
+    m.scene = HapticScene::create(sphere(), slopeRingModelDef(p.model.slopeRing, method), p.octree);
     m.deformer = dynamic_cast<CoherentSlopeRing*>(&m.scene->model());
     return m;
 }
@@ -74,7 +74,7 @@ TEST(Inclusion, AllOnesIsBitForBitTheModelWithout) {
 
 TEST(Inclusion, StifferInsideByTheClosedForm) {
     const TissuePreset liver = preset("tissues/liver");
-    const SlopeRingParams& p = liver.params;
+    const SlopeRingParams& p = liver.model.slopeRing;
     const double m1 = p.slopeMagnitudeMmPerN[0], kc = p.contactStiffnessNPerMm, ks = p.springStiffnessNPerMm;
     const VertexId v = fileVertex(1365);
     const glm::vec3 rest = sphere().restPositionsMm()[v], n = sphere().restNormals()[v];

@@ -28,11 +28,11 @@ TissuePreset stiffeningMuscle(int knots = 2) {
     const auto loaded = loadTissuePreset(test::resourcesDir() + "/presets/tissues/muscle.json");
     if (!loaded.preset) throw std::runtime_error(loaded.error());
     TissuePreset p = *loaded.preset;
-    p.params.stiffeningKnots = knots;
-    p.params.stiffeningForceN[0] = 0.4;
-    p.params.stiffeningCompliance[0] = 0.5;
-    p.params.stiffeningForceN[1] = 1.0;
-    p.params.stiffeningCompliance[1] = 0.25;
+    p.model.slopeRing.stiffeningKnots = knots;
+    p.model.slopeRing.stiffeningForceN[0] = 0.4;
+    p.model.slopeRing.stiffeningCompliance[0] = 0.5;
+    p.model.slopeRing.stiffeningForceN[1] = 1.0;
+    p.model.slopeRing.stiffeningCompliance[1] = 0.25;
     return p;
 }
 
@@ -48,7 +48,7 @@ struct Pressed {
 };
 
 Pressed press(const TissuePreset& p, double depthMm, int ticks = 5, const Exercise* exercise = nullptr) {
-    auto scene = HapticScene::create(sphere(), slopeRingModelDef(p.params), p.octree);
+    auto scene = HapticScene::create(sphere(), slopeRingModelDef(p.model.slopeRing), p.octree);
     auto* model = dynamic_cast<CoherentSlopeRing*>(&scene->model());
     EXPECT_NE(model, nullptr);
     if (exercise) {
@@ -69,21 +69,21 @@ Pressed press(const TissuePreset& p, double depthMm, int ticks = 5, const Exerci
 }  // namespace
 
 TEST(Stiffening, TheEffectiveForceFollowsTheKnotsAndInvertsExactly) {
-    const SlopeRingConstants c = slopeRingConstants(stiffeningMuscle().params);
+    const SlopeRingConstants c = slopeRingConstants(stiffeningMuscle().model.slopeRing);
     ASSERT_EQ(c.stiffeningKnots, 2);
     for (double f : {0.0, 0.2, 0.4, 0.7, 1.0, 2.5, 10.0}) {
         EXPECT_NEAR(stiffenedForceN(c, float(f)), effectiveByHand(f), 1e-6) << f;
         EXPECT_NEAR(unstiffenedForceN(c, stiffenedForceN(c, float(f))), f, 1e-5) << f;
     }
     // No knots: E(F) = F.
-    const SlopeRingConstants linear = slopeRingConstants(stiffeningMuscle(0).params);
+    const SlopeRingConstants linear = slopeRingConstants(stiffeningMuscle(0).model.slopeRing);
     EXPECT_EQ(stiffenedForceN(linear, 1.2345f), 1.2345f);
 }
 
 TEST(Stiffening, TheContactForceSolvesTheStiffenedSinkExactly) {
     const TissuePreset p = stiffeningMuscle();
-    const double m1 = p.params.slopeMagnitudeMmPerN[0], kc = p.params.contactStiffnessNPerMm;
-    const double ks = p.params.springStiffnessNPerMm;
+    const double m1 = p.model.slopeRing.slopeMagnitudeMmPerN[0], kc = p.model.slopeRing.contactStiffnessNPerMm;
+    const double ks = p.model.slopeRing.springStiffnessNPerMm;
     const TissuePreset linear = stiffeningMuscle(0);
     for (double d : {1.0, 4.0, 8.0, 14.0, 25.0}) {
         const Pressed r = press(p, d);
@@ -100,10 +100,10 @@ TEST(Stiffening, TheContactForceSolvesTheStiffenedSinkExactly) {
         }
     }
     // The margins read the stiffest piece: k_s |m1| k_c / (1 + g q_K), above the linear value.
-    EXPECT_NEAR(p.params.renderedStiffnessNPerMm(), ks * m1 * kc / (1.0 + m1 * kc * 0.25), 1e-12);
-    EXPECT_GT(p.params.renderedStiffnessNPerMm(), 2.0 * linear.params.renderedStiffnessNPerMm());
+    EXPECT_NEAR(p.model.slopeRing.renderedStiffnessNPerMm(), ks * m1 * kc / (1.0 + m1 * kc * 0.25), 1e-12);
+    EXPECT_GT(p.model.slopeRing.renderedStiffnessNPerMm(), 2.0 * linear.model.slopeRing.renderedStiffnessNPerMm());
     const double deepSlope = (press(p, 25.0).renderedN - press(p, 24.0).renderedN) / 1.0;
-    EXPECT_NEAR(deepSlope, p.params.renderedStiffnessNPerMm(), 1e-3);
+    EXPECT_NEAR(deepSlope, p.model.slopeRing.renderedStiffnessNPerMm(), 1e-3);
     // Twice as deep, more than twice the force once it stiffens.
     EXPECT_GT(press(p, 25.0).renderedN, 2.2 * press(p, 12.5).renderedN);
 }
@@ -111,7 +111,7 @@ TEST(Stiffening, TheContactForceSolvesTheStiffenedSinkExactly) {
 TEST(Stiffening, TheRelaxedUpdateSettlesOnTheSameForce) {
     TissuePreset p = stiffeningMuscle();
     const double exact = press(p, 14.0).contactN;
-    p.params.forceRelaxation = 0.05;
+    p.model.slopeRing.forceRelaxation = 0.05;
     EXPECT_NEAR(press(p, 14.0, 3000).contactN, exact, 1e-3 * exact);
 }
 
@@ -124,7 +124,7 @@ TEST(Stiffening, OverALumpTheSinkIsTheLumpsOnTheStiffenedForce) {
     lump.radiusMm = 6.0;
     e.detectLumps.lumps = {lump};
     const TissuePreset p = stiffeningMuscle();
-    const double m1 = p.params.slopeMagnitudeMmPerN[0], kc = p.params.contactStiffnessNPerMm, c = 0.25, z = 3.0;
+    const double m1 = p.model.slopeRing.slopeMagnitudeMmPerN[0], kc = p.model.slopeRing.contactStiffnessNPerMm, c = 0.25, z = 3.0;
     for (double d : {2.0, 6.0, 12.0, 20.0}) {
         const Pressed r = press(p, d, 5, &e);
         const double soft = m1 * effectiveByHand(r.contactN);
@@ -134,13 +134,13 @@ TEST(Stiffening, OverALumpTheSinkIsTheLumpsOnTheStiffenedForce) {
 }
 
 TEST(Stiffening, BadKnotsAreNamedAndTheTickAllocatesNothing) {
-    SlopeRingParams p = stiffeningMuscle().params;
+    SlopeRingParams p = stiffeningMuscle().model.slopeRing;
     EXPECT_TRUE(validateSlopeRingParams(p).empty());
     p.stiffeningForceN[1] = 0.3;  // below knot 1
     auto problems = validateSlopeRingParams(p);
     ASSERT_FALSE(problems.empty());
     EXPECT_EQ(problems[0].field, "stiffeningForceN");
-    p = stiffeningMuscle().params;
+    p = stiffeningMuscle().model.slopeRing;
     p.stiffeningCompliance[1] = 0.9;  // softer again
     problems = validateSlopeRingParams(p);
     ASSERT_FALSE(problems.empty());
@@ -149,7 +149,7 @@ TEST(Stiffening, BadKnotsAreNamedAndTheTickAllocatesNothing) {
     EXPECT_FALSE(validateSlopeRingParams(p).empty());
 
     const TissuePreset preset = stiffeningMuscle();
-    auto scene = HapticScene::create(sphere(), slopeRingModelDef(preset.params), preset.octree);
+    auto scene = HapticScene::create(sphere(), slopeRingModelDef(preset.model.slopeRing), preset.octree);
     auto& model = scene->model();
     const glm::vec3 rest(50.0f, 0.0f, 0.0f);
     for (int tick = 0; tick < 50; ++tick) model.step(rest - glm::vec3(0.1f * float(tick), 0.0f, 0.0f), 0.001);

@@ -153,12 +153,12 @@ TEST(Passivity, TheProbeMeasuresEachModelsClosedForm) {
                 << "lambda " << lambda;
         }
         ModelDef volumetric = *modelDefForName("volumetric-rings");
-        volumetric.volumetricRings.slopeRing = slopeRingWithPole(lambda).slopeRing;
+        volumetric.slopeRing = slopeRingWithPole(lambda).slopeRing;
         const auto model = makeModel(volumetric, sphere242(), octree242());
         const MeasuredTransfer measured = measureRenderedTransfer(*model, sphere242(),
                                                                   highestValenceVertex(sphere242()), kPeriodS);
         ASSERT_TRUE(measured.ok) << measured.problem;
-        const double keq = slopeRingPassiveEquivalentNPerMm(volumetric.volumetricRings.slopeRing);
+        const double keq = slopeRingPassiveEquivalentNPerMm(volumetric.slopeRing);
         EXPECT_NEAR(sweepPassivity(measured.transfer()).passiveEquivalentNPerMm, keq, 2e-3 * keq);
     }
     // The geometric models: a pure spring k_s, no delay.

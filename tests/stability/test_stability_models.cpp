@@ -144,7 +144,7 @@ TEST(DivergenceGuard, VolumetricRingsBeyondTheGainBoundIsCaughtAndInsideIsNot) {
         p.contactStiffnessNPerMm = factor / p.slopeMagnitudeMmPerN[0];
         ModelDef def;
         def.kind = ModelKind::VolumetricRings;
-        def.volumetricRings.slopeRing = p;
+        def.slopeRing = p;
         ASSERT_TRUE(model.applyModelParams(def));
         DivergenceGuard guard;
         DivergenceKind seen = DivergenceKind::None;

@@ -179,7 +179,7 @@ SweepDef tinySweep() {
 TEST(ChartsPanel, RunsATinySweepOffTheGuiThreadToCompletion) {
     ChartsPanel panel;
     TissuePreset applied;
-    applied.params.ringCount = 2;
+    applied.model.slopeRing.ringCount = 2;
     panel.setCurrentConfiguration(applied, ParameterPanel::toolContactOf(applied), 1442);
     QSignalSpy finished(&panel, &ChartsPanel::sweepFinished);
     QSignalSpy failed(&panel, &ChartsPanel::sweepFailed);
@@ -326,7 +326,7 @@ TEST(MainWindowCharts, ChartsDockIsTabbedTogglesFromTheViewMenuAndLoadsTheSweepW
     EXPECT_EQ(charts->chart()->highlightMarkCount(), 1);
     // Another ring count applied: the highlight follows.
     TissuePreset preset = window.parameterPanel()->preset();
-    preset.params.ringCount = 3;
+    preset.model.slopeRing.ringCount = 3;
     ASSERT_EQ(window.applyPreset(preset), QString());
     EXPECT_EQ(charts->chart()->highlightMarkCount(), 1);
     EXPECT_TRUE(charts->findChild<QLabel*>(QStringLiteral("currentConfigurationLabel"))->text().contains(QStringLiteral("3 rings")));
@@ -421,7 +421,7 @@ TEST(ChartsPanel, StiffeningTabDrawsTheReferenceBesideBothModels) {
     applied.tissue->stiffeningExponent = 5.0;
     const ToolContact contact = ParameterPanel::toolContactOf(applied);
     EXPECT_EQ(contact.stiffeningExponent, 5.0);
-    applied.params.slopeMagnitudeMmPerN[0] = punchFirstSlopeMmPerN(contact);
+    applied.model.slopeRing.slopeMagnitudeMmPerN[0] = punchFirstSlopeMmPerN(contact);
     panel.setCurrentConfiguration(applied, contact, 1442);
     EXPECT_TRUE(stiff->seriesNames().isEmpty());
     EXPECT_TRUE(stiff->statusText().contains(QStringLiteral("Compute"))) << stiff->statusText().toStdString();
@@ -442,9 +442,9 @@ TEST(ChartsPanel, StiffeningTabDrawsTheReferenceBesideBothModels) {
     EXPECT_TRUE(stiff->statusText().contains(QStringLiteral("times the linear force"))) << stiff->statusText().toStdString();
 
     // With the preset's own knots a fourth curve shows them.
-    SlopeRingParams knotted = applied.params;
+    SlopeRingParams knotted = applied.model.slopeRing;
     applyStiffening(*stiff->reference(), knotted);
-    applied.params = knotted;
+    applied.model.slopeRing = knotted;
     panel.setCurrentConfiguration(applied, contact, 1442);
     EXPECT_EQ(stiff->seriesNames().size(), 4);
 

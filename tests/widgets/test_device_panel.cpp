@@ -433,7 +433,7 @@ TEST(DevicePanelWindow, AForceClampedToTheDeviceMaximumIsShownAsClipped) {
     ASSERT_EQ(window.setDeviceUri(QStringLiteral("sim:stroke")), QString());
     ASSERT_EQ(window.loadMesh(QString::fromStdString(findResource(kDefaultMesh))), QString());
     TissuePreset stiff = window.session().preset();
-    stiff.params.springStiffnessNPerMm *= 4.0;  // rendered stiffness x4: several newtons at the press's depth
+    stiff.model.slopeRing.springStiffnessNPerMm *= 4.0;  // rendered stiffness x4: several newtons at the press's depth
     window.parameterPanel()->setPreset(stiff);
     ASSERT_EQ(window.applyPreset(stiff), QString());
     bool clipped = false, statusSaidSo = true;

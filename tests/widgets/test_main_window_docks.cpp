@@ -35,7 +35,7 @@ TEST(MainWindowDocks, ApplyReachesTheEngineInTheNextSnapshot) {
     const float before = glm::length(window->session().observed().commandedForceN);
     ASSERT_GT(before, 0.1f);
     TissuePreset preset = window->parameterPanel()->preset();
-    preset.params.springStiffnessNPerMm *= 2.0;  // the rendered force is k |m1| F: doubles
+    preset.model.slopeRing.springStiffnessNPerMm *= 2.0;  // the rendered force is k |m1| F: doubles
     window->parameterPanel()->setPreset(preset);
     ASSERT_TRUE(window->parameterPanel()->isValid());
     // 3 N/mm renders 1.125 N/mm, beyond the device's passive 1 N/mm at 1 kHz: Apply asks; yes.
@@ -51,12 +51,12 @@ TEST(MainWindowDocks, ModelChangeFromThePanelRebuildsTheScene) {
     auto window = pressedWindow();
     const auto scene = window->session().drawnSceneId();
     TissuePreset preset = window->parameterPanel()->preset();
-    preset.method = SlopeRingMethod::Proposed;
+    preset.model.slopeRingMethod = SlopeRingMethod::Proposed;
     window->parameterPanel()->setPreset(preset);
     window->parameterPanel()->apply();
     window->advanceTicks(10);
     EXPECT_NE(window->session().drawnSceneId(), scene);
-    EXPECT_EQ(window->session().preset().method, SlopeRingMethod::Proposed);
+    EXPECT_EQ(window->session().preset().model.slopeRingMethod, SlopeRingMethod::Proposed);
 }
 
 TEST(MainWindowDocks, BadPresetNamesTheKeyAndLeavesTheSceneAndParametersAlone) {
@@ -68,13 +68,13 @@ TEST(MainWindowDocks, BadPresetNamesTheKeyAndLeavesTheSceneAndParametersAlone) {
     file.write(R"({"format": "palpate-tissue-preset", "version": 1, "name": "x", "haptic_rate_hz": "fast"})");
     file.close();
     const auto scene = window->session().drawnSceneId();
-    const double k = window->session().preset().params.springStiffnessNPerMm;
+    const double k = window->session().preset().model.slopeRing.springStiffnessNPerMm;
     const QString error = window->loadPresetFile(path);
     EXPECT_TRUE(error.contains(QStringLiteral("haptic_rate_hz"))) << error.toStdString();
     EXPECT_TRUE(error.contains(path)) << error.toStdString();
     window->advanceTicks(10);
     EXPECT_EQ(window->session().drawnSceneId(), scene);
-    EXPECT_EQ(window->session().preset().params.springStiffnessNPerMm, k);
+    EXPECT_EQ(window->session().preset().model.slopeRing.springStiffnessNPerMm, k);
     EXPECT_TRUE(window->session().observed().contact);
 }
 

@@ -78,7 +78,7 @@ TEST(ModelSelector, ShowsTheChosenModelsOwnFieldsAndNamesBadOnes) {
     EXPECT_TRUE(radius->property("invalid").toBool());
     radius->setValue(12.5);
     EXPECT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
-    EXPECT_EQ(panel.preset().radiusOfInfluence.radiusMm, 12.5);
+    EXPECT_EQ(panel.preset().model.radiusOfInfluence.radiusMm, 12.5);
 
     choose(panel, "mass-spring-local");
     EXPECT_TRUE(shown(panel, "massSpringLocalRingCountSpin"));
@@ -101,7 +101,7 @@ TEST(ModelSelector, ShowsTheChosenModelsOwnFieldsAndNamesBadOnes) {
     // Each choice and edit is one undo step; undoing them all goes back to the start.
     while (panel.undoStack()->canUndo()) panel.undoStack()->undo();
     EXPECT_EQ(presetModelName(panel.preset()), "coherent");
-    EXPECT_EQ(panel.preset().radiusOfInfluence.radiusMm, RadiusOfInfluenceParams{}.radiusMm);
+    EXPECT_EQ(panel.preset().model.radiusOfInfluence.radiusMm, RadiusOfInfluenceParams{}.radiusMm);
     EXPECT_TRUE(shown(panel, "slopeGroup"));
 }
 
@@ -125,7 +125,7 @@ TEST(ModelSelector, ApplySwitchesTheSessionsModelAndUndoGoesBack) {
     ASSERT_TRUE(apply);
     QTest::mouseClick(apply, Qt::LeftButton);
     ASSERT_EQ(applyErrors, std::vector<std::string>{""});
-    EXPECT_EQ(session.preset().modelKind, ModelKind::RadiusOfInfluence);
+    EXPECT_EQ(session.preset().model.kind, ModelKind::RadiusOfInfluence);
 
     // A fresh press on the new scene: the stepped snapshot shows contact and a dent.
     ASSERT_EQ(session.setDevice("sim:press"), "");

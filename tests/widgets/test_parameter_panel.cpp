@@ -114,7 +114,7 @@ TEST(ParameterPanel, SlopeRowsFollowTheRingCount) {
 
     rings->setValue(5);
     expectRows(5);
-    EXPECT_EQ(panel.preset().params.ringCount, 5);
+    EXPECT_EQ(panel.preset().model.slopeRing.ringCount, 5);
     EXPECT_TRUE(panel.isValid());  // the default slopes keep decreasing
     rings->setValue(0);
     expectRows(0);
@@ -215,23 +215,23 @@ TEST(ParameterPanel, ApplyEmitsExactlyTheFieldValues) {
     EXPECT_EQ(asked, 1);
     ASSERT_EQ(applied.size(), 1u);
     const TissuePreset& p = applied.front();
-    EXPECT_EQ(p.method, SlopeRingMethod::Hybrid);
-    EXPECT_EQ(p.params.ringCount, 3);
-    EXPECT_DOUBLE_EQ(p.params.slopeMagnitudeMmPerN[0], 0.8);
-    EXPECT_DOUBLE_EQ(p.params.slopeMagnitudeMmPerN[1], 0.4);
-    EXPECT_DOUBLE_EQ(p.params.slopeMagnitudeMmPerN[2], 0.2);
-    EXPECT_DOUBLE_EQ(p.params.slopeMagnitudeMmPerN[3], 0.05);
-    EXPECT_DOUBLE_EQ(p.params.slopeLimitMmPerN, 1.5);
-    EXPECT_DOUBLE_EQ(p.params.springStiffnessNPerMm, 2.25);
-    EXPECT_DOUBLE_EQ(p.params.dampingRatio, 0.7);
-    EXPECT_DOUBLE_EQ(p.params.contactStiffnessNPerMm, 1.2);
-    EXPECT_DOUBLE_EQ(p.params.forceRelaxation, 0.5);
-    EXPECT_DOUBLE_EQ(p.params.vertexMassKg, 0.002);
+    EXPECT_EQ(p.model.slopeRingMethod, SlopeRingMethod::Hybrid);
+    EXPECT_EQ(p.model.slopeRing.ringCount, 3);
+    EXPECT_DOUBLE_EQ(p.model.slopeRing.slopeMagnitudeMmPerN[0], 0.8);
+    EXPECT_DOUBLE_EQ(p.model.slopeRing.slopeMagnitudeMmPerN[1], 0.4);
+    EXPECT_DOUBLE_EQ(p.model.slopeRing.slopeMagnitudeMmPerN[2], 0.2);
+    EXPECT_DOUBLE_EQ(p.model.slopeRing.slopeMagnitudeMmPerN[3], 0.05);
+    EXPECT_DOUBLE_EQ(p.model.slopeRing.slopeLimitMmPerN, 1.5);
+    EXPECT_DOUBLE_EQ(p.model.slopeRing.springStiffnessNPerMm, 2.25);
+    EXPECT_DOUBLE_EQ(p.model.slopeRing.dampingRatio, 0.7);
+    EXPECT_DOUBLE_EQ(p.model.slopeRing.contactStiffnessNPerMm, 1.2);
+    EXPECT_DOUBLE_EQ(p.model.slopeRing.forceRelaxation, 0.5);
+    EXPECT_DOUBLE_EQ(p.model.slopeRing.vertexMassKg, 0.002);
     EXPECT_EQ(p.octree.maxDepth, 8);
     EXPECT_EQ(p.octree.leafCapacity, 32);
     EXPECT_DOUBLE_EQ(p.hapticRateHz, 500.0);
     EXPECT_TRUE(samePreset(p, panel.preset()));
-    EXPECT_TRUE(messagesOf(validateSlopeRingParams(p.params)).empty());
+    EXPECT_TRUE(messagesOf(validateSlopeRingParams(p.model.slopeRing)).empty());
 
     // Invalid fields: the button is disabled and apply() emits nothing.
     slopeSpin(panel, 1)->setValue(0.9);
@@ -261,13 +261,13 @@ TEST(ParameterPanel, UndoRestoresAndRedoReappliesEachEdit) {
     EXPECT_DOUBLE_EQ(m1->value(), 0.75);
     panel.undoAction()->trigger();
     EXPECT_DOUBLE_EQ(m1->value(), 0.6);
-    EXPECT_DOUBLE_EQ(panel.preset().params.slopeMagnitudeMmPerN[0], 0.6);
+    EXPECT_DOUBLE_EQ(panel.preset().model.slopeRing.slopeMagnitudeMmPerN[0], 0.6);
     EXPECT_TRUE(samePreset(panel.preset(), TissuePreset{}));
     EXPECT_FALSE(panel.undoAction()->isEnabled());
 
     panel.redoAction()->trigger();
     EXPECT_DOUBLE_EQ(m1->value(), 0.75);
-    EXPECT_DOUBLE_EQ(panel.preset().params.slopeMagnitudeMmPerN[0], 0.75);
+    EXPECT_DOUBLE_EQ(panel.preset().model.slopeRing.slopeMagnitudeMmPerN[0], 0.75);
     panel.redoAction()->trigger();
     EXPECT_DOUBLE_EQ(contact->value(), 1.3);
     EXPECT_EQ(panel.undoStack()->count(), 2);  // undo/redo pushed nothing
@@ -315,9 +315,9 @@ TEST(ParameterPanel, SetPresetRecordsNoStep) {
     slopeSpin(panel, 0)->setValue(0.7);
     TissuePreset preset;
     preset.name = "liver";
-    preset.params.ringCount = 1;
-    preset.params.slopeMagnitudeMmPerN[0] = 0.5;
-    preset.params.slopeMagnitudeMmPerN[1] = 0.25;
+    preset.model.slopeRing.ringCount = 1;
+    preset.model.slopeRing.slopeMagnitudeMmPerN[0] = 0.5;
+    preset.model.slopeRing.slopeMagnitudeMmPerN[1] = 0.25;
     preset.hapticRateHz = 2000.0;
     panel.setPreset(preset);
     EXPECT_EQ(panel.undoStack()->count(), 0);
@@ -330,7 +330,7 @@ TEST(ParameterPanel, MalformedPresetFileIsRejectedNamingTheKeyAndChangesNothing)
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     TissuePreset good;
-    good.params.slopeMagnitudeMmPerN[0] = 0.7;
+    good.model.slopeRing.slopeMagnitudeMmPerN[0] = 0.7;
     nlohmann::ordered_json json = nlohmann::ordered_json::parse(tissuePresetToJson(good));
     json["slope_ring"]["stifness_typo"] = 3.0;
     const QString path = dir.filePath(QStringLiteral("bad.json"));
@@ -400,8 +400,8 @@ TEST(ParameterPanel, SaveThenLoadRoundTripsAsOneUndoableStep) {
     ASSERT_TRUE(panel.loadPresetFile(path, &error)) << error.toStdString();
     // Slopes beyond ring_count are not written; compare what the file carries.
     TissuePreset expected = saved;
-    for (int r = saved.params.ringCount + 1; r <= kMaxRings; ++r)
-        expected.params.slopeMagnitudeMmPerN[std::size_t(r)] = TissuePreset{}.params.slopeMagnitudeMmPerN[std::size_t(r)];
+    for (int r = saved.model.slopeRing.ringCount + 1; r <= kMaxRings; ++r)
+        expected.model.slopeRing.slopeMagnitudeMmPerN[std::size_t(r)] = TissuePreset{}.model.slopeRing.slopeMagnitudeMmPerN[std::size_t(r)];
     EXPECT_TRUE(samePreset(panel.preset(), expected));
     EXPECT_TRUE(samePreset(panel.preset(), *loadTissuePreset(path.toStdString()).preset));
     EXPECT_TRUE(panel.isValid());
@@ -542,7 +542,7 @@ TEST(ParameterPanelStability, BeyondTheMarginApplyAsksAndNoKeepsTheSetBack) {
     QTest::mouseClick(applyButton(panel), Qt::LeftButton);
     EXPECT_TRUE(seen);
     ASSERT_EQ(int(applied.size()), 1);
-    EXPECT_EQ(applied[0].massSpring.substeps, 1);
+    EXPECT_EQ(applied[0].model.massSpring.substeps, 1);
 
     // Back inside (automatic sub-steps): no question.
     int asked = 0;
@@ -644,7 +644,7 @@ TEST(ParameterPanelStability, PassivityWarnsBeforeTheLimitAndAsksBeyondIt) {
     panel.apply();
     EXPECT_EQ(asked, 2);
     ASSERT_EQ(int(applied.size()), 2);
-    EXPECT_DOUBLE_EQ(applied.back().params.springStiffnessNPerMm, 2.75);
+    EXPECT_DOUBLE_EQ(applied.back().model.slopeRing.springStiffnessNPerMm, 2.75);
 
     // Twice the rate, twice the passive stiffness: well inside again.
     doubleField(panel, "hapticRateSpin")->setValue(2000.0);
@@ -800,7 +800,7 @@ TEST(ParameterPanelApplied, UndoAfterApplyShowsTheFieldsAsNotAppliedAndRevertGoe
     EXPECT_TRUE(label(panel, "unappliedLabel")->text().contains(QStringLiteral("|m1|")));
 
     panel.apply();
-    EXPECT_DOUBLE_EQ(panel.runningPreset().params.slopeMagnitudeMmPerN[0], 0.5);
+    EXPECT_DOUBLE_EQ(panel.runningPreset().model.slopeRing.slopeMagnitudeMmPerN[0], 0.5);
     EXPECT_FALSE(panel.hasUnappliedChanges());
     EXPECT_FALSE(visibleIn(bar, panel));
     EXPECT_FALSE(slopeSpin(panel, 0)->property("modified").toBool());
@@ -811,7 +811,7 @@ TEST(ParameterPanelApplied, UndoAfterApplyShowsTheFieldsAsNotAppliedAndRevertGoe
     // Undo goes back in the fields, not in the loop: the field is marked as differing from what runs.
     panel.undoStack()->undo();
     EXPECT_DOUBLE_EQ(slopeSpin(panel, 0)->value(), 0.6);
-    EXPECT_DOUBLE_EQ(panel.runningPreset().params.slopeMagnitudeMmPerN[0], 0.5);
+    EXPECT_DOUBLE_EQ(panel.runningPreset().model.slopeRing.slopeMagnitudeMmPerN[0], 0.5);
     EXPECT_TRUE(panel.hasUnappliedChanges());
     EXPECT_TRUE(slopeSpin(panel, 0)->property("modified").toBool());
     EXPECT_TRUE(visibleIn(bar, panel));
@@ -898,12 +898,12 @@ TEST(ParameterPanelDigits, CalibratedValuesShowFourSignificantDigitsAndKeepTheir
     QLocale::setDefault(QLocale::c());  // "14.07", not "14,07"
     ParameterPanel panel;
     TissuePreset p;
-    p.params.slopeLimitMmPerN = 100.0;
-    p.params.slopeMagnitudeMmPerN[0] = 14.072222222;
-    p.params.slopeMagnitudeMmPerN[1] = 7.123456789;
-    p.params.slopeMagnitudeMmPerN[2] = 0.012345678;
-    p.params.contactStiffnessNPerMm = 0.0125;
-    p.params.springStiffnessNPerMm = 0.071062271;
+    p.model.slopeRing.slopeLimitMmPerN = 100.0;
+    p.model.slopeRing.slopeMagnitudeMmPerN[0] = 14.072222222;
+    p.model.slopeRing.slopeMagnitudeMmPerN[1] = 7.123456789;
+    p.model.slopeRing.slopeMagnitudeMmPerN[2] = 0.012345678;
+    p.model.slopeRing.contactStiffnessNPerMm = 0.0125;
+    p.model.slopeRing.springStiffnessNPerMm = 0.071062271;
     panel.setPreset(p);
     QDoubleSpinBox* m1 = slopeSpin(panel, 0);
     EXPECT_EQ(m1->text(), QStringLiteral("14.07 mm/N"));
@@ -915,7 +915,7 @@ TEST(ParameterPanelDigits, CalibratedValuesShowFourSignificantDigitsAndKeepTheir
     m1->interpretText();  // what focus-out and Return do
     EXPECT_DOUBLE_EQ(m1->value(), 14.072222222);
     EXPECT_EQ(panel.undoStack()->count(), 0);
-    EXPECT_DOUBLE_EQ(panel.preset().params.slopeMagnitudeMmPerN[0], 14.072222222);
+    EXPECT_DOUBLE_EQ(panel.preset().model.slopeRing.slopeMagnitudeMmPerN[0], 14.072222222);
 
     // Typed digits are taken as typed.
     m1->findChild<QLineEdit*>()->setText(QStringLiteral("14.5 mm/N"));

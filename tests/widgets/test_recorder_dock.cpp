@@ -158,10 +158,10 @@ TEST_F(RecorderDock, RecordingSurvivesDeviceParameterAndSceneChanges) {
     ASSERT_EQ(window->setDeviceUri(QStringLiteral("sim:press")), QString());
     window->advanceTicks(1500);
     TissuePreset preset = window->session().preset();
-    preset.params.springStiffnessNPerMm *= 1.5;  // the running scene takes it at a tick boundary
+    preset.model.slopeRing.springStiffnessNPerMm *= 1.5;  // the running scene takes it at a tick boundary
     ASSERT_EQ(window->applyPreset(preset), QString());
     window->advanceTicks(500);
-    preset.method = SlopeRingMethod::Proposed;  // a new scene of the same mesh
+    preset.model.slopeRingMethod = SlopeRingMethod::Proposed;  // a new scene of the same mesh
     ASSERT_EQ(window->applyPreset(preset), QString());
     window->advanceTicks(1000);
     EXPECT_TRUE(window->isRecording());
@@ -196,7 +196,7 @@ TEST_F(RecorderDock, ThreadedSessionRecordsAndReplaysBitForBit) {
     ASSERT_EQ(window.setDeviceUri(QStringLiteral("sim:sine")), QString());
     QTest::qWait(150);
     TissuePreset preset = window.session().preset();
-    preset.method = SlopeRingMethod::Proposed;
+    preset.model.slopeRingMethod = SlopeRingMethod::Proposed;
     ASSERT_EQ(window.applyPreset(preset), QString());
     QTest::qWait(150);
     const QString path = window.recorderPanel()->recordingPath();
@@ -630,7 +630,7 @@ TEST_F(RecorderDock, DISABLED_WriteDemoRecording) {
     window->addRecordingMark(QStringLiteral("first press"));
     window->advanceTicks(1800);
     TissuePreset preset = window->session().preset();
-    preset.params.springStiffnessNPerMm *= 1.5;
+    preset.model.slopeRing.springStiffnessNPerMm *= 1.5;
     ASSERT_EQ(window->applyPreset(preset), QString());
     window->advanceTicks(2000);
     ASSERT_EQ(window->setDeviceUri(QStringLiteral("sim:press")), QString());

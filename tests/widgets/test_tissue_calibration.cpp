@@ -54,7 +54,7 @@ TEST(TissueCalibration, TypedTissueCalibratesTheEnginesSlopesAsOneUndoableStep) 
     type(field(panel, "tissueToolRadiusMmSpin"), QStringLiteral("4"));
     QTest::keyClick(panel.findChild<QSpinBox*>(QStringLiteral("slopeRingRingCountSpin"))->findChild<QLineEdit*>(), Qt::Key_Up);
     ASSERT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
-    ASSERT_EQ(panel.preset().params.ringCount, 3);
+    ASSERT_EQ(panel.preset().model.slopeRing.ringCount, 3);
     ASSERT_TRUE(panel.preset().tissue.has_value());
     EXPECT_DOUBLE_EQ(panel.preset().tissue->youngsModulusKPa, 11.7);
     const TissuePreset before = panel.preset();
@@ -64,16 +64,16 @@ TEST(TissueCalibration, TypedTissueCalibratesTheEnginesSlopesAsOneUndoableStep) 
     contact.material = {11.7e-3, 0.49};
     contact.toolRadiusMm = 4.0;
     const SlopeCalibration expected =
-        calibrateSlopesFromPunch(stomach(), defaultTargetVertex(stomach()), contact, before.params);
+        calibrateSlopesFromPunch(stomach(), defaultTargetVertex(stomach()), contact, before.model.slopeRing);
 
     QTest::mouseClick(panel.findChild<QPushButton*>(QStringLiteral("calibrateSlopesButton")), Qt::LeftButton);
     const TissuePreset after = panel.preset();
     for (int r = 0; r <= 3; ++r)
-        EXPECT_NEAR(after.params.slopeMagnitudeMmPerN[std::size_t(r)], expected.params.slopeMagnitudeMmPerN[std::size_t(r)],
+        EXPECT_NEAR(after.model.slopeRing.slopeMagnitudeMmPerN[std::size_t(r)], expected.params.slopeMagnitudeMmPerN[std::size_t(r)],
                     1e-9)
             << "ring " << r;
-    EXPECT_NEAR(after.params.springStiffnessNPerMm, expected.params.springStiffnessNPerMm, 1e-9);
-    EXPECT_NEAR(after.params.slopeLimitMmPerN, expected.params.slopeLimitMmPerN, 1e-4);
+    EXPECT_NEAR(after.model.slopeRing.springStiffnessNPerMm, expected.params.springStiffnessNPerMm, 1e-9);
+    EXPECT_NEAR(after.model.slopeRing.slopeLimitMmPerN, expected.params.slopeLimitMmPerN, 1e-4);
     EXPECT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
     EXPECT_EQ(panel.undoStack()->count(), stepsBefore + 1);
     EXPECT_EQ(panel.undoStack()->undoText(), QStringLiteral("Calibrate slopes"));
@@ -99,14 +99,14 @@ TEST(TissueCalibration, TypedTissueCalibratesTheEnginesSlopesAsOneUndoableStep) 
     EXPECT_TRUE(samePreset(panel.preset(), before));
     EXPECT_DOUBLE_EQ(field(panel, "tissueYoungsModulusKPaSpin")->value(), 11.7);
     panel.redoAction()->trigger();
-    EXPECT_NEAR(panel.preset().params.slopeMagnitudeMmPerN[1], expected.params.slopeMagnitudeMmPerN[1], 1e-9);
+    EXPECT_NEAR(panel.preset().model.slopeRing.slopeMagnitudeMmPerN[1], expected.params.slopeMagnitudeMmPerN[1], 1e-9);
 
     // Apply sends them.
     std::vector<TissuePreset> applied;
     QObject::connect(&panel, &ParameterPanel::applyRequested, [&](const TissuePreset& p) { applied.push_back(p); });
     panel.apply();
     ASSERT_EQ(applied.size(), 1u);
-    EXPECT_NEAR(applied[0].params.slopeMagnitudeMmPerN[0], expected.params.slopeMagnitudeMmPerN[0], 1e-9);
+    EXPECT_NEAR(applied[0].model.slopeRing.slopeMagnitudeMmPerN[0], expected.params.slopeMagnitudeMmPerN[0], 1e-9);
     ASSERT_TRUE(applied[0].tissue.has_value());
     EXPECT_DOUBLE_EQ(applied[0].tissue->toolRadiusMm, 4.0);
 }
@@ -128,7 +128,7 @@ TEST(TissueCalibration, BadPoissonRatioIsRejectedNamingTheField) {
     EXPECT_FALSE(panel.calibrateSlopes(&error));
     EXPECT_TRUE(error.contains(QStringLiteral("Poisson"))) << error.toStdString();
     EXPECT_EQ(panel.undoStack()->count(), steps);  // nothing calibrated
-    EXPECT_EQ(panel.preset().params.slopeMagnitudeMmPerN, before.params.slopeMagnitudeMmPerN);
+    EXPECT_EQ(panel.preset().model.slopeRing.slopeMagnitudeMmPerN, before.model.slopeRing.slopeMagnitudeMmPerN);
 
     field(panel, "tissuePoissonRatioSpin")->setValue(0.45);
     field(panel, "tissueYoungsModulusKPaSpin")->setValue(0.0);
@@ -166,8 +166,8 @@ TEST(TissueCalibration, ShippedTissuePresetFillsTheTissueAndTheSlopes) {
     EXPECT_DOUBLE_EQ(field(panel, "tissueYoungsModulusKPaSpin")->value(), 5.4);
     EXPECT_DOUBLE_EQ(field(panel, "tissuePoissonRatioSpin")->value(), 0.49);
     EXPECT_DOUBLE_EQ(field(panel, "tissueToolRadiusMmSpin")->value(), 5.0);
-    for (int r = 0; r <= file.preset->params.ringCount; ++r)
-        EXPECT_NEAR(slopeSpin(panel, r)->value(), file.preset->params.slopeMagnitudeMmPerN[std::size_t(r)], 1e-9);
+    for (int r = 0; r <= file.preset->model.slopeRing.ringCount; ++r)
+        EXPECT_NEAR(slopeSpin(panel, r)->value(), file.preset->model.slopeRing.slopeMagnitudeMmPerN[std::size_t(r)], 1e-9);
     EXPECT_TRUE(panel.isValid()) << panel.problems().join(QLatin1Char('\n')).toStdString();
     EXPECT_EQ(combo->currentIndex(), liver);
     // Its source is kept while the values are the file's ...

@@ -790,7 +790,7 @@ TEST(InstructorMode, LevelOfDetailUseLoadsTheChosenLevelAndRingCount) {
     const QString expectedMesh = c.level == 0 ? mesh : lod->levelMeshPath(*chosen);
     EXPECT_EQ(QString::fromStdString(window->session().drawnPath()), expectedMesh);
     EXPECT_EQ(window->session().drawnMesh()->vertexCount(), c.vertices);
-    EXPECT_EQ(window->session().preset().params.ringCount, c.rings);
+    EXPECT_EQ(window->session().preset().model.slopeRing.ringCount, c.rings);
     EXPECT_EQ(lod->meshPath(), mesh);
     EXPECT_EQ(lod->candidates().size(), measured);  // the level is a choice within the scene: the table stays
     EXPECT_TRUE(lod->currentPlan().chosen);
