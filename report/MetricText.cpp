@@ -28,4 +28,11 @@ QString localMetricValueText(Metric metric, double value, const QLocale& locale)
     return text;
 }
 
+QString workDoneText(double workDone, const QLocale& locale) {
+    if (!(workDone < 1.0)) return {};
+    return QCoreApplication::translate("palpate::MetricText",
+                                       "Work done %1 %: the lines that count mistakes earn that share of their points.")
+        .arg(locale.toString(100.0 * workDone, 'f', 0));
+}
+
 }  // namespace palpate

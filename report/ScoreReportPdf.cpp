@@ -589,6 +589,10 @@ void drawReport(ReportLayout& layout, const ScoreReportContent& content) {
                   {Tr::tr("Weight"), 0.11, true},
                   {Tr::tr("Contribution"), 0.15, true}},
                  rows);
+    if (const QString work = workDoneText(report.workDone); !work.isEmpty()) {
+        layout.skip(line * 0.5);
+        layout.paragraph(layout.body(), work, QColor(40, 40, 40));
+    }
     if (!report.warnings.empty()) {
         layout.skip(line * 0.8);
         for (const std::string& w : report.warnings) {

@@ -3324,6 +3324,13 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     </message>
 </context>
 <context>
+    <name>palpate::MetricText</name>
+    <message>
+        <source>Work done %1 %: the lines that count mistakes earn that share of their points.</source>
+        <translation>Erledigte Arbeit %1 %: die Zeilen, die Fehler zählen, erhalten diesen Anteil ihrer Punkte.</translation>
+    </message>
+</context>
+<context>
     <name>palpate::Metrics</name>
     <message>
         <source>completion</source>
@@ -5693,6 +5700,10 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
     <message>
         <source>An instructor&apos;s session: stored as an expert&apos;s, it sets the exercise&apos;s pass marks (expert mean ± 2 SD) and moves no staircase</source>
         <translation>Eine Sitzung der Lehrkraft: als Expertensitzung gespeichert, setzt sie die Bestehensgrenzen der Übung (Expertenmittel ± 2 SD) und bewegt keine Treppe</translation>
+    </message>
+    <message>
+        <source>Time left %1 s · score at Finish</source>
+        <translation>Verbleibende Zeit %1 s · Punktzahl bei Beenden</translation>
     </message>
 </context>
 <context>

@@ -3320,6 +3320,13 @@ pemapar %5</translation>
     </message>
 </context>
 <context>
+    <name>palpate::MetricText</name>
+    <message>
+        <source>Work done %1 %: the lines that count mistakes earn that share of their points.</source>
+        <translation>Kerja yang dibuat %1 %: baris yang mengira kesilapan mendapat bahagian itu daripada markahnya.</translation>
+    </message>
+</context>
+<context>
     <name>palpate::Metrics</name>
     <message>
         <source>completion</source>
@@ -5688,6 +5695,10 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
     <message>
         <source>An instructor&apos;s session: stored as an expert&apos;s, it sets the exercise&apos;s pass marks (expert mean ± 2 SD) and moves no staircase</source>
         <translation>Sesi pengajar: disimpan sebagai sesi pakar, ia menetapkan markah lulus latihan (purata pakar ± 2 SP) dan tidak menggerakkan tangga</translation>
+    </message>
+    <message>
+        <source>Time left %1 s · score at Finish</source>
+        <translation>Baki masa %1 s · markah apabila Tamat</translation>
     </message>
 </context>
 <context>

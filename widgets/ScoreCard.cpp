@@ -124,7 +124,8 @@ void ScoreCard::setReport(const ScoreReport& report, const QString& traineeName)
         for (int c = 1; c < 4; ++c) mTable->item(row, c)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     }
     fitNameColumn();
-    const QStringList palpation = palpationSummaryLines(report);
+    QStringList palpation = palpationSummaryLines(report);
+    if (const QString work = workDoneText(report.workDone); !work.isEmpty()) palpation.prepend(work);
     mPalpation->setText(palpation.join(QLatin1Char('\n')));
     mPalpation->setVisible(!palpation.isEmpty());
     QStringList warnings;

@@ -11,6 +11,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QLocale>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -218,6 +219,7 @@ void TraineePanel::setState(State state) {
 }
 
 QString TraineePanel::instructionText() const { return mInstruction->text(); }
+QString TraineePanel::timeText() const { return mTime->text(); }
 
 void TraineePanel::showGuidance(const Exercise& exercise, const ScoreGuidance& guidance, double scoreSoFar) {
     mGauge->setExcessiveN(exercise.excessiveForceN);
@@ -235,7 +237,11 @@ void TraineePanel::showGuidance(const Exercise& exercise, const ScoreGuidance& g
     mInstruction->setText(instruction);
     mDetail->setText(detail);
     mProgress->setValue(std::clamp(progressPercent, 0, 100));
-    mTime->setText(tr("Time left %1 s · score so far %2").arg(std::max(0.0, guidance.timeLeftS), 0, 'f', 0).arg(scoreSoFar, 0, 'f', 0));
+    // Where the score so far would give the answer away (which marks hit), it waits for Finish.
+    const QString timeLeft = QLocale().toString(std::max(0.0, guidance.timeLeftS), 'f', 0);
+    mTime->setText(showsLiveScore(exercise)
+                       ? tr("Time left %1 s · score so far %2").arg(timeLeft, QLocale().toString(scoreSoFar, 'f', 0))
+                       : tr("Time left %1 s · score at Finish").arg(timeLeft));
 }
 
 }  // namespace palpate

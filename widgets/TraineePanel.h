@@ -56,6 +56,8 @@ public:
     void showGuidance(const Exercise& exercise, const ScoreGuidance& guidance, double scoreSoFar);
     /// What the trainee is told (the guidance's first line).
     QString instructionText() const;
+    /// "Time left 42 s · score so far 63", or "… · score at Finish" where the score waits.
+    QString timeText() const;
     void setMessage(const QString& text);
 
     ForceGauge* forceGauge() const { return mGauge; }

@@ -192,6 +192,19 @@ bool JsonReader::text(const Json& parent, const std::string& path, const char* k
     return true;
 }
 
+bool JsonReader::boolean(const Json& parent, const std::string& path, const char* key, bool& out, bool required) {
+    if (!parent.contains(key)) {
+        if (required) error(join(path, key), "missing");
+        return false;
+    }
+    if (!parent.at(key).is_boolean()) {
+        error(join(path, key), "must be true or false");
+        return false;
+    }
+    out = parent.at(key).get<bool>();
+    return true;
+}
+
 std::string JsonReader::join(const std::string& path, const std::string& key) {
     return path.empty() ? key : path + "." + key;
 }

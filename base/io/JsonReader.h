@@ -40,6 +40,8 @@ public:
                      bool required = false);
     /// parent[key] as a string into `out`.
     bool text(const Json& parent, const std::string& path, const char* key, std::string& out, bool required = false);
+    /// parent[key] as true or false into `out`.
+    bool boolean(const Json& parent, const std::string& path, const char* key, bool& out, bool required = false);
 
     /// "path.key", or "key" at the top level.
     static std::string join(const std::string& path, const std::string& key);

@@ -11,7 +11,7 @@ namespace palpate {
 
 RubricItem defaultRubricItem(const Exercise& e, Metric m) {
     RubricItem item;
-    item.weight = exerciseKind(e.type).defaultWeight(m);
+    item.weight = exerciseKind(e.type).defaultWeight(e, m);
     metricRow(m).thresholds(e, item.fullMarks, item.zeroMarks);
     return item;
 }

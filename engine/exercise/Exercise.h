@@ -110,6 +110,10 @@ struct Exercise {
     double timeLimitS = 60.0;       ///< ticks after it are not scored
     double displacementLimitMm = 10.0;  ///< tissue displaced further than this counts as damage
     double excessiveForceN = 3.0;   ///< |F| above this is excessive
+    /// "show_live_score": whether the trainee sees the score while the exercise runs. Absent: the
+    /// kind's default (ExerciseKind::showsLiveScore; hidden in detect lumps, where it would say
+    /// which marks hit). docs/scoring.md, "Live and replayed scores are the same".
+    std::optional<bool> showLiveScore;
     PressTargetsDef pressTargets;   ///< type PressTargets
     FindLumpDef findLump;           ///< type FindLump
     TraceDef trace;                 ///< type Trace

@@ -63,7 +63,7 @@ ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::strin
     if (!parsed) return result;
     const Json& j = *parsed;
     std::vector<std::string> keys = {"format", "version",  "name",     "description", "type",  "mesh", "mesh_unit",
-                                     "tissue_preset", "time_limit_s", "rubric", "coverage", "damage", "force", "needs"};
+                                     "tissue_preset", "time_limit_s", "show_live_score", "rubric", "coverage", "damage", "force", "needs"};
     for (const ExerciseKind* kind : exerciseKinds()) keys.emplace_back(kind->key());
     if (!r.object(j, "", keys)) return result;
 
@@ -95,6 +95,7 @@ ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::strin
     if (j.contains("mesh_unit")) readMeshUnit(r, j.at("mesh_unit"), e.meshUnit);
     r.text(j, "", "tissue_preset", e.tissuePresetPath, true);
     r.number(j, "", "time_limit_s", e.timeLimitS, true);
+    if (bool show = true; r.boolean(j, "", "show_live_score", show)) e.showLiveScore = show;
 
     if (j.contains("damage") && r.object(j.at("damage"), "damage", {"displacement_limit_mm"}))
         r.number(j.at("damage"), "damage", "displacement_limit_mm", e.displacementLimitMm);
@@ -193,6 +194,7 @@ std::string exerciseToJson(const Exercise& e, int indent) {
     if (!e.meshUnit.isMillimetres()) j["mesh_unit"] = meshUnitJson(e.meshUnit);
     j["tissue_preset"] = e.tissuePresetPath;
     j["time_limit_s"] = e.timeLimitS;
+    if (e.showLiveScore) j["show_live_score"] = *e.showLiveScore;  // absent: the kind's default, as older files
     j["damage"] = {{"displacement_limit_mm", e.displacementLimitMm}};
     j["force"] = {{"excessive_n", e.excessiveForceN}};
     const ExerciseKind& kind = exerciseKind(e.type);

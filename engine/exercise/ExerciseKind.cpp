@@ -89,4 +89,8 @@ std::string demandNumber(double v) {
     return s.str();
 }
 
+bool showsLiveScore(const Exercise& exercise) {
+    return exercise.showLiveScore.value_or(exerciseKind(exercise.type).showsLiveScore());
+}
+
 }  // namespace palpate

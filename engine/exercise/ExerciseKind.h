@@ -57,6 +57,9 @@ public:
     virtual bool finishedByTrainee() const { return false; }
     /// The exercise may carry a staircase of adaptive difficulty (docs/scoring.md, "Staircase").
     virtual bool adaptive() const { return false; }
+    /// Whether the trainee sees the score so far by default (an exercise's "show_live_score" says
+    /// otherwise): not where its changes would give the answer away.
+    virtual bool showsLiveScore() const { return true; }
 
     /// The metrics only some kinds measure that this one does (every kind measures the metrics
     /// whose row says so, MetricRow::everyKind).
@@ -67,6 +70,9 @@ public:
     bool measures(Metric metric) const;
     /// The default weight of a metric (0 when not listed or not measured).
     double defaultWeight(Metric metric) const;
+    /// The default weight for this exercise: defaultWeight unless the exercise's content moves
+    /// weight between lines (detect lumps without lumps: reporting nothing is the finding).
+    virtual double defaultWeight(const Exercise& exercise, Metric metric) const { (void)exercise; return defaultWeight(metric); }
     /// Whether a measured metric counts for this exercise (an exercise without lumps has nothing
     /// to find: sensitivity does not count).
     virtual bool counts(const Exercise& exercise, Metric metric) const {
@@ -109,6 +115,9 @@ std::span<const ExerciseKind* const> exerciseKinds();
 const ExerciseKind& exerciseKind(ExerciseType type);
 /// The kind whose key this is ("press_targets"); null when none.
 const ExerciseKind* findExerciseKind(std::string_view key);
+/// Whether the trainee sees the live score of this exercise: its "show_live_score", else its
+/// kind's default.
+bool showsLiveScore(const Exercise& exercise);
 /// The kind's key ("press_targets").
 std::string_view exerciseTypeName(ExerciseType type);
 /// The type whose kind has this key.

@@ -53,6 +53,10 @@ public:
     virtual bool step(const TaskTick& tick, ScoreGuidance& guidance) = 0;
     /// The share of the task done, 0..1 (the completion metric).
     virtual double completion(const ScoreGuidance& guidance) const = 0;
+    /// How much of the work was done, 0..1: the metrics that count errors earn their points in
+    /// this proportion (docs/scoring.md, "The rubric"), so that doing nothing earns nothing for
+    /// making no mistakes. The completion unless the kind says otherwise.
+    virtual double workDone(const ScoreGuidance& guidance) const { return completion(guidance); }
     /// The shortest tool path from `startMm` through what was done (the economy metric); none when
     /// nothing was done or the kind has no such path.
     virtual std::optional<double> idealPathMm(const glm::vec3& startMm) const {

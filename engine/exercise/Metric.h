@@ -55,7 +55,7 @@ enum class MetricDisplay {
 /// Everything said about one metric, once: the rubric's key, its name and description for people
 /// (English; translated in the context kMetricTextContext), its unit, how it is shown, which way is
 /// better, whether every kind of exercise measures it (else the kinds that do say so,
-/// ExerciseKind::ownMetrics), and its default rubric thresholds for an exercise.
+/// ExerciseKind::ownMetrics), whether it counts errors, and its default rubric thresholds.
 struct MetricRow {
     Metric metric;
     std::string_view key;          ///< "completion", "time_s", ...
@@ -65,6 +65,12 @@ struct MetricRow {
     MetricDisplay display;
     int decimals;                  ///< Number: decimals shown
     bool everyKind;                ///< every kind of exercise measures it
+    /// It grades the absence of errors or waste (force, damage, time, false alarms), which is
+    /// worth nothing without the work: its sub-score is weighted by the work done.
+    bool countsErrors;
+    /// Count: none. Else its sub-score is multiplied by that metric's value when measured (found
+    /// lumps count in proportion to how many findings were lumps: marking everywhere finds all).
+    Metric creditTimes;
     /// The default full and zero marks for this exercise (full better than zero).
     void (*thresholds)(const Exercise& exercise, double& fullMarks, double& zeroMarks);
     /// Whether a larger value is better (from the default thresholds' order).

@@ -28,6 +28,12 @@ void applyRubric(const Rubric& rubric, ScoreReport& report) {
         m.subScore = m.measured && !nothingDone ? subScore(item, m.value) : 0.0;
         // Time is graded only for a task that was completed (giving up early is not fast).
         if (m.metric == Metric::TimeS && !report.guidance.completed) m.subScore = 0.0;
+        // No points for the absence of errors without the work they guard.
+        const MetricRow& row = metricRow(m.metric);
+        if (row.countsErrors) m.subScore *= std::clamp(report.workDone, 0.0, 1.0);
+        if (row.creditTimes != Metric::Count)
+            if (const MetricResult* by = report.find(row.creditTimes); by && by->measured)
+                m.subScore *= std::clamp(by->value, 0.0, 1.0);
         m.contribution = totalWeight > 0.0 ? 100.0 * item.weight * m.subScore / totalWeight : 0.0;
         score += m.contribution;
     }

@@ -29,7 +29,8 @@ double subScore(const RubricItem& item, double value);
 /// Fills each metric's sub-score, weight and contribution in `report` and its score. A metric
 /// without a value (report says not measured) scores 0. A session that did nothing of the task
 /// (completion 0) scores 0 in every line: the other lines grade how the task was done. Time
-/// scores only when the task was completed.
+/// scores only when the task was completed. A metric that counts errors (MetricRow::countsErrors)
+/// earns its sub-score times the report's work done.
 void applyRubric(const Rubric& rubric, ScoreReport& report);
 
 }  // namespace palpate

@@ -29,6 +29,7 @@ std::string scoreReportToJson(const ScoreReport& r, int indent) {
                         {"zero", m.zeroMarks}};
     }
     Json j{{"score", r.score},
+           {"work_done", r.workDone},
            {"metrics", metrics},
            {"rubric", rubric},
            {"exercise", r.exerciseName},
@@ -94,6 +95,11 @@ std::string scoreReportToText(const ScoreReport& r) {
                   std::string(exerciseTypeName(r.type)).c_str(), r.score,
                   r.guidance.completed ? ", completed" : (r.guidance.timeUp ? ", time up" : ", not completed"));
     out << line;
+    if (r.workDone < 1.0) {
+        std::snprintf(line, sizeof(line), "  work done %.0f %%: the lines that count errors earn that share of their points\n",
+                      100.0 * r.workDone);
+        out << line;
+    }
     std::snprintf(line, sizeof(line), "  %-26s %14s %6s %7s %8s  %s\n", "metric", "value", "sub", "weight", "points",
                   "full .. zero");
     out << line;

@@ -64,6 +64,9 @@ struct ScoreReport {
     std::string exerciseName;
     ExerciseType type = ExerciseType::PressTargets;
     double score = 0.0;                     ///< 0..100
+    /// 0..1: how much of the work was done (ExerciseTask::workDone); the metrics that count errors
+    /// are weighted by it (docs/scoring.md, "The rubric").
+    double workDone = 1.0;
     std::vector<MetricResult> metrics;      ///< the metrics of the exercise's type, in Metric order
     std::vector<TargetResult> targets;      ///< press targets only
     ScoreGuidance guidance;

@@ -157,6 +157,7 @@ ScoreReport Scorer::report(bool detail) const {
 
     MeasuredMetrics metrics;
     metrics.put(Metric::Completion, mTask->completion(mGuidance));
+    r.workDone = std::clamp(mTask->workDone(mGuidance), 0.0, 1.0);
     metrics.put(Metric::TimeS, mGuidance.completed ? mCompletionTimeS : std::min(mElapsedS, mExercise.timeLimitS));
     metrics.put(Metric::PeakForceN, mPeakForceN);
     metrics.put(Metric::MeanForceN, mContactS > 0.0 ? mContactForceNs / mContactS : 0.0, mContactS > 0.0);

@@ -358,9 +358,72 @@ TEST(ScriptedExaminers, HealthyTissueRewardsRestraint) {
     const DetectionResult& b = *bad.palpation->detection;
     EXPECT_EQ(b.falseAlarms, 2u);
     EXPECT_EQ(b.positivePredictive, 0.0);
-    // Two false alarms of the rubric's zero at three: a third of the false-alarm line's 20 points,
-    // out of the 55 that count without lumps, so 20 * (2 / 3) / 55 = 24 points fewer.
-    EXPECT_NEAR(good.score - bad.score, 100.0 * 20.0 * (2.0 / 3.0) / 55.0, 2.0);
+    // Two false alarms of the rubric's zero at three: two thirds of the false-alarm line, which
+    // without lumps carries its own 20 and the 35 + 10 of finding and localising, out of 100:
+    // 65 * (2 / 3) = 43 points fewer.
+    EXPECT_NEAR(good.score - bad.score, 100.0 * 65.0 * (2.0 / 3.0) / 100.0, 2.0);
+}
+
+/// A shipped exercise done by a scripted trainee made from its good path, scored from the recording.
+ScoreReport scoreScript(const std::string& name, const test::TraineeScript& script, const std::string& who,
+                        test::TempDir& dir) {
+    const Exercise exercise = test::loadExampleExercise(name);
+    const std::string recording = dir.file(name + "." + who + ".palprec");
+    test::runScriptedSession(exercise, script, recording);
+    std::string error;
+    ReplayScorerDef options;
+    options.findResource = test::testResourceFinder();
+    const ScoreReport r = scoreRecording(RecordingReader::open(recording), &exercise, error, options);
+    EXPECT_EQ(error, "") << who;
+    std::printf("[ figures  ] %s, %s: score %.1f, work done %.0f %%, examined %.0f %%\n", name.c_str(), who.c_str(),
+                r.score, 100.0 * r.workDone, r.palpation ? 100.0 * r.palpation->coverageFraction : 0.0);
+    return r;
+}
+
+/// The good path cut at `fraction` of its duration and finished there (its marks before the cut kept).
+test::TraineeScript cutShort(test::TraineeScript script, double fraction) {
+    const double cutS = fraction * script.durationS();
+    std::erase_if(script.waypoints, [&](const Waypoint& w) { return w.timeS > cutS; });
+    std::erase_if(script.marksS, [&](double t) { return t > cutS; });
+    script.doneS = cutS;
+    return script;
+}
+
+/// Scripted trainees from doing nothing to a thorough examination, and one who marks everywhere:
+/// the scores come out in the order an instructor would put them (docs/scoring.md, "The rubric").
+void expectScoresOrderedAsAnInstructorWould(const std::string& name) {
+    test::TempDir dir;
+    const auto good = test::loadTraineeScript(test::resourcesDir() + "/exercises/" + name + ".good.path");
+    test::TraineeScript nothing = good;
+    nothing.waypoints.resize(1);  // above the tissue, never touching it
+    nothing.marksS.clear();
+    nothing.doneS = 2.0;          // Start, then Finish
+    test::TraineeScript marksEverywhere = good;
+    marksEverywhere.marksS.clear();
+    for (double t = 5.0; t < good.doneS; t += 4.0) marksEverywhere.marksS.push_back(t);
+
+    const ScoreReport none = scoreScript(name, nothing, "nothing", dir);
+    const ScoreReport side = scoreScript(name, cutShort(good, 0.25), "a quarter of the sweep", dir);
+    const ScoreReport half = scoreScript(name, cutShort(good, 0.55), "half of the sweep", dir);
+    const ScoreReport thorough = scoreScript(name, good, "thorough", dir);
+    const ScoreReport marker = scoreScript(name, marksEverywhere, "marks everywhere", dir);
+
+    EXPECT_LE(none.score, 5.0) << "touching nothing earns nothing";
+    EXPECT_DOUBLE_EQ(none.workDone, 0.0);
+    EXPECT_LT(none.score, side.score);
+    EXPECT_LT(side.score, half.score);
+    EXPECT_LT(half.score, thorough.score);
+    EXPECT_LT(side.score, 50.0) << "a quarter of the surface is not half the marks";
+    EXPECT_GT(thorough.score, 90.0);
+    EXPECT_LT(marker.score, thorough.score - 20.0) << "marking everywhere is not an examination";
+}
+
+TEST(ScriptedExaminers, HealthyTissueScoresTheExaminationNotTheAbsenceOfMistakes) {
+    expectScoresOrderedAsAnInstructorWould("no_lump");
+}
+
+TEST(ScriptedExaminers, DetectingLumpsScoresTheExaminationNotTheAbsenceOfMistakes) {
+    expectScoresOrderedAsAnInstructorWould("detect_lumps");
 }
 
 TEST(ScriptedExaminers, AnExaminationNotFinishedIsScoredOnWhatWasExamined) {

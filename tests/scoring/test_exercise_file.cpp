@@ -63,6 +63,7 @@ TEST(ExerciseFile, SaveLoadRoundTrip) {
     for (const char* name : {"press_targets", "find_lump", "trace"}) {
         Exercise e = test::loadExampleExercise(name);
         e.rubric[std::size_t(Metric::Completion)] = RubricItem{33.0, 0.9, 0.1};
+        e.showLiveScore = false;
         const std::string path = dir.file(std::string(name) + ".json");
         ASSERT_EQ(saveExercise(e, path), "");
         EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
@@ -70,6 +71,8 @@ TEST(ExerciseFile, SaveLoadRoundTrip) {
         ASSERT_TRUE(back.exercise) << back.error();
         EXPECT_EQ(exerciseToJson(*back.exercise), exerciseToJson(e));
         EXPECT_DOUBLE_EQ(back.exercise->rubric[std::size_t(Metric::Completion)]->weight, 33.0);
+        EXPECT_EQ(back.exercise->showLiveScore, std::optional<bool>(false));
+        EXPECT_FALSE(showsLiveScore(*back.exercise));
     }
     // An invalid exercise is not saved, and an existing file stays as it was.
     Exercise bad = test::loadExampleExercise("trace");
@@ -88,6 +91,7 @@ TEST(ExerciseFile, ErrorsNameTheKey) {
         return j;
     };
     expectError(with([](Json& j) { j["colour"] = "red"; }), "colour", "unknown key");
+    expectError(with([](Json& j) { j["show_live_score"] = "yes"; }), "show_live_score", "must be true or false");
     expectError(with([](Json& j) { j["press_targets"]["targets"][1]["hold"] = 1; }), "press_targets.targets[1].hold",
                 "unknown key");
     expectError(with([](Json& j) { j["format"] = "palpate-tissue-preset"; }), "format");

@@ -971,6 +971,37 @@ TEST(ScoreCardLayout, ValuesReadFromTheMetricRowsInTheLocale) {
     EXPECT_EQ(table->item(2, 1)->text(), QStringLiteral("2 findings"));
     EXPECT_EQ(table->item(3, 1)->text(), QStringLiteral("-"));
     EXPECT_TRUE(table->item(1, 0)->toolTip().contains(QStringLiteral("largest force rendered")));
+    EXPECT_FALSE(card.palpationText().contains(QStringLiteral("Work done"))) << "all the work was done";
+}
+
+// A session that did part of its work says why its error lines earn less than their sub-scores.
+TEST(ScoreCardLayout, SaysHowMuchOfTheWorkWasDone) {
+    ScoreReport report = reportOf(20.0, false);
+    report.workDone = 0.34;
+    ScoreCard card;
+    card.setReport(report, QStringLiteral("Ada"));
+    EXPECT_TRUE(card.palpationText().contains(QStringLiteral("Work done 34 %"))) << card.palpationText().toStdString();
+}
+
+// The score so far would tell a trainee which marks hit: a detection exercise keeps it for
+// Finish unless its file says "show_live_score": true; the other kinds show it.
+TEST(TraineePanelScore, DetectionKeepsTheScoreForFinishUnlessTheExerciseShowsIt) {
+    TraineePanel panel;
+    ScoreGuidance guidance;
+    guidance.timeLeftS = 42.0;
+    const auto loadedDetect = loadExercise(resource("exercises/detect_lumps.json").toStdString());
+    ASSERT_TRUE(loadedDetect.exercise) << loadedDetect.error();
+    Exercise detect = *loadedDetect.exercise;
+    panel.showGuidance(detect, guidance, 63.0);
+    EXPECT_TRUE(panel.timeText().contains(QStringLiteral("score at Finish"))) << panel.timeText().toStdString();
+    EXPECT_FALSE(panel.timeText().contains(QStringLiteral("63")));
+    detect.showLiveScore = true;
+    panel.showGuidance(detect, guidance, 63.0);
+    EXPECT_TRUE(panel.timeText().contains(QStringLiteral("score so far 63"))) << panel.timeText().toStdString();
+    const auto press = loadExercise(resource("exercises/press_targets.json").toStdString());
+    ASSERT_TRUE(press.exercise) << press.error();
+    panel.showGuidance(*press.exercise, guidance, 63.0);
+    EXPECT_TRUE(panel.timeText().contains(QStringLiteral("score so far 63"))) << panel.timeText().toStdString();
 }
 
 int main(int argc, char** argv) {

@@ -100,6 +100,12 @@ public:
     double completion(const ScoreGuidance& g) const override {
         return g.completed ? 1.0 : mExamination.coveredFraction();
     }
+    // The work of an examination is the surface examined firmly enough: finishing at once is no
+    // examination. Covering the coverage line's full-marks share is all of it.
+    double workDone(const ScoreGuidance&) const override {
+        const double fullShare = mGeometry->rubric()[std::size_t(Metric::CoverageFraction)].fullMarks;
+        return fullShare > 0.0 ? std::min(1.0, mExamination.coveredFraction() / fullShare) : 1.0;
+    }
     void report(ScoreReport& r, MeasuredMetrics& metrics, bool detail) const override {
         const Exercise& e = mGeometry->exercise();
         PalpationSummary p = mExamination.summary(detail);
@@ -176,6 +182,18 @@ public:
             {Metric::DamageTimeS, 10},
         };
         return kWeights;
+    }
+    // The score so far rises with a hit and falls with a false alarm: it would tell which marks
+    // hit. Shown at Finish.
+    bool showsLiveScore() const override { return false; }
+    // Without lumps, reporting nothing is the finding: the weight of finding and localising lumps
+    // goes to the false-alarm line (an examination that marks healthy tissue has failed).
+    double defaultWeight(const Exercise& e, Metric m) const override {
+        if (!e.detectLumps.lumps.empty()) return ExerciseKind::defaultWeight(m);
+        if (m == Metric::FalseAlarms)
+            return ExerciseKind::defaultWeight(Metric::FalseAlarms) + ExerciseKind::defaultWeight(Metric::Sensitivity) +
+                   ExerciseKind::defaultWeight(Metric::LocalisationMm);
+        return ExerciseKind::defaultWeight(m);
     }
     // Without lumps there is nothing to find or to localise: those lines do not count.
     bool counts(const Exercise& e, Metric m) const override {
