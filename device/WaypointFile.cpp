@@ -131,4 +131,47 @@ bool loadWaypointFile(const std::string& path, std::vector<Waypoint>& out, std::
     return parseWaypoints(*text, path, out, error);
 }
 
+bool parseWaypointButtons(std::string_view text, std::string_view sourceName, WaypointButtons& out, std::string& error) {
+    out = {};
+    std::size_t lineNumber = 0;
+    while (!text.empty()) {
+        const std::size_t end = text.find('\n');
+        std::string_view line = text.substr(0, end);
+        text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
+        ++lineNumber;
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        const bool mark = line.starts_with("# mark-at ");
+        const bool done = line.starts_with("# done-at ");
+        if (!mark && !done) continue;
+        std::string_view number = line.substr(10);
+        while (!number.empty() && (number.front() == ' ' || number.front() == '\t')) number.remove_prefix(1);
+        while (!number.empty() && (number.back() == ' ' || number.back() == '\t')) number.remove_suffix(1);
+        double timeS = 0.0;
+        const auto [ptr, ec] = std::from_chars(number.data(), number.data() + number.size(), timeS);
+        const auto where = std::string(sourceName) + ":" + std::to_string(lineNumber) + ": ";
+        if (ec != std::errc() || ptr != number.data() + number.size() || !std::isfinite(timeS) || timeS < 0.0) {
+            error = where + "'" + std::string(line.substr(2, 7)) + "' needs a time in seconds >= 0, not '" +
+                    std::string(number) + "'";
+            out = {};
+            return false;
+        }
+        if (mark) {
+            out.marksS.push_back(timeS);
+        } else if (out.doneS) {
+            error = where + "a second 'done-at' (the examination is finished once)";
+            out = {};
+            return false;
+        } else {
+            out.doneS = timeS;
+        }
+    }
+    return true;
+}
+
+bool loadWaypointButtons(const std::string& path, WaypointButtons& out, std::string& error) {
+    const std::optional<std::string> text = readInputFile(path, kWaypointFile, error);
+    if (!text) return false;
+    return parseWaypointButtons(*text, path, out, error);
+}
+
 }  // namespace palpate

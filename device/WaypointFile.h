@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,5 +31,19 @@ bool parseWaypoints(std::string_view text, std::string_view sourceName, std::vec
 /// paths, FIFOs, devices, directories, unreadable files and files beyond kWaypointFile's limit
 /// (base/io/FileLimits.h) are errors that name the path.
 bool loadWaypointFile(const std::string& path, std::vector<Waypoint>& out, std::string& error);
+
+/// The button presses a waypoint file carries in its comments: "# mark-at T" (Mark) and
+/// "# done-at T" (Finish) lines of a scripted trainee, loop times in seconds. The path device has
+/// no buttons; the session that plays the file presses them (palpate-cli run --exercise).
+struct WaypointButtons {
+    std::vector<double> marksS;  ///< in file order
+    std::optional<double> doneS;
+};
+
+/// Reads those lines; a time that is not a finite number >= 0, or a second "# done-at", is an
+/// error "SOURCE:LINE: problem". Other comments are ignored.
+bool parseWaypointButtons(std::string_view text, std::string_view sourceName, WaypointButtons& out, std::string& error);
+/// The same from a file, through the bounded reader.
+bool loadWaypointButtons(const std::string& path, WaypointButtons& out, std::string& error);
 
 }  // namespace palpate

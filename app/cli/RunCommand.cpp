@@ -2,6 +2,7 @@
 // the GUI), optionally recorded to a file for info/verify/export/replay (RecordCommand.cpp).
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "device/WaypointFile.h"
 #include "base/resources/ShippedResources.h"
 #include "app/cli/ExerciseRun.h"
 #include "app/cli/MeshOption.h"
@@ -9,6 +10,8 @@
 #include "engine/loop/HapticLoop.h"
 #include "engine/core/SceneTarget.h"
 #include "engine/scene/TissuePreset.h"
+
+#include <cstdio>
 #include "engine/record/RecordingSession.h"
 
 #include <nlohmann/json.hpp>
@@ -52,8 +55,30 @@ int runCommand(const std::vector<std::string>& words) {
             return 2;
         }
         std::string problem;
-        exerciseRun = ExerciseRun::load(*path, args.option("mark-at").value_or(""), args.option("done-at").value_or(""),
-                                        args.option("level").value_or(""), problem);
+        std::string markAt = args.option("mark-at").value_or(""), doneAt = args.option("done-at").value_or("");
+        // A scripted trainee's path carries its own Mark and Finish presses ("# mark-at",
+        // "# done-at"): played unless the command line gives its own.
+        const std::string device = args.option("device").value_or("");
+        if (device.starts_with("sim:path:") && !args.option("mark-at") && !args.option("done-at")) {
+            WaypointButtons buttons;
+            if (!loadWaypointButtons(device.substr(9), buttons, problem)) {
+                std::cerr << "run: " << problem << "\n";
+                return 1;
+            }
+            char number[32];
+            for (double t : buttons.marksS) {
+                std::snprintf(number, sizeof(number), "%.17g", t);
+                markAt += (markAt.empty() ? "" : ",") + std::string(number);
+            }
+            if (buttons.doneS) {
+                std::snprintf(number, sizeof(number), "%.17g", *buttons.doneS);
+                doneAt = number;
+            }
+            if (!buttons.marksS.empty() || buttons.doneS)
+                std::cerr << "run: " << buttons.marksS.size() << " mark(s)" << (buttons.doneS ? " and Finish" : "")
+                          << " from the path file (--mark-at or --done-at replaces them)\n";
+        }
+        exerciseRun = ExerciseRun::load(*path, markAt, doneAt, args.option("level").value_or(""), problem);
         if (!exerciseRun) {
             std::cerr << "run: " << problem << "\n";
             return 1;

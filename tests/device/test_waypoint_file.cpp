@@ -118,6 +118,28 @@ TEST(WaypointFile, DefectsNameTheFileAndLine) {
     }
 }
 
+// A scripted trainee's Mark and Finish presses ride in the file's comments.
+TEST(WaypointFile, ButtonLinesAreReadAndTheirDefectsNamed) {
+    WaypointButtons buttons;
+    std::string error;
+    ASSERT_TRUE(parseWaypointButtons("# a comment\n# mark-at 1.5\r\n0 0 0 0\n# mark-at 2\n# done-at 3.25 \n", "p.path",
+                                     buttons, error))
+        << error;
+    EXPECT_EQ(buttons.marksS, (std::vector<double>{1.5, 2.0}));
+    ASSERT_TRUE(buttons.doneS);
+    EXPECT_EQ(*buttons.doneS, 3.25);
+    ASSERT_TRUE(parseWaypointButtons("0 0 0 0\n", "p.path", buttons, error));
+    EXPECT_TRUE(buttons.marksS.empty());
+    EXPECT_FALSE(buttons.doneS);
+    EXPECT_FALSE(parseWaypointButtons("0 0 0 0\n# done-at soon\n", "p.path", buttons, error));
+    EXPECT_NE(error.find("p.path:2:"), std::string::npos) << error;
+    EXPECT_NE(error.find("soon"), std::string::npos) << error;
+    EXPECT_FALSE(parseWaypointButtons("# mark-at -1\n", "p.path", buttons, error));
+    EXPECT_NE(error.find("p.path:1:"), std::string::npos) << error;
+    EXPECT_FALSE(parseWaypointButtons("# done-at 1\n# done-at 2\n", "p.path", buttons, error));
+    EXPECT_NE(error.find("p.path:2: a second 'done-at'"), std::string::npos) << error;
+}
+
 TEST(WaypointFile, DirectoryIsAnErrorNamingIt) {
     TempDir dir;
     std::vector<Waypoint> w;

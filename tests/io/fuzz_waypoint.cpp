@@ -25,6 +25,15 @@ int palpateFuzzWaypoint(const std::uint8_t* data, std::size_t size) {
                                        std::isfinite(out[i].positionMm.z));
         if (i > 0) fuzzCheck("fuzz_waypoint", out[i].timeS > out[i - 1].timeS);
     }
+    // The same bytes as the scripted trainee's button lines.
+    WaypointButtons buttons;
+    std::string buttonError;
+    const bool buttonsOk = parseWaypointButtons(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz",
+                                                buttons, buttonError);
+    fuzzCheck("fuzz_waypoint", buttonsOk == buttonError.empty());
+    if (!buttonsOk) fuzzCheck("fuzz_waypoint", buttonError.rfind("fuzz:", 0) == 0 && buttons.marksS.empty());
+    for (double t : buttons.marksS) fuzzCheck("fuzz_waypoint", std::isfinite(t) && t >= 0.0);
+    if (buttons.doneS) fuzzCheck("fuzz_waypoint", std::isfinite(*buttons.doneS) && *buttons.doneS >= 0.0);
     return 0;
 }
 

@@ -32,13 +32,10 @@ TraineeScript loadTraineeScript(const std::string& path) {
     TraineeScript script;
     std::string error;
     if (!loadWaypointFile(path, script.waypoints, error)) throw std::runtime_error(error);
-    std::ifstream in(path);
-    std::string line;
-    const std::string tag = "# mark-at ", doneTag = "# done-at ";
-    while (std::getline(in, line)) {
-        if (line.rfind(tag, 0) == 0) script.marksS.push_back(std::stod(line.substr(tag.size())));
-        if (line.rfind(doneTag, 0) == 0) script.doneS = std::stod(line.substr(doneTag.size()));
-    }
+    WaypointButtons buttons;
+    if (!loadWaypointButtons(path, buttons, error)) throw std::runtime_error(error);
+    script.marksS = buttons.marksS;
+    script.doneS = buttons.doneS.value_or(-1.0);
     return script;
 }
 

@@ -141,5 +141,30 @@ TEST(ScoreCliThreads, RunExerciseRecordsAndScoresLive) {
     EXPECT_EQ(runCli("run --exercise " + shellQuote(exampleFile("trace.json")) + " --mesh x.off").exitCode, 2);
 }
 
+// A scripted trainee's path presses its own Mark and Finish ("# mark-at", "# done-at") unless
+// the command line gives its own; a malformed button line is named.
+TEST(ScoreCliThreads, RunExercisePlaysThePathFilesMarkAndFinish) {
+    test::TempDir dir;
+    const std::string path = dir.write("trainee.path", "# mark-at 0.8\n# done-at 1.2\n0 8.38 0 89.5\n3 8.38 0 89.5\n");
+    const std::string command = "run --exercise " + shellQuote(exampleFile("no_lump.json")) + " --device " +
+                                shellQuote("sim:path:" + path) + " --no-fifo --json --overwrite --record " +
+                                shellQuote(dir.file("session.palprec"));
+    auto jsonOf = [](const std::string& output) { return nlohmann::json::parse(output.substr(output.find('{'))); };
+    const auto r = runCli(command);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto j = jsonOf(r.output);
+    EXPECT_TRUE(j["score"]["completed"].get<bool>()) << r.output;
+    EXPECT_EQ(j["score"]["marks"], 1);
+    EXPECT_LT(j["seconds"].get<double>(), 10.0);  // finished at 1.2 s, not at the 150 s limit
+    const auto own = runCli(command + " --mark-at 0.3,0.5 --done-at 0.9");
+    ASSERT_EQ(own.exitCode, 0) << own.output;
+    EXPECT_EQ(jsonOf(own.output)["score"]["marks"], 2);
+    const std::string broken = dir.write("broken.path", "0 8.38 0 89.5\n# done-at soon\n");
+    const auto bad = runCli("run --exercise " + shellQuote(exampleFile("no_lump.json")) + " --device " +
+                            shellQuote("sim:path:" + broken) + " --no-fifo --json");
+    EXPECT_EQ(bad.exitCode, 1);
+    EXPECT_NE(bad.output.find(broken + ":2:"), std::string::npos) << bad.output;
+}
+
 }  // namespace
 }  // namespace palpate
