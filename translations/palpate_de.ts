@@ -1716,6 +1716,10 @@
         <source>covered %p%</source>
         <translation>abgedeckt %p%</translation>
     </message>
+    <message>
+        <source>lighter than %1 N counts as not examined: press deeper (with the mouse: scroll the wheel)</source>
+        <translation>leichter als %1 N gilt als nicht untersucht: tiefer drücken (mit der Maus: Mausrad drehen)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::FeelChart</name>
@@ -1911,6 +1915,10 @@ Tick %7 µs, %8-mal schneller als previous</translation>
     <message>
         <source>Force gauge faded out: feel the force</source>
         <translation>Kraftanzeige ausgeblendet: spüren Sie die Kraft</translation>
+    </message>
+    <message>
+        <source>The blue line: a press at or above %1 N counts as examined.</source>
+        <translation>Die blaue Linie: ein Druck ab %1 N gilt als untersucht.</translation>
     </message>
 </context>
 <context>

@@ -1715,6 +1715,10 @@
         <source>covered %p%</source>
         <translation>diliputi %p%</translation>
     </message>
+    <message>
+        <source>lighter than %1 N counts as not examined: press deeper (with the mouse: scroll the wheel)</source>
+        <translation>lebih ringan daripada %1 N dikira tidak diperiksa: tekan lebih dalam (dengan tetikus: putar roda)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::FeelChart</name>
@@ -1910,6 +1914,10 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
     <message>
         <source>Force gauge faded out: feel the force</source>
         <translation>Tolok daya dipudarkan: rasai dayanya</translation>
+    </message>
+    <message>
+        <source>The blue line: a press at or above %1 N counts as examined.</source>
+        <translation>Garis biru: tekanan pada atau melebihi %1 N dikira sebagai diperiksa.</translation>
     </message>
 </context>
 <context>

@@ -1,11 +1,17 @@
 #include "widgets/ForceGauge.h"
 
+#include <QLocale>
 #include <QPainter>
+#include <QPen>
 
 #include <algorithm>
 #include <cmath>
 
 namespace palpate {
+
+namespace {
+const QColor kExamineColour(30, 100, 210);
+}  // namespace
 
 ForceGauge::ForceGauge(QWidget* parent) : QWidget(parent) {
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
@@ -35,7 +41,8 @@ void ForceGauge::setForceN(double forceN) {
 
 int ForceGauge::zone() const {
     if (mExcessiveN > 0.0 && mForceN >= mExcessiveN) return 2;
-    if (mWindowMaxN <= mWindowMinN) return 0;
+    // Without a window, a press below the force that examines is below what is asked.
+    if (mWindowMaxN <= mWindowMinN) return mExamineAtN > 0.0 && mForceN < mExamineAtN ? -1 : 0;
     if (mForceN < mWindowMinN) return -1;
     if (mForceN > mWindowMaxN) return 1;
     return 0;
@@ -56,6 +63,15 @@ double ForceGauge::shownScaleN() const {
     // An excessive level not far beyond the window shares the scale (1-2 N and 3 N: 0-4 N).
     if (mExcessiveN > 0.0 && mExcessiveN * 1.15 <= 3.0 * mWindowMaxN) scaleN = std::max(scaleN, mExcessiveN * 1.15);
     return std::max(scaleN, 0.1);
+}
+
+void ForceGauge::setExamineAtN(double examineAtN) {
+    if (examineAtN == mExamineAtN) return;
+    mExamineAtN = examineAtN;
+    setToolTip(examineAtN > 0.0 ? tr("The blue line: a press at or above %1 N counts as examined.")
+                                      .arg(QLocale().toString(examineAtN, 'g', 3))
+                                : QString());
+    update();
 }
 
 void ForceGauge::setLevel(double level) {
@@ -91,11 +107,17 @@ void ForceGauge::paintEvent(QPaintEvent*) {
         p.setBrush(QColor(220, 40, 40, 70));
         p.drawRect(QRectF(QPointF(xOf(mExcessiveN), track.top()), QPointF(track.right(), track.bottom())));
     }
+    const bool examineShown = mExamineAtN > 0.0 && mExamineAtN < scaleN;
     // The bar: inset, so that the window's shading stays visible around it.
     const QRectF bar(QPointF(track.left(), track.top() + track.height() * 0.25),
                      QPointF(xOf(mForceN), track.bottom() - track.height() * 0.25));
     p.setBrush(barColour());
     p.drawRect(bar);
+    if (examineShown) {
+        // Over the bar: the line the press must pass to examine the tissue under it.
+        p.setPen(QPen(kExamineColour, 2.0, Qt::DashLine));
+        p.drawLine(QPointF(xOf(mExamineAtN), track.top()), QPointF(xOf(mExamineAtN), track.bottom()));
+    }
 
     p.setPen(palette().color(QPalette::WindowText));
     QFont font = p.font();
@@ -116,6 +138,11 @@ void ForceGauge::paintEvent(QPaintEvent*) {
     if (mWindowMaxN > mWindowMinN) {
         label(mWindowMinN, QString::number(mWindowMinN, 'g', 3));
         label(mWindowMaxN, QString::number(mWindowMaxN, 'g', 3));
+    }
+    if (examineShown) {
+        p.setPen(kExamineColour);
+        label(mExamineAtN, QLocale().toString(mExamineAtN, 'g', 3));
+        p.setPen(palette().color(QPalette::WindowText));
     }
     if (excessiveShown) label(mExcessiveN, QString::number(mExcessiveN, 'g', 3));
     // The reading, right-aligned under the track's end, clear of the window's labels.

@@ -220,6 +220,7 @@ void TraineePanel::setState(State state) {
 
 QString TraineePanel::instructionText() const { return mInstruction->text(); }
 QString TraineePanel::timeText() const { return mTime->text(); }
+QString TraineePanel::detailText() const { return mDetail->text(); }
 
 void TraineePanel::showGuidance(const Exercise& exercise, const ScoreGuidance& guidance, double scoreSoFar) {
     mGauge->setExcessiveN(exercise.excessiveForceN);
@@ -227,6 +228,7 @@ void TraineePanel::showGuidance(const Exercise& exercise, const ScoreGuidance& g
     mGauge->setForceN(guidance.forceN);
     const GuidanceView view = exerciseKind(exercise.type).guidance(exercise, guidance);
     mGauge->setWindow(view.windowMinN, view.windowMaxN);
+    mGauge->setExamineAtN(view.examineAtN);
     mMark->setToolTip(view.markTip.empty() ? tr("Mark the lump where the tool presses now (M)") : exerciseText(view.markTip));
     const QString instruction = exerciseText(view.instruction);
     QStringList details;

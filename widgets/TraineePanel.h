@@ -58,6 +58,8 @@ public:
     QString instructionText() const;
     /// "Time left 42 s · score so far 63", or "… · score at Finish" where the score waits.
     QString timeText() const;
+    /// The guidance's detail line ("0 finding(s) marked · in contact · …").
+    QString detailText() const;
     void setMessage(const QString& text);
 
     ForceGauge* forceGauge() const { return mGauge; }

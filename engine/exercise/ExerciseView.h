@@ -71,6 +71,8 @@ struct ExerciseDrawing {
 /// What the trainee is told while the session runs.
 struct GuidanceView {
     double windowMinN = 0.0, windowMaxN = 0.0;  ///< the force gauge's window (equal: none)
+    /// The force a press must reach to count as examined (the gauge marks it); 0: none.
+    double examineAtN = 0.0;
     ViewText instruction;
     std::vector<ViewText> detail;  ///< shown joined with " · "
     double progress = 0.0;         ///< 0..1

@@ -1004,6 +1004,34 @@ TEST(TraineePanelScore, DetectionKeepsTheScoreForFinishUnlessTheExerciseShowsIt)
     EXPECT_TRUE(panel.timeText().contains(QStringLiteral("score so far 63"))) << panel.timeText().toStdString();
 }
 
+// A detection exercise marks on the gauge the force that counts as examined and, while a stroke
+// is lighter, says to press deeper; a press at that force or more says nothing of it.
+TEST(TraineePanelScore, TheGaugeMarksTheForceThatExaminesAndALightStrokeIsToldToPressDeeper) {
+    TraineePanel panel;
+    const auto loaded = loadExercise(resource("exercises/detect_lumps.json").toStdString());
+    ASSERT_TRUE(loaded.exercise) << loaded.error();
+    const Exercise& detect = *loaded.exercise;
+    ScoreGuidance guidance;
+    guidance.contact = true;
+    guidance.forceN = 0.5 * detect.coverage.minForceN;
+    panel.showGuidance(detect, guidance, 0.0);
+    auto* gauge = panel.findChild<ForceGauge*>();
+    ASSERT_NE(gauge, nullptr);
+    EXPECT_DOUBLE_EQ(gauge->examineAtN(), detect.coverage.minForceN);
+    EXPECT_EQ(gauge->zone(), -1) << "below the force that examines: amber";
+    const QString light = panel.detailText();
+    EXPECT_TRUE(light.contains(QStringLiteral("press deeper"))) << light.toStdString();
+    guidance.forceN = 1.5 * detect.coverage.minForceN;
+    panel.showGuidance(detect, guidance, 0.0);
+    EXPECT_FALSE(panel.detailText().contains(QStringLiteral("press deeper"))) << panel.detailText().toStdString();
+    EXPECT_EQ(gauge->zone(), 0);
+    // Press targets have their window instead.
+    const auto press = loadExercise(resource("exercises/press_targets.json").toStdString());
+    ASSERT_TRUE(press.exercise);
+    panel.showGuidance(*press.exercise, guidance, 0.0);
+    EXPECT_EQ(gauge->examineAtN(), 0.0);
+}
+
 int main(int argc, char** argv) {
     qputenv("QT_QPA_PLATFORM", "offscreen");
     QStandardPaths::setTestModeEnabled(true);  // QSettings and data folders of these tests are not the user's

@@ -337,8 +337,9 @@ public:
         }
         return out;
     }
-    GuidanceView guidance(const Exercise&, const ScoreGuidance& g) const override {
+    GuidanceView guidance(const Exercise& e, const ScoreGuidance& g) const override {
         GuidanceView v;
+        v.examineAtN = e.coverage.minForceN;
         v.markTip = {PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Mark a lump where the tool presses now (M)")};
         v.instruction = {PALPATE_TRANSLATE_NOOP("palpate::Exercises",
                                                 "Search the whole surface, press in where it feels different, Mark (M) each "
@@ -348,6 +349,12 @@ public:
         v.detail.push_back(findings);
         v.detail.push_back({g.contact ? PALPATE_TRANSLATE_NOOP("palpate::Exercises", "in contact")
                                       : PALPATE_TRANSLATE_NOOP("palpate::Exercises", "not in contact")});
+        // A stroke lighter than the coverage force examines nothing: say so while it happens.
+        if (g.contact && g.forceN < e.coverage.minForceN)
+            v.detail.push_back(ViewText{PALPATE_TRANSLATE_NOOP("palpate::Exercises",
+                                                               "lighter than %1 N counts as not examined: press deeper "
+                                                               "(with the mouse: scroll the wheel)")}
+                                   .fixed(e.coverage.minForceN, 1));
         v.progress = g.coverageFraction;
         v.progressFormat = {PALPATE_TRANSLATE_NOOP("palpate::Exercises", "surface examined %p%")};
         return v;
