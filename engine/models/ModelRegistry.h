@@ -20,6 +20,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -75,7 +76,7 @@ struct ModelDescriptor {
 };
 
 /// Every model, in modelNames()'s order (the registry models, then the slope-ring methods).
-const std::vector<ModelDescriptor>& modelDescriptors();
+std::span<const ModelDescriptor> modelDescriptors();
 /// The descriptor of a name; nullptr for an unknown one ("palpate" is read as coherent).
 const ModelDescriptor* findModelDescriptor(std::string_view name);
 /// The descriptor of a definition's kind (and method).

@@ -45,7 +45,9 @@ void expectValidatorFollowsTable(FieldTable<S> table, Problems (*validate)(const
         EXPECT_TRUE(jsonKeys.insert(f.spec.jsonKey).second) << "duplicate file key " << f.spec.jsonKey;
         EXPECT_TRUE(inRange(f, f.defaultValue(0))) << f.spec.key << "'s default is outside its own range";
         EXPECT_GE(f.spec.lo, entryLowOf(f.spec)) << f.spec.key << ": the panel cannot show the lowest valid value";
-        if (std::isfinite(f.spec.hi)) EXPECT_LE(f.spec.hi, entryHighOf(f.spec)) << f.spec.key;
+        if (std::isfinite(f.spec.hi)) {
+            EXPECT_LE(f.spec.hi, entryHighOf(f.spec)) << f.spec.key;
+        }
         // A list none of whose entries the defaults use (the stiffening knots: 0) is not validated there.
         if (f.type == FieldType::RealList && f.usedCount(defaults) == 0) continue;
         for (double bad : outsideValues(f)) {

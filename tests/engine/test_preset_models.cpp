@@ -248,7 +248,9 @@ TEST(TissuePresetModels, EveryModelIsOneDescriptorWhoseSectionThePresetWrites) {
         EXPECT_EQ(def->kind, d.kind) << d.name;
         EXPECT_EQ(modelName(*def), d.name);
         EXPECT_EQ(&modelDescriptor(*def), &d) << d.name;
-        if (d.kind == ModelKind::SlopeRing) EXPECT_EQ(methodName(d.slopeRingMethod), d.name);
+        if (d.kind == ModelKind::SlopeRing) {
+            EXPECT_EQ(methodName(d.slopeRingMethod), d.name);
+        }
         EXPECT_GT(std::string_view(d.label).size(), 3u) << d.name;
         EXPECT_NE(std::string_view(d.description).find("Cost:"), std::string_view::npos) << d.name;
         // The preset file carries the model's own section (and the slope rings, always).

@@ -128,7 +128,9 @@ TEST(Proficiency, ProficientAfterTwoPassingSessionsInARow) {
         else EXPECT_EQ(ok, true) << name;
     }
     for (const auto& [name, ok] : p.sessions[5].metrics)
-        if (name == "path_distance_mm") EXPECT_EQ(ok, std::nullopt);
+        if (name == "path_distance_mm") {
+            EXPECT_EQ(ok, std::nullopt);
+        }
     // Passes that are not in a row do not make a trainee proficient.
     const ProficiencyProgress q = judgeSessions(s, {sessions[1], sessions[0], sessions[3]});
     EXPECT_FALSE(q.proficient());

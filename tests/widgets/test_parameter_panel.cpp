@@ -739,8 +739,12 @@ void expectPanelFollowsTable(const char* section, FieldTable<S> table, const cha
         if (auto* spin = qobject_cast<QDoubleSpinBox*>(widget)) {
             EXPECT_EQ(spin->decimals(), f.spec.decimals) << f.spec.key;
             EXPECT_LE(spin->minimum(), f.spec.lo) << f.spec.key;
-            if (std::isfinite(f.spec.hi)) EXPECT_GE(spin->maximum(), f.spec.hi) << f.spec.key;
-            if (*f.spec.unit) EXPECT_TRUE(spin->suffix().contains(QString::fromUtf8(f.spec.unit))) << f.spec.key;
+            if (std::isfinite(f.spec.hi)) {
+                EXPECT_GE(spin->maximum(), f.spec.hi) << f.spec.key;
+            }
+            if (*f.spec.unit) {
+                EXPECT_TRUE(spin->suffix().contains(QString::fromUtf8(f.spec.unit))) << f.spec.key;
+            }
             const double bad = f.spec.lower == Bound::Open ? f.spec.lo : std::isfinite(f.spec.hi) ? f.spec.hi * 1.5 : -1.0;
             if (bad < spin->minimum() || bad > spin->maximum()) continue;
             const double before = spin->value();
