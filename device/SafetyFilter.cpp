@@ -6,20 +6,23 @@
 
 namespace palpate {
 
-std::string validateSafetyFilterDef(const SafetyFilterDef& def) {
+Problems validateSafetyFilterDef(const SafetyFilterDef& def) {
     if (!(def.holdOffThresholdFraction > 0.0 && def.holdOffThresholdFraction <= 1.0))
-        return "SafetyFilterDef.holdOffThresholdFraction must be in (0, 1]";
+        return oneProblem("holdOffThresholdFraction", "SafetyFilterDef.holdOffThresholdFraction must be in (0, 1]");
     if (!std::isfinite(def.rampTimeS) || def.rampTimeS < 0.0)
-        return "SafetyFilterDef.rampTimeS must be finite and >= 0";
-    if (def.staleSampleMaxTicks < 0) return "SafetyFilterDef.staleSampleMaxTicks must be >= 0";
+        return oneProblem("rampTimeS", "SafetyFilterDef.rampTimeS must be finite and >= 0");
+    if (def.staleSampleMaxTicks < 0)
+        return oneProblem("staleSampleMaxTicks", "SafetyFilterDef.staleSampleMaxTicks must be >= 0");
     if (!(def.staleSampleTimeoutS > 0.0) || !std::isfinite(def.staleSampleTimeoutS))
-        return "SafetyFilterDef.staleSampleTimeoutS must be finite and > 0";
+        return oneProblem("staleSampleTimeoutS", "SafetyFilterDef.staleSampleTimeoutS must be finite and > 0");
     if (!std::isfinite(def.maxSampleAgeS))
-        return "SafetyFilterDef.maxSampleAgeS must be finite (<= 0 disables the age check)";
-    if (def.maxConsecutiveOverruns < 0) return "SafetyFilterDef.maxConsecutiveOverruns must be >= 0";
+        return oneProblem("maxSampleAgeS",
+                          "SafetyFilterDef.maxSampleAgeS must be finite (<= 0 disables the age check)");
+    if (def.maxConsecutiveOverruns < 0)
+        return oneProblem("maxConsecutiveOverruns", "SafetyFilterDef.maxConsecutiveOverruns must be >= 0");
     if (!(def.overrunFadeTimeS > 0.0) || !std::isfinite(def.overrunFadeTimeS))
-        return "SafetyFilterDef.overrunFadeTimeS must be finite and > 0";
-    return "";
+        return oneProblem("overrunFadeTimeS", "SafetyFilterDef.overrunFadeTimeS must be finite and > 0");
+    return {};
 }
 
 const char* safetyPhaseName(SafetyPhase phase) {
@@ -32,7 +35,7 @@ const char* safetyPhaseName(SafetyPhase phase) {
 }
 
 SafetyFilter::SafetyFilter(const DeviceSpec& spec, SafetyFilterDef def) : mDef(def) {
-    const std::string problem = validateSafetyFilterDef(def);
+    const std::string problem = joinedMessages(validateSafetyFilterDef(def));
     if (!problem.empty()) throw std::invalid_argument(problem);
     // A spec we cannot trust renders nothing rather than something unbounded.
     mMaxForceN = std::isfinite(spec.maxForceN) && spec.maxForceN > 0.0 ? spec.maxForceN : 0.0;

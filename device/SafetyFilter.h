@@ -4,6 +4,8 @@
 // the device never gets a NaN, never more than its rated force, no jolt at start or reconnect, and
 // no force computed from a position the device no longer has.
 
+#include "base/params/Problem.h"
+
 #include "device/HapticDevice.h"
 
 #include <glm/vec3.hpp>
@@ -42,7 +44,7 @@ struct SafetyFilterDef {
 };
 
 /// Returns "" when the definition is usable, else a message naming the field.
-std::string validateSafetyFilterDef(const SafetyFilterDef& def);
+Problems validateSafetyFilterDef(const SafetyFilterDef& def);
 
 /// What the haptic loop knows about this tick, besides the force.
 struct SafetyInput {

@@ -43,35 +43,42 @@ DeviceSpec simulatedDeviceSpec() {
     return spec;
 }
 
-std::string validateSimulatedDeviceDef(const SimulatedDeviceDef& def) {
-    if (!positiveFinite(def.approachHeightMm)) return "SimulatedDeviceDef.approachHeightMm must be finite and > 0";
-    if (!positiveFinite(def.depthMm)) return "SimulatedDeviceDef.depthMm must be finite and > 0";
-    if (!positiveFinite(def.descendTimeS)) return "SimulatedDeviceDef.descendTimeS must be finite and > 0";
+Problems validateSimulatedDeviceDef(const SimulatedDeviceDef& def) {
+    if (!positiveFinite(def.approachHeightMm))
+        return oneProblem("approachHeightMm", "SimulatedDeviceDef.approachHeightMm must be finite and > 0");
+    if (!positiveFinite(def.depthMm)) return oneProblem("depthMm", "SimulatedDeviceDef.depthMm must be finite and > 0");
+    if (!positiveFinite(def.descendTimeS))
+        return oneProblem("descendTimeS", "SimulatedDeviceDef.descendTimeS must be finite and > 0");
     if (!std::isfinite(def.holdTimeS) || def.holdTimeS < 0.0)
-        return "SimulatedDeviceDef.holdTimeS must be finite and >= 0";
+        return oneProblem("holdTimeS", "SimulatedDeviceDef.holdTimeS must be finite and >= 0");
     if (!std::isfinite(def.strokeLengthMm) || def.strokeLengthMm < 0.0)
-        return "SimulatedDeviceDef.strokeLengthMm must be finite and >= 0";
-    if (!positiveFinite(def.strokeTimeS)) return "SimulatedDeviceDef.strokeTimeS must be finite and > 0";
-    if (def.scanGridCount < 1 || def.scanGridCount > 64) return "SimulatedDeviceDef.scanGridCount must be in 1..64";
+        return oneProblem("strokeLengthMm", "SimulatedDeviceDef.strokeLengthMm must be finite and >= 0");
+    if (!positiveFinite(def.strokeTimeS))
+        return oneProblem("strokeTimeS", "SimulatedDeviceDef.strokeTimeS must be finite and > 0");
+    if (def.scanGridCount < 1 || def.scanGridCount > 64)
+        return oneProblem("scanGridCount", "SimulatedDeviceDef.scanGridCount must be in 1..64");
     if (!std::isfinite(def.scanPatchSizeMm) || def.scanPatchSizeMm < 0.0)
-        return "SimulatedDeviceDef.scanPatchSizeMm must be finite and >= 0";
-    if (!positiveFinite(def.scanMoveTimeS)) return "SimulatedDeviceDef.scanMoveTimeS must be finite and > 0";
-    if (!positiveFinite(def.scanPressTimeS)) return "SimulatedDeviceDef.scanPressTimeS must be finite and > 0";
+        return oneProblem("scanPatchSizeMm", "SimulatedDeviceDef.scanPatchSizeMm must be finite and >= 0");
+    if (!positiveFinite(def.scanMoveTimeS))
+        return oneProblem("scanMoveTimeS", "SimulatedDeviceDef.scanMoveTimeS must be finite and > 0");
+    if (!positiveFinite(def.scanPressTimeS))
+        return oneProblem("scanPressTimeS", "SimulatedDeviceDef.scanPressTimeS must be finite and > 0");
     if (!std::isfinite(def.scanHoldTimeS) || def.scanHoldTimeS < 0.0)
-        return "SimulatedDeviceDef.scanHoldTimeS must be finite and >= 0";
+        return oneProblem("scanHoldTimeS", "SimulatedDeviceDef.scanHoldTimeS must be finite and >= 0");
     if (!std::isfinite(def.sineAmplitudeMm) || def.sineAmplitudeMm < 0.0)
-        return "SimulatedDeviceDef.sineAmplitudeMm must be finite and >= 0";
-    if (!positiveFinite(def.sineFrequencyHz)) return "SimulatedDeviceDef.sineFrequencyHz must be finite and > 0";
+        return oneProblem("sineAmplitudeMm", "SimulatedDeviceDef.sineAmplitudeMm must be finite and >= 0");
+    if (!positiveFinite(def.sineFrequencyHz))
+        return oneProblem("sineFrequencyHz", "SimulatedDeviceDef.sineFrequencyHz must be finite and > 0");
     if (!(def.spec.maxForceN >= 0.0) || !std::isfinite(def.spec.maxForceN))
-        return "SimulatedDeviceDef.spec.maxForceN must be finite and >= 0";
-    return "";
+        return oneProblem("spec.maxForceN", "SimulatedDeviceDef.spec.maxForceN must be finite and >= 0");
+    return {};
 }
 
 SimulatedDevice::SimulatedDevice(SimTrajectory trajectory, SimulatedDeviceDef def)
     : mTrajectory(trajectory), mDef(std::move(def)), mUnplugAtS(kInf), mStallFromS(kInf), mStallUntilS(kInf) {
     if (trajectory == SimTrajectory::Waypoints)
         throw std::invalid_argument("SimulatedDevice: the Waypoints trajectory needs a waypoint list");
-    const std::string problem = validateSimulatedDeviceDef(mDef);
+    const std::string problem = joinedMessages(validateSimulatedDeviceDef(mDef));
     if (!problem.empty()) throw std::invalid_argument(problem);
     if (mDef.spec.name == simulatedDeviceSpec().name)
         mDef.spec.name = std::string("simulated (") + simTrajectoryName(trajectory) + ")";
@@ -82,7 +89,7 @@ SimulatedDevice::SimulatedDevice(SimTrajectory trajectory, SimulatedDeviceDef de
 SimulatedDevice::SimulatedDevice(std::vector<Waypoint> waypoints, SimulatedDeviceDef def)
     : mTrajectory(SimTrajectory::Waypoints), mDef(std::move(def)), mUnplugAtS(kInf), mStallFromS(kInf),
       mStallUntilS(kInf) {
-    const std::string problem = validateSimulatedDeviceDef(mDef);
+    const std::string problem = joinedMessages(validateSimulatedDeviceDef(mDef));
     if (!problem.empty()) throw std::invalid_argument(problem);
     if (waypoints.empty()) throw std::invalid_argument("SimulatedDevice: empty waypoint list");
     mKeyframes.reserve(waypoints.size());
@@ -100,8 +107,8 @@ SimulatedDevice::SimulatedDevice(std::vector<Waypoint> waypoints, SimulatedDevic
 std::unique_ptr<SimulatedDevice> SimulatedDevice::fromWaypointFile(const std::string& path, std::string& error,
                                                                    SimulatedDeviceDef def) {
     std::vector<Waypoint> waypoints;
-    if (!loadWaypointFile(path, waypoints, error)) return nullptr;
-    const std::string problem = validateSimulatedDeviceDef(def);
+    if (!(error = loadWaypointFile(path, waypoints)).empty()) return nullptr;
+    const std::string problem = joinedMessages(validateSimulatedDeviceDef(def));
     if (!problem.empty()) {
         error = problem;
         return nullptr;

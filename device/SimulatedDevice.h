@@ -4,6 +4,8 @@
 // records the force written to it (tests, CLI) and can fake an unplug or a stalled sample stream,
 // the two faults the safety filter and the loop must survive.
 
+#include "base/params/Problem.h"
+
 #include "device/HapticDevice.h"
 #include "base/concurrency/SeqLock.h"
 #include "device/WaypointFile.h"
@@ -50,7 +52,7 @@ struct SimulatedDeviceDef {
 };
 
 /// Returns "" when the definition is usable, else a message naming the field.
-std::string validateSimulatedDeviceDef(const SimulatedDeviceDef& def);
+Problems validateSimulatedDeviceDef(const SimulatedDeviceDef& def);
 
 /// Threads: setTimeS, read, writeForce and setScene belong to the haptic thread; state, lastForceN,
 /// droppedForceWrites, simulateUnplug, replug, simulateStall and emergencyStop may be called from

@@ -56,15 +56,15 @@ bool parseDouble(std::string_view token, double& value) {
 
 }  // namespace
 
-bool parseWaypoints(std::string_view text, std::string_view sourceName, std::vector<Waypoint>& out,
-                    std::string& error) {
+std::string parseWaypoints(std::string_view text, std::string_view sourceName, std::vector<Waypoint>& out) {
+    std::string error;
     out.clear();
     error.clear();
     const std::string source(sourceName);
     auto fail = [&](std::size_t lineNumber, const std::string& problem) {
         out.clear();
         error = source + ":" + std::to_string(lineNumber) + ": " + problem;
-        return false;
+        return error;
     };
 
     std::size_t lineNumber = 0;
@@ -114,24 +114,26 @@ bool parseWaypoints(std::string_view text, std::string_view sourceName, std::vec
     }
     if (out.empty()) {
         error = source + ": no waypoints (expected lines of 't_s x_mm y_mm z_mm')";
-        return false;
+        return error;
     }
-    return true;
+    return {};
 }
 
-bool loadWaypointFile(const std::string& path, std::vector<Waypoint>& out, std::string& error) {
+std::string loadWaypointFile(const std::string& path, std::vector<Waypoint>& out) {
+    std::string error;
     out.clear();
     if (path.empty()) {
         error = "waypoint file: no path given";
-        return false;
+        return error;
     }
     // The one bounded reader: a FIFO, a device or a directory is refused before a byte is read.
     const std::optional<std::string> text = readInputFile(path, kWaypointFile, error);
-    if (!text) return false;
-    return parseWaypoints(*text, path, out, error);
+    if (!text) return error;
+    return parseWaypoints(*text, path, out);
 }
 
-bool parseWaypointButtons(std::string_view text, std::string_view sourceName, WaypointButtons& out, std::string& error) {
+std::string parseWaypointButtons(std::string_view text, std::string_view sourceName, WaypointButtons& out) {
+    std::string error;
     out = {};
     std::size_t lineNumber = 0;
     while (!text.empty()) {
@@ -153,25 +155,26 @@ bool parseWaypointButtons(std::string_view text, std::string_view sourceName, Wa
             error = where + "'" + std::string(line.substr(2, 7)) + "' needs a time in seconds >= 0, not '" +
                     std::string(number) + "'";
             out = {};
-            return false;
+            return error;
         }
         if (mark) {
             out.marksS.push_back(timeS);
         } else if (out.doneS) {
             error = where + "a second 'done-at' (the examination is finished once)";
             out = {};
-            return false;
+            return error;
         } else {
             out.doneS = timeS;
         }
     }
-    return true;
+    return {};
 }
 
-bool loadWaypointButtons(const std::string& path, WaypointButtons& out, std::string& error) {
+std::string loadWaypointButtons(const std::string& path, WaypointButtons& out) {
+    std::string error;
     const std::optional<std::string> text = readInputFile(path, kWaypointFile, error);
-    if (!text) return false;
-    return parseWaypointButtons(*text, path, out, error);
+    if (!text) return error;
+    return parseWaypointButtons(*text, path, out);
 }
 
 }  // namespace palpate

@@ -23,14 +23,13 @@ inline constexpr double kMaxWaypointCoordinateMm = 1.0e6;
 
 /// Parses waypoint text. Format: fields separated by spaces, tabs or commas; '#' starts a comment;
 /// blank lines are skipped; CRLF is accepted; times strictly increase; at least one waypoint.
-/// On error returns false, leaves `out` empty and sets `error` to "SOURCE:LINE: problem".
-bool parseWaypoints(std::string_view text, std::string_view sourceName, std::vector<Waypoint>& out,
-                    std::string& error);
+/// Returns "" or the problem "SOURCE:LINE: problem" (then `out` is empty).
+std::string parseWaypoints(std::string_view text, std::string_view sourceName, std::vector<Waypoint>& out);
 
 /// Reads and parses a waypoint file through the bounded reader (base/io/InputFile.h): missing
 /// paths, FIFOs, devices, directories, unreadable files and files beyond kWaypointFile's limit
 /// (base/io/FileLimits.h) are errors that name the path.
-bool loadWaypointFile(const std::string& path, std::vector<Waypoint>& out, std::string& error);
+std::string loadWaypointFile(const std::string& path, std::vector<Waypoint>& out);
 
 /// The button presses a waypoint file carries in its comments: "# mark-at T" (Mark) and
 /// "# done-at T" (Finish) lines of a scripted trainee, loop times in seconds. The path device has
@@ -40,10 +39,10 @@ struct WaypointButtons {
     std::optional<double> doneS;
 };
 
-/// Reads those lines; a time that is not a finite number >= 0, or a second "# done-at", is an
-/// error "SOURCE:LINE: problem". Other comments are ignored.
-bool parseWaypointButtons(std::string_view text, std::string_view sourceName, WaypointButtons& out, std::string& error);
+/// Reads those lines: "" or the problem "SOURCE:LINE: problem" (a time that is not a finite number
+/// >= 0, a second "# done-at"). Other comments are ignored.
+std::string parseWaypointButtons(std::string_view text, std::string_view sourceName, WaypointButtons& out);
 /// The same from a file, through the bounded reader.
-bool loadWaypointButtons(const std::string& path, WaypointButtons& out, std::string& error);
+std::string loadWaypointButtons(const std::string& path, WaypointButtons& out);
 
 }  // namespace palpate

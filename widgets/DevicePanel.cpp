@@ -368,7 +368,7 @@ void DevicePanel::requestConnect() {
     }
     DeviceUri parsed;
     std::string error;
-    if (!parseDeviceUri(text.toStdString(), parsed, error)) {
+    if (!(error = parseDeviceUri(text.toStdString(), parsed)).empty()) {
         showError(tr("Cannot connect: %1").arg(QString::fromStdString(error)));
         return;
     }

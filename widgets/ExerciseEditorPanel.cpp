@@ -206,6 +206,17 @@ const QColor kInvalidCell(255, 224, 224);
 const QColor kWarningCell(255, 236, 179);
 const QColor kDefaultRubricText(120, 120, 120);
 
+/// A titled group of `fields` with a form layout, added to `fieldsLayout`.
+QFormLayout* addFormGroup(QWidget* fields, QVBoxLayout* fieldsLayout, QGroupBox*& group, const char* name) {
+    group = new QGroupBox(fields);
+    group->setObjectName(QLatin1String(name));
+    auto* form = new QFormLayout(group);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    form->setRowWrapPolicy(QFormLayout::DontWrapRows);
+    fieldsLayout->addWidget(group);
+    return form;
+}
+
 }  // namespace
 
 ExerciseEditorPanel::ExerciseEditorPanel(ResourceFinder findResource, QWidget* parent)
@@ -254,8 +265,46 @@ QLabel* ExerciseEditorPanel::rowLabel(const char* text) {
 void ExerciseEditorPanel::buildUi() {
     setObjectName(QStringLiteral("exerciseEditorPanel"));
     setStyleSheet(QLatin1String(kStyleSheet));
+    createActions();
+    QHBoxLayout* fileRow = buildFileRow();
+    mTitleLabel = new QLabel(this);
+    mTitleLabel->setObjectName(QStringLiteral("exerciseTitleLabel"));
+    mTitleLabel->setWordWrap(true);
+    mTitleLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // The form scrolls; the file row, the title, the placing hint, the problems and Try it stay put.
+    auto* fields = new QWidget;
+    auto* fieldsLayout = new QVBoxLayout(fields);
+    fieldsLayout->setContentsMargins(0, 0, 0, 0);
+    buildExerciseForm(addFormGroup(fields, fieldsLayout, mExerciseGroup, "exerciseGroup"));
+    buildSceneForm(addFormGroup(fields, fieldsLayout, mSceneGroup, "sceneGroup"));
+    buildLimitsForm(addFormGroup(fields, fieldsLayout, mLimitsGroup, "limitsGroup"));
+    fieldsLayout->addWidget(buildTypeGroup(fields));
+    fieldsLayout->addWidget(buildRubricGroup(fields));
+    fieldsLayout->addStretch(1);
 
-    // Actions first: the buttons show them.
+    auto* scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("exerciseEditorScroll"));
+    scroll->setWidget(fields);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    guardScrollWheel(*scroll);
+
+    QHBoxLayout* previewRow = buildFeedback();
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(fileRow);
+    layout->addWidget(mTitleLabel);
+    layout->addWidget(scroll, 1);
+    layout->addWidget(mPlacingLabel);
+    layout->addWidget(mProblemsLabel);
+    layout->addWidget(mWarningsLabel);
+    layout->addWidget(mMessageLabel);
+    layout->addLayout(previewRow);
+
+    connectEdits();
+}
+
+void ExerciseEditorPanel::createActions() {
     mUndoAction = mUndoStack->createUndoAction(this, tr("Undo"));
     mUndoAction->setObjectName(QStringLiteral("exerciseUndoAction"));
     mUndoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::Key_Z)});
@@ -313,7 +362,9 @@ void ExerciseEditorPanel::buildUi() {
     mMoveDownAction = new QAction(this);
     mMoveDownAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Down));
     connect(mMoveDownAction, &QAction::triggered, this, [this] { moveSelected(+1); });
+}
 
+QHBoxLayout* ExerciseEditorPanel::buildFileRow() {
     // The file row: New (a menu of the three types), Open, Save, Save As, undo, redo; Try it.
     auto toolButton = [this](const char* name, QAction* action) {
         auto* button = new QToolButton(this);
@@ -344,26 +395,10 @@ void ExerciseEditorPanel::buildUi() {
     fileRow->addWidget(mUndoButton);
     fileRow->addWidget(mRedoButton);
 
-    mTitleLabel = new QLabel(this);
-    mTitleLabel->setObjectName(QStringLiteral("exerciseTitleLabel"));
-    mTitleLabel->setWordWrap(true);
-    mTitleLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    return fileRow;
+}
 
-    // The form scrolls; the file row, the title, the placing hint, the problems and Try it stay put.
-    auto* fields = new QWidget;
-    auto* fieldsLayout = new QVBoxLayout(fields);
-    fieldsLayout->setContentsMargins(0, 0, 0, 0);
-    auto newForm = [&](QGroupBox*& group, const char* name) {
-        group = new QGroupBox(fields);
-        group->setObjectName(QLatin1String(name));
-        auto* form = new QFormLayout(group);
-        form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-        form->setRowWrapPolicy(QFormLayout::DontWrapRows);
-        fieldsLayout->addWidget(group);
-        return form;
-    };
-
-    QFormLayout* exerciseForm = newForm(mExerciseGroup, "exerciseGroup");
+void ExerciseEditorPanel::buildExerciseForm(QFormLayout* exerciseForm) {
     mTypeCombo = new QComboBox(mExerciseGroup);
     mTypeCombo->setObjectName(QStringLiteral("exerciseTypeCombo"));
     for (int i = 0; i < 3; ++i) mTypeCombo->addItem(QString());
@@ -376,8 +411,9 @@ void ExerciseEditorPanel::buildUi() {
     mDescriptionEdit->setTabChangesFocus(true);
     mDescriptionEdit->setFixedHeight(mDescriptionEdit->fontMetrics().lineSpacing() * 3 + 12);
     exerciseForm->addRow(rowLabel(QT_TR_NOOP("Description:")), mDescriptionEdit);
+}
 
-    QFormLayout* sceneForm = newForm(mSceneGroup, "sceneGroup");
+void ExerciseEditorPanel::buildSceneForm(QFormLayout* sceneForm) {
     auto pathRow = [&](QComboBox*& combo, QPushButton*& browse, const char* comboName, const char* browseName) {
         auto* row = new QWidget(mSceneGroup);
         auto* layout = new QHBoxLayout(row);
@@ -429,8 +465,9 @@ void ExerciseEditorPanel::buildUi() {
     }
     sceneForm->addRow(rowLabel(QT_TR_NOOP("Tissue preset:")),
                       pathRow(mPresetCombo, mPresetBrowseButton, "tissuePresetCombo", "tissuePresetBrowseButton"));
+}
 
-    QFormLayout* limitsForm = newForm(mLimitsGroup, "limitsGroup");
+void ExerciseEditorPanel::buildLimitsForm(QFormLayout* limitsForm) {
     mTimeLimitSpin = doubleSpin(mLimitsGroup, "timeLimitSpin", 0.0, 3600.0, 1, 5.0);
     limitsForm->addRow(rowLabel(QT_TR_NOOP("Time limit:")), mTimeLimitSpin);
     mDisplacementSpin = doubleSpin(mLimitsGroup, "displacementLimitSpin", 0.0, 1000.0, 2, 0.5);
@@ -450,14 +487,15 @@ void ExerciseEditorPanel::buildUi() {
     mNeedsBudgetSpin->setSuffix(QStringLiteral(" µs"));
     mNeedsBudgetSpin->setToolTip(tr("Longest haptic tick the model may take (needs.budget_us)"));
     limitsForm->addRow(rowLabel(QT_TR_NOOP("Tick budget:")), mNeedsBudgetSpin);
+}
 
+QGroupBox* ExerciseEditorPanel::buildTypeGroup(QWidget* fields) {
     mTypeGroup = new QGroupBox(fields);
     mTypeGroup->setObjectName(QStringLiteral("typeGroup"));
     auto* typeLayout = new QVBoxLayout(mTypeGroup);
     mTypePages = new QStackedWidget(mTypeGroup);
     mTypePages->setObjectName(QStringLiteral("typePages"));
     typeLayout->addWidget(mTypePages);
-    fieldsLayout->addWidget(mTypeGroup);
     buildTypePages();
     // A stacked widget is as tall as its tallest page; the type group should fit the page shown.
     const auto fitPage = [this](int current) {
@@ -469,6 +507,10 @@ void ExerciseEditorPanel::buildUi() {
     connect(mTypePages, &QStackedWidget::currentChanged, this, fitPage);
     fitPage(mTypePages->currentIndex());
 
+    return mTypeGroup;
+}
+
+QGroupBox* ExerciseEditorPanel::buildRubricGroup(QWidget* fields) {
     mRubricGroup = new QGroupBox(fields);
     mRubricGroup->setObjectName(QStringLiteral("rubricGroup"));
     auto* rubricLayout = new QVBoxLayout(mRubricGroup);
@@ -499,17 +541,10 @@ void ExerciseEditorPanel::buildUi() {
     rubricRow->addWidget(mRubricTotalLabel, 1);
     rubricRow->addWidget(mResetRubricButton);
     rubricLayout->addLayout(rubricRow);
-    fieldsLayout->addWidget(mRubricGroup);
-    fieldsLayout->addStretch(1);
+    return mRubricGroup;
+}
 
-    auto* scroll = new QScrollArea(this);
-    scroll->setObjectName(QStringLiteral("exerciseEditorScroll"));
-    scroll->setWidget(fields);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    guardScrollWheel(*scroll);
-
+QHBoxLayout* ExerciseEditorPanel::buildFeedback() {
     mPlacingLabel = new QLabel(this);
     mPlacingLabel->setObjectName(QStringLiteral("placingLabel"));
     mPlacingLabel->setWordWrap(true);
@@ -539,17 +574,11 @@ void ExerciseEditorPanel::buildUi() {
     previewRow->addStretch(1);
     previewRow->addWidget(mPreviewButton);
 
-    auto* layout = new QVBoxLayout(this);
-    layout->addLayout(fileRow);
-    layout->addWidget(mTitleLabel);
-    layout->addWidget(scroll, 1);
-    layout->addWidget(mPlacingLabel);
-    layout->addWidget(mProblemsLabel);
-    layout->addWidget(mWarningsLabel);
-    layout->addWidget(mMessageLabel);
-    layout->addLayout(previewRow);
+    return previewRow;
+}
 
-    // Edits: each one an undo step.
+void ExerciseEditorPanel::connectEdits() {
+    // Each edit is one undo step.
     connect(mTypeCombo, &QComboBox::activated, this, [this](int index) {
         if (index >= 0 && index < 3) changeType(kTypes[index]);
     });
@@ -1516,9 +1545,9 @@ QStringList ExerciseEditorPanel::blockingProblems() const { return mBlocking; }
 void ExerciseEditorPanel::refresh() {
     const Exercise& e = mExercise;
     QStringList blocking;
-    for (const std::string& problem : validateExercise(e)) blocking << qs(problem);
+    for (const std::string& problem : messagesOf(validateExercise(e))) blocking << qs(problem);
     if (e.needs)
-        for (const std::string& problem : validateLodNeeds(*e.needs)) blocking << qs(problem);
+        for (const std::string& problem : messagesOf(validateLodNeeds(*e.needs))) blocking << qs(problem);
     const QString meshFile = resolved(e, e.meshPath);
     if (!e.meshPath.empty() && meshFile.isEmpty())
         blocking << tr("mesh: '%1' is not found beside the exercise file or under resources/").arg(qs(e.meshPath));
@@ -1588,83 +1617,87 @@ void ExerciseEditorPanel::refresh() {
     }
     mMarkers = markers;
 
-    // Show them: the list under the form, the fields and cells the problems name.
-    {
-        const Guard guard(mShowing);
-        QStringList lines;
-        for (const QString& p : mProblems) lines << QStringLiteral("• ") + p.toHtmlEscaped();
-        mProblemsLabel->setText(lines.join(QStringLiteral("<br>")));
-        mProblemsLabel->setVisible(!mProblems.isEmpty());
-        lines.clear();
-        for (const QString& w : mWarnings) lines << QStringLiteral("⚠ ") + w.toHtmlEscaped();
-        mWarningsLabel->setText(lines.join(QStringLiteral("<br>")));
-        mWarningsLabel->setVisible(!mWarnings.isEmpty());
-        QSet<QString> keys, warned;
-        for (const QString& p : mProblems) keys.insert(problemKey(p));
-        for (const QString& w : mWarnings) warned.insert(problemKey(w));
-        const std::pair<QWidget*, const char*> fields[] = {
-            {mNameEdit, "name"},
-            {mMeshCombo, "mesh"},
-            {mMeshUnitCombo, "mesh_unit"},
-            {mMeshScaleSpin, "mesh_unit"},
-            {mPresetCombo, "tissue_preset"},
-            {mTimeLimitSpin, "time_limit_s"},
-            {mDisplacementSpin, "damage.displacement_limit_mm"},
-            {mExcessiveSpin, "force.excessive_n"},
-            {mLumpRadiusSpin, "find_lump.inclusion.radius_mm"},
-            {mLumpStiffnessSpin, "find_lump.inclusion.stiffness_factor"},
-            {mTraceMinSpin, "trace.force_min_n"},
-            {mTraceMaxSpin, "trace.force_max_n"},
-            {mTraceToleranceSpin, "trace.tolerance_mm"},
-            {mNeedsErrorSpin, "needs.max_error"},
-            {mNeedsBudgetSpin, "needs.budget_us"}};
-        for (const auto& [widget, key] : fields) {
-            const bool invalid = keys.contains(QLatin1String(key));
-            if (widget->property("invalid").toBool() != invalid) {
-                widget->setProperty("invalid", invalid);
-                widget->style()->unpolish(widget);
-                widget->style()->polish(widget);
-            }
-        }
-        for (int r = 0; r < mTargetTable->rowCount(); ++r)
-            for (int c = kTargetVertex; c < kTargetColumns; ++c) {
-                const QString key = QStringLiteral("press_targets.targets[%1]").arg(r);
-                const QString cellKey = key + QLatin1Char('.') + QLatin1String(kTargetKeys[c]);
-                const bool invalid = keys.contains(cellKey) || (c == kTargetVertex && keys.contains(key));
-                const QVariant background = invalid                   ? QVariant(QBrush(kInvalidCell))
-                                            : warned.contains(cellKey) ? QVariant(QBrush(kWarningCell))
-                                                                       : QVariant();
-                if (QTableWidgetItem* it = mTargetTable->item(r, c); it && it->data(Qt::BackgroundRole) != background)
-                    it->setData(Qt::BackgroundRole, background);
-            }
-        for (int r = 0; r < mRubricTable->rowCount(); ++r)
-            for (int c = kRubricWeight; c < kRubricColumns; ++c) {
-                QTableWidgetItem* it = mRubricTable->item(r, c);
-                if (!it) continue;
-                const QString key = QStringLiteral("rubric.") + mRubricTable->item(r, kRubricMetric)->text();
-                const bool invalid = keys.contains(key + QLatin1Char('.') + QLatin1String(kRubricKeys[c])) ||
-                                     keys.contains(key);
-                const QVariant background = invalid ? QVariant(QBrush(kInvalidCell)) : QVariant();
-                if (it->data(Qt::BackgroundRole) != background) it->setData(Qt::BackgroundRole, background);
-            }
-
-        const bool hasSelection = mSelected >= 0;
-        for (QWidget* w : {static_cast<QWidget*>(mRemoveTargetButton), static_cast<QWidget*>(mMoveTargetButton),
-                           static_cast<QWidget*>(mRemovePointButton), static_cast<QWidget*>(mMovePointButton)})
-            w->setEnabled(hasSelection);
-        const int count = e.type == ExerciseType::PressTargets ? int(e.pressTargets.targets.size()) : int(e.trace.path.size());
-        for (QToolButton* up : {mTargetUpButton, mPointUpButton}) up->setEnabled(mSelected > 0);
-        for (QToolButton* down : {mTargetDownButton, mPointDownButton}) down->setEnabled(hasSelection && mSelected + 1 < count);
-        mPreviewAction->setEnabled(mBlocking.isEmpty());
-        mPreviewButton->setEnabled(mBlocking.isEmpty());
-        mShowMeshButton->setEnabled(!meshFile.isEmpty() && !drawnMeshMatches());
-        mMeshStateLabel->setText(meshFile.isEmpty()   ? tr("Not found.")
-                                 : drawnMeshMatches() ? tr("Drawn in the viewport.")
-                                                      : tr("Not drawn in the viewport."));
-    }
+    showProblems(meshFile);
     updatePlacingUi();
     updateTitle();
     emit markersChanged(mMarkers);
+}
+
+void ExerciseEditorPanel::showProblems(const QString& meshFile) {
+    // The list under the form, the fields and cells the problems name, and what can be pressed.
+    const Exercise& e = mExercise;
+    const Guard guard(mShowing);
+    QStringList lines;
+    for (const QString& p : mProblems) lines << QStringLiteral("• ") + p.toHtmlEscaped();
+    mProblemsLabel->setText(lines.join(QStringLiteral("<br>")));
+    mProblemsLabel->setVisible(!mProblems.isEmpty());
+    lines.clear();
+    for (const QString& w : mWarnings) lines << QStringLiteral("⚠ ") + w.toHtmlEscaped();
+    mWarningsLabel->setText(lines.join(QStringLiteral("<br>")));
+    mWarningsLabel->setVisible(!mWarnings.isEmpty());
+    QSet<QString> keys, warned;
+    for (const QString& p : mProblems) keys.insert(problemKey(p));
+    for (const QString& w : mWarnings) warned.insert(problemKey(w));
+    const std::pair<QWidget*, const char*> fields[] = {{mNameEdit, "name"},
+                                                       {mMeshCombo, "mesh"},
+                                                       {mMeshUnitCombo, "mesh_unit"},
+                                                       {mMeshScaleSpin, "mesh_unit"},
+                                                       {mPresetCombo, "tissue_preset"},
+                                                       {mTimeLimitSpin, "time_limit_s"},
+                                                       {mDisplacementSpin, "damage.displacement_limit_mm"},
+                                                       {mExcessiveSpin, "force.excessive_n"},
+                                                       {mLumpRadiusSpin, "find_lump.inclusion.radius_mm"},
+                                                       {mLumpStiffnessSpin, "find_lump.inclusion.stiffness_factor"},
+                                                       {mTraceMinSpin, "trace.force_min_n"},
+                                                       {mTraceMaxSpin, "trace.force_max_n"},
+                                                       {mTraceToleranceSpin, "trace.tolerance_mm"},
+                                                       {mNeedsErrorSpin, "needs.max_error"},
+                                                       {mNeedsBudgetSpin, "needs.budget_us"}};
+    for (const auto& [widget, key] : fields) {
+        const bool invalid = keys.contains(QLatin1String(key));
+        if (widget->property("invalid").toBool() != invalid) {
+            widget->setProperty("invalid", invalid);
+            widget->style()->unpolish(widget);
+            widget->style()->polish(widget);
+        }
+    }
+    for (int r = 0; r < mTargetTable->rowCount(); ++r)
+        for (int c = kTargetVertex; c < kTargetColumns; ++c) {
+            const QString key = QStringLiteral("press_targets.targets[%1]").arg(r);
+            const QString cellKey = key + QLatin1Char('.') + QLatin1String(kTargetKeys[c]);
+            const bool invalid = keys.contains(cellKey) || (c == kTargetVertex && keys.contains(key));
+            const QVariant background = invalid                    ? QVariant(QBrush(kInvalidCell))
+                                        : warned.contains(cellKey) ? QVariant(QBrush(kWarningCell))
+                                                                   : QVariant();
+            if (QTableWidgetItem* it = mTargetTable->item(r, c); it && it->data(Qt::BackgroundRole) != background)
+                it->setData(Qt::BackgroundRole, background);
+        }
+    for (int r = 0; r < mRubricTable->rowCount(); ++r)
+        for (int c = kRubricWeight; c < kRubricColumns; ++c) {
+            QTableWidgetItem* it = mRubricTable->item(r, c);
+            if (!it) continue;
+            const QString key = QStringLiteral("rubric.") + mRubricTable->item(r, kRubricMetric)->text();
+            const bool invalid = keys.contains(key + QLatin1Char('.') + QLatin1String(kRubricKeys[c])) ||
+                                 keys.contains(key);
+            const QVariant background = invalid ? QVariant(QBrush(kInvalidCell)) : QVariant();
+            if (it->data(Qt::BackgroundRole) != background) it->setData(Qt::BackgroundRole, background);
+        }
+
+    const bool hasSelection = mSelected >= 0;
+    for (QWidget* w : {static_cast<QWidget*>(mRemoveTargetButton), static_cast<QWidget*>(mMoveTargetButton),
+                       static_cast<QWidget*>(mRemovePointButton), static_cast<QWidget*>(mMovePointButton)})
+        w->setEnabled(hasSelection);
+    const int count = e.type == ExerciseType::PressTargets ? int(e.pressTargets.targets.size())
+                                                           : int(e.trace.path.size());
+    for (QToolButton* up : {mTargetUpButton, mPointUpButton}) up->setEnabled(mSelected > 0);
+    for (QToolButton* down : {mTargetDownButton, mPointDownButton})
+        down->setEnabled(hasSelection && mSelected + 1 < count);
+    mPreviewAction->setEnabled(mBlocking.isEmpty());
+    mPreviewButton->setEnabled(mBlocking.isEmpty());
+    mShowMeshButton->setEnabled(!meshFile.isEmpty() && !drawnMeshMatches());
+    mMeshStateLabel->setText(meshFile.isEmpty()   ? tr("Not found.")
+                             : drawnMeshMatches() ? tr("Drawn in the viewport.")
+                                                  : tr("Not drawn in the viewport."));
 }
 
 TouchReach ExerciseEditorPanel::touchReach() { return TouchReach{Viewport::kMaxTouchDepthMm, Viewport::kTouchDepthStepMm}; }

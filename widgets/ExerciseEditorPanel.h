@@ -32,7 +32,9 @@ class QAction;
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QGroupBox;
+class QHBoxLayout;
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -184,6 +186,18 @@ private:
     };
 
     void buildUi();
+    void createActions();
+    /// New, Open, Save, Save As, undo and redo.
+    QHBoxLayout* buildFileRow();
+    void buildExerciseForm(QFormLayout* form);
+    void buildSceneForm(QFormLayout* form);
+    void buildLimitsForm(QFormLayout* form);
+    QGroupBox* buildTypeGroup(QWidget* fields);
+    QGroupBox* buildRubricGroup(QWidget* fields);
+    /// The placing hint, problems, warnings and messages below the form; returns Try it's row.
+    QHBoxLayout* buildFeedback();
+    /// Every field's edits become undo steps.
+    void connectEdits();
     void retranslateUi();
     void buildTypePages();
     /// Sets every widget from `exercise` without recording a step (undo/redo, open, new).
@@ -204,6 +218,9 @@ private:
     void resetRubric();
     /// Recomputes the problems and the markers and shows them (and the title, the buttons).
     void refresh();
+    /// Shows mProblems and mWarnings (the lists, and the fields and cells they name) and enables
+    /// the buttons that apply.
+    void showProblems(const QString& meshFile);
     void updateTitle();
     void updatePlacingUi();
     void showMessage(const QString& text, bool error);

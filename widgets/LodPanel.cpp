@@ -386,7 +386,7 @@ QStringList LodPanel::needsProblems() const {
     // naming the field as it is labelled and in its unit (%, µs).
     QStringList problems;
     const QLocale locale;
-    for (const std::string& problem : validateLodNeeds(mNeeds, "")) {
+    for (const std::string& problem : messagesOf(validateLodNeeds(mNeeds, ""))) {
         if (problem.rfind("max_error", 0) == 0) {
             const double percent = mNeeds.maxErrorFraction * 100.0;
             problems << (percent > 0.0 && std::isfinite(percent)
@@ -411,7 +411,7 @@ void LodPanel::onNeedsEdited() {
     mNeeds = {mErrorSpin->value() / 100.0, mBudgetSpin->value()};
     const QStringList problems = needsProblems();
     bool errorBad = false, budgetBad = false;
-    for (const std::string& problem : validateLodNeeds(mNeeds, "")) {
+    for (const std::string& problem : messagesOf(validateLodNeeds(mNeeds, ""))) {
         errorBad = errorBad || problem.rfind("max_error", 0) == 0;
         budgetBad = budgetBad || problem.rfind("budget_us", 0) == 0;
     }
@@ -460,7 +460,7 @@ bool LodPanel::plan() {
         setStatus(tr("Fix the targets first: %1").arg(problems.join(QLatin1Char(' '))), true);
         return false;
     }
-    if (const std::string e = validateLodMeasureDef(mMeasureDef); !e.empty()) {
+    if (const std::string e = joinedMessages(validateLodMeasureDef(mMeasureDef)); !e.empty()) {
         const QString error = QString::fromStdString(e);
         setStatus(tr("Cannot measure: %1").arg(error), true);
         emit planFailed(error);

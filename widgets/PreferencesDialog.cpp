@@ -139,7 +139,7 @@ PreferencesDialog::PreferencesDialog(QWidget* parent) : QDialog(parent) {
     for (const DeviceSchemeInfo& scheme : listDeviceSchemes()) {
         DeviceUri parsed;
         std::string ignored;
-        if (!parseDeviceUri(scheme.uri, parsed, ignored)) continue;  // forms like sim:path:FILE: type them
+        if (!(ignored = parseDeviceUri(scheme.uri, parsed)).empty()) continue;  // forms like sim:path:FILE: type them
         const QString uri = QString::fromStdString(scheme.uri);
         mDevice->addItem(uri, uri);
         mDevice->setItemData(mDevice->count() - 1, QString::fromStdString(scheme.description), Qt::ToolTipRole);
@@ -260,7 +260,7 @@ void PreferencesDialog::validate() {
     if (!p.deviceUri.isEmpty()) {
         DeviceUri parsed;
         std::string error;
-        if (!parseDeviceUri(p.deviceUri.toStdString(), parsed, error))
+        if (!(error = parseDeviceUri(p.deviceUri.toStdString(), parsed)).empty())
             mProblem = tr("Device: %1").arg(QString::fromStdString(error));
     }
     if (mProblem.isEmpty() && !p.dataFolder.isEmpty() && QDir::isRelativePath(p.dataFolder))

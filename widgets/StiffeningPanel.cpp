@@ -94,7 +94,7 @@ bool StiffeningPanel::compute() {
     def.material = hyperelasticMaterialOf(mContact);
     def.toolRadiusMm = mContact.toolRadiusMm;
     setStiffeningDepths(def, mDepthSpin->value() / mContact.toolRadiusMm);
-    if (const std::string e = validateStiffeningCalibrationDef(def); !e.empty()) {
+    if (const std::string e = joinedMessages(validateStiffeningCalibrationDef(def)); !e.empty()) {
         setStatus(tr("Cannot compute: %1").arg(QString::fromStdString(e)), true);
         return false;
     }

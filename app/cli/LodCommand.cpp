@@ -59,7 +59,7 @@ std::string levelOptionsFromArgs(const Args& args, LevelDef& options) {
         if (!r) return "--ratio: '" + *text + "' is not a number";
         options.vertexRatio = *r;
     }
-    if (const std::string e = validateLevelDef(options); !e.empty()) return e;
+    if (const std::string e = joinedMessages(validateLevelDef(options)); !e.empty()) return e;
     return {};
 }
 
@@ -252,7 +252,7 @@ int planCommand(const Args& args) {
         return 2;
     }
     // Name the options the user typed, not the file keys, when the values came from the command line.
-    const std::vector<std::string> needsProblems = validateLodNeeds(*needs, "");
+    const std::vector<std::string> needsProblems = messagesOf(validateLodNeeds(*needs, ""));
     for (std::string problem : needsProblems) {
         if (args.option("error") && problem.rfind("max_error", 0) == 0) problem = "--error" + problem.substr(9);
         if (args.option("budget-us") && problem.rfind("budget_us", 0) == 0) problem = "--budget-us" + problem.substr(9);
@@ -297,7 +297,7 @@ int planCommand(const Args& args) {
         }
         def.timing.repeats = int(*n);
     }
-    if (const std::string e = validateLodMeasureDef(def); !e.empty()) {
+    if (const std::string e = joinedMessages(validateLodMeasureDef(def)); !e.empty()) {
         std::cerr << me << e << "\n";
         return 2;
     }

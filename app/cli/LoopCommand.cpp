@@ -43,7 +43,7 @@ int loopCommand(const std::vector<std::string>& words) {
     def.rateHz = rate.value_or(-1.0);
     def.spinFraction = spinFraction.value_or(-1.0);
     def.trySchedFifo = !args.flag("no-fifo");
-    if (const std::string problem = validateHapticLoopDef(def); !problem.empty()) {
+    if (const std::string problem = joinedMessages(validateHapticLoopDef(def)); !problem.empty()) {
         std::cerr << "loop: " << problem << "\n";
         return 2;
     }

@@ -61,7 +61,7 @@ int runCommand(const std::vector<std::string>& words) {
         const std::string device = args.option("device").value_or("");
         if (device.starts_with("sim:path:") && !args.option("mark-at") && !args.option("done-at")) {
             WaypointButtons buttons;
-            if (!loadWaypointButtons(device.substr(9), buttons, problem)) {
+            if (!(problem = loadWaypointButtons(device.substr(9), buttons)).empty()) {
                 std::cerr << "run: " << problem << "\n";
                 return 1;
             }
@@ -140,7 +140,7 @@ int runCommand(const std::vector<std::string>& words) {
     HapticLoopDef def;
     def.rateHz = preset.hapticRateHz;
     def.trySchedFifo = !args.flag("no-fifo");
-    if (const std::string problem = validateHapticLoopDef(def); !problem.empty()) {
+    if (const std::string problem = joinedMessages(validateHapticLoopDef(def)); !problem.empty()) {
         std::cerr << "run: " << problem << "\n";
         return 2;
     }
@@ -178,7 +178,7 @@ int runCommand(const std::vector<std::string>& words) {
         }
         DeviceUri parsedUri;
         std::string ignored;
-        if (parseDeviceUri(uri, parsedUri, ignored) && !parsedUri.path.empty())
+        if ((ignored = parseDeviceUri(uri, parsedUri)).empty() && !parsedUri.path.empty())
             inputs.push_back({parsedUri.path,
                               parsedUri.kind == DeviceKind::Replay ? "replayed recording" : "waypoint"});
         if (const std::string problem = outputIsAnInput("record", *recordPath, inputs); !problem.empty()) {
@@ -209,7 +209,7 @@ int runCommand(const std::vector<std::string>& words) {
         }
     }
     // Refused before the session starts: what the reader would refuse is never recorded.
-    if (const std::string problem = validateRecordingHeader(header); recordPath && !problem.empty()) {
+    if (const std::string problem = joinedMessages(validateRecordingHeader(header)); recordPath && !problem.empty()) {
         std::cerr << "run: " << *recordPath << ": not recorded: " << problem << "\n";
         return 1;
     }

@@ -51,7 +51,7 @@ ToolContactChoice toolContactFromArgs(const Args& args) {
             c.source = "command line";
         }
     }
-    if (const std::string e = validateToolContact(c.contact); !e.empty()) c.error = e;
+    if (const std::string e = joinedMessages(validateToolContact(c.contact)); !e.empty()) c.error = e;
     return c;
 }
 

@@ -183,7 +183,7 @@ std::optional<Staircase> ExerciseController::traineeStaircase(const Exercise& ex
 
 QString ExerciseController::begin(const Exercise& requested, bool preview) {
     if (running()) return tr("An exercise is already running: stop it first.");
-    std::vector<std::string> errors = validateExercise(requested);
+    std::vector<std::string> errors = messagesOf(validateExercise(requested));
     if (!errors.empty()) return joined(errors);
     // A staircase runs the trainee's trial at their level (docs/scoring.md, "Staircase").
     mStaircaseKey.clear();

@@ -233,7 +233,7 @@ void HapticSession::prepareDevice(HapticDevice& deviceRef, const TissueMesh& mes
 bool HapticSession::opensSlowly(const std::string& uri) {
     DeviceUri parsed;
     std::string ignored;
-    if (!parseDeviceUri(uri, parsed, ignored)) return false;
+    if (!(ignored = parseDeviceUri(uri, parsed)).empty()) return false;
     return parsed.kind == DeviceKind::Falcon || parsed.kind == DeviceKind::SpaceMouse || parsed.kind == DeviceKind::Hid ||
            parsed.kind == DeviceKind::HidPid;
 }

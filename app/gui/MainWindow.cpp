@@ -78,14 +78,14 @@ bool isMeshFile(const QString& path) {
 bool isMouseUri(const std::string& uri) {
     DeviceUri parsed;
     std::string ignored;
-    return parseDeviceUri(uri, parsed, ignored) && parsed.kind == DeviceKind::Mouse;
+    return (ignored = parseDeviceUri(uri, parsed)).empty() && parsed.kind == DeviceKind::Mouse;
 }
 
 /// A device that plays a script or a recording: nobody's hand is on it.
 bool isScriptedUri(const std::string& uri) {
     DeviceUri parsed;
     std::string ignored;
-    if (!parseDeviceUri(uri, parsed, ignored)) return false;
+    if (!(ignored = parseDeviceUri(uri, parsed)).empty()) return false;
     return parsed.kind == DeviceKind::SimPress || parsed.kind == DeviceKind::SimStroke ||
            parsed.kind == DeviceKind::SimScan || parsed.kind == DeviceKind::SimSine ||
            parsed.kind == DeviceKind::SimPath || parsed.kind == DeviceKind::Replay;

@@ -21,6 +21,11 @@ struct Problem {
 
 using Problems = std::vector<Problem>;
 
+/// One problem of `field` (the validators that stop at the first problem they find).
+inline Problems oneProblem(std::string field, std::string message) {
+    return {Problem{std::move(field), -1, -1, std::move(message)}};
+}
+
 /// The messages alone, in order (for a log line or a list shown as it is).
 inline std::vector<std::string> messagesOf(const Problems& problems) {
     std::vector<std::string> out;

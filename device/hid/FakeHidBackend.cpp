@@ -168,15 +168,16 @@ std::unique_ptr<HidTransport> FakeHidBackend::open(const HidDeviceInfo& info, st
     return std::make_unique<FakeHidTransport>(device);
 }
 
-bool FakeHidBackend::reportDescriptor(const HidDeviceInfo& info, std::vector<std::uint8_t>& out, std::string& error) {
+std::string FakeHidBackend::reportDescriptor(const HidDeviceInfo& info, std::vector<std::uint8_t>& out) {
+    std::string error;
     auto device = find(info.path);
     out = device ? device->reportDescriptor() : std::vector<std::uint8_t>{};
     if (out.empty()) {
         error = "HID device " + formatVidPid(info.vendorId, info.productId) + " at " + info.path +
                 ": no report descriptor";
-        return false;
+        return error;
     }
-    return true;
+    return {};
 }
 
 }  // namespace palpate

@@ -79,7 +79,7 @@ public:
 
     std::vector<HidDeviceInfo> enumerate(std::uint16_t vendorId = 0, std::uint16_t productId = 0) override;
     std::unique_ptr<HidTransport> open(const HidDeviceInfo& info, std::string& error) override;
-    bool reportDescriptor(const HidDeviceInfo& info, std::vector<std::uint8_t>& out, std::string& error) override;
+    std::string reportDescriptor(const HidDeviceInfo& info, std::vector<std::uint8_t>& out) override;
 
 private:
     std::shared_ptr<FakeHidDevice> find(const std::string& path) const;

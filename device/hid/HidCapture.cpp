@@ -5,12 +5,13 @@
 
 namespace palpate {
 
-bool loadHidCapture(const std::string& path, std::vector<FakeHidRead>& reads, std::string& error) {
+std::string loadHidCapture(const std::string& path, std::vector<FakeHidRead>& reads) {
+    std::string error;
     reads.clear();
     std::ifstream in(path);
     if (!in) {
         error = "HID capture '" + path + "': cannot be read";
-        return false;
+        return error;
     }
     std::string line;
     int number = 0;
@@ -25,7 +26,7 @@ bool loadHidCapture(const std::string& path, std::vector<FakeHidRead>& reads, st
             if (word == "timeout" || word == "error") {
                 if (!bytes.empty() || special) {
                     error = "HID capture '" + path + "' line " + std::to_string(number) + ": '" + word + "' must stand alone";
-                    return false;
+                    return error;
                 }
                 reads.push_back(word == "timeout" ? FakeHidRead::timeout() : FakeHidRead::error());
                 special = true;
@@ -40,13 +41,13 @@ bool loadHidCapture(const std::string& path, std::vector<FakeHidRead>& reads, st
             }
             if (special || used != word.size() || word.size() > 2 || value > 0xff) {
                 error = "HID capture '" + path + "' line " + std::to_string(number) + ": '" + word + "' is not a hex byte";
-                return false;
+                return error;
             }
             bytes.push_back(std::uint8_t(value));
         }
         if (!bytes.empty()) reads.push_back(FakeHidRead::bytes(std::move(bytes)));
     }
-    return true;
+    return {};
 }
 
 }  // namespace palpate

@@ -10,7 +10,7 @@
 
 namespace palpate {
 
-/// Parses a capture; false with `error` naming the file and line.
-bool loadHidCapture(const std::string& path, std::vector<FakeHidRead>& reads, std::string& error);
+/// Parses a capture: "" or the problem naming the file and line.
+std::string loadHidCapture(const std::string& path, std::vector<FakeHidRead>& reads);
 
 }  // namespace palpate

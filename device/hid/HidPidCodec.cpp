@@ -44,9 +44,10 @@ bool descriptorHasPid(const HidReportDescriptor& descriptor) {
     return false;
 }
 
-bool resolveHidPidLayout(const std::uint8_t* data, std::size_t length, HidPidLayout& out, std::string& error) {
+std::string resolveHidPidLayout(const std::uint8_t* data, std::size_t length, HidPidLayout& out) {
+    std::string error;
     out = HidPidLayout{};
-    if (!parseHidReportDescriptor(data, length, out.descriptor, error)) return false;
+    if (!(error = parseHidReportDescriptor(data, length, out.descriptor)).empty()) return error;
     const HidReportDescriptor& d = out.descriptor;
     struct Need {
         const HidField** slot;
@@ -68,7 +69,7 @@ bool resolveHidPidLayout(const std::uint8_t* data, std::size_t length, HidPidLay
         *n.slot = findOut(d, n.collection, n.usage);
         if (!*n.slot) {
             error = "not a HID PID device we can drive: its report descriptor has no output field " + std::string(n.name);
-            return false;
+            return error;
         }
     }
     out.gain = findOut(d, pid::kSetEffectReport, pid::kGain);
@@ -86,7 +87,7 @@ bool resolveHidPidLayout(const std::uint8_t* data, std::size_t length, HidPidLay
     out.operationId = out.operation->reportId;
     out.deviceControlId = out.deviceControl->reportId;
     out.createNewEffectId = out.createNewEffectType ? out.createNewEffectType->reportId : 0;
-    return true;
+    return {};
 }
 
 std::vector<std::uint8_t> buildPidSetEffect(const HidPidLayout& layout, std::uint8_t blockIndex, std::uint32_t durationMs,

@@ -57,10 +57,10 @@ struct HidPidLayout {
     std::uint8_t setEffectId = 0, constantForceId = 0, operationId = 0, deviceControlId = 0, createNewEffectId = 0;
 };
 
-/// Finds the PID reports; false with `error` naming the first missing usage (the device is then
+/// Finds the PID reports: "" or the problem naming the first missing usage (the device is then
 /// not a PID joystick we can drive). Keeps a copy of the descriptor; fields point into it, so the
 /// layout must not be copied (it is moved only as a whole unique_ptr by its owner).
-bool resolveHidPidLayout(const std::uint8_t* descriptor, std::size_t length, HidPidLayout& out, std::string& error);
+std::string resolveHidPidLayout(const std::uint8_t* descriptor, std::size_t length, HidPidLayout& out);
 
 /// Whether the descriptor declares PID usages at all (for `palpate-cli devices`).
 bool descriptorHasPid(const HidReportDescriptor& descriptor);

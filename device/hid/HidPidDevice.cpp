@@ -48,7 +48,8 @@ bool HidPidDevice::send(const std::vector<std::uint8_t>& report, bool feature) {
     return n >= 0;
 }
 
-bool HidPidDevice::connect(std::string& error) {
+std::string HidPidDevice::connect() {
+    std::string error;
     const std::string what = mSelector.any ? std::string("HID PID joystick")
                                            : "HID PID device " + formatVidPid(mSelector.vendorId, mSelector.productId);
     std::string lastProblem;
@@ -56,13 +57,13 @@ bool HidPidDevice::connect(std::string& error) {
         if (!mSelector.matches(info)) continue;
         std::vector<std::uint8_t> descriptor;
         std::string descriptorError;
-        if (!mBackend->reportDescriptor(info, descriptor, descriptorError)) {
+        if (!(descriptorError = mBackend->reportDescriptor(info, descriptor)).empty()) {
             lastProblem = descriptorError;
             continue;
         }
         auto layout = std::make_unique<HidPidLayout>();
         std::string layoutError;
-        if (!resolveHidPidLayout(descriptor.data(), descriptor.size(), *layout, layoutError)) {
+        if (!(layoutError = resolveHidPidLayout(descriptor.data(), descriptor.size(), *layout)).empty()) {
             lastProblem = "HID device " + formatVidPid(info.vendorId, info.productId) + " at " + info.path + ": " + layoutError;
             continue;
         }
@@ -97,12 +98,12 @@ bool HidPidDevice::connect(std::string& error) {
             error = what + " at " + info.path + ": uploading the effect failed (" + mTransport->lastError() + ")";
             mTransport.reset();
             mLayout.reset();
-            return false;
+            return error;
         }
-        return true;
+        return {};
     }
     error = what + ": " + (lastProblem.empty() ? "not found ('palpate-cli devices' lists what is connected)" : lastProblem);
-    return false;
+    return error;
 }
 
 bool HidPidDevice::open() {
@@ -114,7 +115,7 @@ bool HidPidDevice::open() {
     }
     mState.store(DeviceState::Opening);
     std::string error;
-    if (!connect(error)) {
+    if (!(error = connect()).empty()) {
         setError(error);
         mState.store(DeviceState::Disconnected);
         return false;
@@ -157,7 +158,7 @@ void HidPidDevice::ioLoop() {
         if (!mTransport) {
             if (!mIo.sleepFor(std::chrono::milliseconds(mDef.reconnectPeriodMs))) break;
             std::string error;
-            if (connect(error)) {
+            if ((error = connect()).empty()) {
                 lastDirectionDeg = 0.0;
                 lastMagnitude = 0.0;
                 if (!mStopped.load()) mState.store(DeviceState::Ready);

@@ -52,7 +52,7 @@ private:
         glm::vec3 positionMm{0.0f};
         std::uint32_t buttons = 0;
     };
-    bool connect(std::string& error);
+    std::string connect();
     void ioLoop();
     bool send(const std::vector<std::uint8_t>& report, bool feature = false);
     void stopEffects();

@@ -80,12 +80,13 @@ const HidField* HidReportDescriptor::find(HidReportType type, std::uint32_t coll
     return nullptr;
 }
 
-bool parseHidReportDescriptor(const std::uint8_t* data, std::size_t length, HidReportDescriptor& out, std::string& error) {
+std::string parseHidReportDescriptor(const std::uint8_t* data, std::size_t length, HidReportDescriptor& out) {
+    std::string error;
     out = HidReportDescriptor{};
     error.clear();
     if (data == nullptr || length == 0) {
         error = "report descriptor is empty";
-        return false;
+        return error;
     }
     GlobalState global;
     std::vector<GlobalState> stack;
@@ -97,7 +98,7 @@ bool parseHidReportDescriptor(const std::uint8_t* data, std::size_t length, HidR
     auto fail = [&](std::size_t at, const std::string& what) {
         error = "report descriptor byte " + std::to_string(at) + ": " + what;
         out.fields.clear();
-        return false;
+        return error;
     };
 
     std::size_t i = 0;
@@ -217,7 +218,7 @@ bool parseHidReportDescriptor(const std::uint8_t* data, std::size_t length, HidR
         }
     }
     if (!collections.empty()) return fail(length, std::to_string(collections.size()) + " collection(s) not closed");
-    return true;
+    return {};
 }
 
 bool hidSetField(std::vector<std::uint8_t>& report, std::size_t dataOffset, const HidField& field, std::uint32_t element,

@@ -47,8 +47,8 @@ struct HidReportDescriptor {
     std::vector<std::uint32_t> applications;
 };
 
-/// Parses; false with `error` ("report descriptor byte N: ...") on malformed input.
-bool parseHidReportDescriptor(const std::uint8_t* data, std::size_t length, HidReportDescriptor& out, std::string& error);
+/// Parses: "" or the problem of malformed input ("report descriptor byte N: ...").
+std::string parseHidReportDescriptor(const std::uint8_t* data, std::size_t length, HidReportDescriptor& out);
 
 /// Writes `value` into element `element` of `field` in `report` (report[0] is the ID byte when
 /// numbered, so data starts at `dataOffset`). Clamps to the logical range unless `clamp` is false

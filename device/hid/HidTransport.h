@@ -57,8 +57,8 @@ public:
     /// Opens by path; null with `error` naming the path and the cause (e.g. permission denied,
     /// with the udev rule to install) on failure.
     virtual std::unique_ptr<HidTransport> open(const HidDeviceInfo& info, std::string& error) = 0;
-    /// The raw report descriptor of an interface; false with `error` when it cannot be read.
-    virtual bool reportDescriptor(const HidDeviceInfo& info, std::vector<std::uint8_t>& out, std::string& error) = 0;
+    /// The raw report descriptor of an interface: "" or why it cannot be read.
+    virtual std::string reportDescriptor(const HidDeviceInfo& info, std::vector<std::uint8_t>& out) = 0;
 };
 
 /// hidapi's hidraw backend when the build has it (PALPATE_HAVE_HIDAPI), else null.
@@ -67,7 +67,7 @@ std::shared_ptr<HidBackend> systemHidBackend();
 /// The hidraw report descriptor of a /dev/hidrawN node, from
 /// /sys/class/hidraw/hidrawN/device/report_descriptor (hidapi 0.13 has no
 /// hid_get_report_descriptor). `sysRoot` lets tests (and umockdev) point elsewhere.
-bool readHidrawReportDescriptor(const std::string& devicePath, std::vector<std::uint8_t>& out, std::string& error,
-                                const std::string& sysRoot = "/sys");
+std::string readHidrawReportDescriptor(const std::string& devicePath, std::vector<std::uint8_t>& out,
+                                       const std::string& sysRoot = "/sys");
 
 }  // namespace palpate

@@ -106,8 +106,8 @@ public:
         return std::make_unique<HidapiTransport>(device);
     }
 
-    bool reportDescriptor(const HidDeviceInfo& info, std::vector<std::uint8_t>& out, std::string& error) override {
-        return readHidrawReportDescriptor(info.path, out, error);
+    std::string reportDescriptor(const HidDeviceInfo& info, std::vector<std::uint8_t>& out) override {
+        return readHidrawReportDescriptor(info.path, out);
     }
 };
 

@@ -25,16 +25,20 @@ bool finitePositive(double v) { return std::isfinite(v) && v > 0.0; }
 
 const char* spaceMouseModeName(SpaceMouseMode mode) { return mode == SpaceMouseMode::Rate ? "rate" : "position"; }
 
-std::string validateSpaceMouseControlDef(const SpaceMouseControlDef& def) {
-    if (!finitePositive(def.fullScaleCounts)) return "SpaceMouseControlDef.fullScaleCounts must be finite and > 0";
+Problems validateSpaceMouseControlDef(const SpaceMouseControlDef& def) {
+    if (!finitePositive(def.fullScaleCounts))
+        return oneProblem("fullScaleCounts", "SpaceMouseControlDef.fullScaleCounts must be finite and > 0");
     if (!std::isfinite(def.deadbandCounts) || def.deadbandCounts < 0.0 || def.deadbandCounts >= def.fullScaleCounts)
-        return "SpaceMouseControlDef.deadbandCounts must be in [0, fullScaleCounts)";
-    if (!finitePositive(def.rateMmPerS)) return "SpaceMouseControlDef.rateMmPerS must be finite and > 0";
-    if (!finitePositive(def.positionRangeMm)) return "SpaceMouseControlDef.positionRangeMm must be finite and > 0";
-    if (!finitePositive(def.workspaceRadiusMm)) return "SpaceMouseControlDef.workspaceRadiusMm must be finite and > 0";
+        return oneProblem("deadbandCounts", "SpaceMouseControlDef.deadbandCounts must be in [0, fullScaleCounts)");
+    if (!finitePositive(def.rateMmPerS))
+        return oneProblem("rateMmPerS", "SpaceMouseControlDef.rateMmPerS must be finite and > 0");
+    if (!finitePositive(def.positionRangeMm))
+        return oneProblem("positionRangeMm", "SpaceMouseControlDef.positionRangeMm must be finite and > 0");
+    if (!finitePositive(def.workspaceRadiusMm))
+        return oneProblem("workspaceRadiusMm", "SpaceMouseControlDef.workspaceRadiusMm must be finite and > 0");
     if (!std::isfinite(def.homeMm.x) || !std::isfinite(def.homeMm.y) || !std::isfinite(def.homeMm.z))
-        return "SpaceMouseControlDef.homeMm must be finite";
-    return "";
+        return oneProblem("homeMm", "SpaceMouseControlDef.homeMm must be finite");
+    return {};
 }
 
 glm::vec3 spaceMouseDeflection(const SpaceMouseRaw& raw, const SpaceMouseControlDef& def) {
@@ -42,7 +46,7 @@ glm::vec3 spaceMouseDeflection(const SpaceMouseRaw& raw, const SpaceMouseControl
 }
 
 SpaceMouseControl::SpaceMouseControl(SpaceMouseControlDef def) : mDef(def), mPositionMm(def.homeMm) {
-    const std::string problem = validateSpaceMouseControlDef(def);
+    const std::string problem = joinedMessages(validateSpaceMouseControlDef(def));
     if (!problem.empty()) throw std::invalid_argument(problem);
 }
 

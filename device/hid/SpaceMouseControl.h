@@ -3,6 +3,8 @@
 // tool stays where it was let go) or a position controller (deflection = offset from home, the
 // tool springs back with the cap). Pure and allocation-free: it runs in the haptic tick.
 
+#include "base/params/Problem.h"
+
 #include "device/hid/SpaceMouseCodec.h"
 
 #include <glm/vec3.hpp>
@@ -26,7 +28,7 @@ struct SpaceMouseControlDef {
 };
 
 /// "" when usable, else a message naming the field.
-std::string validateSpaceMouseControlDef(const SpaceMouseControlDef& def);
+Problems validateSpaceMouseControlDef(const SpaceMouseControlDef& def);
 
 /// Deflection in [-1, 1] per axis, scene frame: x = HID Tx (right), y = -HID Ty (pushing the cap
 /// away from the user moves the tool away... up the screen), z = -HID Tz (pressing the cap down

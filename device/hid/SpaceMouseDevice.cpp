@@ -50,7 +50,8 @@ std::string SpaceMouseDevice::devicePath() const {
     return mInfo.path;
 }
 
-bool SpaceMouseDevice::connect(std::string& error) {
+std::string SpaceMouseDevice::connect() {
+    std::string error;
     error.clear();
     const std::string what = mSelector.any ? std::string("SpaceMouse")
                                            : "SpaceMouse " + formatVidPid(mSelector.vendorId, mSelector.productId) +
@@ -69,7 +70,7 @@ bool SpaceMouseDevice::connect(std::string& error) {
     }
     if (found.empty()) {
         error = what + ": not found (is it plugged in? 'palpate-cli devices' lists what is connected)";
-        return false;
+        return error;
     }
     std::string openError;
     for (const HidDeviceInfo& info : found) {
@@ -82,10 +83,10 @@ bool SpaceMouseDevice::connect(std::string& error) {
         mTransport = std::move(transport);
         std::lock_guard lock(mInfoMutex);
         mInfo = info;
-        return true;
+        return {};
     }
     error = what + ": " + openError;
-    return false;
+    return error;
 }
 
 bool SpaceMouseDevice::open() {
@@ -96,7 +97,7 @@ bool SpaceMouseDevice::open() {
     }
     mState.store(DeviceState::Opening, std::memory_order_release);
     std::string error;
-    if (!connect(error)) {
+    if (!(error = connect()).empty()) {
         setError(error);
         mState.store(DeviceState::Disconnected, std::memory_order_release);
         return false;
@@ -120,7 +121,7 @@ void SpaceMouseDevice::ioLoop() {
             // Unplugged: look for the unit again, at a gentle pace.
             if (!mIo.sleepFor(std::chrono::milliseconds(mDef.reconnectPeriodMs))) break;
             std::string error;
-            if (connect(error)) {
+            if ((error = connect()).empty()) {
                 raw = SpaceMouseRaw{};
                 mRaw.store(raw);
                 mReconnects.fetch_add(1, std::memory_order_relaxed);

@@ -70,7 +70,7 @@ public:
     std::string devicePath() const;
 
 private:
-    bool connect(std::string& error);  // find + open + LED; I/O thread or open()
+    std::string connect();  // find + open + LED; I/O thread or open()
     void ioLoop();
     void setError(std::string error);
 

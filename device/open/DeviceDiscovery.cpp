@@ -52,8 +52,9 @@ std::vector<ConnectedDevice> discoverDevices(const DeviceBackends& backends) {
                 std::vector<std::uint8_t> bytes;
                 std::string error;
                 HidReportDescriptor descriptor;
-                if (!hid->reportDescriptor(info, bytes, error) ||
-                    !parseHidReportDescriptor(bytes.data(), bytes.size(), descriptor, error) || !descriptorHasPid(descriptor))
+                if (!(error = hid->reportDescriptor(info, bytes)).empty() ||
+                    !(error = parseHidReportDescriptor(bytes.data(), bytes.size(), descriptor)).empty() ||
+                    !descriptorHasPid(descriptor))
                     continue;  // neither a SpaceMouse nor a PID device: not ours to list
                 d.backend = "hidpid";
                 d.uri = selector;

@@ -108,37 +108,39 @@ std::string hex4(std::uint16_t v) {
     return text;
 }
 
-/// "VID:PID[:SERIAL]" into `out`; false with `error` (after `head`).
-bool parseVidPid(std::string_view text, DeviceUri& out, const std::string& head, const char* scheme, std::string& error) {
+/// "VID:PID[:SERIAL]" into `out`: "" or the problem (after `head`).
+std::string parseVidPid(std::string_view text, DeviceUri& out, const std::string& head, const char* scheme) {
+    std::string error;
     const std::size_t c1 = text.find(':');
     if (c1 == std::string_view::npos) {
         error = head + "'" + scheme + ":' needs VID:PID[:SERIAL] in hex (e.g. " + scheme + ":046d:c626)";
-        return false;
+        return error;
     }
     const std::size_t c2 = text.find(':', c1 + 1);
     const std::string_view vid = text.substr(0, c1);
     const std::string_view pid = text.substr(c1 + 1, c2 == std::string_view::npos ? std::string_view::npos : c2 - c1 - 1);
     if (!parseHex16(vid, out.vendorId)) {
         error = head + "vendor ID " + shown(vid) + " is not 1 to 4 hex digits";
-        return false;
+        return error;
     }
     if (!parseHex16(pid, out.productId)) {
         error = head + "product ID " + shown(pid) + " is not 1 to 4 hex digits";
-        return false;
+        return error;
     }
     if (c2 != std::string_view::npos) {
         out.serial = std::string(text.substr(c2 + 1));
         if (out.serial.empty()) {
             error = head + "empty serial after VID:PID: (leave out the last ':' for any serial)";
-            return false;
+            return error;
         }
     }
-    return true;
+    return {};
 }
 
 /// Options after '?': key=value pairs joined by '&'. Only `allowed` keys; each at most once.
-bool parseOptions(std::string_view text, std::initializer_list<const char*> allowed, DeviceUri& out,
-                  const std::string& head, std::string& error) {
+std::string parseOptions(std::string_view text, std::initializer_list<const char*> allowed, DeviceUri& out,
+                         const std::string& head) {
+    std::string error;
     std::vector<std::string> seen;
     while (!text.empty()) {
         const std::size_t amp = text.find('&');
@@ -153,30 +155,30 @@ bool parseOptions(std::string_view text, std::initializer_list<const char*> allo
             std::string list;
             for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
             error = head + "unknown option " + shown(key) + (list.empty() ? " (this scheme takes none)" : " (expected " + list + ")");
-            return false;
+            return error;
         }
         for (const std::string& s : seen)
             if (s == key) {
                 error = head + "option '" + key + "' given twice";
-                return false;
+                return error;
             }
         seen.push_back(key);
         if (value.empty()) {
             error = head + "option '" + key + "' needs a value (" + key + "=...)";
-            return false;
+            return error;
         }
         if (key == "mode") {
             if (value == "rate") out.positionMode = false;
             else if (value == "position") out.positionMode = true;
             else {
                 error = head + "mode " + shown(value) + " is not 'rate' or 'position'";
-                return false;
+                return error;
             }
         } else if (key == "firmware") {
             out.firmware = value;
         }
     }
-    return true;
+    return {};
 }
 
 std::string modeSuffix(const DeviceUri& uri) { return uri.positionMode ? "?mode=position" : ""; }
@@ -233,17 +235,18 @@ void unregisterDeviceFactory(DeviceKind kind) {
     factories().erase(kind);
 }
 
-bool parseDeviceUri(std::string_view uri, DeviceUri& out, std::string& error) {
+std::string parseDeviceUri(std::string_view uri, DeviceUri& out) {
+    std::string error;
     error.clear();
     const std::string head = "device URI " + shown(uri) + ": ";
     if (uri.empty()) {
         error = "device URI is empty (expected one of " + knownForms() + ")";
-        return false;
+        return error;
     }
     const std::size_t colon = uri.find(':');
     if (colon == std::string_view::npos) {
         error = head + "no ':' after the scheme (expected one of " + knownForms() + ")";
-        return false;
+        return error;
     }
     const std::string_view scheme = uri.substr(0, colon);
     const std::string_view rest = uri.substr(colon + 1);
@@ -251,48 +254,48 @@ bool parseDeviceUri(std::string_view uri, DeviceUri& out, std::string& error) {
     if (scheme == "sim") {
         if (rest.empty()) {
             error = head + "'sim:' needs a trajectory: press, stroke, scan, sine or path:FILE";
-            return false;
+            return error;
         }
         if (rest == "path" || rest.substr(0, 5) == "path:") {
             const std::string_view file = rest.size() > 5 ? rest.substr(5) : std::string_view();
             if (file.empty()) {
                 error = head + "'sim:path:' needs a waypoint file after it (sim:path:FILE)";
-                return false;
+                return error;
             }
             out = DeviceUri{};
             out.kind = DeviceKind::SimPath;
             out.path = std::string(file);
-            return true;
+            return {};
         }
         for (const SimEntry& e : kSimEntries) {
             if (rest == e.name) {
                 out = DeviceUri{};
                 out.kind = e.kind;
-                return true;
+                return {};
             }
         }
         error = head + "unknown simulated trajectory " + shown(rest) +
                 " (expected press, stroke, scan, sine or path:FILE)";
-        return false;
+        return error;
     }
     if (scheme == "mouse") {
         if (!rest.empty()) {
             error = head + "'mouse:' takes no argument";
-            return false;
+            return error;
         }
         out = DeviceUri{};
         out.kind = DeviceKind::Mouse;
-        return true;
+        return {};
     }
     if (scheme == "replay") {
         if (rest.empty()) {
             error = head + "'replay:' needs a recording file after it (replay:FILE)";
-            return false;
+            return error;
         }
         out = DeviceUri{};
         out.kind = DeviceKind::Replay;
         out.path = std::string(rest);
-        return true;
+        return {};
     }
 
     // Hardware schemes: "argument?options".
@@ -304,43 +307,43 @@ bool parseDeviceUri(std::string_view uri, DeviceUri& out, std::string& error) {
         parsed.kind = DeviceKind::SpaceMouse;
         if (!argument.empty()) {
             error = head + "'spacemouse:' takes no argument (hid:VID:PID[:SERIAL] picks one unit)";
-            return false;
+            return error;
         }
-        if (!parseOptions(options, {"mode"}, parsed, head, error)) return false;
+        if (!(error = parseOptions(options, {"mode"}, parsed, head)).empty()) return error;
     } else if (scheme == "hid") {
         parsed.kind = DeviceKind::Hid;
-        if (!parseVidPid(argument, parsed, head, "hid", error)) return false;
-        if (!parseOptions(options, {"mode"}, parsed, head, error)) return false;
+        if (!(error = parseVidPid(argument, parsed, head, "hid")).empty()) return error;
+        if (!(error = parseOptions(options, {"mode"}, parsed, head)).empty()) return error;
     } else if (scheme == "hidpid") {
         parsed.kind = DeviceKind::HidPid;
-        if (!argument.empty() && !parseVidPid(argument, parsed, head, "hidpid", error)) return false;
-        if (!parseOptions(options, {}, parsed, head, error)) return false;
+        if (!argument.empty() && !(error = parseVidPid(argument, parsed, head, "hidpid")).empty()) return error;
+        if (!(error = parseOptions(options, {}, parsed, head)).empty()) return error;
     } else if (scheme == "falcon") {
         parsed.kind = DeviceKind::Falcon;
         if (argument.empty()) {
             error = head + "'falcon:' needs an index: falcon:0 for the first Falcon";
-            return false;
+            return error;
         }
         int index = 0;
         for (char c : argument) {
             if (c < '0' || c > '9' || index > 99) {
                 error = head + "Falcon index " + shown(argument) + " is not a number from 0 to 99";
-                return false;
+                return error;
             }
             index = index * 10 + (c - '0');
         }
         if (index > 99) {
             error = head + "Falcon index " + shown(argument) + " is not a number from 0 to 99";
-            return false;
+            return error;
         }
         parsed.index = index;
-        if (!parseOptions(options, {"firmware"}, parsed, head, error)) return false;
+        if (!(error = parseOptions(options, {"firmware"}, parsed, head)).empty()) return error;
     } else {
         error = head + "unknown scheme " + shown(scheme) + " (expected one of " + knownForms() + ")";
-        return false;
+        return error;
     }
     out = parsed;
-    return true;
+    return {};
 }
 
 std::string formatDeviceUri(const DeviceUri& uri) {
@@ -387,7 +390,7 @@ std::unique_ptr<HapticDevice> createDeviceFromUri(std::string_view uri, std::str
 std::unique_ptr<HapticDevice> createDeviceFromUri(std::string_view uri, std::string& error,
                                                   const DeviceBackends& backends) {
     DeviceUri parsed;
-    if (!parseDeviceUri(uri, parsed, error)) return nullptr;
+    if (!(error = parseDeviceUri(uri, parsed)).empty()) return nullptr;
     const std::string head = "device URI " + shown(uri) + ": ";
     if (parsed.kind == DeviceKind::Replay) {
         // Checked without opening it: a FIFO would block the caller (the GUI at start-up) forever,

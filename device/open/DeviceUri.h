@@ -75,9 +75,8 @@ void registerDeviceFactory(DeviceKind kind, DeviceFactory factory);
 /// Removes a registered factory (tests).
 void unregisterDeviceFactory(DeviceKind kind);
 
-/// Parses without touching any file or device. On failure returns false and sets `error` to a
-/// message naming the URI and the problem.
-bool parseDeviceUri(std::string_view uri, DeviceUri& out, std::string& error);
+/// Parses without touching any file or device: "" or the problem, naming the URI.
+std::string parseDeviceUri(std::string_view uri, DeviceUri& out);
 
 /// The canonical text of a parsed URI (parseDeviceUri(formatDeviceUri(u)) gives u back).
 std::string formatDeviceUri(const DeviceUri& uri);

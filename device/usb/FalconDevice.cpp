@@ -63,48 +63,49 @@ bool FalconDevice::probeFirmware(UsbTransport& usb) {
     return false;
 }
 
-bool FalconDevice::connect(std::string& error) {
+std::string FalconDevice::connect() {
+    std::string error;
     const std::string name = "Falcon " + std::to_string(mDef.index);
     const std::vector<UsbDeviceInfo> found = mBackend->enumerate(kFalconVendorId, kFalconProductId);
     if (mDef.index < 0 || std::size_t(mDef.index) >= found.size()) {
         error = name + ": not found (" + std::to_string(found.size()) + " Falcon" + (found.size() == 1 ? "" : "s") +
                 " connected, USB " + formatVidPid(kFalconVendorId, kFalconProductId) + ")";
-        return false;
+        return error;
     }
     const UsbDeviceInfo info = found[std::size_t(mDef.index)];
     std::string openError;
     std::unique_ptr<UsbTransport> usb = mBackend->open(info, openError);
     if (!usb) {
         error = name + ": " + openError;
-        return false;
+        return error;
     }
     const std::string where = name + " at " + info.node();
     if (const int r = setFalconNormalMode(*usb); r != 0) {
         error = where + ": setting up its FTDI bridge failed (" + usbErrorText(r) + ")";
-        return false;
+        return error;
     }
     if (!probeFirmware(*usb)) {
         if (mFirmware.empty()) {
             error = where + ": its firmware is not running and no firmware file was given (falcon:" +
                     std::to_string(mDef.index) +
                     "?firmware=PATH or PALPATE_FALCON_FIRMWARE; docs/devices.md says where to find Novint's file)";
-            return false;
+            return error;
         }
         std::string uploadError;
-        if (!uploadFalconFirmware(*usb, mFirmware, uploadError)) {
+        if (!(uploadError = uploadFalconFirmware(*usb, mFirmware)).empty()) {
             error = where + ": " + uploadError;
-            return false;
+            return error;
         }
         mUploads.fetch_add(1, std::memory_order_relaxed);
         if (!probeFirmware(*usb)) {
             error = where + ": the firmware was uploaded but the Falcon does not answer (wrong firmware file?)";
-            return false;
+            return error;
         }
     }
     mUsb = std::move(usb);
     std::lock_guard lock(mInfoMutex);
     mInfo = info;
-    return true;
+    return {};
 }
 
 bool FalconDevice::open() {
@@ -118,12 +119,12 @@ bool FalconDevice::open() {
     }
     std::string error;
     mFirmware.clear();
-    if (!mDef.firmwarePath.empty() && !readFalconFirmwareFile(mDef.firmwarePath, mFirmware, error)) {
+    if (!mDef.firmwarePath.empty() && !(error = readFalconFirmwareFile(mDef.firmwarePath, mFirmware)).empty()) {
         setError(name + ": " + error);
         return false;
     }
     mState.store(DeviceState::Opening, std::memory_order_release);
-    if (!connect(error)) {
+    if (!(error = connect()).empty()) {
         setError(error);
         mState.store(DeviceState::Disconnected, std::memory_order_release);
         return false;
@@ -195,7 +196,7 @@ void FalconDevice::ioLoop() {
             if (!mIo.sleepFor(std::chrono::milliseconds(mDef.reconnectPeriodMs))) break;
             mLost.store(false);
             std::string error;
-            if (!connect(error)) {
+            if (!(error = connect()).empty()) {
                 // Keep why it was lost in front: the reconnect error alone would hide it.
                 setError(lastLossReason() + "; reconnecting: " + error);
                 continue;

@@ -79,7 +79,7 @@ private:
         std::uint32_t buttons = 0;
     };
 
-    bool connect(std::string& error);        // find, open, firmware, normal mode
+    std::string connect();                   // find, open, firmware, normal mode
     bool probeFirmware(UsbTransport& usb);   // does the firmware answer?
     void ioLoop();
     void dropTransport(const std::string& why);

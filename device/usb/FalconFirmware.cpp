@@ -20,48 +20,50 @@ int control(UsbTransport& usb, std::uint8_t request, std::uint16_t value) {
     return usb.controlOut(kFtdiRequestTypeOut, request, value, 0, kControlTimeoutMs);
 }
 
-bool step(int result, const char* what, std::string& error) {
-    if (result == 0) return true;
+std::string step(int result, const char* what) {
+    std::string error;
+    if (result == 0) return {};
     error = std::string("Falcon firmware upload: ") + what + " failed (" + usbErrorText(result) + ")";
-    return false;
+    return error;
 }
 
 }  // namespace
 
-bool readFalconFirmwareFile(const std::string& path, std::vector<std::uint8_t>& bytes, std::string& error) {
+std::string readFalconFirmwareFile(const std::string& path, std::vector<std::uint8_t>& bytes) {
+    std::string error;
     namespace fs = std::filesystem;
     bytes.clear();
     const std::string head = "Falcon firmware file '" + path + "': ";
     if (path.empty()) {
         error = "Falcon firmware file not given: name Novint's firmware with falcon:INDEX?firmware=PATH or the "
                 "PALPATE_FALCON_FIRMWARE environment variable (docs/devices.md; we cannot ship it)";
-        return false;
+        return error;
     }
     std::error_code ec;
     if (!fs::exists(path, ec)) {
         error = head + "does not exist";
-        return false;
+        return error;
     }
     if (fs::is_directory(path, ec)) {
         error = head + "is a directory";
-        return false;
+        return error;
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         error = head + "cannot be read (" + std::strerror(errno) + ")";
-        return false;
+        return error;
     }
     bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     if (bytes.empty()) {
         error = head + "is empty";
-        return false;
+        return error;
     }
     if (bytes.size() > (1u << 20)) {
         error = head + "is " + std::to_string(bytes.size()) + " bytes, too large for Falcon firmware";
         bytes.clear();
-        return false;
+        return error;
     }
-    return true;
+    return {};
 }
 
 int setFalconNormalMode(UsbTransport& usb) {
@@ -73,22 +75,23 @@ int setFalconNormalMode(UsbTransport& usb) {
     return 0;
 }
 
-bool uploadFalconFirmware(UsbTransport& usb, const std::vector<std::uint8_t>& firmware, std::string& error) {
+std::string uploadFalconFirmware(UsbTransport& usb, const std::vector<std::uint8_t>& firmware) {
+    std::string error;
     error.clear();
     if (firmware.empty()) {
         error = "Falcon firmware upload: the firmware is empty";
-        return false;
+        return error;
     }
     // 1. The boot loader listens at 9600 baud, 8N1, no flow control; DTR low-high resets it.
-    if (!step(control(usb, kFtdiReset, kFtdiPurgeRx), "purging the receive buffer", error)) return false;
-    if (!step(control(usb, kFtdiReset, kFtdiPurgeTx), "purging the send buffer", error)) return false;
-    if (!step(control(usb, kFtdiSetLatencyTimer, 16), "setting the latency timer", error)) return false;
-    if (!step(control(usb, kFtdiSetBaudRate, 0x4138), "setting 9600 baud", error)) return false;
-    if (!step(control(usb, kFtdiSetData, 8), "setting 8N1", error)) return false;
-    if (!step(control(usb, kFtdiSetFlowCtrl, 0), "disabling flow control", error)) return false;
-    if (!step(control(usb, kFtdiModemCtrl, kRtsLow), "setting RTS low", error)) return false;
-    if (!step(control(usb, kFtdiModemCtrl, kDtrLow), "setting DTR low", error)) return false;
-    if (!step(control(usb, kFtdiModemCtrl, kDtrHigh), "setting DTR high", error)) return false;
+    if (!(error = step(control(usb, kFtdiReset, kFtdiPurgeRx), "purging the receive buffer")).empty()) return error;
+    if (!(error = step(control(usb, kFtdiReset, kFtdiPurgeTx), "purging the send buffer")).empty()) return error;
+    if (!(error = step(control(usb, kFtdiSetLatencyTimer, 16), "setting the latency timer")).empty()) return error;
+    if (!(error = step(control(usb, kFtdiSetBaudRate, 0x4138), "setting 9600 baud")).empty()) return error;
+    if (!(error = step(control(usb, kFtdiSetData, 8), "setting 8N1")).empty()) return error;
+    if (!(error = step(control(usb, kFtdiSetFlowCtrl, 0), "disabling flow control")).empty()) return error;
+    if (!(error = step(control(usb, kFtdiModemCtrl, kRtsLow), "setting RTS low")).empty()) return error;
+    if (!(error = step(control(usb, kFtdiModemCtrl, kDtrLow), "setting DTR low")).empty()) return error;
+    if (!(error = step(control(usb, kFtdiModemCtrl, kDtrHigh), "setting DTR high")).empty()) return error;
 
     // 2. Handshake: "\n C \r" until the loader answers "\n D , \r" (after the FTDI's 2 status bytes;
     //    some hosts see a leading 0x00 first).
@@ -111,22 +114,25 @@ bool uploadFalconFirmware(UsbTransport& usb, const std::vector<std::uint8_t>& fi
         error = "Falcon firmware upload: the boot loader did not answer the handshake" +
                 (lastError ? " (" + usbErrorText(lastError) + ")" : std::string(" (wrong answer)")) +
                 "; power-cycle the Falcon and try again";
-        return false;
+        return error;
     }
 
     // 3. 140 kbaud (divisor 0x15), then 'A' must come back.
-    if (!step(control(usb, kFtdiModemCtrl, kDtrLow), "setting DTR low", error)) return false;
-    if (!step(control(usb, kFtdiSetBaudRate, 0x0015), "setting the upload baud rate", error)) return false;
+    if (!(error = step(control(usb, kFtdiModemCtrl, kDtrLow), "setting DTR low")).empty()) return error;
+    if (!(error = step(control(usb, kFtdiSetBaudRate, 0x0015), "setting the upload baud rate")).empty()) return error;
     {
         const std::uint8_t a = 0x41;
         int sent = 0, got = 0;
-        if (!step(usb.bulkWrite(kFalconEndpointOut, &a, 1, sent, kBulkTimeoutMs), "sending the start byte", error))
-            return false;
-        if (!step(usb.bulkRead(kFalconEndpointIn, buffer.data(), 3, got, kBulkTimeoutMs), "reading the start echo", error))
-            return false;
+        if (!(error = step(usb.bulkWrite(kFalconEndpointOut, &a, 1, sent, kBulkTimeoutMs), "sending the start byte"))
+                 .empty())
+            return error;
+        if (!(error = step(usb.bulkRead(kFalconEndpointIn, buffer.data(), 3, got, kBulkTimeoutMs),
+                           "reading the start echo"))
+                 .empty())
+            return error;
         if (got != 3 || buffer[2] != 0x41) {
             error = "Falcon firmware upload: the boot loader did not echo the start byte";
-            return false;
+            return error;
         }
     }
 
@@ -140,7 +146,7 @@ bool uploadFalconFirmware(UsbTransport& usb, const std::vector<std::uint8_t>& fi
         const int w = usb.bulkWrite(kFalconEndpointOut, firmware.data() + offset, int(n), sent, kBulkTimeoutMs);
         if (w != 0) {
             error = "Falcon firmware upload: writing bytes " + std::to_string(offset) + ".. failed (" + usbErrorText(w) + ")";
-            return false;
+            return error;
         }
         std::size_t checked = 0;
         int emptyReads = 0;
@@ -150,19 +156,19 @@ bool uploadFalconFirmware(UsbTransport& usb, const std::vector<std::uint8_t>& fi
             if (r != 0) {
                 error = "Falcon firmware upload: reading the echo of byte " + std::to_string(offset + checked) +
                         " failed (" + usbErrorText(r) + ")";
-                return false;
+                return error;
             }
             if (got < 2) {
                 error = "Falcon firmware upload: short read (" + std::to_string(got) + " bytes) at byte " +
                         std::to_string(offset + checked);
-                return false;
+                return error;
             }
             const std::size_t payload = std::size_t(got - 2);
             if (payload == 0) {
                 // Status bytes only: the loader has not echoed yet. Bounded, so a dead one ends.
                 if (++emptyReads > 100) {
                     error = "Falcon firmware upload: no echo of byte " + std::to_string(offset + checked);
-                    return false;
+                    return error;
                 }
                 continue;
             }
@@ -170,12 +176,12 @@ bool uploadFalconFirmware(UsbTransport& usb, const std::vector<std::uint8_t>& fi
                 std::memcmp(echo.data() + 2, firmware.data() + offset + checked, payload) != 0) {
                 error = "Falcon firmware upload: the echo of bytes " + std::to_string(offset + checked) +
                         ".. does not match (wrong file or a bad cable)";
-                return false;
+                return error;
             }
             checked += payload;
         }
     }
-    return step(setFalconNormalMode(usb), "switching to normal mode", error);
+    return step(setFalconNormalMode(usb), "switching to normal mode");
 }
 
 }  // namespace palpate

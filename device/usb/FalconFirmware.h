@@ -28,13 +28,13 @@ constexpr std::uint8_t kFtdiRequestTypeOut = 0x40;  ///< vendor, host-to-device
 constexpr std::uint16_t kFtdiPurgeRx = 1;
 constexpr std::uint16_t kFtdiPurgeTx = 2;
 
-/// Reads a firmware file; false with `error` naming the file when it is missing, unreadable,
-/// empty or implausibly large (> 1 MiB).
-bool readFalconFirmwareFile(const std::string& path, std::vector<std::uint8_t>& bytes, std::string& error);
+/// Reads a firmware file: "" or the problem naming the file (missing, unreadable,
+/// empty or implausibly large: > 1 MiB).
+std::string readFalconFirmwareFile(const std::string& path, std::vector<std::uint8_t>& bytes);
 
-/// Boot-loader mode, upload and echo check, then normal mode. False with `error` saying which step
+/// Boot-loader mode, upload and echo check, then normal mode: "" or the problem saying which step
 /// failed and the USB error (timeouts, NO_DEVICE, an echo that does not match).
-bool uploadFalconFirmware(UsbTransport& usb, const std::vector<std::uint8_t>& firmware, std::string& error);
+std::string uploadFalconFirmware(UsbTransport& usb, const std::vector<std::uint8_t>& firmware);
 
 /// Normal mode (after an upload, or when the firmware already runs): latency 1 ms, fast baud rate,
 /// buffers purged. 0 or the first failing UsbError.

@@ -73,7 +73,8 @@ double sweepTickUs(DeformationModel& model, const SweepPaths& paths, const Sweep
 }
 
 SweepResult runSweep(const SweepDef& def) {
-    if (const std::string e = validateToolContact(def.contact); !e.empty()) throw std::invalid_argument("sweep: " + e);
+    if (const std::string e = joinedMessages(validateToolContact(def.contact)); !e.empty())
+        throw std::invalid_argument("sweep: " + e);
     if (def.maxRings < 1 || def.maxRings > kMaxRings)
         throw std::invalid_argument("sweep: max rings must be in 1.." + std::to_string(kMaxRings));
     if (def.sizes.empty() || def.shapes.empty()) throw std::invalid_argument("sweep: no shapes or sizes to measure");

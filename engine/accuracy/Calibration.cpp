@@ -58,11 +58,12 @@ void finish(SlopeCalibration& c) {
 
 }  // namespace
 
-std::string validateToolContact(const ToolContact& contact) {
-    if (const char* e = validateElasticMaterial(contact.material); *e) return e;
-    if (!std::isfinite(contact.toolRadiusMm) || contact.toolRadiusMm <= 0.0) return "tool radius must be a positive number of mm";
+Problems validateToolContact(const ToolContact& contact) {
+    if (Problems e = validateElasticMaterial(contact.material); !e.empty()) return e;
+    if (!std::isfinite(contact.toolRadiusMm) || contact.toolRadiusMm <= 0.0)
+        return oneProblem("toolRadiusMm", "tool radius must be a positive number of mm");
     if (!(contact.stiffeningExponent >= 0.0 && contact.stiffeningExponent <= 100.0))
-        return "stiffening exponent must be a number in 0..100";
+        return oneProblem("stiffeningExponent", "stiffening exponent must be a number in 0..100");
     return {};
 }
 
@@ -85,7 +86,7 @@ double punchFirstSlopeMmPerN(const ToolContact& contact) {
 }
 
 std::string calibrationRangeProblem(const ToolContact& contact) {
-    if (std::string e = validateToolContact(contact); !e.empty()) return e;
+    if (std::string e = joinedMessages(validateToolContact(contact)); !e.empty()) return e;
     // finish() sets the slope limit just above |m1|; the limit's own range bounds |m1|.
     const FieldDef<SlopeRingParams>* limit = findField(slopeRingFields(), "slopeLimitMmPerN");
     const double maxSlope = (limit ? limit->spec.hi : 100.0) / 1.0001;
@@ -168,7 +169,7 @@ SlopeCalibration calibrateSlopesFromDisplacements(const TissueMesh& mesh, Vertex
 SlopeCalibration calibrateSlopesFromFem(const TissueMesh& mesh, VertexId touched, const ToolContact& contact,
                                         const SlopeRingParams& base, double indentationMm,
                                         std::vector<double>* referenceNormalDisplacementMm) {
-    if (const std::string e = validateToolContact(contact); !e.empty()) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateToolContact(contact)); !e.empty()) throw std::invalid_argument(e);
     if (touched >= mesh.vertexCount()) throw std::invalid_argument("touched vertex " + std::to_string(touched) + " is not in the mesh");
     const SurfaceIndentation fem = indentSurface(mesh, touched, contact.toolRadiusMm, indentationMm, contact.material);
     const glm::dvec3 n(mesh.restNormals()[touched]);

@@ -5,6 +5,8 @@
 // the touched vertex; and k = 1 / |m1| makes the rendered spring force equal the punch force at the
 // same indentation. See docs/accuracy.md.
 
+#include "base/params/Problem.h"
+
 #include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/core/TissueMesh.h"
 #include "engine/fem/ClosedForms.h"
@@ -31,7 +33,7 @@ bool sameToolContact(const ToolContact& a, const ToolContact& b);
 HyperelasticMaterial hyperelasticMaterialOf(const ToolContact& contact);
 
 /// "" when usable, else a message naming the field.
-std::string validateToolContact(const ToolContact& contact);
+Problems validateToolContact(const ToolContact& contact);
 
 /// The smallest slope calibration sets (a ring the punch leaves still is set to it).
 inline constexpr double kMinCalibratedSlopeMmPerN = 1e-9;

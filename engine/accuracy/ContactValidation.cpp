@@ -19,7 +19,8 @@ std::optional<ContactReference> parseContactReference(std::string_view name) {
 
 ContactCaseResult runContactCase(const ContactCase& c) {
     const auto start = std::chrono::steady_clock::now();
-    if (const char* e = validateElasticMaterial(c.material); *e) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateElasticMaterial(c.material)); !e.empty())
+        throw std::invalid_argument(e);
     if (!std::isfinite(c.indentationOverRadius) || c.indentationOverRadius <= 0.0)
         throw std::invalid_argument("indentation over radius must be positive");
     GradedBlockDef blockOptions = c.block;

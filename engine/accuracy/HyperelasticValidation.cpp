@@ -70,7 +70,8 @@ std::optional<HyperelasticReference> parseHyperelasticReference(std::string_view
 // exactly on any mesh, so the error is the solver's alone.
 UniaxialResult runUniaxialCase(const UniaxialCase& c) {
     const auto start = std::chrono::steady_clock::now();
-    if (const std::string e = validateHyperelasticMaterial(c.material); !e.empty()) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateHyperelasticMaterial(c.material)); !e.empty())
+        throw std::invalid_argument(e);
     for (double s : c.stretches)
         if (!(s > 0.0 && s != 1.0 && s < 10.0)) throw std::invalid_argument("stretches must lie in (0, 10), not 1");
     const GradedBlock block = blockFor(1.0, c.aOverH);
@@ -148,7 +149,8 @@ UniaxialResult runUniaxialCase(const UniaxialCase& c) {
 // the linear FEM on one mesh and one set of conditions must then agree.
 SmallStrainResult runSmallStrainCase(const SmallStrainCase& c) {
     const auto start = std::chrono::steady_clock::now();
-    if (const std::string e = validateHyperelasticMaterial(c.material); !e.empty()) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateHyperelasticMaterial(c.material)); !e.empty())
+        throw std::invalid_argument(e);
     const double a = 1.0, delta = c.indentationOverRadius * a;
     const GradedBlock block = blockFor(a, c.aOverH);
     const TetMesh& mesh = block.mesh;
@@ -194,7 +196,8 @@ SmallStrainResult runSmallStrainCase(const SmallStrainCase& c) {
 // last converged steps, and its mismatch reported), never the closed form's.
 IndentationResult runIndentationCase(const IndentationCase& c) {
     const auto start = std::chrono::steady_clock::now();
-    if (const std::string e = validateHyperelasticMaterial(c.material); !e.empty()) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateHyperelasticMaterial(c.material)); !e.empty())
+        throw std::invalid_argument(e);
     if (c.depthsOverRadius.empty()) throw std::invalid_argument("no indentation depths");
     std::vector<double> depths = c.depthsOverRadius;
     std::sort(depths.begin(), depths.end());

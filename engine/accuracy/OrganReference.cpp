@@ -98,7 +98,8 @@ struct OrganReferenceSolver::Impl {
 };
 
 OrganReferenceSolver::OrganReferenceSolver(const TissueMesh& mesh, const OrganReferenceDef& def) {
-    if (const std::string e = validateToolContact(def.contact); !e.empty()) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateToolContact(def.contact)); !e.empty())
+        throw std::invalid_argument(e);
     if (!(def.maxDepthMm > 0.0) || !(def.maxDepthOverThickness > 0.0 && def.maxDepthOverThickness < 1.0) ||
         def.hyperelasticSteps < 1 || def.hyperelasticSteps > 100)
         throw std::invalid_argument("organ reference: depth must be positive, its fraction of the layer in (0, 1), steps in 1..100");

@@ -12,7 +12,8 @@ namespace palpate {
 
 OrganSweepResult runOrganSweep(const OrganSweepDef& def) {
     const SweepDef& sweep = def.sweep;
-    if (const std::string e = validateToolContact(sweep.contact); !e.empty()) throw std::invalid_argument("sweep: " + e);
+    if (const std::string e = joinedMessages(validateToolContact(sweep.contact)); !e.empty())
+        throw std::invalid_argument("sweep: " + e);
     if (sweep.maxRings < 1 || sweep.maxRings > kMaxRings)
         throw std::invalid_argument("sweep: max rings must be in 1.." + std::to_string(kMaxRings));
     if (def.sizes.empty()) throw std::invalid_argument("sweep: no sizes to measure");

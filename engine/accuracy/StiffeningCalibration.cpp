@@ -30,23 +30,28 @@ void setStiffeningDepths(StiffeningCalibrationDef& def, double deepestOverRadius
     }
 }
 
-std::string validateStiffeningCalibrationDef(const StiffeningCalibrationDef& def) {
-    if (std::string e = validateHyperelasticMaterial(def.material); !e.empty()) return e;
-    if (!(std::isfinite(def.toolRadiusMm) && def.toolRadiusMm > 0.0)) return "tool radius must be a positive number of mm";
+Problems validateStiffeningCalibrationDef(const StiffeningCalibrationDef& def) {
+    if (Problems e = validateHyperelasticMaterial(def.material); !e.empty()) return e;
+    if (!(std::isfinite(def.toolRadiusMm) && def.toolRadiusMm > 0.0))
+        return oneProblem("toolRadiusMm", "tool radius must be a positive number of mm");
     if (def.depthsOverRadius.size() < 2 || def.depthsOverRadius.size() > std::size_t(kMaxStiffeningKnots) + 1)
-        return "knot depths: 2.." + std::to_string(kMaxStiffeningKnots + 1) + " depths are needed (the knots and the last piece's end)";
-    if (!ascendingPositive(def.depthsOverRadius)) return "knot depths over the tool radius must rise within (0, 2)";
+        return oneProblem("depthsOverRadius", "knot depths: 2.." + std::to_string(kMaxStiffeningKnots + 1) +
+                                                  " depths are needed (the knots and the last piece's end)");
+    if (!ascendingPositive(def.depthsOverRadius))
+        return oneProblem("depthsOverRadius", "knot depths over the tool radius must rise within (0, 2)");
     for (double d : def.checkDepthsOverRadius)
-        if (!(std::isfinite(d) && d > 0.0 && d < 2.0)) return "check depths over the tool radius must lie within (0, 2)";
-    if (def.aOverH < 1 || def.aOverH > 32) return "cells across the tool radius must be in 1..32";
+        if (!(std::isfinite(d) && d > 0.0 && d < 2.0))
+            return oneProblem("checkDepthsOverRadius", "check depths over the tool radius must lie within (0, 2)");
+    if (def.aOverH < 1 || def.aOverH > 32) return oneProblem("aOverH", "cells across the tool radius must be in 1..32");
     if (!(std::isfinite(def.maxStepOverRadius) && def.maxStepOverRadius > 0.0 && def.maxStepOverRadius <= 0.5))
-        return "load step over the tool radius must lie in (0, 0.5]";
+        return oneProblem("maxStepOverRadius", "load step over the tool radius must lie in (0, 0.5]");
     return {};
 }
 
 StiffeningCalibration calibrateStiffening(const StiffeningCalibrationDef& def) {
     const auto start = std::chrono::steady_clock::now();
-    if (const std::string e = validateStiffeningCalibrationDef(def); !e.empty()) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateStiffeningCalibrationDef(def)); !e.empty())
+        throw std::invalid_argument(e);
     const double a = def.toolRadiusMm;
     const ElasticMaterial& small = def.material.smallStrain;
     const double firstSlope = 1.0 / (2.0 * a * planeStrainModulusNPerMm2(small));

@@ -6,6 +6,8 @@
 // small-strain error. The slope-ring model's sink |m1| E(F) then follows the reference when
 // E(F(delta)) = 2 a E* delta: knots at the reference's forces, compliances from its segments.
 
+#include "base/params/Problem.h"
+
 #include "engine/fem/HyperelasticMaterial.h"
 #include "engine/models/slopering/SlopeRingParams.h"
 
@@ -32,7 +34,7 @@ struct StiffeningCalibrationDef {
 void setStiffeningDepths(StiffeningCalibrationDef& def, double deepestOverRadius, int knots = 6);
 
 /// "" when usable, else a message naming the field.
-std::string validateStiffeningCalibrationDef(const StiffeningCalibrationDef& def);
+Problems validateStiffeningCalibrationDef(const StiffeningCalibrationDef& def);
 
 /// One depth of the reference force-indentation curve.
 struct StiffeningCurvePoint {

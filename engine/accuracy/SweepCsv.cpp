@@ -16,7 +16,7 @@ namespace {
 
 /// Splits one line at commas; a field may be double-quoted ("a,b", "" for a quote). Returns the
 /// fields, or nullopt with `problem` set for an unterminated quote.
-std::optional<std::vector<std::string>> splitFields(std::string_view line, std::string& problem) {
+std::optional<std::vector<std::string>> splitFields(std::string_view line, std::string& error) {
     std::vector<std::string> fields(1);
     bool quoted = false;
     for (std::size_t i = 0; i < line.size(); ++i) {
@@ -39,7 +39,7 @@ std::optional<std::vector<std::string>> splitFields(std::string_view line, std::
         }
     }
     if (quoted) {
-        problem = "a quoted field is not closed";
+        error = "a quoted field is not closed";
         return std::nullopt;
     }
     return fields;

@@ -66,6 +66,14 @@ struct MeshBuilder {
     static TissueMesh::LoadResult build(std::vector<glm::vec3> positions,
                                         std::vector<std::array<VertexId, 3>> triangles,
                                         MeshReport report, bool reorder);
+    /// A closed surface with negative signed volume is inside out: its triangles are flipped.
+    static void orientOutward(TissueMesh& mesh, MeshReport& report);
+    /// Area-weighted vertex normals and the mean edge length.
+    static void computeNormals(TissueMesh& mesh);
+    /// The vertex adjacency (CSR, sorted and unique per vertex) and the largest valence.
+    static void computeAdjacency(TissueMesh& mesh);
+    /// The triangles around each vertex (CSR, in triangle order) and their smallest height at rest.
+    static void computeFans(TissueMesh& mesh);
 };
 
 std::string MeshReport::text() const {
@@ -216,19 +224,31 @@ TissueMesh::LoadResult MeshBuilder::build(std::vector<glm::vec3> positions,
     for (std::size_t f = 0; f < triangles.size(); ++f)
         for (int k = 0; k < 3; ++k) mesh.mTriangles[f][k] = newIndexOfOld[triangles[f][k]];
 
-    // Outward orientation: a closed surface with negative signed volume is inside out.
-    if (report.boundaryEdgeCount == 0) {
-        double volume6 = 0.0;
-        for (const auto& t : mesh.mTriangles)
-            volume6 += glm::dot(glm::dvec3(mesh.mRestMm[t[0]]),
-                                glm::cross(glm::dvec3(mesh.mRestMm[t[1]]), glm::dvec3(mesh.mRestMm[t[2]])));
-        if (volume6 < 0.0) {
-            for (auto& t : mesh.mTriangles) std::swap(t[1], t[2]);
-            report.warnings.push_back(src + ": triangles faced inward; flipped so normals point out");
-        }
-    }
+    if (report.boundaryEdgeCount == 0) orientOutward(mesh, report);
+    computeNormals(mesh);
+    computeAdjacency(mesh);
+    computeFans(mesh);
+    const std::size_t n = mesh.mRestMm.size();
 
-    // Area-weighted vertex normals.
+    mesh.mBoundsMin = glm::vec3(lo);
+    mesh.mBoundsMax = glm::vec3(hi);
+    report.vertexCount = n;
+    mesh.mReport = report;
+    return {std::move(mesh), report};
+}
+
+void MeshBuilder::orientOutward(TissueMesh& mesh, MeshReport& report) {
+    double volume6 = 0.0;
+    for (const auto& t : mesh.mTriangles)
+        volume6 += glm::dot(glm::dvec3(mesh.mRestMm[t[0]]),
+                            glm::cross(glm::dvec3(mesh.mRestMm[t[1]]), glm::dvec3(mesh.mRestMm[t[2]])));
+    if (volume6 < 0.0) {
+        for (auto& t : mesh.mTriangles) std::swap(t[1], t[2]);
+        report.warnings.push_back(report.source + ": triangles faced inward; flipped so normals point out");
+    }
+}
+
+void MeshBuilder::computeNormals(TissueMesh& mesh) {
     const std::size_t n = mesh.mRestMm.size();
     std::vector<glm::dvec3> normalSum(n, glm::dvec3(0.0));
     double edgeSum = 0.0;
@@ -244,8 +264,10 @@ TissueMesh::LoadResult MeshBuilder::build(std::vector<glm::vec3> positions,
         const double len = glm::length(normalSum[v]);
         mesh.mRestNormals[v] = len > 0.0 ? glm::vec3(normalSum[v] / len) : glm::vec3(0.0f, 0.0f, 1.0f);
     }
+}
 
-    // Vertex adjacency (CSR), sorted and unique per vertex.
+void MeshBuilder::computeAdjacency(TissueMesh& mesh) {
+    const std::size_t n = mesh.mRestMm.size();
     std::vector<std::vector<VertexId>> adjacency(n);
     for (const auto& t : mesh.mTriangles)
         for (int k = 0; k < 3; ++k) {
@@ -262,7 +284,10 @@ TissueMesh::LoadResult MeshBuilder::build(std::vector<glm::vec3> positions,
     }
     mesh.mNeighbours.reserve(mesh.mNeighbourStart.back());
     for (auto& a : adjacency) mesh.mNeighbours.insert(mesh.mNeighbours.end(), a.begin(), a.end());
+}
 
+void MeshBuilder::computeFans(TissueMesh& mesh) {
+    const std::size_t n = mesh.mRestMm.size();
     // The triangles around each vertex (CSR), in triangle order.
     mesh.mFanStart.assign(n + 1, 0);
     for (const auto& t : mesh.mTriangles)
@@ -283,12 +308,6 @@ TissueMesh::LoadResult MeshBuilder::build(std::vector<glm::vec3> positions,
         const float height = longest > 0.0f ? doubleArea / longest : 0.0f;
         for (VertexId v : t) mesh.mFanMinHeightMm[v] = std::min(mesh.mFanMinHeightMm[v], height);
     }
-
-    mesh.mBoundsMin = glm::vec3(lo);
-    mesh.mBoundsMax = glm::vec3(hi);
-    report.vertexCount = n;
-    mesh.mReport = report;
-    return {std::move(mesh), report};
 }
 
 std::string TissueMesh::save(const std::string& path) const {

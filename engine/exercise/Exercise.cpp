@@ -27,8 +27,8 @@ Rubric effectiveRubric(const Exercise& e) {
     return rubric;
 }
 
-std::vector<std::string> validateExercise(const Exercise& e) {
-    std::vector<std::string> errors;
+Problems validateExercise(const Exercise& e) {
+    Problems errors;
     ExerciseChecker c(errors);
     if (e.name.empty()) c.error("name", "must not be empty");
     if (e.meshPath.empty()) c.error("mesh", "must name a mesh file");

@@ -131,7 +131,7 @@ struct Exercise {
 
 /// Every problem, each naming the key as in the JSON file ("press_targets.targets[1].force_max_n:
 /// ..."); empty when valid. Vertex ids are checked against a mesh later (ExerciseGeometry).
-std::vector<std::string> validateExercise(const Exercise& exercise);
+Problems validateExercise(const Exercise& exercise);
 
 /// The default rubric line for a metric of this exercise (docs/scoring.md lists them): weights per
 /// type, thresholds from the exercise's own numbers (time limit, tolerances, excessive force).

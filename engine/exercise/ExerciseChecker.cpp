@@ -11,7 +11,9 @@ std::string ExerciseChecker::text(double v) {
     return s.str();
 }
 
-void ExerciseChecker::error(const std::string& key, const std::string& problem) { mErrors.push_back(key + ": " + problem); }
+void ExerciseChecker::error(const std::string& key, const std::string& problem) {
+    mProblems.push_back({key, -1, -1, key + ": " + problem});
+}
 
 bool ExerciseChecker::range(const std::string& key, double v, double lo, double hi, bool openLow) {
     const bool ok = std::isfinite(v) && (openLow ? v > lo : v >= lo) && v <= hi;

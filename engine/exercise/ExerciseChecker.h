@@ -3,6 +3,7 @@
 // ("press_targets.targets[1].force_max_n: 0 is out of range (0, 1000]"); the common checks and each
 // kind's (ExerciseKind::validate) share them.
 
+#include "base/params/Problem.h"
 #include "engine/exercise/Exercise.h"
 
 #include <string>
@@ -12,8 +13,9 @@ namespace palpate {
 
 class ExerciseChecker {
 public:
-    explicit ExerciseChecker(std::vector<std::string>& errors) : mErrors(errors) {}
+    explicit ExerciseChecker(Problems& problems) : mProblems(problems) {}
 
+    /// A problem of `key`, its message "key: problem".
     void error(const std::string& key, const std::string& problem);
     /// lo < v <= hi (openLow) or lo <= v <= hi.
     bool range(const std::string& key, double v, double lo, double hi, bool openLow = false);
@@ -26,7 +28,7 @@ public:
     static std::string text(double v);
 
 private:
-    std::vector<std::string>& mErrors;
+    Problems& mProblems;
 };
 
 }  // namespace palpate

@@ -155,9 +155,10 @@ ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::strin
         if (std::isnan(line.fullMarks)) line.fullMarks = d.fullMarks;
         if (std::isnan(line.zeroMarks)) line.zeroMarks = d.zeroMarks;
     }
-    for (const std::string& problem : validateExercise(e)) result.errors.push_back(source + ": " + problem);
+    for (const std::string& problem : messagesOf(validateExercise(e))) result.errors.push_back(source + ": " + problem);
     if (e.needs)
-        for (const std::string& problem : validateLodNeeds(*e.needs)) result.errors.push_back(source + ": " + problem);
+        for (const std::string& problem : messagesOf(validateLodNeeds(*e.needs)))
+            result.errors.push_back(source + ": " + problem);
     if (result.errors.empty()) result.exercise = std::move(e);
     return result;
 }
@@ -216,10 +217,10 @@ std::string exerciseToJson(const Exercise& e, int indent) {
 std::string saveExercise(const Exercise& exercise, const std::string& path) {
     auto problems = validateExercise(exercise);
     if (exercise.needs)
-        for (const std::string& problem : validateLodNeeds(*exercise.needs)) problems.push_back(problem);
+        for (const Problem& problem : validateLodNeeds(*exercise.needs)) problems.push_back(problem);
     if (!problems.empty()) {
         std::string text = path + ": not saved, the exercise is invalid:";
-        for (const auto& p : problems) text += "\n  " + p;
+        for (const Problem& p : problems) text += "\n  " + p.message;
         return text;
     }
     // Never a file the reader refuses.

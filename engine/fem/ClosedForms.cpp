@@ -5,12 +5,12 @@
 
 namespace palpate {
 
-const char* validateElasticMaterial(const ElasticMaterial& m) {
+Problems validateElasticMaterial(const ElasticMaterial& m) {
     if (!std::isfinite(m.youngsModulusNPerMm2) || m.youngsModulusNPerMm2 <= 0.0)
-        return "Young's modulus must be a positive number";
+        return oneProblem("youngsModulusNPerMm2", "Young's modulus must be a positive number");
     if (!std::isfinite(m.poissonRatio) || m.poissonRatio <= -1.0 || m.poissonRatio >= 0.5)
-        return "Poisson's ratio must be in (-1, 0.5)";
-    return "";
+        return oneProblem("poissonRatio", "Poisson's ratio must be in (-1, 0.5)");
+    return {};
 }
 
 double planeStrainModulusNPerMm2(const ElasticMaterial& m) {

@@ -3,6 +3,8 @@
 // that the reference FEM is validated against and that slopes are calibrated from.
 // Units: mm, N, moduli in N/mm^2 (= MPa; 1 kPa = 0.001 N/mm^2). The half-space is z <= 0.
 
+#include "base/params/Problem.h"
+
 #include <glm/vec3.hpp>
 
 namespace palpate {
@@ -14,7 +16,7 @@ struct ElasticMaterial {
 };
 
 /// "" when usable, else a message naming the field.
-const char* validateElasticMaterial(const ElasticMaterial& m);
+Problems validateElasticMaterial(const ElasticMaterial& m);
 
 /// Plane-strain (contact) modulus E* = E / (1 - nu^2).
 double planeStrainModulusNPerMm2(const ElasticMaterial& m);

@@ -10,20 +10,25 @@
 
 namespace palpate {
 
-const char* validateGradedBlockOptions(const GradedBlockDef& o) {
-    if (!std::isfinite(o.contactRadiusMm) || o.contactRadiusMm <= 0.0) return "contact radius must be positive";
-    if (o.contactRadiusOverSpacing < 1 || o.contactRadiusOverSpacing > 256) return "a/h must be in 1..256";
-    if (!std::isfinite(o.fineLateralFactor) || o.fineLateralFactor < 1.0) return "fine lateral zone must be >= a";
+Problems validateGradedBlockOptions(const GradedBlockDef& o) {
+    if (!std::isfinite(o.contactRadiusMm) || o.contactRadiusMm <= 0.0)
+        return oneProblem("contactRadiusMm", "contact radius must be positive");
+    if (o.contactRadiusOverSpacing < 1 || o.contactRadiusOverSpacing > 256)
+        return oneProblem("contactRadiusOverSpacing", "a/h must be in 1..256");
+    if (!std::isfinite(o.fineLateralFactor) || o.fineLateralFactor < 1.0)
+        return oneProblem("fineLateralFactor", "fine lateral zone must be >= a");
     if (o.contactEdge != ContactEdgeNodes::Grid &&
         (o.contactRadiusOverSpacing < 2 || o.fineLateralFactor * o.contactRadiusOverSpacing < o.contactRadiusOverSpacing + 2))
-        return "a bent contact edge needs a/h >= 2 and the fine lateral zone >= a + 2h";
-    if (!std::isfinite(o.fineDepthFactor) || o.fineDepthFactor <= 0.0) return "fine depth zone must be positive";
+        return oneProblem("fineLateralFactor",
+                          "a bent contact edge needs a/h >= 2 and the fine lateral zone >= a + 2h");
+    if (!std::isfinite(o.fineDepthFactor) || o.fineDepthFactor <= 0.0)
+        return oneProblem("fineDepthFactor", "fine depth zone must be positive");
     if (!std::isfinite(o.blockSizeFactor) || o.blockSizeFactor <= o.fineLateralFactor ||
         o.blockSizeFactor <= o.fineDepthFactor)
-        return "block size must exceed the fine zones";
+        return oneProblem("blockSizeFactor", "block size must exceed the fine zones");
     if (!std::isfinite(o.growthRatio) || (o.growthRatio != 0.0 && (o.growthRatio < 1.0 || o.growthRatio > 3.0)))
-        return "growth ratio must be 0 (automatic) or in [1, 3]";
-    return "";
+        return oneProblem("growthRatio", "growth ratio must be 0 (automatic) or in [1, 3]");
+    return {};
 }
 
 std::vector<double> gradedCoordinatesMm(double spacingMm, double fineExtentMm, double totalMm, double growthRatio) {
@@ -80,7 +85,7 @@ double effectiveGrowthRatio(const GradedBlockDef& o) {
 }
 
 GradedBlock makeGradedBlock(const GradedBlockDef& o) {
-    if (const char* e = validateGradedBlockOptions(o); *e) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateGradedBlockOptions(o)); !e.empty()) throw std::invalid_argument(e);
     GradedBlock b;
     const double a = o.contactRadiusMm;
     b.spacingMm = a / o.contactRadiusOverSpacing;

@@ -5,6 +5,8 @@
 // its main diagonal (Kuhn), the same way in every cell, so neighbouring faces conform. The lateral
 // grid may be bent into circular rings near the contact (ContactEdgeNodes), the same at all depths.
 
+#include "base/params/Problem.h"
+
 #include "engine/fem/TetMesh.h"
 
 #include <cstddef>
@@ -36,7 +38,7 @@ struct GradedBlockDef {
 };
 
 /// "" when usable, else a message naming the field.
-const char* validateGradedBlockOptions(const GradedBlockDef& o);
+Problems validateGradedBlockOptions(const GradedBlockDef& o);
 
 /// Node coordinates 0 = c0 < c1 < ... = totalMm: spacing `spacingMm` up to `fineExtentMm`, then
 /// cells growing by `growthRatio` (uniformly rescaled so the last node lands on totalMm).

@@ -225,7 +225,8 @@ struct HyperelasticFem::Impl {
 
 HyperelasticFem::HyperelasticFem(const TetMesh& mesh, const HyperelasticMaterial& material,
                                  std::vector<std::uint8_t> fixedDofs, const HyperelasticSolverDef& options) {
-    if (const std::string e = validateHyperelasticMaterial(material); !e.empty()) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateHyperelasticMaterial(material)); !e.empty())
+        throw std::invalid_argument(e);
     if (fixedDofs.size() != mesh.dofCount())
         throw std::invalid_argument("fixed-DOF mask has " + std::to_string(fixedDofs.size()) + " entries for " +
                                     std::to_string(mesh.dofCount()) + " DOFs");

@@ -25,11 +25,11 @@ std::optional<HyperelasticLaw> parseHyperelasticLaw(std::string_view name) {
     return std::nullopt;
 }
 
-std::string validateHyperelasticMaterial(const HyperelasticMaterial& m) {
-    if (const char* e = validateElasticMaterial(m.smallStrain); *e) return e;
+Problems validateHyperelasticMaterial(const HyperelasticMaterial& m) {
+    if (Problems e = validateElasticMaterial(m.smallStrain); !e.empty()) return e;
     if (m.law == HyperelasticLaw::Exponential && !(m.stiffeningExponent >= 0.0 && m.stiffeningExponent <= 100.0))
-        return "stiffening exponent b must be a number in [0, 100]";
-    return "";
+        return oneProblem("stiffeningExponent", "stiffening exponent b must be a number in [0, 100]");
+    return {};
 }
 
 HyperelasticLawEvaluator::HyperelasticLawEvaluator(const HyperelasticMaterial& m) {

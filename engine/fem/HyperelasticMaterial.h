@@ -9,6 +9,8 @@
 //   exponential:  W = mu/(2b) (exp(b psi) - 1) + lambda/2 (ln J)^2   (b > 0 stiffens with strain;
 //                 b -> 0 is the neo-Hookean law; Demiray's form on the compressible invariant)
 
+#include "base/params/Problem.h"
+
 #include "engine/fem/ClosedForms.h"
 
 #include <glm/mat3x3.hpp>
@@ -34,7 +36,7 @@ struct HyperelasticMaterial {
 };
 
 /// "" when usable, else a message naming the field.
-std::string validateHyperelasticMaterial(const HyperelasticMaterial& m);
+Problems validateHyperelasticMaterial(const HyperelasticMaterial& m);
 
 /// The law evaluated at one deformation gradient; J <= 0 gives valid = false (energy +inf).
 struct HyperelasticPoint {

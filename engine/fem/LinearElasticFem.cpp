@@ -221,7 +221,8 @@ struct StiffnessMatrix::Data {
 };
 
 StiffnessMatrix::StiffnessMatrix(const TetMesh& mesh, const ElasticMaterial& material) {
-    if (const char* e = validateElasticMaterial(material); *e) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateElasticMaterial(material)); !e.empty())
+        throw std::invalid_argument(e);
     if (mesh.nodesMm.empty() || mesh.tets.empty()) throw std::invalid_argument("empty tet mesh");
     for (const auto& p : mesh.nodesMm)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))

@@ -246,7 +246,7 @@ FilledSurface fillSurface(const TissueMesh& mesh, const SurfaceFillDef& options)
 namespace {
 
 const ElasticMaterial& checkedMaterial(const ElasticMaterial& m) {
-    if (const char* e = validateElasticMaterial(m); *e) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateElasticMaterial(m)); !e.empty()) throw std::invalid_argument(e);
     return m;
 }
 

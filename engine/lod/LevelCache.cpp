@@ -54,47 +54,47 @@ std::string objText(const TissueMesh& mesh) {
 std::string levelCacheDir(const std::string& meshPath) { return meshPath + ".levels"; }
 
 std::optional<MeshLevels> readLevelCache(const std::string& dir, const TissueMesh& source, const LevelDef& options,
-                                         std::string& why, const LodProgressFn& progress,
+                                         std::string& error, const LodProgressFn& progress,
                                          const std::atomic<bool>* cancel) {
     namespace fs = std::filesystem;
     const fs::path indexPath = fs::path(dir) / kIndexName;
     std::error_code ec;
     if (!fs::exists(fs::symlink_status(indexPath, ec))) {
-        why = "no cache at " + dir;
+        error = "no cache at " + dir;
         return std::nullopt;
     }
     // The bounded reader: a FIFO or a huge file in the cache's place is refused, not read.
     std::string readError;
     const std::optional<std::string> text = readInputFile(indexPath.string(), kLevelCacheIndexFile, readError);
     if (!text) {
-        why = readError;
+        error = readError;
         return std::nullopt;
     }
     Json j;
     try {
         j = Json::parse(*text);
     } catch (const std::exception& e) {
-        why = indexPath.string() + ": corrupt: " + e.what();
+        error = indexPath.string() + ": corrupt: " + e.what();
         return std::nullopt;
     }
     const std::uint64_t hash = meshHash(source);
     try {
         if (j.at("format").get<std::string>() != kFormat) {
-            why = indexPath.string() + ": not a levels index";
+            error = indexPath.string() + ": not a levels index";
             return std::nullopt;
         }
         if (j.at("version").get<int>() != kLevelCacheVersion) {
-            why = indexPath.string() + ": version " + j.at("version").dump() + " (this build writes " +
-                  std::to_string(kLevelCacheVersion) + ")";
+            error = indexPath.string() + ": version " + j.at("version").dump() + " (this build writes " +
+                    std::to_string(kLevelCacheVersion) + ")";
             return std::nullopt;
         }
         if (j.at("source_hash").get<std::string>() != hex64(hash)) {
-            why = "stale: the mesh changed since the cache was made (hash " + j.at("source_hash").get<std::string>() +
-                  ", now " + hex64(hash) + ")";
+            error = "stale: the mesh changed since the cache was made (hash " + j.at("source_hash").get<std::string>() +
+                    ", now " + hex64(hash) + ")";
             return std::nullopt;
         }
         if (j.at("options") != optionsJson(options)) {
-            why = "stale: made with other level options";
+            error = "stale: made with other level options";
             return std::nullopt;
         }
         MeshLevels out;
@@ -111,16 +111,16 @@ std::optional<MeshLevels> readLevelCache(const std::string& dir, const TissueMes
             if (progress) progress(double(k - 1) / double(levels.size()), "reading level " + std::to_string(k));
             const std::string file = entry.at("file").get<std::string>();
             if (file.find('/') != std::string::npos || file.find('\\') != std::string::npos || file.empty() || file[0] == '.') {
-                why = indexPath.string() + ": level file name '" + file + "' is not a plain name in the cache folder";
+                error = indexPath.string() + ": level file name '" + file + "' is not a plain name in the cache folder";
                 return std::nullopt;
             }
             auto loaded = TissueMesh::load((fs::path(dir) / file).string());
             if (!loaded.mesh) {
-                why = "corrupt: " + loaded.error();
+                error = "corrupt: " + loaded.error();
                 return std::nullopt;
             }
             if (hex64(meshHash(*loaded.mesh)) != entry.at("hash").get<std::string>()) {
-                why = "corrupt: " + file + " is not the level the index describes (hash differs)";
+                error = "corrupt: " + file + " is not the level the index describes (hash differs)";
                 return std::nullopt;
             }
             MeshLevel level;
@@ -128,15 +128,15 @@ std::optional<MeshLevels> readLevelCache(const std::string& dir, const TissueMes
             level.targetVertices = entry.at("target_vertices").get<std::size_t>();
             level.seconds = entry.at("seconds").get<double>();
             if (const std::string problem = levelTopologyProblem(source, level.mesh); !problem.empty()) {
-                why = "corrupt: " + file + ": " + problem;
+                error = "corrupt: " + file + ": " + problem;
                 return std::nullopt;
             }
             if (level.mesh.vertexCount() >= out.levels.back().mesh.vertexCount()) {
-                why = "corrupt: " + file + " is not coarser than the level before it";
+                error = "corrupt: " + file + " is not coarser than the level before it";
                 return std::nullopt;
             }
             if (!mapLevelToSource(source, level, cancel)) {
-                why = "cancelled";
+                error = "cancelled";
                 out.cancelled = true;
                 return std::nullopt;
             }
@@ -146,7 +146,7 @@ std::optional<MeshLevels> readLevelCache(const std::string& dir, const TissueMes
         return out;
     } catch (const std::exception& e) {
         // Missing keys and wrong types (nlohmann throws out_of_range / type_error).
-        why = indexPath.string() + ": corrupt: " + e.what();
+        error = indexPath.string() + ": corrupt: " + e.what();
         return std::nullopt;
     }
 }
@@ -181,7 +181,7 @@ std::string writeLevelCache(const std::string& dir, const MeshLevels& levels, co
 
 LevelCacheResult loadOrGenerateLevels(const std::string& meshPath, const TissueMesh& source, const LevelDef& options,
                                       const LodProgressFn& progress, const std::atomic<bool>* cancel, bool useCache) {
-    if (const std::string e = validateLevelDef(options); !e.empty()) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateLevelDef(options)); !e.empty()) throw std::invalid_argument(e);
     LevelCacheResult result;
     const std::string dir = levelCacheDir(meshPath);
     if (useCache) {

@@ -19,10 +19,10 @@ inline constexpr int kLevelCacheVersion = 1;
 /// "<meshPath>.levels".
 std::string levelCacheDir(const std::string& meshPath);
 
-/// The cached levels, or nullopt with `why` saying what made the cache unusable.
-std::optional<MeshLevels> readLevelCache(const std::string& cacheDir, const TissueMesh& source,
-                                         const LevelDef& options, std::string& why,
-                                         const LodProgressFn& progress = {}, const std::atomic<bool>* cancel = nullptr);
+/// The cached levels, or nullopt with `error` saying what made the cache unusable.
+std::optional<MeshLevels> readLevelCache(const std::string& cacheDir, const TissueMesh& source, const LevelDef& options,
+                                         std::string& error, const LodProgressFn& progress = {},
+                                         const std::atomic<bool>* cancel = nullptr);
 
 /// Writes the coarse levels and then the index, each atomically (base/io/AtomicFile.h), so a crash
 /// leaves either no index or a complete cache. Returns "" or the problem, naming the path.

@@ -35,21 +35,25 @@ VertexId nearestVertex(const TissueMesh& mesh, const glm::vec3& pointMm) {
 
 }  // namespace
 
-std::string validateLodMeasureDef(const LodMeasureDef& def) {
-    if (const std::string e = validateToolContact(def.contact); !e.empty()) return e;
-    if (def.ringCounts.empty()) return "ring counts: none given";
+Problems validateLodMeasureDef(const LodMeasureDef& def) {
+    if (Problems e = validateToolContact(def.contact); !e.empty()) return e;
+    if (def.ringCounts.empty()) return oneProblem("ringCounts", "ring counts: none given");
     for (int r : def.ringCounts)
-        if (r < 1 || r > kMaxRings) return "ring counts: " + std::to_string(r) + " is not in 1.." + std::to_string(kMaxRings);
-    if (def.timing.repeats < 1) return "timing repeats must be at least 1";
-    if (!(def.timing.minMeasureMs >= 0.0)) return "timing min measure ms must be 0 or more";
+        if (r < 1 || r > kMaxRings)
+            return oneProblem("ringCounts",
+                              "ring counts: " + std::to_string(r) + " is not in 1.." + std::to_string(kMaxRings));
+    if (def.timing.repeats < 1) return oneProblem("timing.repeats", "timing repeats must be at least 1");
+    if (!(def.timing.minMeasureMs >= 0.0))
+        return oneProblem("timing.minMeasureMs", "timing min measure ms must be 0 or more");
     if (def.press.settleTicks < 1 || !(def.press.toolDepthMm > 0.0) || !(def.press.regionInRadii > 0.0))
-        return "press: settle ticks, tool depth and region must be positive";
+        return oneProblem("press", "press: settle ticks, tool depth and region must be positive");
     return {};
 }
 
 LodMeasurement measureLodCandidates(const MeshLevels& levels, const LodMeasureDef& def, const LodProgressFn& progress,
                                     const std::atomic<bool>* cancel) {
-    if (const std::string e = validateLodMeasureDef(def); !e.empty()) throw std::invalid_argument("lod measure: " + e);
+    if (const std::string e = joinedMessages(validateLodMeasureDef(def)); !e.empty())
+        throw std::invalid_argument("lod measure: " + e);
     if (levels.levels.empty()) throw std::invalid_argument("lod measure: no levels");
     const std::set<int> ringSet(def.ringCounts.begin(), def.ringCounts.end());
     const TissueMesh& fine = levels.levels.front().mesh;

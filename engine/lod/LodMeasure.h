@@ -6,6 +6,8 @@
 // deformation carried to the source surface (MeshLevels::toFine) and compared there, so that a
 // coarse level is not judged only at its own few vertices.
 
+#include "base/params/Problem.h"
+
 #include "engine/models/slopering/SlopeRingParams.h"
 #include "engine/models/TickTimer.h"
 #include "engine/core/ToolPath.h"
@@ -30,7 +32,7 @@ struct LodMeasureDef {
 };
 
 /// "" when usable, else a message naming the field.
-std::string validateLodMeasureDef(const LodMeasureDef& def);
+Problems validateLodMeasureDef(const LodMeasureDef& def);
 
 struct LodMeasurement {
     std::vector<LodCandidate> candidates;  ///< level by level, ring counts ascending

@@ -3,6 +3,8 @@
 // exercise or a tissue preset may carry them as "needs": {"max_error": E, "budget_us": T}; the
 // planner (LodPlanner.h) picks the cheapest level and ring count that meets both.
 
+#include "base/params/Problem.h"
+
 #include <string>
 #include <vector>
 
@@ -22,6 +24,6 @@ struct LodNeeds {
 
 /// Every problem, each naming the key as `keyPrefix` + "max_error" / "budget_us" (e.g. "needs.");
 /// empty when usable. Catches negative, zero, NaN and absurdly large values.
-std::vector<std::string> validateLodNeeds(const LodNeeds& needs, const std::string& keyPrefix = "needs.");
+Problems validateLodNeeds(const LodNeeds& needs, const std::string& keyPrefix = "needs.");
 
 }  // namespace palpate

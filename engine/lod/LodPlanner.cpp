@@ -34,7 +34,7 @@ std::string describeCandidate(const LodCandidate& c) {
 LodPlan planLod(const std::vector<LodCandidate>& candidates, const LodNeeds& needs) {
     LodPlan plan;
     if (const auto problems = validateLodNeeds(needs); !problems.empty()) {
-        plan.error = problems.front();
+        plan.error = problems.front().message;
         return plan;
     }
     if (candidates.empty()) {

@@ -57,10 +57,11 @@ DecimatedSurface snapshot(const OmMesh& om, std::size_t target) {
 
 }  // namespace
 
-std::string validateDecimationGuards(const DecimationGuards& g) {
+Problems validateDecimationGuards(const DecimationGuards& g) {
     if (!std::isfinite(g.maxNormalDeviationDeg) || g.maxNormalDeviationDeg <= 0.0 || g.maxNormalDeviationDeg > 180.0)
-        return "max normal deviation must be in (0, 180] degrees";
-    if (!std::isfinite(g.maxAspectRatio) || g.maxAspectRatio < 1.0) return "max aspect ratio must be at least 1";
+        return oneProblem("maxNormalDeviationDeg", "max normal deviation must be in (0, 180] degrees");
+    if (!std::isfinite(g.maxAspectRatio) || g.maxAspectRatio < 1.0)
+        return oneProblem("maxAspectRatio", "max aspect ratio must be at least 1");
     return {};
 }
 
@@ -68,7 +69,7 @@ DecimationResult decimateProgressively(const TissueMesh& source, std::span<const
                                        const DecimationGuards& guards, const std::function<void(double)>& progress,
                                        const std::atomic<bool>* cancel) {
     DecimationResult result;
-    if (const std::string e = validateDecimationGuards(guards); !e.empty()) {
+    if (const std::string e = joinedMessages(validateDecimationGuards(guards)); !e.empty()) {
         result.error = e;
         return result;
     }

@@ -5,6 +5,8 @@
 // manifold closed and manifold. A collapse keeps one end's position, so every coarse vertex sits
 // exactly on a vertex of the finer surface.
 
+#include "base/params/Problem.h"
+
 #include "engine/core/TissueMesh.h"
 
 #include <array>
@@ -25,7 +27,7 @@ struct DecimationGuards {
 };
 
 /// "" when usable, else a message naming the field.
-std::string validateDecimationGuards(const DecimationGuards& guards);
+Problems validateDecimationGuards(const DecimationGuards& guards);
 
 struct DecimatedSurface {
     std::size_t targetVertices = 0;

@@ -10,12 +10,16 @@
 
 namespace palpate {
 
-std::string validateLevelDef(const LevelDef& o) {
+Problems validateLevelDef(const LevelDef& o) {
     if (!std::isfinite(o.vertexRatio) || o.vertexRatio <= 0.05 || o.vertexRatio >= 0.95)
-        return "levels: vertex ratio must be in (0.05, 0.95)";
-    if (o.minVertices < 8) return "levels: min vertices must be at least 8";
-    if (o.maxCoarseLevels < 0 || o.maxCoarseLevels > 20) return "levels: max coarse levels must be in 0..20";
-    if (const std::string e = validateDecimationGuards(o.guards); !e.empty()) return "levels: " + e;
+        return oneProblem("vertexRatio", "levels: vertex ratio must be in (0.05, 0.95)");
+    if (o.minVertices < 8) return oneProblem("minVertices", "levels: min vertices must be at least 8");
+    if (o.maxCoarseLevels < 0 || o.maxCoarseLevels > 20)
+        return oneProblem("maxCoarseLevels", "levels: max coarse levels must be in 0..20");
+    if (Problems guards = validateDecimationGuards(o.guards); !guards.empty()) {
+        for (Problem& p : guards) p.message = "levels: " + p.message;
+        return guards;
+    }
     return {};
 }
 
@@ -51,7 +55,7 @@ std::string levelTopologyProblem(const TissueMesh& source, const TissueMesh& lev
 
 MeshLevels generateLevels(const TissueMesh& source, const LevelDef& options, const LodProgressFn& progress,
                           const std::atomic<bool>* cancel) {
-    if (const std::string e = validateLevelDef(options); !e.empty()) throw std::invalid_argument(e);
+    if (const std::string e = joinedMessages(validateLevelDef(options)); !e.empty()) throw std::invalid_argument(e);
     using Clock = std::chrono::steady_clock;
     auto say = [&](double fraction, const std::string& stage) {
         if (progress) progress(std::clamp(fraction, 0.0, 1.0), stage);

@@ -4,6 +4,8 @@
 // (SurfaceEmbedding.h), so that a deformation computed on any level can be shown on any other.
 // Generation may run on a worker thread: it reports progress and stops when asked.
 
+#include "base/params/Problem.h"
+
 #include "engine/core/TissueMesh.h"
 #include "engine/lod/MeshDecimation.h"
 #include "engine/lod/SurfaceEmbedding.h"
@@ -26,7 +28,7 @@ struct LevelDef {
 };
 
 /// "" when usable, else a message naming the field.
-std::string validateLevelDef(const LevelDef& options);
+Problems validateLevelDef(const LevelDef& options);
 /// The vertex counts the coarse levels aim at for a source of `sourceVertices` (descending).
 std::vector<std::size_t> levelTargets(std::size_t sourceVertices, const LevelDef& options);
 

@@ -33,7 +33,7 @@ StiffeningChoice chooseStiffening(const StiffeningCalibration& reference, const 
         return c;
     }
     if (const auto problems = validateLodNeeds(needs); !problems.empty()) {
-        c.error = problems.front();
+        c.error = problems.front().message;
         return c;
     }
     if (depths.empty()) {

@@ -46,14 +46,15 @@ void hashBytes(std::uint64_t& hash, const void* data, std::size_t size) {
 
 }  // namespace
 
-std::string validateHapticLoopDef(const HapticLoopDef& def) {
+Problems validateHapticLoopDef(const HapticLoopDef& def) {
     if (!hapticRateInRange(def.rateHz))
-        return "haptic rate " + std::to_string(def.rateHz) + " Hz is out of range " + formatNumber(kMinHapticRateHz) +
-               ".." + formatNumber(kMaxHapticRateHz) + " Hz";
+        return oneProblem("rateHz", "haptic rate " + std::to_string(def.rateHz) + " Hz is out of range " +
+                                        formatNumber(kMinHapticRateHz) + ".." + formatNumber(kMaxHapticRateHz) + " Hz");
     if (!std::isfinite(def.spinFraction) || def.spinFraction < 0.0 || def.spinFraction > 0.9)
-        return "spinFraction " + std::to_string(def.spinFraction) + " must be in 0..0.9 of the period";
+        return oneProblem("spinFraction",
+                          "spinFraction " + std::to_string(def.spinFraction) + " must be in 0..0.9 of the period");
     if (def.fifoPriority < 1 || def.fifoPriority > 99)
-        return "fifoPriority " + std::to_string(def.fifoPriority) + " must be in 1..99";
+        return oneProblem("fifoPriority", "fifoPriority " + std::to_string(def.fifoPriority) + " must be in 1..99");
     return validateSafetyFilterDef(def.safety);
 }
 
@@ -64,7 +65,7 @@ HapticLoop::HapticLoop(const HapticLoopDef& def, std::unique_ptr<HapticScene> sc
       mScene(std::move(scene)),
       mDevice(std::move(device)),
       mSafety(mDevice ? mDevice->spec() : DeviceSpec{}, def.safety) {
-    const std::string problem = validateHapticLoopDef(def);
+    const std::string problem = joinedMessages(validateHapticLoopDef(def));
     if (!problem.empty()) throw std::invalid_argument(problem);
     if (!mScene) throw std::invalid_argument("HapticLoop needs a scene");
     if (!mDevice) throw std::invalid_argument("HapticLoop needs a device");

@@ -5,6 +5,8 @@
 // tick itself never allocates, locks, logs or does I/O. The same tick runs in a stepped mode on a
 // virtual clock, so tests and replays are deterministic.
 
+#include "base/params/Problem.h"
+
 #include "device/HapticDevice.h"
 #include "device/SafetyFilter.h"
 #include "engine/scene/HapticScene.h"
@@ -35,7 +37,7 @@ struct HapticLoopDef {
 };
 
 /// "" when usable, else a message naming the field.
-std::string validateHapticLoopDef(const HapticLoopDef& def);
+Problems validateHapticLoopDef(const HapticLoopDef& def);
 
 /// Timing of a run, from the loop's histograms (read after stop(), or in stepped mode).
 struct LoopReport {

@@ -53,6 +53,27 @@ struct ModelDef {
     ContactDef contact;
 };
 
+/// How a model's stability is judged (docs/stability.md), said in the model's own terms: which
+/// bound limits it and what it renders per unit tool displacement. engine/stability holds the
+/// arithmetic of each rule, so a new model that fits an existing rule touches only its descriptor.
+struct ModelStability {
+    enum class Bound {
+        LoopGain,        ///< the slope-ring update's alpha (1 + |m1| k_c) < 2 (slopeRing parameters)
+        IntegratorStep,  ///< an integrator's step h omega_max < its bound (massSpring parameters)
+        None,            ///< nothing: the dent follows the tool, not the force
+    };
+    enum class Rendered {
+        SlopeRing,       ///< k_s |m1| F in closed form (slopeRing parameters)
+        PureSpring,      ///< a spring of springStiffnessNPerMm
+        MeasuredOnMesh,  ///< measured on the real model pressed on the mesh (needs the mesh)
+    };
+    Bound bound = Bound::None;
+    Rendered rendered = Rendered::PureSpring;
+    MassSpringIntegrator integrator = MassSpringIntegrator::SymplecticEuler;  ///< of IntegratorStep
+    double springStiffnessNPerMm = 0.0;                                       ///< of PureSpring
+    bool rendersFrictionProxy = false;  ///< also renders the friction proxy's stick spring
+};
+
 /// The translation context of the models' labels and descriptions, the engine's own.
 inline constexpr const char* kModelTextContext = "palpate::Models";
 
@@ -72,6 +93,8 @@ struct ModelDescriptor {
     /// Builds it from valid parameters; `tets` is the surface's tetrahedral fill (volumetric-rings).
     std::unique_ptr<DeformationModel> (*make)(const ModelDef& def, const TissueMesh& mesh, const Octree& octree,
                                               const TetMesh& tets);
+    /// Its stability rules for this definition (ModelStability).
+    ModelStability (*stability)(const ModelDef& def);
     bool needsTets = false;           ///< it runs on a tetrahedral fill of the surface
 };
 

@@ -223,7 +223,7 @@ std::string tooLong(const std::string& field, std::size_t bytes, std::size_t lim
 
 }  // namespace
 
-std::string validateRecordingHeader(const RecordingHeader& h) {
+Problems validateRecordingHeader(const RecordingHeader& h) {
     // The same limits decodeRecordingHeader, decodeScene and decodeDevice read with.
     const struct {
         const char* field;
@@ -239,12 +239,13 @@ std::string validateRecordingHeader(const RecordingHeader& h) {
         {"note", h.note, kMaxNoteBytes, "the note"},
     };
     for (const auto& t : texts)
-        if (t.text.size() > t.limit) return tooLong(t.field, t.text.size(), t.limit, t.what);
+        if (t.text.size() > t.limit) return oneProblem(t.field, tooLong(t.field, t.text.size(), t.limit, t.what));
     std::vector<std::uint8_t> bytes;
     encodeRecordingHeader(h, bytes);
     if (bytes.size() - kPreambleBytes - 4 > kMaxHeaderBytes)
-        return tooLong("length", bytes.size() - kPreambleBytes - 4, kMaxHeaderBytes, "the header");
-    return "";
+        return oneProblem("length",
+                          tooLong("length", bytes.size() - kPreambleBytes - 4, kMaxHeaderBytes, "the header"));
+    return {};
 }
 
 void encodeRecordingHeader(const RecordingHeader& h, std::vector<std::uint8_t>& out) {
@@ -274,36 +275,37 @@ void encodeRecordingHeader(const RecordingHeader& h, std::vector<std::uint8_t>& 
     w.u32(crc32(body.data(), body.size()));
 }
 
-bool decodeRecordingHeader(const std::uint8_t* data, std::size_t size, RecordingHeader& header,
-                           std::size_t& headerBytes, std::string& error) {
+std::string decodeRecordingHeader(const std::uint8_t* data, std::size_t size, RecordingHeader& header,
+                                  std::size_t& headerBytes) {
+    std::string error;
     if (size < sizeof(kRecordingMagic) || std::memcmp(data, kRecordingMagic, sizeof(kRecordingMagic)) != 0) {
         error = "header.magic: not a Palpate recording (expected \"PALPREC\")";
-        return false;
+        return error;
     }
     if (size < kPreambleBytes) {
         error = "header.length: truncated (file ends after " + std::to_string(size) + " bytes)";
-        return false;
+        return error;
     }
     const std::uint8_t version = data[7];
     if (version < kOldestRecordingFormatVersion || version > kRecordingFormatVersion) {
         error = "header.formatVersion: " + std::to_string(version) + " is not supported (this build reads " +
                 std::to_string(kOldestRecordingFormatVersion) + " to " + std::to_string(kRecordingFormatVersion) + ")";
-        return false;
+        return error;
     }
     const std::uint32_t length = readU32(data + 8);
     if (length > kMaxHeaderBytes) {
         error = "header.length: " + std::to_string(length) + " bytes exceeds the limit of " +
                 std::to_string(kMaxHeaderBytes);
-        return false;
+        return error;
     }
     if (size - kPreambleBytes < std::size_t(length) + 4) {
         error = "header.length: " + std::to_string(length) + " bytes run past the end of the file";
-        return false;
+        return error;
     }
     const std::uint8_t* body = data + kPreambleBytes;
     if (crc32(body, length) != readU32(body + length)) {
         error = "header.crc: CRC mismatch (the header is damaged)";
-        return false;
+        return error;
     }
     ByteReader r(body, length, "header.");
     RecordingHeader h;
@@ -330,13 +332,13 @@ bool decodeRecordingHeader(const std::uint8_t* data, std::size_t size, Recording
     // Bytes after the known fields are allowed: later minor revisions append fields.
     if (!r.ok()) {
         error = r.error();
-        return false;
+        return error;
     }
     // 1 and 2 share every layout; 2 adds an event kind; 3 appends the contact; 4 the mesh's unit
     h.formatVersion = version;
     header = std::move(h);
     headerBytes = kPreambleBytes + length + 4;
-    return true;
+    return {};
 }
 
 // --- chunks ---

@@ -9,6 +9,8 @@
 // filled. Every chunk decodes on its own (its delta coding restarts), so a damaged chunk costs only
 // itself: the reader resynchronises on the next chunk magic.
 
+#include "base/params/Problem.h"
+
 #include "device/HapticDevice.h"
 #include "device/SafetyFilter.h"
 #include "engine/core/MeshUnit.h"
@@ -123,14 +125,14 @@ struct RecordingHeader {
 
 /// "" when the writer may write `header` (every text within its limit, the body within
 /// kMaxHeaderBytes), else the problem naming the field ("header.note: 100000 bytes, at most ...").
-std::string validateRecordingHeader(const RecordingHeader& header);
+Problems validateRecordingHeader(const RecordingHeader& header);
 
 /// Preamble, body and CRC, appended to `out`.
 void encodeRecordingHeader(const RecordingHeader& header, std::vector<std::uint8_t>& out);
 /// Parses the preamble and header from the start of `data`; sets `headerBytes` to where the first
 /// chunk may start. On failure returns false and `error` names the field ("header.meshPath: ...").
-bool decodeRecordingHeader(const std::uint8_t* data, std::size_t size, RecordingHeader& header,
-                           std::size_t& headerBytes, std::string& error);
+std::string decodeRecordingHeader(const std::uint8_t* data, std::size_t size, RecordingHeader& header,
+                                  std::size_t& headerBytes);
 
 void encodeParams(ByteWriter& w, const SlopeRingParams& params);
 SlopeRingParams decodeParams(ByteReader& r, const std::string& field);

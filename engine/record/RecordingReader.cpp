@@ -128,8 +128,9 @@ std::string describe(const RecordingEvent& e) {
 }
 
 /// Parses a data chunk's event section. Unknown kinds are skipped (later format revisions).
-bool parseEvents(const std::uint8_t* cursor, const std::uint8_t* end, std::uint64_t firstTick,
-                 std::vector<RecordingEvent>& out, std::uint32_t& count, std::string& why) {
+std::string parseEvents(const std::uint8_t* cursor, const std::uint8_t* end, std::uint64_t firstTick,
+                        std::vector<RecordingEvent>& out, std::uint32_t& count) {
+    std::string why;
     ByteReader r(cursor, std::size_t(end - cursor), "event.");
     const std::uint64_t n = r.varint("count");
     if (r.ok() && n > r.remaining() / 3) r.fail("count", std::to_string(n) + " events cannot fit in the chunk");
@@ -188,7 +189,7 @@ bool parseEvents(const std::uint8_t* cursor, const std::uint8_t* end, std::uint6
         }
         if (!p.ok()) {
             why = p.error();
-            return false;
+            return why;
         }
         r.skip("payload", length);
         if (!known) continue;
@@ -199,9 +200,9 @@ bool parseEvents(const std::uint8_t* cursor, const std::uint8_t* end, std::uint6
     }
     if (!r.ok()) {
         why = r.error();
-        return false;
+        return why;
     }
-    return true;
+    return {};
 }
 
 }  // namespace
@@ -250,18 +251,19 @@ void RecordingReader::addDamage(std::uint64_t offset, std::uint64_t bytes, std::
     mDamage.push_back(std::move(d));
 }
 
-bool RecordingReader::scanData(const ChunkHeader& h, const std::uint8_t* payload, ChunkInfo& info,
-                               std::vector<RecordingEvent>& events, std::string& why) {
+std::string RecordingReader::scanData(const ChunkHeader& h, const std::uint8_t* payload, ChunkInfo& info,
+                                      std::vector<RecordingEvent>& events) {
+    std::string why;
     const std::uint8_t* after = nullptr;
     if (!decodeTicks(h, payload, mScratch, &after)) {
         why = "chunk ticks do not decode";
-        return false;
+        return why;
     }
     const std::size_t firstEvent = events.size();
     std::uint32_t count = 0;
-    if (!parseEvents(after, payload + h.payloadBytes, h.firstTick, events, count, why)) {
+    if (!(why = parseEvents(after, payload + h.payloadBytes, h.firstTick, events, count)).empty()) {
         events.resize(firstEvent);
-        return false;
+        return why;
     }
     info.events = count;
     if (!mScratch.empty()) {
@@ -283,7 +285,7 @@ bool RecordingReader::scanData(const ChunkHeader& h, const std::uint8_t* payload
             e.timeS = double(e.tick) * periodS();
         }
     }
-    return true;
+    return {};
 }
 
 namespace {
@@ -351,7 +353,7 @@ void RecordingReader::scan() {
     mScan.runningHash = kHashSeed;
 
     std::size_t headerBytes = 0;
-    if (decodeRecordingHeader(data, size, mHeader, headerBytes, mHeaderError)) {
+    if ((mHeaderError = decodeRecordingHeader(data, size, mHeader, headerBytes)).empty()) {
         mSummary.headerOk = true;
         mScan.offset = headerBytes;
     } else if (mLive && headerCutShort(mBytes)) {
@@ -430,7 +432,7 @@ void RecordingReader::scanChunks() {
         if (h.type == ChunkType::Data) {
             std::string why;
             std::vector<RecordingEvent> chunkEvents;
-            if (!scanData(h, payload, info, chunkEvents, why)) {
+            if (!(why = scanData(h, payload, info, chunkEvents)).empty()) {
                 addDamage(offset, chunkBytes, "chunk does not decode: " + why, &h);
                 st.hashKnown = false;
                 continue;

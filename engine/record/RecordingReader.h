@@ -145,8 +145,8 @@ private:
     void scan();
     void scanChunks();
     void finishScan(std::vector<RecordingEvent>& newEvents);
-    bool scanData(const ChunkHeader& header, const std::uint8_t* payload, ChunkInfo& info,
-                  std::vector<RecordingEvent>& events, std::string& why);
+    std::string scanData(const ChunkHeader& header, const std::uint8_t* payload, ChunkInfo& info,
+                         std::vector<RecordingEvent>& events);
     void addDamage(std::uint64_t offset, std::uint64_t bytes, std::string reason, const ChunkHeader* header);
 
     std::string mName;

@@ -139,22 +139,24 @@ std::string writeErrorText(const std::string& path, int error, std::uint64_t tic
 
 }  // namespace
 
-std::string validateRecordingWriterDef(const RecordingWriterDef& def) {
+Problems validateRecordingWriterDef(const RecordingWriterDef& def) {
     if (def.ringCapacityTicks < 2 || def.ringCapacityTicks > (1u << 24))
-        return "RecordingWriterDef.ringCapacityTicks must be in 2..16777216";
+        return oneProblem("ringCapacityTicks", "RecordingWriterDef.ringCapacityTicks must be in 2..16777216");
     if (def.commandCapacity < 2 || def.commandCapacity > (1u << 16))
-        return "RecordingWriterDef.commandCapacity must be in 2..65536";
+        return oneProblem("commandCapacity", "RecordingWriterDef.commandCapacity must be in 2..65536");
     if (!(def.drainPeriodS >= 0.001 && def.drainPeriodS <= 0.1))
-        return "RecordingWriterDef.drainPeriodS must be in 0.001..0.1 s (a crash loses at most one period)";
+        return oneProblem("drainPeriodS",
+                          "RecordingWriterDef.drainPeriodS must be in 0.001..0.1 s (a crash loses at most one period)");
     if (!(def.syncPeriodS > 0.0) || !std::isfinite(def.syncPeriodS))
-        return "RecordingWriterDef.syncPeriodS must be finite and > 0";
-    if (def.ticksPerChunk > (1u << 20)) return "RecordingWriterDef.ticksPerChunk must be at most 1048576";
-    return "";
+        return oneProblem("syncPeriodS", "RecordingWriterDef.syncPeriodS must be finite and > 0");
+    if (def.ticksPerChunk > (1u << 20))
+        return oneProblem("ticksPerChunk", "RecordingWriterDef.ticksPerChunk must be at most 1048576");
+    return {};
 }
 
 std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path, const RecordingHeader& header,
                                                          std::string& error, const RecordingWriterDef& def) {
-    if (const std::string problem = validateRecordingWriterDef(def); !problem.empty()) {
+    if (const std::string problem = joinedMessages(validateRecordingWriterDef(def)); !problem.empty()) {
         error = problem;
         return nullptr;
     }
@@ -163,7 +165,7 @@ std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path
         return nullptr;
     }
     // What the reader would refuse is never written (RecordingFormat.h states the limits).
-    if (const std::string problem = validateRecordingHeader(header); !problem.empty()) {
+    if (const std::string problem = joinedMessages(validateRecordingHeader(header)); !problem.empty()) {
         error = path + ": not recorded: " + problem;
         return nullptr;
     }

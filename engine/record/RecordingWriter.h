@@ -11,6 +11,8 @@
 // (mark, exerciseEvent, describe*, stats and flush are safe from any thread; close from one).
 // Usually driven through RecordingSession, which also attaches it to a HapticLoop.
 
+#include "base/params/Problem.h"
+
 #include "engine/loop/RecorderSink.h"
 #include "engine/record/RecordingFormat.h"
 #include "base/concurrency/SpscRing.h"
@@ -46,7 +48,7 @@ struct RecordingWriterDef {
 };
 
 /// "" when usable, else a message naming the field.
-std::string validateRecordingWriterDef(const RecordingWriterDef& def);
+Problems validateRecordingWriterDef(const RecordingWriterDef& def);
 
 /// Figures of a recording so far (any thread).
 struct RecordingStats {

@@ -43,12 +43,13 @@ std::unique_ptr<RecordingPlayer> RecordingPlayer::open(const RecordingReader& re
     std::unique_ptr<RecordingPlayer> player(new RecordingPlayer(reader, options));
     if (!options.prepareScene && options.applyRecordedExercise)
         player->mOptions.prepareScene = recordedExercisePhysics(reader.header());
-    if (!player->findReplayableRange(error)) return nullptr;
-    if (!player->restart(error)) return nullptr;
+    if (!(error = player->findReplayableRange()).empty()) return nullptr;
+    if (!(error = player->restart()).empty()) return nullptr;
     return player;
 }
 
-bool RecordingPlayer::findReplayableRange(std::string& error) {
+std::string RecordingPlayer::findReplayableRange() {
+    std::string error;
     const RecordingReader& reader = mReader;
     mRangeChunks = reader.chunks().size();
     mRangeDamage = reader.damage().size();
@@ -71,7 +72,7 @@ bool RecordingPlayer::findReplayableRange(std::string& error) {
                                     std::to_string(c.firstTick) + " (the ring overflowed while recording)";
             if (!started) {
                 error = reader.name() + ": cannot replay: the recording begins with a " + gap;
-                return false;
+                return error;
             }
             stopReason = gap;
             break;
@@ -81,7 +82,7 @@ bool RecordingPlayer::findReplayableRange(std::string& error) {
             // The state at this chunk's first tick depends on ticks that are lost.
             error = reader.name() + ": cannot replay: the start of the recording is damaged (" +
                     reader.damage().front().reason + ")";
-            return false;
+            return error;
         }
         if (started && c.firstTick != expected) {
             stopReason = "ticks " + std::to_string(expected) + ".." + std::to_string(c.firstTick) + " are missing";
@@ -94,10 +95,10 @@ bool RecordingPlayer::findReplayableRange(std::string& error) {
     }
     if (!started) {
         error = reader.name() + ": no ticks to replay";
-        return false;
+        return error;
     }
     mStatus.stopReason = stopReason;
-    return true;
+    return {};
 }
 
 bool RecordingPlayer::refresh() {
@@ -105,7 +106,7 @@ bool RecordingPlayer::refresh() {
     const std::uint64_t before = mLastReplayableTick;
     const std::string stopReason = mStatus.stopReason;
     std::string error;
-    if (!findReplayableRange(error)) {
+    if (!(error = findReplayableRange()).empty()) {
         mStatus.stopReason = stopReason;
         return false;
     }
@@ -174,10 +175,11 @@ std::unique_ptr<HapticScene> RecordingPlayer::buildScene(const RecordedScene& sc
     return built;
 }
 
-bool RecordingPlayer::restart(std::string& error) {
+std::string RecordingPlayer::restart() {
+    std::string error;
     const RecordingHeader& h = mReader.header();
     auto scene = buildScene(h.scene, mOptions.meshPath, mOptions.meshUnit, error);
-    if (!scene) return false;
+    if (!scene) return error;
     HapticLoopDef def;
     def.rateHz = h.rateHz;
     def.trySchedFifo = false;
@@ -186,7 +188,7 @@ bool RecordingPlayer::restart(std::string& error) {
         mLoop = std::make_unique<HapticLoop>(def, std::move(scene), std::make_unique<ReplayDevice>(mFeed, h.device.spec));
     } catch (const std::exception& e) {
         error = std::string("the recorded loop cannot be rebuilt: ") + e.what();
-        return false;
+        return error;
     }
     const std::string stopReason = mStatus.stopReason;  // a limit of the file, not of this run
     mStatus = ReplayStatus{};
@@ -204,7 +206,7 @@ bool RecordingPlayer::restart(std::string& error) {
     mEventsSeen = mReader.events().size();
     mEventsApplied = false;
     mEventsThroughTick = 0;
-    return true;
+    return {};
 }
 
 void RecordingPlayer::stop(const std::string& reason) {
@@ -355,7 +357,7 @@ bool RecordingPlayer::seek(std::uint64_t tick) {
     if (tick < mFirstTick || tick > mLastReplayableTick) return false;
     if (mHaveCurrent && tick < mCurrentTick) {
         std::string error;
-        if (!restart(error)) {
+        if (!(error = restart()).empty()) {
             stop(error);
             return false;
         }

@@ -99,8 +99,8 @@ public:
 
 private:
     RecordingPlayer(const RecordingReader& reader, const ReplayDef& options);
-    bool restart(std::string& error);
-    bool findReplayableRange(std::string& error);
+    std::string restart();
+    std::string findReplayableRange();
     std::unique_ptr<HapticScene> buildScene(const RecordedScene& scene, const std::string& pathOverride,
                                             const std::optional<MeshUnit>& unitOverride, std::string& error);
     bool nextRecord(RecordedTick& out);

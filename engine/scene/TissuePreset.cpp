@@ -278,7 +278,8 @@ PresetLoadResult parsePresetText(const std::string& textIn, const std::string& s
         r.number(j.at("needs"), "needs", "max_error", needs.maxErrorFraction, true);
         r.number(j.at("needs"), "needs", "budget_us", needs.budgetUs, true);
         if (complete) {
-            for (const std::string& problem : validateLodNeeds(needs)) result.errors.push_back(source + ": " + problem);
+            for (const std::string& problem : messagesOf(validateLodNeeds(needs)))
+                result.errors.push_back(source + ": " + problem);
             preset.needs = needs;
         }
     }
@@ -348,7 +349,7 @@ std::string tissuePresetToJson(const TissuePreset& preset) {
 std::string saveTissuePreset(const TissuePreset& preset, const std::string& path) {
     if (preset.needs)
         if (const auto problems = validateLodNeeds(*preset.needs); !problems.empty())
-            return path + ": not saved: " + problems.front();
+            return path + ": not saved: " + problems.front().message;
     // Never a file the reader refuses.
     const std::string text = tissuePresetToJson(preset);
     if (const std::string problem = sizeLimitProblem(text.size(), kPresetFile); !problem.empty())

@@ -108,31 +108,20 @@ double slopeRingPassiveEquivalentNPerMm(const SlopeRingParams& p) {
     return p.renderedStiffnessNPerMm() * (1.0 + lambda) / (1.0 - lambda);
 }
 
-bool renderedStiffnessNeedsMesh(ModelKind kind) {
-    return kind == ModelKind::MassSpringSymplectic || kind == ModelKind::MassSpringRk4 ||
-           kind == ModelKind::MassSpringImplicit || kind == ModelKind::MassSpringLocal;
+bool renderedStiffnessNeedsMesh(const ModelDef& def) {
+    return modelDescriptor(def).stability(def).rendered == ModelStability::Rendered::MeasuredOnMesh;
 }
 
 std::optional<RenderedStiffness> renderedStiffness(const ModelDef& def, const TissueMesh* mesh, double periodS) {
-    if (renderedStiffnessNeedsMesh(def.kind) && !mesh) return std::nullopt;
+    const ModelStability rules = modelDescriptor(def).stability(def);
+    if (rules.rendered == ModelStability::Rendered::MeasuredOnMesh && !mesh) return std::nullopt;
     RenderedStiffness out;
-    switch (def.kind) {
-        case ModelKind::SlopeRing:
-            out.lines.push_back(slopeRingNormal(def.slopeRing));
-            // Only the coherent method renders friction, and only with a friction coefficient.
-            if (def.slopeRingMethod == SlopeRingMethod::Coherent && def.contact.staticFriction > 0.0)
-                out.lines.push_back(frictionProxy(def.slopeRing));
-            break;
-        case ModelKind::VolumetricRings: out.lines.push_back(slopeRingNormal(def.slopeRing)); break;
-        case ModelKind::RadiusOfInfluence:
-            out.lines.push_back(pureSpring(def.radiusOfInfluence.stiffnessNPerMm));
-            break;
-        case ModelKind::Ffd: out.lines.push_back(pureSpring(def.ffd.stiffnessNPerMm)); break;
-        case ModelKind::MassSpringSymplectic:
-        case ModelKind::MassSpringRk4:
-        case ModelKind::MassSpringImplicit:
-        case ModelKind::MassSpringLocal: out.lines.push_back(massSpring(def, *mesh, periodS)); break;
+    switch (rules.rendered) {
+        case ModelStability::Rendered::SlopeRing: out.lines.push_back(slopeRingNormal(def.slopeRing)); break;
+        case ModelStability::Rendered::PureSpring: out.lines.push_back(pureSpring(rules.springStiffnessNPerMm)); break;
+        case ModelStability::Rendered::MeasuredOnMesh: out.lines.push_back(massSpring(def, *mesh, periodS)); break;
     }
+    if (rules.rendersFrictionProxy) out.lines.push_back(frictionProxy(def.slopeRing));
     return out;
 }
 

@@ -41,8 +41,8 @@ struct RenderedStiffness {
     std::vector<RenderedStiffnessLine> lines;  ///< the normal force first
 };
 
-/// True when the kind's rendered stiffness is measured on the mesh (the mass-spring kinds).
-bool renderedStiffnessNeedsMesh(ModelKind kind);
+/// True when the model's rendered stiffness is measured on the mesh (the mass-spring kinds).
+bool renderedStiffnessNeedsMesh(const ModelDef& def);
 
 /// Every line of `def` at period `periodS`. The mass-spring kinds are measured on `mesh` (pressed at
 /// its highest-valence vertex: the stiffest point), so need it: nullopt without one.

@@ -101,7 +101,7 @@ StabilityMargin noBound(const char* why) {
 
 }  // namespace
 
-bool stabilityMarginNeedsMesh(ModelKind kind) { return renderedStiffnessNeedsMesh(kind); }
+bool stabilityMarginNeedsMesh(const ModelDef& def) { return renderedStiffnessNeedsMesh(def); }
 
 StabilityMargin renderedStiffnessMargin(double stiffness, double dtS, double passiveAt1kHz) {
     ModelDef def;
@@ -117,25 +117,15 @@ StabilityMargin stabilityMargin(const ModelDef& def, const TissueMesh& mesh, dou
 
 std::optional<StabilityMargin> stabilityMarginIfKnown(const ModelDef& def, const TissueMesh* meshOrNull, double dtS,
                                                       double passiveAt1kHz) {
-    if (stabilityMarginNeedsMesh(def.kind) && !meshOrNull) return std::nullopt;
+    if (stabilityMarginNeedsMesh(def) && !meshOrNull) return std::nullopt;
+    const ModelStability rules = modelDescriptor(def).stability(def);
     StabilityMargin bound;
-    switch (def.kind) {
-        case ModelKind::SlopeRing: bound = slopeRing(def.slopeRing); break;
-        case ModelKind::VolumetricRings: bound = slopeRing(def.slopeRing); break;
-        case ModelKind::MassSpringSymplectic:
-            bound = massSpring(def.massSpring, MassSpringIntegrator::SymplecticEuler, *meshOrNull, dtS);
+    switch (rules.bound) {
+        case ModelStability::Bound::LoopGain: bound = slopeRing(def.slopeRing); break;
+        case ModelStability::Bound::IntegratorStep:
+            bound = massSpring(def.massSpring, rules.integrator, *meshOrNull, dtS);
             break;
-        case ModelKind::MassSpringRk4:
-            bound = massSpring(def.massSpring, MassSpringIntegrator::Rk4, *meshOrNull, dtS);
-            break;
-        case ModelKind::MassSpringImplicit:
-            bound = massSpring(def.massSpring, MassSpringIntegrator::BackwardEuler, *meshOrNull, dtS);
-            break;
-        case ModelKind::MassSpringLocal:
-            bound = massSpring(def.massSpring, def.massSpring.localIntegrator, *meshOrNull, dtS);
-            break;
-        case ModelKind::RadiusOfInfluence:
-        case ModelKind::Ffd:
+        case ModelStability::Bound::None:
             bound = noBound("no loop-gain or step bound (the dent follows the tool, not the force)");
             break;
     }

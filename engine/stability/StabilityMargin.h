@@ -46,9 +46,9 @@ StabilityMargin stabilityMargin(const ModelDef& def, const TissueMesh& mesh, dou
 /// `mesh` is null.
 std::optional<StabilityMargin> stabilityMarginIfKnown(const ModelDef& def, const TissueMesh* mesh, double dtS,
                                                       double passiveStiffnessAt1kHzNPerMm = kDefaultPassiveStiffnessAt1kHzNPerMm);
-/// True when the margin of `kind` depends on the mesh (the mass-spring kinds): without a mesh the
+/// True when the margin of the model depends on the mesh (the mass-spring kinds): without a mesh the
 /// caller cannot compute it.
-bool stabilityMarginNeedsMesh(ModelKind kind);
+bool stabilityMarginNeedsMesh(const ModelDef& def);
 /// The passivity margin of a pure spring (the geometric models' k_s; no mesh needed).
 StabilityMargin renderedStiffnessMargin(double stiffnessNPerMm, double dtS,
                                         double passiveStiffnessAt1kHzNPerMm = kDefaultPassiveStiffnessAt1kHzNPerMm);

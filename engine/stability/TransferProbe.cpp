@@ -12,8 +12,9 @@ namespace {
 /// One phase of the probe: the tool held at `depthMm`, ticks until the force settles. Appends
 /// every tick's force (N, along the rest normal, outward) to `forces`; false with `problem` set
 /// when the contact fails or the force does not settle.
-bool holdUntilSettled(DeformationModel& model, const TissueMesh& mesh, VertexId vertex, double periodS, double depthMm,
-                      const TransferProbeDef& def, std::vector<double>& forces, int& ticks, std::string& problem) {
+std::string holdUntilSettled(DeformationModel& model, const TissueMesh& mesh, VertexId vertex, double periodS,
+                             double depthMm, const TransferProbeDef& def, std::vector<double>& forces, int& ticks) {
+    std::string problem;
     const glm::vec3 n = mesh.restNormals()[vertex];
     const glm::vec3 tool = mesh.restPositionsMm()[vertex] - float(depthMm) * n;
     int quiet = 0;
@@ -23,23 +24,23 @@ bool holdUntilSettled(DeformationModel& model, const TissueMesh& mesh, VertexId 
         const double f = double(glm::dot(r.forceN, n));
         if (!std::isfinite(f)) {
             problem = "the rendered force is not finite";
-            return false;
+            return problem;
         }
         if (!r.contact || r.touched != vertex) {
             problem = "the probe's contact opened or moved off the pressed vertex";
-            return false;
+            return problem;
         }
         forces.push_back(f);
         quiet = ticks > 0 && std::abs(f - previous) <= def.settleTolerance * std::abs(f) ? quiet + 1 : 0;
         previous = f;
         if (quiet >= def.settleTicks) {
             ++ticks;
-            return true;
+            return {};
         }
     }
     problem = "the rendered force does not settle within " + std::to_string(def.maxTicks) +
               " ticks (an undamped model rings for ever)";
-    return false;
+    return problem;
 }
 
 }  // namespace
@@ -66,12 +67,14 @@ MeasuredTransfer measureRenderedTransfer(DeformationModel& model, const TissueMe
         return out;
     }
     std::vector<double> press;
-    if (!holdUntilSettled(model, mesh, vertex, periodS, def.pressDepthMm, def, press, out.pressTicks, out.problem))
+    if (!(out.problem = holdUntilSettled(model, mesh, vertex, periodS, def.pressDepthMm, def, press, out.pressTicks))
+             .empty())
         return out;
     const double base = press.back();
     std::vector<double> step;
-    if (!holdUntilSettled(model, mesh, vertex, periodS, def.pressDepthMm + def.stepMm, def, step, out.stepTicks,
-                          out.problem))
+    if (!(out.problem = holdUntilSettled(model, mesh, vertex, periodS, def.pressDepthMm + def.stepMm, def, step,
+                                         out.stepTicks))
+             .empty())
         return out;
     // s[n] = (F_n - F_base) / step; h[0] = s[0], h[n] = s[n] - s[n - 1].
     out.impulseNPerMm.resize(step.size());

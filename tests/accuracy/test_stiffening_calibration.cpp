@@ -75,10 +75,10 @@ TEST(StiffeningKnots, BadCurvesAreRefused) {
     EXPECT_THROW(knotsFromCurve(curve, 1.0), std::invalid_argument);
     StiffeningCalibrationDef def;
     def.depthsOverRadius = {0.3, 0.2};
-    EXPECT_NE(validateStiffeningCalibrationDef(def), "");
+    EXPECT_FALSE(validateStiffeningCalibrationDef(def).empty());
     def = {};
     def.material.smallStrain.poissonRatio = 0.6;
-    EXPECT_NE(validateStiffeningCalibrationDef(def), "");
+    EXPECT_FALSE(validateStiffeningCalibrationDef(def).empty());
     def = {};
     def.toolRadiusMm = -1.0;
     EXPECT_THROW(calibrateStiffening(def), std::invalid_argument);

@@ -45,7 +45,7 @@ TEST(DeviceUri, EverySimulatedSchemeParsesAndOpens) {
     for (const SchemeCase& c : cases) {
         DeviceUri parsed;
         std::string error;
-        ASSERT_TRUE(parseDeviceUri(c.uri, parsed, error)) << c.uri << ": " << error;
+        ASSERT_TRUE((error = parseDeviceUri(c.uri, parsed)).empty()) << c.uri << ": " << error;
         EXPECT_EQ(parsed.kind, c.kind) << c.uri;
         EXPECT_EQ(formatDeviceUri(parsed), c.uri);
         auto device = openDeviceUri(c.uri, error);
@@ -61,7 +61,7 @@ TEST(DeviceUri, EverySimulatedSchemeParsesAndOpens) {
 TEST(DeviceUri, MouseSchemeParsesAndOpens) {
     DeviceUri parsed;
     std::string error;
-    ASSERT_TRUE(parseDeviceUri("mouse:", parsed, error)) << error;
+    ASSERT_TRUE((error = parseDeviceUri("mouse:", parsed)).empty()) << error;
     EXPECT_EQ(parsed.kind, DeviceKind::Mouse);
     EXPECT_EQ(formatDeviceUri(parsed), "mouse:");
     auto device = openDeviceUri("mouse:", error);
@@ -81,7 +81,7 @@ TEST(DeviceUri, SimPathLoadsTheFileAndKeepsColonsInThePath) {
 
     DeviceUri parsed;
     std::string error;
-    ASSERT_TRUE(parseDeviceUri(uri, parsed, error)) << error;
+    ASSERT_TRUE((error = parseDeviceUri(uri, parsed)).empty()) << error;
     EXPECT_EQ(parsed.kind, DeviceKind::SimPath);
     EXPECT_EQ(parsed.path, file.string());
     EXPECT_EQ(formatDeviceUri(parsed), uri);
@@ -131,7 +131,7 @@ TEST(DeviceUri, BadUrisAreErrorsNamingTheUriAndTheProblem) {
     for (const BadUri& c : cases) {
         DeviceUri parsed;
         std::string error;
-        EXPECT_FALSE(parseDeviceUri(c.uri, parsed, error)) << c.uri;
+        EXPECT_FALSE((error = parseDeviceUri(c.uri, parsed)).empty()) << c.uri;
         EXPECT_TRUE(contains(error, c.mention)) << c.uri << " -> " << error;
         EXPECT_TRUE(c.uri.empty() || contains(error, "device URI '")) << error;
         std::string openError;
@@ -141,7 +141,7 @@ TEST(DeviceUri, BadUrisAreErrorsNamingTheUriAndTheProblem) {
     // Unknown schemes list what is known, so the user can correct the URI.
     std::string error;
     DeviceUri parsed;
-    parseDeviceUri("usb:1", parsed, error);
+    error = parseDeviceUri("usb:1", parsed);
     EXPECT_TRUE(contains(error, "sim:press") && contains(error, "mouse:")) << error;
     EXPECT_TRUE(contains(error, "hid:VID:PID[:SERIAL]") && contains(error, "falcon:")) << error;
 }
@@ -149,7 +149,7 @@ TEST(DeviceUri, BadUrisAreErrorsNamingTheUriAndTheProblem) {
 TEST(DeviceUri, EmptyUriIsAnError) {
     DeviceUri parsed;
     std::string error;
-    EXPECT_FALSE(parseDeviceUri("", parsed, error));
+    EXPECT_FALSE((error = parseDeviceUri("", parsed)).empty());
     EXPECT_TRUE(contains(error, "empty")) << error;
     EXPECT_EQ(openDeviceUri("", error), nullptr);
 }
@@ -174,7 +174,8 @@ TEST(DeviceUri, ListedSchemesAreTheOnesParsed) {
         EXPECT_FALSE(s.description.empty()) << s.uri;
         DeviceUri parsed;
         std::string error;
-        EXPECT_TRUE(parseDeviceUri(s.uri, parsed, error)) << s.uri << ": " << error;  // FILE parses as a name
+        EXPECT_TRUE((error = parseDeviceUri(s.uri, parsed)).empty())
+            << s.uri << ": " << error;  // FILE parses as a name
     }
     auto has = [&](const char* uri) {
         for (const DeviceSchemeInfo& s : schemes)
@@ -207,20 +208,20 @@ TEST(DeviceUri, HardwareSchemesParseAndFormatCanonically) {
     for (const Case& c : cases) {
         DeviceUri parsed;
         std::string error;
-        ASSERT_TRUE(parseDeviceUri(c.uri, parsed, error)) << c.uri << ": " << error;
+        ASSERT_TRUE((error = parseDeviceUri(c.uri, parsed)).empty()) << c.uri << ": " << error;
         EXPECT_EQ(parsed.kind, c.kind) << c.uri;
         EXPECT_EQ(formatDeviceUri(parsed), c.canonical) << c.uri;
         DeviceUri again;
-        ASSERT_TRUE(parseDeviceUri(formatDeviceUri(parsed), again, error)) << error;
+        ASSERT_TRUE((error = parseDeviceUri(formatDeviceUri(parsed), again)).empty()) << error;
         EXPECT_EQ(again, parsed) << c.uri;
     }
     DeviceUri parsed;
     std::string error;
-    ASSERT_TRUE(parseDeviceUri("hid:256f:c635:ABC:1", parsed, error));
+    ASSERT_TRUE((error = parseDeviceUri("hid:256f:c635:ABC:1", parsed)).empty());
     EXPECT_EQ(parsed.vendorId, 0x256f);
     EXPECT_EQ(parsed.productId, 0xc635);
     EXPECT_EQ(parsed.serial, "ABC:1");  // the serial may contain ':'
-    ASSERT_TRUE(parseDeviceUri("falcon:2?firmware=/x/fw.bin", parsed, error));
+    ASSERT_TRUE((error = parseDeviceUri("falcon:2?firmware=/x/fw.bin", parsed)).empty());
     EXPECT_EQ(parsed.index, 2);
     EXPECT_EQ(parsed.firmware, "/x/fw.bin");
 }
@@ -350,7 +351,7 @@ TEST(DeviceDiscovery, ListsSpaceMicePidJoysticksAndFalconsWithTheirUris) {
     for (const auto& d : found) {
         DeviceUri parsed;
         std::string error;
-        EXPECT_TRUE(parseDeviceUri(d.uri, parsed, error)) << d.uri << ": " << error;
+        EXPECT_TRUE((error = parseDeviceUri(d.uri, parsed)).empty()) << d.uri << ": " << error;
     }
 }
 

@@ -186,7 +186,7 @@ TEST(FalconFirmware, UploadFollowsTheBootLoaderSequence) {
     auto usb = backend.open(falconInfo(), error);
     ASSERT_TRUE(usb) << error;
     const auto fw = fakeFirmware(200);  // 4 chunks: 62 + 62 + 62 + 14
-    ASSERT_TRUE(uploadFalconFirmware(*usb, fw, error)) << error;
+    ASSERT_TRUE((error = uploadFalconFirmware(*usb, fw)).empty()) << error;
     EXPECT_EQ(falcon.uploadedBytes(), 200u);
     EXPECT_TRUE(falcon.firmwareRunning());
     // The FTDI set-up as documented: 9600 baud (0x4138), 8N1, DTR low-high, 140 kbaud (0x15),
@@ -222,7 +222,7 @@ TEST(FalconFirmware, ABadEchoTimeoutsAndUnplugAreClearErrors) {
         falcon.corruptEchoAt = 70;
         std::string error;
         auto usb = backend.open(falconInfo(), error);
-        EXPECT_FALSE(uploadFalconFirmware(*usb, fakeFirmware(200), error));
+        EXPECT_FALSE((error = uploadFalconFirmware(*usb, fakeFirmware(200))).empty());
         EXPECT_TRUE(contains(error, "echo of bytes 62.. does not match")) << error;
     }
     {
@@ -230,7 +230,7 @@ TEST(FalconFirmware, ABadEchoTimeoutsAndUnplugAreClearErrors) {
         auto usbDevice = backend.add(falconInfo());  // nothing answers: every read times out
         std::string error;
         auto usb = backend.open(falconInfo(), error);
-        EXPECT_FALSE(uploadFalconFirmware(*usb, fakeFirmware(10), error));
+        EXPECT_FALSE((error = uploadFalconFirmware(*usb, fakeFirmware(10))).empty());
         EXPECT_TRUE(contains(error, "did not answer the handshake")) << error;
         EXPECT_TRUE(contains(error, "LIBUSB_ERROR_TIMEOUT")) << error;
     }
@@ -242,17 +242,17 @@ TEST(FalconFirmware, ABadEchoTimeoutsAndUnplugAreClearErrors) {
         auto usb = backend.open(falconInfo(), error);
         ASSERT_TRUE(usb) << error;
         usbDevice->unplug();  // pulled out mid-upload: every transfer now fails with NO_DEVICE
-        EXPECT_FALSE(uploadFalconFirmware(*usb, fakeFirmware(10), error));
+        EXPECT_FALSE((error = uploadFalconFirmware(*usb, fakeFirmware(10))).empty());
         EXPECT_TRUE(contains(error, "LIBUSB_ERROR_NO_DEVICE")) << error;
     }
     {
         std::vector<std::uint8_t> bytes;
         std::string error;
-        EXPECT_FALSE(readFalconFirmwareFile("/no/such/falcon.bin", bytes, error));
+        EXPECT_FALSE((error = readFalconFirmwareFile("/no/such/falcon.bin", bytes)).empty());
         EXPECT_TRUE(contains(error, "Falcon firmware file '/no/such/falcon.bin': does not exist")) << error;
-        EXPECT_FALSE(readFalconFirmwareFile("", bytes, error));
+        EXPECT_FALSE((error = readFalconFirmwareFile("", bytes)).empty());
         EXPECT_TRUE(contains(error, "PALPATE_FALCON_FIRMWARE")) << error;
-        EXPECT_FALSE(readFalconFirmwareFile("/", bytes, error));
+        EXPECT_FALSE((error = readFalconFirmwareFile("/", bytes)).empty());
         EXPECT_TRUE(contains(error, "is a directory")) << error;
     }
 }
@@ -327,7 +327,9 @@ TEST(FalconDevice, UploadsFirmwareHomesThenRendersForceAndNeverBefore) {
     std::size_t homingSeen = 0;
     for (const auto& cmd : falcon.commands()) {
         if ((cmd[13] - 0x41) & 1) ++homingSeen;
-        if (decodeCommandAsReport(cmd).encoder != std::array<std::int16_t, 3>{0, 0, 0}) EXPECT_GE(homingSeen, 50u);
+        if (decodeCommandAsReport(cmd).encoder != std::array<std::int16_t, 3>{0, 0, 0}) {
+            EXPECT_GE(homingSeen, 50u);
+        }
     }
     device.emergencyStop();
     EXPECT_EQ(device.state(), DeviceState::Fault);

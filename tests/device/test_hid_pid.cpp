@@ -31,7 +31,7 @@ TEST(HidReportDescriptor, FieldsOfTheJoystickDescriptor) {
     const auto& bytes = pidJoystickDescriptor();
     HidReportDescriptor d;
     std::string error;
-    ASSERT_TRUE(parseHidReportDescriptor(bytes.data(), bytes.size(), d, error)) << error;
+    ASSERT_TRUE((error = parseHidReportDescriptor(bytes.data(), bytes.size(), d)).empty()) << error;
     EXPECT_TRUE(d.numberedReports);
     ASSERT_EQ(d.applications.size(), 1u);
     EXPECT_EQ(d.applications[0], hidUsage(0x01, 0x04));
@@ -65,7 +65,7 @@ TEST(HidPidCodec, ReportsMatchTheBytesDerivedFromTheDescriptor) {
     const auto& bytes = pidJoystickDescriptor();
     HidPidLayout layout;
     std::string error;
-    ASSERT_TRUE(resolveHidPidLayout(bytes.data(), bytes.size(), layout, error)) << error;
+    ASSERT_TRUE((error = resolveHidPidLayout(bytes.data(), bytes.size(), layout)).empty()) << error;
     // Set Effect: index 1, type Constant (1st of 3 -> 1), duration 100 ms, repeat/sample/delay 0,
     // gain 255, no trigger (0), axes X+Y and direction enable (bits 0..2 = 0x07), direction 90
     // degrees = 9000 of 36000 (0x2328), second direction 0.
@@ -93,7 +93,7 @@ TEST(HidPidCodec, ANonPidDescriptorIsRefusedByName) {
                                              0x7F, 0x75, 0x08, 0x95, 0x01, 0x81, 0x06, 0xC0};
     HidPidLayout layout;
     std::string error;
-    EXPECT_FALSE(resolveHidPidLayout(mouse.data(), mouse.size(), layout, error));
+    EXPECT_FALSE((error = resolveHidPidLayout(mouse.data(), mouse.size(), layout)).empty());
     EXPECT_TRUE(contains(error, "not a HID PID device")) << error;
     EXPECT_TRUE(contains(error, "Set Effect / Effect Block Index")) << error;
 }
@@ -120,7 +120,8 @@ TEST(HidReportDescriptor, MalformedDescriptorsNameTheByte) {
     for (const Case& c : cases) {
         HidReportDescriptor d;
         std::string error;
-        EXPECT_FALSE(parseHidReportDescriptor(c.bytes.data(), c.bytes.size(), d, error)) << c.mention << " " << error;
+        EXPECT_FALSE((error = parseHidReportDescriptor(c.bytes.data(), c.bytes.size(), d)).empty())
+            << c.mention << " " << error;
         EXPECT_TRUE(contains(error, c.mention)) << error;
         EXPECT_TRUE(d.fields.empty());
     }
@@ -151,13 +152,13 @@ TEST(HidReportDescriptor, RandomAndMutatedBytesNeverCrash) {
         }
         HidReportDescriptor d;
         std::string error;
-        if (!parseHidReportDescriptor(bytes.data(), bytes.size(), d, error)) {
+        if (!(error = parseHidReportDescriptor(bytes.data(), bytes.size(), d)).empty()) {
             ++rejected;
             EXPECT_FALSE(error.empty());
             continue;
         }
         HidPidLayout layout;
-        if (resolveHidPidLayout(bytes.data(), bytes.size(), layout, error)) {
+        if ((error = resolveHidPidLayout(bytes.data(), bytes.size(), layout)).empty()) {
             // Whatever was resolved must build reports within their declared size.
             for (const auto& r : {buildPidSetEffect(layout, 1, 100, 45.0), buildPidSetConstantForce(layout, 1, 0.3),
                                   buildPidEffectOperation(layout, 1, true),
@@ -193,11 +194,11 @@ TEST(HidSysfs, ReadsTheDescriptorOfAHidrawNode) {
         .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
     std::vector<std::uint8_t> out;
     std::string error;
-    ASSERT_TRUE(readHidrawReportDescriptor("/dev/hidraw3", out, error, root.string())) << error;
+    ASSERT_TRUE((error = readHidrawReportDescriptor("/dev/hidraw3", out, root.string())).empty()) << error;
     EXPECT_EQ(out, bytes);
-    EXPECT_FALSE(readHidrawReportDescriptor("/dev/hidraw4", out, error, root.string()));
+    EXPECT_FALSE((error = readHidrawReportDescriptor("/dev/hidraw4", out, root.string())).empty());
     EXPECT_TRUE(contains(error, "HID device '/dev/hidraw4': cannot read its report descriptor")) << error;
-    EXPECT_FALSE(readHidrawReportDescriptor("/dev/input/event3", out, error, root.string()));
+    EXPECT_FALSE((error = readHidrawReportDescriptor("/dev/input/event3", out, root.string())).empty());
     EXPECT_TRUE(contains(error, "not a hidraw node")) << error;
     fs::remove_all(root);
 }

@@ -403,10 +403,12 @@ TEST(SafetyFilter, ALongRunOfLateTicksFadesOutAtABoundedRateAndRampsBackWithoutA
 TEST(SafetyFilter, OverrunRulesAreValidated) {
     SafetyFilterDef def;
     def.maxConsecutiveOverruns = -1;
-    EXPECT_NE(validateSafetyFilterDef(def).find("maxConsecutiveOverruns"), std::string::npos);
+    EXPECT_TRUE(hasProblem(validateSafetyFilterDef(def), "maxConsecutiveOverruns"))
+        << joinedMessages(validateSafetyFilterDef(def));
     def = {};
     def.overrunFadeTimeS = 0.0;
-    EXPECT_NE(validateSafetyFilterDef(def).find("overrunFadeTimeS"), std::string::npos);
+    EXPECT_TRUE(hasProblem(validateSafetyFilterDef(def), "overrunFadeTimeS"))
+        << joinedMessages(validateSafetyFilterDef(def));
 }
 
 TEST(SafetyFilter, ReconnectRearms) {
@@ -449,11 +451,11 @@ TEST(SafetyFilter, NonFiniteClockGivesZero) {
 
 TEST(SafetyFilter, InvalidDefinitionsAreRejectedNamingTheField) {
     auto expectBad = [](SafetyFilterDef def, const char* field) {
-        const std::string problem = validateSafetyFilterDef(def);
+        const std::string problem = joinedMessages(validateSafetyFilterDef(def));
         EXPECT_NE(problem.find(field), std::string::npos) << problem;
         EXPECT_THROW(SafetyFilter(testSpec(), def), std::invalid_argument);
     };
-    EXPECT_EQ(validateSafetyFilterDef({}), "");
+    EXPECT_TRUE(validateSafetyFilterDef({}).empty());
     SafetyFilterDef d;
     d.holdOffThresholdFraction = 0.0;
     expectBad(d, "holdOffThresholdFraction");

@@ -197,14 +197,17 @@ TEST(SimulatedDevice, RejectsBadWaypointListsAndDefinitions) {
     EXPECT_THROW({ SimulatedDevice device(SimTrajectory::Waypoints); }, std::invalid_argument);
     SimulatedDeviceDef def;
     def.depthMm = -1.0;
-    EXPECT_NE(validateSimulatedDeviceDef(def).find("depthMm"), std::string::npos);
+    EXPECT_TRUE(hasProblem(validateSimulatedDeviceDef(def), "depthMm"))
+        << joinedMessages(validateSimulatedDeviceDef(def));
     EXPECT_THROW(SimulatedDevice(SimTrajectory::PressHold, def), std::invalid_argument);
     def = {};
     def.scanGridCount = 0;
-    EXPECT_NE(validateSimulatedDeviceDef(def).find("scanGridCount"), std::string::npos);
+    EXPECT_TRUE(hasProblem(validateSimulatedDeviceDef(def), "scanGridCount"))
+        << joinedMessages(validateSimulatedDeviceDef(def));
     def = {};
     def.sineFrequencyHz = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_NE(validateSimulatedDeviceDef(def).find("sineFrequencyHz"), std::string::npos);
+    EXPECT_TRUE(hasProblem(validateSimulatedDeviceDef(def), "sineFrequencyHz"))
+        << joinedMessages(validateSimulatedDeviceDef(def));
 }
 
 TEST(SimulatedDevice, BadSceneInputIsIgnored) {

@@ -136,10 +136,12 @@ TEST(SpaceMouseControl, PositionModeFollowsTheCapAndSpringsBack) {
 TEST(SpaceMouseControl, InvalidDefinitionsAreRejectedByName) {
     SpaceMouseControlDef def;
     def.deadbandCounts = 400;
-    EXPECT_TRUE(contains(validateSpaceMouseControlDef(def), "deadbandCounts"));
+    EXPECT_TRUE(hasProblem(validateSpaceMouseControlDef(def), "deadbandCounts"))
+        << joinedMessages(validateSpaceMouseControlDef(def));
     def = {};
     def.rateMmPerS = std::nan("");
-    EXPECT_TRUE(contains(validateSpaceMouseControlDef(def), "rateMmPerS"));
+    EXPECT_TRUE(hasProblem(validateSpaceMouseControlDef(def), "rateMmPerS"))
+        << joinedMessages(validateSpaceMouseControlDef(def));
     EXPECT_THROW(SpaceMouseControl{def}, std::invalid_argument);
 }
 
@@ -176,7 +178,8 @@ TEST(SpaceMouseDevice, ReplaysACaptureIntoSamples) {
     auto unit = backend->add(navigatorInfo("/fake/hidraw1", 1, 8));
     std::vector<FakeHidRead> reads;
     std::string error;
-    ASSERT_TRUE(loadHidCapture(PALPATE_DEVICE_FIXTURES "/spacemouse_navigator.hidcap", reads, error)) << error;
+    ASSERT_TRUE((error = loadHidCapture(PALPATE_DEVICE_FIXTURES "/spacemouse_navigator.hidcap", reads)).empty())
+        << error;
     ASSERT_EQ(reads.size(), 6u);
     SpaceMouseDeviceDef def;
     def.control.mode = SpaceMouseMode::Position;
@@ -260,10 +263,10 @@ TEST(HidCapture, BadLinesAreNamed) {
     }
     std::vector<FakeHidRead> reads;
     std::string error;
-    EXPECT_FALSE(loadHidCapture(path, reads, error));
+    EXPECT_FALSE((error = loadHidCapture(path, reads)).empty());
     EXPECT_TRUE(contains(error, "line 2")) << error;
     EXPECT_TRUE(contains(error, "'zz'")) << error;
-    EXPECT_FALSE(loadHidCapture("/no/such.hidcap", reads, error));
+    EXPECT_FALSE((error = loadHidCapture("/no/such.hidcap", reads)).empty());
     EXPECT_TRUE(contains(error, "cannot be read")) << error;
 }
 

@@ -217,7 +217,7 @@ TEST_F(Umockdev, HidapiEnumeratesAFakeSpaceMouseAndItsDescriptorIsReadFromSysfs)
     EXPECT_EQ(found[0].usage, 8);      // ... Multi-axis Controller
     std::vector<std::uint8_t> descriptor;
     std::string error;
-    ASSERT_TRUE(hid->reportDescriptor(found[0], descriptor, error)) << error;  // via /sys/class/hidraw
+    ASSERT_TRUE((error = hid->reportDescriptor(found[0], descriptor)).empty()) << error;  // via /sys/class/hidraw
     EXPECT_EQ(descriptor.size(), 27u);
     EXPECT_EQ(descriptor[3], 0x08);
 

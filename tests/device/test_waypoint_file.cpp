@@ -60,7 +60,7 @@ TEST(WaypointFile, GoodFileLoads) {
     const std::string path = dir.write("good.txt", kGoodText);
     std::vector<Waypoint> w;
     std::string error;
-    ASSERT_TRUE(loadWaypointFile(path, w, error)) << error;
+    ASSERT_TRUE((error = loadWaypointFile(path, w)).empty()) << error;
     EXPECT_TRUE(error.empty());
     ASSERT_EQ(w.size(), 4u);
     EXPECT_DOUBLE_EQ(w[0].timeS, 0.0);
@@ -106,7 +106,7 @@ TEST(WaypointFile, DefectsNameTheFileAndLine) {
         const std::string path = dir.write("bad" + std::to_string(n++) + ".txt", c.text);
         std::vector<Waypoint> w = {{0.0, glm::vec3(1.0f)}};
         std::string error;
-        EXPECT_FALSE(loadWaypointFile(path, w, error)) << c.name;
+        EXPECT_FALSE((error = loadWaypointFile(path, w)).empty()) << c.name;
         EXPECT_TRUE(w.empty()) << c.name;
         const std::string where = c.line > 0 ? path + ":" + std::to_string(c.line) + ": " : path + ": ";
         EXPECT_EQ(error.rfind(where, 0), 0u) << c.name << ": " << error;
@@ -122,21 +122,22 @@ TEST(WaypointFile, DefectsNameTheFileAndLine) {
 TEST(WaypointFile, ButtonLinesAreReadAndTheirDefectsNamed) {
     WaypointButtons buttons;
     std::string error;
-    ASSERT_TRUE(parseWaypointButtons("# a comment\n# mark-at 1.5\r\n0 0 0 0\n# mark-at 2\n# done-at 3.25 \n", "p.path",
-                                     buttons, error))
+    ASSERT_TRUE((error = parseWaypointButtons("# a comment\n# mark-at 1.5\r\n0 0 0 0\n# mark-at 2\n# done-at 3.25 \n",
+                                              "p.path", buttons))
+                    .empty())
         << error;
     EXPECT_EQ(buttons.marksS, (std::vector<double>{1.5, 2.0}));
     ASSERT_TRUE(buttons.doneS);
     EXPECT_EQ(*buttons.doneS, 3.25);
-    ASSERT_TRUE(parseWaypointButtons("0 0 0 0\n", "p.path", buttons, error));
+    ASSERT_TRUE((error = parseWaypointButtons("0 0 0 0\n", "p.path", buttons)).empty());
     EXPECT_TRUE(buttons.marksS.empty());
     EXPECT_FALSE(buttons.doneS);
-    EXPECT_FALSE(parseWaypointButtons("0 0 0 0\n# done-at soon\n", "p.path", buttons, error));
+    EXPECT_FALSE((error = parseWaypointButtons("0 0 0 0\n# done-at soon\n", "p.path", buttons)).empty());
     EXPECT_NE(error.find("p.path:2:"), std::string::npos) << error;
     EXPECT_NE(error.find("soon"), std::string::npos) << error;
-    EXPECT_FALSE(parseWaypointButtons("# mark-at -1\n", "p.path", buttons, error));
+    EXPECT_FALSE((error = parseWaypointButtons("# mark-at -1\n", "p.path", buttons)).empty());
     EXPECT_NE(error.find("p.path:1:"), std::string::npos) << error;
-    EXPECT_FALSE(parseWaypointButtons("# done-at 1\n# done-at 2\n", "p.path", buttons, error));
+    EXPECT_FALSE((error = parseWaypointButtons("# done-at 1\n# done-at 2\n", "p.path", buttons)).empty());
     EXPECT_NE(error.find("p.path:2: a second 'done-at'"), std::string::npos) << error;
 }
 
@@ -144,7 +145,7 @@ TEST(WaypointFile, DirectoryIsAnErrorNamingIt) {
     TempDir dir;
     std::vector<Waypoint> w;
     std::string error;
-    EXPECT_FALSE(loadWaypointFile(dir.path().string(), w, error));
+    EXPECT_FALSE((error = loadWaypointFile(dir.path().string(), w)).empty());
     EXPECT_TRUE(contains(error, dir.path().string())) << error;
     EXPECT_TRUE(contains(error, "is a directory")) << error;
 }
@@ -154,17 +155,17 @@ TEST(WaypointFile, MissingPathIsAnErrorNamingIt) {
     const std::string path = (dir.path() / "no" / "such.txt").string();
     std::vector<Waypoint> w;
     std::string error;
-    EXPECT_FALSE(loadWaypointFile(path, w, error));
+    EXPECT_FALSE((error = loadWaypointFile(path, w)).empty());
     EXPECT_TRUE(contains(error, path)) << error;
     EXPECT_TRUE(contains(error, "no such file")) << error;
-    EXPECT_FALSE(loadWaypointFile("", w, error));
+    EXPECT_FALSE((error = loadWaypointFile("", w)).empty());
     EXPECT_TRUE(contains(error, "no path")) << error;
 }
 
 TEST(WaypointFile, SingleWaypointIsAFixedPoint) {
     std::vector<Waypoint> w;
     std::string error;
-    ASSERT_TRUE(parseWaypoints("3 1 2 3", "inline", w, error)) << error;  // no final newline
+    ASSERT_TRUE((error = parseWaypoints("3 1 2 3", "inline", w)).empty()) << error;  // no final newline
     SimulatedDevice d(w);
     EXPECT_EQ(d.positionAtMm(0.0), glm::vec3(1, 2, 3));
     EXPECT_EQ(d.positionAtMm(10.0), glm::vec3(1, 2, 3));
@@ -203,8 +204,8 @@ TEST(WaypointFile, FuzzedFilesNeverCrash) {
         std::string error;
         const std::string name = "fuzz" + std::to_string(i) + ".txt";
         // Every tenth goes through a real file, the rest through the parser directly.
-        const bool ok = i % 10 == 0 ? loadWaypointFile(dir.write(name, text), w, error)
-                                    : parseWaypoints(text, name, w, error);
+        const bool ok = i % 10 == 0 ? (error = loadWaypointFile(dir.write(name, text), w)).empty()
+                                    : (error = parseWaypoints(text, name, w)).empty();
         if (ok) {
             ++accepted;
             ASSERT_FALSE(w.empty());

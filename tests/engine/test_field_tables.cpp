@@ -159,11 +159,11 @@ TEST(FieldTables, EveryFieldRoundTripsThroughAPresetFile) {
 TEST(FieldTables, TheHapticRateRangeIsOneDefinition) {
     HapticLoopDef def;
     def.rateHz = kMaxHapticRateHz;
-    EXPECT_EQ(validateHapticLoopDef(def), "");
+    EXPECT_TRUE(validateHapticLoopDef(def).empty());
     def.rateHz = kMaxHapticRateHz * 1.01;
-    EXPECT_NE(validateHapticLoopDef(def), "");
+    EXPECT_FALSE(validateHapticLoopDef(def).empty());
     def.rateHz = kMinHapticRateHz * 0.99;
-    EXPECT_NE(validateHapticLoopDef(def), "");
+    EXPECT_FALSE(validateHapticLoopDef(def).empty());
     TissuePreset preset;
     preset.hapticRateHz = kMaxHapticRateHz * 1.01;
     EXPECT_FALSE(parseTissuePreset(tissuePresetToJson(preset), "p.json").preset);

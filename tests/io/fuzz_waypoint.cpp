@@ -15,7 +15,8 @@ int palpateFuzzWaypoint(const std::uint8_t* data, std::size_t size) {
     using namespace palpate;
     std::vector<Waypoint> out;
     std::string error;
-    const bool ok = parseWaypoints(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz", out, error);
+    const bool ok = (error = parseWaypoints(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz", out))
+                        .empty();
     fuzzCheck("fuzz_waypoint", ok == error.empty());
     fuzzCheck("fuzz_waypoint", ok == !out.empty());
     if (!ok) fuzzCheck("fuzz_waypoint", error.rfind("fuzz:", 0) == 0);
@@ -28,8 +29,9 @@ int palpateFuzzWaypoint(const std::uint8_t* data, std::size_t size) {
     // The same bytes as the scripted trainee's button lines.
     WaypointButtons buttons;
     std::string buttonError;
-    const bool buttonsOk = parseWaypointButtons(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz",
-                                                buttons, buttonError);
+    const bool buttonsOk = (buttonError = parseWaypointButtons(
+                                std::string_view(reinterpret_cast<const char*>(data), size), "fuzz", buttons))
+                               .empty();
     fuzzCheck("fuzz_waypoint", buttonsOk == buttonError.empty());
     if (!buttonsOk) fuzzCheck("fuzz_waypoint", buttonError.rfind("fuzz:", 0) == 0 && buttons.marksS.empty());
     for (double t : buttons.marksS) fuzzCheck("fuzz_waypoint", std::isfinite(t) && t >= 0.0);

@@ -40,9 +40,7 @@ std::vector<Loader> loaders() {
         {"waypoint", "a waypoint file",
          [](const std::string& p) {
              std::vector<Waypoint> w;
-             std::string error;
-             loadWaypointFile(p, w, error);
-             return error;
+             return loadWaypointFile(p, w);
          }},
         {"mesh", "a mesh file", [](const std::string& p) { return TissueMesh::load(p).error(); }},
         {"mesh probe", "a mesh file", [](const std::string& p) { return p + ": " + probeMeshFile(p); }},

@@ -37,13 +37,14 @@ TEST(LodNeeds, AbsurdTargetsNameTheKey) {
                           Case{{0.1, -5.0}, "needs.budget_us", "must be above 0"},
                           Case{{0.1, inf}, "needs.budget_us", "finite"},
                           Case{{0.1, 2e6}, "needs.budget_us", "absurd"}}) {
-        const auto errors = validateLodNeeds(c.needs);
+        const auto errors = messagesOf(validateLodNeeds(c.needs));
+        ASSERT_TRUE(hasProblem(validateLodNeeds(c.needs), c.key));
         ASSERT_EQ(errors.size(), 1u) << joined(errors);
         EXPECT_EQ(errors.front().rfind(std::string(c.key) + ": ", 0), 0u) << errors.front();
         EXPECT_NE(errors.front().find(c.words), std::string::npos) << errors.front();
     }
     // Both wrong: both named; the prefix is the caller's.
-    const auto both = validateLodNeeds(LodNeeds{-1.0, 0.0}, "exercise.needs.");
+    const auto both = messagesOf(validateLodNeeds(LodNeeds{-1.0, 0.0}, "exercise.needs."));
     ASSERT_EQ(both.size(), 2u);
     EXPECT_EQ(both[0].rfind("exercise.needs.max_error", 0), 0u);
     EXPECT_EQ(both[1].rfind("exercise.needs.budget_us", 0), 0u);

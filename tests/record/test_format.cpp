@@ -98,7 +98,7 @@ TEST(RecordFormat, StiffeningKnotsRoundTripAndOlderHeadersHaveNone) {
     RecordingHeader back;
     std::size_t headerBytes = 0;
     std::string error;
-    ASSERT_TRUE(decodeRecordingHeader(bytes.data(), bytes.size(), back, headerBytes, error)) << error;
+    ASSERT_TRUE((error = decodeRecordingHeader(bytes.data(), bytes.size(), back, headerBytes)).empty()) << error;
     EXPECT_EQ(back.scene.params.stiffeningKnots, 2);
     EXPECT_EQ(back.scene.params.stiffeningForceN[1], 1.25);
     EXPECT_EQ(back.scene.params.stiffeningCompliance[1], 0.2);
@@ -129,7 +129,7 @@ TEST(RecordFormat, HeaderRoundTripsEveryField) {
     RecordingHeader back;
     std::size_t headerBytes = 0;
     std::string error;
-    ASSERT_TRUE(decodeRecordingHeader(bytes.data(), bytes.size(), back, headerBytes, error)) << error;
+    ASSERT_TRUE((error = decodeRecordingHeader(bytes.data(), bytes.size(), back, headerBytes)).empty()) << error;
     EXPECT_EQ(headerBytes, bytes.size());
     EXPECT_EQ(back.engineVersion, h.engineVersion);
     EXPECT_FALSE(back.engineVersion.empty());
@@ -162,7 +162,7 @@ TEST(RecordFormat, HeaderErrorsNameTheField) {
         RecordingHeader h;
         std::size_t n = 0;
         std::string error;
-        EXPECT_FALSE(decodeRecordingHeader(bytes.data(), bytes.size(), h, n, error));
+        EXPECT_FALSE((error = decodeRecordingHeader(bytes.data(), bytes.size(), h, n)).empty());
         return error;
     };
     std::vector<std::uint8_t> bad = good;

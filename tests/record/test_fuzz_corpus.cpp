@@ -133,6 +133,6 @@ TEST(RecordFuzzCorpus, DISABLED_WriteCorpus) {
     std::size_t headerBytes = 0;
     RecordingHeader header;
     std::string error;
-    ASSERT_TRUE(decodeRecordingHeader(press.data(), press.size(), header, headerBytes, error));
+    ASSERT_TRUE((error = decodeRecordingHeader(press.data(), press.size(), header, headerBytes)).empty());
     writeBytes((out / "header-only.palprec").string(), std::vector<std::uint8_t>(press.begin(), press.begin() + std::ptrdiff_t(headerBytes)));
 }

@@ -39,7 +39,7 @@ std::string decodeError(const std::vector<std::uint8_t>& bytes, RecordingHeader*
     RecordingHeader h;
     std::size_t used = 0;
     std::string error;
-    const bool ok = decodeRecordingHeader(bytes.data(), bytes.size(), h, used, error);
+    const bool ok = (error = decodeRecordingHeader(bytes.data(), bytes.size(), h, used)).empty();
     if (ok && out) *out = h;
     return ok ? std::string() : error;
 }
@@ -114,7 +114,9 @@ TEST(RecordMeshUnit, ASessionOnAMeshInCmReplaysOnTheSameSizedMesh) {
             const RecordedScene description = describeScene(next, stomach.unitPath, preset);
             ASSERT_EQ(session->swapScene(HapticScene::create(std::move(next), preset), description), "");
         }
-        if (i % 400 == 0) ASSERT_EQ(session->flush(), "");
+        if (i % 400 == 0) {
+            ASSERT_EQ(session->flush(), "");
+        }
     }
     ASSERT_EQ(session->stop(), "");
     loop.collectRetired();

@@ -105,7 +105,7 @@ TEST(RecordCliThreads, DamagedForgedAndGarbageFiles) {
     RecordingHeader header;
     std::size_t headerBytes = 0;
     std::string error;
-    ASSERT_TRUE(decodeRecordingHeader(bytes.data(), bytes.size(), header, headerBytes, error));
+    ASSERT_TRUE((error = decodeRecordingHeader(bytes.data(), bytes.size(), header, headerBytes)).empty());
     header.scene.params.springStiffnessNPerMm *= 1.5;
     std::vector<std::uint8_t> forged;
     encodeRecordingHeader(header, forged);

@@ -180,7 +180,7 @@ TEST(Replay, ADifferenceIsFoundAtItsTick) {
     std::size_t headerBytes = 0;
     RecordingHeader ignored;
     std::string error;
-    ASSERT_TRUE(decodeRecordingHeader(file.data(), file.size(), ignored, headerBytes, error));
+    ASSERT_TRUE((error = decodeRecordingHeader(file.data(), file.size(), ignored, headerBytes)).empty());
     bytes.insert(bytes.end(), file.begin() + std::ptrdiff_t(headerBytes), file.end());
     const RecordingReader reader = RecordingReader::fromBytes(bytes, "forged");
     ASSERT_TRUE(reader.summary().intact);  // the file is whole: only the replay can tell

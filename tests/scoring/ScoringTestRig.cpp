@@ -31,9 +31,9 @@ Exercise loadExampleExercise(const std::string& name) {
 TraineeScript loadTraineeScript(const std::string& path) {
     TraineeScript script;
     std::string error;
-    if (!loadWaypointFile(path, script.waypoints, error)) throw std::runtime_error(error);
+    if (!(error = loadWaypointFile(path, script.waypoints)).empty()) throw std::runtime_error(error);
     WaypointButtons buttons;
-    if (!loadWaypointButtons(path, buttons, error)) throw std::runtime_error(error);
+    if (!(error = loadWaypointButtons(path, buttons)).empty()) throw std::runtime_error(error);
     script.marksS = buttons.marksS;
     script.doneS = buttons.doneS.value_or(-1.0);
     return script;

@@ -207,6 +207,6 @@ TEST(StabilityMargin, NamesTheLimitingParameterOnBothSides) {
     EXPECT_NEAR(roiBeyond.margin, -0.5, 1e-12);
     EXPECT_NE(roiBeyond.text.find("stiffness"), std::string::npos);
     EXPECT_NEAR(stabilityMargin(roi, *mesh.mesh, 1e-3, 3.0).margin, 0.5, 1e-12);  // a stiffer device
-    EXPECT_FALSE(stabilityMarginNeedsMesh(ModelKind::Ffd));
-    EXPECT_TRUE(stabilityMarginNeedsMesh(ModelKind::MassSpringLocal));
+    EXPECT_FALSE(stabilityMarginNeedsMesh(*modelDefForName("ffd")));
+    EXPECT_TRUE(stabilityMarginNeedsMesh(*modelDefForName("mass-spring-local")));
 }
