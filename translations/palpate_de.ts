@@ -368,6 +368,33 @@
     </message>
 </context>
 <context>
+    <name>palpate::DeviceController</name>
+    <message>
+        <source>&amp;Device</source>
+        <translation>&amp;Gerät</translation>
+    </message>
+    <message>
+        <source>Cannot switch the device</source>
+        <translation>Gerät kann nicht gewechselt werden</translation>
+    </message>
+    <message>
+        <source>%1 is still being opened: wait for it first</source>
+        <translation>%1 wird noch geöffnet: warten Sie zuerst darauf</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is connected</source>
+        <translation>%1 ist verbunden</translation>
+    </message>
+    <message>
+        <source>Opening %1…</source>
+        <translation>%1 wird geöffnet…</translation>
+    </message>
+</context>
+<context>
     <name>palpate::DevicePanel</name>
     <message>
         <source>Disconnected</source>
@@ -2620,30 +2647,6 @@ Pausiert: %13</translation>
         <translation>Die Maus steuert das Werkzeug: Ziehen mit links drückt das Gewebe, das Mausrad stellt die Tiefe ein; Ziehen mit rechts dreht, mit der mittleren Taste verschiebt, Umschalt+Mausrad zoomt</translation>
     </message>
     <message>
-        <source>Re&amp;cord</source>
-        <translation>&amp;Aufnehmen</translation>
-    </message>
-    <message>
-        <source>Record the live session to a new file (again: stop). Starting resets the tissue to rest and the force ramps in again</source>
-        <translation>Die laufende Sitzung in eine neue Datei aufnehmen (nochmals: beenden). Der Start setzt das Gewebe in Ruhe zurück, und die Kraft wird erneut eingeblendet</translation>
-    </message>
-    <message>
-        <source>Add &amp;Mark</source>
-        <translation>&amp;Markierung setzen</translation>
-    </message>
-    <message>
-        <source>Mark the current moment of the recording (the Recorder dock&apos;s text, if any)</source>
-        <translation>Den aktuellen Moment der Aufnahme markieren (mit dem Text aus dem Rekorder-Dock, falls vorhanden)</translation>
-    </message>
-    <message>
-        <source>&amp;Device</source>
-        <translation>&amp;Gerät</translation>
-    </message>
-    <message>
-        <source>Cannot switch the device</source>
-        <translation>Gerät kann nicht gewechselt werden</translation>
-    </message>
-    <message>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -2746,70 +2749,6 @@ Pausiert: %13</translation>
     <message>
         <source>contact: %1</source>
         <translation>Kontakt: %1</translation>
-    </message>
-    <message>
-        <source>Open Mesh</source>
-        <translation>Netz öffnen</translation>
-    </message>
-    <message>
-        <source>Meshes (*.obj *.off *.ply *.stl *.om);;All files (*)</source>
-        <translation>Netze (*.obj *.off *.ply *.stl *.om);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <source>Recorder</source>
-        <translation>Rekorder</translation>
-    </message>
-    <message>
-        <source>Go back to the live session before recording</source>
-        <translation>Vor dem Aufnehmen zur laufenden Sitzung zurückkehren</translation>
-    </message>
-    <message>
-        <source>Load a mesh before recording: there is no session to record</source>
-        <translation>Vor dem Aufnehmen ein Netz laden: es gibt keine Sitzung zum Aufnehmen</translation>
-    </message>
-    <message>
-        <source>Recording to %1</source>
-        <translation>Aufnahme nach %1</translation>
-    </message>
-    <message>
-        <source>Cannot record: %1</source>
-        <translation>Aufnahme nicht möglich: %1</translation>
-    </message>
-    <message>
-        <source>The recording failed: %1</source>
-        <translation>Die Aufnahme ist fehlgeschlagen: %1</translation>
-    </message>
-    <message>
-        <source>Recording saved: %1</source>
-        <translation>Aufnahme gespeichert: %1</translation>
-    </message>
-    <message>
-        <source>mark (trainee)</source>
-        <translation>Markierung (Teilnehmer)</translation>
-    </message>
-    <message>
-        <source>Mark added: %1</source>
-        <translation>Markierung gesetzt: %1</translation>
-    </message>
-    <message>
-        <source>Recording stopped: %1 (%2 keeps what was written before)</source>
-        <translation>Aufnahme beendet: %1 (%2 behält, was vorher geschrieben wurde)</translation>
-    </message>
-    <message>
-        <source>● REC %1</source>
-        <translation>● REC %1</translation>
-    </message>
-    <message>
-        <source>▶ playback</source>
-        <translation>▶ Wiedergabe</translation>
-    </message>
-    <message>
-        <source>A recording is still being opened; try again when it is done</source>
-        <translation>Eine Aufnahme wird noch geöffnet; versuchen Sie es erneut, wenn das fertig ist</translation>
-    </message>
-    <message>
-        <source>Recording stopped to play %1 back</source>
-        <translation>Aufnahme beendet, um %1 wiederzugeben</translation>
     </message>
     <message>
         <source>Palpate - playing %1</source>
@@ -2920,22 +2859,6 @@ Pausiert: %13</translation>
         <translation>Bericht geschrieben: %1</translation>
     </message>
     <message>
-        <source>%1 is still being opened: wait for it first</source>
-        <translation>%1 wird noch geöffnet: warten Sie zuerst darauf</translation>
-    </message>
-    <message>
-        <source>Cannot open %1: %2</source>
-        <translation>%1 kann nicht geöffnet werden: %2</translation>
-    </message>
-    <message>
-        <source>%1 is connected</source>
-        <translation>%1 ist verbunden</translation>
-    </message>
-    <message>
-        <source>Opening %1…</source>
-        <translation>%1 wird geöffnet…</translation>
-    </message>
-    <message>
         <source>Level of Detail</source>
         <translation>Detailstufen</translation>
     </message>
@@ -3004,30 +2927,6 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>Open a mesh from another tool: its unit, repair, remeshing, previewed</source>
         <translation>Ein Netz aus einem anderen Programm öffnen: Einheit, Reparatur, Neuvernetzung, mit Vorschau</translation>
-    </message>
-    <message>
-        <source>Which unit is this mesh in?</source>
-        <translation>In welcher Einheit ist dieses Netz?</translation>
-    </message>
-    <message>
-        <source>%1 is %2 if its coordinates are millimetres.</source>
-        <translation>%1 ist %2 groß, wenn seine Koordinaten Millimeter sind.</translation>
-    </message>
-    <message>
-        <source>Open in %1</source>
-        <translation>In %1 öffnen</translation>
-    </message>
-    <message>
-        <source>Open as mm</source>
-        <translation>Als mm öffnen</translation>
-    </message>
-    <message>
-        <source>Import…</source>
-        <translation>Importieren…</translation>
-    </message>
-    <message>
-        <source>Import Mesh can repair the faults and scale the file to mm.</source>
-        <translation>„Netz importieren“ kann die Fehler reparieren und die Datei auf mm skalieren.</translation>
     </message>
     <message>
         <source>%1 · %2</source>
@@ -3329,6 +3228,49 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>cancelling…</source>
         <translation>wird abgebrochen…</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::MeshOpener</name>
+    <message>
+        <source>Which unit is this mesh in?</source>
+        <translation>In welcher Einheit ist dieses Netz?</translation>
+    </message>
+    <message>
+        <source>%1 is %2 if its coordinates are millimetres.</source>
+        <translation>%1 ist %2 groß, wenn seine Koordinaten Millimeter sind.</translation>
+    </message>
+    <message>
+        <source>Open in %1</source>
+        <translation>In %1 öffnen</translation>
+    </message>
+    <message>
+        <source>Open as mm</source>
+        <translation>Als mm öffnen</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importieren…</translation>
+    </message>
+    <message>
+        <source>Cannot open mesh</source>
+        <translation>Netz kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>Import Mesh can repair the faults and scale the file to mm.</source>
+        <translation>„Netz importieren“ kann die Fehler reparieren und die Datei auf mm skalieren.</translation>
+    </message>
+    <message>
+        <source>An exercise is running: the mesh cannot change now.</source>
+        <translation>Eine Übung läuft: das Netz kann jetzt nicht geändert werden.</translation>
+    </message>
+    <message>
+        <source>Open Mesh</source>
+        <translation>Netz öffnen</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.off *.ply *.stl *.om);;All files (*)</source>
+        <translation>Netze (*.obj *.off *.ply *.stl *.om);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>
@@ -4805,6 +4747,81 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
     <message>
         <source>Divergence guard fired: %1</source>
         <translation>Divergenzwächter ausgelöst: %1</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::RecordingController</name>
+    <message>
+        <source>Recorder</source>
+        <translation>Rekorder</translation>
+    </message>
+    <message>
+        <source>Re&amp;cord</source>
+        <translation>&amp;Aufnehmen</translation>
+    </message>
+    <message>
+        <source>Record the live session to a new file (again: stop). Starting resets the tissue to rest and the force ramps in again</source>
+        <translation>Die laufende Sitzung in eine neue Datei aufnehmen (nochmals: beenden). Der Start setzt das Gewebe in Ruhe zurück, und die Kraft wird erneut eingeblendet</translation>
+    </message>
+    <message>
+        <source>Add &amp;Mark</source>
+        <translation>&amp;Markierung setzen</translation>
+    </message>
+    <message>
+        <source>Mark the current moment of the recording (the Recorder dock&apos;s text, if any)</source>
+        <translation>Den aktuellen Moment der Aufnahme markieren (mit dem Text aus dem Rekorder-Dock, falls vorhanden)</translation>
+    </message>
+    <message>
+        <source>Go back to the live session before recording</source>
+        <translation>Vor dem Aufnehmen zur laufenden Sitzung zurückkehren</translation>
+    </message>
+    <message>
+        <source>Load a mesh before recording: there is no session to record</source>
+        <translation>Vor dem Aufnehmen ein Netz laden: es gibt keine Sitzung zum Aufnehmen</translation>
+    </message>
+    <message>
+        <source>Recording to %1</source>
+        <translation>Aufnahme nach %1</translation>
+    </message>
+    <message>
+        <source>Cannot record: %1</source>
+        <translation>Aufnahme nicht möglich: %1</translation>
+    </message>
+    <message>
+        <source>The recording failed: %1</source>
+        <translation>Die Aufnahme ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Recording saved: %1</source>
+        <translation>Aufnahme gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>mark (trainee)</source>
+        <translation>Markierung (Teilnehmer)</translation>
+    </message>
+    <message>
+        <source>Mark added: %1</source>
+        <translation>Markierung gesetzt: %1</translation>
+    </message>
+    <message>
+        <source>Recording stopped: %1 (%2 keeps what was written before)</source>
+        <translation>Aufnahme beendet: %1 (%2 behält, was vorher geschrieben wurde)</translation>
+    </message>
+    <message>
+        <source>● REC %1</source>
+        <translation>● REC %1</translation>
+    </message>
+    <message>
+        <source>▶ playback</source>
+        <translation>▶ Wiedergabe</translation>
+    </message>
+    <message>
+        <source>A recording is still being opened; try again when it is done</source>
+        <translation>Eine Aufnahme wird noch geöffnet; versuchen Sie es erneut, wenn das fertig ist</translation>
+    </message>
+    <message>
+        <source>Recording stopped to play %1 back</source>
+        <translation>Aufnahme beendet, um %1 wiederzugeben</translation>
     </message>
 </context>
 <context>

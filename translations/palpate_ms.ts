@@ -368,6 +368,33 @@
     </message>
 </context>
 <context>
+    <name>palpate::DeviceController</name>
+    <message>
+        <source>&amp;Device</source>
+        <translation>&amp;Peranti</translation>
+    </message>
+    <message>
+        <source>Cannot switch the device</source>
+        <translation>Tidak dapat menukar peranti</translation>
+    </message>
+    <message>
+        <source>%1 is still being opened: wait for it first</source>
+        <translation>%1 masih dibuka: tunggu sehingga selesai dahulu</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>Tidak dapat membuka %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 is connected</source>
+        <translation>%1 bersambung</translation>
+    </message>
+    <message>
+        <source>Opening %1…</source>
+        <translation>Membuka %1…</translation>
+    </message>
+</context>
+<context>
     <name>palpate::DevicePanel</name>
     <message>
         <source>Disconnected</source>
@@ -2616,30 +2643,6 @@ Dijeda: %13</translation>
         <translation>Tetikus mengemudi alat: seret kiri menekan tisu, roda menetapkan kedalaman; seret kanan memutar, seret tengah menganjak, Shift+roda mengezum</translation>
     </message>
     <message>
-        <source>Re&amp;cord</source>
-        <translation>&amp;Rakam</translation>
-    </message>
-    <message>
-        <source>Record the live session to a new file (again: stop). Starting resets the tissue to rest and the force ramps in again</source>
-        <translation>Rakam sesi langsung ke fail baharu (sekali lagi: berhenti). Memulakan menetapkan semula tisu kepada rehat dan daya meningkat semula</translation>
-    </message>
-    <message>
-        <source>Add &amp;Mark</source>
-        <translation>Tambah &amp;Tanda</translation>
-    </message>
-    <message>
-        <source>Mark the current moment of the recording (the Recorder dock&apos;s text, if any)</source>
-        <translation>Tandakan detik semasa rakaman (teks dok Perakam, jika ada)</translation>
-    </message>
-    <message>
-        <source>&amp;Device</source>
-        <translation>&amp;Peranti</translation>
-    </message>
-    <message>
-        <source>Cannot switch the device</source>
-        <translation>Tidak dapat menukar peranti</translation>
-    </message>
-    <message>
         <source>&amp;Help</source>
         <translation>&amp;Bantuan</translation>
     </message>
@@ -2742,70 +2745,6 @@ Dijeda: %13</translation>
     <message>
         <source>contact: %1</source>
         <translation>sentuhan: %1</translation>
-    </message>
-    <message>
-        <source>Open Mesh</source>
-        <translation>Buka Jejaring</translation>
-    </message>
-    <message>
-        <source>Meshes (*.obj *.off *.ply *.stl *.om);;All files (*)</source>
-        <translation>Jejaring (*.obj *.off *.ply *.stl *.om);;Semua fail (*)</translation>
-    </message>
-    <message>
-        <source>Recorder</source>
-        <translation>Perakam</translation>
-    </message>
-    <message>
-        <source>Go back to the live session before recording</source>
-        <translation>Kembali ke sesi langsung sebelum merakam</translation>
-    </message>
-    <message>
-        <source>Load a mesh before recording: there is no session to record</source>
-        <translation>Muatkan jejaring sebelum merakam: tiada sesi untuk dirakam</translation>
-    </message>
-    <message>
-        <source>Recording to %1</source>
-        <translation>Merakam ke %1</translation>
-    </message>
-    <message>
-        <source>Cannot record: %1</source>
-        <translation>Tidak dapat merakam: %1</translation>
-    </message>
-    <message>
-        <source>The recording failed: %1</source>
-        <translation>Rakaman gagal: %1</translation>
-    </message>
-    <message>
-        <source>Recording saved: %1</source>
-        <translation>Rakaman disimpan: %1</translation>
-    </message>
-    <message>
-        <source>mark (trainee)</source>
-        <translation>tanda (pelatih)</translation>
-    </message>
-    <message>
-        <source>Mark added: %1</source>
-        <translation>Tanda ditambah: %1</translation>
-    </message>
-    <message>
-        <source>Recording stopped: %1 (%2 keeps what was written before)</source>
-        <translation>Rakaman dihentikan: %1 (%2 menyimpan apa yang ditulis sebelumnya)</translation>
-    </message>
-    <message>
-        <source>● REC %1</source>
-        <translation>● RAKAM %1</translation>
-    </message>
-    <message>
-        <source>▶ playback</source>
-        <translation>▶ main semula</translation>
-    </message>
-    <message>
-        <source>A recording is still being opened; try again when it is done</source>
-        <translation>Rakaman masih dibuka; cuba lagi apabila selesai</translation>
-    </message>
-    <message>
-        <source>Recording stopped to play %1 back</source>
-        <translation>Rakaman dihentikan untuk memainkan semula %1</translation>
     </message>
     <message>
         <source>Palpate - playing %1</source>
@@ -2916,22 +2855,6 @@ Dijeda: %13</translation>
         <translation>Laporan ditulis: %1</translation>
     </message>
     <message>
-        <source>%1 is still being opened: wait for it first</source>
-        <translation>%1 masih dibuka: tunggu sehingga selesai dahulu</translation>
-    </message>
-    <message>
-        <source>Cannot open %1: %2</source>
-        <translation>Tidak dapat membuka %1: %2</translation>
-    </message>
-    <message>
-        <source>%1 is connected</source>
-        <translation>%1 bersambung</translation>
-    </message>
-    <message>
-        <source>Opening %1…</source>
-        <translation>Membuka %1…</translation>
-    </message>
-    <message>
         <source>Level of Detail</source>
         <translation>Aras Perincian</translation>
     </message>
@@ -3000,30 +2923,6 @@ Menggunakan %3 sebagai ganti: pilih yang lain dalam dok Peranti atau dalam Sunti
     <message>
         <source>Open a mesh from another tool: its unit, repair, remeshing, previewed</source>
         <translation>Buka jaringan daripada alat lain: unitnya, pembaikan, jaringan semula, dengan pratonton</translation>
-    </message>
-    <message>
-        <source>Which unit is this mesh in?</source>
-        <translation>Dalam unit apakah jaringan ini?</translation>
-    </message>
-    <message>
-        <source>%1 is %2 if its coordinates are millimetres.</source>
-        <translation>%1 bersaiz %2 jika koordinatnya dalam milimeter.</translation>
-    </message>
-    <message>
-        <source>Open in %1</source>
-        <translation>Buka dalam %1</translation>
-    </message>
-    <message>
-        <source>Open as mm</source>
-        <translation>Buka sebagai mm</translation>
-    </message>
-    <message>
-        <source>Import…</source>
-        <translation>Import…</translation>
-    </message>
-    <message>
-        <source>Import Mesh can repair the faults and scale the file to mm.</source>
-        <translation>Import Jaringan boleh membaiki kerosakan dan menskalakan fail kepada mm.</translation>
     </message>
     <message>
         <source>%1 · %2</source>
@@ -3325,6 +3224,49 @@ pemapar %5</translation>
     <message>
         <source>cancelling…</source>
         <translation>membatalkan…</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::MeshOpener</name>
+    <message>
+        <source>Which unit is this mesh in?</source>
+        <translation>Dalam unit apakah jaringan ini?</translation>
+    </message>
+    <message>
+        <source>%1 is %2 if its coordinates are millimetres.</source>
+        <translation>%1 bersaiz %2 jika koordinatnya dalam milimeter.</translation>
+    </message>
+    <message>
+        <source>Open in %1</source>
+        <translation>Buka dalam %1</translation>
+    </message>
+    <message>
+        <source>Open as mm</source>
+        <translation>Buka sebagai mm</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Import…</translation>
+    </message>
+    <message>
+        <source>Cannot open mesh</source>
+        <translation>Tidak dapat membuka jejaring</translation>
+    </message>
+    <message>
+        <source>Import Mesh can repair the faults and scale the file to mm.</source>
+        <translation>Import Jaringan boleh membaiki kerosakan dan menskalakan fail kepada mm.</translation>
+    </message>
+    <message>
+        <source>An exercise is running: the mesh cannot change now.</source>
+        <translation>Latihan sedang berjalan: jejaring tidak boleh diubah sekarang.</translation>
+    </message>
+    <message>
+        <source>Open Mesh</source>
+        <translation>Buka Jejaring</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.off *.ply *.stl *.om);;All files (*)</source>
+        <translation>Jejaring (*.obj *.off *.ply *.stl *.om);;Semua fail (*)</translation>
     </message>
 </context>
 <context>
@@ -4800,6 +4742,81 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
     <message>
         <source>Divergence guard fired: %1</source>
         <translation>Pengawal divergens bertindak: %1</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::RecordingController</name>
+    <message>
+        <source>Recorder</source>
+        <translation>Perakam</translation>
+    </message>
+    <message>
+        <source>Re&amp;cord</source>
+        <translation>&amp;Rakam</translation>
+    </message>
+    <message>
+        <source>Record the live session to a new file (again: stop). Starting resets the tissue to rest and the force ramps in again</source>
+        <translation>Rakam sesi langsung ke fail baharu (sekali lagi: berhenti). Memulakan menetapkan semula tisu kepada rehat dan daya meningkat semula</translation>
+    </message>
+    <message>
+        <source>Add &amp;Mark</source>
+        <translation>Tambah &amp;Tanda</translation>
+    </message>
+    <message>
+        <source>Mark the current moment of the recording (the Recorder dock&apos;s text, if any)</source>
+        <translation>Tandakan detik semasa rakaman (teks dok Perakam, jika ada)</translation>
+    </message>
+    <message>
+        <source>Go back to the live session before recording</source>
+        <translation>Kembali ke sesi langsung sebelum merakam</translation>
+    </message>
+    <message>
+        <source>Load a mesh before recording: there is no session to record</source>
+        <translation>Muatkan jejaring sebelum merakam: tiada sesi untuk dirakam</translation>
+    </message>
+    <message>
+        <source>Recording to %1</source>
+        <translation>Merakam ke %1</translation>
+    </message>
+    <message>
+        <source>Cannot record: %1</source>
+        <translation>Tidak dapat merakam: %1</translation>
+    </message>
+    <message>
+        <source>The recording failed: %1</source>
+        <translation>Rakaman gagal: %1</translation>
+    </message>
+    <message>
+        <source>Recording saved: %1</source>
+        <translation>Rakaman disimpan: %1</translation>
+    </message>
+    <message>
+        <source>mark (trainee)</source>
+        <translation>tanda (pelatih)</translation>
+    </message>
+    <message>
+        <source>Mark added: %1</source>
+        <translation>Tanda ditambah: %1</translation>
+    </message>
+    <message>
+        <source>Recording stopped: %1 (%2 keeps what was written before)</source>
+        <translation>Rakaman dihentikan: %1 (%2 menyimpan apa yang ditulis sebelumnya)</translation>
+    </message>
+    <message>
+        <source>● REC %1</source>
+        <translation>● RAKAM %1</translation>
+    </message>
+    <message>
+        <source>▶ playback</source>
+        <translation>▶ main semula</translation>
+    </message>
+    <message>
+        <source>A recording is still being opened; try again when it is done</source>
+        <translation>Rakaman masih dibuka; cuba lagi apabila selesai</translation>
+    </message>
+    <message>
+        <source>Recording stopped to play %1 back</source>
+        <translation>Rakaman dihentikan untuk memainkan semula %1</translation>
     </message>
 </context>
 <context>

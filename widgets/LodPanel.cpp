@@ -188,6 +188,27 @@ LodPanel::LodPanel(QWidget* parent) : QWidget(parent), mNeeds(defaultNeeds()), m
     mUseSelectedButton = new QPushButton(this);
     mUseSelectedButton->setObjectName(QStringLiteral("lodUseSelectedButton"));
 
+    layOutWidgets();
+
+    connect(mErrorSpin, &QDoubleSpinBox::valueChanged, this, &LodPanel::onNeedsEdited);
+    connect(mBudgetSpin, &QDoubleSpinBox::valueChanged, this, &LodPanel::onNeedsEdited);
+    connect(mPlanButton, &QPushButton::clicked, this, [this] { plan(); });
+    connect(mCancelButton, &QPushButton::clicked, this, &LodPanel::cancel);
+    connect(mStoreButton, &QPushButton::clicked, this, &LodPanel::storeNeeds);
+    connect(mUseChosenButton, &QPushButton::clicked, this, &LodPanel::useChosen);
+    connect(mUseSelectedButton, &QPushButton::clicked, this, &LodPanel::useSelected);
+    connect(mTable, &QTableWidget::itemSelectionChanged, this, [this] {
+        updateVerdicts();
+        updateSummary();
+        updateButtons();
+    });
+
+    setNeedsFields(mNeeds);
+    retranslateUi();
+    onNeedsEdited();
+}
+
+void LodPanel::layOutWidgets() {
     auto* needsForm = new QFormLayout;
     needsForm->addRow(mErrorLabel, mErrorSpin);
     needsForm->addRow(mBudgetLabel, mBudgetSpin);
@@ -237,23 +258,6 @@ LodPanel::LodPanel(QWidget* parent) : QWidget(parent), mNeeds(defaultNeeds()), m
     auto* outer = new QVBoxLayout(this);
     outer->setContentsMargins(0, 0, 0, 0);
     outer->addWidget(scroll);
-
-    connect(mErrorSpin, &QDoubleSpinBox::valueChanged, this, &LodPanel::onNeedsEdited);
-    connect(mBudgetSpin, &QDoubleSpinBox::valueChanged, this, &LodPanel::onNeedsEdited);
-    connect(mPlanButton, &QPushButton::clicked, this, [this] { plan(); });
-    connect(mCancelButton, &QPushButton::clicked, this, &LodPanel::cancel);
-    connect(mStoreButton, &QPushButton::clicked, this, &LodPanel::storeNeeds);
-    connect(mUseChosenButton, &QPushButton::clicked, this, &LodPanel::useChosen);
-    connect(mUseSelectedButton, &QPushButton::clicked, this, &LodPanel::useSelected);
-    connect(mTable, &QTableWidget::itemSelectionChanged, this, [this] {
-        updateVerdicts();
-        updateSummary();
-        updateButtons();
-    });
-
-    setNeedsFields(mNeeds);
-    retranslateUi();
-    onNeedsEdited();
 }
 
 LodPanel::~LodPanel() {
@@ -443,6 +447,40 @@ void LodPanel::updateNeedsSource() {
 // ---------------------------------------------------------------------------------------------
 // The run
 
+namespace {
+
+/// The hyperelastic punch of `def`'s contact as deep as `demands` ask, its knots fitted: the
+/// reference for linear or stiffening tissue (docs/lod.md, "Linear or nonlinear"). Throws what the
+/// calibration throws.
+StiffeningCalibration pressHyperelasticReference(const LodMeasureDef& def, const std::vector<ExerciseDemand>& demands) {
+    StiffeningCalibrationDef stiff;
+    stiff.material = hyperelasticMaterialOf(def.contact);
+    stiff.toolRadiusMm = def.contact.toolRadiusMm;
+    // Coarser than the CLI's (a/h = 4): a plan in the window stays seconds; the
+    // ratio cancels most of the mesh's error either way.
+    stiff.aOverH = 3;
+    stiff.maxStepOverRadius = 0.05;
+    const double m1 = punchFirstSlopeMmPerN(def.contact);
+    setStiffeningDepths(stiff, stiffeningReferenceDepthOverRadius(deepestDemandMm(demands, m1, def.press.toolDepthMm),
+                                                                  stiff.toolRadiusMm));
+    return knotsFromCurve(calibrateStiffening(stiff).curve, m1);
+}
+
+}  // namespace
+
+QString LodPanel::levelStageText(const std::string& stage, std::size_t coarse) {
+    // The engine's stage words are mapped to the panel's; anything else is shown as is.
+    const QString s = QString::fromStdString(stage);
+    if (s == QLatin1String("decimating"))
+        return coarse == 1 ? tr("Generating 1 coarser level: decimating")
+                           : tr("Generating %1 coarser levels: decimating").arg(coarse);
+    if (s.startsWith(QLatin1String("mapping level ")))
+        return tr("Generating levels %1/%2: mapping to the mesh").arg(s.mid(14)).arg(coarse);
+    if (s.startsWith(QLatin1String("reading level "))) return tr("Reading cached level %1").arg(s.mid(14));
+    if (s == QLatin1String("done")) return tr("Levels ready");
+    return s;
+}
+
 bool LodPanel::plan() {
     if (mThread) {
         // A run for an older scene is still winding down: start as soon as it has.
@@ -507,23 +545,7 @@ bool LodPanel::plan() {
             post(0.0, tr("Looking for cached levels…"));
             LevelCacheResult levels = loadOrGenerateLevels(
                 path, *source, options,
-                [&](double f, const std::string& stage) {
-                    // The engine's stage words are mapped to the panel's; anything else is shown as is.
-                    QString text;
-                    const QString s = QString::fromStdString(stage);
-                    if (s == QLatin1String("decimating"))
-                        text = coarse == 1 ? tr("Generating 1 coarser level: decimating")
-                                           : tr("Generating %1 coarser levels: decimating").arg(coarse);
-                    else if (s.startsWith(QLatin1String("mapping level ")))
-                        text = tr("Generating levels %1/%2: mapping to the mesh").arg(s.mid(14)).arg(coarse);
-                    else if (s.startsWith(QLatin1String("reading level ")))
-                        text = tr("Reading cached level %1").arg(s.mid(14));
-                    else if (s == QLatin1String("done"))
-                        text = tr("Levels ready");
-                    else
-                        text = s;
-                    post(kLevelsShare * f, text);
-                },
+                [&](double f, const std::string& stage) { post(kLevelsShare * f, levelStageText(stage, coarse)); },
                 cancelFlag, true);
             result->fromCache = levels.fromCache;
             result->cacheDir = QString::fromStdString(levelCacheDir(path));
@@ -569,17 +591,7 @@ bool LodPanel::plan() {
             if (!cancelFlag->load()) {
                 post(1.0, tr("Pressing the hyperelastic reference for linear or stiffening tissue…"));
                 try {
-                    StiffeningCalibrationDef stiff;
-                    stiff.material = hyperelasticMaterialOf(def.contact);
-                    stiff.toolRadiusMm = def.contact.toolRadiusMm;
-                    // Coarser than the CLI's (a/h = 4): a plan in the window stays seconds; the
-                    // ratio cancels most of the mesh's error either way.
-                    stiff.aOverH = 3;
-                    stiff.maxStepOverRadius = 0.05;
-                    const double m1 = punchFirstSlopeMmPerN(def.contact);
-                    setStiffeningDepths(stiff, stiffeningReferenceDepthOverRadius(
-                                                   deepestDemandMm(demands, m1, def.press.toolDepthMm), stiff.toolRadiusMm));
-                    result->stiffening = knotsFromCurve(calibrateStiffening(stiff).curve, m1);
+                    result->stiffening = pressHyperelasticReference(def, demands);
                 } catch (const std::exception& e) {
                     result->stiffeningError = QString::fromStdString(e.what());
                 }

@@ -143,6 +143,10 @@ protected:
 private:
     struct RunResult;
 
+    /// Targets, progress and candidates in the scroll area.
+    void layOutWidgets();
+    /// What the panel says for a stage of loadOrGenerateLevels (making `coarse` coarser levels).
+    static QString levelStageText(const std::string& stage, std::size_t coarse);
     void retranslateUi();
     void onNeedsEdited();
     /// Fills the two fields without reacting to it (the caller replans once).

@@ -89,6 +89,44 @@ MeshImportDialog::~MeshImportDialog() {
 void MeshImportDialog::buildUi() {
     auto* layout = new QVBoxLayout(this);
 
+    layout->addLayout(buildOptionsForm());
+
+    auto* progressRow = new QHBoxLayout;
+    mProgress = new QProgressBar(this);
+    mProgress->setObjectName(QStringLiteral("importProgress"));
+    mProgress->setRange(0, 100);
+    mStage = new QLabel(this);
+    mStage->setObjectName(QStringLiteral("importStage"));
+    mCancel = new QPushButton(tr("Cancel Preview"), this);
+    mCancel->setObjectName(QStringLiteral("importCancel"));
+    progressRow->addWidget(mProgress, 1);
+    progressRow->addWidget(mStage);
+    progressRow->addWidget(mCancel);
+    layout->addLayout(progressRow);
+
+    layout->addWidget(buildPreview(), 1);
+
+    auto* buttons = new QDialogButtonBox(this);
+    mImport = buttons->addButton(tr("Import…"), QDialogButtonBox::AcceptRole);
+    mImport->setObjectName(QStringLiteral("importButton"));
+    mImport->setToolTip(tr("Write the previewed mesh (in mm) to a new file and open it"));
+    buttons->addButton(QDialogButtonBox::Close);
+    layout->addWidget(buttons);
+
+    connectOptions();
+    connect(mCancel, &QPushButton::clicked, this, &MeshImportDialog::cancelPreview);
+    connect(mImport, &QPushButton::clicked, this, &MeshImportDialog::chooseOutput);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    // Closed, the dialog stays (the window keeps it): a preview running on stops, not to take the
+    // haptic loop's cores for nothing.
+    connect(this, &QDialog::finished, this, &MeshImportDialog::cancelPreview);
+    mKeep->setEnabled(false);  // the repair's and the remeshing's own options wait for them
+    mFillHoles->setEnabled(false);
+    mEdge->setEnabled(false);
+    updateEnabled();
+}
+
+QFormLayout* MeshImportDialog::buildOptionsForm() {
     auto* form = new QFormLayout;
     auto* inputRow = new QHBoxLayout;
     mInput = new QLineEdit(this);
@@ -152,21 +190,11 @@ void MeshImportDialog::buildUi() {
     remeshRow->addWidget(mEdge);
     remeshRow->addStretch(1);
     form->addRow(tr("Remesh:"), remeshRow);
-    layout->addLayout(form);
+    connect(browse, &QPushButton::clicked, this, &MeshImportDialog::browse);
+    return form;
+}
 
-    auto* progressRow = new QHBoxLayout;
-    mProgress = new QProgressBar(this);
-    mProgress->setObjectName(QStringLiteral("importProgress"));
-    mProgress->setRange(0, 100);
-    mStage = new QLabel(this);
-    mStage->setObjectName(QStringLiteral("importStage"));
-    mCancel = new QPushButton(tr("Cancel Preview"), this);
-    mCancel->setObjectName(QStringLiteral("importCancel"));
-    progressRow->addWidget(mProgress, 1);
-    progressRow->addWidget(mStage);
-    progressRow->addWidget(mCancel);
-    layout->addLayout(progressRow);
-
+QGroupBox* MeshImportDialog::buildPreview() {
     auto* preview = new QGroupBox(tr("Preview"), this);
     auto* previewLayout = new QVBoxLayout(preview);
     mSize = new QLabel(preview);
@@ -203,16 +231,10 @@ void MeshImportDialog::buildUi() {
     previewLayout->addWidget(mSize);
     previewLayout->addWidget(mCounts);
     previewLayout->addLayout(details, 1);
-    layout->addWidget(preview, 1);
+    return preview;
+}
 
-    auto* buttons = new QDialogButtonBox(this);
-    mImport = buttons->addButton(tr("Import…"), QDialogButtonBox::AcceptRole);
-    mImport->setObjectName(QStringLiteral("importButton"));
-    mImport->setToolTip(tr("Write the previewed mesh (in mm) to a new file and open it"));
-    buttons->addButton(QDialogButtonBox::Close);
-    layout->addWidget(buttons);
-
-    connect(browse, &QPushButton::clicked, this, &MeshImportDialog::browse);
+void MeshImportDialog::connectOptions() {
     connect(mInput, &QLineEdit::textEdited, this, [this] {
         // Another file: its own size decides the unit again.
         mSuggestion.reset();
@@ -245,16 +267,6 @@ void MeshImportDialog::buildUi() {
         if (!mSettingUp) mEdgeEdited = true;
         if (mRemesh->isChecked()) optionsChanged();
     });
-    connect(mCancel, &QPushButton::clicked, this, &MeshImportDialog::cancelPreview);
-    connect(mImport, &QPushButton::clicked, this, &MeshImportDialog::chooseOutput);
-    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
-    // Closed, the dialog stays (the window keeps it): a preview running on stops, not to take the
-    // haptic loop's cores for nothing.
-    connect(this, &QDialog::finished, this, &MeshImportDialog::cancelPreview);
-    mKeep->setEnabled(false);  // the repair's and the remeshing's own options wait for them
-    mFillHoles->setEnabled(false);
-    mEdge->setEnabled(false);
-    updateEnabled();
 }
 
 void MeshImportDialog::setInputPath(const QString& path) {

@@ -18,6 +18,8 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
+class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QProgressBar;
@@ -79,6 +81,12 @@ protected:
 private:
     struct Job;
     void buildUi();
+    /// The file, its unit, the repair and the remeshing.
+    QFormLayout* buildOptionsForm();
+    /// The preview: size, counts, the import's report and the ring roundness before and after.
+    QGroupBox* buildPreview();
+    /// A changed option starts a new preview (after the debounce).
+    void connectOptions();
     void browse();
     void chooseOutput();
     void optionsChanged();

@@ -227,7 +227,12 @@ ParameterPanel::~ParameterPanel() = default;
 void ParameterPanel::buildUi() {
     setObjectName(QStringLiteral("parameterPanel"));
     setStyleSheet(QLatin1String(kStyleSheet));
+    buildFields();
+    buildFooter();
+    connectEdits();
+}
 
+void ParameterPanel::buildFields() {
     // The fields, from the engine's tables; the tissue's are read from the preset's optional
     // properties (the defaults when it has none) and written by tissueFromFields.
     addFields(mFields, "slope_ring", [](auto& p) -> auto& { return p.model.slopeRing; }, slopeRingFields());
@@ -360,7 +365,9 @@ void ParameterPanel::buildUi() {
     mScroll->setWidgetResizable(true);
     mScroll->setFrameShape(QFrame::NoFrame);
     mScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+}
 
+void ParameterPanel::buildFooter() {
     // Feedback under the fields.
     mStabilityLabel = new QLabel(this);
     mStabilityLabel->setObjectName(QStringLiteral("stabilityLabel"));
@@ -462,7 +469,9 @@ void ParameterPanel::buildUi() {
     layout->addWidget(mUnappliedBar);
     layout->addWidget(mAppliedLabel);
     layout->addLayout(applyRow);
+}
 
+void ParameterPanel::connectEdits() {
     // Every field: an edit records an undo step and revalidates.
     connect(mModelCombo, &QComboBox::currentIndexChanged, this, [this] { onEdited(kModelEdit); });
     connect(mRateSpin, &QDoubleSpinBox::valueChanged, this, [this] { onEdited(kRateEdit); });
@@ -1027,42 +1036,10 @@ void ParameterPanel::markField(QWidget* field, const char* property, bool on) {
     field->update();
 }
 
-void ParameterPanel::validate() {
-    const TissuePreset p = presetFromFields();
+QList<QWidget*> ParameterPanel::showStability(const TissuePreset& p) {
     const QLocale locale = this->locale();
     auto number = [&](double v) { return locale.toString(v, 'g', 6); };  // like the engine's messages
-
-    QStringList problems;
-    QSet<QWidget*> invalid;
-    // The engine's own validators: each problem names its field, which names the widget.
-    auto take = [&](const std::string& section, const Problems& found, bool withName) {
-        for (const Problem& problem : found) {
-            const std::vector<const PanelField*> named = fieldsNamedBy(section, problem);
-            for (const PanelField* f : named) invalid.insert(f->widget);
-            const QString message = QString::fromStdString(problem.message);
-            problems << (withName && named.size() == 1
-                             ? tr("%1: %2").arg(fieldName(kFieldEdit0 + int(named.front() - mFields.data())), message)
-                             : message);
-        }
-    };
-    take("slope_ring", validateSlopeRingParams(p.model.slopeRing), false);
-    // The chosen registry model's own validator.
-    if (const std::string section = modelParamsSectionOf(modelDescriptor(presetModelDef(p))); !section.empty())
-        take(section, validateModelDef(presetModelDef(p)), true);
-    take("octree", validateOctreeDef(p.octree), false);
-    {
-        QList<QWidget*> badTissue;
-        problems << tissueProblems(&badTissue);
-        for (QWidget* field : badTissue) invalid.insert(field);
-    }
-    if (!hapticRateInRange(p.hapticRateHz)) {
-        problems << tr("haptic rate = %1 Hz must be in %2..%3 Hz")
-                        .arg(number(p.hapticRateHz))
-                        .arg(number(kMinHapticRateHz))
-                        .arg(number(kMaxHapticRateHz));
-        invalid.insert(mRateSpin);
-    }
-
+    QList<QWidget*> unstableFields;
     // The slope model's loop gain and its bound, shown whether or not the rest is valid.
     const double gain = p.model.slopeRing.loopGain();
     const double alpha = p.model.slopeRing.effectiveRelaxation();
@@ -1074,9 +1051,7 @@ void ParameterPanel::validate() {
     if (unstable) {
         stability += QLatin1Char('\n') +
                      tr("α·(1 + gain) = %1 ≥ 2: unstable (the surface oscillates and grows)").arg(number(product));
-        invalid.insert(mSlopeSpins[0]);
-        invalid.insert(mContactSpin);
-        invalid.insert(mRelaxationSpin);
+        unstableFields = {mSlopeSpins[0], mContactSpin, mRelaxationSpin};
     } else {
         stability += QLatin1Char('\n') + tr("α·(1 + gain) = %1 < 2: loop-gain margin %2\u00a0%")
                                              .arg(number(product))
@@ -1133,6 +1108,46 @@ void ParameterPanel::validate() {
             "measured on the mesh) against the stiffness the device renders passively (Colgate and Brown, 1 N/mm "
             "at 1 kHz). Backward Euler has no step bound."));
     }
+    return unstableFields;
+}
+
+void ParameterPanel::validate() {
+    const TissuePreset p = presetFromFields();
+    const QLocale locale = this->locale();
+    auto number = [&](double v) { return locale.toString(v, 'g', 6); };  // like the engine's messages
+
+    QStringList problems;
+    QSet<QWidget*> invalid;
+    // The engine's own validators: each problem names its field, which names the widget.
+    auto take = [&](const std::string& section, const Problems& found, bool withName) {
+        for (const Problem& problem : found) {
+            const std::vector<const PanelField*> named = fieldsNamedBy(section, problem);
+            for (const PanelField* f : named) invalid.insert(f->widget);
+            const QString message = QString::fromStdString(problem.message);
+            problems << (withName && named.size() == 1
+                             ? tr("%1: %2").arg(fieldName(kFieldEdit0 + int(named.front() - mFields.data())), message)
+                             : message);
+        }
+    };
+    take("slope_ring", validateSlopeRingParams(p.model.slopeRing), false);
+    // The chosen registry model's own validator.
+    if (const std::string section = modelParamsSectionOf(modelDescriptor(presetModelDef(p))); !section.empty())
+        take(section, validateModelDef(presetModelDef(p)), true);
+    take("octree", validateOctreeDef(p.octree), false);
+    {
+        QList<QWidget*> badTissue;
+        problems << tissueProblems(&badTissue);
+        for (QWidget* field : badTissue) invalid.insert(field);
+    }
+    if (!hapticRateInRange(p.hapticRateHz)) {
+        problems << tr("haptic rate = %1 Hz must be in %2..%3 Hz")
+                        .arg(number(p.hapticRateHz))
+                        .arg(number(kMinHapticRateHz))
+                        .arg(number(kMaxHapticRateHz));
+        invalid.insert(mRateSpin);
+    }
+
+    for (QWidget* field : showStability(p)) invalid.insert(field);
 
     // Allowed, but not the paper's: slopes above 1 mm/N under a raised limit.
     QStringList notes;

@@ -149,6 +149,12 @@ private:
     enum Edit : int { kModelEdit, kRateEdit, kFieldEdit0 };
 
     void buildUi();
+    /// The fields, in groups, in the scroll area (mScroll).
+    void buildFields();
+    /// Under the fields: the feedback, the preset files, undo and redo, Apply and the unapplied bar.
+    void buildFooter();
+    /// Every field: an edit records an undo step and revalidates.
+    void connectEdits();
     void retranslateUi();
     QString slopeLabel(int ring) const;
     QString fieldName(int edit) const;
@@ -165,6 +171,9 @@ private:
     /// Shows the slope rows or the chosen registry model's own fields, by the combo's model.
     void updateModelRows();
     void validate();
+    /// The stability label: the slope-ring loop gain and every model's stability margin
+    /// (docs/stability.md). The fields that make a slope-ring set unstable (to mark invalid).
+    QList<QWidget*> showStability(const TissuePreset& p);
     void markField(QWidget* field, const char* property, bool on);
     /// Marks the fields (and their labels) that differ from mRunning, and shows or hides the bar.
     void updateUnappliedMarks();

@@ -109,6 +109,28 @@ void fillTriangle(Corner a, Corner b, Corner c, const PixelRect& clip, int backS
     }
 }
 
+/// The corner of a projected vertex (SoftwareViewport::ProjectedVertex) that fillTriangle shades.
+template <typename Projected>
+Corner corner(const Projected& p) {
+    return Corner{p.xPx, p.yPx, p.invDepth, p.diffuse, p.specular};
+}
+
+/// Whether triangle abc (projected vertices) may cover a pixel of `region`: a triangle crossing
+/// the near plane is dropped rather than clipped.
+template <typename Projected>
+bool inRegion(const PixelRect& region, const Projected& a, const Projected& b, const Projected& c) {
+    if (!a.inFront || !b.inFront || !c.inFront) return false;
+    const float rx0 = float(region.x0) - 1.0f, ry0 = float(region.y0) - 1.0f, rx1 = float(region.x1) + 1.0f,
+                ry1 = float(region.y1) + 1.0f;
+    const float minX = std::min({a.xPx, b.xPx, c.xPx}), maxX = std::max({a.xPx, b.xPx, c.xPx});
+    const float minY = std::min({a.yPx, b.yPx, c.yPx}), maxY = std::max({a.yPx, b.yPx, c.yPx});
+    return !(maxX < rx0 || minX > rx1 || maxY < ry0 || minY > ry1);
+}
+
+QRect qRect(const PixelRect& r) { return QRect(QPoint(r.x0, r.y0), QPoint(r.x1, r.y1)); }
+
+PixelRect pixelRect(const QRect& r) { return PixelRect{r.left(), r.top(), r.right(), r.bottom()}; }
+
 }  // namespace
 
 SoftwareViewport::SoftwareViewport(QWidget* parent) : QWidget(parent) {
@@ -170,27 +192,10 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
     }
     if (!whole && mScene.dirtyVertices().empty()) return;  // the same picture as last time
 
-    const glm::mat3 rotation(view);  // rigid: maps normals too
-    const glm::vec3 light = glm::normalize(style::kLightDirView);
+    const FrameCamera camera{view, projection, glm::mat3(view),  // rigid: maps normals too
+                             glm::normalize(style::kLightDirView), size};
     auto project = [&](const glm::vec3& pointMm, const glm::vec3& normal) {
-        const glm::vec4 pv = view * glm::vec4(pointMm, 1.0f);
-        const glm::vec4 clip = projection * pv;
-        const bool inFront = clip.w > 1e-6f && clip.z > -clip.w;
-        const float w = inFront ? clip.w : 1.0f;
-        // Two-sided, whatever the winding: open meshes show their inside.
-        glm::vec3 n = rotation * normal;
-        if (glm::dot(n, -glm::vec3(pv)) < 0.0f) n = -n;
-        // The key light and its highlight (as mesh.frag, per vertex): the highlight moving over a
-        // dent's walls shows its shape.
-        const glm::vec3 toEye = glm::normalize(-glm::vec3(pv));
-        const float specular = style::kSpecular *
-                               std::pow(std::max(glm::dot(n, glm::normalize(light + toEye)), 0.0f), style::kShininess);
-        return ProjectedVertex{(clip.x / w * 0.5f + 0.5f) * size.x,
-                               (0.5f - clip.y / w * 0.5f) * size.y,
-                               inFront ? 1.0f / clip.w : 0.0f,
-                               std::max(glm::dot(n, light), 0.0f),
-                               specular,
-                               inFront};
+        return projectVertex(camera, pointMm, normal);
     };
     const auto positions = mScene.positionsMm();
     const auto indices = mScene.indices();
@@ -200,35 +205,7 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
         mProjected.resize(positions.size());
         for (std::size_t v = 0; v < positions.size(); ++v) mProjected[v] = project(positions[v], mNormals[v]);
     } else {
-        // The region: where the changed triangles were and are now, plus the wire's pixel.
-        mScene.updateVertexNormals(mNormals, mRecomputed);
-        float x0 = size.x, y0 = size.y, x1 = -1.0f, y1 = -1.0f;
-        auto include = [&](const ProjectedVertex& p) {
-            x0 = std::min(x0, p.xPx);
-            y0 = std::min(y0, p.yPx);
-            x1 = std::max(x1, p.xPx);
-            y1 = std::max(y1, p.yPx);
-        };
-        bool behind = false;
-        for (const VertexId w : mRecomputed) {
-            include(mProjected[w]);
-            behind = behind || !mProjected[w].inFront;
-        }
-        for (const VertexId w : mRecomputed) mProjected[w] = project(positions[w], mNormals[w]);
-        for (const VertexId w : mRecomputed)
-            for (const std::uint32_t t : mScene.vertexTriangles(w))
-                for (int k = 0; k < 3; ++k) {
-                    const ProjectedVertex& p = mProjected[indices[3 * t + std::size_t(k)]];
-                    include(p);
-                    behind = behind || !p.inFront;
-                }
-        if (behind) {
-            region = PixelRect{0, 0, width - 1, height - 1};  // a projection across the eye bounds nothing
-        } else {
-            region = PixelRect{std::max(0, int(std::floor(x0)) - 2), std::max(0, int(std::floor(y0)) - 2),
-                               std::min(width - 1, int(std::ceil(x1)) + 2),
-                               std::min(height - 1, int(std::ceil(y1)) + 2)};
-        }
+        region = pixelRect(reprojectChanged(camera, sizePx));
     }
     mScene.clearDirty();
     if (region.empty()) return;
@@ -243,15 +220,8 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
 
     const auto weights = mScene.pressedWeights();
     const auto rings = mScene.rings();
-    auto corner = [](const ProjectedVertex& p) { return Corner{p.xPx, p.yPx, p.invDepth, p.diffuse, p.specular}; };
-    // A triangle crossing the near plane is dropped rather than clipped.
-    const float rx0 = float(region.x0) - 1.0f, ry0 = float(region.y0) - 1.0f, rx1 = float(region.x1) + 1.0f,
-                ry1 = float(region.y1) + 1.0f;
     auto visible = [&](const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c) {
-        if (!a.inFront || !b.inFront || !c.inFront) return false;
-        const float minX = std::min({a.xPx, b.xPx, c.xPx}), maxX = std::max({a.xPx, b.xPx, c.xPx});
-        const float minY = std::min({a.yPx, b.yPx, c.yPx}), maxY = std::max({a.yPx, b.yPx, c.yPx});
-        return !(maxX < rx0 || minX > rx1 || maxY < ry0 || minY > ry1);
+        return inRegion(region, a, b, c);
     };
     const float wireAlpha = mWireframe ? style::kWireAlpha : 0.0f;
     const glm::vec3 wire = style::kWire;
@@ -287,7 +257,76 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
                      });
     }
 
-    if (!mShowRestGhost) return;
+    if (mShowRestGhost) drawRestGhost(camera, qRect(region));
+}
+
+SoftwareViewport::ProjectedVertex SoftwareViewport::projectVertex(const FrameCamera& camera, const glm::vec3& pointMm,
+                                                                  const glm::vec3& normal) {
+    const glm::vec4 pv = camera.view * glm::vec4(pointMm, 1.0f);
+    const glm::vec4 clip = camera.projection * pv;
+    const bool inFront = clip.w > 1e-6f && clip.z > -clip.w;
+    const float w = inFront ? clip.w : 1.0f;
+    // Two-sided, whatever the winding: open meshes show their inside.
+    glm::vec3 n = camera.rotation * normal;
+    if (glm::dot(n, -glm::vec3(pv)) < 0.0f) n = -n;
+    // The key light and its highlight (as mesh.frag, per vertex): the highlight moving over a
+    // dent's walls shows its shape.
+    const glm::vec3 toEye = glm::normalize(-glm::vec3(pv));
+    const float specular = style::kSpecular *
+                           std::pow(std::max(glm::dot(n, glm::normalize(camera.light + toEye)), 0.0f),
+                                    style::kShininess);
+    return ProjectedVertex{(clip.x / w * 0.5f + 0.5f) * camera.sizePx.x,
+                           (0.5f - clip.y / w * 0.5f) * camera.sizePx.y,
+                           inFront ? 1.0f / clip.w : 0.0f,
+                           std::max(glm::dot(n, camera.light), 0.0f),
+                           specular,
+                           inFront};
+}
+
+QRect SoftwareViewport::reprojectChanged(const FrameCamera& camera, QSize sizePx) {
+    const int width = sizePx.width(), height = sizePx.height();
+    const auto positions = mScene.positionsMm();
+    const auto indices = mScene.indices();
+    // The region: where the changed triangles were and are now, plus the wire's pixel.
+    mScene.updateVertexNormals(mNormals, mRecomputed);
+    float x0 = camera.sizePx.x, y0 = camera.sizePx.y, x1 = -1.0f, y1 = -1.0f;
+    auto include = [&](const ProjectedVertex& p) {
+        x0 = std::min(x0, p.xPx);
+        y0 = std::min(y0, p.yPx);
+        x1 = std::max(x1, p.xPx);
+        y1 = std::max(y1, p.yPx);
+    };
+    bool behind = false;
+    for (const VertexId w : mRecomputed) {
+        include(mProjected[w]);
+        behind = behind || !mProjected[w].inFront;
+    }
+    for (const VertexId w : mRecomputed) mProjected[w] = projectVertex(camera, positions[w], mNormals[w]);
+    for (const VertexId w : mRecomputed)
+        for (const std::uint32_t t : mScene.vertexTriangles(w))
+            for (int k = 0; k < 3; ++k) {
+                const ProjectedVertex& p = mProjected[indices[3 * t + std::size_t(k)]];
+                include(p);
+                behind = behind || !p.inFront;
+            }
+    if (behind) return qRect(PixelRect{0, 0, width - 1, height - 1});  // a projection across the eye bounds nothing
+    return qRect(PixelRect{std::max(0, int(std::floor(x0)) - 2), std::max(0, int(std::floor(y0)) - 2),
+                           std::min(width - 1, int(std::ceil(x1)) + 2), std::min(height - 1, int(std::ceil(y1)) + 2)});
+}
+
+void SoftwareViewport::drawRestGhost(const FrameCamera& camera, const QRect& rect) {
+    const PixelRect region = pixelRect(rect);
+    const int width = mFrame.width();
+    auto* pixels = reinterpret_cast<std::uint32_t*>(mFrame.bits());
+    const int stride = int(mFrame.bytesPerLine() / 4);
+    const auto indices = mScene.indices();
+    const auto weights = mScene.pressedWeights();
+    auto project = [&](const glm::vec3& pointMm, const glm::vec3& normal) {
+        return projectVertex(camera, pointMm, normal);
+    };
+    auto visible = [&](const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c) {
+        return inRegion(region, a, b, c);
+    };
     // The rest shape of every triangle with a displaced corner, translucent, where it stands in
     // front of the tissue (over a dent); its edges brighter.
     const auto rest = mScene.restPositionsMm();

@@ -16,9 +16,12 @@
 #include "widgets/Viewport.h"
 
 #include <QImage>
+#include <QRect>
 #include <QWidget>
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -93,6 +96,21 @@ private:
     };
     FrameKey mLastKey;
     RasterStats mLastRaster;
+
+    /// The camera of one frame: what projects a vertex to the frame's device pixels.
+    struct FrameCamera {
+        glm::mat4 view{1.0f}, projection{1.0f};
+        glm::mat3 rotation{1.0f};  ///< the view's: maps normals
+        glm::vec3 light{0.0f};     ///< the key light's direction, in view space
+        glm::vec2 sizePx{0.0f};
+    };
+    static ProjectedVertex projectVertex(const FrameCamera& camera, const glm::vec3& pointMm, const glm::vec3& normal);
+    /// After a partial change: projects the vertices whose normals changed again; the rectangle
+    /// (device pixels) their triangles covered before and cover now, the whole frame when one is
+    /// behind the eye.
+    QRect reprojectChanged(const FrameCamera& camera, QSize sizePx);
+    /// The rest shape of every displaced triangle, translucent, over the tissue drawn in `rect`.
+    void drawRestGhost(const FrameCamera& camera, const QRect& rect);
 };
 
 }  // namespace palpate

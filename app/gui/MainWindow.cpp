@@ -6,8 +6,11 @@
 #include "engine/scene/TissuePreset.h"
 #include "engine/scoring/TargetReachability.h"
 #include "base/resources/ShippedResources.h"
+#include "app/gui/DeviceController.h"
 #include "app/gui/ExerciseController.h"
 #include "app/gui/FirstRun.h"
+#include "app/gui/MeshOpener.h"
+#include "app/gui/RecordingController.h"
 #include "widgets/ChartsPanel.h"
 #include "widgets/FeelPanel.h"
 #include "widgets/ExerciseEditorPanel.h"
@@ -17,7 +20,6 @@
 #include "widgets/ClassDialog.h"
 #include "results/ResultUploader.h"
 #include "engine/accuracy/StiffeningCalibration.h"
-#include "widgets/MeshImportDialog.h"
 #include "widgets/MeshSizeText.h"
 #include "widgets/PreferencesDialog.h"
 #include "widgets/ScoreCard.h"
@@ -25,7 +27,6 @@
 #include "widgets/DevicePanel.h"
 #include "widgets/ParameterPanel.h"
 #include "widgets/RecorderPanel.h"
-#include "widgets/RecordingTimeline.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -36,7 +37,6 @@
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QMimeData>
-#include <QPushButton>
 #include <QSettings>
 #include <QUndoGroup>
 #include <QUndoStack>
@@ -49,26 +49,14 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QStatusBar>
-#include <QThread>
 
 #include <glm/geometric.hpp>
 
-#include <algorithm>
 #include <stdexcept>
-#include <array>
 
 namespace palpate {
 
 namespace {
-
-/// The simulated devices the Device menu offers (listDeviceSchemes() also has forms that need an
-/// argument, or a viewport that steers them).
-constexpr std::array<const char*, 5> kMenuDevices = {"sim:press", "sim:stroke", "sim:scan", "sim:sine", "mouse:"};
-constexpr int kMaxRecentFiles = 8;
-const char* const kRecentFilesKey = "recentFiles";
-const char* const kMeshFolderKey = "meshes/lastFolder";  // where File > Open Mesh… starts
-const char* const kMeshUnitsKey = "meshUnits";  // each mesh file's unit: path, unit (newest first)
-constexpr int kMaxRememberedUnits = 500;        // the oldest answers are forgotten (asked again)
 
 bool isMeshFile(const QString& path) {
     const QString suffix = QFileInfo(path).suffix().toLower();
@@ -138,7 +126,7 @@ MainWindow::MainWindow(RendererChoice renderer, LoopMode mode, const HapticLoopD
 MainWindow::~MainWindow() { shutDown(); }
 
 void MainWindow::shutDown() {
-    if (mOpenThread) mOpenThread->wait();  // a device being opened: it is closed with the job
+    mDevices->waitForOpening();  // a device being opened: it is closed with the job
     // Docks hide and focus moves while the children are destroyed: the slots that react to it
     // must not run on a half-destroyed window.
     if (mEditorDock) mEditorDock->disconnect(this);
@@ -180,15 +168,6 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::RightDockWidgetArea, mDeviceDock);
     tabifyDockWidget(mParameterDock, mDeviceDock);
     mParameterDock->raise();
-    connect(mDevicePanel, &DevicePanel::connectRequested, this, [this](const QString& uri) {
-        if (const QString error = setDeviceUri(uri); !error.isEmpty()) mDevicePanel->showError(error);
-    });
-    connect(mDevicePanel, &DevicePanel::disconnectRequested, this, [this] {
-        if (const std::string error = mSession->disconnectDevice(); !error.empty())
-            mDevicePanel->showError(QString::fromStdString(error));
-        else
-            mDevicePanel->setDisconnected();
-    });
 
     mStatusDetails = new QLabel(this);
     mStatusDetails->setObjectName(QStringLiteral("statusDetails"));
@@ -212,10 +191,20 @@ void MainWindow::createDocks() {
     mChartsPanel->setDefaultCsv(QString::fromStdString(findResource("../docs/bench/sweep.csv")));
     mChartsPanel->feelPanel()->setDefaultCsv(QString::fromStdString(findResource("../docs/bench/feel.csv")));
     updateChartsConfiguration();
-    createRecorderDock();
+    mRecording = new RecordingController(
+        *this, *mSession, *mViewport, [this] { present(mSession->observe()); }, this);
+    mRecording->setStatusField(mRecordingLabel);
+    connect(mRecording, &RecordingController::playbackStarted, this, &MainWindow::pauseForPlayback);
+    connect(mRecording, &RecordingController::liveResumed, this, &MainWindow::resumeLive);
+    connect(mRecording, &RecordingController::statusChanged, this, &MainWindow::showStatus);
     createExerciseDocks();
+    mRecording->setExercises(*mExercises);
     createEditorDock();
     createLodDock();
+    mMeshes = new MeshOpener(*this, *mSession, *mExercises, this);
+    connect(mMeshes, &MeshOpener::loaded, this, &MainWindow::meshLoaded);
+    mDevices = new DeviceController(*this, *mSession, *mDevicePanel, *mExercises, this);
+    connect(mDevices, &DeviceController::switched, this, &MainWindow::deviceSwitched);
     mPanelSnapshot = std::make_unique<HapticSnapshot>();
 }
 
@@ -237,31 +226,6 @@ QString MainWindow::loadPresetFile(const QString& path) {
     QString error;
     if (!mParameterPanel->loadPresetFile(path, &error)) return error.isEmpty() ? path + tr(": not loaded") : error;
     return applyPreset(mParameterPanel->preset());
-}
-
-QStringList MainWindow::recentFiles() const { return QSettings().value(kRecentFilesKey).toStringList(); }
-
-void MainWindow::addRecentFile(const QString& path) {
-    QStringList files = recentFiles();
-    const QString absolute = QFileInfo(path).absoluteFilePath();
-    files.removeAll(absolute);
-    files.prepend(absolute);
-    while (files.size() > kMaxRecentFiles) files.removeLast();
-    QSettings().setValue(kRecentFilesKey, files);
-    rebuildRecentMenu();
-}
-
-void MainWindow::rebuildRecentMenu() {
-    if (!mRecentMenu) return;
-    mRecentMenu->clear();
-    const QStringList files = recentFiles();
-    for (int i = 0; i < files.size(); ++i) {
-        const QString path = files[i];
-        QAction* action = mRecentMenu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()));
-        action->setToolTip(path);
-        connect(action, &QAction::triggered, this, [this, path] { openMeshFile(path); });
-    }
-    mRecentMenu->setEnabled(!files.isEmpty());
 }
 
 void MainWindow::restoreWindowState() {
@@ -290,7 +254,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
     for (const QUrl& url : event->mimeData()->urls()) {
         if (!url.isLocalFile() || !isMeshFile(url.toLocalFile())) continue;
         event->acceptProposedAction();
-        openMeshFile(url.toLocalFile());
+        mMeshes->openMeshFile(url.toLocalFile());
         return;
     }
 }
@@ -348,18 +312,18 @@ void MainWindow::updateDocks() {
 
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    QAction* open = file->addAction(tr("&Open Mesh…"), this, &MainWindow::openMeshDialog);
+    QAction* open = file->addAction(tr("&Open Mesh…"), mMeshes, &MeshOpener::openMeshDialog);
     open->setShortcut(QKeySequence::Open);
     open->setObjectName(QStringLiteral("openMeshAction"));
     mOpenMeshAction = open;
     // Ctrl+Shift+O is Open Preset's; Ctrl+I is free in every menu and dock.
     mImportMeshAction = file->addAction(tr("&Import Mesh…"), QKeySequence(Qt::CTRL | Qt::Key_I), this,
-                                        [this] { openImportDialog(); });
+                                        [this] { mMeshes->openImportDialog(); });
     mImportMeshAction->setObjectName(QStringLiteral("importMeshAction"));
     mImportMeshAction->setStatusTip(tr("Open a mesh from another tool: its unit, repair, remeshing, previewed"));
-    mRecentMenu = file->addMenu(tr("Open &Recent"));
-    rebuildRecentMenu();
-    QAction* openRecording = file->addAction(tr("Open Recor&ding…"), this, &MainWindow::openRecordingDialog);
+    mMeshes->setRecentMenu(file->addMenu(tr("Open &Recent")));
+    QAction* openRecording = file->addAction(tr("Open Recor&ding…"), mRecording,
+                                             &RecordingController::openRecordingDialog);
     openRecording->setObjectName(QStringLiteral("openRecordingAction"));
     openRecording->setStatusTip(tr("Play a session recording back (the live session pauses meanwhile)"));
     file->addSeparator();
@@ -409,7 +373,7 @@ void MainWindow::createMenus() {
     view->addAction(mDeviceDock->toggleViewAction());
     view->addAction(mStatusDock->toggleViewAction());
     view->addAction(mChartsDock->toggleViewAction());
-    view->addAction(mRecorderDock->toggleViewAction());
+    view->addAction(mRecording->dock()->toggleViewAction());
     view->addAction(mEditorDock->toggleViewAction());
     view->addAction(mLodDock->toggleViewAction());
     view->addAction(mExerciseDock->toggleViewAction());
@@ -437,38 +401,8 @@ void MainWindow::createMenus() {
     mViewport->setTouchMode(mTouchAction->isChecked());
 
     simulation->addSeparator();
-    mRecordAction = simulation->addAction(tr("Re&cord"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R), this,
-                                          [this](bool on) {
-                                              if (on) startRecording();
-                                              else stopRecording();
-                                          });
-    mRecordAction->setCheckable(true);
-    mRecordAction->setStatusTip(tr("Record the live session to a new file (again: stop). Starting resets the tissue "
-                                   "to rest and the force ramps in again"));
-    mMarkAction = simulation->addAction(tr("Add &Mark"), QKeySequence(Qt::Key_M), this, [this] { addRecordingMark(); });
-    mMarkAction->setStatusTip(tr("Mark the current moment of the recording (the Recorder dock's text, if any)"));
-    mMarkAction->setEnabled(false);
-
-    QMenu* devices = simulation->addMenu(tr("&Device"));
-    mDeviceGroup = new QActionGroup(this);
-    mDeviceGroup->setExclusive(true);
-    for (const DeviceSchemeInfo& scheme : listDeviceSchemes()) {
-        if (std::find(kMenuDevices.begin(), kMenuDevices.end(), scheme.uri) == kMenuDevices.end()) continue;
-        const QString uri = QString::fromStdString(scheme.uri);
-        QAction* action = devices->addAction(uri);
-        action->setCheckable(true);
-        action->setData(uri);
-        action->setStatusTip(QString::fromStdString(scheme.description));
-        action->setToolTip(QString::fromStdString(scheme.description));
-        mDeviceGroup->addAction(action);
-        connect(action, &QAction::triggered, this, [this, uri] {
-            if (const QString error = setDeviceUri(uri); !error.isEmpty()) {
-                QMessageBox::warning(this, tr("Cannot switch the device"), error);
-                checkCurrentDevice();
-            }
-        });
-    }
-    checkCurrentDevice();
+    mRecording->addMenuActions(simulation);
+    mDevices->addDeviceMenu(simulation);
 
     createExerciseMenu();
 
@@ -500,154 +434,28 @@ void MainWindow::createStatusBar() {
     mResultsLabel->hide();
 }
 
-void MainWindow::checkCurrentDevice() {
-    const QString current = QString::fromStdString(mSession->deviceUri());
-    // None is checked for a URI the menu does not list (e.g. sim:path:FILE from --device).
-    for (QAction* action : mDeviceGroup->actions()) action->setChecked(action->data().toString() == current);
-}
-
-QString MainWindow::loadMesh(const QString& path, bool* deviceFailed) {
-    const MeshUnit unit = rememberedMeshUnit(path).value_or(kMillimetres);
-    return meshLoaded(path, mSession->loadMesh(path.toStdString(), unit, deviceFailed));
-}
-
-namespace {
-
-/// The remembered units, newest first: (absolute path, unit text). An array in the settings, so
-/// that the file stays readable (a map would be a binary blob).
-QList<QPair<QString, QString>> readMeshUnits(QSettings& settings) {
-    QList<QPair<QString, QString>> entries;
-    const int count = settings.beginReadArray(kMeshUnitsKey);
-    for (int i = 0; i < count; ++i) {
-        settings.setArrayIndex(i);
-        entries.append({settings.value("path").toString(), settings.value("unit").toString()});
-    }
-    settings.endArray();
-    return entries;
-}
-
-}  // namespace
+QString MainWindow::loadMesh(const QString& path, bool* deviceFailed) { return mMeshes->loadMesh(path, deviceFailed); }
 
 std::optional<MeshUnit> MainWindow::rememberedMeshUnit(const QString& path) {
-    QSettings settings;
-    const QString absolute = QFileInfo(path).absoluteFilePath();
-    for (const auto& [file, unit] : readMeshUnits(settings)) {
-        if (file != absolute) continue;
-        std::string ignored;
-        return parseMeshUnit(unit.toStdString(), ignored);  // an edited, invalid setting: asked again
-    }
-    return std::nullopt;
+    return MeshOpener::rememberedMeshUnit(path);
 }
 
 void MainWindow::rememberMeshUnit(const QString& path, const MeshUnit& unit) {
-    QSettings settings;
-    const QString absolute = QFileInfo(path).absoluteFilePath();
-    auto entries = readMeshUnits(settings);
-    entries.removeIf([&absolute](const auto& entry) { return entry.first == absolute; });
-    entries.prepend({absolute, QString::fromStdString(unit.text())});
-    while (entries.size() > kMaxRememberedUnits) entries.removeLast();
-    settings.remove(kMeshUnitsKey);
-    settings.beginWriteArray(kMeshUnitsKey, int(entries.size()));
-    for (int i = 0; i < entries.size(); ++i) {
-        settings.setArrayIndex(i);
-        settings.setValue("path", entries[i].first);
-        settings.setValue("unit", entries[i].second);
-    }
-    settings.endArray();
+    MeshOpener::rememberMeshUnit(path, unit);
 }
 
-QString MainWindow::openMeshFile(const QString& path) {
-    // Asked before: as answered then. Otherwise read as mm first: its size decides whether to ask
-    // (docs/meshes.md, "Units").
-    const std::optional<MeshUnit> remembered = rememberedMeshUnit(path);
-    MeshReport report;
-    std::string error;
-    auto mesh = HapticSession::loadTissueMesh(path.toStdString(), error, remembered.value_or(kMillimetres), &report);
-    const auto suggestion =
-        !remembered && report.bboxDiagonalMm > 0.0 ? suggestMeshUnit(report.bboxDiagonalMm) : std::nullopt;
-    if (suggestion) {
-        const QString unitName = QString::fromStdString(suggestion->unit.text());
-        QMessageBox box(QMessageBox::Question, tr("Which unit is this mesh in?"),
-                        tr("%1 is %2 if its coordinates are millimetres.")
-                            .arg(QFileInfo(path).fileName(), meshSizeText(report.sizeMm)),
-                        QMessageBox::NoButton, this);
-        box.setObjectName(QStringLiteral("meshUnitQuestion"));
-        QString reason = QString::fromStdString(suggestion->reason);
-        if (!reason.isEmpty()) reason[0] = reason[0].toUpper();  // the engine's sentence starts a paragraph here
-        box.setInformativeText(reason);
-        QPushButton* suggested = box.addButton(tr("Open in %1").arg(unitName), QMessageBox::AcceptRole);
-        suggested->setObjectName(QStringLiteral("openInSuggestedUnit"));
-        QPushButton* asMm = box.addButton(tr("Open as mm"), QMessageBox::AcceptRole);
-        asMm->setObjectName(QStringLiteral("openAsMillimetres"));
-        QPushButton* import = box.addButton(tr("Import…"), QMessageBox::ActionRole);
-        import->setObjectName(QStringLiteral("openInImportDialog"));
-        box.addButton(QMessageBox::Cancel);
-        box.setDefaultButton(suggested);
-        box.exec();
-        if (box.clickedButton() == import) {
-            openImportDialog(path);
-            return {};
-        }
-        if (box.clickedButton() == suggested) {
-            mesh = HapticSession::loadTissueMesh(path.toStdString(), error, suggestion->unit, &report);
-            if (mesh) rememberMeshUnit(path, suggestion->unit);
-        } else if (box.clickedButton() == asMm) {
-            if (mesh) rememberMeshUnit(path, kMillimetres);
-        } else {
-            return {};  // cancelled: nothing opened, nothing remembered
-        }
-    }
-    if (!mesh) {
-        showMeshOpenError(path, QString::fromStdString(error), report.triangleCount > 0);
-        return QString::fromStdString(error);
-    }
-    const QString loaded = meshLoaded(path, mSession->loadMesh(path.toStdString(), std::move(*mesh)));
-    if (!loaded.isEmpty()) showMeshOpenError(path, loaded, false);
-    return loaded;
-}
+QString MainWindow::openMeshFile(const QString& path) { return mMeshes->openMeshFile(path); }
 
-void MainWindow::showMeshOpenError(const QString& path, const QString& error, bool offerImport) {
-    // The error names the file and every problem found. A file that was read but refused (faults, a
-    // size no unit explains) may import: repair and the unit are the import dialog's.
-    QMessageBox box(QMessageBox::Warning, tr("Cannot open mesh"), error, QMessageBox::Close, this);
-    box.setObjectName(QStringLiteral("meshOpenError"));
-    QPushButton* import = nullptr;
-    if (offerImport) {
-        import = box.addButton(tr("Import…"), QMessageBox::ActionRole);
-        import->setObjectName(QStringLiteral("openInImportDialog"));
-        box.setInformativeText(tr("Import Mesh can repair the faults and scale the file to mm."));
-    }
-    box.exec();
-    if (import && box.clickedButton() == import) openImportDialog(path);
-}
+MeshImportDialog* MainWindow::openImportDialog(const QString& path) { return mMeshes->openImportDialog(path); }
 
-MeshImportDialog* MainWindow::openImportDialog(const QString& path) {
-    if (!mImportDialog) {
-        mImportDialog = new MeshImportDialog(this);
-        mImportDialog->resize(760, 620);
-        connect(mImportDialog, &MeshImportDialog::imported, this, [this](const QString& output) {
-            // Written in mm: so it is read, whatever an older file of that name was read in.
-            rememberMeshUnit(output, kMillimetres);
-            if (mExercises->running()) {
-                statusBar()->showMessage(tr("An exercise is running: the mesh cannot change now."), 6000);
-                return;
-            }
-            // No message on success: it would hide the status bar's mesh field, which names the new file.
-            if (const QString error = loadMesh(output); !error.isEmpty())
-                QMessageBox::warning(this, tr("Cannot open mesh"), error);
-        });
-    }
-    if (!path.isEmpty()) mImportDialog->setInputPath(path);
-    mImportDialog->show();
-    mImportDialog->raise();
-    mImportDialog->activateWindow();
-    return mImportDialog;
-}
+MeshImportDialog* MainWindow::importDialog() const { return mMeshes->importDialog(); }
 
-QString MainWindow::meshLoaded(const QString& path, const std::string& error) {
-    if (!error.empty()) return QString::fromStdString(error);
+QString MainWindow::meshDialogFolder() const { return MeshOpener::meshDialogFolder(); }
+
+QStringList MainWindow::recentFiles() const { return MeshOpener::recentFiles(); }
+
+void MainWindow::meshLoaded() {
     mTouchVertex = kNoVertex;  // a fresh device on another mesh: nothing is pressed
-    addRecentFile(path);
     if (!mDevicePanel->isConnected()) {
         const QString uri = QString::fromStdString(mSession->deviceUri());
         std::string ignored;
@@ -656,7 +464,6 @@ QString MainWindow::meshLoaded(const QString& path, const std::string& error) {
     }
     showDrawnMesh();  // the first mesh is drawn at once; a later one once the loop runs it
     showStatus();
-    return {};
 }
 
 QString MainWindow::startSession(const QString& meshPath, const QString& deviceUri, const QString& fallbackUri,
@@ -686,64 +493,16 @@ QString MainWindow::startSession(const QString& meshPath, const QString& deviceU
     return {};
 }
 
-QString MainWindow::setDeviceUri(const QString& uri) {
-    if (HapticSession::opensSlowly(uri.toStdString()) && mSession->threadRunning()) return openDeviceInBackground(uri);
-    const std::string error = mSession->setDevice(uri.toStdString());
-    deviceSwitched(uri, error);
-    return QString::fromStdString(error);
-}
+QString MainWindow::setDeviceUri(const QString& uri) { return mDevices->setDeviceUri(uri); }
 
-void MainWindow::deviceSwitched(const QString& uri, const std::string& error) {
-    checkCurrentDevice();
-    if (error.empty()) {
+bool MainWindow::deviceOpening() const { return mDevices->opening(); }
+
+void MainWindow::deviceSwitched(const QString& uri, bool ok) {
+    if (ok) {
         mTouchVertex = kNoVertex;  // a fresh device: nothing is pressed
         setTouchMode(isMouseUri(uri.toStdString()));
-        std::string ignored;
-        const auto device = createDeviceFromUri(uri.toStdString(), ignored);  // for its spec only
-        mDevicePanel->setConnected(uri, device ? device->spec() : DeviceSpec{});
     }
     showStatus();
-}
-
-QString MainWindow::openDeviceInBackground(const QString& uri) {
-    if (mOpenThread) return tr("%1 is still being opened: wait for it first").arg(mOpeningUri);
-    // Real hardware can take seconds to open (a Falcon's firmware upload, homing checks): on a
-    // worker thread, so the window and the running session go on meanwhile. The old device stays
-    // in the loop until the new one is open.
-    struct Job {
-        std::string uri;
-        std::unique_ptr<HapticDevice> device;
-        std::string error;
-    };
-    auto job = std::make_shared<Job>();
-    job->uri = uri.toStdString();
-    mOpeningUri = uri;
-    mOpenThread = QThread::create([job] {
-        try {  // no event loop catches it here: it would end the process
-            job->device = openDeviceUri(job->uri, job->error);
-        } catch (const std::exception& e) {
-            job->error = job->uri + ": " + e.what();
-        }
-    });
-    mOpenThread->setParent(this);  // deleted with the window if it closes first (shutDown waits for it)
-    connect(mOpenThread, &QThread::finished, this, [this, job] {
-        mOpenThread->deleteLater();
-        mOpenThread = nullptr;
-        mDevicePanel->setEnabled(!mExercises->running());
-        std::string error = job->error;
-        if (job->device) error = mSession->setOpenedDevice(job->uri, std::move(job->device));
-        deviceSwitched(QString::fromStdString(job->uri), error);
-        if (!error.empty()) {
-            mDevicePanel->showError(QString::fromStdString(error));
-            statusBar()->showMessage(tr("Cannot open %1: %2").arg(mOpeningUri, QString::fromStdString(error)), 15000);
-        } else {
-            statusBar()->showMessage(tr("%1 is connected").arg(mOpeningUri), 5000);
-        }
-    });
-    mDevicePanel->setEnabled(false);
-    statusBar()->showMessage(tr("Opening %1…").arg(uri));
-    mOpenThread->start();
-    return {};
 }
 
 QString MainWindow::restartSimulation() {
@@ -801,14 +560,14 @@ void MainWindow::observeFrame() {
 
 void MainWindow::present(HapticSession::Observation observation) {
     if (observation == HapticSession::Observation::Nothing) return;
-    if (mPlayback) return;  // the viewport shows the recording; backToLive() draws the live state again
+    if (mRecording->inPlayback()) return;  // the viewport shows the recording; backToLive() draws the live state again
     // A switch, or the first scene of a loop that an exercise (not loadMesh) created.
     if (observation == HapticSession::Observation::SceneSwitched || mSession->drawnMesh() != mShownMesh) showDrawnMesh();
     mViewport->setSnapshot(mSession->view());  // schedules the repaint
 }
 
 void MainWindow::showDrawnMesh() {
-    if (mPlayback) return;  // the viewport shows the recording; backToLive() comes back here
+    if (mRecording->inPlayback()) return;  // the viewport shows the recording; backToLive() comes back here
     const auto& mesh = mSession->drawnMesh();
     if (!mesh || mesh == mShownMesh) return;  // a restart keeps the mesh: keep the camera too
     mShownMesh = mesh;
@@ -848,16 +607,17 @@ void MainWindow::measureRates() {
 
 void MainWindow::showStatus() {
     updateDocks();
-    updateRecorder();
+    mRecording->update();
     const QString renderer = rendererName(mViewport->kind());
     // In playback the viewport shows the recording's mesh: so does the status bar.
-    const bool replayed = mPlayback && mRecorderPanel->playbackMesh();
-    const TissueMesh* mesh = replayed ? mRecorderPanel->playbackMesh() : mSession->drawnMesh().get();
+    const RecorderPanel& recorder = *mRecording->panel();
+    const bool replayed = mRecording->inPlayback() && recorder.playbackMesh();
+    const TissueMesh* mesh = replayed ? recorder.playbackMesh() : mSession->drawnMesh().get();
     if (!mesh) {
         mMeshLabel->setText(tr("No mesh, %1").arg(renderer));
         mMeshLabel->setMinimumWidth(0);
     } else {
-        const QString path = replayed ? mRecorderPanel->playbackMeshPath() : QString::fromStdString(mSession->drawnPath());
+        const QString path = replayed ? recorder.playbackMeshPath() : QString::fromStdString(mSession->drawnPath());
         // Name, size in mm and the file's unit: a mesh opened in the wrong unit shows at once.
         const MeshReport& report = mesh->report();
         QString shown = tr("%1 · %2").arg(QFileInfo(path).fileName(), meshSizeText(report.sizeMm));
@@ -916,198 +676,36 @@ QString MainWindow::statusText() const {
     return parts.join(QStringLiteral("   |   "));
 }
 
-QString MainWindow::meshDialogFolder() const {
-    const QString last = QSettings().value(kMeshFolderKey).toString();
-    if (!last.isEmpty() && QFileInfo(last).isDir()) return last;
-    const std::string bundled = findResource(kDefaultMesh);
-    return bundled.empty() ? QString() : QFileInfo(QString::fromStdString(bundled)).absolutePath();
-}
+RecorderPanel* MainWindow::recorderPanel() const { return mRecording->panel(); }
 
-void MainWindow::openMeshDialog() {
-    // Its own folder: without one, Qt starts where any file dialog was last (the recordings, say).
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Mesh"), meshDialogFolder(),
-                                                      tr("Meshes (*.obj *.off *.ply *.stl *.om);;All files (*)"));
-    if (path.isEmpty()) return;
-    if (openMeshFile(path).isEmpty()) QSettings().setValue(kMeshFolderKey, QFileInfo(path).absolutePath());
-}
+QString MainWindow::startRecording() { return mRecording->startRecording(); }
 
-void MainWindow::createRecorderDock() {
-    mRecorderPanel = new RecorderPanel(this);
-    mRecorderDock = new QDockWidget(tr("Recorder"), this);
-    mRecorderDock->setObjectName(QStringLiteral("recorderDock"));
-    mRecorderDock->setWidget(mRecorderPanel);
-    // Under the viewport, room for the timeline; the right column keeps its whole height.
-    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
-    addDockWidget(Qt::BottomDockWidgetArea, mRecorderDock);
-    connect(mRecorderPanel, &RecorderPanel::recordRequested, this, [this] { startRecording(); });
-    connect(mRecorderPanel, &RecorderPanel::stopRequested, this, [this] { stopRecording(); });
-    connect(mRecorderPanel, &RecorderPanel::markRequested, this, [this](const QString& text) { addRecordingMark(text); });
-    connect(mRecorderPanel, &RecorderPanel::playbackStarted, this, &MainWindow::enterPlayback);
-    connect(mRecorderPanel, &RecorderPanel::playbackMeshChanged, this, [this](const TissueMesh& mesh) {
-        if (!mPlayback) return;
-        mViewport->setMesh(mesh);
-        showStatus();  // the recording's mesh in the status bar
-    });
-    connect(mRecorderPanel, &RecorderPanel::playbackFrame, this, [this](const SceneSnapshot& frame) {
-        if (mPlayback) mViewport->setSnapshot(frame);
-    });
-    connect(mRecorderPanel, &RecorderPanel::backToLiveRequested, this, &MainWindow::backToLive);
-    connect(mRecorderPanel, &RecorderPanel::openFailed, this, [this](const QString& error) {
-        mRecorderDock->show();
-        mRecorderDock->raise();
-        statusBar()->showMessage(error, 15000);
-    });
-}
+QString MainWindow::stopRecording() { return mRecording->stopRecording(); }
 
-QString MainWindow::startRecording() {
-    QString error;
-    if (mSession->recording()) return {};
-    if (mPlayback) {
-        error = tr("Go back to the live session before recording");
-    } else if (!mSession->hasLoop()) {
-        error = tr("Load a mesh before recording: there is no session to record");
-    } else {
-        const QString path = mRecorderPanel->newRecordingPath(&error);
-        if (!path.isEmpty()) {
-            // A scene just handed to the running loop shows up within a tick or two: wait for it
-            // (bounded), so that the header describes the scene the recorder starts on.
-            QElapsedTimer waited;
-            waited.start();
-            while (mSession->threadRunning() && mSession->sceneSwitchPending() && waited.elapsed() < 250) {
-                present(mSession->observe());
-                QThread::msleep(2);
-            }
-            error = QString::fromStdString(mSession->startRecording(path.toStdString()));
-            if (error.isEmpty()) {
-                mRecorderPanel->setRecordingStarted(path);
-                statusBar()->showMessage(tr("Recording to %1").arg(QDir::toNativeSeparators(path)), 5000);
-            }
-        }
-    }
-    if (!error.isEmpty()) showRecordingError(tr("Cannot record: %1").arg(error));
-    updateRecorder();
-    return error;
-}
+bool MainWindow::isRecording() const { return mSession->recording(); }
 
-QString MainWindow::stopRecording() {
-    if (!mSession->recording()) {
-        if (mRecordAction) mRecordAction->setChecked(false);
-        return {};
-    }
-    const QString path = QString::fromStdString(mSession->recordingSession()->path());
-    const QString error = QString::fromStdString(mSession->stopRecording());
-    mRecorderPanel->setRecordingStopped(error.isEmpty() ? QString() : tr("The recording failed: %1").arg(error));
-    mRecorderPanel->showRecordingStats(mSession->lastRecordingStats());
-    if (error.isEmpty())
-        statusBar()->showMessage(tr("Recording saved: %1").arg(QDir::toNativeSeparators(path)), 8000);
-    else
-        statusBar()->showMessage(tr("The recording failed: %1").arg(error), 15000);
-    updateRecorder();
-    return error;
-}
+bool MainWindow::addRecordingMark(const QString& text) { return mRecording->addMark(text); }
 
-bool MainWindow::addRecordingMark(const QString& text) {
-    RecordingSession* recording = mSession->recordingSession();
-    if (!recording) return false;
-    // During an exercise, M is the trainee's mark (find the lump): the scorer reads it from the file.
-    if (mExercises->phase() == ExerciseController::Phase::Running && text.isEmpty()) {
-        mExercises->mark();
-        mRecorderPanel->noteMarkAdded(tr("mark (trainee)"));
-        return true;
-    }
-    const QString mark = text.isEmpty() ? mRecorderPanel->nextMarkText() : text;
-    recording->mark(mark.toStdString());
-    mRecorderPanel->noteMarkAdded(mark);
-    statusBar()->showMessage(tr("Mark added: %1").arg(mark), 3000);
-    return true;
-}
+void MainWindow::openRecording(const QString& path) { mRecording->openRecording(path); }
 
-void MainWindow::showRecordingError(const QString& message) {
-    mRecorderPanel->showRecordingError(message);
-    mRecorderDock->show();
-    mRecorderDock->raise();
-    statusBar()->showMessage(message, 15000);
-}
+bool MainWindow::inPlayback() const { return mRecording->inPlayback(); }
 
-void MainWindow::updateRecorder() {
-    if (!mRecorderPanel) return;
-    if (mRecorderPanel->isRecording() && !mSession->recording()) {
-        // It ended without Stop: a new haptic rate made a new loop.
-        const QString why = QString::fromStdString(mSession->takeRecordingEndedReason());
-        mRecorderPanel->setRecordingStopped(QString());
-        if (!why.isEmpty()) showRecordingError(why);
-        mRecorderPanel->showRecordingStats(mSession->lastRecordingStats());
-    }
-    if (RecordingSession* recording = mSession->recordingSession()) {
-        const RecordingStats stats = recording->stats();
-        mRecorderPanel->showRecordingStats(stats);
-        if (!stats.error.empty()) {
-            // A write error (disk full, removed drive): stop safely, keep what was written.
-            const QString path = QString::fromStdString(recording->path());
-            const QString error = QString::fromStdString(stats.error);
-            mSession->stopRecording();
-            mRecorderPanel->setRecordingStopped(QString());
-            showRecordingError(tr("Recording stopped: %1 (%2 keeps what was written before)").arg(error, path));
-            mRecorderPanel->showRecordingStats(mSession->lastRecordingStats());
-        }
-    }
-    const bool recording = mSession->recording();
-    if (mRecordAction) {
-        mRecordAction->setChecked(recording);
-        mRecordAction->setEnabled(!mPlayback);
-    }
-    if (mMarkAction) mMarkAction->setEnabled(recording);
-    mRecorderPanel->setRecordingAllowed(!mPlayback);
-    if (recording) {
-        mRecordingLabel->setText(
-            tr("● REC %1").arg(RecordingTimeline::formatTime(mSession->recordingSession()->stats().elapsedS)));
-        mRecordingLabel->setStyleSheet(QStringLiteral("color: #c62828; font-weight: bold;"));
-        mRecordingLabel->show();
-    } else if (mPlayback) {
-        mRecordingLabel->setText(tr("▶ playback"));
-        mRecordingLabel->setStyleSheet(QString());
-        mRecordingLabel->show();
-    } else {
-        mRecordingLabel->hide();
-    }
-}
+void MainWindow::backToLive() { mRecording->backToLive(); }
 
-void MainWindow::openRecordingDialog() {
-    mRecorderDock->show();
-    mRecorderDock->raise();
-    mRecorderPanel->chooseRecording();
-}
-
-void MainWindow::openRecording(const QString& path) {
-    mRecorderDock->show();
-    mRecorderDock->raise();
-    if (!mRecorderPanel->openRecording(path))
-        statusBar()->showMessage(tr("A recording is still being opened; try again when it is done"), 5000);
-}
-
-void MainWindow::enterPlayback(const QString& path) {
-    if (!mPlayback) {
-        if (mSession->recording()) {
-            stopRecording();
-            statusBar()->showMessage(tr("Recording stopped to play %1 back").arg(QFileInfo(path).fileName()), 8000);
-        }
+void MainWindow::pauseForPlayback(const QString& path, bool fromLive) {
+    if (fromLive) {
         mPlayingBeforePlayback = isPlaying();
         mTouchBeforePlayback = touchMode();
         setPlaying(false);  // the live session waits: the tissue relaxes and the force is zero
         setTouchMode(false);
-        mPlayback = true;
     }
     mPlayAction->setEnabled(false);  // Space belongs to the recording now (on the dock's timeline)
     mTouchAction->setEnabled(false);
     mShownMesh.reset();  // backToLive() draws the live mesh again
     setWindowTitle(tr("Palpate - playing %1").arg(QFileInfo(path).fileName()));
-    updateRecorder();
 }
 
-void MainWindow::backToLive() {
-    if (!mPlayback) return;
-    mRecorderPanel->closePlayback();
-    mPlayback = false;
+void MainWindow::resumeLive() {
     mPlayAction->setEnabled(true);
     mTouchAction->setEnabled(true);
     setPlaying(mPlayingBeforePlayback);
@@ -1115,7 +713,6 @@ void MainWindow::backToLive() {
     showDrawnMesh();
     mViewport->setSnapshot(mSession->view());
     if (!mSession->drawnMesh()) mViewport->clearMesh();
-    updateRecorder();
     showStatus();
 }
 
@@ -1138,23 +735,17 @@ void MainWindow::createExerciseDocks() {
     tabifyDockWidget(mExerciseDock, mHistoryDock);
     mExerciseDock->raise();
 
-    mExercises = new ExerciseController(*mSession, *mViewport, *mTraineePanel, *mHistoryPanel,
-                                        [this] { return mRecorderPanel->recordingFolder(); }, this);
+    mExercises = new ExerciseController(
+        *mSession, *mViewport, *mTraineePanel, *mHistoryPanel,
+        [this] { return mRecording->panel()->recordingFolder(); }, this);
     connect(mExercises, &ExerciseController::runningChanged, this, &MainWindow::setExerciseRunning);
     connect(mExercises, &ExerciseController::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
     connect(mExercises, &ExerciseController::finished, this, [this] {
         mExerciseDock->show();
         mExerciseDock->raise();
     });
-    connect(mExercises, &ExerciseController::recordingStateChanged, this, [this](bool recording, const QString& path) {
-        if (recording) {
-            mRecorderPanel->setRecordingStarted(path);
-        } else {
-            mRecorderPanel->setRecordingStopped(QString());
-            mRecorderPanel->showRecordingStats(mSession->lastRecordingStats());
-        }
-        updateRecorder();
-    });
+    connect(mExercises, &ExerciseController::recordingStateChanged, mRecording,
+            &RecordingController::showExerciseRecording);
     connect(mTraineePanel, &TraineePanel::newTraineeRequested, this, &MainWindow::newTraineeDialog);
     connect(mTraineePanel, &TraineePanel::openExerciseRequested, this, &MainWindow::openExerciseDialog);
     connect(mTraineePanel->scoreCard(), &ScoreCard::exportPdfRequested, this, &MainWindow::exportScorePdfDialog);
@@ -1232,7 +823,7 @@ void MainWindow::createEditorDock() {
             statusBar()->showMessage(tr("Click the tissue to place; drag orbits; Esc stops placing"), 6000);
         } else {
             mViewport->setPickHandler({});
-            setTouchMode(mTouchBeforePlacing && mSession->touchAvailable() && !mPlayback);
+            setTouchMode(mTouchBeforePlacing && mSession->touchAvailable() && !mRecording->inPlayback());
         }
     });
     connect(mEditor, &ExerciseEditorPanel::markersChanged, this, [this](const ExerciseMarkers&) { showEditorMarkers(); });
@@ -1242,7 +833,8 @@ void MainWindow::createEditorDock() {
             return;
         }
         // In the exercise's own unit (its "mesh_unit"), not the one remembered for the file.
-        const QString error = meshLoaded(path, mSession->loadMesh(path.toStdString(), mEditor->exercise().meshUnit));
+        const QString error = mMeshes->finishLoad(path,
+                                                  mSession->loadMesh(path.toStdString(), mEditor->exercise().meshUnit));
         if (!error.isEmpty()) QMessageBox::warning(this, tr("Cannot open mesh"), error);
     });
     connect(mEditor, &ExerciseEditorPanel::previewRequested, this, [this](const Exercise& exercise) {
@@ -1432,17 +1024,16 @@ void MainWindow::setMode(Mode mode) {
 
 void MainWindow::setExerciseRunning(bool running) {
     mParameterPanel->setEnabled(!running);
-    mDevicePanel->setEnabled(!running);
+    mDevices->setSwitchingEnabled(!running);
     if (mOpenMeshAction) mOpenMeshAction->setEnabled(!running);
     if (mImportMeshAction) mImportMeshAction->setEnabled(!running);
     if (mRestartAction) mRestartAction->setEnabled(!running);
-    if (mDeviceGroup) mDeviceGroup->setEnabled(!running);
     if (running) {
         // The panel shows the exercise's tissue (it cannot be changed until the end).
         mParameterPanel->setPreset(mSession->preset());
         updateChartsConfiguration();
     }
-    updateRecorder();
+    mRecording->update();
 }
 
 void MainWindow::newTraineeDialog() {
@@ -1466,8 +1057,9 @@ void MainWindow::exportScorePdfDialog() {
         statusBar()->showMessage(tr("There is no score to export yet: run an exercise first."), 5000);
         return;
     }
-    const QString suggested = QDir(mRecorderPanel->recordingFolder())
-                                  .filePath(QFileInfo(mExercises->lastRecordingPath()).completeBaseName() + QStringLiteral(".pdf"));
+    const QString suggested = QDir(mRecording->panel()->recordingFolder())
+                                  .filePath(QFileInfo(mExercises->lastRecordingPath()).completeBaseName() +
+                                            QStringLiteral(".pdf"));
     const QString path = QFileDialog::getSaveFileName(this, tr("Export Score Report"), suggested, tr("PDF (*.pdf)"));
     if (path.isEmpty()) return;
     if (const QString error = mExercises->exportLastReportPdf(path); !error.isEmpty())

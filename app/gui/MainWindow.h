@@ -2,7 +2,9 @@
 // The main window: the viewport in the centre, menus, and a status bar with the mesh, the haptic
 // loop's health (rate, tick time, jitter, overruns, SCHED_FIFO), the GUI's frame rate, the device,
 // the contact and the force. The haptic loop runs the model; this window only observes its
-// snapshots (docs/architecture.md) and sends it commands. Docks (parameters, device, recorder...) come later.
+// snapshots (docs/architecture.md) and sends it commands. Three concerns have controllers of their
+// own: recording and playback (RecordingController), opening meshes (MeshOpener) and switching the
+// device (DeviceController); the window's public API forwards to them.
 
 #include "app/gui/HapticSession.h"
 #include "results/ResultsDatabase.h"
@@ -22,8 +24,6 @@ class QAction;
 class QActionGroup;
 class QDockWidget;
 class QLabel;
-class QMenu;
-class QThread;
 class QUndoGroup;
 
 namespace palpate {
@@ -31,15 +31,18 @@ namespace palpate {
 class ResultUploader;
 
 class ChartsPanel;
+class DeviceController;
 class DevicePanel;
 class ExerciseController;
 class ExerciseEditorPanel;
 class HistoryPanel;
 class LodPanel;
 class MeshImportDialog;
+class MeshOpener;
 class TraineePanel;
 class ParameterPanel;
 class RecorderPanel;
+class RecordingController;
 struct HapticSnapshot;
 struct TissuePreset;
 
@@ -77,7 +80,7 @@ public:
     /// then "" means "opening"; the device arrives later (deviceOpening() until then) and an error
     /// is shown in the Device dock and the status bar.
     QString setDeviceUri(const QString& uri);
-    bool deviceOpening() const { return mOpenThread != nullptr; }
+    bool deviceOpening() const;
     /// A fresh device of the same URI and a fresh scene of the same mesh. "" or why not.
     QString restartSimulation();
     /// Stepped mode: runs `ticks` haptic ticks now, then shows the newest snapshot (what --ticks does).
@@ -91,20 +94,20 @@ public:
     /// The Charts dock's content (speed against accuracy, the applied configuration highlighted).
     ChartsPanel* chartsPanel() const { return mChartsPanel; }
     /// The Recorder dock's content: recording the live session, playing recordings back.
-    RecorderPanel* recorderPanel() const { return mRecorderPanel; }
+    RecorderPanel* recorderPanel() const;
     /// Records the live session into a new timestamped file in the recorder's folder (the dock's
     /// Record, Simulation > Record). "" or why not, also shown in the dock and the status bar.
     QString startRecording();
     /// Stops recording and closes the file cleanly. "" or the write error (shown as above).
     QString stopRecording();
-    bool isRecording() const { return mSession->recording(); }
+    bool isRecording() const;
     /// Adds a mark (the dock's text, else "Mark N") at the recording's current tick; false when not recording.
     bool addRecordingMark(const QString& text = {});
     /// Opens a recording for playback (checked off the GUI thread). Once it opened, the live
     /// session pauses and the viewport shows the replay; garbage leaves the live session alone.
     void openRecording(const QString& path);
     /// Playing a recording back (the viewport shows it; the live session is paused).
-    bool inPlayback() const { return mPlayback; }
+    bool inPlayback() const;
     /// Leaves playback: the viewport shows the live session again, which runs as before.
     void backToLive();
     /// Trainee mode: the Exercise dock's content, the History dock's, and what runs exercises and
@@ -139,7 +142,7 @@ public:
     /// File > Import Mesh…: the dialog (one per window, kept), with `path` previewed if given.
     MeshImportDialog* openImportDialog(const QString& path = {});
     /// The import dialog once opened (null before).
-    MeshImportDialog* importDialog() const { return mImportDialog; }
+    MeshImportDialog* importDialog() const;
     /// The unit a mesh file is read in, as chosen for it before (QSettings "meshUnits", by
     /// absolute path); nullopt when never asked.
     static std::optional<MeshUnit> rememberedMeshUnit(const QString& path);
@@ -185,43 +188,35 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private slots:
-    void openMeshDialog();
-    void openRecordingDialog();
     void observeFrame();
     void measureRates();
 
 private:
     void createDocks();
     void createMenus();
-    void addRecentFile(const QString& path);
-    void rebuildRecentMenu();
     void restoreWindowState();
     void saveWindowState();
     void showAbout();
     void updateDocks();
     /// Tells the Charts panel the applied preset and the drawn mesh's size (its highlight).
     void updateChartsConfiguration();
-    /// The rest of a mesh load once the session has it (or `error`): recent files, device panel, status.
-    QString meshLoaded(const QString& path, const std::string& error);
-    /// Shows why `path` cannot be opened; offers the import dialog when importing may help.
-    void showMeshOpenError(const QString& path, const QString& error, bool offerImport);
+    /// The session has a new mesh (MeshOpener::loaded): nothing is pressed, the device panel, the mesh drawn.
+    void meshLoaded();
     void createStatusBar();
     void present(HapticSession::Observation observation);
     void showDrawnMesh();
     void showStatus();
-    void checkCurrentDevice();
     void shutDown();
-    void createRecorderDock();
-    /// The recording's figures to the dock and the status bar; stops it on a write error.
-    void updateRecorder();
-    void showRecordingError(const QString& message);
-    void enterPlayback(const QString& path);
+    /// A recording plays (RecordingController::playbackStarted): the live session waits, its
+    /// Play/Pause and touch mode kept for backToLive.
+    void pauseForPlayback(const QString& path, bool fromLive);
+    /// Playback ended (RecordingController::liveResumed): the live session runs and shows again.
+    void resumeLive();
     void createExerciseDocks();
     void createEditorDock();
     void createLodDock();
-    QString openDeviceInBackground(const QString& uri);
-    /// After a device switch (or its failure): menus, touch mode, the Device dock, the status bar.
-    void deviceSwitched(const QString& uri, const std::string& error);
+    /// After a device switch (DeviceController::switched): touch mode, the status bar.
+    void deviceSwitched(const QString& uri, bool ok);
     /// The Level of Detail panel's scene: the drawn mesh (unless it is one of its own levels) and
     /// the needs of the running exercise or the preset.
     void updateLodScene();
@@ -269,7 +264,6 @@ private:
     QAction* mWireframeAction = nullptr;
     QAction* mTouchAction = nullptr;
     VertexId mTouchVertex = kNoVertex;  // the vertex being pressed (touch mode), else kNoVertex
-    QActionGroup* mDeviceGroup = nullptr;
     ParameterPanel* mParameterPanel = nullptr;
     DevicePanel* mDevicePanel = nullptr;
     QLabel* mStatusDetails = nullptr;
@@ -278,27 +272,22 @@ private:
     QDockWidget* mStatusDock = nullptr;
     ChartsPanel* mChartsPanel = nullptr;
     QDockWidget* mChartsDock = nullptr;
-    QMenu* mRecentMenu = nullptr;
-    RecorderPanel* mRecorderPanel = nullptr;
-    QDockWidget* mRecorderDock = nullptr;
-    QAction* mRecordAction = nullptr;
-    QAction* mMarkAction = nullptr;
-    QLabel* mRecordingLabel = nullptr;   // status bar: REC and its time, or the recording played back
-    bool mPlayback = false;
+    RecordingController* mRecording = nullptr;  // owned by Qt (child of this window)
+    MeshOpener* mMeshes = nullptr;              // owned by Qt (child of this window)
+    DeviceController* mDevices = nullptr;       // owned by Qt (child of this window)
+    QLabel* mRecordingLabel = nullptr;          // status bar: REC and its time, or the recording played back
     bool mPlayingBeforePlayback = true;  // the live session's state to go back to
     bool mTouchBeforePlayback = false;
     bool mTouchBeforePlacing = false;  // touch mode waits while the exercise editor places points
-    std::unique_ptr<HapticSnapshot> mPanelSnapshot;
+    std::unique_ptr<HapticSnapshot> mPanelSnapshot;  // what the Device panel reads (large: on the heap)
     TraineePanel* mTraineePanel = nullptr;
     ExerciseEditorPanel* mEditor = nullptr;
     QDockWidget* mEditorDock = nullptr;
     QUndoGroup* mUndoGroup = nullptr;
     LodPanel* mLodPanel = nullptr;
     QDockWidget* mLodDock = nullptr;
-    std::shared_ptr<const TissueMesh> mLodSceneMesh;
-    QMetaObject::Connection mFocusConnection;  // Edit > Undo follows the focused panel
-    QThread* mOpenThread = nullptr;  // a hardware device being opened (openDeviceInBackground)
-    QString mOpeningUri;  // the Level of Detail panel's source mesh
+    std::shared_ptr<const TissueMesh> mLodSceneMesh;  // the Level of Detail panel's source mesh
+    QMetaObject::Connection mFocusConnection;         // Edit > Undo follows the focused panel
     HistoryPanel* mHistoryPanel = nullptr;
     QDockWidget* mExerciseDock = nullptr;
     QDockWidget* mHistoryDock = nullptr;
@@ -309,8 +298,7 @@ private:
     QAction* mTraineeAction = nullptr;
     QAction* mOpenMeshAction = nullptr;
     QAction* mImportMeshAction = nullptr;
-    MeshImportDialog* mImportDialog = nullptr;  // owned by Qt (child of this window)
-    QAction* mRestartAction = nullptr;  // what the Device panel reads (large: on the heap)
+    QAction* mRestartAction = nullptr;
 };
 
 }  // namespace palpate

@@ -80,6 +80,83 @@ private:
     std::function<void()> mPainted;
 };
 
+/// The generated sphere of `vertexCount` vertices, written into `dir` so that the window loads it
+/// like any mesh: its path, or "" (said on stderr).
+QString writeSphere(std::size_t vertexCount, const QTemporaryDir& dir) {
+    auto generated = generateMesh(GeneratedShape::Sphere, vertexCount);
+    if (!generated.mesh) {
+        std::fprintf(stderr, "palpate: the %zu-vertex sphere could not be generated\n", vertexCount);
+        return {};
+    }
+    if (!dir.isValid()) {
+        std::fprintf(stderr, "palpate: no temporary directory for the benchmark mesh\n");
+        return {};
+    }
+    const QString path = dir.filePath(QStringLiteral("sphere_%1.off").arg(vertexCount));
+    if (const std::string error = generated.mesh->save(path.toStdString()); !error.empty()) {
+        std::fprintf(stderr, "palpate: %s\n", error.c_str());
+        return {};
+    }
+    return path;
+}
+
+/// What the paints and the clocks said while the device pressed.
+struct FrameMeasurement {
+    double measureStartS = 0.0, measureEndS = 0.0;
+    std::uint64_t framesAtStart = 0, framesAtEnd = 0;
+    double cpuAtStartS = 0.0, cpuAtEndS = 0.0;
+    std::vector<double> frameMs;  ///< between two paints
+    std::size_t paints = 0, contactPaints = 0, fullUploads = 0, partialUploads = 0, uploadedVertices = 0,
+                uploadRanges = 0;
+};
+
+/// The viewport and the machine the frames were measured on (read before the window closes).
+struct ViewportFacts {
+    QString glInfo;  ///< GL_RENDERER and GL_VERSION; empty for the software renderer
+    QSize sizePx;
+    RendererKind kind = RendererKind::Software;
+    int samples = 0;
+    double loopRateHz = 0.0;
+    double loadAtEnd = -1.0;
+    std::size_t vertexCount = 0;
+};
+
+/// Prints the figures (fps= and the frame times). The exit code: 1 when nothing was measured.
+int printResult(const FrameMeasurement& m, const ViewportFacts& facts, bool failed) {
+    const std::uint64_t frames = m.framesAtEnd - m.framesAtStart;
+    const double elapsedS = m.measureEndS - m.measureStartS;
+    if (failed || frames == 0 || m.frameMs.empty() || !(elapsedS > 0.0)) {
+        std::fprintf(stderr, "palpate: the viewport drew %llu frames in the benchmark (was the window shown?)\n",
+                     static_cast<unsigned long long>(frames));
+        return 1;
+    }
+    const double meanMs = std::accumulate(m.frameMs.begin(), m.frameMs.end(), 0.0) / double(m.frameMs.size());
+    std::vector<double> sorted = m.frameMs;
+    std::sort(sorted.begin(), sorted.end());
+    const double p95Ms = sorted[std::min(sorted.size() - 1, std::size_t(std::ceil(0.95 * double(sorted.size()))) - 1)];
+    const double fps = double(frames) / elapsedS;
+
+    std::printf("viewport %dx%d px%s%s; measured %.2f s in contact; haptic loop %.0f Hz\n", facts.sizePx.width(),
+                facts.sizePx.height(), facts.glInfo.isEmpty() ? "" : ", GL: ", qPrintable(facts.glInfo), elapsedS,
+                facts.loopRateHz);
+    const double guiCpuMsPerFrame = (m.cpuAtEndS - m.cpuAtStartS) * 1e3 / double(frames);
+    std::printf(
+        "frames=%llu mean_frame_ms=%.2f p95_frame_ms=%.2f fps=%.1f gui_cpu_ms_per_frame=%.2f renderer=%s "
+        "samples=%d vertices=%zu load=%.2f\n",
+        static_cast<unsigned long long>(frames), meanMs, p95Ms, fps, guiCpuMsPerFrame,
+        qPrintable(rendererName(facts.kind)), facts.samples, facts.vertexCount, facts.loadAtEnd);
+    std::printf("contact in %zu of %zu frames", m.contactPaints, m.paints);
+    if (facts.kind == RendererKind::OpenGL && m.paints > 0) {
+        const double perFrame = double(m.uploadedVertices) / double(m.paints);
+        std::printf("; uploads: %zu partial, %zu full, mean %.0f vertices (%.1f kB, %.1f ranges) per frame of %zu",
+                    m.partialUploads, m.fullUploads, perFrame, perFrame * 32.0 / 1024.0,
+                    double(m.uploadRanges) / double(m.paints), facts.vertexCount);
+    }
+    std::printf("\n");
+    std::fflush(stdout);
+    return 0;
+}
+
 }  // namespace
 
 int runViewportBenchmark(const QString& secondsText, const QString& meshPath, RendererChoice renderer) {
@@ -103,24 +180,8 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
     QSurfaceFormat::setDefaultFormat(defaultFormat);
 
     QTemporaryDir dir;
-    QString path = options.meshPath;
-    if (path.isEmpty()) {
-        // The sphere goes through a file so that the window loads it like any mesh.
-        auto generated = generateMesh(GeneratedShape::Sphere, options.vertexCount);
-        if (!generated.mesh) {
-            std::fprintf(stderr, "palpate: the %zu-vertex sphere could not be generated\n", options.vertexCount);
-            return 1;
-        }
-        if (!dir.isValid()) {
-            std::fprintf(stderr, "palpate: no temporary directory for the benchmark mesh\n");
-            return 1;
-        }
-        path = dir.filePath(QStringLiteral("sphere_%1.off").arg(options.vertexCount));
-        if (const std::string error = generated.mesh->save(path.toStdString()); !error.empty()) {
-            std::fprintf(stderr, "palpate: %s\n", error.c_str());
-            return 1;
-        }
-    }
+    const QString path = options.meshPath.isEmpty() ? writeSphere(options.vertexCount, dir) : options.meshPath;
+    if (path.isEmpty()) return 1;
 
     MainWindow window(options.renderer, LoopMode::Threaded);
     if (const QString error = window.setDeviceUri(options.deviceUri); !error.isEmpty()) {
@@ -143,13 +204,9 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
     QElapsedTimer clock;
     clock.start();
     enum class Phase { WaitingForContact, Settling, Measuring, Done } phase = Phase::WaitingForContact;
-    double contactAtS = 0.0, measureStartS = 0.0, lastPaintS = 0.0, measureEndS = 0.0;
-    std::uint64_t framesAtStart = 0, framesAtEnd = 0;
-    double cpuAtStartS = 0.0, cpuAtEndS = 0.0;
-    std::vector<double> frameMs;
-    frameMs.reserve(std::size_t(options.seconds * 1000.0) + 16);
-    std::size_t paints = 0, contactPaints = 0, fullUploads = 0, partialUploads = 0, uploadedVertices = 0,
-                uploadRanges = 0;
+    double contactAtS = 0.0, lastPaintS = 0.0;
+    FrameMeasurement m;
+    m.frameMs.reserve(std::size_t(options.seconds * 1000.0) + 16);
     bool failed = false;
 
     auto finish = [&](bool failure) {
@@ -163,15 +220,15 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
     PaintWatcher watcher([&] {
         if (phase != Phase::Measuring) return;
         const double nowS = double(clock.nsecsElapsed()) * 1e-9;
-        if (paints > 0) frameMs.push_back((nowS - lastPaintS) * 1e3);
+        if (m.paints > 0) m.frameMs.push_back((nowS - lastPaintS) * 1e3);
         lastPaintS = nowS;
-        ++paints;
-        if (window.session().view().contact) ++contactPaints;
+        ++m.paints;
+        if (window.session().view().contact) ++m.contactPaints;
         if (meshViewport) {
             const auto& upload = meshViewport->lastUpload();
-            (upload.full ? fullUploads : partialUploads) += 1;
-            uploadedVertices += upload.vertices;
-            uploadRanges += upload.ranges;
+            (upload.full ? m.fullUploads : m.partialUploads) += 1;
+            m.uploadedVertices += upload.vertices;
+            m.uploadRanges += upload.ranges;
         }
     });
     viewport->widget()->installEventFilter(&watcher);
@@ -194,16 +251,16 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
             case Phase::Settling:
                 if (nowS - contactAtS >= kSettleS) {
                     phase = Phase::Measuring;
-                    measureStartS = nowS;
-                    framesAtStart = viewport->framesDrawn();
-                    cpuAtStartS = threadCpuS();
+                    m.measureStartS = nowS;
+                    m.framesAtStart = viewport->framesDrawn();
+                    m.cpuAtStartS = threadCpuS();
                 }
                 break;
             case Phase::Measuring:
-                if (nowS - measureStartS >= options.seconds) {
-                    measureEndS = nowS;
-                    framesAtEnd = viewport->framesDrawn();
-                    cpuAtEndS = threadCpuS();
+                if (nowS - m.measureStartS >= options.seconds) {
+                    m.measureEndS = nowS;
+                    m.framesAtEnd = viewport->framesDrawn();
+                    m.cpuAtEndS = threadCpuS();
                     finish(false);
                 }
                 break;
@@ -222,45 +279,16 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
     QApplication::exec();
     poll.stop();
     viewport->widget()->removeEventFilter(&watcher);
-    const QString glInfo = glWidget ? glRendererString(glWidget) : QString();
-    const QSize sizePx = viewport->widget()->size() * viewport->widget()->devicePixelRatioF();
-    const RendererKind kind = viewport->kind();
-    const int samples = meshViewport ? meshViewport->requestedSamples() : 0;
-    const double loopRateHz = window.hapticRateHz();
-    const double loadAtEnd = loadAverage();
+    ViewportFacts facts;
+    facts.glInfo = glWidget ? glRendererString(glWidget) : QString();
+    facts.sizePx = viewport->widget()->size() * viewport->widget()->devicePixelRatioF();
+    facts.kind = viewport->kind();
+    facts.samples = meshViewport ? meshViewport->requestedSamples() : 0;
+    facts.loopRateHz = window.hapticRateHz();
+    facts.loadAtEnd = loadAverage();
+    facts.vertexCount = vertexCount;
     window.close();  // stops the haptic thread
-
-    const std::uint64_t frames = framesAtEnd - framesAtStart;
-    const double elapsedS = measureEndS - measureStartS;
-    if (failed || frames == 0 || frameMs.empty() || !(elapsedS > 0.0)) {
-        std::fprintf(stderr, "palpate: the viewport drew %llu frames in the benchmark (was the window shown?)\n",
-                     static_cast<unsigned long long>(frames));
-        return 1;
-    }
-    const double meanMs = std::accumulate(frameMs.begin(), frameMs.end(), 0.0) / double(frameMs.size());
-    std::vector<double> sorted = frameMs;
-    std::sort(sorted.begin(), sorted.end());
-    const double p95Ms = sorted[std::min(sorted.size() - 1, std::size_t(std::ceil(0.95 * double(sorted.size()))) - 1)];
-    const double fps = double(frames) / elapsedS;
-
-    std::printf("viewport %dx%d px%s%s; measured %.2f s in contact; haptic loop %.0f Hz\n", sizePx.width(),
-                sizePx.height(), glInfo.isEmpty() ? "" : ", GL: ", qPrintable(glInfo), elapsedS, loopRateHz);
-    const double guiCpuMsPerFrame = (cpuAtEndS - cpuAtStartS) * 1e3 / double(frames);
-    std::printf(
-        "frames=%llu mean_frame_ms=%.2f p95_frame_ms=%.2f fps=%.1f gui_cpu_ms_per_frame=%.2f renderer=%s "
-        "samples=%d vertices=%zu load=%.2f\n",
-        static_cast<unsigned long long>(frames), meanMs, p95Ms, fps, guiCpuMsPerFrame, qPrintable(rendererName(kind)),
-        samples, vertexCount, loadAtEnd);
-    std::printf("contact in %zu of %zu frames", contactPaints, paints);
-    if (kind == RendererKind::OpenGL && paints > 0) {
-        const double perFrame = double(uploadedVertices) / double(paints);
-        std::printf("; uploads: %zu partial, %zu full, mean %.0f vertices (%.1f kB, %.1f ranges) per frame of %zu",
-                    partialUploads, fullUploads, perFrame, perFrame * 32.0 / 1024.0,
-                    double(uploadRanges) / double(paints), vertexCount);
-    }
-    std::printf("\n");
-    std::fflush(stdout);
-    return 0;
+    return printResult(m, facts, failed);
 }
 
 }  // namespace palpate

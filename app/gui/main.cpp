@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <cstring>
 #include <new>
+#include <optional>
 #include <string>
 
 namespace {
@@ -75,6 +76,323 @@ QString deviceHelp() {
              QLatin1String(palpate::HapticSession::kDefaultDeviceUri));
 }
 
+/// The command line of palpate, in the order --help lists it.
+struct GuiCommandLine {
+    QCommandLineOption mesh{QStringLiteral("mesh"), QStringLiteral("Mesh to open (OBJ, OFF, PLY, STL, OM)."),
+                            QStringLiteral("FILE")};
+    // No default here: it depends on the mode (runWindow).
+    QCommandLineOption device{QStringLiteral("device"), deviceHelp(), QStringLiteral("URI")};
+    QCommandLineOption software{QStringLiteral("software-render"),
+                                QStringLiteral("Draw on the CPU instead of with OpenGL.")};
+    // Where OpenGL is a CPU rasteriser (llvmpipe) the window draws on the CPU unless asked (ViewportFactory.h).
+    QCommandLineOption openGl{QStringLiteral("opengl-render"),
+                              QStringLiteral("Draw with OpenGL even where it is a CPU rasteriser (llvmpipe).")};
+    QCommandLineOption screenshot{
+        QStringLiteral("screenshot"),
+        QStringLiteral("Run the loop with the device for --after-ms, save a PNG of the main window, exit. With "
+                       "--ticks: run that many ticks stepped (no thread: deterministic) and save the viewport."),
+        QStringLiteral("FILE")};
+    QCommandLineOption afterMs{QStringLiteral("after-ms"),
+                               QStringLiteral("Milliseconds the loop runs before --screenshot (default 1500)."),
+                               QStringLiteral("N"), QStringLiteral("1500")};
+    QCommandLineOption preset{QStringLiteral("preset"), QStringLiteral("Tissue preset (JSON) to load and apply."),
+                              QStringLiteral("FILE")};
+    QCommandLineOption ticks{
+        QStringLiteral("ticks"),
+        QStringLiteral("Haptic ticks (1 ms) before the screenshot (default %1).").arg(kDefaultScreenshotTicks),
+        QStringLiteral("N"), QString::number(kDefaultScreenshotTicks)};
+    QCommandLineOption noFifo{
+        QStringLiteral("no-fifo"),
+        QStringLiteral(
+            "Run the haptic thread with normal scheduling, as a desktop user without real-time rights does.")};
+    QCommandLineOption headless{QStringLiteral("headless"),
+                                QStringLiteral("No window: load the mesh, print what was loaded, exit.")};
+    // Hidden, for documentation and checks: `--grab-after-ms MS FILE` runs the interactive window
+    // (with the haptic thread), grabs the whole window after MS milliseconds into FILE, and exits.
+    QCommandLineOption grab{QStringLiteral("grab-after-ms"),
+                            QStringLiteral("Run interactively, save the whole window to FILE after MS ms, exit."),
+                            QStringLiteral("MS")};
+    QCommandLineOption exercise{QStringLiteral("exercise"),
+                                QStringLiteral("Start this exercise (JSON) at once: for --trainee, else as a preview."),
+                                QStringLiteral("FILE")};
+    QCommandLineOption trainee{QStringLiteral("trainee"),
+                               QStringLiteral("The trainee --exercise runs for (added if new); the result is stored."),
+                               QStringLiteral("NAME")};
+    QCommandLineOption mode{QStringLiteral("mode"), QStringLiteral("instructor or trainee (the window's docks)."),
+                            QStringLiteral("MODE")};
+    QCommandLineOption wholeWindow{QStringLiteral("whole-window"),
+                                   QStringLiteral("--screenshot saves the whole window, not only the viewport.")};
+    // --benchmark-viewport [--mesh FILE] [--seconds S] [--software-render]: the window's frame rate
+    // while a device keeps pressing (ViewportBenchmark.h).
+    QCommandLineOption benchmark{
+        QStringLiteral("benchmark-viewport"),
+        QStringLiteral("Show --mesh (default: a generated 100 000-vertex sphere) in the window while sim:sine keeps "
+                       "pressing, count the frames painted for --seconds, print fps= and frame times, exit.")};
+    QCommandLineOption seconds{QStringLiteral("seconds"), QStringLiteral("Length of --benchmark-viewport (default 5)."),
+                               QStringLiteral("S"), QStringLiteral("5")};
+    // Hidden, for screenshots of the Recorder dock: opens FILE in the dock and plays it at 1x.
+    QCommandLineOption openRecording{QStringLiteral("open-recording"),
+                                     QStringLiteral("Open a session recording in the Recorder dock and play it."),
+                                     QStringLiteral("FILE")};
+    // Hidden, for the user guide's pictures: shows the welcome page, the preferences or the guide
+    // over the window; --screenshot FILE (timed) then saves that window instead of the main one.
+    QCommandLineOption showDialog{QStringLiteral("show-dialog"),
+                                  QStringLiteral("Show welcome, preferences or guide (for screenshots)."),
+                                  QStringLiteral("NAME")};
+    // Hidden, for screenshots of a dock tabbed behind another: brings the dock whose object name is
+    // NAME + "Dock" to the front, and with NAME:TAB the tab of its tab widget whose page's object name
+    // starts with TAB (charts:feel: the feel chart).
+    QCommandLineOption showDock{QStringLiteral("show-dock"),
+                                QStringLiteral("Bring a dock (and a tab in it) to the front: parameters, device, "
+                                               "charts, charts:feel, ... (for screenshots)."),
+                                QStringLiteral("NAME[:TAB]")};
+
+    /// Adds every option to `parser`, the hidden ones hidden from --help.
+    void addTo(QCommandLineParser& parser) {
+        for (QCommandLineOption* hidden : {&grab, &openRecording, &showDialog, &showDock})
+            hidden->setFlags(QCommandLineOption::HiddenFromHelp);
+        parser.setApplicationDescription(QStringLiteral("Palpate: haptic soft-tissue deformation"));
+        parser.addHelpOption();
+        parser.addVersionOption();
+        parser.addOption(noFifo);
+        parser.addOptions({mesh, device, preset, software, openGl, screenshot, afterMs, ticks, headless, grab});
+        parser.addOptions({exercise, trainee, mode, wholeWindow});
+        parser.addOptions({benchmark, seconds});
+        parser.addOption(openRecording);
+        parser.addOption(showDialog);
+        parser.addOption(showDock);
+    }
+};
+
+/// What this run does, decided from the command line.
+struct RunPlan {
+    int ticks = 0;            ///< --ticks: the stepped screenshot's haptic ticks
+    bool screenshot = false;  ///< --screenshot with --ticks: stepped, the viewport (or --whole-window)
+    bool timedShot = false;   ///< --screenshot without --ticks: timed, threaded, the whole window
+    bool grab = false;        ///< --grab-after-ms MS FILE
+    int grabAfterMs = 0;      ///< how long the timed shot or the grab waits
+    QString grabFile;
+    bool headless = false;  ///< no window: print the mesh and exit
+    bool interactive = false;
+};
+
+/// The run the options ask for; 2 (bad usage, said on stderr) in `exitCode` when they do not fit.
+std::optional<RunPlan> planRun(const QCommandLineParser& parser, const GuiCommandLine& options, bool noDisplay,
+                               int& exitCode) {
+    exitCode = 2;
+    RunPlan plan;
+    bool ticksOk = false;
+    plan.ticks = parser.value(options.ticks).toInt(&ticksOk);
+    if (!ticksOk || plan.ticks < 0) {
+        std::fprintf(stderr, "palpate: --ticks needs a whole number >= 0, not '%s'\n",
+                     qPrintable(parser.value(options.ticks)));
+        return std::nullopt;
+    }
+    plan.grab = parser.isSet(options.grab);
+    if (plan.grab) {
+        bool msOk = false;
+        plan.grabAfterMs = parser.value(options.grab).toInt(&msOk);
+        const QStringList rest = parser.positionalArguments();
+        if (!msOk || plan.grabAfterMs < 0 || rest.size() != 1) {
+            std::fprintf(stderr, "palpate: usage: --grab-after-ms MS FILE (MS a whole number >= 0)\n");
+            return std::nullopt;
+        }
+        plan.grabFile = rest.front();
+    }
+    // --screenshot FILE: timed, threaded, the whole window (as --grab-after-ms), unless --ticks asks
+    // for the deterministic stepped viewport image.
+    plan.screenshot = parser.isSet(options.screenshot) && parser.isSet(options.ticks);
+    if (parser.isSet(options.screenshot) && !plan.screenshot) {
+        bool msOk = false;
+        plan.grabAfterMs = parser.value(options.afterMs).toInt(&msOk);
+        if (!msOk || plan.grabAfterMs < 0) {
+            std::fprintf(stderr, "palpate: --after-ms needs a whole number >= 0, not '%s'\n",
+                         qPrintable(parser.value(options.afterMs)));
+            return std::nullopt;
+        }
+        plan.grabFile = parser.value(options.screenshot);
+    }
+    plan.timedShot = parser.isSet(options.screenshot) && !plan.screenshot;
+    // Without a display and without a task there is nothing to show: report the scene and stop
+    // rather than run an invisible window forever.
+    plan.headless = parser.isSet(options.headless) || (noDisplay && !plan.screenshot && !plan.grab && !plan.timedShot);
+    plan.interactive = !plan.headless && !plan.screenshot && !plan.grab && !plan.timedShot;
+    exitCode = 0;
+    return plan;
+}
+
+/// Prints the error (and shows it, in an interactive run); the exit code 1.
+int failed(const QString& error, bool interactive) {
+    std::fprintf(stderr, "palpate: %s\n", qPrintable(error));
+    if (interactive) QMessageBox::critical(nullptr, QStringLiteral("Palpate"), error);
+    return 1;
+}
+
+/// --headless: loads the mesh, prints what was loaded. The exit code.
+int printMesh(const QString& meshPath) {
+    std::string error;
+    const auto mesh = palpate::HapticSession::loadTissueMesh(meshPath.toStdString(), error);
+    if (!mesh) {
+        std::fprintf(stderr, "palpate: %s\n", error.c_str());
+        return 1;
+    }
+    printLoaded(meshPath.toStdString(), *mesh);
+    return 0;
+}
+
+/// --preset, --mode and --exercise, once the session runs. "" or the error (naming the file).
+QString applyStartOptions(palpate::MainWindow& window, const QCommandLineParser& parser,
+                          const GuiCommandLine& options) {
+    if (parser.isSet(options.preset))
+        if (const QString error = window.loadPresetFile(parser.value(options.preset)); !error.isEmpty()) return error;
+    if (parser.isSet(options.mode)) {
+        const QString modeName = parser.value(options.mode);
+        if (modeName != QLatin1String("instructor") && modeName != QLatin1String("trainee"))
+            return QStringLiteral("--mode: '%1' is neither instructor nor trainee").arg(modeName);
+        window.setMode(modeName == QLatin1String("trainee") ? palpate::MainWindow::Mode::Trainee
+                                                            : palpate::MainWindow::Mode::Instructor);
+    }
+    if (parser.isSet(options.exercise))
+        if (const QString error = window.runExercise(parser.value(options.exercise), parser.value(options.trainee));
+            !error.isEmpty())
+            return error;  // naming the exercise or the results database
+    return {};
+}
+
+/// --screenshot with --ticks: runs the ticks stepped, saves the viewport (or the whole window) to
+/// `file` from inside the event loop. The exit code.
+int saveSteppedScreenshot(palpate::MainWindow& window, int ticks, const QString& file, bool wholeWindow) {
+    window.resize(kScreenshotWidthPx, kScreenshotHeightPx);
+    window.advanceTicks(ticks);
+    window.show();
+    int exitCode = 1;
+    // Grab once the window is shown and laid out, from inside the event loop.
+    QTimer::singleShot(200, &window, [&] {
+        const QImage image = wholeWindow ? window.grab().toImage() : window.viewport()->grabImage();
+        if (image.isNull() || !image.save(file, "PNG")) {
+            std::fprintf(stderr, "palpate: the screenshot could not be written to %s\n", qPrintable(file));
+        } else {
+            std::printf("palpate: wrote %s (%dx%d) after %d ticks; %s\n", qPrintable(file), image.width(),
+                        image.height(), ticks, qPrintable(window.statusText()));
+            exitCode = 0;
+        }
+        QApplication::exit(exitCode);
+    });
+    QApplication::exec();
+    return exitCode;
+}
+
+/// --show-dock NAME[:TAB]: brings the dock (and the tab) to the front. False (said on stderr) when
+/// there is no such dock or tab.
+bool showDock(palpate::MainWindow& window, const QString& name) {
+    const QStringList parts = name.split(QLatin1Char(':'));
+    auto* dock = window.findChild<QDockWidget*>(parts.front() + QStringLiteral("Dock"));
+    if (!dock) {
+        std::fprintf(stderr, "palpate: --show-dock: no dock named '%s'\n", qPrintable(parts.front()));
+        return false;
+    }
+    dock->show();
+    dock->raise();
+    if (parts.size() > 1) {
+        auto* tabs = dock->findChild<QTabWidget*>();
+        int page = -1;
+        for (int i = 0; tabs && i < tabs->count(); ++i)
+            if (tabs->widget(i)->objectName().startsWith(parts[1])) page = i;
+        if (page < 0) {
+            std::fprintf(stderr, "palpate: --show-dock: the %s dock has no tab '%s'\n", qPrintable(parts.front()),
+                         qPrintable(parts[1]));
+            return false;
+        }
+        tabs->setCurrentIndex(page);
+    }
+    return true;
+}
+
+/// --grab-after-ms or a timed --screenshot: after `afterMs` saves the whole window (or `shownDialog`)
+/// to `file` and closes. The exit code.
+int saveTimedGrab(palpate::MainWindow& window, const QPointer<QWidget>& shownDialog, int afterMs, const QString& file) {
+    int exitCode = 1;
+    QTimer::singleShot(afterMs, &window, [&] {
+        // The whole window (menus, viewport, status bar), or the dialog --show-dialog opened.
+        const QImage image = shownDialog ? shownDialog->grab().toImage() : window.grab().toImage();
+        if (image.isNull() || !image.save(file, "PNG")) {
+            std::fprintf(stderr, "palpate: the window could not be saved to %s\n", qPrintable(file));
+        } else {
+            std::printf("palpate: wrote %s (%dx%d) after %d ms; %s\n", qPrintable(file), image.width(), image.height(),
+                        afterMs, qPrintable(window.statusText()));
+            exitCode = 0;
+        }
+        window.close();  // stops the haptic thread
+        QApplication::exit(exitCode);
+    });
+    QApplication::exec();
+    return exitCode;
+}
+
+/// The window shown: the device problem or the welcome page, --show-dock, --show-dialog,
+/// --open-recording, then the timed shot or the event loop. The exit code.
+int runShownWindow(palpate::MainWindow& window, const QCommandLineParser& parser, const GuiCommandLine& options,
+                   const RunPlan& plan, const QString& deviceProblem) {
+    window.resize(kWindowWidthPx, kWindowHeightPx);
+    window.show();
+    if (plan.interactive && !deviceProblem.isEmpty()) {
+        // Once the window is up, so that Preferences (behind this box) can be reached at once.
+        QTimer::singleShot(0, &window, [&window, deviceProblem] {
+            QMessageBox::warning(&window, palpate::MainWindow::tr("Device not opened"), deviceProblem);
+        });
+    } else if (plan.interactive) {
+        palpate::maybeShowWelcome(window, parser.optionNames());  // not over --exercise etc.
+    }
+    if (parser.isSet(options.showDock) && !showDock(window, parser.value(options.showDock))) return 2;
+    const QPointer<QWidget> shownDialog = parser.isSet(options.showDialog)
+                                              ? palpate::showFirstRunDialog(window, parser.value(options.showDialog))
+                                              : nullptr;
+    if (parser.isSet(options.openRecording)) {
+        palpate::RecorderPanel* panel = window.recorderPanel();
+        QObject::connect(panel, &palpate::RecorderPanel::playbackStarted, panel, [panel] { panel->setPlaying(true); });
+        window.openRecording(parser.value(options.openRecording));
+    }
+    if (plan.grab || plan.timedShot) return saveTimedGrab(window, shownDialog, plan.grabAfterMs, plan.grabFile);
+    return QApplication::exec();
+}
+
+/// The window on `meshPath` with the device the options ask for, run as `plan` says. The exit code.
+int runWindow(const QCommandLineParser& parser, const GuiCommandLine& options, const RunPlan& plan,
+              palpate::RendererChoice renderer, const QString& meshPath) {
+    // Without --device: the interactive window has no hardware to find yet, so the mouse steers the
+    // tool; screenshots, grabs and scripted runs keep the scripted stroke (deterministic pictures).
+    const QString fallbackUri = QLatin1String(plan.interactive ? palpate::HapticSession::kInteractiveDeviceUri
+                                                               : palpate::HapticSession::kDefaultDeviceUri);
+    QString deviceUri = parser.isSet(options.device) ? parser.value(options.device) : fallbackUri;
+    if (!parser.isSet(options.device) && plan.interactive && !palpate::preferredDeviceUri().isEmpty())
+        deviceUri = palpate::preferredDeviceUri();  // Preferences: the device at start
+
+    // Screenshots step the loop on this thread (deterministic); everything else runs its thread.
+    const auto mode = plan.screenshot ? palpate::LoopMode::Stepped : palpate::LoopMode::Threaded;
+    palpate::HapticLoopDef loopDef;
+    loopDef.trySchedFifo = !parser.isSet(options.noFifo);
+    palpate::MainWindow window(renderer, mode, loopDef);
+    palpate::applyPreferences(window);  // data folder, haptic rate; --preset below still wins
+    QString deviceProblem;
+    if (const QString error = window.startSession(meshPath, deviceUri, fallbackUri, deviceProblem); !error.isEmpty())
+        return failed(error, plan.interactive);
+    if (!deviceProblem.isEmpty()) {
+        std::fprintf(stderr, "palpate: %s\n", qPrintable(deviceProblem));
+        deviceUri = QString::fromStdString(window.session().deviceUri());
+    }
+    if (const QString error = applyStartOptions(window, parser, options); !error.isEmpty())
+        return failed(error, plan.interactive);
+    std::printf("palpate: %s renderer (%s), device %s, haptic loop %s\n",
+                qPrintable(palpate::rendererName(window.viewport()->kind())), qPrintable(window.rendererReason()),
+                qPrintable(deviceUri), mode == palpate::LoopMode::Stepped ? "stepped" : "threaded");
+    std::fflush(stdout);  // before the event loop: a session may end by signal
+
+    if (plan.screenshot)
+        return saveSteppedScreenshot(window, plan.ticks, parser.value(options.screenshot),
+                                     parser.isSet(options.wholeWindow));
+    return runShownWindow(window, parser, options, plan, deviceProblem);
+}
+
 }  // namespace
 
 int runGui(int argc, char** argv);
@@ -93,8 +411,7 @@ int main(int argc, char** argv) {
         return runGui(argc, argv);
     } catch (const std::bad_alloc&) {
         // Outside the event loop (start-up, shut-down): GuiApplication::notify catches the rest.
-        std::fprintf(stderr,
-                     "palpate: not enough memory to run (is a memory limit set, e.g. ulimit -v?)\n");
+        std::fprintf(stderr, "palpate: not enough memory to run (is a memory limit set, e.g. ulimit -v?)\n");
         return 1;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "palpate: %s\n", e.what());
@@ -118,283 +435,35 @@ int runGui(int argc, char** argv) {
     palpate::installTranslator(app);  // QSettings "language", else the system locale (FirstRun.h)
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Palpate: haptic soft-tissue deformation"));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    const QCommandLineOption meshOption(QStringLiteral("mesh"), QStringLiteral("Mesh to open (OBJ, OFF, PLY, STL, OM)."),
-                                        QStringLiteral("FILE"));
-    // No default here: it depends on the mode (below).
-    const QCommandLineOption deviceOption(QStringLiteral("device"), deviceHelp(), QStringLiteral("URI"));
-    const QCommandLineOption softwareOption(QStringLiteral("software-render"),
-                                            QStringLiteral("Draw on the CPU instead of with OpenGL."));
-    // Where OpenGL is a CPU rasteriser (llvmpipe) the window draws on the CPU unless asked (ViewportFactory.h).
-    const QCommandLineOption openGlOption(QStringLiteral("opengl-render"),
-                                          QStringLiteral("Draw with OpenGL even where it is a CPU rasteriser (llvmpipe)."));
-    const QCommandLineOption screenshotOption(
-        QStringLiteral("screenshot"),
-        QStringLiteral("Run the loop with the device for --after-ms, save a PNG of the main window, exit. With "
-                       "--ticks: run that many ticks stepped (no thread: deterministic) and save the viewport."),
-        QStringLiteral("FILE"));
-    const QCommandLineOption afterMsOption(QStringLiteral("after-ms"),
-                                           QStringLiteral("Milliseconds the loop runs before --screenshot (default 1500)."),
-                                           QStringLiteral("N"), QStringLiteral("1500"));
-    const QCommandLineOption presetOption(QStringLiteral("preset"),
-                                          QStringLiteral("Tissue preset (JSON) to load and apply."), QStringLiteral("FILE"));
-    const QCommandLineOption ticksOption(QStringLiteral("ticks"),
-                                         QStringLiteral("Haptic ticks (1 ms) before the screenshot (default %1).")
-                                             .arg(kDefaultScreenshotTicks),
-                                         QStringLiteral("N"), QString::number(kDefaultScreenshotTicks));
-    const QCommandLineOption noFifoOption(
-        QStringLiteral("no-fifo"),
-        QStringLiteral("Run the haptic thread with normal scheduling, as a desktop user without real-time rights does."));
-    parser.addOption(noFifoOption);
-    const QCommandLineOption headlessOption(QStringLiteral("headless"),
-                                            QStringLiteral("No window: load the mesh, print what was loaded, exit."));
-    // Hidden, for documentation and checks: `--grab-after-ms MS FILE` runs the interactive window
-    // (with the haptic thread), grabs the whole window after MS milliseconds into FILE, and exits.
-    QCommandLineOption grabOption(QStringLiteral("grab-after-ms"),
-                                  QStringLiteral("Run interactively, save the whole window to FILE after MS ms, exit."),
-                                  QStringLiteral("MS"));
-    grabOption.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOptions({meshOption, deviceOption, presetOption, softwareOption, openGlOption, screenshotOption, afterMsOption, ticksOption,
-                       headlessOption, grabOption});
-    const QCommandLineOption exerciseOption(QStringLiteral("exercise"),
-                                            QStringLiteral("Start this exercise (JSON) at once: for --trainee, else as a preview."),
-                                            QStringLiteral("FILE"));
-    const QCommandLineOption traineeOption(QStringLiteral("trainee"),
-                                           QStringLiteral("The trainee --exercise runs for (added if new); the result is stored."),
-                                           QStringLiteral("NAME"));
-    const QCommandLineOption modeOption(QStringLiteral("mode"), QStringLiteral("instructor or trainee (the window's docks)."),
-                                        QStringLiteral("MODE"));
-    const QCommandLineOption wholeWindowOption(QStringLiteral("whole-window"),
-                                               QStringLiteral("--screenshot saves the whole window, not only the viewport."));
-    parser.addOptions({exerciseOption, traineeOption, modeOption, wholeWindowOption});
-    // --benchmark-viewport [--mesh FILE] [--seconds S] [--software-render]: the window's frame rate
-    // while a device keeps pressing (ViewportBenchmark.h).
-    const QCommandLineOption benchmarkOption(
-        QStringLiteral("benchmark-viewport"),
-        QStringLiteral("Show --mesh (default: a generated 100 000-vertex sphere) in the window while sim:sine keeps "
-                       "pressing, count the frames painted for --seconds, print fps= and frame times, exit."));
-    const QCommandLineOption secondsOption(QStringLiteral("seconds"),
-                                           QStringLiteral("Length of --benchmark-viewport (default 5)."),
-                                           QStringLiteral("S"), QStringLiteral("5"));
-    parser.addOptions({benchmarkOption, secondsOption});
-    // Hidden, for screenshots of the Recorder dock: opens FILE in the dock and plays it at 1x.
-    QCommandLineOption openRecordingOption(QStringLiteral("open-recording"),
-                                           QStringLiteral("Open a session recording in the Recorder dock and play it."),
-                                           QStringLiteral("FILE"));
-    openRecordingOption.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOption(openRecordingOption);
-    // Hidden, for the user guide's pictures: shows the welcome page, the preferences or the guide
-    // over the window; --screenshot FILE (timed) then saves that window instead of the main one.
-    QCommandLineOption showDialogOption(QStringLiteral("show-dialog"),
-                                        QStringLiteral("Show welcome, preferences or guide (for screenshots)."),
-                                        QStringLiteral("NAME"));
-    showDialogOption.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOption(showDialogOption);
-    // Hidden, for screenshots of a dock tabbed behind another: brings the dock whose object name is
-    // NAME + "Dock" to the front, and with NAME:TAB the tab of its tab widget whose page's object name
-    // starts with TAB (charts:feel: the feel chart).
-    QCommandLineOption showDockOption(QStringLiteral("show-dock"),
-                                      QStringLiteral("Bring a dock (and a tab in it) to the front: parameters, device, "
-                                                     "charts, charts:feel, ... (for screenshots)."),
-                                      QStringLiteral("NAME[:TAB]"));
-    showDockOption.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOption(showDockOption);
+    GuiCommandLine options;
+    options.addTo(parser);
     parser.process(app);  // exits with 0 on --help/--version and with 1 on unknown options
-    const auto renderer = parser.isSet(softwareOption) ? palpate::RendererChoice::Software
-                          : parser.isSet(openGlOption) ? palpate::RendererChoice::OpenGL
-                                                       : palpate::RendererChoice::Auto;
-    if (parser.isSet(benchmarkOption))
-        return palpate::runViewportBenchmark(parser.value(secondsOption), parser.value(meshOption), renderer);
+    const auto renderer = parser.isSet(options.software) ? palpate::RendererChoice::Software
+                          : parser.isSet(options.openGl) ? palpate::RendererChoice::OpenGL
+                                                         : palpate::RendererChoice::Auto;
+    if (parser.isSet(options.benchmark))
+        return palpate::runViewportBenchmark(parser.value(options.seconds), parser.value(options.mesh), renderer);
 
-    bool ticksOk = false;
-    const int ticks = parser.value(ticksOption).toInt(&ticksOk);
-    if (!ticksOk || ticks < 0) {
-        std::fprintf(stderr, "palpate: --ticks needs a whole number >= 0, not '%s'\n", qPrintable(parser.value(ticksOption)));
-        return 2;
-    }
-    const bool grab = parser.isSet(grabOption);
-    int grabAfterMs = 0;
-    QString grabFile;
-    if (grab) {
-        bool msOk = false;
-        grabAfterMs = parser.value(grabOption).toInt(&msOk);
-        const QStringList rest = parser.positionalArguments();
-        if (!msOk || grabAfterMs < 0 || rest.size() != 1) {
-            std::fprintf(stderr, "palpate: usage: --grab-after-ms MS FILE (MS a whole number >= 0)\n");
-            return 2;
-        }
-        grabFile = rest.front();
-    }
-    // --screenshot FILE: timed, threaded, the whole window (as --grab-after-ms), unless --ticks asks
-    // for the deterministic stepped viewport image.
-    const bool screenshot = parser.isSet(screenshotOption) && parser.isSet(ticksOption);
-    if (parser.isSet(screenshotOption) && !screenshot) {
-        bool msOk = false;
-        grabAfterMs = parser.value(afterMsOption).toInt(&msOk);
-        if (!msOk || grabAfterMs < 0) {
-            std::fprintf(stderr, "palpate: --after-ms needs a whole number >= 0, not '%s'\n",
-                         qPrintable(parser.value(afterMsOption)));
-            return 2;
-        }
-        grabFile = parser.value(screenshotOption);
-    }
-    const bool timedShot = parser.isSet(screenshotOption) && !screenshot;
-    // Without a display and without a task there is nothing to show: report the scene and stop
-    // rather than run an invisible window forever.
-    const bool headless = parser.isSet(headlessOption) || (noDisplay && !screenshot && !grab && !timedShot);
-    const bool interactive = !headless && !screenshot && !grab && !timedShot;
+    int usageExit = 0;
+    const std::optional<RunPlan> plan = planRun(parser, options, noDisplay, usageExit);
+    if (!plan) return usageExit;
     if (noDisplay)
-        std::printf("palpate: no display (DISPLAY, WAYLAND_DISPLAY and QT_QPA_PLATFORM unset): running headless "
-                    "(QT_QPA_PLATFORM=offscreen) with the software renderer\n");
+        std::printf(
+            "palpate: no display (DISPLAY, WAYLAND_DISPLAY and QT_QPA_PLATFORM unset): running headless "
+            "(QT_QPA_PLATFORM=offscreen) with the software renderer\n");
 
-    auto fail = [interactive](const QString& error) {
-        std::fprintf(stderr, "palpate: %s\n", qPrintable(error));
-        if (interactive) QMessageBox::critical(nullptr, QStringLiteral("Palpate"), error);
-        return 1;
-    };
-
-    // Without --device: the interactive window has no hardware to find yet, so the mouse steers the
-    // tool; screenshots, grabs and scripted runs keep the scripted stroke (deterministic pictures).
-    const QString fallbackUri = QLatin1String(interactive ? palpate::HapticSession::kInteractiveDeviceUri
-                                                          : palpate::HapticSession::kDefaultDeviceUri);
-    QString deviceUri = parser.isSet(deviceOption) ? parser.value(deviceOption) : fallbackUri;
-    if (!parser.isSet(deviceOption) && interactive && !palpate::preferredDeviceUri().isEmpty())
-        deviceUri = palpate::preferredDeviceUri();  // Preferences: the device at start
     // A device that cannot be opened does not stop the window (MainWindow::startSession); the
     // replay: scheme is registered first, so that replay:FILE is checked like every other URI.
     palpate::registerReplayDeviceScheme();
 
-    QString meshPath = parser.value(meshOption);
+    QString meshPath = parser.value(options.mesh);
     if (meshPath.isEmpty()) {
         meshPath = QString::fromStdString(palpate::findResource(palpate::kDefaultMesh));
         if (meshPath.isEmpty())
-            return fail(QStringLiteral("the default mesh %1 was not found (set PALPATE_RESOURCES)")
-                            .arg(QLatin1String(palpate::kDefaultMesh)));
+            return failed(QStringLiteral("the default mesh %1 was not found (set PALPATE_RESOURCES)")
+                              .arg(QLatin1String(palpate::kDefaultMesh)),
+                          plan->interactive);
     }
-
-    if (headless) {
-        std::string error;
-        const auto mesh = palpate::HapticSession::loadTissueMesh(meshPath.toStdString(), error);
-        if (!mesh) {
-            std::fprintf(stderr, "palpate: %s\n", error.c_str());
-            return 1;
-        }
-        printLoaded(meshPath.toStdString(), *mesh);
-        return 0;
-    }
-
-    // Screenshots step the loop on this thread (deterministic); everything else runs its thread.
-    const auto mode = screenshot ? palpate::LoopMode::Stepped : palpate::LoopMode::Threaded;
-    palpate::HapticLoopDef loopDef;
-    loopDef.trySchedFifo = !parser.isSet(noFifoOption);
-    palpate::MainWindow window(renderer, mode, loopDef);
-    palpate::applyPreferences(window);  // data folder, haptic rate; --preset below still wins
-    QString deviceProblem;
-    if (const QString error = window.startSession(meshPath, deviceUri, fallbackUri, deviceProblem); !error.isEmpty())
-        return fail(error);
-    if (!deviceProblem.isEmpty()) {
-        std::fprintf(stderr, "palpate: %s\n", qPrintable(deviceProblem));
-        deviceUri = QString::fromStdString(window.session().deviceUri());
-    }
-    if (parser.isSet(presetOption))
-        if (const QString error = window.loadPresetFile(parser.value(presetOption)); !error.isEmpty()) return fail(error);
-    if (parser.isSet(modeOption)) {
-        const QString modeName = parser.value(modeOption);
-        if (modeName != QLatin1String("instructor") && modeName != QLatin1String("trainee"))
-            return fail(QStringLiteral("--mode: '%1' is neither instructor nor trainee").arg(modeName));
-        window.setMode(modeName == QLatin1String("trainee") ? palpate::MainWindow::Mode::Trainee
-                                                              : palpate::MainWindow::Mode::Instructor);
-    }
-    if (parser.isSet(exerciseOption))
-        if (const QString error = window.runExercise(parser.value(exerciseOption), parser.value(traineeOption));
-            !error.isEmpty())
-            return fail(error);  // naming the exercise or the results database
-    std::printf("palpate: %s renderer (%s), device %s, haptic loop %s\n",
-                qPrintable(palpate::rendererName(window.viewport()->kind())), qPrintable(window.rendererReason()),
-                qPrintable(deviceUri), mode == palpate::LoopMode::Stepped ? "stepped" : "threaded");
-    std::fflush(stdout);  // before the event loop: a session may end by signal
-
-    if (screenshot) {
-        window.resize(kScreenshotWidthPx, kScreenshotHeightPx);
-        window.advanceTicks(ticks);
-        window.show();
-        const QString file = parser.value(screenshotOption);
-        int exitCode = 1;
-        // Grab once the window is shown and laid out, from inside the event loop.
-        QTimer::singleShot(200, &window, [&] {
-            const QImage image =
-                parser.isSet(wholeWindowOption) ? window.grab().toImage() : window.viewport()->grabImage();
-            if (image.isNull() || !image.save(file, "PNG")) {
-                std::fprintf(stderr, "palpate: the screenshot could not be written to %s\n", qPrintable(file));
-            } else {
-                std::printf("palpate: wrote %s (%dx%d) after %d ticks; %s\n", qPrintable(file), image.width(),
-                            image.height(), ticks, qPrintable(window.statusText()));
-                exitCode = 0;
-            }
-            QApplication::exit(exitCode);
-        });
-        QApplication::exec();
-        return exitCode;
-    }
-
-    window.resize(kWindowWidthPx, kWindowHeightPx);
-    window.show();
-    if (interactive && !deviceProblem.isEmpty()) {
-        // Once the window is up, so that Preferences (behind this box) can be reached at once.
-        QTimer::singleShot(0, &window, [&window, deviceProblem] {
-            QMessageBox::warning(&window, palpate::MainWindow::tr("Device not opened"), deviceProblem);
-        });
-    } else if (interactive) {
-        palpate::maybeShowWelcome(window, parser.optionNames());  // not over --exercise etc.
-    }
-    if (parser.isSet(showDockOption)) {
-        const QStringList parts = parser.value(showDockOption).split(QLatin1Char(':'));
-        auto* dock = window.findChild<QDockWidget*>(parts.front() + QStringLiteral("Dock"));
-        if (!dock) {
-            std::fprintf(stderr, "palpate: --show-dock: no dock named '%s'\n", qPrintable(parts.front()));
-            return 2;
-        }
-        dock->show();
-        dock->raise();
-        if (parts.size() > 1) {
-            auto* tabs = dock->findChild<QTabWidget*>();
-            int page = -1;
-            for (int i = 0; tabs && i < tabs->count(); ++i)
-                if (tabs->widget(i)->objectName().startsWith(parts[1])) page = i;
-            if (page < 0) {
-                std::fprintf(stderr, "palpate: --show-dock: the %s dock has no tab '%s'\n", qPrintable(parts.front()),
-                             qPrintable(parts[1]));
-                return 2;
-            }
-            tabs->setCurrentIndex(page);
-        }
-    }
-    const QPointer<QWidget> shownDialog =
-        parser.isSet(showDialogOption) ? palpate::showFirstRunDialog(window, parser.value(showDialogOption)) : nullptr;
-    if (parser.isSet(openRecordingOption)) {
-        palpate::RecorderPanel* panel = window.recorderPanel();
-        QObject::connect(panel, &palpate::RecorderPanel::playbackStarted, panel, [panel] { panel->setPlaying(true); });
-        window.openRecording(parser.value(openRecordingOption));
-    }
-    if (grab || timedShot) {
-        int exitCode = 1;
-        QTimer::singleShot(grabAfterMs, &window, [&] {
-            // The whole window (menus, viewport, status bar), or the dialog --show-dialog opened.
-            const QImage image = shownDialog ? shownDialog->grab().toImage() : window.grab().toImage();
-            if (image.isNull() || !image.save(grabFile, "PNG")) {
-                std::fprintf(stderr, "palpate: the window could not be saved to %s\n", qPrintable(grabFile));
-            } else {
-                std::printf("palpate: wrote %s (%dx%d) after %d ms; %s\n", qPrintable(grabFile), image.width(),
-                            image.height(), grabAfterMs, qPrintable(window.statusText()));
-                exitCode = 0;
-            }
-            window.close();  // stops the haptic thread
-            QApplication::exit(exitCode);
-        });
-        QApplication::exec();
-        return exitCode;
-    }
-    return QApplication::exec();
+    if (plan->headless) return printMesh(meshPath);
+    return runWindow(parser, options, *plan, renderer, meshPath);
 }
