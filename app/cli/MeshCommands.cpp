@@ -94,7 +94,7 @@ int check(const Given& args) {
     }
     const auto unit = unitOption(args, "mesh check");
     if (!unit) return 2;
-    const std::string& path = args.positional().front();
+    const std::string path = args.positional().front();
     const auto result = TissueMesh::load(path, *unit);
     const double diagonalInFileUnits = result.report.bboxDiagonalMm / unit->mmPerUnit;
     const auto suggestion = suggestMeshUnit(diagonalInFileUnits, *unit);
@@ -137,7 +137,7 @@ int import(const Given& args) {
         std::cerr << "mesh import: needs IN --out OUT (palpate-cli mesh import --help lists the options)\n";
         return 2;
     }
-    const std::string& in = args.positional().front();
+    const std::string in = args.positional().front();
     const std::string out = *args.option("out");
     MeshImportDef def;
     const auto unit = unitOption(args, "mesh import");
