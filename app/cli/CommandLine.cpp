@@ -71,7 +71,7 @@ std::string repeatedOption(const CLI::App& chosen) {
 }
 
 /// help-tree: every command and subcommand, one a line: its path, a tab, its options separated by
-/// spaces. The --help walk test reads it (tests/engine/test_cli_help.cpp).
+/// spaces. The test that walks every --help reads it.
 void printHelpTree(const CLI::App& command, std::ostream& out) {
     for (const CLI::App* sub : subcommandsOf(command)) {
         out << commandPath(*sub) << "\t";
