@@ -3,7 +3,6 @@
 // (docs/accuracy.md), with the convergence rate and linear-tet locking. Exit 0 when every case with
 // a/h >= 8 and nu <= 0.45 is within 5 % (displacement and force), 1 otherwise, 2 on bad usage.
 
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "engine/accuracy/ContactValidation.h"
 
@@ -182,21 +181,9 @@ void printRow(const ContactCaseResult& r, std::ostream& out) {
         << fixed(r.seconds, 1) << (gated(r) && !withinGate(r) ? "  OVER 5 %" : "") << std::endl;
 }
 
-}  // namespace
-
-int accuracyCommand(const std::vector<std::string>& words) {
-    for (std::size_t i = 0; i + 1 < words.size(); ++i)
-        if (words[i] == "--reference")
-            if (const auto hyper = parseHyperelasticReference(words[i + 1])) return hyperelasticAccuracyCommand(*hyper, words);
-    Args args(words, {"json", "quick"}, {"reference", "nu", "levels", "edge"});
-    if (!args.ok()) {
-        std::cerr << "accuracy: " << args.error() << "\n";
-        return 2;
-    }
-    if (!args.positional().empty()) {
-        std::cerr << "accuracy: unexpected argument '" << args.positional().front() << "'\n";
-        return 2;
-    }
+int accuracyCommand(const Given& args) {
+    if (const auto name = args.option("reference"))
+        if (const auto hyper = parseHyperelasticReference(*name)) return hyperelasticAccuracyCommand(*hyper, args);
     const auto referenceName = args.option("reference");
     if (!referenceName) {
         std::cerr << "accuracy: --reference punch|hertz|uniaxial-neo-hookean|uniaxial-exponential|indentation-neo-hookean is required\n";
@@ -324,6 +311,23 @@ int accuracyCommand(const std::vector<std::string>& words) {
                       << fixed(totalSeconds, 0) << " s in all).\n";
     }
     return passed ? 0 : 1;
+}
+
+}  // namespace
+
+void defineAccuracyCommand(CommandLine& cli) {
+    CLI::App* accuracy = cli.command(cli.root(), "accuracy",
+                                     "the FEM against closed-form references: the contact of a punch or a sphere, and "
+                                     "the hyperelastic references (docs/accuracy.md)",
+                                     accuracyCommand);
+    addValue(*accuracy, "reference", "REF",
+             "punch, hertz, uniaxial-neo-hookean, uniaxial-exponential or indentation-neo-hookean (required)");
+    addFlag(*accuracy, "json", "print JSON");
+    addFlag(*accuracy, "quick", "a smoke run: fewer, coarser cases");
+    addValue(*accuracy, "nu", "LIST", "Poisson's ratios, comma-separated");
+    addValue(*accuracy, "levels", "LIST", "the mesh refinement levels, comma-separated");
+    addValue(*accuracy, "edge", "EDGE",
+             "with punch or hertz: the FEM block's contact edge nodes: half, circle or grid");
 }
 
 }  // namespace palpate::cli

@@ -1,4 +1,3 @@
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "engine/bench/Table1Bench.h"
 #include "engine/scene/TissuePreset.h"
@@ -132,20 +131,7 @@ void writeCsv(const std::vector<Table1Row>& rows, std::ostream& out) {
     }
 }
 
-}  // namespace
-
-int benchCommand(const std::vector<std::string>& words) {
-    if (!words.empty() && words.front() == "models") return benchModelsCommand({words.begin() + 1, words.end()});
-    if (!words.empty() && words.front() == "feel") return benchFeelCommand({words.begin() + 1, words.end()});
-    if (words.empty() || words.front() != "table1") {
-        std::cerr << "bench: needs a subcommand: table1, models or feel\n";
-        return 2;
-    }
-    Args args({words.begin() + 1, words.end()}, {"json", "quick"}, {"csv", "repeats"});
-    if (!args.ok()) {
-        std::cerr << "bench table1: " << args.error() << "\n";
-        return 2;
-    }
+int table1Command(const Given& args) {
     Table1Def options;
     options.contact = presetModelDef(TissuePreset{}).contact;  // ours as the product runs it
     if (args.flag("quick")) {  // a smoke run: small meshes, one repeat
@@ -154,14 +140,7 @@ int benchCommand(const std::vector<std::string>& words) {
         options.repeats = 1;
         options.minMeasureMs = 2.0;
     }
-    if (auto r = args.option("repeats")) {
-        const auto n = parsePositiveInt(*r);
-        if (!n || *n > 100) {
-            std::cerr << "bench table1: --repeats must be 1..100\n";
-            return 2;
-        }
-        options.repeats = int(*n);
-    }
+    if (auto r = args.option("repeats")) options.repeats = int(*parsePositiveInt(*r));  // 1..100, as defined below
     const bool json = args.flag("json");
     options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
     const auto rows = runTable1(options);
@@ -182,6 +161,21 @@ int benchCommand(const std::vector<std::string>& words) {
         printTable(rows, std::cout);
     }
     return 0;
+}
+
+}  // namespace
+
+void defineBenchCommands(CommandLine& cli) {
+    CLI::App* bench = cli.group(cli.root(), "bench", "time the deformation models (docs/bench)");
+    CLI::App* table1 = cli.command(*bench, "table1", "the tick times of Table 1", table1Command);
+    addFlag(*table1, "json", "print JSON");
+    addValue(*table1, "csv", "FILE", "also write the rows as CSV");
+    addFlag(*table1, "quick", "a smoke run: small meshes, one repeat");
+    addValue(*table1, "repeats", "N", "repeats of each measurement")->check(wholeNumberIn(1, 100));
+    defineBenchModelsOptions(*cli.command(*bench, "models", "every model's tick at the Table 1 sizes and 100k",
+                                          benchModelsCommand));
+    defineBenchFeelOptions(*cli.command(*bench, "feel", "what the hand feels of a slide at constant depth, every model",
+                                        benchFeelCommand));
 }
 
 }  // namespace palpate::cli

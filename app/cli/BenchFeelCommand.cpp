@@ -2,7 +2,6 @@
 // depth (engine/bench/FeelBench.h, docs/bench/README.md "Feel"), for every model on the Table 1
 // meshes: force steps, ripple, friction, tick cost against "previous" in the same run, and the
 // threaded loop's dropouts under normal scheduling beside busy processes; each with its goal.
-#include "app/cli/Args.h"
 #include "app/cli/BusyProcesses.h"
 #include "app/cli/Commands.h"
 #include "base/resources/ShippedResources.h"
@@ -191,16 +190,19 @@ std::string toJson(const std::vector<FeelRow>& rows, const FeelBenchDef& def, co
 
 }  // namespace
 
-int benchFeelCommand(const std::vector<std::string>& words) {
-    const Args args(words, {"json", "quick"}, {"csv", "png", "models", "load", "loop-models", "preset", "repeats"});
-    if (!args.ok()) {
-        std::cerr << "bench feel: " << args.error() << "\n";
-        return 2;
-    }
-    if (!args.positional().empty()) {
-        std::cerr << "bench feel: unexpected argument '" << args.positional().front() << "'\n";
-        return 2;
-    }
+void defineBenchFeelOptions(CLI::App& command) {
+    addFlag(command, "json", "print JSON");
+    addValue(command, "csv", "FILE", "also write the rows as CSV");
+    addValue(command, "png", "FILE", "also draw the force along the slide");
+    addFlag(command, "quick", "a smoke run: the smallest mesh of each shape, a short slide, one pass");
+    addValue(command, "models", "NAME,..", "the models to measure (default: every model)");
+    addValue(command, "load", "N", "busy processes beside the threaded runs")->check(wholeNumberIn(0, 64));
+    addValue(command, "loop-models", "NAME,..|all|none", "the measured models that also run on the threaded loop");
+    addValue(command, "preset", "FILE", "the tissue preset the models are built from (default presets/default.json)");
+    addValue(command, "repeats", "N", "timing repeats")->check(wholeNumberIn(1, 100));
+}
+
+int benchFeelCommand(const Given& args) {
     FeelBenchDef def;
     if (args.flag("quick")) {  // a smoke run: the smallest mesh of each shape, a short slide, one pass
         def.sizes = {1442};
@@ -231,22 +233,9 @@ int benchFeelCommand(const std::vector<std::string>& words) {
         }
         def.loopModels = kept;
     }
-    if (const auto load = args.option("load")) {
-        const auto n = *load == "0" ? std::optional<long long>(0) : parsePositiveInt(*load);
-        if (!n || *n > 64) {
-            std::cerr << "bench feel: --load must be 0..64 busy processes\n";
-            return 2;
-        }
-        def.loadProcesses = int(*n);
-    }
-    if (const auto repeats = args.option("repeats")) {
-        const auto n = parsePositiveInt(*repeats);
-        if (!n || *n > 100) {
-            std::cerr << "bench feel: --repeats must be 1..100\n";
-            return 2;
-        }
-        def.timingRepeats = int(*n);
-    }
+    // Their ranges are checked by their definitions (defineBenchFeelOptions).
+    if (const auto load = args.option("load")) def.loadProcesses = std::stoi(*load);
+    if (const auto repeats = args.option("repeats")) def.timingRepeats = int(*parsePositiveInt(*repeats));
     // The models are built from the default preset (its parameters; its tissue's tool and friction,
     // or the defaults of TissueProperties when it names none), or from --preset FILE.
     std::string presetPath = args.option("preset").value_or(findResource("presets/default.json"));

@@ -5,7 +5,6 @@
 // shortened 10x (the same phases and stroke speed), or if even that is too long, over a few ticks
 // of a held press; one that cannot do 5 ticks within the budget is reported with a null time and
 // the reason.
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "engine/core/MeshGenerator.h"
 #include "engine/core/Octree.h"
@@ -67,12 +66,19 @@ void printTable(const std::vector<ModelRow>& rows, std::ostream& out) {
 
 }  // namespace
 
-int benchModelsCommand(const std::vector<std::string>& words) {
-    const Args args(words, {"json", "quick"}, {"sizes", "models", "repeats", "budget-s", "csv"});
-    if (!args.ok()) {
-        std::cerr << "bench models: " << args.error() << "\n";
-        return 2;
-    }
+void defineBenchModelsOptions(CLI::App& command) {
+    addFlag(command, "json", "print JSON");
+    addValue(command, "csv", "FILE", "also write the rows as CSV");
+    addFlag(command, "quick", "a smoke run: the smallest mesh, one repeat, a 2 s budget");
+    addValue(command, "sizes", "N,..",
+             "the spheres' vertex counts, each 8..2000000 (default 1442,3970,5762,8664,100000)");
+    addValue(command, "models", "NAME,..", "the models to time (default: every model, docs/models.md)");
+    addValue(command, "repeats", "N", "passes over the path (default 3)")->check(wholeNumberIn(1, 100));
+    addValue(command, "budget-s", "S", "seconds one model may take at one size (default 10)")
+        ->check(wholeNumberIn(1, 3600));
+}
+
+int benchModelsCommand(const Given& args) {
     std::vector<std::size_t> sizes{1442, 3970, 5762, 8664, 100'000};
     std::vector<std::string> models = modelNames();
     int repeats = 3;
@@ -101,22 +107,9 @@ int benchModelsCommand(const std::vector<std::string>& words) {
                 return 2;
             }
     }
-    if (auto r = args.option("repeats")) {
-        const auto n = parsePositiveInt(*r);
-        if (!n || *n > 100) {
-            std::cerr << "bench models: --repeats must be 1..100\n";
-            return 2;
-        }
-        repeats = int(*n);
-    }
-    if (auto b = args.option("budget-s")) {
-        const auto n = parsePositiveInt(*b);
-        if (!n || *n > 3600) {
-            std::cerr << "bench models: --budget-s must be 1..3600 seconds\n";
-            return 2;
-        }
-        budgetS = double(*n);
-    }
+    // Their ranges are checked by their definitions (defineBenchModelsOptions).
+    if (auto r = args.option("repeats")) repeats = int(*parsePositiveInt(*r));
+    if (auto b = args.option("budget-s")) budgetS = double(*parsePositiveInt(*b));
 
     const ToolContact contact;  // the default tissue and tool, as the sweep's
     std::vector<ModelRow> rows;

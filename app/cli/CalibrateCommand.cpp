@@ -1,7 +1,6 @@
 // palpate-cli calibrate: slopes and spring stiffness for a mesh from E, nu and the tool radius
 // (flat-punch calibration, docs/calibration.md), the error they leave against the punch, and optionally a
 // tissue preset written with them.
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/MeshOption.h"
 #include "base/resources/ShippedResources.h"
@@ -24,15 +23,123 @@
 
 namespace palpate::cli {
 
-int calibrateCommand(const std::vector<std::string>& words) {
-    std::vector<std::string> options{"mesh", kMeshUnitOption, "rings", "vertex", "out", "name", "description", "source",
-                                     "stiffening-source", "nonlinear-depth", "csv"};
-    for (const std::string& o : toolContactOptionNames()) options.push_back(o);
-    const Args args(words, {"json", "fem", "nonlinear"}, options);
-    if (!args.ok()) {
-        std::cerr << "palpate-cli calibrate: " << args.error() << "\n";
-        return 2;
+namespace {
+
+/// What a calibration found, for its report.
+struct CalibrationReport {
+    const std::string& meshPath;
+    VertexId touched;
+    const ToolContactChoice& choice;
+    const SlopeCalibration& calibration;
+    const SlopeRingParams& p;
+    bool fem;
+    const ModelError& error;
+    double femError;
+    const std::optional<StiffeningCalibration>& stiffening;
+};
+
+void printJson(const CalibrationReport& r) {
+    const SlopeRingParams& p = r.p;
+    nlohmann::ordered_json j;
+    j["mesh"] = r.meshPath;
+    j["vertex"] = r.touched;
+    j["youngs_modulus_kpa"] = r.choice.contact.material.youngsModulusNPerMm2 * 1000.0;
+    j["poisson_ratio"] = r.choice.contact.material.poissonRatio;
+    j["tool_radius_mm"] = r.choice.contact.toolRadiusMm;
+    j["ring_radii_mm"] = r.calibration.ringRadiiMm;
+    std::vector<double> slopes(p.slopeMagnitudeMmPerN.begin(), p.slopeMagnitudeMmPerN.begin() + p.ringCount + 1);
+    j["slopes_mm_per_n"] = slopes;
+    j["spring_stiffness_n_per_mm"] = p.springStiffnessNPerMm;
+    j["outside_paper_range"] = r.calibration.outsidePaperRange;
+    j["reference"] = r.fem ? "fem" : "punch";
+    j["displacement_error"] = r.error.displacementError;
+    if (r.fem) j["displacement_error_vs_fem"] = r.femError;
+    j["force_error"] = r.error.forceError;
+    j["notes"] = r.calibration.notes;
+    if (r.stiffening) {
+        nlohmann::ordered_json st;
+        st["law"] = hyperelasticLawName(hyperelasticMaterialOf(r.choice.contact).law);
+        st["stiffening_exponent"] = r.choice.contact.stiffeningExponent;
+        st["knots"] = r.stiffening->knots;
+        st["force_n"] = r.stiffening->knotForceN;
+        st["compliance"] = r.stiffening->knotCompliance;
+        st["worst_knot_error_pct"] = 100.0 * r.stiffening->worstKnotErrorFraction;
+        st["completed"] = r.stiffening->completed;
+        st["seconds"] = r.stiffening->seconds;
+        st["curve"] = nlohmann::ordered_json::array();
+        for (const auto& c : r.stiffening->curve)
+            st["curve"].push_back(
+                {{"depth_mm", c.depthMm}, {"force_n", c.forceN}, {"ratio", c.ratio}, {"knot", c.knot}});
+        st["notes"] = r.stiffening->notes;
+        j["stiffening"] = st;
     }
+    std::cout << j.dump(2) << "\n";
+}
+
+void printText(const CalibrationReport& r) {
+    const SlopeRingParams& p = r.p;
+    std::cout << "mesh " << r.meshPath << ", vertex " << r.touched
+              << "; E = " << r.choice.contact.material.youngsModulusNPerMm2 * 1000.0
+              << " kPa, nu = " << r.choice.contact.material.poissonRatio << ", tool radius "
+              << r.choice.contact.toolRadiusMm << " mm (" << r.choice.source << ")\n";
+    std::cout << "ring  radius mm  slope mm/N\n";
+    for (int ring = 0; ring <= p.ringCount; ++ring)
+        std::cout << std::setw(4) << ring << std::setw(11) << std::fixed << std::setprecision(2)
+                  << (ring == 0 ? 0.0 : r.calibration.ringRadiiMm[std::size_t(ring - 1)]) << std::setw(12)
+                  << std::setprecision(4) << p.slopeMagnitudeMmPerN[std::size_t(ring)] << "\n";
+    std::cout << "spring k = " << p.springStiffnessNPerMm
+              << " N/mm (= 1/|m1|: the rendered force equals the reference force at the same indentation)\n";
+    std::cout << "error against the flat punch: displacement " << std::setprecision(3) << r.error.displacementError
+              << " (RMS/peak over r <= 5a, " << r.error.verticesCompared << " vertices), force " << r.error.forceError
+              << "\n";
+    if (r.fem)
+        std::cout << "error against this mesh's FEM (shape at equal indentation): displacement " << r.femError << "\n";
+    for (const std::string& note : r.calibration.notes) std::cout << "note: " << note << "\n";
+    if (r.stiffening) {
+        std::cout << "stiffening (" << hyperelasticLawName(hyperelasticMaterialOf(r.choice.contact).law)
+                  << ", b = " << r.choice.contact.stiffeningExponent
+                  << "): depth mm, reference force N, ratio to linear, "
+                  << "knot model force N\n";
+        for (const auto& c : r.stiffening->curve)
+            std::cout << std::setw(9) << std::setprecision(3) << c.depthMm << std::setw(12) << std::setprecision(5)
+                      << c.forceN << std::setw(10) << std::setprecision(4) << c.ratio << std::setw(12)
+                      << std::setprecision(5) << knotForceAtDepthN(p, c.depthMm) << (c.knot ? "  (fitted)" : "")
+                      << "\n";
+        std::cout << r.stiffening->knots << " knots; worst force error of the knots against the reference "
+                  << std::setprecision(3) << 100.0 * r.stiffening->worstKnotErrorFraction << " %\n";
+        for (const std::string& note : r.stiffening->notes) std::cout << "note: " << note << "\n";
+    }
+}
+
+/// --out PRESET: the preset with the calibrated slopes and the tissue they are for.
+bool writePreset(const Given& args, TissuePreset preset, const SlopeRingParams& p, const ToolContactChoice& choice,
+                 const std::string& out) {
+    preset.model.slopeRing = p;
+    preset.model.slopeRingMethod = SlopeRingMethod::Coherent;
+    if (const auto name = args.option("name")) preset.name = *name;
+    if (const auto description = args.option("description")) preset.description = *description;
+    TissueProperties tissue;
+    tissue.youngsModulusKPa = choice.contact.material.youngsModulusNPerMm2 * 1000.0;
+    tissue.poissonRatio = choice.contact.material.poissonRatio;
+    tissue.toolRadiusMm = choice.contact.toolRadiusMm;
+    tissue.source = args.option("source").value_or(choice.source);
+    tissue.stiffeningExponent = choice.contact.stiffeningExponent;
+    if (preset.tissue) tissue.stiffeningSource = preset.tissue->stiffeningSource;
+    if (const auto s = args.option("stiffening-source")) tissue.stiffeningSource = *s;
+    if (preset.tissue) {
+        tissue.staticFriction = preset.tissue->staticFriction;
+        tissue.dynamicFriction = preset.tissue->dynamicFriction;
+    }
+    preset.tissue = tissue;
+    if (const std::string e = saveTissuePreset(preset, out); !e.empty()) {
+        std::cerr << "palpate-cli calibrate: " << e << "\n";
+        return false;
+    }
+    std::cerr << "wrote " << out << "\n";
+    return true;
+}
+
+int calibrateCommand(const Given& args) {
     // No output may overwrite an input (docs/reliability.md).
     for (const char* output : {"out", "csv"})
         if (const auto out = args.option(output)) {
@@ -63,14 +170,8 @@ int calibrateCommand(const std::vector<std::string>& words) {
     }
     TissuePreset preset;
     if (const auto path = args.option("preset")) preset = *loadTissuePreset(*path).preset;  // checked above
-    if (const auto rings = args.option("rings")) {
-        const auto n = parsePositiveInt(*rings);
-        if (!n || *n > kMaxRings) {
-            std::cerr << "palpate-cli calibrate: --rings: '" << *rings << "' is not in 1.." << kMaxRings << "\n";
-            return 2;
-        }
-        preset.model.slopeRing.ringCount = int(*n);
-    }
+    // 1..kMaxRings, as defined (defineCalibrateCommand).
+    if (const auto rings = args.option("rings")) preset.model.slopeRing.ringCount = int(*parsePositiveInt(*rings));
     const std::string meshPath = args.option("mesh").value_or(findResource(kDefaultMesh));
     std::string unitError;
     const auto meshUnit = meshUnitFromArgs(args, unitError);
@@ -164,94 +265,36 @@ int calibrateCommand(const std::vector<std::string>& words) {
             return 1;
         }
     }
-    if (args.flag("json")) {
-        nlohmann::ordered_json j;
-        j["mesh"] = meshPath;
-        j["vertex"] = touched;
-        j["youngs_modulus_kpa"] = choice.contact.material.youngsModulusNPerMm2 * 1000.0;
-        j["poisson_ratio"] = choice.contact.material.poissonRatio;
-        j["tool_radius_mm"] = choice.contact.toolRadiusMm;
-        j["ring_radii_mm"] = calibration.ringRadiiMm;
-        std::vector<double> slopes(p.slopeMagnitudeMmPerN.begin(), p.slopeMagnitudeMmPerN.begin() + p.ringCount + 1);
-        j["slopes_mm_per_n"] = slopes;
-        j["spring_stiffness_n_per_mm"] = p.springStiffnessNPerMm;
-        j["outside_paper_range"] = calibration.outsidePaperRange;
-        j["reference"] = fem ? "fem" : "punch";
-        j["displacement_error"] = error.displacementError;
-        if (fem) j["displacement_error_vs_fem"] = femError;
-        j["force_error"] = error.forceError;
-        j["notes"] = calibration.notes;
-        if (stiffening) {
-            nlohmann::ordered_json st;
-            st["law"] = hyperelasticLawName(hyperelasticMaterialOf(choice.contact).law);
-            st["stiffening_exponent"] = choice.contact.stiffeningExponent;
-            st["knots"] = stiffening->knots;
-            st["force_n"] = stiffening->knotForceN;
-            st["compliance"] = stiffening->knotCompliance;
-            st["worst_knot_error_pct"] = 100.0 * stiffening->worstKnotErrorFraction;
-            st["completed"] = stiffening->completed;
-            st["seconds"] = stiffening->seconds;
-            st["curve"] = nlohmann::ordered_json::array();
-            for (const auto& c : stiffening->curve)
-                st["curve"].push_back({{"depth_mm", c.depthMm}, {"force_n", c.forceN}, {"ratio", c.ratio}, {"knot", c.knot}});
-            st["notes"] = stiffening->notes;
-            j["stiffening"] = st;
-        }
-        std::cout << j.dump(2) << "\n";
-    } else {
-        std::cout << "mesh " << meshPath << ", vertex " << touched << "; E = "
-                  << choice.contact.material.youngsModulusNPerMm2 * 1000.0 << " kPa, nu = "
-                  << choice.contact.material.poissonRatio << ", tool radius " << choice.contact.toolRadiusMm << " mm ("
-                  << choice.source << ")\n";
-        std::cout << "ring  radius mm  slope mm/N\n";
-        for (int r = 0; r <= p.ringCount; ++r)
-            std::cout << std::setw(4) << r << std::setw(11) << std::fixed << std::setprecision(2)
-                      << (r == 0 ? 0.0 : calibration.ringRadiiMm[std::size_t(r - 1)]) << std::setw(12)
-                      << std::setprecision(4) << p.slopeMagnitudeMmPerN[std::size_t(r)] << "\n";
-        std::cout << "spring k = " << p.springStiffnessNPerMm << " N/mm (= 1/|m1|: the rendered force equals the reference force at the same indentation)\n";
-        std::cout << "error against the flat punch: displacement " << std::setprecision(3) << error.displacementError
-                  << " (RMS/peak over r <= 5a, " << error.verticesCompared << " vertices), force " << error.forceError << "\n";
-        if (fem)
-            std::cout << "error against this mesh's FEM (shape at equal indentation): displacement " << femError << "\n";
-        for (const std::string& note : calibration.notes) std::cout << "note: " << note << "\n";
-        if (stiffening) {
-            std::cout << "stiffening (" << hyperelasticLawName(hyperelasticMaterialOf(choice.contact).law) << ", b = "
-                      << choice.contact.stiffeningExponent << "): depth mm, reference force N, ratio to linear, "
-                      << "knot model force N\n";
-            for (const auto& c : stiffening->curve)
-                std::cout << std::setw(9) << std::setprecision(3) << c.depthMm << std::setw(12) << std::setprecision(5)
-                          << c.forceN << std::setw(10) << std::setprecision(4) << c.ratio << std::setw(12)
-                          << std::setprecision(5) << knotForceAtDepthN(p, c.depthMm) << (c.knot ? "  (fitted)" : "") << "\n";
-            std::cout << stiffening->knots << " knots; worst force error of the knots against the reference "
-                      << std::setprecision(3) << 100.0 * stiffening->worstKnotErrorFraction << " %\n";
-            for (const std::string& note : stiffening->notes) std::cout << "note: " << note << "\n";
-        }
-    }
-    if (const auto out = args.option("out")) {
-        preset.model.slopeRing = p;
-        preset.model.slopeRingMethod = SlopeRingMethod::Coherent;
-        if (const auto name = args.option("name")) preset.name = *name;
-        if (const auto description = args.option("description")) preset.description = *description;
-        TissueProperties tissue;
-        tissue.youngsModulusKPa = choice.contact.material.youngsModulusNPerMm2 * 1000.0;
-        tissue.poissonRatio = choice.contact.material.poissonRatio;
-        tissue.toolRadiusMm = choice.contact.toolRadiusMm;
-        tissue.source = args.option("source").value_or(choice.source);
-        tissue.stiffeningExponent = choice.contact.stiffeningExponent;
-        if (preset.tissue) tissue.stiffeningSource = preset.tissue->stiffeningSource;
-        if (const auto s = args.option("stiffening-source")) tissue.stiffeningSource = *s;
-        if (preset.tissue) {
-            tissue.staticFriction = preset.tissue->staticFriction;
-            tissue.dynamicFriction = preset.tissue->dynamicFriction;
-        }
-        preset.tissue = tissue;
-        if (const std::string e = saveTissuePreset(preset, *out); !e.empty()) {
-            std::cerr << "palpate-cli calibrate: " << e << "\n";
-            return 1;
-        }
-        std::cerr << "wrote " << *out << "\n";
-    }
+    const CalibrationReport report{meshPath, touched, choice, calibration, p, fem, error, femError, stiffening};
+    if (args.flag("json")) printJson(report);
+    else printText(report);
+    if (const auto out = args.option("out"))
+        if (!writePreset(args, preset, p, choice, *out)) return 1;
     return 0;
+}
+
+}  // namespace
+
+void defineCalibrateCommand(CommandLine& cli) {
+    CLI::App* calibrate = cli.command(cli.root(), "calibrate",
+                                      "the slope-ring's slopes for a tissue, against the flat punch or this mesh's FEM "
+                                      "(docs/calibration.md)",
+                                      calibrateCommand);
+    addValue(*calibrate, "mesh", "FILE", "the tissue mesh (default: the shipped one)");
+    addMeshUnitOption(*calibrate);
+    addValue(*calibrate, "rings", "N", "the ring count")->check(wholeNumberIn(1, kMaxRings));
+    addValue(*calibrate, "vertex", "V", "the vertex pressed (default: the scene's target)");
+    addFlag(*calibrate, "fem", "fit against this mesh's FEM instead of the flat punch");
+    addFlag(*calibrate, "json", "print JSON");
+    addValue(*calibrate, "out", "PRESET", "write the calibrated tissue preset");
+    addValue(*calibrate, "name", "NAME", "the written preset's name");
+    addValue(*calibrate, "description", "TEXT", "the written preset's description");
+    addValue(*calibrate, "source", "TEXT", "where the tissue's values come from, kept in the preset");
+    addFlag(*calibrate, "nonlinear", "also fit stiffening knots to the hyperelastic punch");
+    addValue(*calibrate, "nonlinear-depth", "MM", "with --nonlinear: the deepest press, below twice the tool radius");
+    addValue(*calibrate, "stiffening-source", "TEXT", "where the stiffening comes from, kept in the preset");
+    addValue(*calibrate, "csv", "FILE", "with --nonlinear: write the stiffening curve as CSV");
+    addToolContactOptions(*calibrate);
 }
 
 }  // namespace palpate::cli

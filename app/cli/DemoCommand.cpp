@@ -1,7 +1,6 @@
 // The headless demo: the default scene and a simulated device driven through the haptic loop in
 // stepped mode (the same tick as the real thread, on a virtual clock), and a summary of what
 // happened. What the run command does when there is no display.
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/MeshOption.h"
 #include "base/resources/ShippedResources.h"
@@ -21,12 +20,9 @@
 
 namespace palpate::cli {
 
-int demoCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"mesh", "method", "model", "device", kMeshUnitOption});
-    if (!args.ok()) {
-        std::cerr << "demo: " << args.error() << "\n";
-        return 2;
-    }
+namespace {
+
+int demoCommand(const Given& args) {
     const std::string meshPath = args.option("mesh").value_or(findResource(kDefaultMesh));
     if (meshPath.empty()) {
         std::cerr << "demo: the default mesh " << kDefaultMesh << " was not found (set PALPATE_RESOURCES)\n";
@@ -149,6 +145,19 @@ int demoCommand(const std::vector<std::string>& words) {
                   << "  mean tick " << elapsedUs / double(report.counters.ticks) << " us (wall clock, with snapshots)\n";
     }
     return 0;
+}
+
+}  // namespace
+
+void defineDemoCommand(CommandLine& cli) {
+    CLI::App* demo = cli.command(cli.root(), "demo", "a simulated press on the default scene, in stepped mode",
+                                 demoCommand);
+    addValue(*demo, "mesh", "FILE", "the tissue mesh (default: the shipped one)");
+    addMeshUnitOption(*demo);
+    addValue(*demo, "method", "M", "the slope-ring method: previous, hybrid, proposed or coherent (default)");
+    addValue(*demo, "model", "NAME", "any deformation model (docs/models.md)");
+    addValue(*demo, "device", "URI", "a simulated device with an end (default sim:stroke)");
+    addFlag(*demo, "json", "print JSON");
 }
 
 }  // namespace palpate::cli

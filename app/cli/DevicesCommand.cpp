@@ -1,6 +1,5 @@
 // palpate-cli devices: which device backends this build has, and which devices are connected now
 // (with the URI to pass as --device, and the udev rule to install when a node is not accessible).
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "device/open/DeviceDiscovery.h"
 #include "device/open/DeviceUri.h"
@@ -12,16 +11,9 @@
 
 namespace palpate::cli {
 
-int devicesCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {});
-    if (!args.ok()) {
-        std::cerr << "devices: " << args.error() << "\n";
-        return 2;
-    }
-    if (!args.positional().empty()) {
-        std::cerr << "devices: unexpected argument '" << args.positional().front() << "'\n";
-        return 2;
-    }
+namespace {
+
+int devicesCommand(const Given& args) {
     const std::vector<BackendInfo> backends = listDeviceBackends();
     const std::vector<ConnectedDevice> devices = discoverDevices();
     const std::vector<DeviceSchemeInfo> schemes = listDeviceSchemes();
@@ -60,6 +52,14 @@ int devicesCommand(const std::vector<std::string>& words) {
     std::cout << "\nURI forms (also: hid:VID:PID[:SERIAL], replay:FILE):\n";
     for (const DeviceSchemeInfo& s : schemes) std::cout << "  " << s.uri << "  " << s.description << "\n";
     return 0;
+}
+
+}  // namespace
+
+void defineDevicesCommand(CommandLine& cli) {
+    CLI::App* devices = cli.command(cli.root(), "devices", "the device backends compiled in and the devices connected",
+                                    devicesCommand);
+    addFlag(*devices, "json", "print JSON");
 }
 
 }  // namespace palpate::cli

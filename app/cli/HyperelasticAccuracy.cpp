@@ -4,7 +4,6 @@
 // within 1 % of the linear FEM, and at the finest level every depth up to delta/R = 0.3 within 5 %
 // of Sneddon's exact sphere. Exit 0 when the goals hold, 1 otherwise, 2 on bad usage.
 
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "engine/accuracy/ContactValidation.h"
 #include "engine/accuracy/HyperelasticValidation.h"
@@ -56,7 +55,7 @@ HyperelasticMaterial material(HyperelasticLaw law, double nu, double b) {
     return m;
 }
 
-int uniaxial(HyperelasticReference reference, const Args& args, bool json) {
+int uniaxial(HyperelasticReference reference, const Given& args, bool json) {
     const bool exponential = reference == HyperelasticReference::UniaxialExponential;
     std::vector<double> nus{0.3, 0.45, 0.49};
     std::string error;
@@ -119,7 +118,7 @@ int uniaxial(HyperelasticReference reference, const Args& args, bool json) {
     return passed ? 0 : 1;
 }
 
-int indentation(const Args& args, bool json, bool quick) {
+int indentation(const Given& args, bool json, bool quick) {
     std::vector<int> levels = quick ? std::vector<int>{4, 6} : std::vector<int>{6, 9, 12};
     double nu = 0.3;
     std::string error;
@@ -238,11 +237,11 @@ int indentation(const Args& args, bool json, bool quick) {
 
 }  // namespace
 
-int hyperelasticAccuracyCommand(HyperelasticReference reference, const std::vector<std::string>& words) {
-    Args args(words, {"json", "quick"}, {"reference", "nu", "levels"});
-    if (!args.ok()) return std::cerr << "accuracy: " << args.error() << "\n", 2;
-    if (!args.positional().empty())
-        return std::cerr << "accuracy: unexpected argument '" << args.positional().front() << "'\n", 2;
+int hyperelasticAccuracyCommand(HyperelasticReference reference, const Given& args) {
+    if (args.option("edge")) {
+        std::cerr << "accuracy: --edge goes with --reference punch or hertz (the FEM block's contact edge)\n";
+        return 2;
+    }
     try {
         if (reference == HyperelasticReference::IndentationNeoHookean)
             return indentation(args, args.flag("json"), args.flag("quick"));

@@ -1,7 +1,6 @@
 // palpate-cli lod: levels of detail (docs/lod.md). "lod levels" makes (or reads from the
 // cache beside the mesh) the decimated levels and checks them; "lod plan" measures every level and
 // ring count on this machine and picks the cheapest that meets an accuracy target and a tick budget.
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "base/resources/ShippedResources.h"
 #include "app/cli/MeshOption.h"
@@ -28,37 +27,12 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-void lodUsage(std::ostream& out) {
-    out << "usage:\n"
-           "  palpate-cli lod levels --mesh FILE [--mesh-unit U] [--json] [--no-cache] [--min-vertices N] [--max-levels N]\n"
-           "                         [--ratio R]\n"
-           "  palpate-cli lod plan (--mesh FILE [--mesh-unit U] | --exercise FILE) [--error E] [--budget-us T] [--json]\n"
-           "                       [--quick]\n"
-           "                       [--rings N,..] [--repeats N] [--min-vertices N] [--max-levels N] [--ratio R]\n"
-           "                       [--no-cache] [TISSUE]\n"
-           "      E: displacement error allowed (RMS / peak, 0.1 = 10 %); T: tick budget in microseconds.\n"
-           "      Without --error/--budget-us the exercise's, then the preset's, \"needs\" are used.\n"
-           "      U: the mesh file's unit: mm (default), cm, m, in, or mm per file unit (docs/meshes.md).\n";
-}
-
 /// --min-vertices, --max-levels, --ratio into `options`; "" or the problem naming the option.
-std::string levelOptionsFromArgs(const Args& args, LevelDef& options) {
-    if (const auto text = args.option("min-vertices")) {
-        const auto n = parsePositiveInt(*text);
-        if (!n || *n < 8 || *n > 50'000'000) return "--min-vertices: '" + *text + "' is not a vertex count of 8 or more";
-        options.minVertices = std::size_t(*n);
-    }
-    if (const auto text = args.option("max-levels")) {
-        const auto n = parsePositiveInt(*text);
-        if (*text == "0") options.maxCoarseLevels = 0;
-        else if (!n || *n > 20) return "--max-levels: '" + *text + "' is not in 0..20";
-        else options.maxCoarseLevels = int(*n);
-    }
-    if (const auto text = args.option("ratio")) {
-        const auto r = parseNumber(*text);
-        if (!r) return "--ratio: '" + *text + "' is not a number";
-        options.vertexRatio = *r;
-    }
+std::string levelOptionsFromArgs(const Given& args, LevelDef& options) {
+    // Each is a number in its range, as defined (addLevelOptions); validateLevelDef checks the ratio.
+    if (const auto text = args.option("min-vertices")) options.minVertices = std::size_t(*parsePositiveInt(*text));
+    if (const auto text = args.option("max-levels")) options.maxCoarseLevels = std::stoi(*text);
+    if (const auto text = args.option("ratio")) options.vertexRatio = *parseNumber(*text);
     if (const std::string e = joinedMessages(validateLevelDef(options)); !e.empty()) return e;
     return {};
 }
@@ -110,7 +84,7 @@ Json candidateJson(const LodCandidate& c, const LodNeeds& needs) {
     return j;
 }
 
-int levelsCommand(const Args& args) {
+int levelsCommand(const Given& args) {
     const auto meshPath = args.option("mesh");
     if (!meshPath) {
         std::cerr << "palpate-cli lod levels: --mesh FILE is required\n";
@@ -181,30 +155,38 @@ int levelsCommand(const Args& args) {
     return allGood ? 0 : 1;
 }
 
-int planCommand(const Args& args) {
-    const char* me = "palpate-cli lod plan: ";
-    const ToolContactChoice choice = toolContactFromArgs(args);
-    if (!choice.error.empty()) {
-        std::cerr << me << choice.error << "\n";
-        return 2;
-    }
-    // The needs: the exercise's, else the preset's; --error and --budget-us override either.
+/// What lod plan plans for: the needs, the mesh, its unit, and the exercise if one is given.
+struct PlanScene {
     std::optional<LodNeeds> needs;
     std::string needsSource;
-    std::optional<std::string> meshPath = args.option("mesh");
+    std::optional<std::string> meshPath;
+    std::optional<MeshUnit> meshUnit;
+    MeshUnitSource unitSource;
+    std::optional<Exercise> exercise;
+};
+
+/// The scene lod plan plans for, from the options: nullopt, or the exit code after saying why not.
+std::optional<int> planScene(const Given& args, PlanScene& scene) {
+    const char* me = "palpate-cli lod plan: ";
+    // The needs: the exercise's, else the preset's; --error and --budget-us override either.
+    std::optional<LodNeeds>& needs = scene.needs;
+    std::string& needsSource = scene.needsSource;
+    std::optional<std::string>& meshPath = scene.meshPath;
+    meshPath = args.option("mesh");
     // --mesh-unit goes with --mesh; the exercise's own mesh is in the exercise's unit.
     std::string unitError;
-    std::optional<MeshUnit> meshUnit = meshUnitFromArgs(args, unitError);
+    std::optional<MeshUnit>& meshUnit = scene.meshUnit;
+    meshUnit = meshUnitFromArgs(args, unitError);
     if (!meshUnit) {
         std::cerr << me << unitError << "\n";
         return 2;
     }
-    MeshUnitSource unitSource;
+    MeshUnitSource& unitSource = scene.unitSource;
     if (args.option(kMeshUnitOption) && !meshPath) {
         std::cerr << me << "--mesh-unit goes with --mesh (the exercise's \"mesh_unit\" sets its mesh's unit)\n";
         return 2;
     }
-    std::optional<Exercise> exercise;
+    std::optional<Exercise>& exercise = scene.exercise;
     if (const auto path = args.option("exercise")) {
         const ExerciseLoadResult ex = loadExercise(*path);
         if (!ex.exercise) {
@@ -237,13 +219,9 @@ int planCommand(const Args& args) {
     for (const char* key : {"error", "budget-us"}) {
         const auto text = args.option(key);
         if (!text) continue;
-        const auto value = parseNumber(*text);
-        if (!value) {
-            std::cerr << me << "--" << key << ": '" << *text << "' is not a number\n";
-            return 2;
-        }
         if (!needs) needs = LodNeeds{};
-        (std::string(key) == "error" ? needs->maxErrorFraction : needs->budgetUs) = *value;
+        // A number, as defined (defineLodCommands).
+        (std::string(key) == "error" ? needs->maxErrorFraction : needs->budgetUs) = *parseNumber(*text);
         if (needsSource.empty()) needsSource = "command line";
         else if (needsSource.find("command line") == std::string::npos) needsSource += " and command line";
     }
@@ -263,6 +241,47 @@ int planCommand(const Args& args) {
         std::cerr << me << "--mesh FILE (or --exercise FILE) is required\n";
         return 2;
     }
+    return std::nullopt;
+}
+
+/// The candidates of a plan as a table, each with its verdict.
+void printPlanTable(const LodMeasurement& measured, const LodPlan& plan, const LodNeeds& needs) {
+    std::cout << std::left << std::setw(7) << "level" << std::right << std::setw(10) << "vertices" << std::setw(7)
+              << "rings" << std::setw(10) << "error" << std::setw(12) << "level err" << std::setw(11) << "tick us"
+              << "  verdict\n";
+    for (std::size_t i = 0; i < measured.candidates.size(); ++i) {
+        const LodCandidate& c = measured.candidates[i];
+        std::string verdict = plan.chosen == i ? "CHOSEN" : plan.closest == i ? "closest" : "";
+        if (verdict.empty()) {
+            const bool e = meetsError(c, needs), t = meetsBudget(c, needs);
+            verdict = !c.note.empty() ? "not measured: " + c.note
+                      : e && t        ? "meets both"
+                      : e             ? "over budget"
+                      : t             ? "error too high"
+                                      : "error too high, over budget";
+        }
+        std::cout << std::left << std::setw(7) << c.level << std::right << std::setw(10) << c.vertices << std::setw(7)
+                  << c.rings << std::fixed << std::setprecision(4) << std::setw(10) << c.errorFraction << std::setw(12)
+                  << c.levelErrorFraction << std::setprecision(3) << std::setw(11) << c.tickUs << "  " << verdict
+                  << "\n";
+    }
+}
+
+int planCommand(const Given& args) {
+    const char* me = "palpate-cli lod plan: ";
+    const ToolContactChoice choice = toolContactFromArgs(args);
+    if (!choice.error.empty()) {
+        std::cerr << me << choice.error << "\n";
+        return 2;
+    }
+    PlanScene scene;
+    if (const std::optional<int> refused = planScene(args, scene)) return *refused;
+    const std::optional<LodNeeds>& needs = scene.needs;
+    const std::string& needsSource = scene.needsSource;
+    const std::optional<std::string>& meshPath = scene.meshPath;
+    const std::optional<MeshUnit>& meshUnit = scene.meshUnit;
+    const MeshUnitSource& unitSource = scene.unitSource;
+    const std::optional<Exercise>& exercise = scene.exercise;
 
     const bool quick = args.flag("quick");
     LevelDef levelOptions;
@@ -289,14 +308,8 @@ int planCommand(const Args& args) {
             def.ringCounts.push_back(int(*n));
         }
     }
-    if (const auto text = args.option("repeats")) {
-        const auto n = parsePositiveInt(*text);
-        if (!n || *n > 100) {
-            std::cerr << me << "--repeats: '" << *text << "' is not in 1..100\n";
-            return 2;
-        }
-        def.timing.repeats = int(*n);
-    }
+    if (const auto text = args.option("repeats"))
+        def.timing.repeats = int(*parsePositiveInt(*text));  // 1..100, as defined
     if (const std::string e = joinedMessages(validateLodMeasureDef(def)); !e.empty()) {
         std::cerr << me << e << "\n";
         return 2;
@@ -381,26 +394,7 @@ int planCommand(const Args& args) {
         for (const LodCandidate& c : measured.candidates) j["candidates"].push_back(candidateJson(c, *needs));
         std::cout << j.dump(2) << "\n";
     } else {
-        std::cout << std::left << std::setw(7) << "level" << std::right << std::setw(10) << "vertices" << std::setw(7)
-                  << "rings" << std::setw(10) << "error" << std::setw(12) << "level err" << std::setw(11) << "tick us"
-                  << "  verdict\n";
-        for (std::size_t i = 0; i < measured.candidates.size(); ++i) {
-            const LodCandidate& c = measured.candidates[i];
-            std::string verdict = plan.chosen == i    ? "CHOSEN"
-                                  : plan.closest == i ? "closest"
-                                                      : "";
-            if (verdict.empty()) {
-                const bool e = meetsError(c, *needs), t = meetsBudget(c, *needs);
-                verdict = !c.note.empty() ? "not measured: " + c.note
-                          : e && t        ? "meets both"
-                          : e             ? "over budget"
-                          : t             ? "error too high"
-                                          : "error too high, over budget";
-            }
-            std::cout << std::left << std::setw(7) << c.level << std::right << std::setw(10) << c.vertices << std::setw(7)
-                      << c.rings << std::fixed << std::setprecision(4) << std::setw(10) << c.errorFraction << std::setw(12)
-                      << c.levelErrorFraction << std::setprecision(3) << std::setw(11) << c.tickUs << "  " << verdict << "\n";
-        }
+        printPlanTable(measured, plan, *needs);
         std::cout << plan.reason << "\n";
         std::cout << (stiffening.error.empty() ? stiffening.reason : stiffening.error) << "\n";
     }
@@ -415,37 +409,38 @@ int planCommand(const Args& args) {
     return 0;
 }
 
+void addLevelOptions(CLI::App& command) {
+    addValue(command, "min-vertices", "N", "the coarsest level's fewest vertices")->check(wholeNumberIn(8, 50'000'000));
+    addValue(command, "max-levels", "N", "the most coarser levels")->check(wholeNumberIn(0, 20));
+    addValue(command, "ratio", "R", "the vertex ratio of one level to the next")->check(anyNumber());
+    addFlag(command, "no-cache", "do not read or write the level cache beside the mesh");
+}
+
 }  // namespace
 
-int lodCommand(const std::vector<std::string>& words) {
-    if (words.empty() || words.front() == "--help") {
-        lodUsage(words.empty() ? std::cerr : std::cout);
-        return words.empty() ? 2 : 0;
-    }
-    const std::string sub = words.front();
-    const std::vector<std::string> rest(words.begin() + 1, words.end());
-    if (sub == "levels") {
-        const Args args(rest, {"json", "no-cache"}, {"mesh", kMeshUnitOption, "min-vertices", "max-levels", "ratio"});
-        if (!args.ok()) {
-            std::cerr << "palpate-cli lod levels: " << args.error() << "\n";
-            return 2;
-        }
-        return levelsCommand(args);
-    }
-    if (sub == "plan") {
-        std::vector<std::string> options{"mesh", kMeshUnitOption, "exercise", "error", "budget-us", "rings", "repeats",
-                                         "min-vertices", "max-levels", "ratio"};
-        for (const std::string& o : toolContactOptionNames()) options.push_back(o);
-        const Args args(rest, {"json", "quick", "no-cache"}, options);
-        if (!args.ok()) {
-            std::cerr << "palpate-cli lod plan: " << args.error() << "\n";
-            return 2;
-        }
-        return planCommand(args);
-    }
-    std::cerr << "palpate-cli lod: unknown subcommand '" << sub << "'\n";
-    lodUsage(std::cerr);
-    return 2;
+void defineLodCommands(CommandLine& cli) {
+    CLI::App* lod = cli.group(cli.root(), "lod",
+                              "mesh levels of detail and the cheapest model a scene needs (docs/lod.md)");
+    CLI::App* levels = cli.command(*lod, "levels", "the mesh's levels of detail", levelsCommand);
+    addValue(*levels, "mesh", "FILE", "the tissue mesh (required)");
+    addMeshUnitOption(*levels);
+    addFlag(*levels, "json", "print JSON");
+    addLevelOptions(*levels);
+
+    CLI::App* plan = cli.command(*lod, "plan", "the cheapest level and model that meet the error and the tick budget",
+                                 planCommand);
+    plan->footer("Without --error/--budget-us the exercise's, then the preset's, \"needs\" are used.");
+    addValue(*plan, "mesh", "FILE", "the tissue mesh (or --exercise)");
+    addMeshUnitOption(*plan);
+    addValue(*plan, "exercise", "FILE", "the exercise: its mesh and its \"needs\"");
+    addValue(*plan, "error", "E", "the displacement error allowed (RMS / peak, 0.1 = 10 %)")->check(anyNumber());
+    addValue(*plan, "budget-us", "T", "the tick budget, microseconds")->check(anyNumber());
+    addFlag(*plan, "json", "print JSON");
+    addFlag(*plan, "quick", "a smoke run: 3 levels, 1 to 3 rings, one short timing");
+    addValue(*plan, "rings", "N,..", "the ring counts to try, each 1.." + std::to_string(kMaxRings));
+    addValue(*plan, "repeats", "N", "timing repeats")->check(wholeNumberIn(1, 100));
+    addLevelOptions(*plan);
+    addToolContactOptions(*plan);
 }
 
 }  // namespace palpate::cli

@@ -1,6 +1,5 @@
 // palpate-cli loop: the real haptic thread on the default scene with a simulated device, and an
 // observer thread reading snapshots the way the GUI does; prints the loop's timing.
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/MeshOption.h"
 #include "base/resources/ShippedResources.h"
@@ -20,25 +19,13 @@
 
 namespace palpate::cli {
 
-int loopCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json", "no-fifo"}, {"seconds", "rate", "observer-hz", "device", "mesh", "spin-fraction", "csv",
-                                                kMeshUnitOption});
-    if (!args.ok()) {
-        std::cerr << "loop: " << args.error() << "\n";
-        return 2;
-    }
+namespace {
+
+int loopCommand(const Given& args) {
     const auto seconds = parseNumber(args.option("seconds").value_or("5"));
     const auto rate = parseNumber(args.option("rate").value_or("1000"));
     const auto observerHz = parseNumber(args.option("observer-hz").value_or("60"));
     const auto spinFraction = parseNumber(args.option("spin-fraction").value_or("0.6"));
-    if (!seconds || *seconds <= 0.0 || *seconds > 86400.0) {
-        std::cerr << "loop: --seconds must be a number in (0, 86400]\n";
-        return 2;
-    }
-    if (!observerHz || *observerHz <= 0.0 || *observerHz > 10000.0) {
-        std::cerr << "loop: --observer-hz must be a number in (0, 10000]\n";
-        return 2;
-    }
     HapticLoopDef def;
     def.rateHz = rate.value_or(-1.0);
     def.spinFraction = spinFraction.value_or(-1.0);
@@ -164,6 +151,24 @@ int loopCommand(const std::vector<std::string>& words) {
                   << " inconsistent, " << contactSnapshots << " in contact)\n";
     }
     return torn == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void defineLoopCommand(CommandLine& cli) {
+    CLI::App* loop = cli.command(cli.root(), "loop", "the real haptic thread and an observer; prints the loop's timing",
+                                 loopCommand);
+    addValue(*loop, "seconds", "S", "how long to run (default 5)")->check(numberIn(0, 86400, true));
+    // The rate and the spin fraction are checked by validateHapticLoopDef (docs/haptic-loop.md).
+    addValue(*loop, "rate", "HZ", "the haptic rate (default 1000)")->check(anyNumber());
+    addValue(*loop, "observer-hz", "HZ", "the observer's rate (default 60)")->check(numberIn(0, 10000, true));
+    addValue(*loop, "device", "URI", "the device (default sim:sine, docs/devices.md)");
+    addValue(*loop, "mesh", "FILE", "the tissue mesh (default: the shipped one)");
+    addMeshUnitOption(*loop);
+    addValue(*loop, "spin-fraction", "F", "the part of a tick spent spinning (default 0.6)")->check(anyNumber());
+    addFlag(*loop, "no-fifo", "do not try SCHED_FIFO");
+    addFlag(*loop, "json", "print JSON");
+    addValue(*loop, "csv", "FILE", "also write the tick times as CSV");
 }
 
 }  // namespace palpate::cli

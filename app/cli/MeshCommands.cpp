@@ -1,4 +1,3 @@
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "engine/core/MeshGenerator.h"
 #include "engine/core/RingRoundness.h"
@@ -18,12 +17,7 @@ namespace palpate::cli {
 
 namespace {
 
-int generate(const std::vector<std::string>& words) {
-    Args args(words, {}, {"shape", "vertices", "out"});
-    if (!args.ok()) {
-        std::cerr << "mesh generate: " << args.error() << "\n";
-        return 2;
-    }
+int generate(const Given& args) {
     const auto shapeText = args.option("shape");
     const auto countText = args.option("vertices");
     const auto out = args.option("out");
@@ -59,7 +53,7 @@ int generate(const std::vector<std::string>& words) {
 }
 
 /// --unit, default mm; nullopt (and the message printed) when it is not a unit.
-std::optional<MeshUnit> unitOption(const Args& args, const char* command) {
+std::optional<MeshUnit> unitOption(const Given& args, const char* command) {
     const auto text = args.option("unit");
     if (!text) return kMillimetres;
     std::string error;
@@ -93,15 +87,14 @@ std::string roundnessText(const RingRoundness& r) {
     return out.str();
 }
 
-int check(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"unit"});
-    if (!args.ok() || args.positional().size() != 1) {
-        std::cerr << "mesh check: needs exactly one FILE" << (args.ok() ? "" : " (" + args.error() + ")") << "\n";
+int check(const Given& args) {
+    if (args.positional().size() != 1) {
+        std::cerr << "mesh check: needs exactly one FILE\n";
         return 2;
     }
     const auto unit = unitOption(args, "mesh check");
     if (!unit) return 2;
-    const std::string& path = args.positional().front();
+    const std::string path = args.positional().front();
     const auto result = TissueMesh::load(path, *unit);
     const double diagonalInFileUnits = result.report.bboxDiagonalMm / unit->mmPerUnit;
     const auto suggestion = suggestMeshUnit(diagonalInFileUnits, *unit);
@@ -139,16 +132,12 @@ int check(const std::vector<std::string>& words) {
     return result.mesh ? 0 : 1;
 }
 
-int import(const std::vector<std::string>& words) {
-    Args args(words, {"repair", "json", "keep-all", "no-fill-holes", "overwrite"},
-              {"out", "unit", "remesh-edge-mm", "remesh-iterations"});
-    if (!args.ok() || args.positional().size() != 1 || !args.option("out")) {
-        std::cerr << "mesh import: needs IN --out OUT [--unit mm|cm|m|in|SCALE] [--repair] [--keep-all] "
-                     "[--no-fill-holes] [--remesh-edge-mm E] [--remesh-iterations N] [--overwrite] [--json]"
-                  << (args.ok() ? "" : " (" + args.error() + ")") << "\n";
+int import(const Given& args) {
+    if (args.positional().size() != 1 || !args.option("out")) {
+        std::cerr << "mesh import: needs IN --out OUT (palpate-cli mesh import --help lists the options)\n";
         return 2;
     }
-    const std::string& in = args.positional().front();
+    const std::string in = args.positional().front();
     const std::string out = *args.option("out");
     MeshImportDef def;
     const auto unit = unitOption(args, "mesh import");
@@ -157,24 +146,10 @@ int import(const std::vector<std::string>& words) {
     def.repair = args.flag("repair");
     def.keep = args.flag("keep-all") ? KeepComponents::All : KeepComponents::Largest;
     def.fillHoles = !args.flag("no-fill-holes");
-    if (const auto edge = args.option("remesh-edge-mm")) {
-        const auto value = parseNumber(*edge);
-        if (!value || *value < kMinRemeshEdgeMm || *value > 1e4) {
-            std::cerr << "mesh import: --remesh-edge-mm '" << *edge << "' must be a length in mm from " << kMinRemeshEdgeMm
-                      << " to 10000\n";
-            return 2;
-        }
-        def.remeshEdgeMm = *value;
-    }
-    if (const auto iterations = args.option("remesh-iterations")) {
-        const auto value = parsePositiveInt(*iterations);
-        if (!value || *value > kMaxRemeshIterations) {
-            std::cerr << "mesh import: --remesh-iterations '" << *iterations << "' must be a whole number from 1 to "
-                      << kMaxRemeshIterations << "\n";
-            return 2;
-        }
-        def.remeshIterations = int(*value);
-    }
+    // Their ranges are checked by their definitions (defineMeshCommands).
+    if (const auto edge = args.option("remesh-edge-mm")) def.remeshEdgeMm = *parseNumber(*edge);
+    if (const auto iterations = args.option("remesh-iterations"))
+        def.remeshIterations = int(*parsePositiveInt(*iterations));
     if (const std::string refusal = outputIsAnInput("--out", out, {{in, "mesh being imported"}}); !refusal.empty()) {
         std::cerr << "mesh import: " << refusal << "\n";
         return 2;
@@ -227,17 +202,34 @@ int import(const std::vector<std::string>& words) {
 
 }  // namespace
 
-int meshCommand(const std::vector<std::string>& words) {
-    if (words.empty()) {
-        std::cerr << "mesh: needs a subcommand: generate, check or import\n";
-        return 2;
-    }
-    const std::vector<std::string> rest(words.begin() + 1, words.end());
-    if (words.front() == "generate") return generate(rest);
-    if (words.front() == "check") return check(rest);
-    if (words.front() == "import") return import(rest);
-    std::cerr << "mesh: unknown subcommand '" << words.front() << "' (use generate, check or import)\n";
-    return 2;
+void defineMeshCommands(CommandLine& cli) {
+    CLI::App* mesh = cli.group(cli.root(), "mesh", "generate, check and import tissue meshes (docs/meshes.md)");
+    const std::string unitText = "the file's unit: mm (default), cm, m, in, or mm per file unit";
+
+    CLI::App* gen = cli.command(*mesh, "generate", "write a generated mesh", generate);
+    addValue(*gen, "shape", "SHAPE", "the shape to generate")->check(oneOf({"sphere", "stomach"}));
+    // The vertex count's range is checked by generate(), which names the most a mesh may have.
+    addValue(*gen, "vertices", "N",
+             "the vertex count, a whole number from " + std::to_string(kMinGeneratedVertices) + " to " +
+                 std::to_string(kMaxMeshVertices));
+    addValue(*gen, "out", "FILE", "the mesh file to write");
+
+    CLI::App* chk = cli.command(*mesh, "check", "check a mesh file and report its faults", check);
+    addPositional(*chk, "FILE", "the mesh file");
+    addValue(*chk, "unit", "U", unitText);
+    addFlag(*chk, "json", "print JSON");
+
+    CLI::App* imp = cli.command(*mesh, "import", "repair, remesh and convert a mesh file", import);
+    addPositional(*imp, "IN", "the mesh file to import");
+    addValue(*imp, "out", "OUT", "the mesh file to write");
+    addValue(*imp, "unit", "U", unitText);
+    addFlag(*imp, "repair", "repair what can be repaired");
+    addFlag(*imp, "keep-all", "keep every component (default: the largest)");
+    addFlag(*imp, "no-fill-holes", "leave holes open");
+    addValue(*imp, "remesh-edge-mm", "E", "remesh to this edge length, mm")->check(numberIn(kMinRemeshEdgeMm, 1e4));
+    addValue(*imp, "remesh-iterations", "N", "remeshing iterations")->check(wholeNumberIn(1, kMaxRemeshIterations));
+    addFlag(*imp, "overwrite", "replace OUT if it exists");
+    addFlag(*imp, "json", "print JSON");
 }
 
 }  // namespace palpate::cli

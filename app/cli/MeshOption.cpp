@@ -4,7 +4,12 @@
 
 namespace palpate::cli {
 
-std::optional<MeshUnit> meshUnitFromArgs(const Args& args, std::string& error) {
+void addMeshUnitOption(CLI::App& command) {
+    addValue(command, kMeshUnitOption, "U",
+             "the mesh file's unit: mm (default), cm, m, in, or mm per file unit (docs/meshes.md, \"Units\")");
+}
+
+std::optional<MeshUnit> meshUnitFromArgs(const Given& args, std::string& error) {
     const auto text = args.option(kMeshUnitOption);
     if (!text) return kMillimetres;
     std::string problem;

@@ -3,7 +3,7 @@
 // file (docs/meshes.md, "Units"), and the load that goes with it: scaled to mm, with one warning
 // when the size in that unit is implausible for tissue.
 
-#include "app/cli/Args.h"
+#include "app/cli/CommandLine.h"
 #include "engine/core/TissueMesh.h"
 
 #include <optional>
@@ -11,12 +11,15 @@
 
 namespace palpate::cli {
 
-/// The option's name, for the commands' Args.
+/// The option's name.
 inline constexpr const char* kMeshUnitOption = "mesh-unit";
+
+/// Defines --mesh-unit U on a command that reads a mesh file.
+void addMeshUnitOption(CLI::App& command);
 
 /// --mesh-unit's unit (mm when absent). nullopt with `error` ("--mesh-unit: 'furlong' is not a
 /// mesh unit: use mm, cm, ...") when it does not parse.
-std::optional<MeshUnit> meshUnitFromArgs(const Args& args, std::string& error);
+std::optional<MeshUnit> meshUnitFromArgs(const Given& args, std::string& error);
 
 /// What a warning tells the user to change when the unit is wrong: the option by default; for
 /// a mesh an exercise names, the exercise's "mesh_unit" key.

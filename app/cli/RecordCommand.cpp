@@ -1,6 +1,5 @@
 // palpate-cli record info|verify|export-csv|replay FILE: what is in a session recording, whether it
 // is intact (and what a damaged one still holds), its ticks as CSV, and a bit-exact replay check.
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/MeshOption.h"
 #include "engine/replay/RecordingPlayer.h"
@@ -255,30 +254,15 @@ int replay(const RecordingReader& reader, const std::optional<std::string>& mesh
     return match ? 0 : 1;
 }
 
-}  // namespace
-
-int recordCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"out", "mesh", kMeshUnitOption});
-    if (!args.ok()) {
-        std::cerr << "record: " << args.error() << "\n";
+int recordCommand(const std::string& action, const Given& args) {
+    const auto pos = args.positional();
+    if (pos.size() != 1) {
+        std::cerr << "record " << action << ": needs one FILE, the recording\n";
         return 2;
     }
-    const auto& pos = args.positional();
-    if (pos.size() != 2) {
-        std::cerr << "record: usage: record info|verify|export-csv|replay FILE\n";
-        return 2;
-    }
-    const std::string& action = pos[0];
-    if (action != "info" && action != "verify" && action != "export-csv" && action != "replay") {
-        std::cerr << "record: unknown action '" << action << "' (use info, verify, export-csv or replay)\n";
-        return 2;
-    }
+    const std::string& file = pos[0];
     if (const auto out = args.option("out")) {
-        if (action != "export-csv") {
-            std::cerr << "record: --out is for export-csv\n";
-            return 2;
-        }
-        if (const std::string problem = outputIsAnInput("out", *out, {{pos[1], "recording"}}); !problem.empty()) {
+        if (const std::string problem = outputIsAnInput("out", *out, {{file, "recording"}}); !problem.empty()) {
             std::cerr << "record export-csv: " << problem << "\n";
             return 2;
         }
@@ -286,8 +270,8 @@ int recordCommand(const std::vector<std::string>& words) {
     // --mesh-unit: the unit of the --mesh file, when it is not the recorded one's.
     std::optional<MeshUnit> meshUnit;
     if (args.option(kMeshUnitOption)) {
-        if (action != "replay" || !args.option("mesh")) {
-            std::cerr << "record: --mesh-unit is for replay with --mesh (the recording says its mesh's unit)\n";
+        if (!args.option("mesh")) {
+            std::cerr << "record replay: --mesh-unit is for replay with --mesh (the recording says its mesh's unit)\n";
             return 2;
         }
         std::string unitError;
@@ -297,7 +281,7 @@ int recordCommand(const std::vector<std::string>& words) {
             return 2;
         }
     }
-    const RecordingReader reader = RecordingReader::open(pos[1]);
+    const RecordingReader reader = RecordingReader::open(file);
     if (!reader.fileError().empty()) {
         std::cerr << "record " << action << ": " << reader.fileError() << "\n";
         return 1;
@@ -314,6 +298,25 @@ int recordCommand(const std::vector<std::string>& words) {
     if (action == "verify") return verify(reader, args.flag("json"));
     if (action == "export-csv") return exportCsv(reader, args.option("out"));
     return replay(reader, args.option("mesh"), meshUnit, args.flag("json"));
+}
+
+}  // namespace
+
+void defineRecordCommands(CommandLine& cli) {
+    CLI::App* record = cli.group(cli.root(), "record", "read, check, export and replay recordings (docs/recording.md)");
+    const auto action = [&cli, record](const std::string& name, const std::string& description) {
+        CLI::App* command = cli.command(*record, name, description,
+                                        [name](const Given& args) { return recordCommand(name, args); });
+        addPositional(*command, "FILE", "the recording");
+        return command;
+    };
+    addFlag(*action("info", "what a recording holds"), "json", "print JSON");
+    addFlag(*action("verify", "check every chunk and the determinism hash"), "json", "print JSON");
+    addValue(*action("export-csv", "the ticks as CSV"), "out", "CSV", "the CSV file (default: standard output)");
+    CLI::App* replay = action("replay", "replay the recording on its scene and compare");
+    addValue(*replay, "mesh", "FILE", "replay on this mesh instead of the recorded one");
+    addMeshUnitOption(*replay);
+    addFlag(*replay, "json", "print JSON");
 }
 
 }  // namespace palpate::cli

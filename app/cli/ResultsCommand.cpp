@@ -1,16 +1,19 @@
 // palpate-cli results: the stored results of a workstation or of a class's server
 // (docs/results-store.md). list and export read any database; sync copies this workstation's
 // results that the server has not acknowledged (local first: nothing is lost while it is away).
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 
 #include <iostream>
 
 #ifndef PALPATE_HAVE_CHARTS
 namespace palpate::cli {
-int resultsCommand(const std::vector<std::string>&) {
-    std::cerr << "results: needs a build with the GUI (Qt SQL); this one has none\n";
-    return 2;
+void defineResultsCommands(CommandLine& cli) {
+    cli.command(cli.root(), "results", "the stored results (needs a build with the GUI)",
+                [](const Given&) {
+                    std::cerr << "results: needs a build with the GUI (Qt SQL); this one has none\n";
+                    return 2;
+                })
+        ->allow_extras();
 }
 }  // namespace palpate::cli
 #else
@@ -40,20 +43,6 @@ using Json = nlohmann::ordered_json;
 /// A shipped exercise: its folder holds the examples a class trains on.
 constexpr const char* kExampleExercise = "exercises/press_targets.json";
 
-void resultsUsage(std::ostream& out) {
-    out << "usage:\n"
-           "  palpate-cli results list [--db LOCATION] [--json]\n"
-           "  palpate-cli results export --csv FILE [--db LOCATION]\n"
-           "  palpate-cli results sync --db URL [--local FILE] [--json]\n"
-           "  palpate-cli results class [--db LOCATION] [--class NAME] [--json] [--csv FILE]\n"
-           "  palpate-cli results grant --db URL (--workstation ROLE --class NAME | --instructor ROLE)\n"
-           "  palpate-cli results revoke --db URL --role ROLE\n"
-           "      LOCATION: an SQLite file (default: the GUI's results.sqlite) or postgresql://[user@]host[:port]/db\n"
-           "      sync: copies this workstation's results (--local, default the GUI's) to the server URL; the\n"
-           "      password comes from ~/.pgpass or PGPASSFILE, never from the URL\n"
-           "      grant: run as the tables' owner; ROLE is a login role the server's administrator made\n";
-}
-
 /// Opens `location`; a missing SQLite file is an error here (these commands only read it).
 bool openExisting(ResultsDatabase& db, const std::string& location, const char* command) {
     const QString where = QString::fromStdString(location);
@@ -78,7 +67,7 @@ std::string csvField(const std::string& s) {
     return quoted + "\"";
 }
 
-int listCommand(const Args& args) {
+int listCommand(const Given& args) {
     ResultsDatabase db;
     if (!openExisting(db, args.option("db").value_or(defaultDatabasePath()), "list")) return 1;
     const std::vector<ResultRecord> results = db.allResults();
@@ -113,7 +102,7 @@ int listCommand(const Args& args) {
     return 0;
 }
 
-int exportCommand(const Args& args) {
+int exportCommand(const Given& args) {
     const auto csv = args.option("csv");
     if (!csv) {
         std::cerr << "results export: --csv FILE is required\n";
@@ -144,7 +133,7 @@ int exportCommand(const Args& args) {
 }
 
 /// The instructor's class view: per trainee and exercise, sessions, latest and best, the verdict.
-int classCommand(const Args& args) {
+int classCommand(const Given& args) {
     const std::string location = args.option("db").value_or(defaultDatabasePath());
     if (const auto csv = args.option("csv"))
         if (const std::string refused = outputIsAnInput("csv", *csv, {{location, "db"}}); !refused.empty()) {
@@ -191,7 +180,7 @@ int classCommand(const Args& args) {
     return 0;
 }
 
-int syncCommand(const Args& args) {
+int syncCommand(const Given& args) {
     const auto url = args.option("db");
     if (!url || !isServerLocation(QString::fromStdString(*url))) {
         std::cerr << "results sync: --db postgresql://host/database (the class's server) is required\n";
@@ -230,7 +219,7 @@ int syncCommand(const Args& args) {
 }
 
 /// The server's roles: a workstation of a class, or an instructor (docs/results-store.md, "Roles").
-int grantCommand(const Args& args) {
+int grantCommand(const Given& args) {
     const auto url = args.option("db");
     const auto workstation = args.option("workstation"), instructor = args.option("instructor");
     if (!url || !isServerLocation(QString::fromStdString(*url))) {
@@ -264,7 +253,7 @@ int grantCommand(const Args& args) {
 }
 
 /// Takes a role's kind away (docs/results-store.md, "Roles").
-int revokeCommand(const Args& args) {
+int revokeCommand(const Given& args) {
     const auto url = args.option("db");
     const auto role = args.option("role");
     if (!url || !isServerLocation(QString::fromStdString(*url)) || !role) {
@@ -283,27 +272,45 @@ int revokeCommand(const Args& args) {
 
 }  // namespace
 
-int resultsCommand(const std::vector<std::string>& words) {
-    if (words.empty() || words.front() == "--help") {
-        resultsUsage(words.empty() ? std::cerr : std::cout);
-        return words.empty() ? 2 : 0;
-    }
-    const std::string sub = words.front();
-    const std::vector<std::string> rest(words.begin() + 1, words.end());
-    const Args args(rest, {"json"}, {"db", "csv", "local", "class", "workstation", "instructor", "role"});
-    if (!args.ok()) {
-        std::cerr << "palpate-cli results " << sub << ": " << args.error() << "\n";
-        return 2;
-    }
-    if (sub == "list") return listCommand(args);
-    if (sub == "export") return exportCommand(args);
-    if (sub == "sync") return syncCommand(args);
-    if (sub == "class") return classCommand(args);
-    if (sub == "grant") return grantCommand(args);
-    if (sub == "revoke") return revokeCommand(args);
-    std::cerr << "palpate-cli results: unknown subcommand '" << sub << "'\n";
-    resultsUsage(std::cerr);
-    return 2;
+void defineResultsCommands(CommandLine& cli) {
+    CLI::App* results = cli.group(cli.root(), "results",
+                                  "the stored results, and the class's server (docs/results-store.md)");
+    results->footer(
+        "LOCATION: an SQLite file (default: the GUI's results.sqlite) or postgresql://[user@]host[:port]/db;\n"
+        "a server's password comes from ~/.pgpass or PGPASSFILE, never from the URL.");
+    const std::string locationText = "an SQLite file (default: the GUI's) or postgresql://[user@]host[:port]/db";
+
+    CLI::App* list = cli.command(*results, "list", "the trainees and their results", listCommand);
+    addValue(*list, "db", "LOCATION", locationText);
+    addFlag(*list, "json", "print JSON");
+
+    CLI::App* exporting = cli.command(*results, "export", "every result as CSV", exportCommand);
+    addValue(*exporting, "csv", "FILE", "the CSV file to write (required)");
+    addValue(*exporting, "db", "LOCATION", locationText);
+
+    CLI::App* sync = cli.command(*results, "sync", "copy this workstation's results to the server", syncCommand);
+    addValue(*sync, "db", "URL", "the server: postgresql://[user@]host[:port]/db (required)");
+    addValue(*sync, "local", "FILE", "this workstation's results (default: the GUI's)");
+    addFlag(*sync, "json", "print JSON");
+
+    CLI::App* classes = cli.command(*results, "class", "a class's results, per trainee", classCommand);
+    addValue(*classes, "db", "LOCATION", locationText);
+    addValue(*classes, "class", "NAME", "only this class");
+    addFlag(*classes, "json", "print JSON");
+    addValue(*classes, "csv", "FILE", "also write them as CSV");
+
+    CLI::App* grant = cli.command(
+        *results, "grant", "make a login role a workstation of a class, or an instructor (run as the tables' owner)",
+        grantCommand);
+    addValue(*grant, "db", "URL", "the server (required)");
+    addValue(*grant, "workstation", "ROLE", "the role of a workstation (with --class)");
+    addValue(*grant, "class", "NAME", "the workstation's class");
+    addValue(*grant, "instructor", "ROLE", "the role of an instructor");
+
+    CLI::App* revoke = cli.command(*results, "revoke", "a role is neither a workstation nor an instructor now",
+                                   revokeCommand);
+    addValue(*revoke, "db", "URL", "the server (required)");
+    addValue(*revoke, "role", "ROLE", "the role (required)");
 }
 
 }  // namespace palpate::cli

@@ -2,7 +2,6 @@
 // is replayed through the engine (the exercise's physics from the recording's note) and scored
 // tick by tick by the same scorer the live session uses (docs/scoring.md). --pdf writes the
 // printable report the GUI exports, through the same report/ code.
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/MeshOption.h"
 #include "base/resources/ShippedResources.h"
@@ -36,7 +35,8 @@ namespace {
 /// then sent with whatever else waits. A server that does not answer leaves it waiting: stored all
 /// the same (exit 0), and said on stderr. --json adds "proficiency" (judged against the trainee's
 /// sessions before this one) and "stored".
-int storeScore(const Args& args, const ScoreReport& report, std::optional<Exercise> exercise, const std::string& recording) {
+int storeScore(const Given& args, const ScoreReport& report, std::optional<Exercise> exercise,
+               const std::string& recording) {
     const std::string trainee = *args.option("trainee");
     const std::string location = args.option("db").value_or(defaultDatabasePath());
     const bool server = isServerLocationText(location);
@@ -108,14 +108,7 @@ int storeScore(const Args& args, const ScoreReport& report, std::optional<Exerci
 }
 #endif
 
-}  // namespace
-
-int scoreCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json", "no-store"}, {"exercise", "recording", "mesh", kMeshUnitOption, "pdf", "trainee", "db", "local"});
-    if (!args.ok()) {
-        std::cerr << "score: " << args.error() << "\n";
-        return 2;
-    }
+int scoreCommand(const Given& args) {
     std::optional<std::string> recording = args.option("recording");
     if (!recording && args.positional().size() == 1) recording = args.positional().front();
     else if (!args.positional().empty()) {
@@ -228,6 +221,24 @@ int scoreCommand(const std::vector<std::string>& words) {
     if (args.flag("json")) std::cout << scoreReportToJson(report) << "\n";
     else std::cout << scoreReportToText(report);
     return 0;
+}
+
+}  // namespace
+
+void defineScoreCommand(CommandLine& cli) {
+    CLI::App* score = cli.command(cli.root(), "score",
+                                  "a recorded exercise session's score and breakdown (docs/scoring.md)", scoreCommand);
+    addValue(*score, "recording", "FILE", "the recorded session (or give it as RECORDING)");
+    addPositional(*score, "RECORDING", "the recorded session, when --recording is not given");
+    addValue(*score, "exercise", "FILE", "the exercise (default: the one the recording carries)");
+    addValue(*score, "mesh", "FILE", "score on this mesh instead of the recorded one");
+    addMeshUnitOption(*score);
+    addFlag(*score, "json", "print JSON");
+    addValue(*score, "pdf", "FILE", "also write the printable report");
+    addValue(*score, "trainee", "NAME", "store the result as this trainee's (docs/results-store.md)");
+    addValue(*score, "db", "LOCATION", "where to store it: an SQLite file (default: the GUI's) or postgresql://...");
+    addValue(*score, "local", "FILE", "with a --db server: where the result waits for it (default: the GUI's file)");
+    addFlag(*score, "no-store", "with --trainee and --pdf: only name the trainee on the report");
 }
 
 }  // namespace palpate::cli

@@ -1,7 +1,6 @@
 // palpate-cli stability: where each model fails (docs/stability.md). --list names the
 // maps; --model NAME runs one: the grid of cells, the measured boundary by bisection, the derived
 // boundary, their gap; as a table, JSON, CSV and (in builds with Qt) the map as a PNG.
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "engine/stability/StabilityModels.h"
 
@@ -95,14 +94,7 @@ void printTable(std::ostream& out, const StabilityMap& map) {
     }
 }
 
-}  // namespace
-
-int stabilityCommand(const std::vector<std::string>& words) {
-    const Args args(words, {"list", "json", "quick"}, {"model", "csv", "png"});
-    if (!args.ok()) {
-        std::cerr << "palpate-cli stability: " << args.error() << "\n";
-        return 2;
-    }
+int stabilityCommand(const Given& args) {
     if (args.flag("list")) {
         for (const auto& name : stabilityModelNames()) std::cout << name << "\n";
         return 0;
@@ -156,6 +148,20 @@ int stabilityCommand(const std::vector<std::string>& words) {
     if (args.flag("json")) std::cout << toJson(map).dump(2) << "\n";
     else printTable(std::cout, map);
     return 0;
+}
+
+}  // namespace
+
+void defineStabilityCommand(CommandLine& cli) {
+    CLI::App* stability = cli.command(cli.root(), "stability",
+                                      "a map of where a model fails, derived against measured (docs/stability.md)",
+                                      stabilityCommand);
+    addFlag(*stability, "list", "list the models that have a map");
+    addValue(*stability, "model", "NAME", "the model to map");
+    addFlag(*stability, "json", "print JSON");
+    addValue(*stability, "csv", "FILE", "also write the map as CSV");
+    addValue(*stability, "png", "FILE", "also draw the map");
+    addFlag(*stability, "quick", "a smoke run: short runs, a 6 x 6 map");
 }
 
 }  // namespace palpate::cli

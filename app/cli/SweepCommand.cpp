@@ -1,6 +1,5 @@
 // palpate-cli sweep: speed against accuracy for every model (docs/calibration.md), as a table, CSV, JSON and
 // (in builds with Qt) the chart as a PNG.
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/ToolContactOptions.h"
 #include "engine/accuracy/AccuracySweep.h"
@@ -47,21 +46,8 @@ void printOrganTable(std::ostream& out, const OrganSweepResult& result) {
             << (p.pareto ? "*" : "") << "\n";
 }
 
-}  // namespace
-
-int sweepCommand(const std::vector<std::string>& words) {
-    std::vector<std::string> options{"csv", "png", "shapes", "sizes", "max-rings", "repeats", "reference"};
-    for (const std::string& o : toolContactOptionNames()) options.push_back(o);
-    const Args args(words, {"json", "quick", "no-paper", "no-others"}, options);
-    if (!args.ok()) {
-        std::cerr << "palpate-cli sweep: " << args.error() << "\n";
-        return 2;
-    }
-    const std::string reference = args.option("reference").value_or("punch");
-    if (reference != "punch" && reference != "fem") {
-        std::cerr << "palpate-cli sweep: --reference: '" << reference << "' is not a reference (punch, fem)\n";
-        return 2;
-    }
+int sweepCommand(const Given& args) {
+    const std::string reference = args.option("reference").value_or("punch");  // punch or fem, as defined
     const bool organ = reference == "fem";
     if (organ && args.option("shapes")) {
         std::cerr << "palpate-cli sweep: --shapes goes with --reference punch (the FEM reference is the stomach's)\n";
@@ -106,22 +92,9 @@ int sweepCommand(const std::vector<std::string>& words) {
             def.sizes.push_back(std::size_t(*n));
         }
     }
-    if (const auto rings = args.option("max-rings")) {
-        const auto n = parsePositiveInt(*rings);
-        if (!n || *n > kMaxRings) {
-            std::cerr << "palpate-cli sweep: --max-rings: '" << *rings << "' is not in 1.." << kMaxRings << "\n";
-            return 2;
-        }
-        def.maxRings = int(*n);
-    }
-    if (const auto repeats = args.option("repeats")) {
-        const auto n = parsePositiveInt(*repeats);
-        if (!n || *n > 100) {
-            std::cerr << "palpate-cli sweep: --repeats: '" << *repeats << "' is not in 1..100\n";
-            return 2;
-        }
-        def.timingRepeats = int(*n);
-    }
+    // Their ranges are checked by their definitions (defineSweepCommand).
+    if (const auto rings = args.option("max-rings")) def.maxRings = int(*parsePositiveInt(*rings));
+    if (const auto repeats = args.option("repeats")) def.timingRepeats = int(*parsePositiveInt(*repeats));
 #ifndef PALPATE_HAVE_CHARTS
     if (args.option("png")) {
         std::cerr << "palpate-cli sweep: --png needs a build with the GUI (Qt Charts); this one has none\n";
@@ -180,6 +153,29 @@ int sweepCommand(const std::vector<std::string>& words) {
         printTable(std::cout, result);
     }
     return 0;
+}
+
+}  // namespace
+
+void defineSweepCommand(CommandLine& cli) {
+    CLI::App* sweep = cli.command(cli.root(), "sweep",
+                                  "tick time against error of every model and ring count (docs/accuracy.md)",
+                                  sweepCommand);
+    addValue(
+        *sweep, "reference", "REF",
+        "punch (default), or fem: the filled stomach's FEM (linear and hyperelastic) at its thin, thick and curved sites")
+        ->check(oneOf({"punch", "fem"}));
+    addFlag(*sweep, "json", "print JSON");
+    addValue(*sweep, "csv", "FILE", "also write the points as CSV");
+    addValue(*sweep, "png", "FILE", "also draw the chart");
+    addFlag(*sweep, "quick", "a smoke run: small spheres, 4 rings, one repeat");
+    addValue(*sweep, "shapes", "sphere,stomach", "the shapes (with --reference punch)");
+    addValue(*sweep, "sizes", "N,..", "the vertex counts, each 8..2000000");
+    addValue(*sweep, "max-rings", "N", "the most rings")->check(wholeNumberIn(1, kMaxRings));
+    addFlag(*sweep, "no-paper", "leave out the paper's methods");
+    addFlag(*sweep, "no-others", "leave out the other models");
+    addValue(*sweep, "repeats", "N", "timing repeats")->check(wholeNumberIn(1, 100));
+    addToolContactOptions(*sweep);
 }
 
 }  // namespace palpate::cli

@@ -7,9 +7,19 @@
 
 namespace palpate::cli {
 
-std::vector<std::string> toolContactOptionNames() { return {"preset", "youngs-kpa", "poisson", "tool-radius", "stiffening-exponent"}; }
+void addToolContactOptions(CLI::App& command) {
+    // Only whether each is a number is checked here: validateToolContact names what is out of
+    // range and why (a tissue the slope-ring cannot render, docs/accuracy.md).
+    addValue(command, "preset", "FILE", "a tissue preset: its \"tissue\" section (the options below override it)");
+    addValue(command, "youngs-kpa", "E", "Young's modulus, kPa")->check(anyNumber());
+    addValue(command, "poisson", "NU", "Poisson's ratio")->check(anyNumber());
+    addValue(command, "tool-radius", "MM", "the tool tip's radius, mm")->check(anyNumber());
+    addValue(command, "stiffening-exponent", "B",
+             "the exponential law's b of the hyperelastic reference, 0 for neo-Hookean")
+        ->check(anyNumber());
+}
 
-ToolContactChoice toolContactFromArgs(const Args& args) {
+ToolContactChoice toolContactFromArgs(const Given& args) {
     ToolContactChoice c;
     // Gelatin phantom (the shipped phantom_gel preset): soft, nearly incompressible.
     c.contact.material = {4.34e-3, 0.45};

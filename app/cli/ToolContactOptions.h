@@ -3,7 +3,7 @@
 // --youngs-kpa E --poisson NU --tool-radius MM --stiffening-exponent B (these override the preset's
 // values; B is the hyperelastic reference's exponential-law b, 0 for neo-Hookean).
 
-#include "app/cli/Args.h"
+#include "app/cli/CommandLine.h"
 #include "engine/accuracy/Calibration.h"
 
 #include <string>
@@ -11,8 +11,8 @@
 
 namespace palpate::cli {
 
-/// Option names the commands must accept (for Args).
-std::vector<std::string> toolContactOptionNames();
+/// Defines --preset, --youngs-kpa, --poisson, --tool-radius and --stiffening-exponent on a command.
+void addToolContactOptions(CLI::App& command);
 
 struct ToolContactChoice {
     ToolContact contact;
@@ -21,6 +21,6 @@ struct ToolContactChoice {
 };
 
 /// Defaults: the phantom-gel values when neither a preset nor values are given.
-ToolContactChoice toolContactFromArgs(const Args& args);
+ToolContactChoice toolContactFromArgs(const Given& args);
 
 }  // namespace palpate::cli

@@ -2,7 +2,6 @@
 // "Proficiency" and "Staircase"): list them, add a scored session (an expert's sets the standard),
 // the learning curve against the experts' pass marks (with --png a chart), the staircase's state.
 // Also the proficiency object `palpate-cli score --db --trainee` adds to its JSON.
-#include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "base/resources/ShippedResources.h"
 #include "engine/exercise/ExerciseFile.h"
@@ -34,9 +33,13 @@
 namespace palpate::cli {
 
 #ifndef PALPATE_HAVE_CHARTS
-int traineeCommand(const std::vector<std::string>&) {
-    std::cerr << "trainee: needs a build with the GUI (Qt SQL); this one has none\n";
-    return 2;
+void defineTraineeCommands(CommandLine& cli) {
+    cli.command(cli.root(), "trainee", "trainees' sessions (needs a build with the GUI)",
+                [](const Given&) {
+                    std::cerr << "trainee: needs a build with the GUI (Qt SQL); this one has none\n";
+                    return 2;
+                })
+        ->allow_extras();
 }
 
 std::string proficiencyJsonForScore(const ScoreReport&, const Exercise&, const std::string&, const std::string&,
@@ -68,7 +71,7 @@ Json verdictMetricsJson(const SessionVerdict& v) {
     return out;
 }
 
-bool openDatabase(ResultsDatabase& db, const Args& args, const char* command, bool mustExist) {
+bool openDatabase(ResultsDatabase& db, const Given& args, const char* command, bool mustExist) {
     const std::string path = args.option("db").value_or(defaultDatabasePath());
     if (mustExist && !QFileInfo::exists(QString::fromStdString(path))) {
         std::cerr << "trainee " << command << ": " << path << ": no results database there (give --db FILE)\n";
@@ -94,7 +97,7 @@ std::optional<qint64> findTrainee(const ResultsDatabase& db, const std::string& 
     return std::nullopt;
 }
 
-std::optional<Exercise> loadExerciseOption(const Args& args, const char* command, QString& path) {
+std::optional<Exercise> loadExerciseOption(const Given& args, const char* command, QString& path) {
     const auto file = args.option("exercise");
     if (!file) {
         std::cerr << "trainee " << command << ": --exercise FILE is required\n";
@@ -109,12 +112,7 @@ std::optional<Exercise> loadExerciseOption(const Args& args, const char* command
     return loaded.exercise;
 }
 
-int listCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"db"});
-    if (!args.ok() || !args.positional().empty()) {
-        std::cerr << "trainee list: " << (args.ok() ? "unexpected argument '" + args.positional().front() + "'" : args.error()) << "\n";
-        return 2;
-    }
+int listCommand(const Given& args) {
     ResultsDatabase db;
     if (!openDatabase(db, args, "list", true)) return 1;
     Json list = Json::array();
@@ -135,12 +133,7 @@ int listCommand(const std::vector<std::string>& words) {
     return 0;
 }
 
-int addSessionCommand(const std::vector<std::string>& words) {
-    Args args(words, {"expert", "json"}, {"db", "trainee", "recording", "exercise"});
-    if (!args.ok() || !args.positional().empty()) {
-        std::cerr << "trainee add-session: " << (args.ok() ? "unexpected argument '" + args.positional().front() + "'" : args.error()) << "\n";
-        return 2;
-    }
+int addSessionCommand(const Given& args) {
     if (!args.option("trainee") || !args.option("recording")) {
         std::cerr << "trainee add-session: --trainee NAME and --recording FILE are required\n";
         return 2;
@@ -185,12 +178,7 @@ int addSessionCommand(const std::vector<std::string>& words) {
     return 0;
 }
 
-int curveCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"db", "trainee", "exercise", "png", "metric"});
-    if (!args.ok() || !args.positional().empty()) {
-        std::cerr << "trainee curve: " << (args.ok() ? "unexpected argument '" + args.positional().front() + "'" : args.error()) << "\n";
-        return 2;
-    }
+int curveCommand(const Given& args) {
     if (!args.option("trainee")) {
         std::cerr << "trainee curve: --trainee NAME is required\n";
         return 2;
@@ -294,12 +282,7 @@ int curveCommand(const std::vector<std::string>& words) {
     return 0;
 }
 
-int staircaseCommand(const std::vector<std::string>& words) {
-    Args args(words, {"json"}, {"db", "trainee", "exercise"});
-    if (!args.ok() || !args.positional().empty()) {
-        std::cerr << "trainee staircase: " << (args.ok() ? "unexpected argument '" + args.positional().front() + "'" : args.error()) << "\n";
-        return 2;
-    }
+int staircaseCommand(const Given& args) {
     if (!args.option("trainee")) {
         std::cerr << "trainee staircase: --trainee NAME is required\n";
         return 2;
@@ -390,18 +373,37 @@ std::string proficiencyJsonForScore(const ScoreReport& report, const Exercise& e
     return out.dump();
 }
 
-int traineeCommand(const std::vector<std::string>& words) {
-    if (words.empty()) {
-        std::cerr << "trainee: list | add-session | curve | staircase (palpate-cli --help)\n";
-        return 2;
-    }
-    const std::vector<std::string> rest(words.begin() + 1, words.end());
-    if (words.front() == "list") return listCommand(rest);
-    if (words.front() == "add-session") return addSessionCommand(rest);
-    if (words.front() == "curve") return curveCommand(rest);
-    if (words.front() == "staircase") return staircaseCommand(rest);
-    std::cerr << "trainee: unknown subcommand '" << words.front() << "' (list, add-session, curve, staircase)\n";
-    return 2;
+void defineTraineeCommands(CommandLine& cli) {
+    CLI::App* trainee = cli.group(cli.root(), "trainee",
+                                  "trainees' sessions, learning curves and staircases (docs/scoring.md)");
+    const std::string dbText = "the results database (default: the GUI's, results.sqlite in its data folder)";
+    CLI::App* list = cli.command(*trainee, "list", "the trainees and their sessions", listCommand);
+    addValue(*list, "db", "FILE", dbText);
+    addFlag(*list, "json", "print JSON");
+
+    CLI::App* add = cli.command(*trainee, "add-session", "score a recording and store it as a trainee's session",
+                                addSessionCommand);
+    addValue(*add, "trainee", "NAME", "the trainee (required)");
+    addValue(*add, "recording", "FILE", "the recorded session (required)");
+    addValue(*add, "exercise", "FILE", "the exercise (default: the one the recording carries)");
+    addFlag(*add, "expert", "an expert's session: part of the exercise's standard");
+    addValue(*add, "db", "FILE", dbText);
+    addFlag(*add, "json", "print JSON");
+
+    CLI::App* curve = cli.command(*trainee, "curve", "a trainee's learning curve on an exercise", curveCommand);
+    addValue(*curve, "trainee", "NAME", "the trainee (required)");
+    addValue(*curve, "exercise", "FILE", "the exercise (required)");
+    addValue(*curve, "png", "FILE", "also draw the curve");
+    addValue(*curve, "metric", "NAME,..", "the metrics to show (default: the exercise's)");
+    addValue(*curve, "db", "FILE", dbText);
+    addFlag(*curve, "json", "print JSON");
+
+    CLI::App* staircase = cli.command(*trainee, "staircase", "where a trainee's staircase stands on an exercise",
+                                      staircaseCommand);
+    addValue(*staircase, "trainee", "NAME", "the trainee (required)");
+    addValue(*staircase, "exercise", "FILE", "the exercise (required)");
+    addValue(*staircase, "db", "FILE", dbText);
+    addFlag(*staircase, "json", "print JSON");
 }
 #endif
 

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <new>
 #include <sstream>
 #include <system_error>
 
@@ -187,7 +188,12 @@ std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path
         error = why;
         return nullptr;
     };
-    std::unique_ptr<RecordingWriter> writer(new RecordingWriter(path, header, def, fd));
+    std::unique_ptr<RecordingWriter> writer;
+    try {
+        writer.reset(new RecordingWriter(path, header, def, fd));
+    } catch (const std::bad_alloc&) {  // its chunk buffers, under a tight address-space limit
+        return abandon(nullptr, path + ": cannot allocate the recording's buffers: out of memory");
+    }
     try {
         writer->mThread = std::thread([w = writer.get()] { w->threadMain(); });
     } catch (const std::system_error& e) {
