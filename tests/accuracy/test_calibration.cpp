@@ -301,7 +301,9 @@ TEST(Sweep, OtherModelsGetAPointEachWithTheirForceCalibratedWherePossible) {
         EXPECT_TRUE(std::isfinite(p.error.displacementError)) << p.model;
         EXPECT_GT(p.error.indentationMm, 0.0) << p.model;
         // Radius of influence and FFD render k_s = 2 a E* times their indentation: the punch force.
-        if (p.model == "radius-of-influence" || p.model == "ffd") EXPECT_LT(p.error.forceError, 0.01) << p.model;
+        if (p.model == "radius-of-influence" || p.model == "ffd") {
+            EXPECT_LT(p.error.forceError, 0.01) << p.model;
+        }
     }
     for (const char* name : {"mass-spring-local", "mass-spring-symplectic", "mass-spring-rk4", "mass-spring-implicit",
                              "radius-of-influence", "ffd", "volumetric-rings", "coherent"})

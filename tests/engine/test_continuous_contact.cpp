@@ -254,7 +254,9 @@ TEST(Friction, StickingHoldsUpToTheStaticCoefficientThenBreaksAway) {
         // Sticking: the spring from where it stuck to where the frictionless contact point is now.
         const glm::vec3 moved = model.contactPoint().at.pointMm - stuckAt;
         const double offset = glm::length(moved - glm::dot(moved, r.normal) * r.normal);
-        if (ratio < 0.35) EXPECT_NEAR(s.tangentialN, stiffness * offset, 0.01 * stiffness * offset + 1e-6);
+        if (ratio < 0.35) {
+            EXPECT_NEAR(s.tangentialN, stiffness * offset, 0.01 * stiffness * offset + 1e-6);
+        }
     }
     EXPECT_TRUE(brokeAway);
     EXPECT_NEAR(peakRatio, 0.4, 0.01) << "it sticks up to mu_s";

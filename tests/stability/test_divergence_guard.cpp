@@ -201,7 +201,9 @@ TEST(DivergenceGuard, MassSpringBeyondItsBoundIsCaughtAndInsideIsNot) {
         if (factor < 1.0) EXPECT_EQ(seen, DivergenceKind::None);
         else EXPECT_NE(seen, DivergenceKind::None);  // growth, NaN, or the top mode folding the fan
         // Caught while the force is still finite: before the state overflows.
-        if (factor > 1.0) EXPECT_LT(tick, 3000);
+        if (factor > 1.0) {
+            EXPECT_LT(tick, 3000);
+        }
     }
 }
 
