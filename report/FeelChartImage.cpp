@@ -9,23 +9,18 @@
 
 namespace palpate {
 
-bool renderFeelChartPng(const std::vector<FeelRow>& rows, const std::string& path, std::string* error, int widthPx,
-                        int heightPx) {
-    auto fail = [&](const std::string& message) {
-        if (error) *error = message;
-        return false;
-    };
-    if (const std::string problem = chartImageProblem(widthPx, heightPx, path); !problem.empty()) return fail(problem);
+std::string renderFeelChartPng(const std::vector<FeelRow>& rows, const std::string& path, int widthPx, int heightPx) {
+    if (const std::string problem = chartImageProblem(widthPx, heightPx, path); !problem.empty()) return problem;
     const ChartApplication application;
-    if (!application.problem().empty()) return fail(application.problem());
+    if (!application.problem().empty()) return application.problem();
     FeelChart chart;
     chart.setAttribute(Qt::WA_DontShowOnScreen);  // before the rows: the chart is built for an image
     chart.setFrameShape(QFrame::NoFrame);
     chart.setEmptyHint(QObject::tr("No feel bench rows to draw"));
     chart.setTextScale(std::clamp(widthPx / 1000.0, 1.0, 3.0));
     chart.setRows(rows);
-    if (const std::string problem = renderWidgetPng(chart, widthPx, heightPx, path); !problem.empty()) return fail(problem);
-    return true;
+    if (const std::string problem = renderWidgetPng(chart, widthPx, heightPx, path); !problem.empty()) return problem;
+    return {};
 }
 
 }  // namespace palpate

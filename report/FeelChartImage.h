@@ -10,9 +10,9 @@
 namespace palpate {
 
 /// Renders `rows` into a widthPx x heightPx PNG at `path`. Creates a QApplication (offscreen when
-/// there is no display) if the process has none. Returns false and sets `error` when it cannot
+/// there is no display) if the process has none. Returns "" or why it cannot
 /// (bad size, no writable file, a non-widget Qt application already running).
-bool renderFeelChartPng(const std::vector<FeelRow>& rows, const std::string& path, std::string* error,
-                        int widthPx = 1400, int heightPx = 900);
+std::string renderFeelChartPng(const std::vector<FeelRow>& rows, const std::string& path, int widthPx = 1400,
+                               int heightPx = 900);
 
 }  // namespace palpate

@@ -103,16 +103,11 @@ QChartView* metricPlot(const LearningCurveMetric& m, const std::vector<bool>& pa
 
 }  // namespace
 
-bool renderLearningCurvePng(const LearningCurveData& data, const std::string& path, std::string* error, int widthPx,
-                            int heightPx) {
-    auto fail = [&](const std::string& message) {
-        if (error) *error = message;
-        return false;
-    };
-    if (const std::string problem = chartImageProblem(widthPx, heightPx, path); !problem.empty()) return fail(problem);
-    if (data.metrics.empty()) return fail("no metric to draw");
+std::string renderLearningCurvePng(const LearningCurveData& data, const std::string& path, int widthPx, int heightPx) {
+    if (const std::string problem = chartImageProblem(widthPx, heightPx, path); !problem.empty()) return problem;
+    if (data.metrics.empty()) return "no metric to draw";
     const ChartApplication application;
-    if (!application.problem().empty()) return fail(application.problem());
+    if (!application.problem().empty()) return application.problem();
     const double textScale = std::clamp(widthPx / 1200.0, 1.0, 3.0);
     QWidget page;
     auto* layout = new QVBoxLayout(&page);
@@ -135,8 +130,8 @@ bool renderLearningCurvePng(const LearningCurveData& data, const std::string& pa
     for (int i = 0; i < n; ++i)
         grid->addWidget(metricPlot(data.metrics[std::size_t(i)], data.passed, textScale, &page), i / columns, i % columns);
     layout->addLayout(grid, 1);
-    if (const std::string problem = renderWidgetPng(page, widthPx, heightPx, path); !problem.empty()) return fail(problem);
-    return true;
+    if (const std::string problem = renderWidgetPng(page, widthPx, heightPx, path); !problem.empty()) return problem;
+    return {};
 }
 
 }  // namespace palpate

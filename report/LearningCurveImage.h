@@ -10,8 +10,8 @@
 namespace palpate {
 
 /// Renders the curve into a widthPx x heightPx PNG at `path` (a QApplication is made offscreen
-/// when the process has none). False with `error` when it cannot.
-bool renderLearningCurvePng(const LearningCurveData& data, const std::string& path, std::string* error,
-                            int widthPx = 1200, int heightPx = 800);
+/// when the process has none). "" or why it cannot.
+std::string renderLearningCurvePng(const LearningCurveData& data, const std::string& path, int widthPx = 1200,
+                                   int heightPx = 800);
 
 }  // namespace palpate

@@ -74,14 +74,9 @@ std::vector<double> ticks(const StabilityAxis& axis) {
 
 }  // namespace
 
-bool renderStabilityMapPng(const StabilityMap& map, const std::string& path, std::string* error, int widthPx,
-                           int heightPx) {
-    auto fail = [&](const std::string& message) {
-        if (error) *error = message;
-        return false;
-    };
-    if (widthPx < 300 || heightPx < 300 || widthPx > 8000 || heightPx > 8000) return fail("image size out of range");
-    if (path.empty()) return fail("no file name");
+std::string renderStabilityMapPng(const StabilityMap& map, const std::string& path, int widthPx, int heightPx) {
+    if (widthPx < 300 || heightPx < 300 || widthPx > 8000 || heightPx > 8000) return "image size out of range";
+    if (path.empty()) return "no file name";
     std::unique_ptr<QGuiApplication> ownApplication;
     if (!QCoreApplication::instance()) {
         sPreviousHandler = qInstallMessageHandler(&quietHandler);
@@ -273,8 +268,8 @@ bool renderStabilityMapPng(const StabilityMap& map, const std::string& path, std
         ownApplication.reset();
         qInstallMessageHandler(sPreviousHandler);
     }
-    if (!written) return fail("cannot be written (" + writer.errorString().toStdString() + ")");
-    return true;
+    if (!written) return "cannot be written (" + writer.errorString().toStdString() + ")";
+    return {};
 }
 
 }  // namespace palpate

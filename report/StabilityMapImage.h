@@ -11,8 +11,8 @@
 namespace palpate {
 
 /// Renders `map` into a widthPx x heightPx PNG at `path`. Creates an offscreen QGuiApplication if
-/// the process has no Qt application. Returns false and sets `error` when it cannot.
-bool renderStabilityMapPng(const StabilityMap& map, const std::string& path, std::string* error,
-                           int widthPx = 1000, int heightPx = 800);
+/// the process has no Qt application. Returns "" or why it cannot.
+std::string renderStabilityMapPng(const StabilityMap& map, const std::string& path, int widthPx = 1000,
+                                  int heightPx = 800);
 
 }  // namespace palpate

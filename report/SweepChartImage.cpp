@@ -14,20 +14,16 @@
 
 namespace palpate {
 
-bool renderSweepChartPng(const std::vector<SweepPoint>& points, const std::string& path, std::string* error, int widthPx,
-                         int heightPx) {
-    return renderSweepChartPng(points, std::nullopt, path, error, widthPx, heightPx);
+std::string renderSweepChartPng(const std::vector<SweepPoint>& points, const std::string& path, int widthPx,
+                                int heightPx) {
+    return renderSweepChartPng(points, std::nullopt, path, widthPx, heightPx);
 }
 
-bool renderSweepChartPng(const std::vector<SweepPoint>& points, const std::optional<ToolContact>& contact,
-                         const std::string& path, std::string* error, int widthPx, int heightPx) {
-    auto fail = [&](const std::string& message) {
-        if (error) *error = message;
-        return false;
-    };
-    if (const std::string problem = chartImageProblem(widthPx, heightPx, path); !problem.empty()) return fail(problem);
+std::string renderSweepChartPng(const std::vector<SweepPoint>& points, const std::optional<ToolContact>& contact,
+                                const std::string& path, int widthPx, int heightPx) {
+    if (const std::string problem = chartImageProblem(widthPx, heightPx, path); !problem.empty()) return problem;
     const ChartApplication application;
-    if (!application.problem().empty()) return fail(application.problem());
+    if (!application.problem().empty()) return application.problem();
 
     {
         // One chart per shape (and per site of the organ sweep), one above the other (the log tick
@@ -54,9 +50,9 @@ bool renderSweepChartPng(const std::vector<SweepPoint>& points, const std::optio
             layout->addWidget(chart, 1);
         }
         if (const std::string problem = renderWidgetPng(canvas, widthPx, heightPx, path); !problem.empty())
-            return fail(problem);
+            return problem;
     }
-    return true;
+    return {};
 }
 
 }  // namespace palpate

@@ -11,13 +11,13 @@
 namespace palpate {
 
 /// Renders `points` into a widthPx x heightPx PNG at `path`. Creates a QApplication (offscreen when
-/// there is no display) if the process has none. Returns false and sets `error` when it cannot
+/// there is no display) if the process has none. Returns "" or why it cannot
 /// (bad size, no writable file, a non-widget Qt application already running).
-bool renderSweepChartPng(const std::vector<SweepPoint>& points, const std::string& path, std::string* error,
-                         int widthPx = 1400, int heightPx = 900);
+std::string renderSweepChartPng(const std::vector<SweepPoint>& points, const std::string& path, int widthPx = 1400,
+                                int heightPx = 900);
 
 /// The same, with the tissue and tool the sweep was calibrated for named in the titles.
-bool renderSweepChartPng(const std::vector<SweepPoint>& points, const std::optional<ToolContact>& contact,
-                         const std::string& path, std::string* error, int widthPx = 1400, int heightPx = 900);
+std::string renderSweepChartPng(const std::vector<SweepPoint>& points, const std::optional<ToolContact>& contact,
+                                const std::string& path, int widthPx = 1400, int heightPx = 900);
 
 }  // namespace palpate

@@ -302,7 +302,7 @@ QString HistoryPanel::showLearningCurve() {
     QTemporaryDir dir;
     const QString png = dir.filePath(QStringLiteral("curve.png"));
     std::string error;
-    if (!dir.isValid() || !renderLearningCurvePng(curve.chart, png.toStdString(), &error, 1200, 800))
+    if (!dir.isValid() || !(error = renderLearningCurvePng(curve.chart, png.toStdString(), 1200, 800)).empty())
         return tr("The curve cannot be drawn: %1").arg(QString::fromStdString(error));
     if (!mCurveDialog) {
         mCurveDialog = new QDialog(this);

@@ -289,7 +289,7 @@ int benchFeelCommand(const Given& args) {
 #ifdef PALPATE_HAVE_CHARTS
     if (const auto png = args.option("png")) {
         std::string error;
-        if (!renderFeelChartPng(rows, *png, &error)) {
+        if (!(error = renderFeelChartPng(rows, *png)).empty()) {
             std::cerr << "bench feel: " << *png << ": " << error << "\n";
             return 1;
         }

@@ -139,7 +139,7 @@ int stabilityCommand(const Given& args) {
 #ifdef PALPATE_HAVE_CHARTS
     if (png) {
         std::string error;
-        if (!renderStabilityMapPng(map, *png, &error)) {
+        if (!(error = renderStabilityMapPng(map, *png)).empty()) {
             std::cerr << "palpate-cli stability: " << *png << ": " << error << "\n";
             return 1;
         }

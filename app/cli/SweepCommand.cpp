@@ -138,7 +138,7 @@ int sweepCommand(const Given& args) {
     if (const auto png = args.option("png")) {
         std::string error;
         // One pane per shape, or per site of the organ sweep (three): each needs its height.
-        if (!renderSweepChartPng(result.points, def.contact, *png, &error, 1400, organ ? 2400 : 1500)) {
+        if (!(error = renderSweepChartPng(result.points, def.contact, *png, 1400, organ ? 2400 : 1500)).empty()) {
             std::cerr << "palpate-cli sweep: " << *png << ": " << error << "\n";
             return 1;
         }

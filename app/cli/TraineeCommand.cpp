@@ -251,7 +251,7 @@ int curveCommand(const Given& args) {
     if (const auto png = args.option("png")) {
         const LearningCurveData& data = curve.chart;
         std::string error;
-        if (!renderLearningCurvePng(data, *png, &error)) {
+        if (!(error = renderLearningCurvePng(data, *png)).empty()) {
             std::cerr << "trainee curve: --png " << *png << ": " << error << "\n";
             return 1;
         }

@@ -143,7 +143,7 @@ TEST(SweepChartImage, WritesAPngOfTheRequestedSizeThatIsNotOneColour) {
     ASSERT_TRUE(dir.isValid());
     const std::string path = dir.filePath(QStringLiteral("sweep.png")).toStdString();
     std::string error;
-    ASSERT_TRUE(renderSweepChartPng(samplePoints(), path, &error, 900, 600)) << error;
+    ASSERT_TRUE((error = renderSweepChartPng(samplePoints(), path, 900, 600)).empty()) << error;
     EXPECT_TRUE(error.empty());
     EXPECT_GT(QFile(QString::fromStdString(path)).size(), 1000);
     QImage image;
@@ -153,9 +153,11 @@ TEST(SweepChartImage, WritesAPngOfTheRequestedSizeThatIsNotOneColour) {
     EXPECT_EQ(image.pixel(2, 2), qRgb(255, 255, 255));  // white background
 
     // A file that cannot be written: false, and a message.
-    EXPECT_FALSE(renderSweepChartPng(samplePoints(), dir.filePath(QStringLiteral("no/such/dir/x.png")).toStdString(), &error));
+    EXPECT_FALSE((error = renderSweepChartPng(samplePoints(),
+                                              dir.filePath(QStringLiteral("no/such/dir/x.png")).toStdString()))
+                     .empty());
     EXPECT_FALSE(error.empty());
-    EXPECT_FALSE(renderSweepChartPng(samplePoints(), path, &error, 10, 10));
+    EXPECT_FALSE((error = renderSweepChartPng(samplePoints(), path, 10, 10)).empty());
     EXPECT_NE(error.find("size"), std::string::npos) << error;
 }
 

@@ -114,13 +114,13 @@ TEST(FeelChartImage, WritesAPngOfTheRequestedSize) {
     ASSERT_TRUE(dir.isValid());
     const std::string path = dir.filePath(QStringLiteral("feel.png")).toStdString();
     std::string error;
-    ASSERT_TRUE(renderFeelChartPng(sampleRows(), path, &error, 1000, 700)) << error;
+    ASSERT_TRUE((error = renderFeelChartPng(sampleRows(), path, 1000, 700)).empty()) << error;
     QImage image;
     ASSERT_TRUE(image.load(QString::fromStdString(path), "PNG"));
     EXPECT_EQ(image.size(), QSize(1000, 700));
     EXPECT_GT(distinctColoursIn(image), 20);
     EXPECT_EQ(image.pixel(2, 2), qRgb(255, 255, 255));
-    EXPECT_FALSE(renderFeelChartPng(sampleRows(), path, &error, 10, 10));
+    EXPECT_FALSE((error = renderFeelChartPng(sampleRows(), path, 10, 10)).empty());
     EXPECT_NE(error.find("size"), std::string::npos) << error;
 }
 
