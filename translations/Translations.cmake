@@ -17,9 +17,11 @@ file(GLOB PALPATE_TR_SOURCES CONFIGURE_DEPENDS
   "${PROJECT_SOURCE_DIR}/widgets/*.cpp" "${PROJECT_SOURCE_DIR}/widgets/*.h"
   "${PROJECT_SOURCE_DIR}/results/*.cpp" "${PROJECT_SOURCE_DIR}/results/*.h"
   "${PROJECT_SOURCE_DIR}/report/*.cpp" "${PROJECT_SOURCE_DIR}/report/*.h")
-# The engine's parameter tables hold the labels and tooltips the Parameters panel shows, marked
-# with PALPATE_TRANSLATE_NOOP (base/params/FieldTable.h), which lupdate reads as QT_TRANSLATE_NOOP.
-file(GLOB_RECURSE PALPATE_TR_ENGINE_SOURCES CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/engine/*.cpp")
+# The engine's parameter tables and exercise kinds hold the labels and tooltips the panels show,
+# marked with PALPATE_TRANSLATE_NOOP (base/params/FieldTable.h), which lupdate reads as
+# QT_TRANSLATE_NOOP; some are in headers (the kinds' shared numbers).
+file(GLOB_RECURSE PALPATE_TR_ENGINE_SOURCES CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/engine/*.cpp"
+  "${PROJECT_SOURCE_DIR}/engine/*.h")
 list(APPEND PALPATE_TR_SOURCES ${PALPATE_TR_ENGINE_SOURCES})
 
 qt_add_translations(palpate_gui

@@ -859,42 +859,6 @@
         <translation>Das Netz „%1“ wurde nicht gefunden.</translation>
     </message>
     <message>
-        <source>Centre:</source>
-        <translation>Mittelpunkt:</translation>
-    </message>
-    <message>
-        <source>Radius:</source>
-        <translation>Radius:</translation>
-    </message>
-    <message>
-        <source>Stiffness factor:</source>
-        <translation>Steifigkeitsfaktor:</translation>
-    </message>
-    <message>
-        <source>Band from:</source>
-        <translation>Band von:</translation>
-    </message>
-    <message>
-        <source>Band to:</source>
-        <translation>Band bis:</translation>
-    </message>
-    <message>
-        <source>Tolerance:</source>
-        <translation>Toleranz:</translation>
-    </message>
-    <message>
-        <source>A new exercise: press a sequence of surface targets, each with a force window and a hold.</source>
-        <translation>Eine neue Übung: eine Folge von Zielen auf der Oberfläche drücken, jedes mit einem Kraftfenster und einer Haltezeit.</translation>
-    </message>
-    <message>
-        <source>A new exercise: find a hidden stiff inclusion by palpation and mark it.</source>
-        <translation>Eine neue Übung: einen verborgenen steifen Einschluss durch Abtasten finden und markieren.</translation>
-    </message>
-    <message>
-        <source>A new exercise: trace a path on the surface, keeping the force in a band.</source>
-        <translation>Eine neue Übung: einem Pfad auf der Oberfläche folgen und die Kraft in einem Band halten.</translation>
-    </message>
-    <message>
         <source>New: %1</source>
         <translation>Neu: %1</translation>
     </message>
@@ -1043,46 +1007,6 @@
         <translation>Knoten</translation>
     </message>
     <message>
-        <source>Fmin N</source>
-        <translation>Fmin N</translation>
-    </message>
-    <message>
-        <source>Fmax N</source>
-        <translation>Fmax N</translation>
-    </message>
-    <message>
-        <source>Hold s</source>
-        <translation>Halten s</translation>
-    </message>
-    <message>
-        <source>Tol. mm</source>
-        <translation>Tol. mm</translation>
-    </message>
-    <message>
-        <source>The order the trainee presses them in.</source>
-        <translation>Die Reihenfolge, in der der Teilnehmer sie drückt.</translation>
-    </message>
-    <message>
-        <source>The target&apos;s vertex, in the mesh file&apos;s numbering (vertex).</source>
-        <translation>Der Knoten des Ziels, in der Nummerierung der Netzdatei (vertex).</translation>
-    </message>
-    <message>
-        <source>The force window&apos;s lower end, N (force_min_n).</source>
-        <translation>Untere Grenze des Kraftfensters, N (force_min_n).</translation>
-    </message>
-    <message>
-        <source>The force window&apos;s upper end, N (force_max_n).</source>
-        <translation>Obere Grenze des Kraftfensters, N (force_max_n).</translation>
-    </message>
-    <message>
-        <source>How long the force must stay in the window without a break, s (hold_s).</source>
-        <translation>Wie lange die Kraft ohne Unterbrechung im Fenster bleiben muss, s (hold_s).</translation>
-    </message>
-    <message>
-        <source>How close to the target the contact must be, mm (tolerance_mm).</source>
-        <translation>Wie nah am Ziel der Kontakt sein muss, mm (tolerance_mm).</translation>
-    </message>
-    <message>
         <source>Add by clicking</source>
         <translation>Per Klick hinzufügen</translation>
     </message>
@@ -1091,64 +1015,8 @@
         <translation>Verschieben</translation>
     </message>
     <message>
-        <source>The next click on the mesh moves the selected target there.</source>
-        <translation>Der nächste Klick auf das Netz verschiebt das gewählte Ziel dorthin.</translation>
-    </message>
-    <message>
-        <source>Remove the selected target (Delete).</source>
-        <translation>Das gewählte Ziel entfernen (Entf).</translation>
-    </message>
-    <message>
-        <source>Move the selected target earlier (Ctrl+Up).</source>
-        <translation>Das gewählte Ziel nach vorne verschieben (Strg+Hoch).</translation>
-    </message>
-    <message>
-        <source>Move the selected target later (Ctrl+Down).</source>
-        <translation>Das gewählte Ziel nach hinten verschieben (Strg+Runter).</translation>
-    </message>
-    <message>
         <source>Place by clicking</source>
         <translation>Per Klick platzieren</translation>
-    </message>
-    <message>
-        <source>The next click on the mesh puts the inclusion&apos;s centre there.</source>
-        <translation>Der nächste Klick auf das Netz setzt dort den Mittelpunkt des Einschlusses.</translation>
-    </message>
-    <message>
-        <source>Vertices this close to the centre are in the inclusion (find_lump.inclusion.radius_mm).</source>
-        <translation>Knoten so nah am Mittelpunkt gehören zum Einschluss (find_lump.inclusion.radius_mm).</translation>
-    </message>
-    <message>
-        <source>The inclusion&apos;s slopes are multiplied by this, in (0, 1]: smaller is stiffer (find_lump.inclusion.stiffness_factor).</source>
-        <translation>Die Steigungen des Einschlusses werden damit multipliziert, in (0, 1]: kleiner ist steifer (find_lump.inclusion.stiffness_factor).</translation>
-    </message>
-    <message>
-        <source>The next click on the mesh moves the selected path point there.</source>
-        <translation>Der nächste Klick auf das Netz verschiebt den gewählten Pfadpunkt dorthin.</translation>
-    </message>
-    <message>
-        <source>Remove the selected path point (Delete).</source>
-        <translation>Den gewählten Pfadpunkt entfernen (Entf).</translation>
-    </message>
-    <message>
-        <source>Move the selected point earlier on the path (Ctrl+Up).</source>
-        <translation>Den gewählten Punkt auf dem Pfad nach vorne verschieben (Strg+Hoch).</translation>
-    </message>
-    <message>
-        <source>Move the selected point later on the path (Ctrl+Down).</source>
-        <translation>Den gewählten Punkt auf dem Pfad nach hinten verschieben (Strg+Runter).</translation>
-    </message>
-    <message>
-        <source>The force band&apos;s lower end (trace.force_min_n).</source>
-        <translation>Untere Grenze des Kraftbands (trace.force_min_n).</translation>
-    </message>
-    <message>
-        <source>The force band&apos;s upper end (trace.force_max_n).</source>
-        <translation>Obere Grenze des Kraftbands (trace.force_max_n).</translation>
-    </message>
-    <message>
-        <source>A path point is covered by contact this close to it (trace.tolerance_mm).</source>
-        <translation>Ein Pfadpunkt gilt als abgedeckt, wenn der Kontakt so nah ist (trace.tolerance_mm).</translation>
     </message>
     <message>
         <source>Rubric</source>
@@ -1275,30 +1143,6 @@
         <translation>(%1, %2, %3) mm</translation>
     </message>
     <message>
-        <source>vertex %1</source>
-        <translation>Knoten %1</translation>
-    </message>
-    <message>
-        <source>(%1, %2, %3) mm, snapped to the nearest vertex</source>
-        <translation>(%1, %2, %3) mm, auf den nächsten Knoten gesetzt</translation>
-    </message>
-    <message>
-        <source>%1.  vertex %2</source>
-        <translation>%1.  Knoten %2</translation>
-    </message>
-    <message>
-        <source>%1.  (%2, %3, %4) mm</source>
-        <translation>%1.  (%2, %3, %4) mm</translation>
-    </message>
-    <message>
-        <source>  (start)</source>
-        <translation>  (Start)</translation>
-    </message>
-    <message>
-        <source>  (end)</source>
-        <translation>  (Ende)</translation>
-    </message>
-    <message>
         <source>Weights total %1; the score is 100 × Σ wᵢsᵢ / Σ wᵢ.</source>
         <translation>Summe der Gewichte %1; die Punktzahl ist 100 × Σ wᵢsᵢ / Σ wᵢ.</translation>
     </message>
@@ -1323,32 +1167,8 @@
         <translation>übermäßige Kraft</translation>
     </message>
     <message>
-        <source>inclusion radius</source>
-        <translation>Einschlussradius</translation>
-    </message>
-    <message>
-        <source>stiffness factor</source>
-        <translation>Steifigkeitsfaktor</translation>
-    </message>
-    <message>
-        <source>band&apos;s lower force</source>
-        <translation>untere Kraft des Bands</translation>
-    </message>
-    <message>
-        <source>band&apos;s upper force</source>
-        <translation>obere Kraft des Bands</translation>
-    </message>
-    <message>
-        <source>trace tolerance</source>
-        <translation>Pfadtoleranz</translation>
-    </message>
-    <message>
         <source>Change %1</source>
         <translation>%1 ändern</translation>
-    </message>
-    <message>
-        <source>Change target %1&apos;s %2</source>
-        <translation>%2 von Ziel %1 ändern</translation>
     </message>
     <message>
         <source>Change the rubric&apos;s %1</source>
@@ -1371,38 +1191,6 @@
         <translation>Typ zu %1 ändern</translation>
     </message>
     <message>
-        <source>Remove target %1</source>
-        <translation>Ziel %1 entfernen</translation>
-    </message>
-    <message>
-        <source>Remove path point %1</source>
-        <translation>Pfadpunkt %1 entfernen</translation>
-    </message>
-    <message>
-        <source>Move target %1 up</source>
-        <translation>Ziel %1 nach oben</translation>
-    </message>
-    <message>
-        <source>Move target %1 down</source>
-        <translation>Ziel %1 nach unten</translation>
-    </message>
-    <message>
-        <source>Move path point %1 up</source>
-        <translation>Pfadpunkt %1 nach oben</translation>
-    </message>
-    <message>
-        <source>Move path point %1 down</source>
-        <translation>Pfadpunkt %1 nach unten</translation>
-    </message>
-    <message>
-        <source>Click the mesh where the lump&apos;s centre goes; Esc cancels.</source>
-        <translation>Auf das Netz klicken, wo der Mittelpunkt der Verhärtung liegen soll; Esc bricht ab.</translation>
-    </message>
-    <message>
-        <source>Click the mesh where the selected point goes; Esc cancels.</source>
-        <translation>Auf das Netz klicken, wohin der gewählte Punkt soll; Esc bricht ab.</translation>
-    </message>
-    <message>
         <source>The viewport does not show this exercise&apos;s mesh: press Show this mesh first.</source>
         <translation>Das Ansichtsfenster zeigt nicht das Netz dieser Übung: zuerst „Dieses Netz zeigen“ drücken.</translation>
     </message>
@@ -1413,22 +1201,6 @@
     <message>
         <source>Vertex %1 is not on the drawn mesh.</source>
         <translation>Knoten %1 liegt nicht auf dem gezeichneten Netz.</translation>
-    </message>
-    <message>
-        <source>Add target %1</source>
-        <translation>Ziel %1 hinzufügen</translation>
-    </message>
-    <message>
-        <source>Add path point %1</source>
-        <translation>Pfadpunkt %1 hinzufügen</translation>
-    </message>
-    <message>
-        <source>Place the lump</source>
-        <translation>Verhärtung platzieren</translation>
-    </message>
-    <message>
-        <source>Move point %1</source>
-        <translation>Punkt %1 verschieben</translation>
     </message>
     <message>
         <source>mesh: &apos;%1&apos; is not found beside the exercise file or under resources/</source>
@@ -1523,14 +1295,6 @@
         <translation>Tick-Budget</translation>
     </message>
     <message>
-        <source>While on, each click on the tissue appends a target there, with the last target&apos;s window, hold and tolerance; the first gets a window the tissue reaches with the mouse (Esc stops).</source>
-        <translation>Solange aktiv, hängt jeder Klick auf das Gewebe dort ein Ziel an, mit Fenster, Haltezeit und Toleranz des letzten Ziels; das erste bekommt ein Fenster, das das Gewebe mit der Maus erreicht (Esc beendet).</translation>
-    </message>
-    <message>
-        <source>Click the tissue to place a target; Esc to stop.</source>
-        <translation>Auf das Gewebe klicken, um ein Ziel zu setzen; Esc beendet.</translation>
-    </message>
-    <message>
         <source>tissue_preset: whether the targets can be reached with the mouse is not known: %1</source>
         <translation>tissue_preset: ob die Ziele mit der Maus erreichbar sind, ist nicht bekannt: %1</translation>
     </message>
@@ -1545,14 +1309,6 @@
     <message>
         <source>%1: target %2 cannot be reached with the mouse: pressing %3 mm deep (the deepest) gives %4 N, below its window&apos;s %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.</source>
         <translation>%1: Ziel %2 ist mit der Maus nicht erreichbar: %3 mm tief gedrückt (am tiefsten) ergibt %4 N, unter den %5 N seines Fensters. Das Fenster auf höchstens %4 N senken%6 oder ein steiferes Gewebe-Preset wählen.</translation>
-    </message>
-    <message>
-        <source>While on, each click on the tissue appends a path point there; the first sets a band the tissue reaches with the mouse, if the band is still the default (Esc stops).</source>
-        <translation>Solange aktiv, hängt jeder Klick auf das Gewebe dort einen Pfadpunkt an; der erste setzt ein Band, das das Gewebe mit der Maus erreicht, solange das Band noch das voreingestellte ist (Esc beendet).</translation>
-    </message>
-    <message>
-        <source>Click the tissue to add path points in order; Esc to stop.</source>
-        <translation>Auf das Gewebe klicken, um Pfadpunkte der Reihe nach hinzuzufügen; Esc beendet.</translation>
     </message>
     <message>
         <source>tissue_preset: whether the band can be reached with the mouse is not known: %1</source>
@@ -1611,8 +1367,144 @@
         <translation>mesh_unit: Die Ansicht zeigt %1 in %2 gelesen, diese Übung liest es in %3: „Dieses Netz zeigen“ drücken, um Punkte per Klick zu setzen</translation>
     </message>
     <message>
-        <source>%1 is a detect-lumps exercise, which this editor cannot edit yet: edit its file (docs/scoring.md lists the keys); trainees can run it.</source>
-        <translation>%1 ist eine Übung „Knoten finden“, die dieser Editor noch nicht bearbeiten kann: Bearbeiten Sie die Datei (docs/scoring.md nennt die Schlüssel); Lernende können sie ausführen.</translation>
+        <source>Show the live score</source>
+        <translation>Live-Bewertung zeigen</translation>
+    </message>
+    <message>
+        <source>Hide the live score</source>
+        <translation>Live-Bewertung ausblenden</translation>
+    </message>
+    <message>
+        <source>press a sequence of surface targets, each with a force window and a hold.</source>
+        <translation>eine Folge von Zielen auf der Oberfläche drücken, jedes mit Kraftfenster und Haltezeit.</translation>
+    </message>
+    <message>
+        <source>find a hidden stiff inclusion by palpation and mark it.</source>
+        <translation>eine verborgene steife Einlagerung ertasten und markieren.</translation>
+    </message>
+    <message>
+        <source>trace a path on the surface, keeping the force in a band.</source>
+        <translation>einem Pfad auf der Oberfläche folgen und die Kraft in einem Band halten.</translation>
+    </message>
+    <message>
+        <source>examine the whole surface for lumps under it (or none), mark each and finish.</source>
+        <translation>die ganze Oberfläche auf Knoten darunter (oder keine) untersuchen, jeden markieren und abschließen.</translation>
+    </message>
+    <message>
+        <source>A new exercise: %1</source>
+        <translation>Eine neue Übung: %1</translation>
+    </message>
+    <message>
+        <source>Show the score while it runs</source>
+        <translation>Bewertung während der Übung zeigen</translation>
+    </message>
+    <message>
+        <source>Whether the trainee sees the score so far (show_live_score). Off by default where it would give the answer away: in detecting lumps a mark on a lump would raise it.</source>
+        <translation>Ob die Lernenden die bisherige Bewertung sehen (show_live_score). Standardmäßig aus, wo sie die Antwort verraten würde: beim Erkennen von Knoten würde eine Markierung auf einem Knoten sie erhöhen.</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>The order the trainee follows.</source>
+        <translation>Die Reihenfolge, der die Lernenden folgen.</translation>
+    </message>
+    <message>
+        <source>The item&apos;s number.</source>
+        <translation>Die Nummer des Eintrags.</translation>
+    </message>
+    <message>
+        <source>Its vertex, in the mesh file&apos;s numbering (vertex).</source>
+        <translation>Sein Knotenpunkt, in der Nummerierung der Netzdatei (vertex).</translation>
+    </message>
+    <message>
+        <source>The next click on the mesh moves the selected row&apos;s point there.</source>
+        <translation>Der nächste Klick auf das Netz verschiebt den Punkt der gewählten Zeile dorthin.</translation>
+    </message>
+    <message>
+        <source>Remove the selected row (Delete).</source>
+        <translation>Die gewählte Zeile entfernen (Entf).</translation>
+    </message>
+    <message>
+        <source>Move the selected row earlier (Ctrl+Up).</source>
+        <translation>Die gewählte Zeile nach vorn schieben (Strg+Hoch).</translation>
+    </message>
+    <message>
+        <source>Move the selected row later (Ctrl+Down).</source>
+        <translation>Die gewählte Zeile nach hinten schieben (Strg+Runter).</translation>
+    </message>
+    <message>
+        <source> (start)</source>
+        <translation> (Anfang)</translation>
+    </message>
+    <message>
+        <source> (end)</source>
+        <translation> (Ende)</translation>
+    </message>
+    <message>
+        <source>Change %1&apos;s %2</source>
+        <translation>%2 von %1 ändern</translation>
+    </message>
+    <message>
+        <source>Remove %1</source>
+        <translation>%1 entfernen</translation>
+    </message>
+    <message>
+        <source>Move %1 up</source>
+        <translation>%1 nach oben</translation>
+    </message>
+    <message>
+        <source>Move %1 down</source>
+        <translation>%1 nach unten</translation>
+    </message>
+    <message>
+        <source>Click the tissue to place %1, and more after it; Esc to stop.</source>
+        <translation>Klicken Sie auf das Gewebe, um %1 zu setzen, und weitere danach; Esc beendet.</translation>
+    </message>
+    <message>
+        <source>Click the mesh where the point goes; Esc cancels.</source>
+        <translation>Klicken Sie auf das Netz, wo der Punkt hin soll; Esc bricht ab.</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>%1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>%1 verschieben</translation>
+    </message>
+    <message>
+        <source>tissue_preset: whether the lumps can be felt is not known: %1</source>
+        <translation>tissue_preset: ob die Knoten fühlbar sind, ist nicht bekannt: %1</translation>
+    </message>
+    <message>
+        <source>%1: feeling lump %2 takes about %3 N, at or above the excessive force %4 N: the trainee who finds it is marked down for pressing too hard. Make it shallower, or raise the excessive force.</source>
+        <translation>%1: um Knoten %2 zu fühlen, braucht es etwa %3 N, mindestens die übermäßige Kraft %4 N: wer ihn findet, verliert Punkte für zu starkes Drücken. Legen Sie ihn flacher, oder erhöhen Sie die übermäßige Kraft.</translation>
+    </message>
+    <message>
+        <source>%1: feeling lump %2 takes about %3 N, more than a desktop device renders (%4 N). Make it shallower, or choose a softer tissue preset.</source>
+        <translation>%1: um Knoten %2 zu fühlen, braucht es etwa %3 N, mehr als ein Desktop-Gerät ausgibt (%4 N). Legen Sie ihn flacher, oder wählen Sie eine weichere Gewebevorgabe.</translation>
+    </message>
+    <message>
+        <source>%1: lump %2 cannot be felt with the mouse: the surface above it does not sink to its top (%3 mm under it) however deep the mouse presses. Make it shallower, or choose a softer tissue preset.</source>
+        <translation>%1: Knoten %2 ist mit der Maus nicht fühlbar: die Oberfläche darüber sinkt nicht bis zu seiner Oberseite (%3 mm darunter), wie tief die Maus auch drückt. Legen Sie ihn flacher, oder wählen Sie eine weichere Gewebevorgabe.</translation>
+    </message>
+    <message>
+        <source>%1: lump %2 cannot be felt with the mouse: its top lies %3 mm under the surface; the surface sinks that far under a press %4 mm deep, and the lump is felt a wheel step (%5 mm) deeper, but the mouse presses at most %6 mm deep. Make it at most %7 mm deep, or train this one with a device.</source>
+        <translation>%1: Knoten %2 ist mit der Maus nicht fühlbar: seine Oberseite liegt %3 mm unter der Oberfläche; die Oberfläche sinkt bei einem %4 mm tiefen Druck so weit ein, und der Knoten ist einen Radschritt (%5 mm) tiefer fühlbar, aber die Maus drückt höchstens %6 mm tief. Legen Sie ihn höchstens %7 mm tief, oder üben Sie diesen mit einem Gerät.</translation>
+    </message>
+    <message>
+        <source>tissue_preset: whether the mouse presses hard enough to examine is not known: %1</source>
+        <translation>tissue_preset: ob die Maus fest genug drückt, um zu untersuchen, ist nicht bekannt: %1</translation>
+    </message>
+    <message>
+        <source>coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives %2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as examined. Lower it to %4 N (a press a third as deep), or choose a stiffer tissue preset.</source>
+        <translation>coverage.min_force_n: mit der Maus lässt sich dieses Gewebe nicht untersuchen: ein %1 mm tiefer Druck (der tiefste) gibt auf dem größten Teil der Oberfläche %2 N, unter der Untersuchungskraft %3 N, sodass nichts, was die Lernenden tun, als untersucht zählt. Senken Sie sie auf %4 N (ein Druck, ein Drittel so tief), oder wählen Sie eine steifere Gewebevorgabe.</translation>
+    </message>
+    <message>
+        <source>Copied %1 beside it, so that the exercise opens on other computers.</source>
+        <translation>%1 daneben kopiert, damit die Übung auf anderen Rechnern öffnet.</translation>
     </message>
 </context>
 <context>
@@ -1746,6 +1638,154 @@
     <message>
         <source>lighter than %1 N counts as not examined: press deeper (with the mouse: scroll the wheel)</source>
         <translation>leichter als %1 N gilt als nicht untersucht: tiefer drücken (mit der Maus: Mausrad drehen)</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <source>The lump&apos;s radius, mm (radius_mm).</source>
+        <translation>Der Radius des Knotens, mm (radius_mm).</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Tiefe</translation>
+    </message>
+    <message>
+        <source>From the surface to the lump&apos;s top, mm (depth_mm): a deeper lump needs a firmer press to be felt.</source>
+        <translation>Von der Oberfläche bis zur Oberseite des Knotens, mm (depth_mm): ein tieferer Knoten braucht festeren Druck, um gefühlt zu werden.</translation>
+    </message>
+    <message>
+        <source>Contrast</source>
+        <translation>Kontrast</translation>
+    </message>
+    <message>
+        <source>How many times stiffer than the tissue the lump is (contrast), above 1: lower is harder to feel.</source>
+        <translation>Wie viel Mal steifer als das Gewebe der Knoten ist (contrast), über 1: niedriger ist schwerer zu fühlen.</translation>
+    </message>
+    <message>
+        <source>Mark within:</source>
+        <translation>Markieren innerhalb:</translation>
+    </message>
+    <message>
+        <source>A mark this far outside a lump&apos;s radius still finds it, mm (detect_lumps.tolerance_mm).</source>
+        <translation>Eine Markierung so weit außerhalb des Knotenradius findet ihn noch, mm (detect_lumps.tolerance_mm).</translation>
+    </message>
+    <message>
+        <source>Lump %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>While on, each click on the tissue hides a lump under it, with the last lump&apos;s radius, depth and contrast (Esc stops). No lumps: healthy tissue, where reporting nothing is the finding.</source>
+        <translation>Solange an, verbirgt jeder Klick auf das Gewebe einen Knoten darunter, mit Radius, Tiefe und Kontrast des letzten Knotens (Esc beendet). Keine Knoten: gesundes Gewebe, wo nichts zu melden der Befund ist.</translation>
+    </message>
+    <message>
+        <source>Vertices this close to the centre are in the inclusion (find_lump.inclusion.radius_mm).</source>
+        <translation>Knotenpunkte so nah am Mittelpunkt gehören zur Einlagerung (find_lump.inclusion.radius_mm).</translation>
+    </message>
+    <message>
+        <source>Stiffness</source>
+        <translation>Steifigkeit</translation>
+    </message>
+    <message>
+        <source>The inclusion&apos;s slopes are multiplied by this, in (0, 1]: smaller is stiffer (find_lump.inclusion.stiffness_factor).</source>
+        <translation>Die Steigungen der Einlagerung werden hiermit multipliziert, in (0, 1]: kleiner ist steifer (find_lump.inclusion.stiffness_factor).</translation>
+    </message>
+    <message>
+        <source>Inclusion</source>
+        <translation>Einlagerung</translation>
+    </message>
+    <message>
+        <source>The next click on the mesh puts the inclusion&apos;s centre there.</source>
+        <translation>Der nächste Klick auf das Netz setzt den Mittelpunkt der Einlagerung dorthin.</translation>
+    </message>
+    <message>
+        <source>Examined from:</source>
+        <translation>Untersucht ab:</translation>
+    </message>
+    <message>
+        <source>A contact lighter than this examines nothing (coverage.min_force_n): keep it within the trainee&apos;s reach (the gauge shows it).</source>
+        <translation>Ein leichterer Kontakt untersucht nichts (coverage.min_force_n): halten Sie ihn in Reichweite der Lernenden (die Anzeige zeigt ihn).</translation>
+    </message>
+    <message>
+        <source>Examined around:</source>
+        <translation>Untersucht im Umkreis:</translation>
+    </message>
+    <message>
+        <source>A contact examines the surface this close to it, mm (coverage.radius_mm).</source>
+        <translation>Ein Kontakt untersucht die Oberfläche so nah um ihn, mm (coverage.radius_mm).</translation>
+    </message>
+    <message>
+        <source>Fmin</source>
+        <translation>Fmin</translation>
+    </message>
+    <message>
+        <source>The force window&apos;s lower end, N (force_min_n).</source>
+        <translation>Unteres Ende des Kraftfensters, N (force_min_n).</translation>
+    </message>
+    <message>
+        <source>Fmax</source>
+        <translation>Fmax</translation>
+    </message>
+    <message>
+        <source>The force window&apos;s upper end, N (force_max_n).</source>
+        <translation>Oberes Ende des Kraftfensters, N (force_max_n).</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Halten</translation>
+    </message>
+    <message>
+        <source>How long the force must stay in the window without a break, s (hold_s).</source>
+        <translation>Wie lange die Kraft ohne Unterbrechung im Fenster bleiben muss, s (hold_s).</translation>
+    </message>
+    <message>
+        <source>Tol.</source>
+        <translation>Tol.</translation>
+    </message>
+    <message>
+        <source>How close to the target the contact must be, mm (tolerance_mm).</source>
+        <translation>Wie nah am Ziel der Kontakt sein muss, mm (tolerance_mm).</translation>
+    </message>
+    <message>
+        <source>Target %1</source>
+        <translation>Ziel %1</translation>
+    </message>
+    <message>
+        <source>While on, each click on the tissue appends a target there, with the last target&apos;s window, hold and tolerance; the first gets a window the tissue reaches with the mouse (Esc stops).</source>
+        <translation>Solange an, fügt jeder Klick auf das Gewebe dort ein Ziel an, mit Fenster, Haltezeit und Toleranz des letzten Ziels; das erste erhält ein Fenster, das das Gewebe mit der Maus erreicht (Esc beendet).</translation>
+    </message>
+    <message>
+        <source>Band from:</source>
+        <translation>Band von:</translation>
+    </message>
+    <message>
+        <source>The force band&apos;s lower end (trace.force_min_n).</source>
+        <translation>Unteres Ende des Kraftbands (trace.force_min_n).</translation>
+    </message>
+    <message>
+        <source>Band to:</source>
+        <translation>Band bis:</translation>
+    </message>
+    <message>
+        <source>The force band&apos;s upper end (trace.force_max_n).</source>
+        <translation>Oberes Ende des Kraftbands (trace.force_max_n).</translation>
+    </message>
+    <message>
+        <source>Tolerance:</source>
+        <translation>Toleranz:</translation>
+    </message>
+    <message>
+        <source>A path point is covered by contact this close to it (trace.tolerance_mm).</source>
+        <translation>Ein Pfadpunkt gilt als abgedeckt bei Kontakt so nah an ihm (trace.tolerance_mm).</translation>
+    </message>
+    <message>
+        <source>Path point %1</source>
+        <translation>Pfadpunkt %1</translation>
+    </message>
+    <message>
+        <source>While on, each click on the tissue appends a path point there; the first sets a band the tissue reaches with the mouse, if the band is still the default (Esc stops).</source>
+        <translation>Solange an, fügt jeder Klick auf das Gewebe dort einen Pfadpunkt an; der erste setzt ein Band, das das Gewebe mit der Maus erreicht, wenn das Band noch der Standard ist (Esc beendet).</translation>
     </message>
 </context>
 <context>

@@ -859,42 +859,6 @@
         <translation>Jejaring &apos;%1&apos; tidak ditemui.</translation>
     </message>
     <message>
-        <source>Centre:</source>
-        <translation>Pusat:</translation>
-    </message>
-    <message>
-        <source>Radius:</source>
-        <translation>Jejari:</translation>
-    </message>
-    <message>
-        <source>Stiffness factor:</source>
-        <translation>Faktor kekakuan:</translation>
-    </message>
-    <message>
-        <source>Band from:</source>
-        <translation>Jalur dari:</translation>
-    </message>
-    <message>
-        <source>Band to:</source>
-        <translation>Jalur hingga:</translation>
-    </message>
-    <message>
-        <source>Tolerance:</source>
-        <translation>Toleransi:</translation>
-    </message>
-    <message>
-        <source>A new exercise: press a sequence of surface targets, each with a force window and a hold.</source>
-        <translation>Latihan baharu: tekan satu jujukan sasaran pada permukaan, setiap satu dengan tetingkap daya dan tempoh tahan.</translation>
-    </message>
-    <message>
-        <source>A new exercise: find a hidden stiff inclusion by palpation and mark it.</source>
-        <translation>Latihan baharu: cari rangkuman keras yang tersembunyi dengan palpasi dan tandakannya.</translation>
-    </message>
-    <message>
-        <source>A new exercise: trace a path on the surface, keeping the force in a band.</source>
-        <translation>Latihan baharu: jejaki laluan pada permukaan, dengan daya kekal dalam satu jalur.</translation>
-    </message>
-    <message>
         <source>New: %1</source>
         <translation>Baharu: %1</translation>
     </message>
@@ -1043,46 +1007,6 @@
         <translation>Bucu</translation>
     </message>
     <message>
-        <source>Fmin N</source>
-        <translation>Fmin N</translation>
-    </message>
-    <message>
-        <source>Fmax N</source>
-        <translation>Fmax N</translation>
-    </message>
-    <message>
-        <source>Hold s</source>
-        <translation>Tahan s</translation>
-    </message>
-    <message>
-        <source>Tol. mm</source>
-        <translation>Tol. mm</translation>
-    </message>
-    <message>
-        <source>The order the trainee presses them in.</source>
-        <translation>Urutan pelatih menekannya.</translation>
-    </message>
-    <message>
-        <source>The target&apos;s vertex, in the mesh file&apos;s numbering (vertex).</source>
-        <translation>Bucu sasaran, dalam penomboran fail jejaring (vertex).</translation>
-    </message>
-    <message>
-        <source>The force window&apos;s lower end, N (force_min_n).</source>
-        <translation>Hujung bawah tetingkap daya, N (force_min_n).</translation>
-    </message>
-    <message>
-        <source>The force window&apos;s upper end, N (force_max_n).</source>
-        <translation>Hujung atas tetingkap daya, N (force_max_n).</translation>
-    </message>
-    <message>
-        <source>How long the force must stay in the window without a break, s (hold_s).</source>
-        <translation>Berapa lama daya mesti kekal dalam tetingkap tanpa putus, s (hold_s).</translation>
-    </message>
-    <message>
-        <source>How close to the target the contact must be, mm (tolerance_mm).</source>
-        <translation>Berapa dekat sentuhan mesti dengan sasaran, mm (tolerance_mm).</translation>
-    </message>
-    <message>
         <source>Add by clicking</source>
         <translation>Tambah dengan mengklik</translation>
     </message>
@@ -1091,64 +1015,8 @@
         <translation>Alih</translation>
     </message>
     <message>
-        <source>The next click on the mesh moves the selected target there.</source>
-        <translation>Klik seterusnya pada jejaring mengalihkan sasaran yang dipilih ke situ.</translation>
-    </message>
-    <message>
-        <source>Remove the selected target (Delete).</source>
-        <translation>Buang sasaran yang dipilih (Delete).</translation>
-    </message>
-    <message>
-        <source>Move the selected target earlier (Ctrl+Up).</source>
-        <translation>Alihkan sasaran yang dipilih lebih awal (Ctrl+Up).</translation>
-    </message>
-    <message>
-        <source>Move the selected target later (Ctrl+Down).</source>
-        <translation>Alihkan sasaran yang dipilih lebih lewat (Ctrl+Down).</translation>
-    </message>
-    <message>
         <source>Place by clicking</source>
         <translation>Letak dengan mengklik</translation>
-    </message>
-    <message>
-        <source>The next click on the mesh puts the inclusion&apos;s centre there.</source>
-        <translation>Klik seterusnya pada jejaring meletakkan pusat rangkuman di situ.</translation>
-    </message>
-    <message>
-        <source>Vertices this close to the centre are in the inclusion (find_lump.inclusion.radius_mm).</source>
-        <translation>Bucu sedekat ini dengan pusat berada dalam rangkuman (find_lump.inclusion.radius_mm).</translation>
-    </message>
-    <message>
-        <source>The inclusion&apos;s slopes are multiplied by this, in (0, 1]: smaller is stiffer (find_lump.inclusion.stiffness_factor).</source>
-        <translation>Cerun rangkuman didarab dengan nilai ini, dalam (0, 1]: lebih kecil lebih keras (find_lump.inclusion.stiffness_factor).</translation>
-    </message>
-    <message>
-        <source>The next click on the mesh moves the selected path point there.</source>
-        <translation>Klik seterusnya pada jejaring mengalihkan titik laluan yang dipilih ke situ.</translation>
-    </message>
-    <message>
-        <source>Remove the selected path point (Delete).</source>
-        <translation>Buang titik laluan yang dipilih (Delete).</translation>
-    </message>
-    <message>
-        <source>Move the selected point earlier on the path (Ctrl+Up).</source>
-        <translation>Alihkan titik yang dipilih lebih awal pada laluan (Ctrl+Up).</translation>
-    </message>
-    <message>
-        <source>Move the selected point later on the path (Ctrl+Down).</source>
-        <translation>Alihkan titik yang dipilih lebih lewat pada laluan (Ctrl+Down).</translation>
-    </message>
-    <message>
-        <source>The force band&apos;s lower end (trace.force_min_n).</source>
-        <translation>Hujung bawah jalur daya (trace.force_min_n).</translation>
-    </message>
-    <message>
-        <source>The force band&apos;s upper end (trace.force_max_n).</source>
-        <translation>Hujung atas jalur daya (trace.force_max_n).</translation>
-    </message>
-    <message>
-        <source>A path point is covered by contact this close to it (trace.tolerance_mm).</source>
-        <translation>Titik laluan dikira diliputi oleh sentuhan sedekat ini (trace.tolerance_mm).</translation>
     </message>
     <message>
         <source>Rubric</source>
@@ -1275,30 +1143,6 @@
         <translation>(%1, %2, %3) mm</translation>
     </message>
     <message>
-        <source>vertex %1</source>
-        <translation>bucu %1</translation>
-    </message>
-    <message>
-        <source>(%1, %2, %3) mm, snapped to the nearest vertex</source>
-        <translation>(%1, %2, %3) mm, dilekatkan pada bucu terdekat</translation>
-    </message>
-    <message>
-        <source>%1.  vertex %2</source>
-        <translation>%1.  bucu %2</translation>
-    </message>
-    <message>
-        <source>%1.  (%2, %3, %4) mm</source>
-        <translation>%1.  (%2, %3, %4) mm</translation>
-    </message>
-    <message>
-        <source>  (start)</source>
-        <translation>  (mula)</translation>
-    </message>
-    <message>
-        <source>  (end)</source>
-        <translation>  (tamat)</translation>
-    </message>
-    <message>
         <source>Weights total %1; the score is 100 × Σ wᵢsᵢ / Σ wᵢ.</source>
         <translation>Jumlah pemberat %1; markah ialah 100 × Σ wᵢsᵢ / Σ wᵢ.</translation>
     </message>
@@ -1323,32 +1167,8 @@
         <translation>daya berlebihan</translation>
     </message>
     <message>
-        <source>inclusion radius</source>
-        <translation>jejari rangkuman</translation>
-    </message>
-    <message>
-        <source>stiffness factor</source>
-        <translation>faktor kekakuan</translation>
-    </message>
-    <message>
-        <source>band&apos;s lower force</source>
-        <translation>daya bawah jalur</translation>
-    </message>
-    <message>
-        <source>band&apos;s upper force</source>
-        <translation>daya atas jalur</translation>
-    </message>
-    <message>
-        <source>trace tolerance</source>
-        <translation>toleransi jejakan</translation>
-    </message>
-    <message>
         <source>Change %1</source>
         <translation>Ubah %1</translation>
-    </message>
-    <message>
-        <source>Change target %1&apos;s %2</source>
-        <translation>Ubah %2 sasaran %1</translation>
     </message>
     <message>
         <source>Change the rubric&apos;s %1</source>
@@ -1371,38 +1191,6 @@
         <translation>Ubah jenis kepada %1</translation>
     </message>
     <message>
-        <source>Remove target %1</source>
-        <translation>Buang sasaran %1</translation>
-    </message>
-    <message>
-        <source>Remove path point %1</source>
-        <translation>Buang titik laluan %1</translation>
-    </message>
-    <message>
-        <source>Move target %1 up</source>
-        <translation>Naikkan sasaran %1</translation>
-    </message>
-    <message>
-        <source>Move target %1 down</source>
-        <translation>Turunkan sasaran %1</translation>
-    </message>
-    <message>
-        <source>Move path point %1 up</source>
-        <translation>Naikkan titik laluan %1</translation>
-    </message>
-    <message>
-        <source>Move path point %1 down</source>
-        <translation>Turunkan titik laluan %1</translation>
-    </message>
-    <message>
-        <source>Click the mesh where the lump&apos;s centre goes; Esc cancels.</source>
-        <translation>Klik jejaring di tempat pusat ketulan; Esc membatalkan.</translation>
-    </message>
-    <message>
-        <source>Click the mesh where the selected point goes; Esc cancels.</source>
-        <translation>Klik jejaring di tempat titik yang dipilih; Esc membatalkan.</translation>
-    </message>
-    <message>
         <source>The viewport does not show this exercise&apos;s mesh: press Show this mesh first.</source>
         <translation>Port pandangan tidak menunjukkan jejaring latihan ini: tekan Tunjukkan jejaring ini dahulu.</translation>
     </message>
@@ -1413,22 +1201,6 @@
     <message>
         <source>Vertex %1 is not on the drawn mesh.</source>
         <translation>Bucu %1 tiada pada jejaring yang dilukis.</translation>
-    </message>
-    <message>
-        <source>Add target %1</source>
-        <translation>Tambah sasaran %1</translation>
-    </message>
-    <message>
-        <source>Add path point %1</source>
-        <translation>Tambah titik laluan %1</translation>
-    </message>
-    <message>
-        <source>Place the lump</source>
-        <translation>Letak ketulan</translation>
-    </message>
-    <message>
-        <source>Move point %1</source>
-        <translation>Alih titik %1</translation>
     </message>
     <message>
         <source>mesh: &apos;%1&apos; is not found beside the exercise file or under resources/</source>
@@ -1523,14 +1295,6 @@
         <translation>bajet tik</translation>
     </message>
     <message>
-        <source>While on, each click on the tissue appends a target there, with the last target&apos;s window, hold and tolerance; the first gets a window the tissue reaches with the mouse (Esc stops).</source>
-        <translation>Semasa aktif, setiap klik pada tisu menambah sasaran di situ, dengan tetingkap, masa tahan dan toleransi sasaran terakhir; yang pertama mendapat tetingkap yang dicapai tisu dengan tetikus (Esc menghentikan).</translation>
-    </message>
-    <message>
-        <source>Click the tissue to place a target; Esc to stop.</source>
-        <translation>Klik tisu untuk meletakkan sasaran; Esc untuk berhenti.</translation>
-    </message>
-    <message>
         <source>tissue_preset: whether the targets can be reached with the mouse is not known: %1</source>
         <translation>tissue_preset: sama ada sasaran boleh dicapai dengan tetikus tidak diketahui: %1</translation>
     </message>
@@ -1545,14 +1309,6 @@
     <message>
         <source>%1: target %2 cannot be reached with the mouse: pressing %3 mm deep (the deepest) gives %4 N, below its window&apos;s %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.</source>
         <translation>%1: sasaran %2 tidak boleh dicapai dengan tetikus: menekan sedalam %3 mm (paling dalam) memberi %4 N, di bawah %5 N tetingkapnya. Turunkan tetingkap kepada paling banyak %4 N%6, atau pilih praset tisu yang lebih keras.</translation>
-    </message>
-    <message>
-        <source>While on, each click on the tissue appends a path point there; the first sets a band the tissue reaches with the mouse, if the band is still the default (Esc stops).</source>
-        <translation>Semasa aktif, setiap klik pada tisu menambah titik laluan di situ; yang pertama menetapkan jalur yang dicapai tisu dengan tetikus, jika jalur masih lalai (Esc menghentikan).</translation>
-    </message>
-    <message>
-        <source>Click the tissue to add path points in order; Esc to stop.</source>
-        <translation>Klik tisu untuk menambah titik laluan mengikut urutan; Esc untuk berhenti.</translation>
     </message>
     <message>
         <source>tissue_preset: whether the band can be reached with the mouse is not known: %1</source>
@@ -1611,8 +1367,144 @@
         <translation>mesh_unit: paparan menunjukkan %1 dibaca dalam %2, latihan ini membacanya dalam %3: tekan Tunjukkan jejaring ini untuk meletakkan titik dengan mengklik</translation>
     </message>
     <message>
-        <source>%1 is a detect-lumps exercise, which this editor cannot edit yet: edit its file (docs/scoring.md lists the keys); trainees can run it.</source>
-        <translation>%1 ialah latihan kesan ketulan yang belum boleh disunting oleh penyunting ini: sunting failnya (docs/scoring.md menyenaraikan kunci); pelatih boleh menjalankannya.</translation>
+        <source>Show the live score</source>
+        <translation>Tunjukkan skor langsung</translation>
+    </message>
+    <message>
+        <source>Hide the live score</source>
+        <translation>Sembunyikan skor langsung</translation>
+    </message>
+    <message>
+        <source>press a sequence of surface targets, each with a force window and a hold.</source>
+        <translation>tekan satu siri sasaran permukaan, setiap satu dengan tetingkap daya dan tempoh tahan.</translation>
+    </message>
+    <message>
+        <source>find a hidden stiff inclusion by palpation and mark it.</source>
+        <translation>cari rangkuman keras yang tersembunyi dengan palpasi dan tandakannya.</translation>
+    </message>
+    <message>
+        <source>trace a path on the surface, keeping the force in a band.</source>
+        <translation>ikut laluan pada permukaan sambil mengekalkan daya dalam satu jalur.</translation>
+    </message>
+    <message>
+        <source>examine the whole surface for lumps under it (or none), mark each and finish.</source>
+        <translation>periksa seluruh permukaan untuk ketulan di bawahnya (atau tiada), tandakan setiap satu dan selesai.</translation>
+    </message>
+    <message>
+        <source>A new exercise: %1</source>
+        <translation>Latihan baharu: %1</translation>
+    </message>
+    <message>
+        <source>Show the score while it runs</source>
+        <translation>Tunjukkan skor semasa berjalan</translation>
+    </message>
+    <message>
+        <source>Whether the trainee sees the score so far (show_live_score). Off by default where it would give the answer away: in detecting lumps a mark on a lump would raise it.</source>
+        <translation>Sama ada pelatih melihat skor setakat ini (show_live_score). Mati secara lalai apabila ia akan mendedahkan jawapan: dalam mengesan ketulan, tanda pada ketulan akan menaikkannya.</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>The order the trainee follows.</source>
+        <translation>Urutan yang diikuti oleh pelatih.</translation>
+    </message>
+    <message>
+        <source>The item&apos;s number.</source>
+        <translation>Nombor item.</translation>
+    </message>
+    <message>
+        <source>Its vertex, in the mesh file&apos;s numbering (vertex).</source>
+        <translation>Bucunya, mengikut penomboran fail jejaring (vertex).</translation>
+    </message>
+    <message>
+        <source>The next click on the mesh moves the selected row&apos;s point there.</source>
+        <translation>Klik seterusnya pada jejaring mengalihkan titik baris yang dipilih ke situ.</translation>
+    </message>
+    <message>
+        <source>Remove the selected row (Delete).</source>
+        <translation>Buang baris yang dipilih (Delete).</translation>
+    </message>
+    <message>
+        <source>Move the selected row earlier (Ctrl+Up).</source>
+        <translation>Alihkan baris yang dipilih lebih awal (Ctrl+Up).</translation>
+    </message>
+    <message>
+        <source>Move the selected row later (Ctrl+Down).</source>
+        <translation>Alihkan baris yang dipilih lebih lewat (Ctrl+Down).</translation>
+    </message>
+    <message>
+        <source> (start)</source>
+        <translation> (mula)</translation>
+    </message>
+    <message>
+        <source> (end)</source>
+        <translation> (akhir)</translation>
+    </message>
+    <message>
+        <source>Change %1&apos;s %2</source>
+        <translation>Tukar %2 bagi %1</translation>
+    </message>
+    <message>
+        <source>Remove %1</source>
+        <translation>Buang %1</translation>
+    </message>
+    <message>
+        <source>Move %1 up</source>
+        <translation>Alihkan %1 ke atas</translation>
+    </message>
+    <message>
+        <source>Move %1 down</source>
+        <translation>Alihkan %1 ke bawah</translation>
+    </message>
+    <message>
+        <source>Click the tissue to place %1, and more after it; Esc to stop.</source>
+        <translation>Klik pada tisu untuk meletakkan %1, dan lebih lagi selepasnya; Esc untuk berhenti.</translation>
+    </message>
+    <message>
+        <source>Click the mesh where the point goes; Esc cancels.</source>
+        <translation>Klik pada jejaring di tempat titik itu; Esc membatalkan.</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>Tambah %1</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Alihkan %1</translation>
+    </message>
+    <message>
+        <source>tissue_preset: whether the lumps can be felt is not known: %1</source>
+        <translation>tissue_preset: sama ada ketulan boleh dirasa tidak diketahui: %1</translation>
+    </message>
+    <message>
+        <source>%1: feeling lump %2 takes about %3 N, at or above the excessive force %4 N: the trainee who finds it is marked down for pressing too hard. Make it shallower, or raise the excessive force.</source>
+        <translation>%1: merasa ketulan %2 memerlukan kira-kira %3 N, pada atau melebihi daya berlebihan %4 N: pelatih yang menemuinya kehilangan markah kerana menekan terlalu kuat. Jadikan ia lebih cetek, atau naikkan daya berlebihan.</translation>
+    </message>
+    <message>
+        <source>%1: feeling lump %2 takes about %3 N, more than a desktop device renders (%4 N). Make it shallower, or choose a softer tissue preset.</source>
+        <translation>%1: merasa ketulan %2 memerlukan kira-kira %3 N, lebih daripada yang dihasilkan peranti meja (%4 N). Jadikan ia lebih cetek, atau pilih pratetap tisu yang lebih lembut.</translation>
+    </message>
+    <message>
+        <source>%1: lump %2 cannot be felt with the mouse: the surface above it does not sink to its top (%3 mm under it) however deep the mouse presses. Make it shallower, or choose a softer tissue preset.</source>
+        <translation>%1: ketulan %2 tidak dapat dirasa dengan tetikus: permukaan di atasnya tidak tenggelam ke bahagian atasnya (%3 mm di bawahnya) sedalam mana pun tetikus menekan. Jadikan ia lebih cetek, atau pilih pratetap tisu yang lebih lembut.</translation>
+    </message>
+    <message>
+        <source>%1: lump %2 cannot be felt with the mouse: its top lies %3 mm under the surface; the surface sinks that far under a press %4 mm deep, and the lump is felt a wheel step (%5 mm) deeper, but the mouse presses at most %6 mm deep. Make it at most %7 mm deep, or train this one with a device.</source>
+        <translation>%1: ketulan %2 tidak dapat dirasa dengan tetikus: bahagian atasnya terletak %3 mm di bawah permukaan; permukaan tenggelam sejauh itu di bawah tekanan sedalam %4 mm, dan ketulan dirasa satu langkah roda (%5 mm) lebih dalam, tetapi tetikus menekan paling dalam %6 mm. Jadikan ia paling dalam %7 mm, atau latih yang ini dengan peranti.</translation>
+    </message>
+    <message>
+        <source>tissue_preset: whether the mouse presses hard enough to examine is not known: %1</source>
+        <translation>tissue_preset: sama ada tetikus menekan cukup kuat untuk memeriksa tidak diketahui: %1</translation>
+    </message>
+    <message>
+        <source>coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives %2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as examined. Lower it to %4 N (a press a third as deep), or choose a stiffer tissue preset.</source>
+        <translation>coverage.min_force_n: tetikus tidak dapat memeriksa tisu ini: tekanan sedalam %1 mm (paling dalam) memberi %2 N pada kebanyakan permukaan, di bawah daya pemeriksaan %3 N, jadi tiada apa yang dilakukan pelatih dikira sebagai diperiksa. Turunkan kepada %4 N (tekanan sepertiga dalamnya), atau pilih pratetap tisu yang lebih keras.</translation>
+    </message>
+    <message>
+        <source>Copied %1 beside it, so that the exercise opens on other computers.</source>
+        <translation>%1 disalin di sebelahnya, supaya latihan dibuka pada komputer lain.</translation>
     </message>
 </context>
 <context>
@@ -1745,6 +1637,154 @@
     <message>
         <source>lighter than %1 N counts as not examined: press deeper (with the mouse: scroll the wheel)</source>
         <translation>lebih ringan daripada %1 N dikira tidak diperiksa: tekan lebih dalam (dengan tetikus: putar roda)</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Jejari</translation>
+    </message>
+    <message>
+        <source>The lump&apos;s radius, mm (radius_mm).</source>
+        <translation>Jejari ketulan, mm (radius_mm).</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Kedalaman</translation>
+    </message>
+    <message>
+        <source>From the surface to the lump&apos;s top, mm (depth_mm): a deeper lump needs a firmer press to be felt.</source>
+        <translation>Dari permukaan ke bahagian atas ketulan, mm (depth_mm): ketulan yang lebih dalam memerlukan tekanan lebih kuat untuk dirasa.</translation>
+    </message>
+    <message>
+        <source>Contrast</source>
+        <translation>Kontras</translation>
+    </message>
+    <message>
+        <source>How many times stiffer than the tissue the lump is (contrast), above 1: lower is harder to feel.</source>
+        <translation>Berapa kali lebih keras ketulan daripada tisu (contrast), melebihi 1: lebih rendah lebih sukar dirasa.</translation>
+    </message>
+    <message>
+        <source>Mark within:</source>
+        <translation>Tanda dalam lingkungan:</translation>
+    </message>
+    <message>
+        <source>A mark this far outside a lump&apos;s radius still finds it, mm (detect_lumps.tolerance_mm).</source>
+        <translation>Tanda sejauh ini di luar jejari ketulan masih menemuinya, mm (detect_lumps.tolerance_mm).</translation>
+    </message>
+    <message>
+        <source>Lump %1</source>
+        <translation>Ketulan %1</translation>
+    </message>
+    <message>
+        <source>While on, each click on the tissue hides a lump under it, with the last lump&apos;s radius, depth and contrast (Esc stops). No lumps: healthy tissue, where reporting nothing is the finding.</source>
+        <translation>Semasa hidup, setiap klik pada tisu menyembunyikan ketulan di bawahnya, dengan jejari, kedalaman dan kontras ketulan terakhir (Esc berhenti). Tiada ketulan: tisu sihat, di mana tidak melaporkan apa-apa ialah dapatannya.</translation>
+    </message>
+    <message>
+        <source>Vertices this close to the centre are in the inclusion (find_lump.inclusion.radius_mm).</source>
+        <translation>Bucu sedekat ini dengan pusat berada dalam rangkuman (find_lump.inclusion.radius_mm).</translation>
+    </message>
+    <message>
+        <source>Stiffness</source>
+        <translation>Kekerasan</translation>
+    </message>
+    <message>
+        <source>The inclusion&apos;s slopes are multiplied by this, in (0, 1]: smaller is stiffer (find_lump.inclusion.stiffness_factor).</source>
+        <translation>Cerun rangkuman didarab dengan nilai ini, dalam (0, 1]: lebih kecil lebih keras (find_lump.inclusion.stiffness_factor).</translation>
+    </message>
+    <message>
+        <source>Inclusion</source>
+        <translation>Rangkuman</translation>
+    </message>
+    <message>
+        <source>The next click on the mesh puts the inclusion&apos;s centre there.</source>
+        <translation>Klik seterusnya pada jejaring meletakkan pusat rangkuman di situ.</translation>
+    </message>
+    <message>
+        <source>Examined from:</source>
+        <translation>Diperiksa dari:</translation>
+    </message>
+    <message>
+        <source>A contact lighter than this examines nothing (coverage.min_force_n): keep it within the trainee&apos;s reach (the gauge shows it).</source>
+        <translation>Sentuhan yang lebih ringan daripada ini tidak memeriksa apa-apa (coverage.min_force_n): kekalkan dalam capaian pelatih (tolok menunjukkannya).</translation>
+    </message>
+    <message>
+        <source>Examined around:</source>
+        <translation>Diperiksa sekitar:</translation>
+    </message>
+    <message>
+        <source>A contact examines the surface this close to it, mm (coverage.radius_mm).</source>
+        <translation>Sentuhan memeriksa permukaan sedekat ini dengannya, mm (coverage.radius_mm).</translation>
+    </message>
+    <message>
+        <source>Fmin</source>
+        <translation>Fmin</translation>
+    </message>
+    <message>
+        <source>The force window&apos;s lower end, N (force_min_n).</source>
+        <translation>Hujung bawah tetingkap daya, N (force_min_n).</translation>
+    </message>
+    <message>
+        <source>Fmax</source>
+        <translation>Fmax</translation>
+    </message>
+    <message>
+        <source>The force window&apos;s upper end, N (force_max_n).</source>
+        <translation>Hujung atas tetingkap daya, N (force_max_n).</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Tahan</translation>
+    </message>
+    <message>
+        <source>How long the force must stay in the window without a break, s (hold_s).</source>
+        <translation>Berapa lama daya mesti kekal dalam tetingkap tanpa putus, s (hold_s).</translation>
+    </message>
+    <message>
+        <source>Tol.</source>
+        <translation>Tol.</translation>
+    </message>
+    <message>
+        <source>How close to the target the contact must be, mm (tolerance_mm).</source>
+        <translation>Sedekat mana sentuhan mesti dengan sasaran, mm (tolerance_mm).</translation>
+    </message>
+    <message>
+        <source>Target %1</source>
+        <translation>Sasaran %1</translation>
+    </message>
+    <message>
+        <source>While on, each click on the tissue appends a target there, with the last target&apos;s window, hold and tolerance; the first gets a window the tissue reaches with the mouse (Esc stops).</source>
+        <translation>Semasa hidup, setiap klik pada tisu menambah sasaran di situ, dengan tetingkap, tempoh tahan dan toleransi sasaran terakhir; yang pertama mendapat tetingkap yang dicapai tisu dengan tetikus (Esc berhenti).</translation>
+    </message>
+    <message>
+        <source>Band from:</source>
+        <translation>Jalur dari:</translation>
+    </message>
+    <message>
+        <source>The force band&apos;s lower end (trace.force_min_n).</source>
+        <translation>Hujung bawah jalur daya (trace.force_min_n).</translation>
+    </message>
+    <message>
+        <source>Band to:</source>
+        <translation>Jalur hingga:</translation>
+    </message>
+    <message>
+        <source>The force band&apos;s upper end (trace.force_max_n).</source>
+        <translation>Hujung atas jalur daya (trace.force_max_n).</translation>
+    </message>
+    <message>
+        <source>Tolerance:</source>
+        <translation>Toleransi:</translation>
+    </message>
+    <message>
+        <source>A path point is covered by contact this close to it (trace.tolerance_mm).</source>
+        <translation>Titik laluan diliputi oleh sentuhan sedekat ini dengannya (trace.tolerance_mm).</translation>
+    </message>
+    <message>
+        <source>Path point %1</source>
+        <translation>Titik laluan %1</translation>
+    </message>
+    <message>
+        <source>While on, each click on the tissue appends a path point there; the first sets a band the tissue reaches with the mouse, if the band is still the default (Esc stops).</source>
+        <translation>Semasa hidup, setiap klik pada tisu menambah titik laluan di situ; yang pertama menetapkan jalur yang dicapai tisu dengan tetikus, jika jalur masih lalai (Esc berhenti).</translation>
     </message>
 </context>
 <context>

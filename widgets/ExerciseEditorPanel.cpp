@@ -9,6 +9,8 @@
 #include "widgets/ExerciseEditCommands.h"
 #include "widgets/Viewport.h"
 
+#include "device/HapticDevice.h"
+#include "engine/exercise/ExerciseTravel.h"
 #include "engine/exercise/ExerciseGeometry.h"
 #include "engine/scene/TissuePreset.h"
 #include "engine/scoring/TargetReachability.h"
@@ -59,8 +61,13 @@ namespace {
 QString qs(const std::string& s) { return QString::fromStdString(s); }
 std::string ss(const QString& s) { return s.toStdString(); }
 
-constexpr ExerciseType kTypes[] = {ExerciseType::PressTargets, ExerciseType::FindLump, ExerciseType::Trace};
-int typeIndex(ExerciseType type) { return int(std::find(std::begin(kTypes), std::end(kTypes), type) - std::begin(kTypes)); }
+/// The index of a type in exerciseKinds() (the order of the type combo, the New actions and the pages).
+int typeIndex(ExerciseType type) {
+    const auto kinds = exerciseKinds();
+    for (std::size_t i = 0; i < kinds.size(); ++i)
+        if (kinds[i]->type() == type) return int(i);
+    return 0;
+}
 
 /// Files the shipped resources are found by (their folder is resources/).
 constexpr const char* kResourceAnchors[] = {"meshes/stomach_3970.off", "meshes/sphere_1442.off",
@@ -69,10 +76,8 @@ constexpr const char* kDefaultMesh = "meshes/stomach_3970.off";
 /// The new exercise's tissue: the stomach wall on the default stomach, else the gel phantom.
 constexpr const char* kDefaultPresets[] = {"presets/tissues/stomach_wall.json", "presets/tissues/phantom_gel.json"};
 
-/// Press-target table columns.
-enum TargetColumn { kTargetNumber, kTargetVertex, kTargetForceMin, kTargetForceMax, kTargetHold, kTargetTolerance, kTargetColumns };
-/// The JSON key each column edits (problems naming it mark the cell).
-constexpr const char* kTargetKeys[] = {"", "vertex", "force_min_n", "force_max_n", "hold_s", "tolerance_mm"};
+/// The item table's columns: its number, its vertex, then the item's numbers (ExerciseEditing.h).
+enum ItemColumn { kItemNumber, kItemVertex, kItemNumbers };
 enum RubricColumn { kRubricMetric, kRubricUnit, kRubricWeight, kRubricFull, kRubricZero, kRubricColumns };
 constexpr const char* kRubricKeys[] = {"", "", "weight", "full", "zero"};
 
@@ -313,13 +318,14 @@ void ExerciseEditorPanel::createActions() {
     mRedoAction->setObjectName(QStringLiteral("exerciseRedoAction"));
     mRedoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)});
     mRedoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo"), style()->standardIcon(QStyle::SP_ArrowForward)));
-    for (int i = 0; i < 3; ++i) {
-        mNewActions[i] = new QAction(this);
-        mNewActions[i]->setObjectName(QStringLiteral("newExerciseAction%1").arg(i));
-        const ExerciseType type = kTypes[i];
-        connect(mNewActions[i], &QAction::triggered, this, [this, type] {
+    for (const ExerciseKind* kind : exerciseKinds()) {
+        auto* action = new QAction(this);
+        action->setObjectName(QStringLiteral("newExerciseAction_") + qs(std::string(kind->key())));
+        const ExerciseType type = kind->type();
+        connect(action, &QAction::triggered, this, [this, type] {
             if (confirmDiscard()) newExercise(type);
         });
+        mNewActions.push_back(action);
     }
     mOpenAction = new QAction(this);
     mOpenAction->setObjectName(QStringLiteral("openExerciseAction"));
@@ -401,7 +407,7 @@ QHBoxLayout* ExerciseEditorPanel::buildFileRow() {
 void ExerciseEditorPanel::buildExerciseForm(QFormLayout* exerciseForm) {
     mTypeCombo = new QComboBox(mExerciseGroup);
     mTypeCombo->setObjectName(QStringLiteral("exerciseTypeCombo"));
-    for (int i = 0; i < 3; ++i) mTypeCombo->addItem(QString());
+    for (std::size_t i = 0; i < exerciseKinds().size(); ++i) mTypeCombo->addItem(QString());
     exerciseForm->addRow(rowLabel(QT_TR_NOOP("Type:")), mTypeCombo);
     mNameEdit = new QLineEdit(mExerciseGroup);
     mNameEdit->setObjectName(QStringLiteral("exerciseNameEdit"));
@@ -474,6 +480,9 @@ void ExerciseEditorPanel::buildLimitsForm(QFormLayout* limitsForm) {
     limitsForm->addRow(rowLabel(QT_TR_NOOP("Damage beyond:")), mDisplacementSpin);
     mExcessiveSpin = doubleSpin(mLimitsGroup, "excessiveForceSpin", 0.0, 1000.0, 2, 0.1);
     limitsForm->addRow(rowLabel(QT_TR_NOOP("Excessive force:")), mExcessiveSpin);
+    mLiveScoreCheck = new QCheckBox(mLimitsGroup);
+    mLiveScoreCheck->setObjectName(QStringLiteral("liveScoreCheck"));
+    limitsForm->addRow(mLiveScoreCheck);
     // Level-of-detail targets (docs/lod.md): optional; the Level of Detail dock plans against them.
     mNeedsCheck = new QCheckBox(tr("State level-of-detail targets"), mLimitsGroup);
     mNeedsCheck->setObjectName(QStringLiteral("needsCheck"));
@@ -580,15 +589,13 @@ QHBoxLayout* ExerciseEditorPanel::buildFeedback() {
 void ExerciseEditorPanel::connectEdits() {
     // Each edit is one undo step.
     connect(mTypeCombo, &QComboBox::activated, this, [this](int index) {
-        if (index >= 0 && index < 3) changeType(kTypes[index]);
+        if (index >= 0 && index < int(exerciseKinds().size())) changeType(exerciseKinds()[std::size_t(index)]->type());
     });
     connect(mNameEdit, &QLineEdit::textEdited, this, [this] { onFieldEdited(kName); });
     connect(mDescriptionEdit, &QPlainTextEdit::textChanged, this, [this] { onFieldEdited(kDescription); });
     const std::pair<QDoubleSpinBox*, Field> spins[] = {
-        {mTimeLimitSpin, kTimeLimit},         {mDisplacementSpin, kDisplacementLimit}, {mExcessiveSpin, kExcessiveForce},
-        {mLumpRadiusSpin, kLumpRadius},       {mLumpStiffnessSpin, kLumpStiffness},    {mTraceMinSpin, kTraceForceMin},
-        {mTraceMaxSpin, kTraceForceMax},      {mTraceToleranceSpin, kTraceTolerance},  {mNeedsErrorSpin, kNeedsError},
-        {mNeedsBudgetSpin, kNeedsBudget},     {mMeshScaleSpin, kMeshScale}};
+        {mTimeLimitSpin, kTimeLimit},   {mDisplacementSpin, kDisplacementLimit}, {mExcessiveSpin, kExcessiveForce},
+        {mNeedsErrorSpin, kNeedsError}, {mNeedsBudgetSpin, kNeedsBudget},        {mMeshScaleSpin, kMeshScale}};
     for (const auto& [spin, field] : spins) {
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, field = field] { onFieldEdited(field); });
         // Leaving the field ends its step: a later edit of it is a step of its own.
@@ -614,6 +621,12 @@ void ExerciseEditorPanel::connectEdits() {
         if (path.isEmpty()) showMessage(tr("The mesh '%1' cannot be found.").arg(qs(mExercise.meshPath)), true);
         else emit meshRequested(path);
     });
+    connect(mLiveScoreCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (mShowing) return;
+        Exercise e = mExercise;
+        e.showLiveScore = on;
+        pushEdit(e, on ? tr("Show the live score") : tr("Hide the live score"));
+    });
     connect(mRubricTable, &QTableWidget::cellChanged, this, &ExerciseEditorPanel::onRubricCellChanged);
     connect(mResetRubricButton, &QPushButton::clicked, this, &ExerciseEditorPanel::resetRubric);
 
@@ -625,137 +638,117 @@ void ExerciseEditorPanel::connectEdits() {
 }
 
 void ExerciseEditorPanel::buildTypePages() {
-    // Tool buttons: push buttons' minimum widths would not fit five in a narrow dock.
-    auto listButtons = [this](QWidget* page, QToolButton*& add, QToolButton*& move, QToolButton*& remove,
-                              QToolButton*& up, QToolButton*& down, const char* prefix) {
-        auto* row = new QHBoxLayout;
-        row->setSpacing(4);
-        add = new QToolButton(page);
-        add->setObjectName(QLatin1String(prefix) + QStringLiteral("AddButton"));
-        add->setCheckable(true);
-        move = new QToolButton(page);
-        move->setObjectName(QLatin1String(prefix) + QStringLiteral("MoveButton"));
-        move->setCheckable(true);
-        remove = new QToolButton(page);
-        remove->setObjectName(QLatin1String(prefix) + QStringLiteral("RemoveButton"));
-        up = new QToolButton(page);
-        up->setObjectName(QLatin1String(prefix) + QStringLiteral("UpButton"));
-        up->setArrowType(Qt::UpArrow);
-        down = new QToolButton(page);
-        down->setObjectName(QLatin1String(prefix) + QStringLiteral("DownButton"));
-        down->setArrowType(Qt::DownArrow);
-        row->addWidget(add);
-        row->addWidget(move);
-        row->addWidget(remove);
-        row->addStretch(1);
-        row->addWidget(up);
-        row->addWidget(down);
-        connect(remove, &QToolButton::clicked, this, &ExerciseEditorPanel::removeSelected);
-        connect(up, &QToolButton::clicked, this, [this] { moveSelected(-1); });
-        connect(down, &QToolButton::clicked, this, [this] { moveSelected(+1); });
-        return row;
-    };
-
-    // Press targets: the table, edited in place.
-    auto* targetsPage = new QWidget(mTypePages);
-    targetsPage->setObjectName(QStringLiteral("pressTargetsPage"));
-    auto* targetsLayout = new QVBoxLayout(targetsPage);
-    targetsLayout->setContentsMargins(0, 0, 0, 0);
-    mTargetTable = new QTableWidget(0, kTargetColumns, targetsPage);
-    mTargetTable->setObjectName(QStringLiteral("targetTable"));
-    mTargetTable->verticalHeader()->setVisible(false);
-    mTargetTable->verticalHeader()->setDefaultSectionSize(mTargetTable->fontMetrics().height() + 8);
-    mTargetTable->setSelectionBehavior(QAbstractItemView::SelectRows);
-    mTargetTable->setSelectionMode(QAbstractItemView::SingleSelection);
-    mTargetTable->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
-                                  QAbstractItemView::AnyKeyPressed);
-    mTargetTable->setItemDelegateForColumn(kTargetVertex, new NumberDelegate(mTargetTable, 0, 0x7fffffff, 0));
-    mTargetTable->setItemDelegateForColumn(kTargetForceMin, new NumberDelegate(mTargetTable, 0.0, 1000.0, 3));
-    mTargetTable->setItemDelegateForColumn(kTargetForceMax, new NumberDelegate(mTargetTable, 0.0, 1000.0, 3));
-    mTargetTable->setItemDelegateForColumn(kTargetHold, new NumberDelegate(mTargetTable, 0.0, 600.0, 3));
-    mTargetTable->setItemDelegateForColumn(kTargetTolerance, new NumberDelegate(mTargetTable, 0.0, 1000.0, 3));
-    mTargetTable->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    mTargetTable->horizontalHeader()->setSectionResizeMode(kTargetNumber, QHeaderView::ResizeToContents);
-    mTargetTable->horizontalHeader()->setMinimumSectionSize(24);
-    for (QAction* action : {mRemoveAction, mMoveUpAction, mMoveDownAction}) mTargetTable->addAction(action);
-    mRemoveAction->setShortcutContext(Qt::WidgetShortcut);
-    mMoveUpAction->setShortcutContext(Qt::WidgetShortcut);
-    mMoveDownAction->setShortcutContext(Qt::WidgetShortcut);
-    targetsLayout->addWidget(mTargetTable);
-    targetsLayout->addLayout(listButtons(targetsPage, mAddTargetButton, mMoveTargetButton, mRemoveTargetButton,
-                                         mTargetUpButton, mTargetDownButton, "target"));
-    connect(mTargetTable, &QTableWidget::cellChanged, this, &ExerciseEditorPanel::onTargetCellChanged);
-    connect(mTargetTable, &QTableWidget::itemSelectionChanged, this, [this] {
-        if (mShowing) return;
-        const auto rows = mTargetTable->selectionModel()->selectedRows();
-        setSelectedIndex(rows.isEmpty() ? -1 : rows.front().row());
-    });
-    connect(mAddTargetButton, &QToolButton::clicked, this,
-            [this](bool on) { setPlacing(on ? Placing::AddTarget : Placing::None); });
-    connect(mMoveTargetButton, &QToolButton::clicked, this,
-            [this](bool on) { setPlacing(on ? Placing::MoveSelected : Placing::None); });
-    mTypePages->addWidget(targetsPage);
-
-    // Find the lump: the inclusion.
-    auto* lumpPage = new QWidget(mTypePages);
-    lumpPage->setObjectName(QStringLiteral("findLumpPage"));
-    auto* lumpForm = new QFormLayout(lumpPage);
-    lumpForm->setContentsMargins(0, 0, 0, 0);
-    lumpForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    {
-        auto* row = new QWidget(lumpPage);
-        auto* layout = new QHBoxLayout(row);
-        layout->setContentsMargins(0, 0, 0, 0);
-        mLumpCentreLabel = new QLabel(row);
-        mLumpCentreLabel->setObjectName(QStringLiteral("lumpCentreLabel"));
-        mPlaceLumpButton = new QPushButton(row);
-        mPlaceLumpButton->setObjectName(QStringLiteral("placeLumpButton"));
-        mPlaceLumpButton->setCheckable(true);
-        layout->addWidget(mLumpCentreLabel, 1);
-        layout->addWidget(mPlaceLumpButton);
-        lumpForm->addRow(rowLabel(QT_TR_NOOP("Centre:")), row);
-    }
-    mLumpRadiusSpin = doubleSpin(lumpPage, "lumpRadiusSpin", 0.0, 1000.0, 2, 0.5);
-    lumpForm->addRow(rowLabel(QT_TR_NOOP("Radius:")), mLumpRadiusSpin);
-    mLumpStiffnessSpin = doubleSpin(lumpPage, "lumpStiffnessSpin", 0.0, 1.0, 3, 0.05);
-    lumpForm->addRow(rowLabel(QT_TR_NOOP("Stiffness factor:")), mLumpStiffnessSpin);
-    connect(mPlaceLumpButton, &QPushButton::clicked, this,
-            [this](bool on) { setPlacing(on ? Placing::PlaceInclusion : Placing::None); });
-    mTypePages->addWidget(lumpPage);
-
-    // Trace: the path points and the band.
-    auto* tracePage = new QWidget(mTypePages);
-    tracePage->setObjectName(QStringLiteral("tracePage"));
-    auto* traceLayout = new QVBoxLayout(tracePage);
-    traceLayout->setContentsMargins(0, 0, 0, 0);
-    mPathList = new QListWidget(tracePage);
-    mPathList->setObjectName(QStringLiteral("pathList"));
-    mPathList->setSelectionMode(QAbstractItemView::SingleSelection);
-    mPathList->setFixedHeight(mPathList->fontMetrics().height() * 6 + 12);
-    for (QAction* action : {mRemoveAction, mMoveUpAction, mMoveDownAction}) mPathList->addAction(action);
-    traceLayout->addWidget(mPathList);
-    traceLayout->addLayout(listButtons(tracePage, mAddPointButton, mMovePointButton, mRemovePointButton, mPointUpButton,
-                                       mPointDownButton, "pathPoint"));
-    auto* traceForm = new QFormLayout;
-    traceForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    mTraceMinSpin = doubleSpin(tracePage, "traceForceMinSpin", 0.0, 1000.0, 3, 0.05);
-    traceForm->addRow(rowLabel(QT_TR_NOOP("Band from:")), mTraceMinSpin);
-    mTraceMaxSpin = doubleSpin(tracePage, "traceForceMaxSpin", 0.0, 1000.0, 3, 0.05);
-    traceForm->addRow(rowLabel(QT_TR_NOOP("Band to:")), mTraceMaxSpin);
-    mTraceToleranceSpin = doubleSpin(tracePage, "traceToleranceSpin", 0.0, 1000.0, 2, 0.5);
-    traceForm->addRow(rowLabel(QT_TR_NOOP("Tolerance:")), mTraceToleranceSpin);
-    traceLayout->addLayout(traceForm);
-    connect(mPathList, &QListWidget::itemSelectionChanged, this, [this] {
-        if (mShowing) return;
-        const auto rows = mPathList->selectionModel()->selectedRows();
-        setSelectedIndex(rows.isEmpty() ? -1 : rows.front().row());
-    });
-    connect(mAddPointButton, &QToolButton::clicked, this,
-            [this](bool on) { setPlacing(on ? Placing::AddPathPoint : Placing::None); });
-    connect(mMovePointButton, &QToolButton::clicked, this,
-            [this](bool on) { setPlacing(on ? Placing::MoveSelected : Placing::None); });
-    mTypePages->addWidget(tracePage);
+    for (const ExerciseKind* kind : exerciseKinds()) mTypePages->addWidget(buildKindPage(*kind));
 }
+
+QWidget* ExerciseEditorPanel::buildKindPage(const ExerciseKind& kind) {
+    const ExerciseEditing& editing = kind.editing();
+    const PlacedItems& items = editing.items;
+    const QString name = QLatin1String(items.listKey);
+    KindPage p;
+    p.kind = &kind;
+    p.page = new QWidget(mTypePages);
+    p.page->setObjectName(qs(std::string(kind.key())) + QStringLiteral("Page"));
+    auto* layout = new QVBoxLayout(p.page);
+    layout->setContentsMargins(0, 0, 0, 0);
+
+    // The items, edited in place: number, vertex, then the item's numbers.
+    const int columns = kItemNumbers + int(items.numbers.size());
+    p.table = new QTableWidget(0, columns, p.page);
+    p.table->setObjectName(name);
+    p.table->verticalHeader()->setVisible(false);
+    p.table->verticalHeader()->setDefaultSectionSize(p.table->fontMetrics().height() + 8);
+    p.table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    p.table->setSelectionMode(items.single ? QAbstractItemView::NoSelection : QAbstractItemView::SingleSelection);
+    // Tab leaves the table: typing into the next cell would move a point by its vertex number.
+    p.table->setTabKeyNavigation(false);
+    p.table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                             QAbstractItemView::AnyKeyPressed);
+    p.table->setItemDelegateForColumn(kItemVertex, new NumberDelegate(p.table, 0, 0x7fffffff, 0));
+    for (std::size_t c = 0; c < items.numbers.size(); ++c) {
+        const EditedNumber& n = items.numbers[c];
+        p.table->setItemDelegateForColumn(kItemNumbers + int(c), new NumberDelegate(p.table, n.lo, n.hi, n.decimals));
+    }
+    p.table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    p.table->horizontalHeader()->setSectionResizeMode(kItemNumber, QHeaderView::ResizeToContents);
+    p.table->horizontalHeader()->setMinimumSectionSize(24);
+    for (QAction* action : {mRemoveAction, mMoveUpAction, mMoveDownAction}) p.table->addAction(action);
+    layout->addWidget(p.table);
+
+    // Tool buttons: push buttons' minimum widths would not fit five in a narrow dock.
+    auto* row = new QHBoxLayout;
+    row->setSpacing(4);
+    auto button = [&](const char* suffix, bool checkable) {
+        auto* b = new QToolButton(p.page);
+        b->setObjectName(name + QLatin1String(suffix));
+        b->setCheckable(checkable);
+        return b;
+    };
+    p.add = button(".add", true);
+    p.move = button(".move", true);
+    p.remove = button(".remove", false);
+    p.up = button(".up", false);
+    p.up->setArrowType(Qt::UpArrow);
+    p.down = button(".down", false);
+    p.down->setArrowType(Qt::DownArrow);
+    row->addWidget(p.add);
+    row->addWidget(p.move);
+    row->addWidget(p.remove);
+    row->addStretch(1);
+    row->addWidget(p.up);
+    row->addWidget(p.down);
+    layout->addLayout(row);
+    // A single item is placed, not added, removed or reordered; an unordered list has no order to change.
+    p.add->setVisible(!items.single);
+    p.remove->setVisible(!items.single);
+    p.up->setVisible(!items.single && items.ordered);
+    p.down->setVisible(!items.single && items.ordered);
+    connect(p.remove, &QToolButton::clicked, this, &ExerciseEditorPanel::removeSelected);
+    connect(p.up, &QToolButton::clicked, this, [this] { moveSelected(-1); });
+    connect(p.down, &QToolButton::clicked, this, [this] { moveSelected(+1); });
+    connect(p.add, &QToolButton::clicked, this, [this](bool on) { setPlacing(on ? Placing::AddItem : Placing::None); });
+    connect(p.move, &QToolButton::clicked, this,
+            [this](bool on) { setPlacing(on ? Placing::MoveSelected : Placing::None); });
+    connect(p.table, &QTableWidget::cellChanged, this, &ExerciseEditorPanel::onItemCellChanged);
+    QTableWidget* table = p.table;
+    connect(table, &QTableWidget::itemSelectionChanged, this, [this, table] {
+        if (mShowing) return;
+        const auto rows = table->selectionModel()->selectedRows();
+        setSelectedIndex(rows.isEmpty() ? -1 : rows.front().row());
+    });
+
+    // The section's numbers.
+    if (!editing.numbers.empty()) {
+        auto* form = new QFormLayout;
+        form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+        for (std::size_t i = 0; i < editing.numbers.size(); ++i) {
+            const EditedNumber& n = editing.numbers[i];
+            QDoubleSpinBox* spin = doubleSpin(p.page, n.key, n.lo, n.hi, n.decimals, n.step);
+            auto* label = new QLabel(p.page);
+            form->addRow(label, spin);
+            p.numbers.push_back(spin);
+            p.numberLabels.push_back(label);
+            const int field = kSectionNumber + int(i);
+            connect(spin, &QDoubleSpinBox::valueChanged, this, [this, field] { onFieldEdited(field); });
+            connect(spin, &QDoubleSpinBox::editingFinished, this, [this] { ++mMergeEpoch; });
+        }
+        layout->addLayout(form);
+    }
+    mPages.push_back(p);
+    return p.page;
+}
+
+ExerciseEditorPanel::KindPage& ExerciseEditorPanel::page() { return mPages[std::size_t(typeIndex(mExercise.type))]; }
+
+const ExerciseEditorPanel::KindPage& ExerciseEditorPanel::page() const {
+    return mPages[std::size_t(typeIndex(mExercise.type))];
+}
+
+int ExerciseEditorPanel::itemCount() const {
+    return int(exerciseKind(mExercise.type).editing().items.count(mExercise));
+}
+
+QAction* ExerciseEditorPanel::newAction(ExerciseType type) const { return mNewActions[std::size_t(typeIndex(type))]; }
 
 QString ExerciseEditorPanel::typeText(ExerciseType type) const {
     return exerciseText(ViewText{exerciseKind(type).label()});
@@ -765,17 +758,26 @@ void ExerciseEditorPanel::retranslateUi() {
     for (const auto& [label, text] : mRowLabels) label->setText(tr(text));
     mUndoAction->setText(tr("Undo"));
     mRedoAction->setText(tr("Redo"));
-    const QString newTips[] = {tr("A new exercise: press a sequence of surface targets, each with a force window and a hold."),
-                               tr("A new exercise: find a hidden stiff inclusion by palpation and mark it."),
-                               tr("A new exercise: trace a path on the surface, keeping the force in a band.")};
-    for (int i = 0; i < 3; ++i) {
-        mNewActions[i]->setText(tr("New: %1").arg(typeText(kTypes[i])));
-        mNewActions[i]->setToolTip(newTips[i]);
-        mTypeCombo->setItemText(i, typeText(kTypes[i]));
-        mTypeCombo->setItemData(i, newTips[i].section(QLatin1String(": "), 1), Qt::ToolTipRole);
+    // What each type asks of the trainee: the New action's and the type combo's tooltips.
+    const std::pair<ExerciseType, QString> newTips[] = {
+        {ExerciseType::PressTargets, tr("press a sequence of surface targets, each with a force window and a hold.")},
+        {ExerciseType::FindLump, tr("find a hidden stiff inclusion by palpation and mark it.")},
+        {ExerciseType::Trace, tr("trace a path on the surface, keeping the force in a band.")},
+        {ExerciseType::DetectLumps,
+         tr("examine the whole surface for lumps under it (or none), mark each and finish.")}};
+    for (const auto& [type, tip] : newTips) {
+        const int i = typeIndex(type);
+        mNewActions[std::size_t(i)]->setText(tr("New: %1").arg(typeText(type)));
+        mNewActions[std::size_t(i)]->setToolTip(tr("A new exercise: %1").arg(tip));
+        mTypeCombo->setItemText(i, typeText(type));
+        mTypeCombo->setItemData(i, tip, Qt::ToolTipRole);
     }
     mNewButton->setText(tr("New"));
     mNewButton->setToolTip(tr("A new exercise of a type; asks before unsaved changes are lost."));
+    mLiveScoreCheck->setText(tr("Show the score while it runs"));
+    mLiveScoreCheck->setToolTip(
+        tr("Whether the trainee sees the score so far (show_live_score). Off by default where it "
+           "would give the answer away: in detecting lumps a mark on a lump would raise it."));
     mOpenAction->setText(tr("Open…"));
     mOpenAction->setToolTip(tr("Open an exercise file (Ctrl+O)."));
     mSaveAction->setText(tr("Save"));
@@ -822,49 +824,38 @@ void ExerciseEditorPanel::retranslateUi() {
     mExcessiveSpin->setToolTip(tr("A force above this is excessive (force.excessive_n); every target's lower force "
                                   "must stay below it."));
 
-    mTargetTable->setHorizontalHeaderLabels(
-        {tr("#"), tr("Vertex"), tr("Fmin N"), tr("Fmax N"), tr("Hold s"), tr("Tol. mm")});
-    const QString targetTips[] = {tr("The order the trainee presses them in."),
-                                  tr("The target's vertex, in the mesh file's numbering (vertex)."),
-                                  tr("The force window's lower end, N (force_min_n)."),
-                                  tr("The force window's upper end, N (force_max_n)."),
-                                  tr("How long the force must stay in the window without a break, s (hold_s)."),
-                                  tr("How close to the target the contact must be, mm (tolerance_mm).")};
-    for (int c = 0; c < kTargetColumns; ++c)
-        if (QTableWidgetItem* header = mTargetTable->horizontalHeaderItem(c)) header->setToolTip(targetTips[c]);
-    mAddTargetButton->setText(tr("Add by clicking"));
-    mAddTargetButton->setToolTip(tr("While on, each click on the tissue appends a target there, with the last target's "
-                                    "window, hold and tolerance; the first gets a window the tissue reaches with the "
-                                    "mouse (Esc stops)."));
-    mMoveTargetButton->setText(tr("Move"));
-    mMoveTargetButton->setToolTip(tr("The next click on the mesh moves the selected target there."));
-    mRemoveTargetButton->setText(tr("Remove"));
-    mRemoveTargetButton->setToolTip(tr("Remove the selected target (Delete)."));
-    mTargetUpButton->setToolTip(tr("Move the selected target earlier (Ctrl+Up)."));
-    mTargetDownButton->setToolTip(tr("Move the selected target later (Ctrl+Down)."));
-
-    mPlaceLumpButton->setText(tr("Place by clicking"));
-    mPlaceLumpButton->setToolTip(tr("The next click on the mesh puts the inclusion's centre there."));
-    mLumpRadiusSpin->setSuffix(tr(" mm"));
-    mLumpRadiusSpin->setToolTip(tr("Vertices this close to the centre are in the inclusion (find_lump.inclusion.radius_mm)."));
-    mLumpStiffnessSpin->setToolTip(tr("The inclusion's slopes are multiplied by this, in (0, 1]: smaller is stiffer "
-                                      "(find_lump.inclusion.stiffness_factor)."));
-
-    mAddPointButton->setText(tr("Add by clicking"));
-    mAddPointButton->setToolTip(tr("While on, each click on the tissue appends a path point there; the first sets a band "
-                                   "the tissue reaches with the mouse, if the band is still the default (Esc stops)."));
-    mMovePointButton->setText(tr("Move"));
-    mMovePointButton->setToolTip(tr("The next click on the mesh moves the selected path point there."));
-    mRemovePointButton->setText(tr("Remove"));
-    mRemovePointButton->setToolTip(tr("Remove the selected path point (Delete)."));
-    mPointUpButton->setToolTip(tr("Move the selected point earlier on the path (Ctrl+Up)."));
-    mPointDownButton->setToolTip(tr("Move the selected point later on the path (Ctrl+Down)."));
-    mTraceMinSpin->setSuffix(tr(" N"));
-    mTraceMinSpin->setToolTip(tr("The force band's lower end (trace.force_min_n)."));
-    mTraceMaxSpin->setSuffix(tr(" N"));
-    mTraceMaxSpin->setToolTip(tr("The force band's upper end (trace.force_max_n)."));
-    mTraceToleranceSpin->setSuffix(tr(" mm"));
-    mTraceToleranceSpin->setToolTip(tr("A path point is covered by contact this close to it (trace.tolerance_mm)."));
+    for (KindPage& p : mPages) {
+        const PlacedItems& items = p.kind->editing().items;
+        const auto text = [](const char* english) { return exerciseText(ViewText{english}); };
+        const auto withUnit = [&](const EditedNumber& n) {
+            return *n.unit ? tr("%1 %2").arg(text(n.label), QLatin1String(n.unit)) : text(n.label);
+        };
+        QStringList headers{tr("#"), tr("Vertex")};
+        QStringList tips{items.ordered ? tr("The order the trainee follows.") : tr("The item's number."),
+                         tr("Its vertex, in the mesh file's numbering (vertex).")};
+        for (const EditedNumber& n : items.numbers) {
+            headers << withUnit(n);
+            tips << text(n.tip);
+        }
+        p.table->setHorizontalHeaderLabels(headers);
+        for (int c = 0; c < headers.size(); ++c)
+            if (QTableWidgetItem* header = p.table->horizontalHeaderItem(c)) header->setToolTip(tips[c]);
+        p.add->setText(tr("Add by clicking"));
+        p.add->setToolTip(text(items.addTip));
+        p.move->setText(items.single ? tr("Place by clicking") : tr("Move"));
+        p.move->setToolTip(items.single ? text(items.addTip)
+                                        : tr("The next click on the mesh moves the selected row's point there."));
+        p.remove->setText(tr("Remove"));
+        p.remove->setToolTip(tr("Remove the selected row (Delete)."));
+        p.up->setToolTip(tr("Move the selected row earlier (Ctrl+Up)."));
+        p.down->setToolTip(tr("Move the selected row later (Ctrl+Down)."));
+        const auto& numbers = p.kind->editing().numbers;
+        for (std::size_t i = 0; i < numbers.size(); ++i) {
+            p.numberLabels[i]->setText(text(numbers[i].label));
+            p.numbers[i]->setSuffix(*numbers[i].unit ? QLatin1Char(' ') + QLatin1String(numbers[i].unit) : QString());
+            p.numbers[i]->setToolTip(text(numbers[i].tip));
+        }
+    }
 
     mRubricGroup->setTitle(tr("Rubric"));
     mRubricTable->setHorizontalHeaderLabels({tr("Metric"), tr("Unit"), tr("Weight"), tr("Full"), tr("Zero")});
@@ -1008,6 +999,17 @@ void ExerciseEditorPanel::newExercise(ExerciseType type) {
     mSelected = -1;
     mUndoStack->clear();
     showExercise(e);
+    // An examination starts with a force the mouse examines with, a third of the way down (the
+    // file's default may be out of reach on a soft tissue).
+    if (exerciseKind(type).palpation()) {
+        const QString meshFile = resolved(mExercise, mExercise.meshPath);
+        if (const TissueMesh* mesh = checkMesh(meshFile))
+            if (const auto reach = examineReach(meshFile, *mesh); reach && reach->comfortableN >= 1e-3) {
+                e = mExercise;
+                e.coverage.minForceN = reach->comfortableN;
+                showExercise(e);
+            }
+    }
     mUndoStack->setClean();
     showMessage(QString(), false);
     updateTitle();
@@ -1020,14 +1022,6 @@ QString ExerciseEditorPanel::openExercise(const QString& path) {
         for (const std::string& error : result.errors) errors << qs(error);
         const QString text = errors.join(QLatin1Char('\n'));
         showMessage(tr("Not opened:") + QLatin1Char('\n') + text, true);
-        return text;
-    }
-    if (result.exercise->type == ExerciseType::DetectLumps) {
-        // Not editable here yet (docs/scoring.md, "detect_lumps"): said, and the file left alone.
-        const QString text = tr("%1 is a detect-lumps exercise, which this editor cannot edit yet: edit its file "
-                                "(docs/scoring.md lists the keys); trainees can run it.")
-                                 .arg(QDir::toNativeSeparators(path));
-        showMessage(text, true);
         return text;
     }
     setPlacing(Placing::None);
@@ -1056,6 +1050,21 @@ QString ExerciseEditorPanel::saveExercise(const QString& path) {
     const QString presetFile = resolved(mExercise, mExercise.tissuePresetPath);
     out.meshPath = ss(storablePath(out, meshFile));
     out.tissuePresetPath = ss(storablePath(out, presetFile));
+    // A file neither under resources/ nor in the exercise's folder would be named by its absolute
+    // path, which another computer does not have: it is copied into the folder, so that the
+    // folder travels as a whole.
+    QStringList copied;
+    for (std::string* stored : {&out.meshPath, &out.tissuePresetPath}) {
+        if (stored->empty() || !QFileInfo(qs(*stored)).isAbsolute()) continue;
+        std::string error;
+        const auto name = copyIntoFolder(*stored, ss(QFileInfo(path).absolutePath()), error);
+        if (!name) {
+            showMessage(tr("Not saved:") + QLatin1Char('\n') + qs(error), true);
+            return qs(error);
+        }
+        *stored = *name;
+        copied << qs(*name);
+    }
     const std::string error = palpate::saveExercise(out, ss(path));
     if (!error.empty()) {
         showMessage(tr("Not saved:") + QLatin1Char('\n') + qs(error), true);
@@ -1071,7 +1080,11 @@ QString ExerciseEditorPanel::saveExercise(const QString& path) {
         showExercise(out);
     }
     mUndoStack->setClean();
-    showMessage(tr("Saved %1.").arg(QDir::toNativeSeparators(mPath)), false);
+    QString saved = tr("Saved %1.").arg(QDir::toNativeSeparators(mPath));
+    if (!copied.isEmpty())
+        saved += QLatin1Char(' ') + tr("Copied %1 beside it, so that the exercise opens on other computers.")
+                                        .arg(copied.join(QStringLiteral(", ")));
+    showMessage(saved, false);
     updateTitle();
     return {};
 }
@@ -1159,48 +1172,8 @@ void ExerciseEditorPanel::showExercise(const Exercise& exercise) {
         mNeedsErrorSpin->setEnabled(e.needs.has_value());
         mNeedsBudgetSpin->setEnabled(e.needs.has_value());
 
-        // Press targets.
-        const auto& targets = e.pressTargets.targets;
-        mTargetTable->setRowCount(int(targets.size()));
-        for (int r = 0; r < int(targets.size()); ++r) {
-            const PressTarget& t = targets[std::size_t(r)];
-            setCellValue(mTargetTable, r, kTargetNumber, QString::number(r + 1), false);
-            if (t.at.vertex) setCellValue(mTargetTable, r, kTargetVertex, int(*t.at.vertex), true);
-            else
-                setCellValue(mTargetTable, r, kTargetVertex,
-                             tr("(%1, %2, %3) mm").arg(t.at.pointMm.x).arg(t.at.pointMm.y).arg(t.at.pointMm.z), false);
-            setCellValue(mTargetTable, r, kTargetForceMin, t.forceMinN, true);
-            setCellValue(mTargetTable, r, kTargetForceMax, t.forceMaxN, true);
-            setCellValue(mTargetTable, r, kTargetHold, t.holdS, true);
-            setCellValue(mTargetTable, r, kTargetTolerance, t.toleranceMm, true);
-        }
-        fitTableHeight(mTargetTable, int(targets.size()), 8);
-
-        // Find the lump.
-        const InclusionDef& inc = e.findLump.inclusion;
-        mLumpCentreLabel->setText(inc.centre.vertex ? tr("vertex %1").arg(*inc.centre.vertex)
-                                                    : tr("(%1, %2, %3) mm, snapped to the nearest vertex")
-                                                          .arg(inc.centre.pointMm.x)
-                                                          .arg(inc.centre.pointMm.y)
-                                                          .arg(inc.centre.pointMm.z));
-        setSpin(mLumpRadiusSpin, inc.radiusMm);
-        setSpin(mLumpStiffnessSpin, inc.stiffnessFactor);
-
-        // Trace.
-        const auto& path = e.trace.path;
-        while (mPathList->count() > int(path.size())) delete mPathList->takeItem(mPathList->count() - 1);
-        while (mPathList->count() < int(path.size())) mPathList->addItem(QString());
-        for (int i = 0; i < int(path.size()); ++i) {
-            const SurfacePoint& p = path[std::size_t(i)];
-            QString text = p.vertex ? tr("%1.  vertex %2").arg(i + 1).arg(*p.vertex)
-                                    : tr("%1.  (%2, %3, %4) mm").arg(i + 1).arg(p.pointMm.x).arg(p.pointMm.y).arg(p.pointMm.z);
-            if (i == 0) text += tr("  (start)");
-            else if (i + 1 == int(path.size())) text += tr("  (end)");
-            if (mPathList->item(i)->text() != text) mPathList->item(i)->setText(text);
-        }
-        setSpin(mTraceMinSpin, e.trace.forceMinN);
-        setSpin(mTraceMaxSpin, e.trace.forceMaxN);
-        setSpin(mTraceToleranceSpin, e.trace.toleranceMm);
+        mLiveScoreCheck->setChecked(showsLiveScore(e));
+        showItems(e);
 
         // The rubric: the metrics of the type; defaults in grey until the exercise sets a line.
         std::vector<Metric> metrics;
@@ -1236,17 +1209,9 @@ void ExerciseEditorPanel::showExercise(const Exercise& exercise) {
         mRubricTotalLabel->setText(tr("Weights total %1; the score is 100 × Σ wᵢsᵢ / Σ wᵢ.").arg(locale().toString(totalWeight, 'g', 6)));
 
         // The selection follows the document (an undone add removes the selected row).
-        const int count = e.type == ExerciseType::PressTargets ? int(targets.size())
-                          : e.type == ExerciseType::Trace      ? int(path.size())
-                                                               : 0;
-        if (mSelected >= count) mSelected = count - 1;
-        if (e.type == ExerciseType::PressTargets) {
-            if (mSelected >= 0) mTargetTable->selectRow(mSelected);
-            else mTargetTable->clearSelection();
-        } else if (e.type == ExerciseType::Trace) {
-            if (mSelected >= 0) mPathList->setCurrentRow(mSelected);
-            else mPathList->clearSelection();
-        }
+        if (mSelected >= itemCount() || exerciseKind(e.type).editing().items.single) mSelected = -1;
+        if (mSelected >= 0) page().table->selectRow(mSelected);
+        else page().table->clearSelection();
     }
     // An undone type change or removal may leave a mode that no longer fits (adding path points
     // to a press-targets exercise, moving a point that is gone): it ends.
@@ -1254,11 +1219,36 @@ void ExerciseEditorPanel::showExercise(const Exercise& exercise) {
     refresh();
 }
 
+void ExerciseEditorPanel::showItems(const Exercise& e) {
+    const ExerciseEditing& editing = exerciseKind(e.type).editing();
+    const PlacedItems& items = editing.items;
+    KindPage& p = page();
+    const int count = int(items.count(e));
+    p.table->setRowCount(count);
+    for (int r = 0; r < count; ++r) {
+        const std::size_t i = std::size_t(r);
+        QString number = QString::number(r + 1);
+        // A path says where it starts and ends.
+        if (items.ordered && count > 1 && items.numbers.empty())
+            number += r == 0 ? tr(" (start)") : r + 1 == count ? tr(" (end)") : QString();
+        setCellValue(p.table, r, kItemNumber, number, false);
+        const SurfacePoint& at = items.point(e, i);
+        if (at.vertex) setCellValue(p.table, r, kItemVertex, int(*at.vertex), true);
+        else
+            setCellValue(p.table, r, kItemVertex,
+                         tr("(%1, %2, %3) mm").arg(at.pointMm.x).arg(at.pointMm.y).arg(at.pointMm.z), false);
+        for (std::size_t c = 0; c < items.numbers.size(); ++c)
+            setCellValue(p.table, r, kItemNumbers + int(c), items.numbers[c].get(e, i), true);
+    }
+    fitTableHeight(p.table, count, 8);
+    for (std::size_t i = 0; i < editing.numbers.size(); ++i) setSpin(p.numbers[i], editing.numbers[i].get(e, 0));
+}
+
 void ExerciseEditorPanel::pushEdit(const Exercise& after, const QString& text, int field) {
     if (sameExercise(after, mExercise)) return;
     showMessage(QString(), false);
     // Typing "1.5" or holding an arrow is one step, until the field loses focus.
-    const int mergeKey = field < 0 ? ExerciseEditCommand::kNoMerge : field + kFieldCount * (mMergeEpoch % 64);
+    const int mergeKey = field < 0 ? ExerciseEditCommand::kNoMerge : field + kMergeFields * (mMergeEpoch % 64);
     mUndoStack->push(new ExerciseEditCommand(mExercise, after, text, mergeKey,
                                              [this](const Exercise& exercise) { showExercise(exercise); }));
 }
@@ -1272,15 +1262,10 @@ void ExerciseEditorPanel::onFieldEdited(int field) {
         case kDescription: e.description = ss(mDescriptionEdit->toPlainText()); what = tr("description"); break;
         case kTimeLimit: e.timeLimitS = mTimeLimitSpin->value(); what = tr("time limit"); break;
         case kDisplacementLimit: e.displacementLimitMm = mDisplacementSpin->value(); what = tr("damage limit"); break;
-        case kExcessiveForce: e.excessiveForceN = mExcessiveSpin->value(); what = tr("excessive force"); break;
-        case kLumpRadius: e.findLump.inclusion.radiusMm = mLumpRadiusSpin->value(); what = tr("inclusion radius"); break;
-        case kLumpStiffness:
-            e.findLump.inclusion.stiffnessFactor = mLumpStiffnessSpin->value();
-            what = tr("stiffness factor");
+        case kExcessiveForce:
+            e.excessiveForceN = mExcessiveSpin->value();
+            what = tr("excessive force");
             break;
-        case kTraceForceMin: e.trace.forceMinN = mTraceMinSpin->value(); what = tr("band's lower force"); break;
-        case kTraceForceMax: e.trace.forceMaxN = mTraceMaxSpin->value(); what = tr("band's upper force"); break;
-        case kTraceTolerance: e.trace.toleranceMm = mTraceToleranceSpin->value(); what = tr("trace tolerance"); break;
         case kNeedsError:
             if (!e.needs) return;
             e.needs->maxErrorFraction = mNeedsErrorSpin->value() / 100.0;
@@ -1295,7 +1280,16 @@ void ExerciseEditorPanel::onFieldEdited(int field) {
             e.meshUnit = MeshUnit{"", mMeshScaleSpin->value()};
             what = tr("mesh unit");
             break;
-        case kFieldCount: return;
+        case kSectionNumber:
+        case kMergeFields: break;
+    }
+    if (field >= kSectionNumber) {
+        // The kind's section number: its label names it.
+        const auto& numbers = exerciseKind(e.type).editing().numbers;
+        const std::size_t i = std::size_t(field - kSectionNumber);
+        if (i >= numbers.size()) return;
+        numbers[i].set(e, 0, page().numbers[i]->value());
+        what = exerciseText(ViewText{numbers[i].label}).remove(QLatin1Char(':'));
     }
     pushEdit(e, tr("Change %1").arg(what), field);
 }
@@ -1309,30 +1303,29 @@ void ExerciseEditorPanel::commitMeshUnit(int index) {
     pushEdit(e, tr("Change %1").arg(tr("mesh unit")), -1);
 }
 
-void ExerciseEditorPanel::onTargetCellChanged(int row, int column) {
-    if (mShowing || row < 0 || row >= int(mExercise.pressTargets.targets.size())) return;
+void ExerciseEditorPanel::onItemCellChanged(int row, int column) {
+    if (mShowing || row < 0 || row >= itemCount()) return;
+    const PlacedItems& items = exerciseKind(mExercise.type).editing().items;
+    QTableWidget* table = page().table;
     Exercise e = mExercise;
-    PressTarget& t = e.pressTargets.targets[std::size_t(row)];
-    const QVariant value = mTargetTable->item(row, column)->data(Qt::EditRole);
+    const QVariant value = table->item(row, column)->data(Qt::EditRole);
     bool ok = false;
     const double v = value.toDouble(&ok);
     if (!ok) {
         showExercise(mExercise);  // not a number: show what the exercise holds
         return;
     }
-    switch (column) {
-        case kTargetVertex:
-            if (v < 0) return showExercise(mExercise);
-            t.at = SurfacePoint{std::uint32_t(v), glm::vec3(0.0f)};
-            break;
-        case kTargetForceMin: t.forceMinN = v; break;
-        case kTargetForceMax: t.forceMaxN = v; break;
-        case kTargetHold: t.holdS = v; break;
-        case kTargetTolerance: t.toleranceMm = v; break;
-        default: return;
+    if (column == kItemVertex) {
+        if (v < 0) return showExercise(mExercise);
+        items.setPoint(e, std::size_t(row), SurfacePoint{std::uint32_t(v), glm::vec3(0.0f)});
+    } else if (column >= kItemNumbers && column < kItemNumbers + int(items.numbers.size())) {
+        items.numbers[std::size_t(column - kItemNumbers)].set(e, std::size_t(row), v);
+    } else {
+        return;
     }
-    const QString header = mTargetTable->horizontalHeaderItem(column) ? mTargetTable->horizontalHeaderItem(column)->text() : QString();
-    pushEdit(e, tr("Change target %1's %2").arg(row + 1).arg(header));
+    const QString header = table->horizontalHeaderItem(column) ? table->horizontalHeaderItem(column)->text()
+                                                               : QString();
+    pushEdit(e, tr("Change %1's %2").arg(exerciseText(ViewText{items.itemName}.whole(row + 1)), header));
 }
 
 void ExerciseEditorPanel::onRubricCellChanged(int row, int column) {
@@ -1379,62 +1372,47 @@ void ExerciseEditorPanel::changeType(ExerciseType type) {
 }
 
 void ExerciseEditorPanel::setSelectedIndex(int index) {
-    const int count = mExercise.type == ExerciseType::PressTargets ? int(mExercise.pressTargets.targets.size())
-                      : mExercise.type == ExerciseType::Trace      ? int(mExercise.trace.path.size())
-                                                                   : 0;
-    index = index >= 0 && index < count ? index : -1;
+    const bool single = exerciseKind(mExercise.type).editing().items.single;
+    index = !single && index >= 0 && index < itemCount() ? index : -1;
     if (index == mSelected) return;
     mSelected = index;
     {
         const Guard guard(mShowing);
-        QAbstractItemView* view = mExercise.type == ExerciseType::Trace ? static_cast<QAbstractItemView*>(mPathList)
-                                                                        : static_cast<QAbstractItemView*>(mTargetTable);
-        if (index < 0) view->clearSelection();
-        else if (view == mTargetTable) mTargetTable->selectRow(index);
-        else mPathList->setCurrentRow(index);
+        if (index < 0) page().table->clearSelection();
+        else page().table->selectRow(index);
     }
-    if (mPlacing == Placing::MoveSelected && index < 0) setPlacing(Placing::None);
+    if (mPlacing == Placing::MoveSelected && index < 0 && !single) setPlacing(Placing::None);
     refresh();
 }
 
 void ExerciseEditorPanel::removeSelected() {
-    Exercise e = mExercise;
+    const PlacedItems& items = exerciseKind(mExercise.type).editing().items;
     const int i = mSelected;
-    if (e.type == ExerciseType::PressTargets && i >= 0 && i < int(e.pressTargets.targets.size())) {
-        e.pressTargets.targets.erase(e.pressTargets.targets.begin() + i);
-        mSelected = std::min(i, int(e.pressTargets.targets.size()) - 1);
-        pushEdit(e, tr("Remove target %1").arg(i + 1));
-    } else if (e.type == ExerciseType::Trace && i >= 0 && i < int(e.trace.path.size())) {
-        e.trace.path.erase(e.trace.path.begin() + i);
-        mSelected = std::min(i, int(e.trace.path.size()) - 1);
-        pushEdit(e, tr("Remove path point %1").arg(i + 1));
-    }
+    if (items.single || i < 0 || i >= itemCount()) return;
+    Exercise e = mExercise;
+    items.erase(e, std::size_t(i));
+    mSelected = std::min(i, int(items.count(e)) - 1);
+    pushEdit(e, tr("Remove %1").arg(exerciseText(ViewText{items.itemName}.whole(i + 1))));
 }
 
 void ExerciseEditorPanel::moveSelected(int delta) {
-    Exercise e = mExercise;
+    const PlacedItems& items = exerciseKind(mExercise.type).editing().items;
     const int i = mSelected, j = mSelected + delta;
-    if (e.type == ExerciseType::PressTargets && i >= 0 && j >= 0 && j < int(e.pressTargets.targets.size())) {
-        std::swap(e.pressTargets.targets[std::size_t(i)], e.pressTargets.targets[std::size_t(j)]);
-        mSelected = j;
-        pushEdit(e, delta < 0 ? tr("Move target %1 up").arg(i + 1) : tr("Move target %1 down").arg(i + 1));
-    } else if (e.type == ExerciseType::Trace && i >= 0 && j >= 0 && j < int(e.trace.path.size())) {
-        std::swap(e.trace.path[std::size_t(i)], e.trace.path[std::size_t(j)]);
-        mSelected = j;
-        pushEdit(e, delta < 0 ? tr("Move path point %1 up").arg(i + 1) : tr("Move path point %1 down").arg(i + 1));
-    }
+    if (items.single || !items.ordered || i < 0 || j < 0 || j >= itemCount()) return;
+    Exercise e = mExercise;
+    items.swap(e, std::size_t(i), std::size_t(j));
+    mSelected = j;
+    const QString item = exerciseText(ViewText{items.itemName}.whole(i + 1));
+    pushEdit(e, delta < 0 ? tr("Move %1 up").arg(item) : tr("Move %1 down").arg(item));
 }
 
 // ---- Placing by clicking ----------------------------------------------------------------------------
 
 void ExerciseEditorPanel::setPlacing(Placing placing) {
-    // A mode only for its type (and Move only with something selected, or the lump).
-    const ExerciseType type = mExercise.type;
-    const bool fits = placing == Placing::None ||
-                      (placing == Placing::AddTarget && type == ExerciseType::PressTargets) ||
-                      (placing == Placing::PlaceInclusion && type == ExerciseType::FindLump) ||
-                      (placing == Placing::AddPathPoint && type == ExerciseType::Trace) ||
-                      (placing == Placing::MoveSelected && (type == ExerciseType::FindLump || mSelected >= 0));
+    // Add only where items are added; Move only with an item selected (a single item: always).
+    const PlacedItems& items = exerciseKind(mExercise.type).editing().items;
+    const bool fits = placing == Placing::None || (placing == Placing::AddItem && !items.single) ||
+                      (placing == Placing::MoveSelected && (items.single || mSelected >= 0));
     if (!fits) placing = Placing::None;
     const bool wasOn = mPlacing != Placing::None;
     mPlacing = placing;
@@ -1444,20 +1422,21 @@ void ExerciseEditorPanel::setPlacing(Placing placing) {
 
 void ExerciseEditorPanel::updatePlacingUi() {
     const Guard guard(mShowing);
-    mAddTargetButton->setChecked(mPlacing == Placing::AddTarget);
-    mMoveTargetButton->setChecked(mPlacing == Placing::MoveSelected && mExercise.type == ExerciseType::PressTargets);
-    mPlaceLumpButton->setChecked(mPlacing == Placing::PlaceInclusion ||
-                                 (mPlacing == Placing::MoveSelected && mExercise.type == ExerciseType::FindLump));
-    mAddPointButton->setChecked(mPlacing == Placing::AddPathPoint);
-    mMovePointButton->setChecked(mPlacing == Placing::MoveSelected && mExercise.type == ExerciseType::Trace);
+    for (KindPage& p : mPages) {
+        const bool current = p.kind->type() == mExercise.type;
+        p.add->setChecked(current && mPlacing == Placing::AddItem);
+        p.move->setChecked(current && mPlacing == Placing::MoveSelected);
+    }
     mStopPlacingAction->setEnabled(mPlacing != Placing::None);
+    const PlacedItems& items = exerciseKind(mExercise.type).editing().items;
     QString hint;
     switch (mPlacing) {
         case Placing::None: break;
-        case Placing::AddTarget: hint = tr("Click the tissue to place a target; Esc to stop."); break;
-        case Placing::PlaceInclusion: hint = tr("Click the mesh where the lump's centre goes; Esc cancels."); break;
-        case Placing::AddPathPoint: hint = tr("Click the tissue to add path points in order; Esc to stop."); break;
-        case Placing::MoveSelected: hint = tr("Click the mesh where the selected point goes; Esc cancels."); break;
+        case Placing::AddItem:
+            hint = tr("Click the tissue to place %1, and more after it; Esc to stop.")
+                       .arg(exerciseText(ViewText{items.itemName}.whole(itemCount() + 1)));
+            break;
+        case Placing::MoveSelected: hint = tr("Click the mesh where the point goes; Esc cancels."); break;
     }
     if (!hint.isEmpty() && !drawnMeshMatches())
         hint = tr("The viewport does not show this exercise's mesh: press Show this mesh first.");
@@ -1484,58 +1463,28 @@ void ExerciseEditorPanel::vertexPicked(VertexId engineVertex) {
     const auto vertex = fileVertex(engineVertex);
     if (!vertex) return;
     const SurfacePoint at{*vertex, glm::vec3(0.0f)};
+    const PlacedItems& items = exerciseKind(mExercise.type).editing().items;
     Exercise e = mExercise;
-    switch (mPlacing) {
-        case Placing::None: return;
-        case Placing::AddTarget: {
-            // The new target takes the last one's window, hold and tolerance: targets of one
-            // exercise are usually alike. The first gets a window its tissue reaches at a third to
-            // two thirds of the deepest touch (docs/scoring.md, "Reachable targets").
-            PressTarget t = e.pressTargets.targets.empty() ? PressTarget{} : e.pressTargets.targets.back();
-            if (e.pressTargets.targets.empty())
-                if (const auto* forces = touchForces(resolved(e, e.meshPath), *mDrawnMesh, engineVertex))
-                    if (const auto window = comfortableWindow(*forces, touchReach())) {
-                        t.forceMinN = window->minN;
-                        t.forceMaxN = window->maxN;
-                    }
-            t.at = at;
-            e.pressTargets.targets.push_back(t);
-            mSelected = int(e.pressTargets.targets.size()) - 1;
-            pushEdit(e, tr("Add target %1").arg(mSelected + 1));
-            return;
-        }
-        case Placing::AddPathPoint:
-            // A path's first point, with the band as a new exercise has it: the band becomes one
-            // the tissue reaches there (as a first target's window).
-            if (e.trace.path.empty() && e.trace.forceMinN == TraceDef{}.forceMinN &&
-                e.trace.forceMaxN == TraceDef{}.forceMaxN)
-                if (const auto* forces = touchForces(resolved(e, e.meshPath), *mDrawnMesh, engineVertex))
-                    if (const auto window = comfortableWindow(*forces, touchReach())) {
-                        e.trace.forceMinN = window->minN;
-                        e.trace.forceMaxN = window->maxN;
-                    }
-            e.trace.path.push_back(at);
-            mSelected = int(e.trace.path.size()) - 1;
-            pushEdit(e, tr("Add path point %1").arg(mSelected + 1));
-            return;
-        case Placing::PlaceInclusion:
-            e.findLump.inclusion.centre = at;
-            setPlacing(Placing::None);
-            pushEdit(e, tr("Place the lump"));
-            return;
-        case Placing::MoveSelected:
-            if (e.type == ExerciseType::FindLump) {
-                e.findLump.inclusion.centre = at;
-            } else if (e.type == ExerciseType::PressTargets && mSelected >= 0 &&
-                       mSelected < int(e.pressTargets.targets.size())) {
-                e.pressTargets.targets[std::size_t(mSelected)].at = at;
-            } else if (e.type == ExerciseType::Trace && mSelected >= 0 && mSelected < int(e.trace.path.size())) {
-                e.trace.path[std::size_t(mSelected)] = at;
-            }
-            setPlacing(Placing::None);
-            pushEdit(e, tr("Move point %1").arg(mSelected + 1));
-            return;
+    if (mPlacing == Placing::AddItem) {
+        // The new item takes the last one's numbers (items of one exercise are usually alike); the
+        // first gets a force window its tissue reaches at a third to two thirds of the deepest
+        // touch (docs/scoring.md, "Reachable targets").
+        const bool first = items.count(e) == 0;
+        items.append(e, at);
+        if (first && items.takeReachableWindow)
+            if (const auto* forces = touchForces(resolved(e, e.meshPath), *mDrawnMesh, engineVertex))
+                if (const auto window = comfortableWindow(*forces, touchReach()))
+                    items.takeReachableWindow(e, window->minN, window->maxN);
+        mSelected = int(items.count(e)) - 1;
+        pushEdit(e, tr("Add %1").arg(exerciseText(ViewText{items.itemName}.whole(mSelected + 1))));
+        return;
     }
+    // Move: the selected item, or the single one.
+    const int i = items.single ? 0 : mSelected;
+    if (i < 0 || i >= itemCount()) return;
+    items.setPoint(e, std::size_t(i), at);
+    setPlacing(Placing::None);
+    pushEdit(e, tr("Move %1").arg(exerciseText(ViewText{items.itemName}.whole(i + 1))));
 }
 
 // ---- Problems, markers, preview ------------------------------------------------------------------
@@ -1562,14 +1511,16 @@ void ExerciseEditorPanel::refresh() {
     if (!mesh && !meshFile.isEmpty() && !mCheckMeshError.isEmpty()) blocking << tr("mesh: %1").arg(mCheckMeshError);
     if (mesh) {
         geometry = ExerciseGeometry::build(e, *mesh, placementError);
-        // A path of fewer than two points is named by validateExercise already.
-        const bool shortPath = e.type == ExerciseType::Trace && e.trace.path.size() < 2;
-        if (!geometry && !shortPath) blocking << qs(placementError);
+        // A key a problem names already (a path of fewer than two points) is not named twice.
+        const QString key = problemKey(qs(placementError));
+        const bool named = std::any_of(blocking.begin(), blocking.end(),
+                                       [&](const QString& p) { return problemKey(p) == key; });
+        if (!geometry && !named) blocking << qs(placementError);
     }
     mWarnings.clear();
-    if (geometry && mesh && (e.type == ExerciseType::PressTargets || e.type == ExerciseType::Trace))
+    if (geometry && mesh)
         for (const QString& warning : reachWarnings(*geometry, meshFile, *mesh)) {
-            // A target with a problem (a window upside down) is named by the problem alone.
+            // An item with a problem (a window upside down) is named by the problem alone.
             const QString target = problemKey(warning).section(QLatin1Char('.'), 0, 1);
             const bool named = std::any_of(blocking.begin(), blocking.end(),
                                            [&](const QString& p) { return problemKey(p).startsWith(target); });
@@ -1594,24 +1545,25 @@ void ExerciseEditorPanel::refresh() {
 
     // The markers, on the drawn mesh only (picks and markers are in its numbering).
     ExerciseMarkers markers;
+    const PlacedItems& items = exerciseKind(e.type).editing().items;
     if (drawnMeshMatches()) {
         if (geometry) {
-            markers = exerciseMarkers(*geometry, MarkerAudience::Instructor, nullptr,
-                                      e.type == ExerciseType::FindLump ? -1 : mSelected);
-        } else if (e.type == ExerciseType::Trace) {
-            // A path being started (one point, or all on one vertex) has no geometry yet: its
-            // points are still shown, so the instructor sees where the next click continues.
-            for (std::size_t i = 0; i < e.trace.path.size(); ++i) {
-                const VertexId v = ExerciseGeometry::snap(e.trace.path[i], *mDrawnMesh);
+            markers = exerciseMarkers(*geometry, MarkerAudience::Instructor, nullptr, items.single ? -1 : mSelected);
+        } else {
+            // Items that cannot be placed as a whole yet (a path of one point, or all on one
+            // vertex) are still shown, so the instructor sees where the next click continues.
+            const bool path = items.ordered && items.numbers.empty();
+            for (std::size_t i = 0; i < items.count(e); ++i) {
+                const VertexId v = ExerciseGeometry::snap(items.point(e, i), *mDrawnMesh);
                 if (v == kNoVertex) continue;
                 ExerciseMarker m;
                 m.kind = ExerciseMarker::Kind::PathPoint;
                 m.positionMm = mDrawnMesh->restPositionsMm()[v];
                 m.normal = mDrawnMesh->restNormals().size() > v ? mDrawnMesh->restNormals()[v] : glm::vec3(0.0f);
-                m.label = i == 0 ? QStringLiteral("start") : QString();
+                m.label = path && i == 0 ? QStringLiteral("start") : QString();
                 m.selected = int(i) == mSelected;
                 markers.markers.push_back(m);
-                markers.pathMm.push_back(m.positionMm);
+                if (path) markers.pathMm.push_back(m.positionMm);
             }
         }
     }
@@ -1646,14 +1598,13 @@ void ExerciseEditorPanel::showProblems(const QString& meshFile) {
                                                        {mTimeLimitSpin, "time_limit_s"},
                                                        {mDisplacementSpin, "damage.displacement_limit_mm"},
                                                        {mExcessiveSpin, "force.excessive_n"},
-                                                       {mLumpRadiusSpin, "find_lump.inclusion.radius_mm"},
-                                                       {mLumpStiffnessSpin, "find_lump.inclusion.stiffness_factor"},
-                                                       {mTraceMinSpin, "trace.force_min_n"},
-                                                       {mTraceMaxSpin, "trace.force_max_n"},
-                                                       {mTraceToleranceSpin, "trace.tolerance_mm"},
                                                        {mNeedsErrorSpin, "needs.max_error"},
                                                        {mNeedsBudgetSpin, "needs.budget_us"}};
-    for (const auto& [widget, key] : fields) {
+    std::vector<std::pair<QWidget*, const char*>> marked(std::begin(fields), std::end(fields));
+    const ExerciseEditing& editing = exerciseKind(e.type).editing();
+    for (std::size_t i = 0; i < editing.numbers.size(); ++i)
+        marked.emplace_back(page().numbers[i], editing.numbers[i].key);
+    for (const auto& [widget, key] : marked) {
         const bool invalid = keys.contains(QLatin1String(key));
         if (widget->property("invalid").toBool() != invalid) {
             widget->setProperty("invalid", invalid);
@@ -1661,15 +1612,22 @@ void ExerciseEditorPanel::showProblems(const QString& meshFile) {
             widget->style()->polish(widget);
         }
     }
-    for (int r = 0; r < mTargetTable->rowCount(); ++r)
-        for (int c = kTargetVertex; c < kTargetColumns; ++c) {
-            const QString key = QStringLiteral("press_targets.targets[%1]").arg(r);
-            const QString cellKey = key + QLatin1Char('.') + QLatin1String(kTargetKeys[c]);
-            const bool invalid = keys.contains(cellKey) || (c == kTargetVertex && keys.contains(key));
+    // The item cells: "<list>[i].<key>" marks a cell, "<list>[i]" (or a single item's key) its vertex.
+    const PlacedItems& items = editing.items;
+    QTableWidget* table = page().table;
+    for (int r = 0; r < table->rowCount(); ++r)
+        for (int c = kItemVertex; c < table->columnCount(); ++c) {
+            const QString key = items.single ? QLatin1String(items.listKey)
+                                             : QStringLiteral("%1[%2]").arg(QLatin1String(items.listKey)).arg(r);
+            const QString cellKey = c == kItemVertex
+                                        ? key + QStringLiteral(".vertex")
+                                        : key + QLatin1Char('.') +
+                                              QLatin1String(items.numbers[std::size_t(c - kItemNumbers)].key);
+            const bool invalid = keys.contains(cellKey) || (c == kItemVertex && keys.contains(key));
             const QVariant background = invalid                    ? QVariant(QBrush(kInvalidCell))
                                         : warned.contains(cellKey) ? QVariant(QBrush(kWarningCell))
                                                                    : QVariant();
-            if (QTableWidgetItem* it = mTargetTable->item(r, c); it && it->data(Qt::BackgroundRole) != background)
+            if (QTableWidgetItem* it = table->item(r, c); it && it->data(Qt::BackgroundRole) != background)
                 it->setData(Qt::BackgroundRole, background);
         }
     for (int r = 0; r < mRubricTable->rowCount(); ++r)
@@ -1684,14 +1642,11 @@ void ExerciseEditorPanel::showProblems(const QString& meshFile) {
         }
 
     const bool hasSelection = mSelected >= 0;
-    for (QWidget* w : {static_cast<QWidget*>(mRemoveTargetButton), static_cast<QWidget*>(mMoveTargetButton),
-                       static_cast<QWidget*>(mRemovePointButton), static_cast<QWidget*>(mMovePointButton)})
-        w->setEnabled(hasSelection);
-    const int count = e.type == ExerciseType::PressTargets ? int(e.pressTargets.targets.size())
-                                                           : int(e.trace.path.size());
-    for (QToolButton* up : {mTargetUpButton, mPointUpButton}) up->setEnabled(mSelected > 0);
-    for (QToolButton* down : {mTargetDownButton, mPointDownButton})
-        down->setEnabled(hasSelection && mSelected + 1 < count);
+    const KindPage& p = page();
+    p.remove->setEnabled(hasSelection);
+    p.move->setEnabled(hasSelection || items.single);
+    p.up->setEnabled(mSelected > 0);
+    p.down->setEnabled(hasSelection && mSelected + 1 < itemCount());
     mPreviewAction->setEnabled(mBlocking.isEmpty());
     mPreviewButton->setEnabled(mBlocking.isEmpty());
     mShowMeshButton->setEnabled(!meshFile.isEmpty() && !drawnMeshMatches());
@@ -1702,8 +1657,8 @@ void ExerciseEditorPanel::showProblems(const QString& meshFile) {
 
 TouchReach ExerciseEditorPanel::touchReach() { return TouchReach{Viewport::kMaxTouchDepthMm, Viewport::kTouchDepthStepMm}; }
 
-const std::vector<double>* ExerciseEditorPanel::touchForces(const QString& meshFile, const TissueMesh& mesh,
-                                                            VertexId vertex) {
+const TouchPresses* ExerciseEditorPanel::touchPresses(const QString& meshFile, const TissueMesh& mesh,
+                                                      VertexId vertex) {
     const QString presetFile = resolved(mExercise, mExercise.tissuePresetPath);
     if (meshFile.isEmpty() || presetFile.isEmpty()) return nullptr;  // a problem says so already
     const auto stamp = [](const QString& file) { return QFileInfo(file).lastModified().toString(Qt::ISODateWithMs); };
@@ -1713,7 +1668,7 @@ const std::vector<double>* ExerciseEditorPanel::touchForces(const QString& meshF
     if (key != mProbeKey) {
         mProbeKey = key;
         mProbe.reset();
-        mProbeForces.clear();
+        mProbePresses.clear();
         mReachError.clear();
         const PresetLoadResult loaded = guardedLoad(ss(presetFile), [&] { return loadTissuePreset(ss(presetFile)); });
         std::string error = loaded.errors.empty() ? std::string("not a tissue preset") : loaded.errors.front();
@@ -1722,62 +1677,17 @@ const std::vector<double>* ExerciseEditorPanel::touchForces(const QString& meshF
         if (!mProbe) mReachError = qs(error);
     }
     if (!mProbe) return nullptr;
-    auto it = mProbeForces.find(vertex);
-    if (it == mProbeForces.end()) it = mProbeForces.insert(vertex, mProbe->forcesN(vertex));
-    return it->empty() ? nullptr : &*it;
+    auto it = mProbePresses.find(vertex);
+    if (it == mProbePresses.end()) it = mProbePresses.insert(vertex, mProbe->presses(vertex));
+    return it->forcesN.empty() ? nullptr : &*it;
 }
 
 QStringList ExerciseEditorPanel::reachWarnings(const ExerciseGeometry& geometry, const QString& meshFile,
                                                const TissueMesh& mesh) {
-    QStringList out;
+    QStringList out = bandWarnings(geometry, meshFile, mesh);
     const TouchReach touch = touchReach();
     const QLocale l = locale();
     const auto n = [&l](double v) { return l.toString(v, 'g', 3); };
-    if (geometry.exercise().type == ExerciseType::Trace) {
-        // The band at every path point, as a target's window (pressed, not slid: a slide at the
-        // same depth renders about the same force, plus friction).
-        PressTarget band;
-        band.forceMinN = geometry.exercise().trace.forceMinN;
-        band.forceMaxN = geometry.exercise().trace.forceMaxN;
-        QStringList tooSoft, between;
-        double leastN = 0.0, deepestMm = 0.0;
-        std::optional<ForceWindow> suggested;
-        const auto& vertices = geometry.pathVertices();
-        for (std::size_t i = 0; i < vertices.size(); ++i) {
-            const std::vector<double>* forces = touchForces(meshFile, mesh, vertices[i]);
-            if (!forces) {
-                if (!mReachError.isEmpty())
-                    out << tr("tissue_preset: whether the band can be reached with the mouse is not known: %1").arg(mReachError);
-                return out;
-            }
-            const TargetReach reach = judgeTarget(band, *forces, touch);
-            if (reach.reachable) continue;
-            if (reach.belowForceN) {
-                between << QString::number(i + 1);
-                continue;
-            }
-            if (tooSoft.isEmpty() || reach.maxForceN < leastN) {
-                leastN = reach.maxForceN;
-                suggested = comfortableWindow(*forces, touch);
-            }
-            deepestMm = reach.maxDepthMm;
-            tooSoft << QString::number(i + 1);
-        }
-        if (!tooSoft.isEmpty()) {
-            const QString instead = suggested ? tr(" (%1–%2 N is met between a third and two thirds of that depth)")
-                                                    .arg(n(suggested->minN), n(suggested->maxN))
-                                              : QString();
-            out << tr("trace.force_min_n: the band cannot be reached with the mouse at path point %1: pressing %2 mm "
-                      "deep (the deepest) gives as little as %3 N there, below the band's %4 N. Lower the band to at "
-                      "most %3 N%5, or choose a stiffer tissue preset.")
-                       .arg(tooSoft.join(QStringLiteral(", ")), n(deepestMm), n(leastN), n(band.forceMinN), instead);
-        } else if (!between.isEmpty()) {
-            out << tr("trace.force_min_n: the band %1–%2 N lies between the forces of two turns of the wheel at path "
-                      "point %3: widen it.")
-                       .arg(n(band.forceMinN), n(band.forceMaxN), between.join(QStringLiteral(", ")));
-        }
-        return out;
-    }
     for (std::size_t i = 0; i < geometry.targets().size(); ++i) {
         const ResolvedTarget& target = geometry.targets()[i];
         const std::vector<double>* forces = touchForces(meshFile, mesh, target.vertex);
@@ -1805,6 +1715,143 @@ QStringList ExerciseEditorPanel::reachWarnings(const ExerciseGeometry& geometry,
                   "its window's %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.")
                    .arg(key).arg(i + 1)
                    .arg(n(reach.maxDepthMm), n(reach.maxForceN), n(target.def.forceMinN), instead);
+    }
+    out << lumpWarnings(geometry, meshFile, mesh);
+    if (exerciseKind(geometry.exercise().type).palpation())
+        out << coverageWarnings(geometry.exercise(), meshFile, mesh);
+    return out;
+}
+
+std::optional<ExamineReach> ExerciseEditorPanel::examineReach(const QString& meshFile, const TissueMesh& mesh) {
+    std::vector<std::vector<double>> forces;
+    for (const VertexId v : examinePoints(mesh.restPositionsMm())) {
+        const std::vector<double>* f = touchForces(meshFile, mesh, v);
+        if (!f) return std::nullopt;
+        forces.push_back(*f);
+    }
+    return judgeExamining(forces, touchReach());
+}
+
+QStringList ExerciseEditorPanel::coverageWarnings(const Exercise& exercise, const QString& meshFile,
+                                                  const TissueMesh& mesh) {
+    QStringList out;
+    const std::optional<ExamineReach> reach = examineReach(meshFile, mesh);
+    if (!reach) {
+        if (!mReachError.isEmpty())
+            out << tr("tissue_preset: whether the mouse presses hard enough to examine is not known: %1")
+                       .arg(mReachError);
+        return out;
+    }
+    if (exercise.coverage.minForceN <= reach->deepestN) return out;
+    const QLocale l = locale();
+    const auto n = [&l](double v) { return l.toString(v, 'g', 3); };
+    out << tr("coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives "
+              "%2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as "
+              "examined. Lower it to %4 N (a press a third as deep), or choose a stiffer tissue preset.")
+               .arg(n(touchReach().maxDepthMm), n(reach->deepestN), n(exercise.coverage.minForceN),
+                    n(reach->comfortableN));
+    return out;
+}
+
+QStringList ExerciseEditorPanel::bandWarnings(const ExerciseGeometry& geometry, const QString& meshFile,
+                                              const TissueMesh& mesh) {
+    QStringList out;
+    if (geometry.pathVertices().empty()) return out;
+    const TouchReach touch = touchReach();
+    const QLocale l = locale();
+    const auto n = [&l](double v) { return l.toString(v, 'g', 3); };
+    // The band at every path point, as a target's window (pressed, not slid: a slide at the
+    // same depth renders about the same force, plus friction).
+    PressTarget band;
+    band.forceMinN = geometry.exercise().trace.forceMinN;
+    band.forceMaxN = geometry.exercise().trace.forceMaxN;
+    QStringList tooSoft, between;
+    double leastN = 0.0, deepestMm = 0.0;
+    std::optional<ForceWindow> suggested;
+    const auto& vertices = geometry.pathVertices();
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        const std::vector<double>* forces = touchForces(meshFile, mesh, vertices[i]);
+        if (!forces) {
+            if (!mReachError.isEmpty())
+                out << tr("tissue_preset: whether the band can be reached with the mouse is not known: %1")
+                           .arg(mReachError);
+            return out;
+        }
+        const TargetReach reach = judgeTarget(band, *forces, touch);
+        if (reach.reachable) continue;
+        if (reach.belowForceN) {
+            between << QString::number(i + 1);
+            continue;
+        }
+        if (tooSoft.isEmpty() || reach.maxForceN < leastN) {
+            leastN = reach.maxForceN;
+            suggested = comfortableWindow(*forces, touch);
+        }
+        deepestMm = reach.maxDepthMm;
+        tooSoft << QString::number(i + 1);
+    }
+    if (!tooSoft.isEmpty()) {
+        const QString instead = suggested ? tr(" (%1–%2 N is met between a third and two thirds of that depth)")
+                                                .arg(n(suggested->minN), n(suggested->maxN))
+                                          : QString();
+        out << tr("trace.force_min_n: the band cannot be reached with the mouse at path point %1: pressing %2 mm "
+                  "deep (the deepest) gives as little as %3 N there, below the band's %4 N. Lower the band to at "
+                  "most %3 N%5, or choose a stiffer tissue preset.")
+                   .arg(tooSoft.join(QStringLiteral(", ")), n(deepestMm), n(leastN), n(band.forceMinN), instead);
+    } else if (!between.isEmpty()) {
+        out << tr("trace.force_min_n: the band %1–%2 N lies between the forces of two turns of the wheel at path "
+                  "point %3: widen it.")
+                   .arg(n(band.forceMinN), n(band.forceMaxN), between.join(QStringLiteral(", ")));
+    }
+    return out;
+}
+
+QStringList ExerciseEditorPanel::lumpWarnings(const ExerciseGeometry& geometry, const QString& meshFile,
+                                              const TissueMesh& mesh) {
+    QStringList out;
+    const TouchReach touch = touchReach();
+    const QLocale l = locale();
+    const auto n = [&l](double v) { return l.toString(v, 'g', 3); };
+    // A device renders up to its maximum force; the nominal one of a desktop device (DeviceSpec).
+    const double deviceMaxN = DeviceSpec{}.maxForceN;
+    const double excessiveN = geometry.exercise().excessiveForceN;
+    for (std::size_t i = 0; i < geometry.lumps().size(); ++i) {
+        const ResolvedLump& lump = geometry.lumps()[i];
+        const TouchPresses* presses = touchPresses(meshFile, mesh, lump.vertex);
+        if (!presses) {
+            if (!mReachError.isEmpty())
+                out << tr("tissue_preset: whether the lumps can be felt is not known: %1").arg(mReachError);
+            break;
+        }
+        const LumpReach reach = judgeLump(lump.def, *presses, touch);
+        const QString key = QStringLiteral("detect_lumps.lumps[%1].depth_mm").arg(i);
+        if (!reach.mouseFeels && !std::isfinite(reach.engageDepthMm))
+            out << tr("%1: lump %2 cannot be felt with the mouse: the surface above it does not sink to its top (%3 mm "
+                      "under it) however deep the mouse presses. Make it shallower, or choose a softer tissue preset.")
+                       .arg(key)
+                       .arg(i + 1)
+                       .arg(n(lump.def.depthMm));
+        else if (!reach.mouseFeels)
+            out << tr("%1: lump %2 cannot be felt with the mouse: its top lies %3 mm under the surface; the "
+                      "surface sinks that far under a press %4 mm deep, and the lump is felt a wheel step (%5 mm) "
+                      "deeper, but the mouse presses at most %6 mm deep. Make it at most %7 mm deep, or train this "
+                      "one with a device.")
+                       .arg(key)
+                       .arg(i + 1)
+                       .arg(n(lump.def.depthMm), n(reach.engageDepthMm), n(reach.feelDepthMm - reach.engageDepthMm),
+                            n(reach.mouseDeepestMm), n(reach.deepestFeltMm));
+        if (reach.forceN && *reach.forceN >= excessiveN)
+            out << tr("%1: feeling lump %2 takes about %3 N, at or above the excessive force %4 N: the trainee who "
+                      "finds it is marked down for pressing too hard. Make it shallower, or raise the excessive force.")
+                       .arg(key)
+                       .arg(i + 1)
+                       .arg(n(*reach.forceN), n(excessiveN));
+        else if (reach.forceN && *reach.forceN > deviceMaxN)
+            out << tr("%1: feeling lump %2 takes about %3 N, more than a desktop device renders (%4 N). Make it "
+                      "shallower, or choose a softer tissue preset.")
+                       .arg(key)
+                       .arg(i + 1)
+                       .arg(n(*reach.forceN), n(deviceMaxN));
     }
     return out;
 }

@@ -2,18 +2,22 @@
 // The instructor's exercise editor (docs/scoring.md): authors a graded exercise (Exercise.h) in the GUI.
 // Common fields (name, description, mesh, tissue preset, limits), one page per type (press
 // targets: a table of targets; find the lump: the inclusion; trace: the path points), the rubric
-// of the metrics that apply to the type, and the problems of the exercise, live. Points are placed
+// of the metrics that apply to the type, and the problems of the exercise, live. Each type's page
+// is built from its kind's editing descriptor (engine/exercise/ExerciseEditing.h): a table of the
+// points it places (targets, the inclusion, path points, lumps) with their numbers, and the
+// numbers of its section. Points are placed
 // by clicking the drawn mesh: the window forwards the viewport's picks to vertexPicked() while
 // placingChanged(true) says the panel wants them. Each press target is checked, live, for whether
 // its force window can be reached pressing with the mouse (TargetReachability.h): a warning per
-// target that cannot, saying what to change; a first target gets a window the tissue reaches. Every edit is one step on a QUndoStack (typing
-// into one field merges). Files are the engine's exercise JSON (ExerciseFile.h); saving writes
+// target that cannot, saying what to change; a first target gets a window the tissue reaches. Every edit is one step on
+// a QUndoStack (typing into one field merges). Files are the engine's exercise JSON (ExerciseFile.h); saving writes
 // mesh and preset paths relative to resources/ when they are under it, as the shipped examples do.
 // A plain QWidget, meant for a QDockWidget (about 380 px wide: the form scrolls).
 
 #include "engine/core/TissueMesh.h"
 #include "engine/exercise/Exercise.h"
 #include "engine/exercise/ExerciseFile.h"
+#include "engine/scoring/TargetReachability.h"
 #include "widgets/ExerciseMarkers.h"
 
 #include <QHash>
@@ -46,8 +50,11 @@ class QToolButton;
 class QUndoStack;
 
 namespace palpate {
+class ExerciseKind;
+}
 
-class TouchForceProbe;
+namespace palpate {
+
 struct TouchReach;
 
 class ExerciseEditorPanel final : public QWidget {
@@ -55,11 +62,9 @@ class ExerciseEditorPanel final : public QWidget {
 public:
     /// What a click on the drawn mesh does.
     enum class Placing {
-        None,            ///< nothing: the viewport keeps its clicks
-        AddTarget,       ///< press targets: append a target at the vertex (stays on for more)
-        PlaceInclusion,  ///< find the lump: the vertex becomes the centre (one click)
-        AddPathPoint,    ///< trace: append a path point (stays on for more)
-        MoveSelected,    ///< the selected target or path point (the lump: its centre) moves there (one click)
+        None,          ///< nothing: the viewport keeps its clicks
+        AddItem,       ///< append an item (target, path point, lump) at the vertex (stays on for more)
+        MoveSelected,  ///< the selected item (a single one: it) moves there (one click)
     };
     /// The answer to "discard the unsaved changes?".
     enum class DiscardAnswer { Save, Discard, Cancel };
@@ -102,8 +107,8 @@ public:
 
     void setPlacing(Placing placing);
     Placing placing() const { return mPlacing; }
-    /// The target (press targets) or path point (trace) being edited, -1 for none. Selecting
-    /// one highlights its marker.
+    /// The item (target, path point, lump) being edited, -1 for none; a single item (the
+    /// inclusion) is never selected. Selecting one highlights its marker.
     int selectedIndex() const { return mSelected; }
     void setSelectedIndex(int index);
 
@@ -128,9 +133,8 @@ public:
 
     /// Actions for the window's menus and toolbars (each also a button of the panel; shortcuts
     /// active while the focus is in the panel: the window may widen their context).
-    QAction* newPressTargetsAction() const { return mNewActions[0]; }
-    QAction* newFindLumpAction() const { return mNewActions[1]; }
-    QAction* newTraceAction() const { return mNewActions[2]; }
+    /// "New: <type>", one per kind (exerciseKinds()).
+    QAction* newAction(ExerciseType type) const;
     QAction* openAction() const { return mOpenAction; }      ///< Ctrl+O: asks, then a file dialog
     QAction* saveAction() const { return mSaveAction; }      ///< Ctrl+S
     QAction* saveAsAction() const { return mSaveAsAction; }  ///< Ctrl+Shift+S
@@ -174,15 +178,26 @@ private:
         kTimeLimit,
         kDisplacementLimit,
         kExcessiveForce,
-        kLumpRadius,
-        kLumpStiffness,
-        kTraceForceMin,
-        kTraceForceMax,
-        kTraceTolerance,
         kNeedsError,
         kNeedsBudget,
         kMeshScale,
-        kFieldCount
+        /// The kind's section numbers: kSectionNumber + their index.
+        kSectionNumber,
+        /// Merge keys are field + kMergeFields * epoch.
+        kMergeFields = 64
+    };
+    /// One type's page, built from its kind's editing descriptor.
+    struct KindPage {
+        const ExerciseKind* kind = nullptr;
+        QWidget* page = nullptr;
+        QTableWidget* table = nullptr;
+        QToolButton* add = nullptr;
+        QToolButton* move = nullptr;
+        QToolButton* remove = nullptr;
+        QToolButton* up = nullptr;
+        QToolButton* down = nullptr;
+        std::vector<QDoubleSpinBox*> numbers;  ///< the section's, in the descriptor's order
+        std::vector<QLabel*> numberLabels;
     };
 
     void buildUi();
@@ -206,7 +221,16 @@ private:
     /// and the user is still in that field) and shows it.
     void pushEdit(const Exercise& after, const QString& text, int field = -1);
     void onFieldEdited(int field);
-    void onTargetCellChanged(int row, int column);
+    void onItemCellChanged(int row, int column);
+    /// The page of the exercise's kind.
+    KindPage& page();
+    const KindPage& page() const;
+    /// How many items the exercise has (its kind's).
+    int itemCount() const;
+    /// Builds one kind's page.
+    QWidget* buildKindPage(const ExerciseKind& kind);
+    /// Fills the page of the exercise's kind from it.
+    void showItems(const Exercise& exercise);
     void onRubricCellChanged(int row, int column);
     void commitPath(bool mesh, const QString& text);
     /// The unit combo's choice: 0..3 a named unit, 4 "scale…" (the spin box's factor).
@@ -240,10 +264,19 @@ private:
     const TissueMesh* checkMesh(const QString& meshPath);
     /// The rendered force at each touch depth at an engine vertex of the exercise's mesh with its
     /// tissue (cached per mesh, preset and vertex); null with mReachError set when it cannot be had.
-    const std::vector<double>* touchForces(const QString& meshFile, const TissueMesh& mesh, VertexId vertex);
-    /// The reachability warnings of the press targets (each) or the trace's band (at every path
-    /// point) placed on `geometry`'s mesh.
+    const TouchPresses* touchPresses(const QString& meshFile, const TissueMesh& mesh, VertexId vertex);
+    const std::vector<double>* touchForces(const QString& meshFile, const TissueMesh& mesh, VertexId vertex) {
+        const TouchPresses* p = touchPresses(meshFile, mesh, vertex);
+        return p ? &p->forcesN : nullptr;
+    }
+    /// The reachability warnings of the press targets (each), the trace's band (at every path
+    /// point) and the lumps (each, with the mouse and with a device) placed on `geometry`'s mesh.
     QStringList reachWarnings(const ExerciseGeometry& geometry, const QString& meshFile, const TissueMesh& mesh);
+    QStringList bandWarnings(const ExerciseGeometry& geometry, const QString& meshFile, const TissueMesh& mesh);
+    QStringList lumpWarnings(const ExerciseGeometry& geometry, const QString& meshFile, const TissueMesh& mesh);
+    QStringList coverageWarnings(const Exercise& exercise, const QString& meshFile, const TissueMesh& mesh);
+    /// How firmly the mouse examines the exercise's tissue; nullopt when not known.
+    std::optional<ExamineReach> examineReach(const QString& meshFile, const TissueMesh& mesh);
     /// A label registered for retranslation.
     QLabel* rowLabel(const char* text);
 
@@ -256,7 +289,7 @@ private:
     /// The force probe of the exercise's mesh and tissue, and what it found per vertex.
     std::unique_ptr<TouchForceProbe> mProbe;
     QString mProbeKey;  ///< mesh file, preset file and its modification time: a new one rebuilds
-    QHash<VertexId, std::vector<double>> mProbeForces;
+    QHash<VertexId, TouchPresses> mProbePresses;
     QString mReachError;
     QStringList mWarnings;
 
@@ -278,7 +311,7 @@ private:
     QString mLastDirectory;
 
     QUndoStack* mUndoStack = nullptr;
-    QAction* mNewActions[3] = {nullptr, nullptr, nullptr};
+    std::vector<QAction*> mNewActions;  ///< one per kind, in exerciseKinds() order
     QAction* mOpenAction = nullptr;
     QAction* mSaveAction = nullptr;
     QAction* mSaveAsAction = nullptr;
@@ -323,29 +356,10 @@ private:
     QCheckBox* mNeedsCheck = nullptr;
     QDoubleSpinBox* mNeedsErrorSpin = nullptr;
     QDoubleSpinBox* mNeedsBudgetSpin = nullptr;
+    /// "show_live_score": checked when the trainee sees the score while the exercise runs.
+    QCheckBox* mLiveScoreCheck = nullptr;
     QStackedWidget* mTypePages = nullptr;
-    // Press targets.
-    QTableWidget* mTargetTable = nullptr;
-    QToolButton* mAddTargetButton = nullptr;
-    QToolButton* mMoveTargetButton = nullptr;
-    QToolButton* mRemoveTargetButton = nullptr;
-    QToolButton* mTargetUpButton = nullptr;
-    QToolButton* mTargetDownButton = nullptr;
-    // Find the lump.
-    QPushButton* mPlaceLumpButton = nullptr;
-    QLabel* mLumpCentreLabel = nullptr;
-    QDoubleSpinBox* mLumpRadiusSpin = nullptr;
-    QDoubleSpinBox* mLumpStiffnessSpin = nullptr;
-    // Trace.
-    QListWidget* mPathList = nullptr;
-    QToolButton* mAddPointButton = nullptr;
-    QToolButton* mMovePointButton = nullptr;
-    QToolButton* mRemovePointButton = nullptr;
-    QToolButton* mPointUpButton = nullptr;
-    QToolButton* mPointDownButton = nullptr;
-    QDoubleSpinBox* mTraceMinSpin = nullptr;
-    QDoubleSpinBox* mTraceMaxSpin = nullptr;
-    QDoubleSpinBox* mTraceToleranceSpin = nullptr;
+    std::vector<KindPage> mPages;  ///< one per kind, in exerciseKinds() order
     // Rubric.
     QTableWidget* mRubricTable = nullptr;
     QPushButton* mResetRubricButton = nullptr;

@@ -20,6 +20,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <QSettings>
 #include <QStandardPaths>
 
 #include <algorithm>
@@ -119,15 +120,38 @@ void ExerciseController::listExampleExercises() {
             if (loaded.exercise) list.append({QString::fromStdString(loaded.exercise->name), file.absoluteFilePath()});
         }
     }
+    mShippedExercises.clear();
+    for (const auto& entry : list) mShippedExercises << entry.second;
+    // Then the ones opened before, oldest last; one that no longer opens is left out of the list
+    // (and kept in the settings: a folder on a network drive may be back tomorrow).
+    for (const QString& path : openedExercises()) {
+        const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
+        if (loaded.exercise) list.append({QString::fromStdString(loaded.exercise->name), path});
+    }
     mPanel.setExercises(list);
 }
 
 QString ExerciseController::addExerciseFile(const QString& path) {
     const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
     if (!loaded.exercise) return joined(loaded.errors);
-    mPanel.addExercise(QString::fromStdString(loaded.exercise->name), QFileInfo(path).absoluteFilePath());
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    const bool shipped = std::any_of(mShippedExercises.begin(), mShippedExercises.end(),
+                                     [&](const QString& s) { return QFileInfo(s) == QFileInfo(absolute); });
+    if (!shipped) {
+        // Kept for the next start: the trainee's list holds what was opened, newest first.
+        QStringList opened = QSettings().value(QLatin1String(kOpenedExercisesKey)).toStringList();
+        opened.removeAll(absolute);
+        opened.prepend(absolute);
+        while (opened.size() > kMaxOpenedExercises) opened.removeLast();
+        QSettings().setValue(QLatin1String(kOpenedExercisesKey), opened);
+    }
+    mPanel.addExercise(QString::fromStdString(loaded.exercise->name), absolute);
     mExercisePicked = true;
     return {};
+}
+
+QStringList ExerciseController::openedExercises() {
+    return QSettings().value(QLatin1String(kOpenedExercisesKey)).toStringList();
 }
 
 void ExerciseController::followMesh(const QString& meshPath) {

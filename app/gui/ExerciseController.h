@@ -19,6 +19,7 @@
 #include <QDateTime>
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 #include <functional>
 #include <memory>
@@ -48,10 +49,14 @@ public:
 
     /// Adds a trainee (or finds one of that name) and selects it. "" or the error.
     QString addTrainee(const QString& name);
-    /// Lists the shipped examples (resources/exercises) and selects the first.
+    /// Lists the shipped examples (resources/exercises), then the exercises opened before (the
+    /// settings' "exercises/opened"), and selects the first.
     void listExampleExercises();
-    /// Adds an exercise file to the dock's list and selects it. "" or the errors naming the keys.
+    /// Adds an exercise file to the dock's list and selects it; one not shipped stays in the list
+    /// at the next start. "" or the errors naming the keys.
     QString addExerciseFile(const QString& path);
+    /// The exercise files opened before, newest first (whether or not they still open).
+    static QStringList openedExercises();
     /// The window shows `meshPath` now: while nothing runs and the trainee has not picked an
     /// exercise themselves, the dock selects the first listed exercise on that mesh (its text then
     /// speaks of what is on screen).
@@ -108,6 +113,10 @@ signals:
     void resultStored();
 
 private:
+    static constexpr const char* kOpenedExercisesKey = "exercises/opened";
+    static constexpr int kMaxOpenedExercises = 30;
+    QStringList mShippedExercises;  ///< the shipped examples' files, as listed
+
     /// Why no database is open: openDatabase's error, naming the file and the reason.
     QString databaseProblem() const;
     QString begin(const Exercise& exercise, bool preview);

@@ -10,6 +10,7 @@
 #include "engine/exercise/Exercise.h"
 #include "engine/exercise/ExerciseChecker.h"
 #include "engine/exercise/ExerciseDemands.h"
+#include "engine/exercise/ExerciseEditing.h"
 #include "engine/exercise/ExerciseTask.h"
 #include "engine/exercise/ExerciseView.h"
 
@@ -102,6 +103,10 @@ public:
     /// session) marks progress, `selected` (the instructor's) is the item being edited.
     virtual ExerciseDrawing draw(const ExerciseGeometry& geometry, MarkerAudience audience,
                                  const ScoreGuidance* guidance, int selected) const = 0;
+    /// What the exercise editor edits of the kind: the points it places and their numbers, the
+    /// section's numbers.
+    virtual const ExerciseEditing& editing() const = 0;
+
     /// What the trainee is told at this point of the session.
     virtual GuidanceView guidance(const Exercise& exercise, const ScoreGuidance& guidance) const = 0;
 };

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace palpate {
 
@@ -106,17 +107,21 @@ double TouchForceProbe::settle() {
     return last;
 }
 
-std::vector<double> TouchForceProbe::forcesN(VertexId v) {
-    if (v >= mRestMm.size() || v >= mNormals.size()) return {};
+TouchPresses TouchForceProbe::presses(VertexId v) {
+    TouchPresses out;
+    if (v >= mRestMm.size() || v >= mNormals.size()) return out;
     // From rest, above the vertex, then in as the wheel presses: one step at a time.
-    mLoop->scene().model().reset();
+    DeformationModel& model = mLoop->scene().model();
+    model.reset();
     mMouse->setTargetMm(touchToolPositionMm(mRestMm[v], mNormals[v], mToolRadiusMm, -kLiftMm));
     settle();
-    std::vector<double> out;
-    out.reserve(mDepthsMm.size());
+    out.forcesN.reserve(mDepthsMm.size());
+    out.sinksMm.reserve(mDepthsMm.size());
     for (const double depthMm : mDepthsMm) {
         mMouse->setTargetMm(touchToolPositionMm(mRestMm[v], mNormals[v], mToolRadiusMm, float(depthMm)));
-        out.push_back(settle());
+        out.forcesN.push_back(settle());
+        const auto positions = model.positionsMm();
+        out.sinksMm.push_back(v < positions.size() ? double(glm::dot(mRestMm[v] - positions[v], mNormals[v])) : 0.0);
     }
     mMouse->setTargetMm(touchToolPositionMm(mRestMm[v], mNormals[v], mToolRadiusMm, -kLiftMm));
     settle();
@@ -180,6 +185,95 @@ std::optional<ForceWindow> comfortableWindow(const std::vector<double>& forcesN,
     ForceWindow w{roundTwoDigits(lo, true), roundTwoDigits(hi, false)};
     if (!(w.maxN > w.minN)) w = ForceWindow{lo, hi};
     return w;
+}
+
+std::vector<VertexId> examinePoints(const std::vector<glm::vec3>& restMm) {
+    std::vector<VertexId> out;
+    if (restMm.empty()) return out;
+    for (int axis = 0; axis < 3; ++axis)
+        for (const float sign : {-1.0f, 1.0f}) {
+            VertexId best = 0;
+            for (VertexId v = 1; v < restMm.size(); ++v)
+                if (sign * restMm[v][axis] > sign * restMm[best][axis]) best = v;
+            if (std::find(out.begin(), out.end(), best) == out.end()) out.push_back(best);
+        }
+    return out;
+}
+
+std::optional<ExamineReach> judgeExamining(const std::vector<std::vector<double>>& forcesPerPointN,
+                                           const TouchReach& touch) {
+    std::vector<double> comfortable, deepest;
+    const std::vector<double> depths = touch.depthsMm();
+    for (const std::vector<double>& forces : forcesPerPointN) {
+        if (forces.empty()) continue;
+        comfortable.push_back(forceAt(forces, depths, touch.maxDepthMm / 3.0));
+        deepest.push_back(forces.back());
+    }
+    if (deepest.empty()) return std::nullopt;
+    const auto middle = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        const std::size_t n = v.size();
+        return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    };
+    ExamineReach out;
+    out.deepestN = middle(deepest);
+    out.comfortableN = roundTwoDigits(middle(comfortable), false);
+    if (!(out.deepestN > 1e-6)) return std::nullopt;
+    return out;
+}
+
+namespace {
+
+/// y at x along the polyline (xs ascending), extrapolated from the last two points beyond it;
+/// nullopt with fewer than two points beyond the first.
+std::optional<double> alongOrBeyond(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
+    const std::size_t n = std::min(xs.size(), ys.size());
+    if (n == 0) return std::nullopt;
+    if (n == 1) return x <= xs[0] ? std::optional<double>(ys[0]) : std::nullopt;
+    if (x <= xs[0]) return ys[0];
+    std::size_t i = 1;
+    while (i + 1 < n && xs[i] < x) ++i;
+    const double span = xs[i] - xs[i - 1];
+    if (!(span > 0.0)) return ys[i];
+    return ys[i - 1] + (ys[i] - ys[i - 1]) * (x - xs[i - 1]) / span;
+}
+
+/// The smallest x at which y (ascending in the main) reaches `level`, along or beyond the
+/// polyline; nullopt when it never does (y flat or falling at the end).
+std::optional<double> whereReaches(const std::vector<double>& xs, const std::vector<double>& ys, double level) {
+    const std::size_t n = std::min(xs.size(), ys.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        if (ys[i] < level) continue;
+        if (i == 0) return xs[0];
+        const double rise = ys[i] - ys[i - 1];
+        return rise > 0.0 ? xs[i - 1] + (xs[i] - xs[i - 1]) * (level - ys[i - 1]) / rise : xs[i];
+    }
+    if (n < 2) return std::nullopt;
+    const double slope = (ys[n - 1] - ys[n - 2]) / (xs[n - 1] - xs[n - 2]);
+    if (!(slope > 1e-9)) return std::nullopt;
+    return xs[n - 1] + (level - ys[n - 1]) / slope;
+}
+
+}  // namespace
+
+LumpReach judgeLump(const LumpDef& lump, const TouchPresses& presses, const TouchReach& touch) {
+    LumpReach out;
+    const std::vector<double> depths = touch.depthsMm();
+    // Without a wheel step (one depth), half a millimetre past.
+    const double stepMm = touch.depthStepMm > 0.0 ? touch.depthStepMm : 0.5;
+    out.mouseDeepestMm = touch.maxDepthMm;
+    const std::optional<double> engage = whereReaches(depths, presses.sinksMm, lump.depthMm);
+    // A tissue that does not sink with the press never brings the lump within reach.
+    out.engageDepthMm = engage ? std::max(*engage, lump.depthMm) : std::numeric_limits<double>::infinity();
+    out.feelDepthMm = out.engageDepthMm + stepMm;
+    out.mouseFeels = touch.maxDepthMm + 1e-9 >= out.feelDepthMm;
+    if (const auto sink = alongOrBeyond(depths, presses.sinksMm, touch.maxDepthMm - stepMm))
+        out.deepestFeltMm = std::max(0.0, *sink);
+    if (engage) {
+        const std::optional<double> forceN = alongOrBeyond(depths, presses.forcesN, out.feelDepthMm);
+        if (forceN && *forceN > 1e-6 && std::isfinite(*forceN)) out.forceN = *forceN;
+    }
+    return out;
 }
 
 std::string reachAdvice(const PressTarget& target, const TargetReach& reach) {

@@ -38,6 +38,13 @@ struct TouchReach {
 /// that far below `restMm` along the outward `normal`; a sphere's centre is its radius above that.
 glm::vec3 touchToolPositionMm(const glm::vec3& restMm, const glm::vec3& normal, float toolRadiusMm, float depthMm);
 
+/// What pressing at one vertex gives at each of TouchReach::depthsMm(): the force rendered and how
+/// far the vertex has sunk along its rest normal (less than the depth: the contact gives too).
+struct TouchPresses {
+    std::vector<double> forcesN;
+    std::vector<double> sinksMm;
+};
+
 /// The rendered force at each touch depth at a vertex of one scene. Not real-time: it builds a
 /// scene and runs a stepped loop (a few thousand ticks a vertex).
 class TouchForceProbe {
@@ -54,7 +61,9 @@ public:
     const TouchReach& touch() const { return mTouch; }
     /// |F| rendered (N) with the tool held at each of touch().depthsMm() at vertex `v` (engine
     /// numbering), the tissue at rest before the press; empty for a vertex not on the mesh.
-    std::vector<double> forcesN(VertexId v);
+    std::vector<double> forcesN(VertexId v) { return presses(v).forcesN; }
+    /// The same presses with how far the vertex has sunk under the tool at each depth.
+    TouchPresses presses(VertexId v);
 
 private:
     TouchForceProbe() = default;
@@ -92,6 +101,43 @@ struct ForceWindow {
     double maxN = 0.0;
 };
 std::optional<ForceWindow> comfortableWindow(const std::vector<double>& forcesN, const TouchReach& touch);
+
+/// Whether a lump hidden under the surface (docs/scoring.md, "Lumps under the surface") can be
+/// felt: pressing above it is soft until the surface has sunk to the lump's top, so it is felt
+/// one wheel step past the press that sinks the surface that far (the difference between two
+/// steps is what the trainee feels).
+struct LumpReach {
+    double engageDepthMm = 0.0;   ///< the press that sinks the surface to the lump's top
+    double feelDepthMm = 0.0;     ///< that press and one wheel step
+    bool mouseFeels = false;      ///< the mouse's deepest press goes that deep
+    double mouseDeepestMm = 0.0;  ///< the mouse's deepest press
+    double deepestFeltMm = 0.0;   ///< the deepest lump top the mouse feels there (0: none)
+    /// The force a press that deep gives on the tissue as it is (interpolated between the probed
+    /// depths, extrapolated from the deepest two beyond them); nullopt when the tissue gives none.
+    std::optional<double> forceN;
+};
+
+/// Judges a lump at its surface point against presses probed there at touch.depthsMm() (on the
+/// tissue without the lump). Beyond the deepest press the sink and the force are extrapolated
+/// from the deepest two (the slope-ring tissue's grow in proportion to the press).
+LumpReach judgeLump(const LumpDef& lump, const TouchPresses& presses, const TouchReach& touch);
+
+/// How firmly the mouse examines a surface (coverage.min_force_n, docs/scoring.md "Reachable
+/// targets"): the force a press a third of the deepest touch deep gives, rounded down to two
+/// digits, and the force of the deepest press; each the middle of its values over a few points
+/// spread over the surface.
+struct ExamineReach {
+    double comfortableN = 0.0;
+    double deepestN = 0.0;
+};
+
+/// The points the examining force is probed at: the vertices farthest out along -x, +x, -y, +y,
+/// -z and +z (without repeats).
+std::vector<VertexId> examinePoints(const std::vector<glm::vec3>& restMm);
+
+/// Judges the forces probed at examinePoints(); nullopt when none gives a force.
+std::optional<ExamineReach> judgeExamining(const std::vector<std::vector<double>>& forcesPerPointN,
+                                           const TouchReach& touch);
 
 /// What to change, in English ("" when reachable): for the CLI and logs; the editor says it in
 /// the user's language from the same figures.

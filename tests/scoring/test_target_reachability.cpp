@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace palpate {
@@ -171,6 +172,101 @@ TEST(TargetReachability, EveryTargetOfAnExerciseIsJudged) {
     a.geometry = ExerciseGeometry::build(lowered, *a.mesh, error);
     ASSERT_TRUE(a.geometry) << error;
     for (const TargetReach& r : checkTargetReachability(a, kTouch, error)) EXPECT_TRUE(r.reachable);
+}
+
+TEST(TargetReachability, ALumpIsFeltAWheelStepPastThePressThatSinksTheSurfaceToItsTop) {
+    const TouchReach touch{3.0, 0.5};  // depths 0, 0.5, ... 3 mm
+    // A tissue whose surface sinks 0.8 mm a millimetre pressed (the rest is the contact's give).
+    TouchPresses p;
+    for (const double d : touch.depthsMm()) {
+        p.sinksMm.push_back(0.8 * d);
+        p.forcesN.push_back(0.1 * d);
+    }
+    LumpDef lump;
+    lump.depthMm = 1.2;  // the surface sinks 1.2 mm under a 1.5 mm press
+    LumpReach r = judgeLump(lump, p, touch);
+    EXPECT_NEAR(r.engageDepthMm, 1.5, 1e-9);
+    EXPECT_NEAR(r.feelDepthMm, 2.0, 1e-9);
+    EXPECT_TRUE(r.mouseFeels);
+    ASSERT_TRUE(r.forceN);
+    EXPECT_NEAR(*r.forceN, 0.2, 1e-9);
+    EXPECT_NEAR(r.deepestFeltMm, 0.8 * 2.5, 1e-9);  // the deepest press less a step
+
+    lump.depthMm = 2.4;  // engaged at 3 mm, the deepest: felt only a step beyond the mouse
+    r = judgeLump(lump, p, touch);
+    EXPECT_NEAR(r.engageDepthMm, 3.0, 1e-9);
+    EXPECT_FALSE(r.mouseFeels);
+    ASSERT_TRUE(r.forceN);
+    EXPECT_NEAR(*r.forceN, 0.35, 1e-9) << "extrapolated from the deepest two presses";
+
+    // A surface that does not sink never brings a buried lump within reach.
+    std::fill(p.sinksMm.begin(), p.sinksMm.end(), 0.0);
+    r = judgeLump(lump, p, touch);
+    EXPECT_FALSE(r.mouseFeels);
+    EXPECT_FALSE(std::isfinite(r.engageDepthMm));
+    EXPECT_FALSE(r.forceN);
+    // A lump at the surface is felt a step in, whatever the tissue.
+    lump.depthMm = 0.0;
+    r = judgeLump(lump, p, touch);
+    EXPECT_NEAR(r.feelDepthMm, 0.5, 1e-9);
+    EXPECT_TRUE(r.mouseFeels);
+}
+
+TEST(TargetReachability, TheJudgedFeelDepthIsWhereTheLumpRaisesTheForceTheLoopRenders) {
+    // The shipped detection exercise (lumps 2, 4 and 8 mm deep in muscle), pressed by the loop with
+    // its lumps and without them: no difference before the judged engaging press, a clear one from
+    // a wheel step past it.
+    const ExerciseAssets a = exampleAssets("detect_lumps");
+    const TouchReach touch{12.0, 0.5};
+    std::string error;
+    auto tissue = TouchForceProbe::create(*a.mesh, a.preset, nullptr, touch, error);
+    ASSERT_TRUE(tissue) << error;
+    auto withLumps = TouchForceProbe::create(*a.mesh, a.preset, a.geometry.get(), touch, error);
+    ASSERT_TRUE(withLumps) << error;
+    const std::vector<double> depths = touch.depthsMm();
+    ASSERT_EQ(a.geometry->lumps().size(), 3u);
+    for (const ResolvedLump& lump : a.geometry->lumps()) {
+        const TouchPresses plain = tissue->presses(lump.vertex);
+        ASSERT_EQ(plain.sinksMm.size(), depths.size());
+        for (std::size_t i = 1; i < depths.size(); ++i) {
+            EXPECT_GT(plain.sinksMm[i], plain.sinksMm[i - 1]) << "the surface sinks deeper the deeper the press";
+            EXPECT_LT(plain.sinksMm[i], depths[i]) << "less than the press: the contact gives too";
+        }
+        const LumpReach reach = judgeLump(lump.def, plain, touch);
+        ASSERT_TRUE(reach.mouseFeels) << "lump " << lump.def.depthMm << " mm deep within 12 mm";
+        const std::vector<double> felt = withLumps->forcesN(lump.vertex);
+        ASSERT_EQ(felt.size(), depths.size());
+        std::printf("[ figures  ] lump %.0f mm deep: surface there at %.2f mm, felt from %.2f mm;", lump.def.depthMm,
+                    reach.engageDepthMm, reach.feelDepthMm);
+        for (std::size_t i = 0; i < depths.size(); ++i) {
+            if (depths[i] < reach.engageDepthMm - 1e-6)
+                EXPECT_NEAR(felt[i], plain.forcesN[i], 0.01 * plain.forcesN[i] + 1e-6)
+                    << "before the lump, at " << depths[i];
+            if (depths[i] >= reach.feelDepthMm - 1e-6 && depths[i] < reach.feelDepthMm + 0.5) {
+                std::printf(" %.3f N against %.3f N at %.1f mm", felt[i], plain.forcesN[i], depths[i]);
+                EXPECT_GT(felt[i], 1.1 * plain.forcesN[i]) << "a step past, at " << depths[i];
+            }
+        }
+        std::printf("\n");
+    }
+}
+
+TEST(TargetReachability, TheExaminingForceIsTheMiddleOverPointsSpreadOverTheSurface) {
+    // A box's corners and centre: the six extremes are corners, without repeats.
+    const std::vector<glm::vec3> rest{{0, 0, 0}, {-5, 0, 0}, {5, 1, 0}, {0, -7, 0}, {0, 7, 2}, {0, 0, -9}, {1, 1, 9}};
+    EXPECT_EQ(examinePoints(rest), (std::vector<VertexId>{1, 2, 3, 4, 5, 6}));
+    EXPECT_EQ(examinePoints({{1, 1, 1}}), (std::vector<VertexId>{0}));
+    EXPECT_TRUE(examinePoints({}).empty());
+
+    const TouchReach touch{3.0, 1.0};  // depths 0, 1, 2, 3 mm: a third is 1 mm
+    const std::vector<std::vector<double>> forces{
+        {0.0, 0.123, 0.3, 0.5}, {0.0, 0.2, 0.5, 0.9}, {0.0, 0.01, 0.02, 0.03}, {}};
+    const auto reach = judgeExamining(forces, touch);
+    ASSERT_TRUE(reach);
+    EXPECT_NEAR(reach->deepestN, 0.5, 1e-12);       // the middle of 0.03, 0.5, 0.9 (a point without forces is left out)
+    EXPECT_NEAR(reach->comfortableN, 0.12, 1e-12);  // the middle of 0.01, 0.123, 0.2, rounded down to two digits
+    EXPECT_FALSE(judgeExamining({{0.0, 0.0}}, TouchReach{1.0, 1.0}));  // a tissue that gives nothing
+    EXPECT_FALSE(judgeExamining({}, touch));
 }
 
 }  // namespace

@@ -39,6 +39,7 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSignalSpy>
+#include <QStackedWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -199,10 +200,10 @@ TEST(ExerciseEditor, TargetsAddedByClickingAreStoredInFileNumberingAndUndoable) 
     EXPECT_TRUE(editor.panel.exercise().pressTargets.targets.empty());
 
     QSignalSpy placing(&editor.panel, &ExerciseEditorPanel::placingChanged);
-    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
     ASSERT_EQ(placing.count(), 1);
     EXPECT_TRUE(placing.at(0).at(0).toBool());
-    EXPECT_TRUE(child<QToolButton>(editor.panel, "targetAddButton")->isChecked());
+    EXPECT_TRUE(child<QToolButton>(editor.panel, "press_targets.targets.add")->isChecked());
 
     const std::vector<VertexId> picks = spreadVertices(*drawn.mesh, 3);
     ASSERT_EQ(picks.size(), 3u);
@@ -217,7 +218,7 @@ TEST(ExerciseEditor, TargetsAddedByClickingAreStoredInFileNumberingAndUndoable) 
     EXPECT_EQ(targets[0].toleranceMm, PressTarget{}.toleranceMm);  // the defaults
     EXPECT_EQ(targets[1].forceMinN, targets[0].forceMinN);  // the first target's window
     EXPECT_EQ(targets[2].forceMaxN, targets[0].forceMaxN);
-    EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::AddTarget);  // stays on for more
+    EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::AddItem);  // stays on for more
     EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
 
     auto expectTargetMarkers = [&](std::size_t count) {
@@ -231,19 +232,19 @@ TEST(ExerciseEditor, TargetsAddedByClickingAreStoredInFileNumberingAndUndoable) 
     };
     expectTargetMarkers(3);
     EXPECT_TRUE(editor.lastMarkers.markers[2].selected);  // the one just added
-    EXPECT_EQ(child<QTableWidget>(editor.panel, "targetTable")->rowCount(), 3);
+    EXPECT_EQ(child<QTableWidget>(editor.panel, "press_targets.targets")->rowCount(), 3);
 
     EXPECT_EQ(editor.panel.undoStack()->count(), 3);  // one step per click
     editor.panel.undoStack()->undo();
     EXPECT_EQ(editor.panel.exercise().pressTargets.targets.size(), 2u);
     expectTargetMarkers(2);
-    EXPECT_EQ(child<QTableWidget>(editor.panel, "targetTable")->rowCount(), 2);
+    EXPECT_EQ(child<QTableWidget>(editor.panel, "press_targets.targets")->rowCount(), 2);
     editor.panel.undoStack()->redo();
     EXPECT_EQ(editor.panel.exercise().pressTargets.targets.size(), 3u);
     expectTargetMarkers(3);
 
     // Selecting a row selects its marker.
-    child<QTableWidget>(editor.panel, "targetTable")->selectRow(0);
+    child<QTableWidget>(editor.panel, "press_targets.targets")->selectRow(0);
     EXPECT_EQ(editor.panel.selectedIndex(), 0);
     EXPECT_TRUE(editor.lastMarkers.markers[0].selected);
     EXPECT_FALSE(editor.lastMarkers.markers[2].selected);
@@ -258,7 +259,7 @@ TEST(ExerciseEditor, TargetsAddedByClickingAreStoredInFileNumberingAndUndoable) 
 
     // Move: the selected target goes to the next click, in one step, and placing ends.
     const int steps = editor.panel.undoStack()->count();
-    child<QToolButton>(editor.panel, "targetMoveButton")->click();
+    child<QToolButton>(editor.panel, "press_targets.targets.move")->click();
     EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::MoveSelected);
     editor.panel.vertexPicked(1000);
     EXPECT_EQ(editor.panel.exercise().pressTargets.targets[0].at.vertex.value_or(~0u), drawn.mesh->originalIndex()[1000]);
@@ -268,7 +269,7 @@ TEST(ExerciseEditor, TargetsAddedByClickingAreStoredInFileNumberingAndUndoable) 
 
     // Remove (Delete in the table) removes the selected target; undo brings it back.
     editor.panel.setSelectedIndex(1);
-    child<QToolButton>(editor.panel, "targetRemoveButton")->click();
+    child<QToolButton>(editor.panel, "press_targets.targets.remove")->click();
     ASSERT_EQ(editor.panel.exercise().pressTargets.targets.size(), 2u);
     EXPECT_EQ(editor.panel.exercise().pressTargets.targets[1].at.vertex.value_or(~0u), drawn.mesh->originalIndex()[picks[2]]);
     editor.panel.undoStack()->undo();
@@ -286,7 +287,7 @@ TEST(ExerciseEditor, ClicksOnARenumberedMeshAreStoredInTheFilesNumbering) {
     editor.panel.setDrawnMesh(mesh, meshFile);
     editor.panel.newExercise(ExerciseType::PressTargets);
     EXPECT_EQ(QString::fromStdString(editor.panel.exercise().meshPath), QFileInfo(meshFile).canonicalFilePath());  // not under resources/
-    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
     const std::vector<VertexId> picks = spreadVertices(*mesh, 3);
     for (VertexId v : picks) editor.panel.vertexPicked(v);
     ASSERT_EQ(editor.panel.exercise().pressTargets.targets.size(), 3u);
@@ -309,16 +310,76 @@ TEST(ExerciseEditor, ClicksOnARenumberedMeshAreStoredInTheFilesNumbering) {
     for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(geometry->targets()[i].vertex, picks[i]);
 }
 
+// A mesh outside resources/ and outside the exercise's folder is copied into the folder when the
+// exercise is saved, and named relative to it: the folder opens on another computer (here: moved
+// elsewhere, the instructor's mesh gone).
+TEST(ExerciseEditor, AnExerciseSavedAwayFromItsMeshTakesACopyAndTravels) {
+    QTemporaryDir home, elsewhere;
+    ASSERT_TRUE(home.isValid() && elsewhere.isValid());
+    QDir(home.path()).mkpath(QStringLiteral("meshes"));
+    QDir(home.path()).mkpath(QStringLiteral("class"));
+    const QString meshFile = home.filePath(QStringLiteral("meshes/organ.off"));
+    ASSERT_TRUE(QFile::copy(QString::fromStdString(findInSource("meshes/sphere_1442.off")), meshFile));
+    auto loaded = TissueMesh::load(meshFile.toStdString());
+    ASSERT_TRUE(loaded.mesh) << loaded.error();
+    const auto mesh = std::make_shared<const TissueMesh>(std::move(*loaded.mesh));
+    Editor editor;
+    editor.panel.setDrawnMesh(mesh, meshFile);
+    editor.panel.newExercise(ExerciseType::PressTargets);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
+    editor.panel.vertexPicked(100);
+    // Someone else's organ.off is in the class folder already: never overwritten.
+    const QString classFolder = home.filePath(QStringLiteral("class"));
+    {
+        QFile other(classFolder + QStringLiteral("/organ.off"));
+        ASSERT_TRUE(other.open(QIODevice::WriteOnly));
+        other.write("not this mesh");
+    }
+    const QString file = classFolder + QStringLiteral("/press.json");
+    ASSERT_EQ(editor.panel.saveExercise(file), QString());
+    const auto saved = loadExercise(file.toStdString());
+    ASSERT_TRUE(saved.exercise) << saved.error();
+    EXPECT_EQ(saved.exercise->meshPath, "organ-2.off");
+    EXPECT_EQ(saved.exercise->tissuePresetPath.rfind("presets/", 0), 0u) << "a shipped preset stays resource-relative";
+    auto* message = child<QLabel>(editor.panel, "messageLabel");
+    EXPECT_TRUE(message->text().contains(QStringLiteral("organ-2.off"))) << message->text().toStdString();
+    QFile other(classFolder + QStringLiteral("/organ.off"));
+    ASSERT_TRUE(other.open(QIODevice::ReadOnly));
+    EXPECT_EQ(other.readAll(), QByteArray("not this mesh"));
+    // Saved again: the copy is reused.
+    ASSERT_EQ(editor.panel.saveExercise(file), QString());
+    EXPECT_FALSE(QFile::exists(classFolder + QStringLiteral("/organ-3.off")));
+
+    // The folder moved to another computer, the instructor's mesh gone: it opens and resolves.
+    const QString moved = elsewhere.filePath(QStringLiteral("press.json"));
+    ASSERT_TRUE(QFile::copy(file, moved));
+    ASSERT_TRUE(QFile::copy(classFolder + QStringLiteral("/organ-2.off"),
+                            elsewhere.filePath(QStringLiteral("organ-2.off"))));
+    ASSERT_TRUE(QFile::remove(meshFile));
+    const auto travelled = loadExercise(moved.toStdString());
+    ASSERT_TRUE(travelled.exercise) << travelled.error();
+    EXPECT_EQ(QFileInfo(QString::fromStdString(resolveExercisePath(*travelled.exercise, travelled.exercise->meshPath,
+                                                                   findInSource))),
+              QFileInfo(elsewhere.filePath(QStringLiteral("organ-2.off"))));
+    const QString movedMesh = elsewhere.filePath(QStringLiteral("organ-2.off"));
+    auto movedLoaded = TissueMesh::load(movedMesh.toStdString());
+    ASSERT_TRUE(movedLoaded.mesh) << movedLoaded.error();
+    Editor reopened;
+    reopened.panel.setDrawnMesh(std::make_shared<const TissueMesh>(std::move(*movedLoaded.mesh)), movedMesh);
+    ASSERT_EQ(reopened.panel.openExercise(moved), QString());
+    EXPECT_TRUE(reopened.panel.problems().isEmpty()) << reopened.panel.problems().join('\n').toStdString();
+}
+
 TEST(ExerciseEditor, ATargetWindowUpsideDownIsNamedByItsKey) {
     const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
     Editor editor;
     editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
     editor.panel.newExercise(ExerciseType::PressTargets);
-    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
     editor.panel.vertexPicked(100);
     ASSERT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
 
-    auto* table = child<QTableWidget>(editor.panel, "targetTable");
+    auto* table = child<QTableWidget>(editor.panel, "press_targets.targets");
     const PressTarget placed = editor.panel.exercise().pressTargets.targets[0];
     const double upsideDownN = 0.5 * placed.forceMinN;
     table->item(0, 3)->setData(Qt::EditRole, upsideDownN);  // Fmax below Fmin, as typed in the cell
@@ -350,7 +411,7 @@ TEST(ExerciseEditor, SaveWritesResourceRelativePathsThatLoadBackTheSame) {
     Editor editor;
     editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
     editor.panel.newExercise(ExerciseType::PressTargets);
-    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
     editor.panel.vertexPicked(10);
     editor.panel.vertexPicked(700);
     // The preset given as an absolute path (Browse… outside the list does so): written relative.
@@ -403,15 +464,15 @@ TEST(ExerciseEditor, PlacingTheLumpByClickingSetsItsCentre) {
     const auto before = editor.panel.exercise().findLump.inclusion.centre.vertex;
     ASSERT_TRUE(before);
 
-    child<QPushButton>(editor.panel, "placeLumpButton")->click();
-    EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::PlaceInclusion);
+    child<QToolButton>(editor.panel, "find_lump.inclusion.move")->click();
+    EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::MoveSelected);
     const VertexId v = 700;
     ASSERT_NE(*before, drawn.mesh->originalIndex()[v]);  // the click moves it
     editor.panel.vertexPicked(v);
     ASSERT_TRUE(editor.panel.exercise().findLump.inclusion.centre.vertex);
     EXPECT_EQ(*editor.panel.exercise().findLump.inclusion.centre.vertex, drawn.mesh->originalIndex()[v]);
     EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::None);  // one click places it
-    EXPECT_FALSE(child<QPushButton>(editor.panel, "placeLumpButton")->isChecked());
+    EXPECT_FALSE(child<QToolButton>(editor.panel, "find_lump.inclusion.move")->isChecked());
 
     ASSERT_EQ(editor.lastMarkers.markers.size(), 1u);
     const ExerciseMarker& m = editor.lastMarkers.markers[0];
@@ -420,12 +481,14 @@ TEST(ExerciseEditor, PlacingTheLumpByClickingSetsItsCentre) {
     EXPECT_EQ(m.radiusMm, editor.panel.exercise().findLump.inclusion.radiusMm);
 
     // The radius is a field: the circle follows; undo puts the centre back.
-    child<QDoubleSpinBox>(editor.panel, "lumpRadiusSpin")->setValue(15.0);
+    // (the inclusion's row: number, vertex, radius, stiffness)
+    child<QTableWidget>(editor.panel, "find_lump.inclusion")->item(0, 2)->setData(Qt::EditRole, 15.0);
     EXPECT_EQ(editor.lastMarkers.markers.at(0).radiusMm, 15.0);
     editor.panel.undoStack()->undo();
     editor.panel.undoStack()->undo();
     EXPECT_EQ(editor.panel.exercise().findLump.inclusion.centre.vertex, before);
-    EXPECT_EQ(child<QLabel>(editor.panel, "lumpCentreLabel")->text(), QStringLiteral("vertex %1").arg(*before));
+    EXPECT_EQ(child<QTableWidget>(editor.panel, "find_lump.inclusion")->item(0, 1)->data(Qt::EditRole).toInt(),
+              int(*before));
 }
 
 TEST(ExerciseEditor, TracePointsAreAddedByClickingAndReordered) {
@@ -434,7 +497,7 @@ TEST(ExerciseEditor, TracePointsAreAddedByClickingAndReordered) {
     editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
     editor.panel.newExercise(ExerciseType::Trace);
     EXPECT_TRUE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("trace.path")));
-    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddPathPoint);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
     const std::vector<VertexId> picks = spreadVertices(*drawn.mesh, 3);
     ASSERT_EQ(picks.size(), 3u);
 
@@ -452,11 +515,11 @@ TEST(ExerciseEditor, TracePointsAreAddedByClickingAndReordered) {
         return out;
     };
     EXPECT_EQ(pathVertices(), (std::vector<std::uint32_t>{fileVertex(picks[0]), fileVertex(picks[1]), fileVertex(picks[2])}));
-    EXPECT_EQ(child<QListWidget>(editor.panel, "pathList")->count(), 3);
+    EXPECT_EQ(child<QTableWidget>(editor.panel, "trace.path")->rowCount(), 3);
     ASSERT_EQ(editor.lastMarkers.pathMm.size(), 3u);
 
     editor.panel.setSelectedIndex(2);
-    child<QToolButton>(editor.panel, "pathPointUpButton")->click();
+    child<QToolButton>(editor.panel, "trace.path.up")->click();
     EXPECT_EQ(pathVertices(), (std::vector<std::uint32_t>{fileVertex(picks[0]), fileVertex(picks[2]), fileVertex(picks[1])}));
     EXPECT_EQ(editor.panel.selectedIndex(), 1);  // the selection moves with the point
     ASSERT_EQ(editor.lastMarkers.pathMm.size(), 3u);
@@ -468,7 +531,7 @@ TEST(ExerciseEditor, TracePointsAreAddedByClickingAndReordered) {
 
     // Remove the first point: the second becomes the start.
     editor.panel.setSelectedIndex(0);
-    child<QToolButton>(editor.panel, "pathPointRemoveButton")->click();
+    child<QToolButton>(editor.panel, "trace.path.remove")->click();
     EXPECT_EQ(pathVertices(), (std::vector<std::uint32_t>{fileVertex(picks[1]), fileVertex(picks[2])}));
 }
 
@@ -551,7 +614,7 @@ TEST(ExerciseEditor, AMeshOtherThanTheDrawnOneIsReportedAndNotPlacedOn) {
     EXPECT_TRUE(editor.lastMarkers.empty());  // its vertices mean nothing on the drawn mesh
 
     // A click on the other mesh places nothing.
-    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
     editor.panel.vertexPicked(5);
     EXPECT_EQ(editor.panel.exercise().pressTargets.targets.size(), 3u);
     EXPECT_FALSE(editor.panel.isModified());
@@ -568,7 +631,7 @@ TEST(ExerciseEditor, AMeshOtherThanTheDrawnOneIsReportedAndNotPlacedOn) {
 
     // A vertex that the exercise's mesh does not have is a problem even when another mesh is drawn.
     editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
-    auto* table = child<QTableWidget>(editor.panel, "targetTable");
+    auto* table = child<QTableWidget>(editor.panel, "press_targets.targets");
     table->item(0, 1)->setData(Qt::EditRole, 99999);
     EXPECT_TRUE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("press_targets.targets[0]")))
         << editor.panel.problems().join('\n').toStdString();
@@ -584,7 +647,7 @@ TEST(ExerciseEditor, TryItCarriesTheUnsavedExerciseWithResolvablePaths) {
                      [&](const Exercise& e) { sentExercises.push_back(e); });
     EXPECT_FALSE(editor.panel.preview());  // no target yet
     EXPECT_TRUE(sentExercises.empty());
-    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
     editor.panel.vertexPicked(42);
 
     editor.panel.previewAction()->trigger();  // F5
@@ -683,12 +746,12 @@ TEST(ExerciseEditor, UnsavedChangesAreNotDiscardedWithoutAsking) {
     });
 
     // Nothing to lose: no question.
-    editor.panel.newTraceAction()->trigger();
+    editor.panel.newAction(ExerciseType::Trace)->trigger();
     EXPECT_EQ(asked, 0);
     EXPECT_EQ(editor.panel.exercise().type, ExerciseType::Trace);
 
     QSignalSpy modified(&editor.panel, &ExerciseEditorPanel::modifiedChanged);
-    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddPathPoint);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
     editor.panel.vertexPicked(3);
     editor.panel.vertexPicked(300);
     EXPECT_TRUE(editor.panel.isModified());
@@ -697,7 +760,7 @@ TEST(ExerciseEditor, UnsavedChangesAreNotDiscardedWithoutAsking) {
     const std::string work = json(editor.panel.exercise());
 
     answer = ExerciseEditorPanel::DiscardAnswer::Cancel;
-    editor.panel.newPressTargetsAction()->trigger();
+    editor.panel.newAction(ExerciseType::PressTargets)->trigger();
     EXPECT_EQ(asked, 1);
     EXPECT_EQ(json(editor.panel.exercise()), work);  // kept
     EXPECT_TRUE(editor.panel.isModified());
@@ -710,7 +773,7 @@ TEST(ExerciseEditor, UnsavedChangesAreNotDiscardedWithoutAsking) {
     ASSERT_EQ(editor.panel.saveExercise(file), QString());
     editor.panel.vertexPicked(600);
     answer = ExerciseEditorPanel::DiscardAnswer::Save;
-    editor.panel.newFindLumpAction()->trigger();
+    editor.panel.newAction(ExerciseType::FindLump)->trigger();
     EXPECT_EQ(asked, 3);
     EXPECT_EQ(editor.panel.exercise().type, ExerciseType::FindLump);
     const auto saved = loadExercise(file.toStdString());
@@ -718,9 +781,9 @@ TEST(ExerciseEditor, UnsavedChangesAreNotDiscardedWithoutAsking) {
     EXPECT_EQ(saved.exercise->trace.path.size(), 3u);  // the last point was saved first
 
     // Discard: replaced without saving.
-    child<QDoubleSpinBox>(editor.panel, "lumpStiffnessSpin")->setValue(0.5);
+    child<QTableWidget>(editor.panel, "find_lump.inclusion")->item(0, 3)->setData(Qt::EditRole, 0.5);
     answer = ExerciseEditorPanel::DiscardAnswer::Discard;
-    editor.panel.newPressTargetsAction()->trigger();
+    editor.panel.newAction(ExerciseType::PressTargets)->trigger();
     EXPECT_EQ(asked, 4);
     EXPECT_EQ(editor.panel.exercise().type, ExerciseType::PressTargets);
     EXPECT_FALSE(editor.panel.isModified());
@@ -736,10 +799,10 @@ TEST(ExerciseEditor, FitsANarrowDock) {
     for (const auto& [type, name] : types) {
         editor.panel.newExercise(type);
         if (type == ExerciseType::PressTargets) {
-            editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+            editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
             for (VertexId v : {10u, 400u, 800u}) editor.panel.vertexPicked(v);
         } else if (type == ExerciseType::Trace) {
-            editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddPathPoint);
+            editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
             editor.panel.vertexPicked(10);
         }
         editor.panel.resize(380, 900);
@@ -768,7 +831,7 @@ TEST(ExerciseEditor, LevelOfDetailTargetsAreOptionalUndoableAndSaved) {
     Editor editor;
     editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
     editor.panel.newExercise(ExerciseType::PressTargets);
-    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
     editor.panel.vertexPicked(10);
     auto* check = child<QCheckBox>(editor.panel, "needsCheck");
     auto* error = child<QDoubleSpinBox>(editor.panel, "needsErrorSpin");
@@ -807,7 +870,7 @@ TEST(ExerciseEditor, TheMeshUnitIsAFieldWithUndoThatIsSavedAndChecksTheDrawnMesh
     Editor editor;
     editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
     editor.panel.newExercise(ExerciseType::PressTargets);
-    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
     editor.panel.vertexPicked(10);
     editor.panel.setPlacing(ExerciseEditorPanel::Placing::None);
     auto* combo = child<QComboBox>(editor.panel, "meshUnitCombo");
@@ -882,7 +945,7 @@ struct StomachWithATarget {
     StomachWithATarget() {
         editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
         editor.panel.newExercise(ExerciseType::PressTargets);
-        editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+        editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
         editor.panel.vertexPicked(vertex);
         editor.panel.setPlacing(ExerciseEditorPanel::Placing::None);
     }
@@ -916,7 +979,7 @@ TEST(ExerciseEditor, ANewExercisesFirstTargetCanBeReachedWithTheMouse) {
 
 TEST(ExerciseEditor, AWindowTheMouseCannotReachIsWarnedAboutUntilItIsFixed) {
     StomachWithATarget s;
-    auto* table = child<QTableWidget>(s.editor.panel, "targetTable");
+    auto* table = child<QTableWidget>(s.editor.panel, "press_targets.targets");
     // 1-2 N on the stomach wall: far more than its deepest touch gives.
     table->item(0, 3)->setData(Qt::EditRole, 2.0);
     table->item(0, 2)->setData(Qt::EditRole, 1.0);
@@ -962,7 +1025,7 @@ TEST(ExerciseEditor, ATraceBandTheMouseCannotReachIsWarnedAboutAndANewOneCan) {
     editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
     editor.panel.newExercise(ExerciseType::Trace);
     ASSERT_EQ(editor.panel.exercise().tissuePresetPath, "presets/tissues/stomach_wall.json");
-    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddPathPoint);
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::AddItem);
     for (VertexId v : {VertexId(1200), VertexId(1210), VertexId(1220)}) editor.panel.vertexPicked(v);
     ASSERT_EQ(editor.panel.exercise().trace.path.size(), 3u);
     EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
@@ -971,8 +1034,8 @@ TEST(ExerciseEditor, ATraceBandTheMouseCannotReachIsWarnedAboutAndANewOneCan) {
     EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
 
     // The engine's default band, 0.5-1.5 N, is more than the stomach wall gives.
-    auto* low = child<QDoubleSpinBox>(editor.panel, "traceForceMinSpin");
-    auto* high = child<QDoubleSpinBox>(editor.panel, "traceForceMaxSpin");
+    auto* low = child<QDoubleSpinBox>(editor.panel, "trace.force_min_n");
+    auto* high = child<QDoubleSpinBox>(editor.panel, "trace.force_max_n");
     high->setValue(TraceDef{}.forceMaxN);
     low->setValue(TraceDef{}.forceMinN);
     ASSERT_EQ(editor.panel.warnings().size(), 1);
@@ -1048,7 +1111,7 @@ protected:
     }
     /// Adds a target at the middle of the viewport with Add by clicking, then Esc.
     void addTargetByClicking() {
-        child<QToolButton>(*editor, "targetAddButton")->click();
+        child<QToolButton>(*editor, "press_targets.targets.add")->click();
         click();
         editor->findChild<QAction*>(QStringLiteral("stopPlacingAction"))->trigger();
     }
@@ -1065,12 +1128,12 @@ protected:
 
 TEST_F(EditorInTheWindow, AddByClickingAddsATargetWhileTouchModeIsOn) {
     ASSERT_TRUE(window->touchMode());
-    child<QToolButton>(*editor, "targetAddButton")->click();
-    ASSERT_EQ(editor->placing(), ExerciseEditorPanel::Placing::AddTarget);
+    child<QToolButton>(*editor, "press_targets.targets.add")->click();
+    ASSERT_EQ(editor->placing(), ExerciseEditorPanel::Placing::AddItem);
     // The editor says what to do.
     auto* hint = child<QLabel>(*editor, "placingLabel");
     EXPECT_TRUE(hint->isVisibleTo(editor));
-    EXPECT_EQ(hint->text(), QStringLiteral("Click the tissue to place a target; Esc to stop."));
+    EXPECT_EQ(hint->text(), QStringLiteral("Click the tissue to place Target 1, and more after it; Esc to stop."));
 
     click();
     ASSERT_EQ(editor->exercise().pressTargets.targets.size(), 1u);
@@ -1097,7 +1160,7 @@ TEST_F(EditorInTheWindow, AddByClickingAddsATargetWhileTouchModeIsOn) {
     EXPECT_EQ(editor->exercise().pressTargets.targets.size(), 2u);
 
     // Turning touch mode on (T) while placing ends the placing: the click is the tool's.
-    child<QToolButton>(*editor, "targetAddButton")->click();
+    child<QToolButton>(*editor, "press_targets.targets.add")->click();
     EXPECT_FALSE(window->touchMode());
     window->touchModeAction()->trigger();
     EXPECT_TRUE(window->touchMode());
@@ -1157,4 +1220,134 @@ TEST_F(EditorInTheWindow, TryItWithAScriptedDeviceHandsTheToolToTheMouse) {
     EXPECT_EQ(window->session().deviceUri(), HapticSession::kInteractiveDeviceUri);
     EXPECT_TRUE(window->session().touchAvailable());
     EXPECT_TRUE(window->touchMode());
+}
+
+// A detection exercise is authored like the others: lumps placed by clicking, each with its
+// radius, depth and contrast in the table; undo; saved and read back the same; drawn for the
+// instructor (never for the trainee); a lump too deep for the mouse is warned about, naming it.
+TEST(ExerciseEditor, DetectionExercisesAreAuthoredByClickingLumps) {
+    const DrawnMesh drawn = loadMesh("meshes/sphere_1442.off");
+    Editor editor;
+    editor.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    editor.panel.newAction(ExerciseType::DetectLumps)->trigger();
+    ASSERT_EQ(editor.panel.exercise().type, ExerciseType::DetectLumps);
+    // No lumps is a valid exercise (healthy tissue): Try it is open.
+    EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
+    EXPECT_TRUE(editor.panel.previewAction()->isEnabled());
+    EXPECT_FALSE(child<QCheckBox>(editor.panel, "liveScoreCheck")->isChecked());  // hidden by default here
+    // It examines with a force the mouse reaches on this tissue (the file's default, 1 N, is beyond
+    // the stomach wall's deepest press): no warning; a force beyond the deepest press is warned about.
+    const double examiningN = editor.panel.exercise().coverage.minForceN;
+    std::printf("[ figures  ] a new detection exercise on %s examines from %.3g N\n",
+                editor.panel.exercise().tissuePresetPath.c_str(), examiningN);
+    EXPECT_GT(examiningN, 0.0);
+    EXPECT_LT(examiningN, CoverageDef{}.minForceN);
+    EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
+    auto* examinedFrom = child<QDoubleSpinBox>(*child<QWidget>(editor.panel, "detect_lumpsPage"),
+                                               "coverage.min_force_n");
+    examinedFrom->setValue(CoverageDef{}.minForceN);
+    ASSERT_EQ(editor.panel.warnings().size(), 1);
+    EXPECT_TRUE(editor.panel.warnings()[0].startsWith(QStringLiteral("coverage.min_force_n")))
+        << editor.panel.warnings()[0].toStdString();
+    editor.panel.undoStack()->undo();
+    EXPECT_EQ(editor.panel.exercise().coverage.minForceN, examiningN);
+    EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
+
+    child<QToolButton>(editor.panel, "detect_lumps.lumps.add")->click();
+    ASSERT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::AddItem);
+    const std::vector<VertexId> picks = spreadVertices(*drawn.mesh, 2);
+    ASSERT_EQ(picks.size(), 2u);
+    editor.panel.vertexPicked(picks[0]);
+    editor.panel.vertexPicked(picks[1]);
+    const auto& lumps = editor.panel.exercise().detectLumps.lumps;
+    ASSERT_EQ(lumps.size(), 2u);
+    EXPECT_EQ(lumps[0].at.vertex.value_or(~0u), drawn.mesh->originalIndex()[picks[0]]);
+    EXPECT_EQ(lumps[1].at.vertex.value_or(~0u), drawn.mesh->originalIndex()[picks[1]]);
+    EXPECT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::AddItem);  // stays on for more
+    EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
+
+    // The instructor sees both, at their surface points.
+    ASSERT_EQ(editor.lastMarkers.markers.size(), 2u);
+    EXPECT_EQ(editor.lastMarkers.markers[0].positionMm, drawn.mesh->restPositionsMm()[picks[0]]);
+    EXPECT_EQ(editor.lastMarkers.markers[1].kind, ExerciseMarker::Kind::Inclusion);
+
+    // The second lump's depth (columns: number, vertex, radius, depth, contrast): one step.
+    auto* table = child<QTableWidget>(editor.panel, "detect_lumps.lumps");
+    ASSERT_EQ(table->rowCount(), 2);
+    table->item(1, 3)->setData(Qt::EditRole, 3.5);
+    EXPECT_EQ(editor.panel.exercise().detectLumps.lumps[1].depthMm, 3.5);
+    EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
+    // Deeper than the mouse presses: warned, naming the lump's depth; it still saves (a device may feel it).
+    table->item(1, 3)->setData(Qt::EditRole, Viewport::kMaxTouchDepthMm);
+    ASSERT_FALSE(editor.panel.warnings().isEmpty());
+    EXPECT_TRUE(editor.panel.warnings()[0].startsWith(QStringLiteral("detect_lumps.lumps[1].depth_mm")))
+        << editor.panel.warnings()[0].toStdString();
+    EXPECT_TRUE(editor.panel.warnings()[0].contains(QStringLiteral("lump 2")))
+        << editor.panel.warnings()[0].toStdString();
+    // A contrast of 1 is no lump: a problem naming the cell's key.
+    table->item(0, 4)->setData(Qt::EditRole, 1.0);
+    EXPECT_TRUE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("detect_lumps.lumps[0].contrast")))
+        << editor.panel.problems().join('\n').toStdString();
+    editor.panel.undoStack()->undo();
+    EXPECT_EQ(editor.panel.exercise().detectLumps.lumps[0].contrast, LumpDef{}.contrast);
+    EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
+
+    // The section's numbers: where a mark counts and the examining force.
+    // (Find the lump's page has a field of the same key: the page of the type is the one shown.)
+    auto* page = child<QWidget>(editor.panel, "detect_lumpsPage");
+    EXPECT_EQ(child<QStackedWidget>(editor.panel, "typePages")->currentWidget(), page);
+    child<QDoubleSpinBox>(*page, "coverage.min_force_n")->setValue(0.3);
+    EXPECT_EQ(editor.panel.exercise().coverage.minForceN, 0.3);
+    child<QDoubleSpinBox>(*page, "detect_lumps.tolerance_mm")->setValue(4.0);
+    EXPECT_EQ(editor.panel.exercise().detectLumps.toleranceMm, 4.0);
+    child<QCheckBox>(editor.panel, "liveScoreCheck")->setChecked(true);
+    EXPECT_EQ(editor.panel.exercise().showLiveScore, std::optional<bool>(true));
+
+    // Remove the first: the second is lump 1 now.
+    editor.panel.setPlacing(ExerciseEditorPanel::Placing::None);
+    editor.panel.setSelectedIndex(0);
+    child<QToolButton>(editor.panel, "detect_lumps.lumps.remove")->click();
+    ASSERT_EQ(editor.panel.exercise().detectLumps.lumps.size(), 1u);
+    EXPECT_EQ(editor.panel.exercise().detectLumps.lumps[0].depthMm, Viewport::kMaxTouchDepthMm);
+    editor.panel.undoStack()->undo();
+    ASSERT_EQ(editor.panel.exercise().detectLumps.lumps.size(), 2u);
+
+    // Saved and read back: the same exercise.
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("detect.json"));
+    ASSERT_EQ(editor.panel.saveExercise(file), QString());
+    const auto loaded = loadExercise(file.toStdString());
+    ASSERT_TRUE(loaded.exercise) << loaded.error();
+    EXPECT_EQ(loaded.exercise->detectLumps.lumps.size(), 2u);
+    EXPECT_EQ(loaded.exercise->detectLumps.lumps[1].depthMm, Viewport::kMaxTouchDepthMm);
+    EXPECT_EQ(loaded.exercise->coverage.minForceN, 0.3);
+    EXPECT_EQ(loaded.exercise->showLiveScore, std::optional<bool>(true));
+    Editor reopened;
+    reopened.panel.setDrawnMesh(drawn.mesh, drawn.path);
+    ASSERT_EQ(reopened.panel.openExercise(file), QString());
+    EXPECT_EQ(json(reopened.panel.exercise()), json(*loaded.exercise));
+    EXPECT_EQ(child<QTableWidget>(reopened.panel, "detect_lumps.lumps")->rowCount(), 2);
+
+    // Try it hands the exercise over as it is.
+    QSignalSpy tried(&editor.panel, &ExerciseEditorPanel::previewRequested);
+    EXPECT_TRUE(editor.panel.preview());
+    EXPECT_EQ(tried.count(), 1);
+
+    // The trainee never sees the lumps before the examination is over.
+    std::string error;
+    const auto geometry = ExerciseGeometry::build(*loaded.exercise, *drawn.mesh, error);
+    ASSERT_TRUE(geometry) << error;
+    EXPECT_TRUE(exerciseMarkers(*geometry, MarkerAudience::Trainee, nullptr, -1).markers.empty());
+}
+
+// The shipped detection exercise opens in the editor (it used to be refused) and has no problems.
+TEST(ExerciseEditor, TheShippedDetectionExerciseOpens) {
+    Editor editor;
+    ASSERT_EQ(editor.panel.openExercise(QString::fromStdString(findInSource("exercises/detect_lumps.json"))),
+              QString());
+    EXPECT_EQ(editor.panel.exercise().type, ExerciseType::DetectLumps);
+    EXPECT_EQ(child<QTableWidget>(editor.panel, "detect_lumps.lumps")->rowCount(), 3);
+    // Only the mesh not being drawn is said.
+    for (const QString& p : editor.panel.problems())
+        EXPECT_TRUE(p.startsWith(QStringLiteral("mesh:"))) << p.toStdString();
 }

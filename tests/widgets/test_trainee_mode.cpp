@@ -674,6 +674,50 @@ TEST(ExerciseDock, SelectsAnExerciseOnTheShownMeshUntilTheTraineePicks) {
 
 // A preview (the welcome page's example, the editor's Try it) shows its own exercise in the combo
 // above the score card, not whichever was selected before.
+// An exercise opened from a file stays in the trainee's list at the next start (newest first,
+// after the shipped ones); a shipped one is not listed twice; one that no longer opens is left out.
+TEST(ExerciseDock, AnOpenedExerciseStaysInTheListAtTheNextStart) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString mine = dir.filePath(QStringLiteral("my_targets.json"));
+    ASSERT_TRUE(QFile::copy(resource("exercises/press_targets.json"), mine));
+    {
+        // The shipped files' relative paths resolve through the resources, wherever the copy is.
+        QFile file(mine);
+        ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+        QByteArray text = file.readAll();
+        file.close();
+        text.replace("\"name\": \"Press three targets\"", "\"name\": \"My targets\"");
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(text);
+    }
+    const QString gone = dir.filePath(QStringLiteral("gone.json"));
+    ASSERT_TRUE(QFile::copy(mine, gone));
+    const auto listed = [](MainWindow& window) {
+        auto* combo = window.traineePanel()->findChild<QComboBox*>(QStringLiteral("exerciseCombo"));
+        QStringList paths;
+        for (int i = 0; combo && i < combo->count(); ++i) paths << combo->itemData(i).toString();
+        return paths;
+    };
+    int shippedCount = 0;
+    {
+        auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+        shippedCount = int(listed(*window).size());
+        ASSERT_GT(shippedCount, 0);
+        ASSERT_EQ(window->exercises().addExerciseFile(gone), QString());
+        ASSERT_EQ(window->exercises().addExerciseFile(mine), QString());
+        ASSERT_EQ(window->exercises().addExerciseFile(resource("exercises/press_targets.json")), QString());
+        EXPECT_EQ(listed(*window).size(), shippedCount + 2);
+    }
+    ASSERT_TRUE(QFile::remove(gone));
+    auto again = traineeWindow(dir, "exercises/press_targets.good.path");
+    const QStringList paths = listed(*again);
+    ASSERT_EQ(paths.size(), shippedCount + 1) << paths.join(QLatin1Char('\n')).toStdString();
+    EXPECT_EQ(QFileInfo(paths.back()), QFileInfo(mine));
+    EXPECT_EQ(ExerciseController::openedExercises().size(), 2);  // the gone one is kept in the settings
+    EXPECT_EQ(QFileInfo(ExerciseController::openedExercises().front()), QFileInfo(mine));
+}
+
 TEST(ExerciseDock, APreviewShowsTheExerciseThatRuns) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
@@ -728,7 +772,7 @@ TEST(InstructorMode, ClickingTheMeshPlacesTargetsTheViewportShowsAndUndoRemoves)
     editor->newExercise(ExerciseType::PressTargets);
     // The window's Undo acts on the editor once it is worked in.
     window->undoGroup()->setActiveStack(editor->undoStack());
-    editor->setPlacing(ExerciseEditorPanel::Placing::AddTarget);
+    editor->setPlacing(ExerciseEditorPanel::Placing::AddItem);
     ASSERT_TRUE(window->viewport()->pickHandlerSet());
 
     // A click (no drag) at the viewport's centre places a target on the vertex under it.

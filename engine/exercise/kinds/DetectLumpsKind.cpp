@@ -160,6 +160,60 @@ private:
     std::vector<glm::dvec3> mFindingsMm;
 };
 
+// What the editor edits: the lumps, each with its radius, depth and contrast; how near a mark
+// must be; the examination's force.
+LumpDef& lumpOf(Exercise& e, std::size_t i) { return e.detectLumps.lumps[i]; }
+const LumpDef& lumpOf(const Exercise& e, std::size_t i) { return e.detectLumps.lumps[i]; }
+
+constexpr EditedNumber kLumpNumbers[] = {
+    {"radius_mm", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Radius"),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises", "The lump's radius, mm (radius_mm)."), "mm", 0.0, 100.0, 2, 0.5,
+     [](const Exercise& e, std::size_t i) { return lumpOf(e, i).radiusMm; },
+     [](Exercise& e, std::size_t i, double v) { lumpOf(e, i).radiusMm = v; }},
+    {"depth_mm", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Depth"),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises",
+                            "From the surface to the lump's top, mm (depth_mm): a deeper lump needs a firmer "
+                            "press to be felt."),
+     "mm", 0.0, 100.0, 2, 0.5, [](const Exercise& e, std::size_t i) { return lumpOf(e, i).depthMm; },
+     [](Exercise& e, std::size_t i, double v) { lumpOf(e, i).depthMm = v; }},
+    {"contrast", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Contrast"),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises",
+                            "How many times stiffer than the tissue the lump is (contrast), above 1: lower is "
+                            "harder to feel."),
+     "", 1.0, 100.0, 2, 0.5, [](const Exercise& e, std::size_t i) { return lumpOf(e, i).contrast; },
+     [](Exercise& e, std::size_t i, double v) { lumpOf(e, i).contrast = v; }},
+};
+constexpr EditedNumber kDetectNumbers[] = {
+    {"detect_lumps.tolerance_mm", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Mark within:"),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises",
+                            "A mark this far outside a lump's radius still finds it, mm (detect_lumps.tolerance_mm)."),
+     "mm", 0.0, 1000.0, 2, 0.5, [](const Exercise& e, std::size_t) { return e.detectLumps.toleranceMm; },
+     [](Exercise& e, std::size_t, double v) { e.detectLumps.toleranceMm = v; }},
+    kCoverageMinForce,
+    kCoverageRadius,
+};
+
+const ExerciseEditing kEditing{
+    PlacedItems{"detect_lumps.lumps", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Lump %1"),
+                PALPATE_TRANSLATE_NOOP(
+                    "palpate::Exercises",
+                    "While on, each click on the tissue hides a lump under it, with the last lump's radius, depth and "
+                    "contrast (Esc stops). No lumps: healthy tissue, where reporting nothing is the finding."),
+                false, false, [](const Exercise& e) { return e.detectLumps.lumps.size(); },
+                [](const Exercise& e, std::size_t i) -> const SurfacePoint& { return lumpOf(e, i).at; },
+                [](Exercise& e, std::size_t i, const SurfacePoint& at) { lumpOf(e, i).at = at; },
+                [](Exercise& e, const SurfacePoint& at) {
+                    LumpDef l = e.detectLumps.lumps.empty() ? LumpDef{} : e.detectLumps.lumps.back();
+                    l.at = at;
+                    e.detectLumps.lumps.push_back(l);
+                },
+                [](Exercise& e, std::size_t i) {
+                    e.detectLumps.lumps.erase(e.detectLumps.lumps.begin() + std::ptrdiff_t(i));
+                },
+                [](Exercise& e, std::size_t a, std::size_t b) { std::swap(lumpOf(e, a), lumpOf(e, b)); }, kLumpNumbers,
+                nullptr},
+    kDetectNumbers};
+
 class DetectLumpsKind final : public ExerciseKind {
 public:
     ExerciseType type() const override { return ExerciseType::DetectLumps; }
@@ -318,6 +372,8 @@ public:
     }
 
     // Hidden from the trainee until the examination is over: then where they were.
+    const ExerciseEditing& editing() const override { return kEditing; }
+
     ExerciseDrawing draw(const ExerciseGeometry& geometry, MarkerAudience audience, const ScoreGuidance* guidance,
                          int selected) const override {
         ExerciseDrawing out;

@@ -51,6 +51,33 @@ private:
     double mLumpErrorMm = 0.0;
 };
 
+// What the editor edits: the inclusion (one), its radius and stiffness; the examination's force.
+constexpr EditedNumber kInclusionNumbers[] = {
+    {"radius_mm", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Radius"),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises",
+                            "Vertices this close to the centre are in the inclusion (find_lump.inclusion.radius_mm)."),
+     "mm", 0.0, 1000.0, 2, 0.5, [](const Exercise& e, std::size_t) { return e.findLump.inclusion.radiusMm; },
+     [](Exercise& e, std::size_t, double v) { e.findLump.inclusion.radiusMm = v; }},
+    {"stiffness_factor", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Stiffness"),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises",
+                            "The inclusion's slopes are multiplied by this, in (0, 1]: smaller is stiffer "
+                            "(find_lump.inclusion.stiffness_factor)."),
+     "", 0.0, 1.0, 3, 0.05, [](const Exercise& e, std::size_t) { return e.findLump.inclusion.stiffnessFactor; },
+     [](Exercise& e, std::size_t, double v) { e.findLump.inclusion.stiffnessFactor = v; }},
+};
+constexpr EditedNumber kFindLumpNumbers[] = {kCoverageMinForce, kCoverageRadius};
+
+const ExerciseEditing kEditing{
+    PlacedItems{"find_lump.inclusion", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Inclusion"),
+                PALPATE_TRANSLATE_NOOP("palpate::Exercises",
+                                       "The next click on the mesh puts the inclusion's centre there."),
+                true, false, [](const Exercise&) { return std::size_t(1); },
+                [](const Exercise& e, std::size_t) -> const SurfacePoint& { return e.findLump.inclusion.centre; },
+                [](Exercise& e, std::size_t, const SurfacePoint& at) { e.findLump.inclusion.centre = at; },
+                [](Exercise& e, const SurfacePoint& at) { e.findLump.inclusion.centre = at; },
+                [](Exercise&, std::size_t) {}, [](Exercise&, std::size_t, std::size_t) {}, kInclusionNumbers, nullptr},
+    kFindLumpNumbers};
+
 class FindLumpKind final : public ExerciseKind {
 public:
     ExerciseType type() const override { return ExerciseType::FindLump; }
@@ -125,6 +152,8 @@ public:
     }
 
     // The inclusion is shown to the instructor who places it, never to the trainee who must find it.
+    const ExerciseEditing& editing() const override { return kEditing; }
+
     ExerciseDrawing draw(const ExerciseGeometry& geometry, MarkerAudience audience, const ScoreGuidance*,
                          int selected) const override {
         ExerciseDrawing out;

@@ -132,6 +132,56 @@ private:
     std::vector<double> mErrorSumMmS, mErrorS;
 };
 
+// What the editor edits: the targets, each with its window, hold and tolerance.
+PressTarget& targetOf(Exercise& e, std::size_t i) { return e.pressTargets.targets[i]; }
+const PressTarget& targetOf(const Exercise& e, std::size_t i) { return e.pressTargets.targets[i]; }
+
+constexpr EditedNumber kTargetNumbers[] = {
+    {"force_min_n", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Fmin"),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises", "The force window's lower end, N (force_min_n)."), "N", 0.0, 1000.0,
+     3, 0.05, [](const Exercise& e, std::size_t i) { return targetOf(e, i).forceMinN; },
+     [](Exercise& e, std::size_t i, double v) { targetOf(e, i).forceMinN = v; }},
+    {"force_max_n", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Fmax"),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises", "The force window's upper end, N (force_max_n)."), "N", 0.0, 1000.0,
+     3, 0.05, [](const Exercise& e, std::size_t i) { return targetOf(e, i).forceMaxN; },
+     [](Exercise& e, std::size_t i, double v) { targetOf(e, i).forceMaxN = v; }},
+    {"hold_s", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Hold"),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises",
+                            "How long the force must stay in the window without a break, s (hold_s)."),
+     "s", 0.0, 600.0, 3, 0.1, [](const Exercise& e, std::size_t i) { return targetOf(e, i).holdS; },
+     [](Exercise& e, std::size_t i, double v) { targetOf(e, i).holdS = v; }},
+    {"tolerance_mm", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Tol."),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises", "How close to the target the contact must be, mm (tolerance_mm)."),
+     "mm", 0.0, 1000.0, 3, 0.5, [](const Exercise& e, std::size_t i) { return targetOf(e, i).toleranceMm; },
+     [](Exercise& e, std::size_t i, double v) { targetOf(e, i).toleranceMm = v; }},
+};
+
+const ExerciseEditing kEditing{
+    PlacedItems{
+        "press_targets.targets", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Target %1"),
+        PALPATE_TRANSLATE_NOOP(
+            "palpate::Exercises",
+            "While on, each click on the tissue appends a target there, with the last target's window, hold and "
+            "tolerance; the first gets a window the tissue reaches with the mouse (Esc stops)."),
+        false, true, [](const Exercise& e) { return e.pressTargets.targets.size(); },
+        [](const Exercise& e, std::size_t i) -> const SurfacePoint& { return targetOf(e, i).at; },
+        [](Exercise& e, std::size_t i, const SurfacePoint& at) { targetOf(e, i).at = at; },
+        [](Exercise& e, const SurfacePoint& at) {
+            PressTarget t = e.pressTargets.targets.empty() ? PressTarget{} : e.pressTargets.targets.back();
+            t.at = at;
+            e.pressTargets.targets.push_back(t);
+        },
+        [](Exercise& e, std::size_t i) {
+            e.pressTargets.targets.erase(e.pressTargets.targets.begin() + std::ptrdiff_t(i));
+        },
+        [](Exercise& e, std::size_t a, std::size_t b) { std::swap(targetOf(e, a), targetOf(e, b)); }, kTargetNumbers,
+        [](Exercise& e, double minN, double maxN) {
+            PressTarget& t = e.pressTargets.targets.front();
+            t.forceMinN = minN;
+            t.forceMaxN = maxN;
+        }},
+    {}};
+
 class PressTargetsKind final : public ExerciseKind {
 public:
     ExerciseType type() const override { return ExerciseType::PressTargets; }
@@ -237,6 +287,8 @@ public:
     std::unique_ptr<ExerciseTask> makeTask(std::shared_ptr<const ExerciseGeometry> geometry, double) const override {
         return std::make_unique<PressTargetsTask>(std::move(geometry));
     }
+
+    const ExerciseEditing& editing() const override { return kEditing; }
 
     ExerciseDrawing draw(const ExerciseGeometry& geometry, MarkerAudience, const ScoreGuidance* guidance,
                          int selected) const override {

@@ -81,6 +81,48 @@ private:
     std::size_t mCoveredCount = 0;
 };
 
+// What the editor edits: the path's points, in order, and the band.
+constexpr EditedNumber kTraceNumbers[] = {
+    {"trace.force_min_n", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Band from:"),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises", "The force band's lower end (trace.force_min_n)."), "N", 0.0, 1000.0,
+     3, 0.05, [](const Exercise& e, std::size_t) { return e.trace.forceMinN; },
+     [](Exercise& e, std::size_t, double v) { e.trace.forceMinN = v; }},
+    {"trace.force_max_n", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Band to:"),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises", "The force band's upper end (trace.force_max_n)."), "N", 0.0, 1000.0,
+     3, 0.05, [](const Exercise& e, std::size_t) { return e.trace.forceMaxN; },
+     [](Exercise& e, std::size_t, double v) { e.trace.forceMaxN = v; }},
+    {"trace.tolerance_mm", PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Tolerance:"),
+     PALPATE_TRANSLATE_NOOP("palpate::Exercises",
+                            "A path point is covered by contact this close to it (trace.tolerance_mm)."),
+     "mm", 0.0, 1000.0, 2, 0.5, [](const Exercise& e, std::size_t) { return e.trace.toleranceMm; },
+     [](Exercise& e, std::size_t, double v) { e.trace.toleranceMm = v; }},
+};
+
+const ExerciseEditing kEditing{
+    PlacedItems{
+        "trace.path",
+        PALPATE_TRANSLATE_NOOP("palpate::Exercises", "Path point %1"),
+        PALPATE_TRANSLATE_NOOP(
+            "palpate::Exercises",
+            "While on, each click on the tissue appends a path point there; the first sets a band the tissue reaches "
+            "with the mouse, if the band is still the default (Esc stops)."),
+        false,
+        true,
+        [](const Exercise& e) { return e.trace.path.size(); },
+        [](const Exercise& e, std::size_t i) -> const SurfacePoint& { return e.trace.path[i]; },
+        [](Exercise& e, std::size_t i, const SurfacePoint& at) { e.trace.path[i] = at; },
+        [](Exercise& e, const SurfacePoint& at) { e.trace.path.push_back(at); },
+        [](Exercise& e, std::size_t i) { e.trace.path.erase(e.trace.path.begin() + std::ptrdiff_t(i)); },
+        [](Exercise& e, std::size_t a, std::size_t b) { std::swap(e.trace.path[a], e.trace.path[b]); },
+        {},
+        [](Exercise& e, double minN, double maxN) {
+            // Only a band still at its default: one the instructor chose stays.
+            if (e.trace.forceMinN != TraceDef{}.forceMinN || e.trace.forceMaxN != TraceDef{}.forceMaxN) return;
+            e.trace.forceMinN = minN;
+            e.trace.forceMaxN = maxN;
+        }},
+    kTraceNumbers};
+
 class TraceKind final : public ExerciseKind {
 public:
     ExerciseType type() const override { return ExerciseType::Trace; }
@@ -169,6 +211,8 @@ public:
     std::unique_ptr<ExerciseTask> makeTask(std::shared_ptr<const ExerciseGeometry> geometry, double) const override {
         return std::make_unique<TraceTask>(std::move(geometry));
     }
+
+    const ExerciseEditing& editing() const override { return kEditing; }
 
     ExerciseDrawing draw(const ExerciseGeometry& geometry, MarkerAudience, const ScoreGuidance*, int selected) const override {
         ExerciseDrawing out;
