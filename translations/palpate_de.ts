@@ -1499,12 +1499,12 @@
         <translation>tissue_preset: ob die Maus fest genug drückt, um zu untersuchen, ist nicht bekannt: %1</translation>
     </message>
     <message>
-        <source>coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives %2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as examined. Lower it to %4 N (a press a third as deep), or choose a stiffer tissue preset.</source>
-        <translation>coverage.min_force_n: mit der Maus lässt sich dieses Gewebe nicht untersuchen: ein %1 mm tiefer Druck (der tiefste) gibt auf dem größten Teil der Oberfläche %2 N, unter der Untersuchungskraft %3 N, sodass nichts, was die Lernenden tun, als untersucht zählt. Senken Sie sie auf %4 N (ein Druck, ein Drittel so tief), oder wählen Sie eine steifere Gewebevorgabe.</translation>
-    </message>
-    <message>
         <source>Copied %1 beside it, so that the exercise opens on other computers.</source>
         <translation>%1 daneben kopiert, damit die Übung auf anderen Rechnern öffnet.</translation>
+    </message>
+    <message>
+        <source>coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives %2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as examined. Lower it to %4 N (what the mouse&apos;s default press gives), or choose a stiffer tissue preset.</source>
+        <translation>coverage.min_force_n: mit der Maus lässt sich dieses Gewebe nicht untersuchen: ein %1 mm tiefer Druck (der tiefste) gibt auf dem größten Teil der Oberfläche %2 N, unter der Untersuchungskraft %3 N, sodass nichts, was die Lernenden tun, als untersucht zählt. Senken Sie sie auf %4 N (was der voreingestellte Druck der Maus gibt), oder wählen Sie eine steifere Gewebevorgabe.</translation>
     </message>
 </context>
 <context>

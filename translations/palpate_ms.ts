@@ -1499,12 +1499,12 @@
         <translation>tissue_preset: sama ada tetikus menekan cukup kuat untuk memeriksa tidak diketahui: %1</translation>
     </message>
     <message>
-        <source>coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives %2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as examined. Lower it to %4 N (a press a third as deep), or choose a stiffer tissue preset.</source>
-        <translation>coverage.min_force_n: tetikus tidak dapat memeriksa tisu ini: tekanan sedalam %1 mm (paling dalam) memberi %2 N pada kebanyakan permukaan, di bawah daya pemeriksaan %3 N, jadi tiada apa yang dilakukan pelatih dikira sebagai diperiksa. Turunkan kepada %4 N (tekanan sepertiga dalamnya), atau pilih pratetap tisu yang lebih keras.</translation>
-    </message>
-    <message>
         <source>Copied %1 beside it, so that the exercise opens on other computers.</source>
         <translation>%1 disalin di sebelahnya, supaya latihan dibuka pada komputer lain.</translation>
+    </message>
+    <message>
+        <source>coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives %2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as examined. Lower it to %4 N (what the mouse&apos;s default press gives), or choose a stiffer tissue preset.</source>
+        <translation>coverage.min_force_n: tetikus tidak dapat memeriksa tisu ini: tekanan sedalam %1 mm (paling dalam) memberi %2 N pada kebanyakan permukaan, di bawah daya pemeriksaan %3 N, jadi tiada apa yang dilakukan pelatih dikira sebagai diperiksa. Turunkan kepada %4 N (yang diberi tekanan lalai tetikus), atau pilih pratetap tisu yang lebih keras.</translation>
     </message>
 </context>
 <context>

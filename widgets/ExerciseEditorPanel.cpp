@@ -999,14 +999,15 @@ void ExerciseEditorPanel::newExercise(ExerciseType type) {
     mSelected = -1;
     mUndoStack->clear();
     showExercise(e);
-    // An examination starts with a force the mouse examines with, a third of the way down (the
-    // file's default may be out of reach on a soft tissue).
+    // An examination starts with the force the mouse's default press gives (before the wheel
+    // turns): a sweep examines from the start. The file's default may be out of reach on a soft
+    // tissue.
     if (exerciseKind(type).palpation()) {
         const QString meshFile = resolved(mExercise, mExercise.meshPath);
         if (const TissueMesh* mesh = checkMesh(meshFile))
-            if (const auto reach = examineReach(meshFile, *mesh); reach && reach->comfortableN >= 1e-3) {
+            if (const auto reach = examineReach(meshFile, *mesh); reach && reach->defaultPressN >= 1e-3) {
                 e = mExercise;
-                e.coverage.minForceN = reach->comfortableN;
+                e.coverage.minForceN = reach->defaultPressN;
                 showExercise(e);
             }
     }
@@ -1729,7 +1730,7 @@ std::optional<ExamineReach> ExerciseEditorPanel::examineReach(const QString& mes
         if (!f) return std::nullopt;
         forces.push_back(*f);
     }
-    return judgeExamining(forces, touchReach());
+    return judgeExamining(forces, touchReach(), Viewport::kDefaultTouchDepthMm);
 }
 
 QStringList ExerciseEditorPanel::coverageWarnings(const Exercise& exercise, const QString& meshFile,
@@ -1747,9 +1748,9 @@ QStringList ExerciseEditorPanel::coverageWarnings(const Exercise& exercise, cons
     const auto n = [&l](double v) { return l.toString(v, 'g', 3); };
     out << tr("coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives "
               "%2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as "
-              "examined. Lower it to %4 N (a press a third as deep), or choose a stiffer tissue preset.")
+              "examined. Lower it to %4 N (what the mouse's default press gives), or choose a stiffer tissue preset.")
                .arg(n(touchReach().maxDepthMm), n(reach->deepestN), n(exercise.coverage.minForceN),
-                    n(reach->comfortableN));
+                    n(reach->defaultPressN));
     return out;
 }
 

@@ -201,12 +201,12 @@ std::vector<VertexId> examinePoints(const std::vector<glm::vec3>& restMm) {
 }
 
 std::optional<ExamineReach> judgeExamining(const std::vector<std::vector<double>>& forcesPerPointN,
-                                           const TouchReach& touch) {
-    std::vector<double> comfortable, deepest;
+                                           const TouchReach& touch, double defaultDepthMm) {
+    std::vector<double> defaultPress, deepest;
     const std::vector<double> depths = touch.depthsMm();
     for (const std::vector<double>& forces : forcesPerPointN) {
         if (forces.empty()) continue;
-        comfortable.push_back(forceAt(forces, depths, touch.maxDepthMm / 3.0));
+        defaultPress.push_back(forceAt(forces, depths, defaultDepthMm));
         deepest.push_back(forces.back());
     }
     if (deepest.empty()) return std::nullopt;
@@ -217,7 +217,7 @@ std::optional<ExamineReach> judgeExamining(const std::vector<std::vector<double>
     };
     ExamineReach out;
     out.deepestN = middle(deepest);
-    out.comfortableN = roundTwoDigits(middle(comfortable), false);
+    out.defaultPressN = roundTwoDigits(middle(defaultPress), false);
     if (!(out.deepestN > 1e-6)) return std::nullopt;
     return out;
 }

@@ -123,11 +123,11 @@ struct LumpReach {
 LumpReach judgeLump(const LumpDef& lump, const TouchPresses& presses, const TouchReach& touch);
 
 /// How firmly the mouse examines a surface (coverage.min_force_n, docs/scoring.md "Reachable
-/// targets"): the force a press a third of the deepest touch deep gives, rounded down to two
-/// digits, and the force of the deepest press; each the middle of its values over a few points
+/// targets"): the force of its default press (before the wheel turns), rounded down to two
+/// digits, and the force of its deepest press; each the middle of its values over a few points
 /// spread over the surface.
 struct ExamineReach {
-    double comfortableN = 0.0;
+    double defaultPressN = 0.0;
     double deepestN = 0.0;
 };
 
@@ -135,9 +135,10 @@ struct ExamineReach {
 /// -z and +z (without repeats).
 std::vector<VertexId> examinePoints(const std::vector<glm::vec3>& restMm);
 
-/// Judges the forces probed at examinePoints(); nullopt when none gives a force.
+/// Judges the forces probed at examinePoints() at touch.depthsMm(), the default press
+/// `defaultDepthMm` deep; nullopt when none gives a force.
 std::optional<ExamineReach> judgeExamining(const std::vector<std::vector<double>>& forcesPerPointN,
-                                           const TouchReach& touch);
+                                           const TouchReach& touch, double defaultDepthMm);
 
 /// What to change, in English ("" when reachable): for the CLI and logs; the editor says it in
 /// the user's language from the same figures.

@@ -303,7 +303,7 @@ def palpate_at(s, point, depth, hold=1.5, mark=False):
     s.at(0.5, lift(p, n, 15.0))
 
 
-SEARCH_N = 0.7          # the sweeps: above the exercise's coverage force, 0.5 N
+SEARCH_N = 0.7          # the sweeps: above the exercise's coverage force, 0.4 N
 SEARCH_MM_PER_S = 60.0  # far above the 10 mm/s that is palpation
 ELSEWHERE_MM = [0.0, -50.0, 0.0]  # a spot with no lump under it, pressed in doubt
 

@@ -203,7 +203,7 @@ TEST(DetectLumpsFile, ReadsWritesAndNamesEveryBadKey) {
     ASSERT_EQ(e.type, ExerciseType::DetectLumps);
     ASSERT_EQ(e.detectLumps.lumps.size(), 3u);
     EXPECT_EQ(e.detectLumps.lumps[2].depthMm, 8.0);
-    EXPECT_EQ(e.coverage.minForceN, 0.5);
+    EXPECT_EQ(e.coverage.minForceN, 0.4);  // read from the file (the default is 1 N)
     Exercise withStaircase = e;
     withStaircase.detectLumps.staircase = StaircaseDef{StaircaseDef::Parameter::DepthMm, 4.0, 1.0, 1.0, 10.0, 2, 1};
     const auto again = parseExercise(exerciseToJson(withStaircase), "again");
@@ -287,7 +287,7 @@ TEST(ScriptedExaminers, TheThoroughOneFindsEveryLumpAndNothingElse) {
     // Each finding is the contact point over the lump's vertex, which the script aims at within
     // the mesh's vertex spacing (about 2.7 mm).
     for (double mm : d.localisationMm) EXPECT_LT(mm, 2.0);
-    // Rows 8 mm apart, each covering 5 mm either side at 0.7 N (above the 0.5 N coverage force).
+    // Rows 8 mm apart, each covering 5 mm either side at 0.7 N (above the 0.4 N coverage force).
     EXPECT_GT(r.palpation->coverageFraction, 0.9);
     // Search at 0.7 N of tissue (more over the shallow lumps); palpation pressed to 2.8 N.
     const ForceByPhase& phases = r.palpation->forceByPhase;

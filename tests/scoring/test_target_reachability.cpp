@@ -258,15 +258,15 @@ TEST(TargetReachability, TheExaminingForceIsTheMiddleOverPointsSpreadOverTheSurf
     EXPECT_EQ(examinePoints({{1, 1, 1}}), (std::vector<VertexId>{0}));
     EXPECT_TRUE(examinePoints({}).empty());
 
-    const TouchReach touch{3.0, 1.0};  // depths 0, 1, 2, 3 mm: a third is 1 mm
+    const TouchReach touch{3.0, 1.0};  // depths 0, 1, 2, 3 mm; the default press 1 mm deep
     const std::vector<std::vector<double>> forces{
         {0.0, 0.123, 0.3, 0.5}, {0.0, 0.2, 0.5, 0.9}, {0.0, 0.01, 0.02, 0.03}, {}};
-    const auto reach = judgeExamining(forces, touch);
+    const auto reach = judgeExamining(forces, touch, 1.0);
     ASSERT_TRUE(reach);
     EXPECT_NEAR(reach->deepestN, 0.5, 1e-12);       // the middle of 0.03, 0.5, 0.9 (a point without forces is left out)
-    EXPECT_NEAR(reach->comfortableN, 0.12, 1e-12);  // the middle of 0.01, 0.123, 0.2, rounded down to two digits
-    EXPECT_FALSE(judgeExamining({{0.0, 0.0}}, TouchReach{1.0, 1.0}));  // a tissue that gives nothing
-    EXPECT_FALSE(judgeExamining({}, touch));
+    EXPECT_NEAR(reach->defaultPressN, 0.12, 1e-12);  // the middle of 0.01, 0.123, 0.2, rounded down to two digits
+    EXPECT_FALSE(judgeExamining({{0.0, 0.0}}, TouchReach{1.0, 1.0}, 1.0));  // a tissue that gives nothing
+    EXPECT_FALSE(judgeExamining({}, touch, 1.0));
 }
 
 }  // namespace

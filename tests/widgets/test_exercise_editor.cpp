@@ -1052,7 +1052,7 @@ TEST(ExerciseEditor, ATraceBandTheMouseCannotReachIsWarnedAboutAndANewOneCan) {
 
 TEST(ExerciseEditor, EveryShippedExampleCanBeDoneWithTheMouse) {
     int targets = 0;
-    for (const char* name : {"press_targets", "find_lump", "trace"}) {
+    for (const char* name : {"press_targets", "find_lump", "trace", "detect_lumps", "no_lump"}) {
         const std::string path = findInSource(std::string("exercises/") + name + ".json");
         const auto loaded = loadExercise(path);
         ASSERT_TRUE(loaded.exercise) << loaded.error();
@@ -1073,6 +1073,32 @@ TEST(ExerciseEditor, EveryShippedExampleCanBeDoneWithTheMouse) {
         EXPECT_TRUE(editor.panel.warnings().isEmpty()) << name << ": " << editor.panel.warnings().join('\n').toStdString();
     }
     EXPECT_GT(targets, 0);
+}
+
+// The mouse's default press (the viewport's depth before the wheel turns) examines: in every
+// shipped examination it reaches the coverage force over most of the surface, so a trainee who
+// sweeps without touching the wheel is credited with what they examined.
+TEST(ExerciseEditor, TheDefaultPressExaminesInEveryShippedExamination) {
+    for (const char* name : {"find_lump", "detect_lumps", "no_lump"}) {
+        const std::string path = findInSource(std::string("exercises/") + name + ".json");
+        const auto loaded = loadExercise(path);
+        ASSERT_TRUE(loaded.exercise) << loaded.error();
+        std::vector<std::string> errors;
+        const auto assets = loadExerciseAssets(*loaded.exercise, findInSource, errors);
+        ASSERT_TRUE(assets) << name << ": " << (errors.empty() ? "" : errors.front());
+        const TouchReach defaultPress{Viewport::kDefaultTouchDepthMm, 0.0};  // that depth alone
+        std::string error;
+        auto probe = TouchForceProbe::create(*assets->mesh, assets->preset, assets->geometry.get(), defaultPress,
+                                             error);
+        ASSERT_TRUE(probe) << error;
+        std::vector<std::vector<double>> forces;
+        for (const VertexId v : examinePoints(assets->mesh->restPositionsMm())) forces.push_back(probe->forcesN(v));
+        const auto reach = judgeExamining(forces, defaultPress, Viewport::kDefaultTouchDepthMm);
+        ASSERT_TRUE(reach) << name;
+        std::printf("[ figures  ] %s: the default %.1f mm press gives %.3g N, examining from %.3g N\n", name,
+                    Viewport::kDefaultTouchDepthMm, reach->deepestN, loaded.exercise->coverage.minForceN);
+        EXPECT_GE(reach->deepestN, loaded.exercise->coverage.minForceN) << name;
+    }
 }
 
 // ---- In the main window: placing while touch mode is on, and Try it ---------------------------
