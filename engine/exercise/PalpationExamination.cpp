@@ -25,7 +25,9 @@ std::string oneDecimal(double v) {
 }
 
 PalpationExamination::PalpationExamination(std::shared_ptr<const ExerciseGeometry> geometry, double periodS)
-    : mGeometry(std::move(geometry)), mCoverage(*mGeometry, mGeometry->exercise().coverage) {
+    : mGeometry(std::move(geometry)),
+      mCoverage(*mGeometry, mGeometry->exercise().coverage),
+      mSurfaceSpeed(ForcePhaseDef{}.speedWindowS, periodS) {
     const double ticks = periodS > 0.0 ? std::ceil(mGeometry->exercise().timeLimitS / periodS) + 16.0 : 0.0;
     mPhaseSamples.reserve(std::size_t(std::min(ticks, kMaxPhaseSamples)));
     mLumpMaxSinkMm.assign(mGeometry->lumps().size(), 0.0);
@@ -34,20 +36,16 @@ PalpationExamination::PalpationExamination(std::shared_ptr<const ExerciseGeometr
 void PalpationExamination::add(const TaskTick& t, ScoreGuidance& guidance) {
     const VertexId touched = t.touched;
     if (!t.contact || !t.haveContactPoint || touched >= mGeometry->vertexCount()) {
-        mHavePreviousContact = false;
+        mSurfaceSpeed.reset();
         return;
     }
     mCoverage.add(touched, t.contactPointMm, t.forceN);
     guidance.coverageFraction = mCoverage.coveredFraction();
-    // The speed along the surface tells search from palpation; a contact's first tick has none.
-    if (mHavePreviousContact && t.dtS > 0.0 && mPhaseSamples.size() < mPhaseSamples.capacity()) {
-        const glm::dvec3 n(mGeometry->normals()[touched]);
-        glm::dvec3 moved = glm::dvec3(t.contactPointMm) - glm::dvec3(mPreviousContactMm);
-        moved -= glm::dot(moved, n) * n;
-        mPhaseSamples.push_back({t.forceN, glm::length(moved) / t.dtS});
-    }
-    mPreviousContactMm = t.contactPointMm;
-    mHavePreviousContact = true;
+    // The speed along the surface over a window tells search from palpation; a contact's first
+    // tick has none.
+    const std::optional<double> speed = mSurfaceSpeed.add(t.dtS, glm::dvec3(t.contactPointMm),
+                                                          glm::dvec3(mGeometry->normals()[touched]));
+    if (speed && mPhaseSamples.size() < mPhaseSamples.capacity()) mPhaseSamples.push_back({t.forceN, *speed});
     // How deep the surface went over each lump, and the tissue's force per mm of sink elsewhere.
     const double sinkMm = t.maxDisplacementMm;
     const int lump = mGeometry->lumpOfVertex().empty() ? -1 : mGeometry->lumpOfVertex()[touched];
@@ -75,9 +73,9 @@ PalpationSummary PalpationExamination::summary(bool detail) const {
     return p;
 }
 
-void PalpationExamination::addCommonFeedback(PalpationSummary& p) const {
+void PalpationExamination::addCommonFeedback(PalpationSummary& p, bool somethingToFind) const {
     const ForceByPhase& phases = p.forceByPhase;
-    if (phases.palpationOverSearch && *phases.palpationOverSearch < 1.0)
+    if (somethingToFind && phases.palpationOverSearch && *phases.palpationOverSearch < 1.0)
         p.feedback.push_back({"light_palpation", "Pressed no harder to palpate than to search (median " +
                                                      oneDecimal(phases.palpation->p50N) + " N against " +
                                                      oneDecimal(phases.search->p50N) +

@@ -31,15 +31,15 @@ public:
     std::optional<double> forcePerMm() const;
     /// Coverage, and with `detail` the heat map and the force by phase (no feedback yet).
     PalpationSummary summary(bool detail) const;
-    /// The feedback every palpation exercise gives, after the kind's own.
-    void addCommonFeedback(PalpationSummary& summary) const;
+    /// The feedback every palpation exercise gives, after the kind's own; `somethingToFind`: the
+    /// tissue hides a lump (healthy tissue has no spot to press in on).
+    void addCommonFeedback(PalpationSummary& summary, bool somethingToFind) const;
 
 private:
     std::shared_ptr<const ExerciseGeometry> mGeometry;
     PalpationCoverage mCoverage;
     std::vector<ForceMotionSample> mPhaseSamples;  // reserved for the time limit
-    bool mHavePreviousContact = false;
-    glm::vec3 mPreviousContactMm{0.0f};
+    SurfaceSpeed mSurfaceSpeed;
     std::vector<double> mLumpMaxSinkMm;
     double mSoftForceSumN = 0.0, mSoftSinkSumMm = 0.0;  // away from lumps
 };

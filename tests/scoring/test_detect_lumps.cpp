@@ -362,6 +362,9 @@ TEST(ScriptedExaminers, HealthyTissueRewardsRestraint) {
     // without lumps carries its own 20 and the 35 + 10 of finding and localising, out of 100:
     // 65 * (2 / 3) = 43 points fewer.
     EXPECT_NEAR(good.score - bad.score, 100.0 * 65.0 * (2.0 / 3.0) / 100.0, 2.0);
+    // Nothing hides here, so nobody is told to press in on a spot that feels different.
+    EXPECT_FALSE(hasFeedback(good, "light_palpation"));
+    EXPECT_FALSE(hasFeedback(bad, "light_palpation"));
 }
 
 /// A shipped exercise done by a scripted trainee made from its good path, scored from the recording.

@@ -143,7 +143,7 @@ public:
             p.feedback.push_back({"low_coverage", "Examined " + oneDecimal(100.0 * p.coverageFraction) + " % of the surface at " +
                                                       oneDecimal(e.coverage.minForceN) +
                                                       " N or more: cover all of it, in overlapping rows."});
-        mExamination.addCommonFeedback(p);
+        mExamination.addCommonFeedback(p, !e.detectLumps.lumps.empty());
         const DetectionResult& d = *p.detection;
         metrics.put(Metric::Sensitivity, d.sensitivity.value_or(0.0), d.sensitivity.has_value());
         metrics.put(Metric::PositivePredictiveValue, d.positivePredictive.value_or(0.0), d.positivePredictive.has_value());

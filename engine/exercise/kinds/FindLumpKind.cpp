@@ -40,7 +40,7 @@ public:
     void report(ScoreReport& r, MeasuredMetrics& metrics, bool detail) const override {
         metrics.put(Metric::LumpErrorMm, mLumpErrorMm, mMarkMeasured);
         r.palpation = mExamination.summary(detail);
-        mExamination.addCommonFeedback(*r.palpation);
+        mExamination.addCommonFeedback(*r.palpation, true);
         metrics.put(Metric::CoverageFraction, r.palpation->coverageFraction);
     }
 
