@@ -803,6 +803,10 @@
         <source>Expert reference session stored for %1: it sets the pass marks.</source>
         <translation>Experten-Referenzsitzung für %1 gespeichert: Sie setzt die Bestehensgrenzen.</translation>
     </message>
+    <message>
+        <source>%1: the folder to import the exercise into cannot be made</source>
+        <translation>%1: der Ordner, in den die Übung importiert wird, lässt sich nicht anlegen</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ExerciseEditorPanel</name>
@@ -1505,6 +1509,30 @@
     <message>
         <source>coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives %2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as examined. Lower it to %4 N (what the mouse&apos;s default press gives), or choose a stiffer tissue preset.</source>
         <translation>coverage.min_force_n: mit der Maus lässt sich dieses Gewebe nicht untersuchen: ein %1 mm tiefer Druck (der tiefste) gibt auf dem größten Teil der Oberfläche %2 N, unter der Untersuchungskraft %3 N, sodass nichts, was die Lernenden tun, als untersucht zählt. Senken Sie sie auf %4 N (was der voreingestellte Druck der Maus gibt), oder wählen Sie eine steifere Gewebevorgabe.</translation>
+    </message>
+    <message>
+        <source>Export Bundle…</source>
+        <translation>Paket exportieren…</translation>
+    </message>
+    <message>
+        <source>Write the exercise with its mesh, preset and scripted paths as one file, to open on a trainee&apos;s computer (Exercise &gt; Open Exercise…).</source>
+        <translation>Die Übung mit Netz, Gewebevorgabe und vorgegebenen Pfaden als eine Datei schreiben, zum Öffnen auf dem Rechner der Lernenden (Übung &gt; Übung öffnen…).</translation>
+    </message>
+    <message>
+        <source>Bundle not written:</source>
+        <translation>Paket nicht geschrieben:</translation>
+    </message>
+    <message>
+        <source>Bundle written: %1, with the exercise&apos;s mesh, preset and scripted paths.</source>
+        <translation>Paket geschrieben: %1, mit Netz, Gewebevorgabe und vorgegebenen Pfaden der Übung.</translation>
+    </message>
+    <message>
+        <source>Export exercise bundle</source>
+        <translation>Übungspaket exportieren</translation>
+    </message>
+    <message>
+        <source>Exercise bundles (*.palpex)</source>
+        <translation>Übungspakete (*.palpex)</translation>
     </message>
 </context>
 <context>
@@ -2871,10 +2899,6 @@ Pausiert: %13</translation>
         <translation>Übung öffnen</translation>
     </message>
     <message>
-        <source>Exercises (*.json)</source>
-        <translation>Übungen (*.json)</translation>
-    </message>
-    <message>
         <source>Not an exercise</source>
         <translation>Keine Übung</translation>
     </message>
@@ -3033,6 +3057,10 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>Results kept on this workstation and copied to %1 (%2)</source>
         <translation>Ergebnisse auf diesem Arbeitsplatz gespeichert und nach %1 kopiert (%2)</translation>
+    </message>
+    <message>
+        <source>Exercises and bundles (*.json *.palpex)</source>
+        <translation>Übungen und Pakete (*.json *.palpex)</translation>
     </message>
 </context>
 <context>

@@ -803,6 +803,10 @@
         <source>Expert reference session stored for %1: it sets the pass marks.</source>
         <translation>Sesi rujukan pakar disimpan untuk %1: ia menetapkan markah lulus.</translation>
     </message>
+    <message>
+        <source>%1: the folder to import the exercise into cannot be made</source>
+        <translation>%1: folder untuk mengimport latihan tidak dapat dibuat</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ExerciseEditorPanel</name>
@@ -1505,6 +1509,30 @@
     <message>
         <source>coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives %2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as examined. Lower it to %4 N (what the mouse&apos;s default press gives), or choose a stiffer tissue preset.</source>
         <translation>coverage.min_force_n: tetikus tidak dapat memeriksa tisu ini: tekanan sedalam %1 mm (paling dalam) memberi %2 N pada kebanyakan permukaan, di bawah daya pemeriksaan %3 N, jadi tiada apa yang dilakukan pelatih dikira sebagai diperiksa. Turunkan kepada %4 N (yang diberi tekanan lalai tetikus), atau pilih pratetap tisu yang lebih keras.</translation>
+    </message>
+    <message>
+        <source>Export Bundle…</source>
+        <translation>Eksport Berkas…</translation>
+    </message>
+    <message>
+        <source>Write the exercise with its mesh, preset and scripted paths as one file, to open on a trainee&apos;s computer (Exercise &gt; Open Exercise…).</source>
+        <translation>Tulis latihan bersama jejaring, pratetap dan laluan berskripnya sebagai satu fail, untuk dibuka pada komputer pelatih (Latihan &gt; Buka Latihan…).</translation>
+    </message>
+    <message>
+        <source>Bundle not written:</source>
+        <translation>Berkas tidak ditulis:</translation>
+    </message>
+    <message>
+        <source>Bundle written: %1, with the exercise&apos;s mesh, preset and scripted paths.</source>
+        <translation>Berkas ditulis: %1, bersama jejaring, pratetap dan laluan berskrip latihan.</translation>
+    </message>
+    <message>
+        <source>Export exercise bundle</source>
+        <translation>Eksport berkas latihan</translation>
+    </message>
+    <message>
+        <source>Exercise bundles (*.palpex)</source>
+        <translation>Berkas latihan (*.palpex)</translation>
     </message>
 </context>
 <context>
@@ -2867,10 +2895,6 @@ Dijeda: %13</translation>
         <translation>Buka Latihan</translation>
     </message>
     <message>
-        <source>Exercises (*.json)</source>
-        <translation>Latihan (*.json)</translation>
-    </message>
-    <message>
         <source>Not an exercise</source>
         <translation>Bukan latihan</translation>
     </message>
@@ -3029,6 +3053,10 @@ pemapar %5</translation>
     <message>
         <source>Results kept on this workstation and copied to %1 (%2)</source>
         <translation>Keputusan disimpan di stesen kerja ini dan disalin ke %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Exercises and bundles (*.json *.palpex)</source>
+        <translation>Latihan dan berkas (*.json *.palpex)</translation>
     </message>
 </context>
 <context>

@@ -10,6 +10,7 @@
 #include "widgets/Viewport.h"
 
 #include "device/HapticDevice.h"
+#include "engine/exercise/ExerciseBundle.h"
 #include "engine/exercise/ExerciseTravel.h"
 #include "engine/exercise/ExerciseGeometry.h"
 #include "engine/scene/TissuePreset.h"
@@ -341,6 +342,9 @@ void ExerciseEditorPanel::createActions() {
     mSaveAsAction->setObjectName(QStringLiteral("saveExerciseAsAction"));
     mSaveAsAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
     connect(mSaveAsAction, &QAction::triggered, this, &ExerciseEditorPanel::saveAsDialog);
+    mExportBundleAction = new QAction(this);
+    mExportBundleAction->setObjectName(QStringLiteral("exportBundleAction"));
+    connect(mExportBundleAction, &QAction::triggered, this, &ExerciseEditorPanel::exportBundleDialog);
     mPreviewAction = new QAction(this);
     mPreviewAction->setObjectName(QStringLiteral("previewExerciseAction"));
     mPreviewAction->setShortcut(QKeySequence(Qt::Key_F5));
@@ -783,6 +787,10 @@ void ExerciseEditorPanel::retranslateUi() {
     mSaveAction->setText(tr("Save"));
     mSaveAction->setToolTip(tr("Save the exercise to its file (Ctrl+S); refused while it has problems."));
     mSaveAsAction->setText(tr("Save As…"));
+    mExportBundleAction->setText(tr("Export Bundle…"));
+    mExportBundleAction->setToolTip(
+        tr("Write the exercise with its mesh, preset and scripted paths as one file, to "
+           "open on a trainee's computer (Exercise > Open Exercise…)."));
     mSaveAsAction->setToolTip(tr("Save the exercise to a new file (Ctrl+Shift+S)."));
     mPreviewAction->setText(tr("Try it"));
     mPreviewAction->setToolTip(tr("Run this exercise now as a trainee would, without saving it (F5)."));
@@ -889,8 +897,10 @@ bool ExerciseEditorPanel::eventFilter(QObject* watched, QEvent* event) {
 }
 
 QList<QAction*> ExerciseEditorPanel::editorActions() const {
-    return {mNewActions[0], mNewActions[1], mNewActions[2], mOpenAction,   mSaveAction,
-            mSaveAsAction,  mUndoAction,    mRedoAction,    mPreviewAction};
+    QList<QAction*> out(mNewActions.begin(), mNewActions.end());
+    out << mOpenAction << mSaveAction << mSaveAsAction << mExportBundleAction << mUndoAction << mRedoAction
+        << mPreviewAction;
+    return out;
 }
 
 // ---- Files and resources ------------------------------------------------------------------------
@@ -1108,6 +1118,31 @@ bool ExerciseEditorPanel::saveAsDialog() {
     path = withSuffixConfirmed(this, path, QStringLiteral(".json"));
     if (path.isEmpty()) return false;
     return saveExercise(path).isEmpty();
+}
+
+QString ExerciseEditorPanel::exportBundle(const QString& bundlePath) {
+    if (mPath.isEmpty() || isModified())
+        if (const QString error = save(); !error.isEmpty()) return error;
+    const std::string error = writeExerciseBundle(ss(mPath), ss(bundlePath), mFindResource);
+    if (!error.empty()) {
+        showMessage(tr("Bundle not written:") + QLatin1Char('\n') + qs(error), true);
+        return qs(error);
+    }
+    showMessage(tr("Bundle written: %1, with the exercise's mesh, preset and scripted paths.")
+                    .arg(QDir::toNativeSeparators(bundlePath)),
+                false);
+    return {};
+}
+
+void ExerciseEditorPanel::exportBundleDialog() {
+    if (mPath.isEmpty() || isModified())
+        if (!save().isEmpty()) return;
+    const QString suggested = QFileInfo(mPath).absoluteDir().filePath(QFileInfo(mPath).completeBaseName() +
+                                                                      QStringLiteral(".palpex"));
+    QString path = QFileDialog::getSaveFileName(this, tr("Export exercise bundle"), suggested,
+                                                tr("Exercise bundles (*.palpex)"));
+    path = withSuffixConfirmed(this, path, QStringLiteral(".palpex"));
+    if (!path.isEmpty()) exportBundle(path);
 }
 
 void ExerciseEditorPanel::openDialog() {

@@ -95,6 +95,10 @@ public:
     QString saveExercise(const QString& path);
     /// Saves to the current file, or asks for one (Save As) when there is none: "" or why not.
     QString save();
+    /// Writes the exercise as a bundle (docs/scoring.md, "Exercise bundles"): the saved file with
+    /// its mesh, preset and scripted paths. Saves first when there are unsaved changes (asking for
+    /// a file when there is none). "" or why not.
+    QString exportBundle(const QString& bundlePath);
 
     /// The exercise being edited; its sourcePath is where its relative paths resolve from (the
     /// file it was opened from or last saved to, empty for a new one).
@@ -153,6 +157,7 @@ public slots:
     /// File dialogs (then openExercise / saveExercise).
     void openDialog();
     bool saveAsDialog();
+    void exportBundleDialog();
 
 signals:
     /// The instructor's markers, after every change (edits, undo, selection, the drawn mesh).
@@ -315,6 +320,7 @@ private:
     QAction* mOpenAction = nullptr;
     QAction* mSaveAction = nullptr;
     QAction* mSaveAsAction = nullptr;
+    QAction* mExportBundleAction = nullptr;
     QAction* mUndoAction = nullptr;
     QAction* mRedoAction = nullptr;
     QAction* mPreviewAction = nullptr;

@@ -117,6 +117,7 @@ CommandLine::CommandLine() : mRoot("palpate-cli " PALPATE_VERSION " - headless P
     defineRecordCommands(*this);
     defineScoreCommand(*this);
     defineTraineeCommands(*this);
+    defineExerciseCommands(*this);
     defineResultsCommands(*this);
     defineSweepCommand(*this);
     defineAccuracyCommand(*this);

@@ -26,6 +26,9 @@ void defineScoreCommand(CommandLine& cli);
 /// trainee: list, add-session, curve, staircase over the results database (TraineeCommand.cpp,
 /// docs/scoring.md "Proficiency" and "Staircase").
 void defineTraineeCommands(CommandLine& cli);
+/// exercise bundle|import: an exercise with its mesh, preset and scripted paths as one file
+/// (ExerciseCommands.cpp, docs/scoring.md "Exercise bundles").
+void defineExerciseCommands(CommandLine& cli);
 /// results list|export|sync|class|grant|revoke: the stored results, and copying them to the class's server.
 void defineResultsCommands(CommandLine& cli);
 void defineSweepCommand(CommandLine& cli);

@@ -5,6 +5,7 @@
 #include "widgets/PreferencesDialog.h"
 
 #include "base/resources/ShippedResources.h"
+#include "engine/exercise/ExerciseBundle.h"
 #include "engine/exercise/ExerciseFile.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/scoring/ReplayScorer.h"
@@ -131,7 +132,22 @@ void ExerciseController::listExampleExercises() {
     mPanel.setExercises(list);
 }
 
+QString ExerciseController::importedExercisesFolder() {
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+        .filePath(QStringLiteral("exercises"));
+}
+
 QString ExerciseController::addExerciseFile(const QString& path) {
+    if (path.endsWith(QLatin1String(".palpex"), Qt::CaseInsensitive)) {
+        // A bundle: its files go into the exercises folder (nothing there is overwritten), and the
+        // exercise it holds is what is added.
+        const QString folder = importedExercisesFolder();
+        if (!QDir().mkpath(folder)) return tr("%1: the folder to import the exercise into cannot be made").arg(folder);
+        std::string error;
+        const auto imported = importExerciseBundle(path.toStdString(), folder.toStdString(), error);
+        if (!imported) return QString::fromStdString(error);
+        return addExerciseFile(QString::fromStdString(imported->exercisePath));
+    }
     const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
     if (!loaded.exercise) return joined(loaded.errors);
     const QString absolute = QFileInfo(path).absoluteFilePath();

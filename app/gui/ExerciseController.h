@@ -53,8 +53,11 @@ public:
     /// settings' "exercises/opened"), and selects the first.
     void listExampleExercises();
     /// Adds an exercise file to the dock's list and selects it; one not shipped stays in the list
-    /// at the next start. "" or the errors naming the keys.
+    /// at the next start. A bundle (.palpex) is imported into importedExercisesFolder() first.
+    /// "" or the errors naming the keys.
     QString addExerciseFile(const QString& path);
+    /// Where bundles are imported: "exercises" in the application's data folder.
+    static QString importedExercisesFolder();
     /// The exercise files opened before, newest first (whether or not they still open).
     static QStringList openedExercises();
     /// The window shows `meshPath` now: while nothing runs and the trainee has not picked an

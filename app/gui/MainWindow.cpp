@@ -1046,7 +1046,8 @@ void MainWindow::newTraineeDialog() {
 
 void MainWindow::openExerciseDialog() {
     const QString start = QFileInfo(QString::fromStdString(findResource("exercises/press_targets.json"))).absolutePath();
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Exercise"), start, tr("Exercises (*.json)"));
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Exercise"), start,
+                                                      tr("Exercises and bundles (*.json *.palpex)"));
     if (path.isEmpty()) return;
     if (const QString error = mExercises->addExerciseFile(path); !error.isEmpty())
         QMessageBox::warning(this, tr("Not an exercise"), error);

@@ -37,6 +37,9 @@ inline constexpr InputKind kWaypointFile{"a waypoint file", 64 * kMiB};
 /// Mesh files (.obj, .off, .ply, .stl, .om) and the counts a mesh may have: what the product loads
 /// and builds its octree and rings on in seconds. `mesh generate` refuses more vertices.
 inline constexpr InputKind kMeshFile{"a mesh file", 256 * kMiB};
+/// Exercise bundles: an exercise, its mesh, its preset and its scripted paths, each as base64
+/// (4 bytes for 3): room for the largest mesh.
+inline constexpr InputKind kExerciseBundleFile{"an exercise bundle", 512 * kMiB};
 inline constexpr std::uint64_t kMaxMeshVertices = 2'000'000;
 inline constexpr std::uint64_t kMaxMeshFaces = 2 * kMaxMeshVertices;
 

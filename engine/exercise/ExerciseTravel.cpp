@@ -25,6 +25,29 @@ constexpr int kMaxNames = 1000;
 
 }  // namespace
 
+std::optional<PlacedFile> placeInFolder(const std::string& bytes, const std::string& name, const std::string& folder,
+                                        std::string& error) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path wanted(name);
+    const std::string stem = wanted.stem().string(), extension = wanted.extension().string();
+    for (int n = 1; n <= kMaxNames; ++n) {
+        const std::string candidate = n == 1 ? name : stem + "-" + std::to_string(n) + extension;
+        const fs::path target = fs::path(folder) / candidate;
+        if (fs::exists(target, ec) || fs::is_symlink(target, ec)) {
+            if (fs::is_regular_file(target, ec) && readAll(target) == bytes) return PlacedFile{candidate, false};
+            continue;
+        }
+        if (const std::string problem = writeFileAtomically(target.string(), bytes); !problem.empty()) {
+            error = problem;
+            return std::nullopt;
+        }
+        return PlacedFile{candidate, true};
+    }
+    error = (fs::path(folder) / name).string() + ": " + std::to_string(kMaxNames) + " names like it are taken";
+    return std::nullopt;
+}
+
 std::optional<std::string> copyIntoFolder(const std::string& file, const std::string& folder, std::string& error) {
     namespace fs = std::filesystem;
     std::error_code ec;
@@ -33,30 +56,21 @@ std::optional<std::string> copyIntoFolder(const std::string& file, const std::st
         error = file + ": not a file to copy beside the exercise";
         return std::nullopt;
     }
+    // Already in the folder: its own copy.
+    const fs::path there = fs::path(folder) / source.filename();
+    if (fs::exists(there, ec) && fs::equivalent(source, there, ec)) return source.filename().string();
     const std::optional<std::string> bytes = readAll(source);
     if (!bytes) {
         error = file + ": cannot be read to copy beside the exercise";
         return std::nullopt;
     }
-    const std::string stem = source.stem().string(), extension = source.extension().string();
-    for (int n = 1; n <= kMaxNames; ++n) {
-        const std::string name = n == 1 ? source.filename().string() : stem + "-" + std::to_string(n) + extension;
-        const fs::path target = fs::path(folder) / name;
-        if (fs::exists(target, ec)) {
-            // The same file, or one with the same bytes, is used as it is.
-            if (fs::equivalent(source, target, ec)) return name;
-            if (fs::is_regular_file(target, ec) && readAll(target) == bytes) return name;
-            continue;
-        }
-        if (const std::string problem = writeFileAtomically(target.string(), *bytes); !problem.empty()) {
-            error = file + ": not copied beside the exercise: " + problem;
-            return std::nullopt;
-        }
-        return name;
+    std::string problem;
+    const auto placed = placeInFolder(*bytes, source.filename().string(), folder, problem);
+    if (!placed) {
+        error = file + ": not copied beside the exercise: " + problem;
+        return std::nullopt;
     }
-    error = file + ": not copied beside the exercise: " + std::to_string(kMaxNames) + " names like it are taken in " +
-            folder;
-    return std::nullopt;
+    return placed->name;
 }
 
 }  // namespace palpate

@@ -138,6 +138,39 @@ put("mesh", "off-stoff-short.off", OFF + b"STOFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 
 put("mesh", "stl-ascii-crlf.stl", STL + b"solid t\r\nfacet normal 0 0 0\r\nouter loop\r\nvertex 0 0 0\r\nvertex 1 0 0\r\n"
     b"vertex 0 1 0\r\nendloop\r\nendfacet\r\nendsolid t\r\n")
 
+# Exercise bundles: a small valid one (a tetrahedron, a preset, a path), then hostile edits.
+import base64
+def b64(s): return base64.b64encode(s.encode() if isinstance(s, str) else s).decode()
+tet = "OFF\n4 4 0\n0 0 0\n10 0 0\n0 10 0\n0 0 10\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
+small = dict(press)
+small["mesh"] = "tet.off"
+small["tissue_preset"] = "liver.json"
+small["press_targets"] = {"targets": [{"vertex": 3}]}
+bundle = {"format": "palpate-exercise-bundle", "version": 1, "exercise_file": "tet.json", "exercise": small,
+          "files": [{"name": "tet.off", "role": "mesh", "base64": b64(tet)},
+                    {"name": "liver.json", "role": "preset",
+                     "base64": b64(open(repo + "/resources/presets/tissues/liver.json", "rb").read())},
+                    {"name": "tet.good.path", "role": "path", "base64": b64("0 0 0 20\n1 0 0 9\n")}]}
+def bundle_with(change):
+    b = json.loads(json.dumps(bundle))
+    change(b)
+    return json.dumps(b, indent=1)
+put("bundle", "valid.palpex", json.dumps(bundle, indent=1))
+put("bundle", "no-preset.palpex", bundle_with(lambda b: (b["exercise"].pop("tissue_preset"), b["files"].pop(1))))
+put("bundle", "escape-name.palpex", bundle_with(lambda b: b["files"][0].update(name="../tet.off")))
+put("bundle", "bad-base64.palpex", bundle_with(lambda b: b["files"][0].update(base64="QQ=A")))
+put("bundle", "pad-bits.palpex", bundle_with(lambda b: b["files"][0].update(base64="TR==")))
+put("bundle", "two-meshes.palpex", bundle_with(lambda b: b["files"].append(dict(b["files"][0], name="b.off"))))
+put("bundle", "same-name.palpex", bundle_with(lambda b: b["files"][2].update(name="tet.off")))
+put("bundle", "role-unknown.palpex", bundle_with(lambda b: b["files"][2].update(role="script")))
+put("bundle", "files-not-list.palpex", bundle_with(lambda b: b.update(files={"a": 1})))
+put("bundle", "version-2.palpex", bundle_with(lambda b: b.update(version=2)))
+put("bundle", "mesh-mismatch.palpex", bundle_with(lambda b: b["exercise"].update(mesh="other.off")))
+put("bundle", "exercise-broken.palpex", bundle_with(lambda b: b["exercise"].update(time_limit_s=-1)))
+put("bundle", "many-files.palpex", bundle_with(lambda b: b["files"].extend(
+    [dict(b["files"][2], name="p%d.path" % i) for i in range(70)])))
+put("bundle", "empty.palpex", "")
+
 # JSON: anything the reader may meet.
 for name, text in [("object.json", '{"a": 1, "b": [1, 2, {"c": null}]}'), ("overflow.json", '{"a": {"b": [0, 1e400]}}'),
                    ("duplicate.json", '{"a": {"k": 1, "k": 2}}'), ("deep.json", "[" * 100 + "]" * 100),

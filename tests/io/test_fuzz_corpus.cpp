@@ -18,6 +18,7 @@ int palpateFuzzWaypoint(const std::uint8_t* data, std::size_t size);
 int palpateFuzzMeshProbe(const std::uint8_t* data, std::size_t size);
 int palpateFuzzPolygonSoup(const std::uint8_t* data, std::size_t size);
 int palpateFuzzJson(const std::uint8_t* data, std::size_t size);
+int palpateFuzzBundle(const std::uint8_t* data, std::size_t size);
 
 namespace {
 
@@ -100,3 +101,4 @@ TEST(IoFuzzCorpus, WaypointCorpusAndMutationsPass) { runCorpusAndMutations("wayp
 TEST(IoFuzzCorpus, MeshProbeCorpusAndMutationsPass) { runCorpusAndMutations("mesh", palpateFuzzMeshProbe, 4000, 4); }
 TEST(IoFuzzCorpus, PolygonSoupCorpusAndMutationsPass) { runCorpusAndMutations("mesh", palpateFuzzPolygonSoup, 4000, 6); }
 TEST(IoFuzzCorpus, JsonCorpusAndMutationsPass) { runCorpusAndMutations("json", palpateFuzzJson, 4000, 5); }
+TEST(IoFuzzCorpus, BundleCorpusAndMutationsPass) { runCorpusAndMutations("bundle", palpateFuzzBundle, 3000, 7); }

@@ -15,6 +15,7 @@
 #include "widgets/Viewport.h"
 
 #include "engine/core/TissueMesh.h"
+#include "engine/exercise/ExerciseBundle.h"
 #include "engine/exercise/ExerciseFile.h"
 #include "engine/exercise/ExerciseGeometry.h"
 #include "engine/scoring/TargetReachability.h"
@@ -349,6 +350,22 @@ TEST(ExerciseEditor, AnExerciseSavedAwayFromItsMeshTakesACopyAndTravels) {
     // Saved again: the copy is reused.
     ASSERT_EQ(editor.panel.saveExercise(file), QString());
     EXPECT_FALSE(QFile::exists(classFolder + QStringLiteral("/organ-3.off")));
+
+    // Exported as a bundle: the saved exercise with its copied mesh.
+    const QString bundle = home.filePath(QStringLiteral("press.palpex"));
+    ASSERT_EQ(editor.panel.exportBundle(bundle), QString());
+    std::string error;
+    QFile bundleFile(bundle);
+    ASSERT_TRUE(bundleFile.open(QIODevice::ReadOnly));
+    const auto parsed = parseExerciseBundle(bundleFile.readAll().toStdString(), bundle.toStdString(), error);
+    ASSERT_TRUE(parsed) << error;
+    EXPECT_EQ(parsed->exercise.meshPath, "organ-2.off");
+    EXPECT_EQ(parsed->exerciseFile, "press.json");
+    // The Author menu offers it, and a new exercise of every kind.
+    const QList<QAction*> actions = editor.panel.editorActions();
+    EXPECT_TRUE(actions.contains(child<QAction>(editor.panel, "exportBundleAction")));
+    for (const ExerciseKind* kind : exerciseKinds())
+        EXPECT_TRUE(actions.contains(editor.panel.newAction(kind->type())));
 
     // The folder moved to another computer, the instructor's mesh gone: it opens and resolves.
     const QString moved = elsewhere.filePath(QStringLiteral("press.json"));

@@ -6,6 +6,7 @@
 // it; the score report PDF holds the score; errors are reported, not crashed on.
 #include "base/resources/ShippedResources.h"
 #include "app/gui/ExerciseController.h"
+#include "engine/exercise/ExerciseBundle.h"
 #include "report/ScoreReportFromRecording.h"
 #include "app/gui/MainWindow.h"
 #include "results/ResultUploader.h"
@@ -716,6 +717,39 @@ TEST(ExerciseDock, AnOpenedExerciseStaysInTheListAtTheNextStart) {
     EXPECT_EQ(QFileInfo(paths.back()), QFileInfo(mine));
     EXPECT_EQ(ExerciseController::openedExercises().size(), 2);  // the gone one is kept in the settings
     EXPECT_EQ(QFileInfo(ExerciseController::openedExercises().front()), QFileInfo(mine));
+}
+
+// A bundle opens like an exercise file: its files go into the application's exercises folder
+// and the exercise is listed and selected; a broken bundle is refused naming the key.
+TEST(ExerciseDock, ABundleOpensAsAnExercise) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString bundle = dir.filePath(QStringLiteral("trace.palpex"));
+    ASSERT_EQ(writeExerciseBundle(findResource("exercises/trace.json"), bundle.toStdString(), findResource), "");
+    auto window = traineeWindow(dir, "exercises/trace.good.path");
+    ASSERT_EQ(window->exercises().addExerciseFile(bundle), QString());
+    const QString imported = window->traineePanel()->exercisePath();
+    EXPECT_EQ(QFileInfo(imported).absolutePath(),
+              QFileInfo(ExerciseController::importedExercisesFolder()).absoluteFilePath());
+    EXPECT_TRUE(QFile::exists(QFileInfo(imported).absoluteDir().filePath(QStringLiteral("stomach_3970.off"))));
+    const auto loaded = loadExercise(imported.toStdString());
+    ASSERT_TRUE(loaded.exercise) << loaded.error();
+    EXPECT_EQ(loaded.exercise->name, loadExercise(findResource("exercises/trace.json")).exercise->name);
+    // It runs: the scripted trainee traces it.
+    window->setMode(MainWindow::Mode::Trainee);
+    ASSERT_EQ(window->exercises().addTrainee(QStringLiteral("Bo")), QString());
+    ASSERT_EQ(window->exercises().start(), QString());
+    runToEnd(*window, 60000);
+    ASSERT_TRUE(window->exercises().lastReport());
+    EXPECT_GT(window->exercises().lastReport()->score, 80.0);
+
+    QFile broken(dir.filePath(QStringLiteral("broken.palpex")));
+    ASSERT_TRUE(broken.open(QIODevice::WriteOnly));
+    broken.write(R"({"format": "palpate-exercise-bundle", "version": 7})");
+    broken.close();
+    const QString error = window->exercises().addExerciseFile(broken.fileName());
+    EXPECT_TRUE(error.contains(QStringLiteral("version"))) << error.toStdString();
+    EXPECT_EQ(window->traineePanel()->exercisePath(), imported);
 }
 
 TEST(ExerciseDock, APreviewShowsTheExerciseThatRuns) {
