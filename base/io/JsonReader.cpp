@@ -179,6 +179,19 @@ bool JsonReader::wholeNumber(const Json& parent, const std::string& path, const 
     return true;
 }
 
+bool JsonReader::formatAndVersion(const Json& top, const char* format, int newestVersion) {
+    const std::size_t before = errorCount();
+    std::string given;
+    text(top, "", "format", given, true);
+    if (!given.empty() && given != format) error("format", "is '" + given + "', expected '" + format + "'");
+    double version = 0.0;
+    if (number(top, "", "version", version, true) &&
+        (std::floor(version) != version || version < 1 || version > newestVersion))
+        error("version", "version " + Json(version).dump() + " is not supported (this build reads 1 to " +
+                             std::to_string(newestVersion) + ")");
+    return errorCount() == before;
+}
+
 bool JsonReader::text(const Json& parent, const std::string& path, const char* key, std::string& out, bool required) {
     if (!parent.contains(key)) {
         if (required) error(join(path, key), "missing");

@@ -40,6 +40,9 @@ public:
                      bool required = false);
     /// parent[key] as a string into `out`.
     bool text(const Json& parent, const std::string& path, const char* key, std::string& out, bool required = false);
+    /// The top-level "format" (must be `format`) and "version" (a whole number from 1 to
+    /// `newestVersion`), both required; false after recording what is wrong.
+    bool formatAndVersion(const Json& top, const char* format, int newestVersion);
     /// parent[key] as true or false into `out`.
     bool boolean(const Json& parent, const std::string& path, const char* key, bool& out, bool required = false);
 

@@ -142,14 +142,7 @@ std::optional<ParsedBundle> parseExerciseBundle(const std::string& text, const s
     if (!parsed) return fail();
     const Json& j = *parsed;
     if (!r.object(j, "", {"format", "version", "exercise_file", "exercise", "files"})) return fail();
-    std::string format;
-    r.text(j, "", "format", format, true);
-    if (!format.empty() && format != kFormat) r.error("format", "is '" + format + "', expected '" + kFormat + "'");
-    double version = 0.0;
-    if (r.number(j, "", "version", version, true) &&
-        (std::floor(version) != version || version < 1 || version > kVersion))
-        r.error("version", "version " + Json(version).dump() + " is not supported (this build reads 1 to " +
-                               std::to_string(kVersion) + ")");
+    r.formatAndVersion(j, kFormat, kVersion);
     ParsedBundle out;
     if (r.text(j, "", "exercise_file", out.exerciseFile, true) && !plainFileName(out.exerciseFile))
         r.error("exercise_file", "'" + out.exerciseFile + "' is not a plain file name");

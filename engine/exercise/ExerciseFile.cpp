@@ -67,14 +67,7 @@ ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::strin
     for (const ExerciseKind* kind : exerciseKinds()) keys.emplace_back(kind->key());
     if (!r.object(j, "", keys)) return result;
 
-    std::string format;
-    r.text(j, "", "format", format, true);
-    if (!format.empty() && format != kFormat) r.error("format", "is '" + format + "', expected '" + kFormat + "'");
-    double version = 0.0;
-    if (r.number(j, "", "version", version, true) &&
-        (std::floor(version) != version || version < 1 || version > kExerciseVersion))
-        r.error("version", "version " + Json(version).dump() + " is not supported (this build reads 1 to " +
-                               std::to_string(kExerciseVersion) + ")");
+    r.formatAndVersion(j, kFormat, kExerciseVersion);
 
     Exercise e;
     e.sourcePath = source;
