@@ -1239,6 +1239,7 @@ bool ParameterPanel::loadPresetFile(const QString& path, QString* error) {
                                                   [this](const TissuePreset& preset) { showPreset(preset); }));
     mUndoStack->setClean();
     mLastDirectory = QFileInfo(path).absolutePath();
+    mPresetFile = QFileInfo(path).absoluteFilePath();
     mFileErrors.clear();
     mFileNote = tr("Loaded %1").arg(QDir::toNativeSeparators(path));
     if (const auto& stored = result.preset->stabilityMargin)
@@ -1259,10 +1260,20 @@ bool ParameterPanel::savePresetFile(const QString& path, QString* error) {
         // The margin of the set at its haptic rate goes with it (informational on load); without
         // the mesh a mass-spring margin is unknown and none is written.
         TissuePreset toSave = preset();
+        // Saved under another file's name, it is that name's preset (a copy made to be changed):
+        // "Save preset" suggests NAME.json, so keeping the suggestion keeps the name.
+        const QFileInfo target(path);
+        if (target.absoluteFilePath() != mPresetFile &&
+            target.completeBaseName() != QString::fromStdString(toSave.name))
+            toSave.name = target.completeBaseName().toStdString();
         toSave.stabilityMargin.reset();
         if (const auto margin = stabilityMargin())
             toSave.stabilityMargin = PresetStabilityMargin{margin->margin, 1.0 / toSave.hapticRateHz};
         problem = QString::fromStdString(saveTissuePreset(toSave, QDir::toNativeSeparators(path).toStdString()));
+        if (problem.isEmpty() && toSave.name != mShown.name) {
+            mShown.name = toSave.name;
+            mTitleLabel->setText(tr("Preset: %1").arg(QString::fromStdString(mShown.name)));
+        }
     }
     if (!problem.isEmpty()) {
         mFileErrors = QStringList{problem};
@@ -1273,6 +1284,7 @@ bool ParameterPanel::savePresetFile(const QString& path, QString* error) {
     }
     mUndoStack->setClean();
     mLastDirectory = QFileInfo(path).absolutePath();
+    mPresetFile = QFileInfo(path).absoluteFilePath();
     mFileErrors.clear();
     mFileNote = tr("Saved %1").arg(QDir::toNativeSeparators(path));
     validate();

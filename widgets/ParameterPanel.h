@@ -258,6 +258,7 @@ private:
     QStringList mFileErrors;  ///< the last failed load/save; cleared by the next edit or file success
     QString mFileNote;        ///< the last successful load/save
     QString mLastDirectory;
+    QString mPresetFile;  ///< the file the shown preset was last loaded from or saved to
 
     MeshProvider mMeshProvider;
     ConfirmFunction mConfirm;

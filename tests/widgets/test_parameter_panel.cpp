@@ -400,6 +400,7 @@ TEST(ParameterPanel, SaveThenLoadRoundTripsAsOneUndoableStep) {
     ASSERT_TRUE(panel.loadPresetFile(path, &error)) << error.toStdString();
     // Slopes beyond ring_count are not written; compare what the file carries.
     TissuePreset expected = saved;
+    expected.name = "soft";  // saved as soft.json: a copy named after its file
     for (int r = saved.model.slopeRing.ringCount + 1; r <= kMaxRings; ++r)
         expected.model.slopeRing.slopeMagnitudeMmPerN[std::size_t(r)] = TissuePreset{}.model.slopeRing.slopeMagnitudeMmPerN[std::size_t(r)];
     EXPECT_TRUE(samePreset(panel.preset(), expected));
@@ -413,6 +414,22 @@ TEST(ParameterPanel, SaveThenLoadRoundTripsAsOneUndoableStep) {
     EXPECT_TRUE(samePreset(panel.preset(), TissuePreset{}));
     panel.redoAction()->trigger();
     EXPECT_TRUE(samePreset(panel.preset(), expected));
+
+    // Saved under another name it carries that name, reopened and in the panel's title; saved
+    // again to its own file (or to NAME.json, the dialog's suggestion) the name stays.
+    const QString renamed = dir.filePath(QStringLiteral("stiffer liver.json"));
+    ASSERT_TRUE(panel.savePresetFile(renamed, &error)) << error.toStdString();
+    EXPECT_EQ(loadTissuePreset(renamed.toStdString()).preset->name, "stiffer liver");
+    EXPECT_EQ(panel.preset().name, "stiffer liver");
+    EXPECT_TRUE(label(panel, "presetTitleLabel")->text().contains(QStringLiteral("stiffer liver")))
+        << label(panel, "presetTitleLabel")->text().toStdString();
+    ASSERT_TRUE(panel.loadPresetFile(path, &error)) << error.toStdString();
+    const std::string ownName = panel.preset().name;
+    ASSERT_TRUE(panel.savePresetFile(path, &error)) << error.toStdString();
+    EXPECT_EQ(loadTissuePreset(path.toStdString()).preset->name, ownName) << "its own file keeps its name";
+    const QString suggested = dir.filePath(QString::fromStdString(ownName) + QStringLiteral(".json"));
+    ASSERT_TRUE(panel.savePresetFile(suggested, &error)) << error.toStdString();
+    EXPECT_EQ(loadTissuePreset(suggested.toStdString()).preset->name, ownName);
 
     // An invalid preset is not written (it could not be read back).
     slopeSpin(panel, 1)->setValue(5.0);
