@@ -3062,6 +3062,10 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
         <source>Exercises and bundles (*.json *.palpex)</source>
         <translation>Übungen und Pakete (*.json *.palpex)</translation>
     </message>
+    <message>
+        <source>Stiffening knots applied to the tissue (undo them in Parameters, then Apply)</source>
+        <translation>Versteifungsknoten auf das Gewebe angewandt (in Parameter rückgängig machen, dann Anwenden)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MeshImportDialog</name>
@@ -3984,6 +3988,14 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
         <source>Not applied: %1 differ from the running tissue. Apply (Ctrl+Return) sends them; Revert goes back to what runs.</source>
         <translation>Nicht angewendet: %1 weichen vom laufenden Gewebe ab. Anwenden (Strg+Eingabe) sendet sie; Zurücksetzen stellt her, was läuft.</translation>
     </message>
+    <message>
+        <source>Apply stiffening knots</source>
+        <translation>Versteifungsknoten anwenden</translation>
+    </message>
+    <message>
+        <source>Not applied: the parameters are not valid (see the Parameters panel).</source>
+        <translation>Nicht angewandt: die Parameter sind ungültig (siehe Parameter).</translation>
+    </message>
 </context>
 <context>
     <name>palpate::Parameters</name>
@@ -4336,16 +4348,16 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
         <translation>Oberhalb seines Knotens gibt das Gewebe je weiteres Newton um diesen Anteil von |m1| nach: unter 1 wird es steifer.</translation>
     </message>
     <message>
-        <source>Stiffening exponent b:</source>
-        <translation>Versteifungsexponent b:</translation>
-    </message>
-    <message>
         <source>stiffening exponent</source>
         <translation>Versteifungsexponent</translation>
     </message>
     <message>
-        <source>How fast the tissue stiffens with strain: b of the exponential law of the hyperelastic reference (0..100; 0: neo-Hookean). Calibration turns it into stiffening knots.</source>
-        <translation>Wie schnell das Gewebe mit der Dehnung steifer wird: b des Exponentialgesetzes der hyperelastischen Referenz (0..100; 0: Neo-Hooke). Die Kalibrierung macht daraus Versteifungsknoten.</translation>
+        <source>Stiffening b (reference):</source>
+        <translation>Versteifung b (Referenz):</translation>
+    </message>
+    <message>
+        <source>How fast the tissue stiffens with strain: b of the exponential law of the hyperelastic reference (0..100; 0: neo-Hookean). It does not change the force by itself: Charts &gt; Stiffening &gt; Compute solves the reference with it, and Apply knots puts the model&apos;s stiffening knots into the tissue.</source>
+        <translation>Wie schnell das Gewebe mit der Dehnung steifer wird: b des Exponentialgesetzes der hyperelastischen Referenz (0..100; 0: Neo-Hooke). Es ändert die Kraft nicht von selbst: Diagramme &gt; Versteifung &gt; Berechnen löst die Referenz damit, und Knoten anwenden setzt die Versteifungsknoten des Modells in das Gewebe.</translation>
     </message>
 </context>
 <context>
@@ -5702,6 +5714,14 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
     <message>
         <source>The knots do not fit these slopes: %1</source>
         <translation>Die Knoten passen nicht zu diesen Steigungen: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Apply knots</source>
+        <translation>Knoten &amp;anwenden</translation>
+    </message>
+    <message>
+        <source>Put these knots into the tissue in use (Parameters: one step to undo) and apply it: the model stiffens as the reference does. The mesh and the rings stay as they are.</source>
+        <translation>Diese Knoten in das verwendete Gewebe setzen (Parameter: ein Schritt zum Rückgängigmachen) und anwenden: das Modell versteift sich wie die Referenz. Netz und Ringe bleiben, wie sie sind.</translation>
     </message>
 </context>
 <context>

@@ -3058,6 +3058,10 @@ pemapar %5</translation>
         <source>Exercises and bundles (*.json *.palpex)</source>
         <translation>Latihan dan berkas (*.json *.palpex)</translation>
     </message>
+    <message>
+        <source>Stiffening knots applied to the tissue (undo them in Parameters, then Apply)</source>
+        <translation>Simpulan pengerasan digunakan pada tisu (buat asal dalam Parameter, kemudian Guna)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MeshImportDialog</name>
@@ -3979,6 +3983,14 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
         <source>Not applied: %1 differ from the running tissue. Apply (Ctrl+Return) sends them; Revert goes back to what runs.</source>
         <translation>Belum digunakan: %1 berbeza daripada tisu yang berjalan. Guna (Ctrl+Return) menghantarnya; Kembalikan kembali kepada apa yang berjalan.</translation>
     </message>
+    <message>
+        <source>Apply stiffening knots</source>
+        <translation>Guna simpulan pengerasan</translation>
+    </message>
+    <message>
+        <source>Not applied: the parameters are not valid (see the Parameters panel).</source>
+        <translation>Tidak digunakan: parameter tidak sah (lihat panel Parameter).</translation>
+    </message>
 </context>
 <context>
     <name>palpate::Parameters</name>
@@ -4331,16 +4343,16 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
         <translation>Melebihi simpulannya tisu mengalah sebanyak pecahan |m1| ini bagi setiap newton tambahan: di bawah 1, ia mengeras.</translation>
     </message>
     <message>
-        <source>Stiffening exponent b:</source>
-        <translation>Eksponen pengerasan b:</translation>
-    </message>
-    <message>
         <source>stiffening exponent</source>
         <translation>eksponen pengerasan</translation>
     </message>
     <message>
-        <source>How fast the tissue stiffens with strain: b of the exponential law of the hyperelastic reference (0..100; 0: neo-Hookean). Calibration turns it into stiffening knots.</source>
-        <translation>Seberapa cepat tisu mengeras dengan terikan: b bagi hukum eksponen rujukan hiperelastik (0..100; 0: neo-Hookean). Penentukuran menukarkannya kepada simpulan pengerasan.</translation>
+        <source>Stiffening b (reference):</source>
+        <translation>Pengerasan b (rujukan):</translation>
+    </message>
+    <message>
+        <source>How fast the tissue stiffens with strain: b of the exponential law of the hyperelastic reference (0..100; 0: neo-Hookean). It does not change the force by itself: Charts &gt; Stiffening &gt; Compute solves the reference with it, and Apply knots puts the model&apos;s stiffening knots into the tissue.</source>
+        <translation>Betapa cepat tisu mengeras dengan terikan: b hukum eksponen rujukan hiperelastik (0..100; 0: neo-Hookean). Ia tidak mengubah daya dengan sendirinya: Carta &gt; Pengerasan &gt; Kira menyelesaikan rujukan dengannya, dan Guna simpulan memasukkan simpulan pengerasan model ke dalam tisu.</translation>
     </message>
 </context>
 <context>
@@ -5697,6 +5709,14 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
     <message>
         <source>The knots do not fit these slopes: %1</source>
         <translation>Simpulan tidak sesuai dengan cerun ini: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Apply knots</source>
+        <translation>&amp;Guna simpulan</translation>
+    </message>
+    <message>
+        <source>Put these knots into the tissue in use (Parameters: one step to undo) and apply it: the model stiffens as the reference does. The mesh and the rings stay as they are.</source>
+        <translation>Masukkan simpulan ini ke dalam tisu yang digunakan (Parameter: satu langkah untuk buat asal) dan gunakannya: model mengeras seperti rujukan. Jejaring dan gelang kekal seperti sedia ada.</translation>
     </message>
 </context>
 <context>

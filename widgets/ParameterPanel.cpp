@@ -874,6 +874,24 @@ void ParameterPanel::setPreset(const TissuePreset& preset) {
     mUndoStack->setClean();
 }
 
+QString ParameterPanel::applyStiffeningKnots(const StiffeningCalibration& calibration) {
+    const TissuePreset before = presetFromFields();
+    TissuePreset after = before;
+    try {
+        applyStiffening(calibration, after.model.slopeRing);
+    } catch (const std::exception& e) {
+        return QString::fromStdString(e.what());
+    }
+    if (!samePreset(before, after))
+        mUndoStack->push(new ParameterEditCommand(before, after, tr("Apply stiffening knots"),
+                                                  ParameterEditCommand::kNoMerge,
+                                                  /*alreadyShown=*/false,
+                                                  [this](const TissuePreset& preset) { showPreset(preset); }));
+    if (!mValid) return tr("Not applied: the parameters are not valid (see the Parameters panel).");
+    apply();
+    return {};
+}
+
 void ParameterPanel::showPreset(const TissuePreset& preset) {
     mShowing = true;
     const QString model = QString::fromStdString(presetModelName(preset));

@@ -12,6 +12,7 @@
 #include "engine/core/TissueMesh.h"
 #include "engine/scene/TissuePreset.h"
 #include "engine/accuracy/Calibration.h"
+#include "engine/accuracy/StiffeningCalibration.h"
 #include "engine/stability/StabilityMargin.h"
 
 #include <QString>
@@ -61,6 +62,11 @@ public:
     /// Shows `preset` as a new baseline that is also what runs: no undo entry, and the undo history
     /// is cleared (its steps belong to the preset that was shown before).
     void setPreset(const TissuePreset& preset);
+
+    /// Stiffening knots from the Charts dock (StiffeningPanel) into the shown preset's slope-ring
+    /// parameters, as one undoable step ("Apply stiffening knots"), then Apply as the button does.
+    /// The slopes, rings and everything else stay. "" or why not (the fields are not valid).
+    QString applyStiffeningKnots(const StiffeningCalibration& calibration);
 
     /// The main window's answer to applyRequested once the haptic loop runs `running`: fields equal
     /// to it lose their "changed" mark, and "Applied to the running tissue at HH:MM:SS" shows for a

@@ -36,6 +36,11 @@ StiffeningPanel::StiffeningPanel(QWidget* parent) : QWidget(parent) {
     mComputeButton = new QPushButton(this);
     mComputeButton->setObjectName(QStringLiteral("computeStiffeningButton"));
     connect(mComputeButton, &QPushButton::clicked, this, [this] { compute(); });
+    mApplyButton = new QPushButton(this);
+    mApplyButton->setObjectName(QStringLiteral("applyKnotsButton"));
+    connect(mApplyButton, &QPushButton::clicked, this, [this] {
+        if (mReference && mReference->knots > 0) emit applyKnotsRequested(*mReference);
+    });
     mBusy = new QProgressBar(this);
     mBusy->setRange(0, 0);  // a solve reports no fraction: busy while it runs
     mBusy->setVisible(false);
@@ -49,6 +54,7 @@ StiffeningPanel::StiffeningPanel(QWidget* parent) : QWidget(parent) {
     row->addWidget(mDepthLabel);
     row->addWidget(mDepthSpin);
     row->addWidget(mComputeButton);
+    row->addWidget(mApplyButton);
     row->addStretch(1);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(mView, 1);
@@ -86,6 +92,7 @@ void StiffeningPanel::setTissue(const ToolContact& contact, const SlopeRingParam
         }
     }
     rebuild();
+    updateApplyButton();
 }
 
 bool StiffeningPanel::compute() {
@@ -118,6 +125,7 @@ bool StiffeningPanel::compute() {
     mThread->setObjectName(QStringLiteral("stiffening reference"));
     mBusy->setVisible(true);
     mComputeButton->setEnabled(false);
+    updateApplyButton();
     setStatus(tr("Pressing the hyperelastic half-space to %1 mm…").arg(mDepthSpin->value()));
     mThread->start(QThread::LowPriority);  // the haptic thread and the GUI come first
     return true;
@@ -138,7 +146,12 @@ void StiffeningPanel::onFinished(const std::shared_ptr<StiffeningCalibration>& r
     }
     mReference = *result;
     rebuild();
+    updateApplyButton();
     emit computed(true);
+}
+
+void StiffeningPanel::updateApplyButton() {
+    mApplyButton->setEnabled(!mThread && mReference && mReference->completed && mReference->knots > 0);
 }
 
 QStringList StiffeningPanel::seriesNames() const {
@@ -242,6 +255,10 @@ void StiffeningPanel::retranslateUi() {
     mDepthLabel->setText(tr("Press &to:"));
     mDepthSpin->setToolTip(tr("How deep the hyperelastic punch goes (0.1 to 1.5 tool radii)."));
     mComputeButton->setText(tr("&Compute"));
+    mApplyButton->setText(tr("&Apply knots"));
+    mApplyButton->setToolTip(
+        tr("Put these knots into the tissue in use (Parameters: one step to undo) and apply it: "
+           "the model stiffens as the reference does. The mesh and the rings stay as they are."));
     mComputeButton->setToolTip(tr("Solve the hyperelastic reference for this tissue (a flat punch of the tool's radius, "
                                   "a few seconds) and fit the stiffening knots to it."));
     rebuild();

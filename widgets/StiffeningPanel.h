@@ -48,6 +48,9 @@ public:
 signals:
     /// A solve ended (with a curve or with the error in the status).
     void computed(bool ok);
+    /// "Apply knots": the computed knots should go into the tissue in use (the main window puts
+    /// them into the Parameters panel as one undoable step and applies it).
+    void applyKnotsRequested(const StiffeningCalibration& calibration);
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -62,6 +65,9 @@ private:
     QLabel* mDepthLabel = nullptr;
     QDoubleSpinBox* mDepthSpin = nullptr;
     QPushButton* mComputeButton = nullptr;
+    QPushButton* mApplyButton = nullptr;
+    /// Apply knots is on while a completed curve with knots is shown and nothing runs.
+    void updateApplyButton();
     QProgressBar* mBusy = nullptr;
     QLabel* mStatusLabel = nullptr;
     ToolContact mContact;

@@ -12,6 +12,7 @@
 #include "app/gui/MeshOpener.h"
 #include "app/gui/RecordingController.h"
 #include "widgets/ChartsPanel.h"
+#include "widgets/StiffeningPanel.h"
 #include "widgets/FeelPanel.h"
 #include "widgets/ExerciseEditorPanel.h"
 #include "widgets/GuardedLoad.h"
@@ -190,6 +191,14 @@ void MainWindow::createDocks() {
     // first shown; without it the chart says how to make one.
     mChartsPanel->setDefaultCsv(QString::fromStdString(findResource("../docs/bench/sweep.csv")));
     mChartsPanel->feelPanel()->setDefaultCsv(QString::fromStdString(findResource("../docs/bench/feel.csv")));
+    connect(mChartsPanel->stiffeningPanel(), &StiffeningPanel::applyKnotsRequested, this,
+            [this](const StiffeningCalibration& calibration) {
+                const QString error = mParameterPanel->applyStiffeningKnots(calibration);
+                statusBar()->showMessage(
+                    error.isEmpty() ? tr("Stiffening knots applied to the tissue (undo them in Parameters, then Apply)")
+                                    : error,
+                    8000);
+            });
     updateChartsConfiguration();
     mRecording = new RecordingController(
         *this, *mSession, *mViewport, [this] { present(mSession->observe()); }, this);

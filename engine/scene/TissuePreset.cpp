@@ -87,12 +87,13 @@ constexpr FieldDef<TissueProperties> kTissueFields[] = {
          .jsonKey = "stiffening_exponent",
          .lo = 0,
          .hi = 100,
-         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Stiffening exponent b:"),
+         .label = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "Stiffening b (reference):"),
          .name = PALPATE_TRANSLATE_NOOP("palpate::Parameters", "stiffening exponent"),
          .tip = PALPATE_TRANSLATE_NOOP(
              "palpate::Parameters",
              "How fast the tissue stiffens with strain: b of the exponential law of the hyperelastic reference "
-             "(0..100; 0: neo-Hookean). Calibration turns it into stiffening knots."),
+             "(0..100; 0: neo-Hookean). It does not change the force by itself: Charts > Stiffening > Compute "
+             "solves the reference with it, and Apply knots puts the model's stiffening knots into the tissue."),
          .decimals = 4,
          .step = 0.5}),
 };

@@ -15,6 +15,9 @@
 #include "widgets/Viewport.h"
 
 #include "engine/core/TissueMesh.h"
+#include "widgets/ParameterPanel.h"
+#include "widgets/ChartsPanel.h"
+#include "widgets/StiffeningPanel.h"
 #include "engine/exercise/ExerciseBundle.h"
 #include "engine/exercise/ExerciseFile.h"
 #include "engine/exercise/ExerciseGeometry.h"
@@ -1168,6 +1171,39 @@ protected:
 };
 
 }  // namespace
+
+// The Stiffening chart's Apply knots reaches the force the hand feels: pressed and held at one
+// depth, the tissue pushes back harder once the knots are in, and the mesh and rings stay.
+TEST_F(EditorInTheWindow, StiffeningKnotsFromTheChartsChangeTheForceAndNothingElse) {
+    sendMouse(*viewport, QEvent::MouseButtonPress, centre, Qt::LeftButton, Qt::LeftButton);
+    window->advanceTicks(800);
+    const double linearN = force();
+    ASSERT_GT(linearN, 0.01);
+    const auto meshBefore = window->session().drawnMesh();
+    const int ringsBefore = window->session().preset().model.slopeRing.ringCount;
+    StiffeningCalibration knots;
+    knots.knots = 1;
+    knots.knotForceN = {0.3 * linearN};
+    knots.knotCompliance = {0.25};
+    knots.completed = true;
+    emit window->chartsPanel()->stiffeningPanel()->applyKnotsRequested(knots);
+    window->advanceTicks(800);
+    const double stiffenedN = force();
+    std::printf("[ figures  ] held press: %.3f N linear, %.3f N with a knot at %.3f N (compliance 0.25)\n", linearN,
+                stiffenedN, knots.knotForceN[0]);
+    EXPECT_GT(stiffenedN, 1.2 * linearN);  // the contact in series with the stiffer tissue
+    EXPECT_EQ(window->session().preset().model.slopeRing.stiffeningKnots, 1);
+    EXPECT_EQ(window->session().drawnMesh(), meshBefore) << "the mesh stays";
+    EXPECT_EQ(window->session().preset().model.slopeRing.ringCount, ringsBefore) << "the rings stay";
+    // One step to undo in Parameters; applied, the force is the linear one again.
+    ParameterPanel* parameters = window->parameterPanel();
+    EXPECT_EQ(parameters->undoStack()->undoText(), QStringLiteral("Apply stiffening knots"));
+    parameters->undoStack()->undo();
+    parameters->apply();
+    window->advanceTicks(800);
+    EXPECT_EQ(window->session().preset().model.slopeRing.stiffeningKnots, 0);
+    EXPECT_NEAR(force(), linearN, 0.02 * linearN);
+}
 
 TEST_F(EditorInTheWindow, AddByClickingAddsATargetWhileTouchModeIsOn) {
     ASSERT_TRUE(window->touchMode());
