@@ -103,10 +103,6 @@
         <translation>In Verwendung: %1 (kein Netz geladen)</translation>
     </message>
     <message>
-        <source>In use: %1 on %2 vertices (ringed in magenta)</source>
-        <translation>In Verwendung: %1 mit %2 Knoten (magenta umrandet)</translation>
-    </message>
-    <message>
         <source>In use: %1 on %2 vertices</source>
         <translation>In Verwendung: %1 mit %2 Knoten</translation>
     </message>
@@ -222,6 +218,14 @@
     <message>
         <source>What Run sweep scores against: the flat punch on a half-space, or the FEM of the filled stomach (linear and hyperelastic) at its thin, thick and curved sites.</source>
         <translation>Wogegen der Sweep bewertet: der flache Stempel auf einem Halbraum oder die FEM des gefüllten Magens (linear und hyperelastisch) an seinen dünnen, dicken und gekrümmten Stellen.</translation>
+    </message>
+    <message>
+        <source>In use: %1 on %2 vertices, tissue E = %3 kPa, ν = %4. The chart shows a stored sweep of another tissue (E = %5 kPa, ν = %6), not this one: press Run sweep to measure it.</source>
+        <translation>In Verwendung: %1 auf %2 Knotenpunkten, Gewebe E = %3 kPa, ν = %4. Das Diagramm zeigt einen gespeicherten Sweep eines anderen Gewebes (E = %5 kPa, ν = %6), nicht dieses: Sweep starten misst es.</translation>
+    </message>
+    <message>
+        <source>In use: %1 on %2 vertices; ringed in magenta: the sweep&apos;s point of that model and size (on its generated shape, not necessarily this mesh)</source>
+        <translation>In Verwendung: %1 auf %2 Knotenpunkten; magenta umrandet: der Punkt des Sweeps für dieses Modell und diese Größe (auf seiner erzeugten Form, nicht unbedingt diesem Netz)</translation>
     </message>
 </context>
 <context>

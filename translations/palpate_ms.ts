@@ -103,10 +103,6 @@
         <translation>Digunakan: %1 (tiada jejaring dimuatkan)</translation>
     </message>
     <message>
-        <source>In use: %1 on %2 vertices (ringed in magenta)</source>
-        <translation>Digunakan: %1 pada %2 bucu (dibulatkan dengan magenta)</translation>
-    </message>
-    <message>
         <source>In use: %1 on %2 vertices</source>
         <translation>Digunakan: %1 pada %2 bucu</translation>
     </message>
@@ -222,6 +218,14 @@
     <message>
         <source>What Run sweep scores against: the flat punch on a half-space, or the FEM of the filled stomach (linear and hyperelastic) at its thin, thick and curved sites.</source>
         <translation>Sasaran penilaian sapuan: penebuk rata pada separuh ruang, atau FEM perut yang diisi (linear dan hiperelastik) di tapak nipis, tebal dan melengkungnya.</translation>
+    </message>
+    <message>
+        <source>In use: %1 on %2 vertices, tissue E = %3 kPa, ν = %4. The chart shows a stored sweep of another tissue (E = %5 kPa, ν = %6), not this one: press Run sweep to measure it.</source>
+        <translation>Digunakan: %1 pada %2 bucu, tisu E = %3 kPa, ν = %4. Carta menunjukkan sapuan tersimpan bagi tisu lain (E = %5 kPa, ν = %6), bukan tisu ini: tekan Jalankan sapuan untuk mengukurnya.</translation>
+    </message>
+    <message>
+        <source>In use: %1 on %2 vertices; ringed in magenta: the sweep&apos;s point of that model and size (on its generated shape, not necessarily this mesh)</source>
+        <translation>Digunakan: %1 pada %2 bucu; dibulatkan magenta: titik sapuan bagi model dan saiz itu (pada bentuk yang dijananya, tidak semestinya jejaring ini)</translation>
     </message>
 </context>
 <context>

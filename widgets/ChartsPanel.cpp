@@ -250,17 +250,33 @@ void ChartsPanel::updateHighlight() {
     const std::string series = mApplied.model.kind == ModelKind::SlopeRing
                                    ? sweepSeriesName(mApplied.model.slopeRingMethod, mApplied.model.slopeRing.ringCount)
                                    : presetModelName(mApplied);
-    mChart->setHighlight(series, mMeshVertices);
+    // A stored sweep of another tissue says nothing of this one: nothing of it is "in use".
+    const bool otherTissue = mShownContact && !points().empty() && !sameToolContact(*mShownContact, mContact);
+    mChart->setHighlight(otherTissue ? std::string() : series, otherTissue ? 0 : mMeshVertices);
     const QString name = series.empty() ? tr("%1 with %2 rings")
                                               .arg(QString::fromLatin1(methodName(mApplied.model.slopeRingMethod).data(),
                                                                        qsizetype(methodName(mApplied.model.slopeRingMethod).size())))
                                               .arg(mApplied.model.slopeRing.ringCount)
                                         : QString::fromStdString(series);
+    const QLocale l = locale();
+    const auto kPa = [&l](const ToolContact& c) {
+        return l.toString(c.material.youngsModulusNPerMm2 * 1000.0, 'g', 3);
+    };
     QString text;
     if (mMeshVertices == 0)
         text = tr("In use: %1 (no mesh loaded)").arg(name);
+    else if (otherTissue)
+        text = tr("In use: %1 on %2 vertices, tissue E = %3 kPa, ν = %4. The chart shows a stored sweep of another "
+                  "tissue (E = %5 kPa, ν = %6), not this one: press Run sweep to measure it.")
+                   .arg(name)
+                   .arg(mMeshVertices)
+                   .arg(kPa(mContact), l.toString(mContact.material.poissonRatio, 'g', 3), kPa(*mShownContact),
+                        l.toString(mShownContact->material.poissonRatio, 'g', 3));
     else if (mChart->highlightMarkCount() > 0)
-        text = tr("In use: %1 on %2 vertices (ringed in magenta)").arg(name).arg(mMeshVertices);
+        text = tr("In use: %1 on %2 vertices; ringed in magenta: the sweep's point of that model and size (on "
+                  "its generated shape, not necessarily this mesh)")
+                   .arg(name)
+                   .arg(mMeshVertices);
     else if (points().empty())
         text = tr("In use: %1 on %2 vertices").arg(name).arg(mMeshVertices);
     else

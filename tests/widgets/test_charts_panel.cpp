@@ -173,6 +173,7 @@ SweepDef tinySweep() {
     def.otherModels = false;
     def.timingRepeats = 1;
     def.minMeasureMs = 1.0;
+    def.contact = ParameterPanel::toolContactOf(TissuePreset{});  // the tissue the tests apply
     return def;
 }
 
@@ -211,6 +212,19 @@ TEST(ChartsPanel, RunsATinySweepOffTheGuiThreadToCompletion) {
               panel.findChild<QProgressBar*>(QStringLiteral("sweepProgress"))->maximum());
     EXPECT_TRUE(panel.statusText().contains(QStringLiteral("2 points"))) << panel.statusText().toStdString();
     EXPECT_TRUE(panel.findChild<QPushButton*>(QStringLiteral("saveSweepCsvButton"))->isEnabled());
+
+    // Another tissue in use: the sweep says nothing of it, so nothing is ringed "in use", and the
+    // label says what the chart shows instead.
+    TissuePreset softer = applied;
+    softer.tissue = TissueProperties{};
+    softer.tissue->youngsModulusKPa = 1.9;
+    panel.setCurrentConfiguration(softer, ParameterPanel::toolContactOf(softer), 1442);
+    EXPECT_EQ(panel.chart()->highlightMarkCount(), 0);
+    const QString label = panel.findChild<QLabel*>(QStringLiteral("currentConfigurationLabel"))->text();
+    EXPECT_TRUE(label.contains(QStringLiteral("another tissue")) && label.contains(QStringLiteral("1.9")))
+        << label.toStdString();
+    panel.setCurrentConfiguration(applied, ParameterPanel::toolContactOf(applied), 1442);
+    EXPECT_EQ(panel.chart()->highlightMarkCount(), 1);
 }
 
 TEST(ChartsPanel, HighlightsAModelOtherThanSlopeRingByItsName) {
