@@ -2553,6 +2553,14 @@ Tick %7 µs, %8-mal schneller als previous</translation>
         <source>Tissue: %1</source>
         <translation>Gewebe: %1</translation>
     </message>
+    <message>
+        <source>U&amp;ndo use</source>
+        <translation>Verwendung rückgä&amp;ngig</translation>
+    </message>
+    <message>
+        <source>Back to the mesh, rings and tissue from before the first Use.</source>
+        <translation>Zurück zu Netz, Ringen und Gewebe von vor der ersten Verwendung.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MainWindow</name>
@@ -3069,6 +3077,38 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>Stiffening knots applied to the tissue (undo them in Parameters, then Apply)</source>
         <translation>Versteifungsknoten auf das Gewebe angewandt (in Parameter rückgängig machen, dann Anwenden)</translation>
+    </message>
+    <message>
+        <source>Another mesh: the level of detail&apos;s %1 rings stay with its scene; %2 rings again</source>
+        <translation>Ein anderes Netz: die %1 Ringe der Detailstufe bleiben bei ihrer Szene; wieder %2 Ringe</translation>
+    </message>
+    <message>
+        <source>mesh %1 (%2 vertices) instead of %3 (%4)</source>
+        <translation>Netz %1 (%2 Knotenpunkte) statt %3 (%4)</translation>
+    </message>
+    <message>
+        <source>%1 rings instead of %2</source>
+        <translation>%1 Ringe statt %2</translation>
+    </message>
+    <message>
+        <source>%1 stiffening knots instead of %2</source>
+        <translation>%1 Versteifungsknoten statt %2</translation>
+    </message>
+    <message>
+        <source>Nothing changed: the scene already ran this.</source>
+        <translation>Nichts geändert: die Szene lief schon so.</translation>
+    </message>
+    <message>
+        <source>Changed: %1. Undo use goes back; opening another mesh drops these rings and knots.</source>
+        <translation>Geändert: %1. Verwendung rückgängig kehrt zurück; ein anderes Netz verwirft diese Ringe und Knoten.</translation>
+    </message>
+    <message>
+        <source>Cannot undo the use</source>
+        <translation>Verwendung lässt sich nicht rückgängig machen</translation>
+    </message>
+    <message>
+        <source>Back to %1 with %2 rings, as before the level of detail was used</source>
+        <translation>Zurück zu %1 mit %2 Ringen, wie vor der Verwendung der Detailstufe</translation>
     </message>
 </context>
 <context>

@@ -2549,6 +2549,14 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
         <source>Tissue: %1</source>
         <translation>Tisu: %1</translation>
     </message>
+    <message>
+        <source>U&amp;ndo use</source>
+        <translation>Buat asal pe&amp;nggunaan</translation>
+    </message>
+    <message>
+        <source>Back to the mesh, rings and tissue from before the first Use.</source>
+        <translation>Kembali kepada jejaring, gelang dan tisu sebelum Guna yang pertama.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MainWindow</name>
@@ -3065,6 +3073,38 @@ pemapar %5</translation>
     <message>
         <source>Stiffening knots applied to the tissue (undo them in Parameters, then Apply)</source>
         <translation>Simpulan pengerasan digunakan pada tisu (buat asal dalam Parameter, kemudian Guna)</translation>
+    </message>
+    <message>
+        <source>Another mesh: the level of detail&apos;s %1 rings stay with its scene; %2 rings again</source>
+        <translation>Jejaring lain: %1 gelang tahap perincian kekal dengan adegannya; %2 gelang semula</translation>
+    </message>
+    <message>
+        <source>mesh %1 (%2 vertices) instead of %3 (%4)</source>
+        <translation>jejaring %1 (%2 bucu) menggantikan %3 (%4)</translation>
+    </message>
+    <message>
+        <source>%1 rings instead of %2</source>
+        <translation>%1 gelang menggantikan %2</translation>
+    </message>
+    <message>
+        <source>%1 stiffening knots instead of %2</source>
+        <translation>%1 simpulan pengerasan menggantikan %2</translation>
+    </message>
+    <message>
+        <source>Nothing changed: the scene already ran this.</source>
+        <translation>Tiada perubahan: adegan sudah menjalankan ini.</translation>
+    </message>
+    <message>
+        <source>Changed: %1. Undo use goes back; opening another mesh drops these rings and knots.</source>
+        <translation>Diubah: %1. Buat asal penggunaan kembali; membuka jejaring lain menggugurkan gelang dan simpulan ini.</translation>
+    </message>
+    <message>
+        <source>Cannot undo the use</source>
+        <translation>Penggunaan tidak dapat dibuat asal</translation>
+    </message>
+    <message>
+        <source>Back to %1 with %2 rings, as before the level of detail was used</source>
+        <translation>Kembali kepada %1 dengan %2 gelang, seperti sebelum tahap perincian digunakan</translation>
     </message>
 </context>
 <context>

@@ -187,6 +187,13 @@ LodPanel::LodPanel(QWidget* parent) : QWidget(parent), mNeeds(defaultNeeds()), m
     mUseChosenButton->setObjectName(QStringLiteral("lodUseChosenButton"));
     mUseSelectedButton = new QPushButton(this);
     mUseSelectedButton->setObjectName(QStringLiteral("lodUseSelectedButton"));
+    mUndoUseButton = new QPushButton(this);
+    mUndoUseButton->setObjectName(QStringLiteral("lodUndoUseButton"));
+    mUndoUseButton->setEnabled(false);
+    mUsedLabel = new QLabel(this);
+    mUsedLabel->setObjectName(QStringLiteral("lodUsedLabel"));
+    mUsedLabel->setWordWrap(true);
+    mUsedLabel->setVisible(false);
 
     layOutWidgets();
 
@@ -197,6 +204,7 @@ LodPanel::LodPanel(QWidget* parent) : QWidget(parent), mNeeds(defaultNeeds()), m
     connect(mStoreButton, &QPushButton::clicked, this, &LodPanel::storeNeeds);
     connect(mUseChosenButton, &QPushButton::clicked, this, &LodPanel::useChosen);
     connect(mUseSelectedButton, &QPushButton::clicked, this, &LodPanel::useSelected);
+    connect(mUndoUseButton, &QPushButton::clicked, this, &LodPanel::undoUseRequested);
     connect(mTable, &QTableWidget::itemSelectionChanged, this, [this] {
         updateVerdicts();
         updateSummary();
@@ -230,6 +238,7 @@ void LodPanel::layOutWidgets() {
     auto* useButtons = new QHBoxLayout;
     useButtons->addWidget(mUseChosenButton);
     useButtons->addWidget(mUseSelectedButton);
+    useButtons->addWidget(mUndoUseButton);
     useButtons->addStretch(1);
     mCandidatesBox = new QGroupBox(this);
     auto* candidatesLayout = new QVBoxLayout(mCandidatesBox);
@@ -239,6 +248,7 @@ void LodPanel::layOutWidgets() {
     candidatesLayout->addWidget(mSummaryLabel);
     candidatesLayout->addWidget(mReasonLabel);
     candidatesLayout->addLayout(useButtons);
+    candidatesLayout->addWidget(mUsedLabel);
 
     // The content scrolls when the dock is shorter than the fields and a few rows of the table.
     auto* content = new QWidget;
@@ -290,6 +300,8 @@ void LodPanel::retranslateUi() {
     mUseChosenButton->setText(tr("&Use chosen"));
     mUseChosenButton->setToolTip(tr("Load the planner's choice: its level's mesh and ring count."));
     mUseSelectedButton->setText(tr("Use selected (&override)"));
+    mUndoUseButton->setText(tr("U&ndo use"));
+    mUndoUseButton->setToolTip(tr("Back to the mesh, rings and tissue from before the first Use."));
     mUseSelectedButton->setToolTip(tr("Load the row selected in the table instead of the planner's choice."));
     mTable->setAccessibleName(tr("Candidates"));
     mTable->setHorizontalHeaderLabels(
@@ -906,6 +918,12 @@ void LodPanel::emitUse(std::size_t candidateIndex, bool overridden) {
     }
     setStatus(overridden ? tr("Using %1 (override).").arg(candidateText(c)) : tr("Using %1.").arg(candidateText(c)));
     emit useRequested(path, c.rings, overridden);
+}
+
+void LodPanel::setUseUndoable(bool undoable, const QString& changed) {
+    mUndoUseButton->setEnabled(undoable);
+    mUsedLabel->setText(changed);
+    mUsedLabel->setVisible(!changed.isEmpty());
 }
 
 void LodPanel::storeNeeds() {

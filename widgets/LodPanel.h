@@ -128,6 +128,8 @@ signals:
     void useRequested(const QString& levelMeshPath, int rings, bool overridden);
     /// "Store targets in preset": the window writes the needs into the current preset.
     void storeNeedsRequested(const palpate::LodNeeds& needs);
+    /// "Undo use": the window goes back to the mesh and the tissue from before the first Use.
+    void undoUseRequested();
 
 public slots:
     /// "Use chosen": emits useRequested for the planner's choice.
@@ -136,6 +138,10 @@ public slots:
     void useSelected();
     /// "Store targets in preset": emits storeNeedsRequested while the fields are valid.
     void storeNeeds();
+
+public:
+    /// The window says whether a Use can be undone, and what it changed (shown under the buttons).
+    void setUseUndoable(bool undoable, const QString& changed = {});
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -187,6 +193,8 @@ private:
     QLabel* mReasonLabel = nullptr;
     QPushButton* mUseChosenButton = nullptr;
     QPushButton* mUseSelectedButton = nullptr;
+    QPushButton* mUndoUseButton = nullptr;
+    QLabel* mUsedLabel = nullptr;  ///< what the last Use changed
 
     // The scene.
     QString mMeshPath;

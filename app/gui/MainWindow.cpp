@@ -463,8 +463,28 @@ QString MainWindow::meshDialogFolder() const { return MeshOpener::meshDialogFold
 
 QStringList MainWindow::recentFiles() const { return MeshOpener::recentFiles(); }
 
-void MainWindow::meshLoaded() {
+void MainWindow::meshLoaded(const QString& path) {
     mTouchVertex = kNoVertex;  // a fresh device on another mesh: nothing is pressed
+    // Another mesh than the level of detail's scene: its rings and knots were chosen for that
+    // scene, and stay with it.
+    if (mBeforeLodUse && !inLodScene(QFileInfo(path).absoluteFilePath()) && !inLodScene(path)) {
+        const SlopeRingParams& before = mBeforeLodUse->preset.model.slopeRing;
+        TissuePreset preset = mParameterPanel->preset();
+        const int ringsUsed = preset.model.slopeRing.ringCount;
+        preset.model.slopeRing.ringCount = before.ringCount;
+        preset.model.slopeRing.stiffeningKnots = before.stiffeningKnots;
+        preset.model.slopeRing.stiffeningForceN = before.stiffeningForceN;
+        preset.model.slopeRing.stiffeningCompliance = before.stiffeningCompliance;
+        mBeforeLodUse.reset();
+        mLodPanel->setUseUndoable(false);
+        mParameterPanel->setPreset(preset);
+        if (applyPreset(preset).isEmpty() && ringsUsed != before.ringCount)
+            statusBar()->showMessage(tr("Another mesh: the level of detail's %1 rings stay with its scene; %2 rings "
+                                        "again")
+                                         .arg(ringsUsed)
+                                         .arg(before.ringCount),
+                                     8000);
+    }
     if (!mDevicePanel->isConnected()) {
         const QString uri = QString::fromStdString(mSession->deviceUri());
         std::string ignored;
@@ -893,8 +913,13 @@ void MainWindow::createLodDock() {
             statusBar()->showMessage(tr("An exercise is running: the model cannot change now."), 6000);
             return;
         }
-        // The level's mesh (or the source again) and the ring count, as one new scene.
+        // The level's mesh (or the source again) and the ring count, as one new scene; what was
+        // there before the first Use is kept for Undo use.
         const QString meshPath = levelPath.isEmpty() ? mLodPanel->meshPath() : levelPath;
+        const QString meshBefore = QString::fromStdString(mSession->drawnPath());
+        const std::size_t verticesBefore = mSession->drawnMesh() ? mSession->drawnMesh()->vertexCount() : 0;
+        const TissuePreset presetBefore = mSession->preset();
+        if (!mBeforeLodUse) mBeforeLodUse = BeforeLodUse{meshBefore, presetBefore, mLodPanel->meshPath()};
         if (QString::fromStdString(mSession->drawnPath()) != meshPath)
             if (const QString error = loadMesh(meshPath); !error.isEmpty()) {
                 QMessageBox::warning(this, tr("Cannot use this level"), error);
@@ -930,7 +955,27 @@ void MainWindow::createLodDock() {
                                             : tr("Using the plan's choice: %1, %2 rings").arg(QFileInfo(meshPath).fileName()).arg(rings) +
                                                   tissue,
                                  8000);
+        // What changed, said where it was asked for: mesh, rings, stiffening.
+        QStringList changed;
+        const std::size_t verticesNow = mSession->drawnMesh() ? mSession->drawnMesh()->vertexCount() : 0;
+        if (meshPath != meshBefore)
+            changed << tr("mesh %1 (%2 vertices) instead of %3 (%4)")
+                           .arg(QFileInfo(meshPath).fileName())
+                           .arg(verticesNow)
+                           .arg(QFileInfo(meshBefore).fileName())
+                           .arg(verticesBefore);
+        if (rings != presetBefore.model.slopeRing.ringCount)
+            changed << tr("%1 rings instead of %2").arg(rings).arg(presetBefore.model.slopeRing.ringCount);
+        if (preset.model.slopeRing.stiffeningKnots != presetBefore.model.slopeRing.stiffeningKnots)
+            changed << tr("%1 stiffening knots instead of %2")
+                           .arg(preset.model.slopeRing.stiffeningKnots)
+                           .arg(presetBefore.model.slopeRing.stiffeningKnots);
+        mLodPanel->setUseUndoable(true, changed.isEmpty() ? tr("Nothing changed: the scene already ran this.")
+                                                          : tr("Changed: %1. Undo use goes back; opening another "
+                                                               "mesh drops these rings and knots.")
+                                                                .arg(changed.join(QStringLiteral("; "))));
     });
+    connect(mLodPanel, &LodPanel::undoUseRequested, this, &MainWindow::undoLodUse);
     connect(mLodPanel, &LodPanel::storeNeedsRequested, this, [this](const LodNeeds& needs) {
         TissuePreset preset = mParameterPanel->preset();
         preset.needs = needs;
@@ -938,6 +983,36 @@ void MainWindow::createLodDock() {
         statusBar()->showMessage(tr("Targets stored in the preset: save it (File > Save Preset) to keep them"), 8000);
     });
     updateLodScene();
+}
+
+bool MainWindow::inLodScene(const QString& path) const {
+    if (!mBeforeLodUse || mBeforeLodUse->lodSource.isEmpty()) return false;
+    return path == mBeforeLodUse->lodSource || path.startsWith(mBeforeLodUse->lodSource + QStringLiteral(".levels/"));
+}
+
+void MainWindow::undoLodUse() {
+    if (!mBeforeLodUse) return;
+    if (mExercises->running()) {
+        statusBar()->showMessage(tr("An exercise is running: the model cannot change now."), 6000);
+        return;
+    }
+    const BeforeLodUse before = *mBeforeLodUse;
+    if (QString::fromStdString(mSession->drawnPath()) != before.meshPath && !before.meshPath.isEmpty())
+        if (const QString error = loadMesh(before.meshPath); !error.isEmpty()) {
+            QMessageBox::warning(this, tr("Cannot undo the use"), error);
+            return;
+        }
+    mBeforeLodUse.reset();
+    mParameterPanel->setPreset(before.preset);
+    if (const QString error = applyPreset(before.preset); !error.isEmpty()) {
+        QMessageBox::warning(this, tr("Cannot undo the use"), error);
+        return;
+    }
+    mLodPanel->setUseUndoable(false);
+    statusBar()->showMessage(tr("Back to %1 with %2 rings, as before the level of detail was used")
+                                 .arg(QFileInfo(before.meshPath).fileName())
+                                 .arg(before.preset.model.slopeRing.ringCount),
+                             8000);
 }
 
 void MainWindow::updateLodScene() {

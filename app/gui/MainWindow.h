@@ -201,7 +201,7 @@ private:
     /// Tells the Charts panel the applied preset and the drawn mesh's size (its highlight).
     void updateChartsConfiguration();
     /// The session has a new mesh (MeshOpener::loaded): nothing is pressed, the device panel, the mesh drawn.
-    void meshLoaded();
+    void meshLoaded(const QString& path);
     void createStatusBar();
     void present(HapticSession::Observation observation);
     void showDrawnMesh();
@@ -287,6 +287,17 @@ private:
     LodPanel* mLodPanel = nullptr;
     QDockWidget* mLodDock = nullptr;
     std::shared_ptr<const TissueMesh> mLodSceneMesh;  // the Level of Detail panel's source mesh
+    /// Before the first "Use" of a level of detail: the mesh, the tissue and the panel's source,
+    /// for Undo use, and to drop the level's rings and knots when another mesh is opened.
+    struct BeforeLodUse {
+        QString meshPath;
+        TissuePreset preset;
+        QString lodSource;
+    };
+    std::optional<BeforeLodUse> mBeforeLodUse;
+    /// Whether `path` is the Level of Detail source a Use was made in, or one of its levels.
+    bool inLodScene(const QString& path) const;
+    void undoLodUse();
     QMetaObject::Connection mFocusConnection;         // Edit > Undo follows the focused panel
     HistoryPanel* mHistoryPanel = nullptr;
     QDockWidget* mExerciseDock = nullptr;

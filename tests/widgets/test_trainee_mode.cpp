@@ -862,6 +862,10 @@ TEST(InstructorMode, LevelOfDetailUseLoadsTheChosenLevelAndRingCount) {
     ASSERT_TRUE(chosen) << lod->currentPlan().reason;
     const LodCandidate c = lod->candidates()[*chosen];
     const std::size_t measured = lod->candidates().size();
+    const int ringsBefore = window->session().preset().model.slopeRing.ringCount;
+    auto* undoUse = lod->findChild<QPushButton*>(QStringLiteral("lodUndoUseButton"));
+    ASSERT_NE(undoUse, nullptr);
+    EXPECT_FALSE(undoUse->isEnabled());
     lod->useChosen();
     window->advanceTicks(10);
     // The loop now runs the chosen level with the chosen rings; the panel keeps the source.
@@ -872,6 +876,31 @@ TEST(InstructorMode, LevelOfDetailUseLoadsTheChosenLevelAndRingCount) {
     EXPECT_EQ(lod->meshPath(), mesh);
     EXPECT_EQ(lod->candidates().size(), measured);  // the level is a choice within the scene: the table stays
     EXPECT_TRUE(lod->currentPlan().chosen);
+    // It says what it changed, and Undo use goes back to the mesh and rings from before.
+    auto* used = lod->findChild<QLabel*>(QStringLiteral("lodUsedLabel"));
+    ASSERT_NE(used, nullptr);
+    std::printf("[ figures  ] used: %s\n", used->text().toStdString().c_str());
+    EXPECT_TRUE(used->isVisibleTo(lod));
+    if (c.rings != ringsBefore)
+        EXPECT_TRUE(used->text().contains(QStringLiteral("%1 rings instead of %2").arg(c.rings).arg(ringsBefore)))
+            << used->text().toStdString();
+    if (expectedMesh != mesh)
+        EXPECT_TRUE(used->text().contains(QStringLiteral("sphere.off"))) << used->text().toStdString();
+    ASSERT_TRUE(undoUse->isEnabled());
+    undoUse->click();
+    window->advanceTicks(10);
+    EXPECT_EQ(QString::fromStdString(window->session().drawnPath()), mesh);
+    EXPECT_EQ(window->session().preset().model.slopeRing.ringCount, ringsBefore);
+    EXPECT_FALSE(undoUse->isEnabled());
+    // Used again, then another mesh opened: the level's rings stay with the level's scene.
+    lod->useSelected();  // nothing selected: nothing happens
+    lod->useChosen();
+    window->advanceTicks(10);
+    EXPECT_EQ(window->session().preset().model.slopeRing.ringCount, c.rings);
+    ASSERT_EQ(window->loadMesh(resource("meshes/stomach_3970.off")), QString());
+    window->advanceTicks(10);
+    EXPECT_EQ(window->session().preset().model.slopeRing.ringCount, ringsBefore);
+    EXPECT_FALSE(undoUse->isEnabled());
 }
 
 TEST(ForceGauge, ZonesFollowTheWindowAndTheExcessiveForce) {
