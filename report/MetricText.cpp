@@ -35,4 +35,6 @@ QString workDoneText(double workDone, const QLocale& locale) {
         .arg(locale.toString(100.0 * workDone, 'f', 0));
 }
 
+QString scoreText(double score, const QLocale& locale) { return locale.toString(score, 'f', 1); }
+
 }  // namespace palpate

@@ -22,6 +22,10 @@ QString metricDescriptionText(Metric metric);
 /// "85 %", "3,20 mm", "2 findings": the row's display in the locale.
 QString localMetricValueText(Metric metric, double value, const QLocale& locale = QLocale());
 
+/// A score as every view shows it (the card, the PDF, History, the live score): one decimal, in
+/// the locale ("85.3", "85,3"), so that the same session reads the same everywhere.
+QString scoreText(double score, const QLocale& locale = QLocale());
+
 /// "Work done 34 %: the lines that count mistakes earn that share of their points." when the
 /// session did less than all of its work (docs/scoring.md, "The rubric"); "" otherwise.
 QString workDoneText(double workDone, const QLocale& locale = QLocale());

@@ -458,7 +458,7 @@ void drawReport(ReportLayout& layout, const ScoreReportContent& content) {
         {Tr::tr("Result:"), resultText(report)},
     });
     layout.skip(line * 0.6);
-    layout.paragraph(layout.score(), Tr::tr("Score: %1 / 100").arg(number(report.score, 1)));
+    layout.paragraph(layout.score(), Tr::tr("Score: %1 / 100").arg(scoreText(report.score)));
     layout.skip(line * 0.8);
 
     if (!report.targets.empty()) {

@@ -2122,13 +2122,6 @@ Tick %7 µs, %8-mal schneller als previous</translation>
         <translation>%1 bis %2</translation>
     </message>
     <message numerus="yes">
-        <source>%n session(s) (%1); best %2, mean %3</source>
-        <translation>
-            <numerusform>%n Sitzung (%1); bestes %2, Mittel %3</numerusform>
-            <numerusform>%n Sitzungen (%1); bestes %2, Mittel %3</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
         <source>%n session(s) (%1); none scored</source>
         <translation>
             <numerusform>%n Sitzung (%1); keine bewertet</numerusform>
@@ -2173,6 +2166,18 @@ Tick %7 µs, %8-mal schneller als previous</translation>
     <message>
         <source>The curve cannot be drawn: %1</source>
         <translation>Die Kurve kann nicht gezeichnet werden: %1</translation>
+    </message>
+    <message>
+        <source>%1: best %2, mean %3</source>
+        <translation>%1: bestes %2, Mittel %3</translation>
+    </message>
+    <message>
+        <source>1 session (%1)</source>
+        <translation>1 Sitzung (%1)</translation>
+    </message>
+    <message>
+        <source>%1 sessions (%2)</source>
+        <translation>%1 Sitzungen (%2)</translation>
     </message>
 </context>
 <context>
@@ -3699,6 +3704,30 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
     <message>
         <source>Force: searching %1 N, palpating %2 N (medians; %3 times)</source>
         <translation>Kraft: Suchen %1 N, Tasten %2 N (Mediane; %3-fach)</translation>
+    </message>
+    <message>
+        <source>Pressed too lightly to reach the deepest lump: it lies %1 mm under the surface, and over it the surface sank %2 mm at most.</source>
+        <translation>Zu leicht gedrückt, um den tiefsten Knoten zu erreichen: er liegt %1 mm unter der Oberfläche, und darüber sank die Oberfläche höchstens %2 mm ein.</translation>
+    </message>
+    <message>
+        <source>Press to about %1 N or more to feel it.</source>
+        <translation>Drücken Sie mit etwa %1 N oder mehr, um ihn zu fühlen.</translation>
+    </message>
+    <message>
+        <source>Examined %1 % of the surface at %2 N or more: cover all of it, in overlapping rows.</source>
+        <translation>%1 % der Oberfläche mit %2 N oder mehr untersucht: untersuchen Sie alles, in überlappenden Reihen.</translation>
+    </message>
+    <message>
+        <source>Pressed no harder to palpate than to search (median %1 N against %2 N): press in on a spot that feels different.</source>
+        <translation>Beim Tasten nicht fester gedrückt als beim Suchen (Median %1 N gegen %2 N): drücken Sie dort tiefer, wo es sich anders anfühlt.</translation>
+    </message>
+    <message>
+        <source>1 finding was on no lump: mark only where the tissue resists more than around it.</source>
+        <translation>1 Befund lag auf keinem Knoten: markieren Sie nur, wo das Gewebe mehr Widerstand leistet als ringsum.</translation>
+    </message>
+    <message>
+        <source>%1 findings were on no lump: mark only where the tissue resists more than around it.</source>
+        <translation>%1 Befunde lagen auf keinem Knoten: markieren Sie nur, wo das Gewebe mehr Widerstand leistet als ringsum.</translation>
     </message>
 </context>
 <context>
@@ -5276,6 +5305,10 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>not scored</source>
         <translation>nicht bewertet</translation>
     </message>
+    <message>
+        <source>Stopped: %1 points so far, not a score</source>
+        <translation>Abgebrochen: bisher %1 Punkte, keine Bewertung</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ScoreReportPdf</name>
@@ -5874,8 +5907,8 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
         <translation>&lt;h2&gt;Willkommen bei Palpate&lt;/h2&gt;</translation>
     </message>
     <message>
-        <source>Palpate lets you feel a soft tissue model through a haptic device, or with the mouse. Here are three things to try first; you find this page again under Help &gt; Welcome, and the user guide under Help &gt; User Guide (F1).</source>
-        <translation>Mit Palpate ertasten Sie ein Weichgewebemodell über ein haptisches Gerät oder mit der Maus. Hier sind drei Dinge zum Ausprobieren; diese Seite finden Sie wieder unter Hilfe &gt; Willkommen, das Benutzerhandbuch unter Hilfe &gt; Benutzerhandbuch (F1).</translation>
+        <source>Palpate lets you feel a soft tissue model through a haptic device, or with the mouse. Here are four things to try first; you find this page again under Help &gt; Welcome, and the user guide under Help &gt; User Guide (F1).</source>
+        <translation>Mit Palpate ertasten Sie ein Weichgewebemodell über ein haptisches Gerät oder mit der Maus. Hier sind vier Dinge zum Ausprobieren; diese Seite finden Sie wieder unter Hilfe &gt; Willkommen, das Benutzerhandbuch unter Hilfe &gt; Benutzerhandbuch (F1).</translation>
     </message>
     <message>
         <source>Open the sample scene</source>

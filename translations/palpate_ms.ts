@@ -2121,12 +2121,6 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
         <translation>%1 hingga %2</translation>
     </message>
     <message numerus="yes">
-        <source>%n session(s) (%1); best %2, mean %3</source>
-        <translation>
-            <numerusform>%n sesi (%1); terbaik %2, purata %3</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
         <source>%n session(s) (%1); none scored</source>
         <translation>
             <numerusform>%n sesi (%1); tiada yang diskor</numerusform>
@@ -2169,6 +2163,18 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
     <message>
         <source>The curve cannot be drawn: %1</source>
         <translation>Lengkung tidak dapat dilukis: %1</translation>
+    </message>
+    <message>
+        <source>%1: best %2, mean %3</source>
+        <translation>%1: terbaik %2, purata %3</translation>
+    </message>
+    <message>
+        <source>1 session (%1)</source>
+        <translation>1 sesi (%1)</translation>
+    </message>
+    <message>
+        <source>%1 sessions (%2)</source>
+        <translation>%1 sesi (%2)</translation>
     </message>
 </context>
 <context>
@@ -3695,6 +3701,30 @@ pemapar %5</translation>
     <message>
         <source>Force: searching %1 N, palpating %2 N (medians; %3 times)</source>
         <translation>Daya: mencari %1 N, meraba %2 N (median; %3 kali)</translation>
+    </message>
+    <message>
+        <source>Pressed too lightly to reach the deepest lump: it lies %1 mm under the surface, and over it the surface sank %2 mm at most.</source>
+        <translation>Ditekan terlalu ringan untuk mencapai ketulan paling dalam: ia terletak %1 mm di bawah permukaan, dan di atasnya permukaan tenggelam paling banyak %2 mm.</translation>
+    </message>
+    <message>
+        <source>Press to about %1 N or more to feel it.</source>
+        <translation>Tekan kira-kira %1 N atau lebih untuk merasainya.</translation>
+    </message>
+    <message>
+        <source>Examined %1 % of the surface at %2 N or more: cover all of it, in overlapping rows.</source>
+        <translation>Memeriksa %1 % permukaan pada %2 N atau lebih: liputi semuanya, dalam baris bertindih.</translation>
+    </message>
+    <message>
+        <source>Pressed no harder to palpate than to search (median %1 N against %2 N): press in on a spot that feels different.</source>
+        <translation>Tidak menekan lebih kuat untuk palpasi berbanding mencari (median %1 N berbanding %2 N): tekan ke dalam pada tempat yang terasa berbeza.</translation>
+    </message>
+    <message>
+        <source>1 finding was on no lump: mark only where the tissue resists more than around it.</source>
+        <translation>1 dapatan bukan pada ketulan: tandakan hanya di mana tisu menentang lebih daripada sekelilingnya.</translation>
+    </message>
+    <message>
+        <source>%1 findings were on no lump: mark only where the tissue resists more than around it.</source>
+        <translation>%1 dapatan bukan pada ketulan: tandakan hanya di mana tisu menentang lebih daripada sekelilingnya.</translation>
     </message>
 </context>
 <context>
@@ -5271,6 +5301,10 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>not scored</source>
         <translation>tidak diberi markah</translation>
     </message>
+    <message>
+        <source>Stopped: %1 points so far, not a score</source>
+        <translation>Dihentikan: %1 mata setakat ini, bukan skor</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ScoreReportPdf</name>
@@ -5869,8 +5903,8 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
         <translation>&lt;h2&gt;Selamat Datang ke Palpate&lt;/h2&gt;</translation>
     </message>
     <message>
-        <source>Palpate lets you feel a soft tissue model through a haptic device, or with the mouse. Here are three things to try first; you find this page again under Help &gt; Welcome, and the user guide under Help &gt; User Guide (F1).</source>
-        <translation>Palpate membolehkan anda merasai model tisu lembut melalui peranti haptik, atau dengan tetikus. Berikut tiga perkara untuk dicuba dahulu; halaman ini boleh ditemui semula di bawah Bantuan &gt; Selamat Datang, dan panduan pengguna di bawah Bantuan &gt; Panduan Pengguna (F1).</translation>
+        <source>Palpate lets you feel a soft tissue model through a haptic device, or with the mouse. Here are four things to try first; you find this page again under Help &gt; Welcome, and the user guide under Help &gt; User Guide (F1).</source>
+        <translation>Palpate membolehkan anda merasai model tisu lembut melalui peranti haptik, atau dengan tetikus. Berikut empat perkara untuk dicuba dahulu; halaman ini boleh ditemui semula di bawah Bantuan &gt; Selamat Datang, dan panduan pengguna di bawah Bantuan &gt; Panduan Pengguna (F1).</translation>
     </message>
     <message>
         <source>Open the sample scene</source>

@@ -1,5 +1,6 @@
 #include "widgets/HistoryPanel.h"
 
+#include "report/MetricText.h"
 #include "results/LearningCurve.h"
 #include "report/LearningCurveImage.h"
 #include "engine/exercise/ExerciseFile.h"
@@ -209,7 +210,7 @@ void HistoryPanel::rebuild() {
         when->setData(Qt::UserRole, r.id);
         mTable->setItem(row, 0, when);
         mTable->setItem(row, 1, new QTableWidgetItem(r.exerciseName));
-        auto* score = new QTableWidgetItem(QString::number(r.score, 'f', 0));
+        auto* score = new QTableWidgetItem(scoreText(r.score, locale()));
         score->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         if (!isScored(r.outcome)) {
             score->setText(tr("stopped"));
@@ -218,7 +219,8 @@ void HistoryPanel::rebuild() {
             italic.setItalic(true);
             score->setFont(italic);
             score->setToolTip(tr("Stopped before the end: %1 points so far, not a score (not in the best or "
-                                 "the mean)").arg(r.score, 0, 'f', 0));
+                                 "the mean)")
+                                  .arg(scoreText(r.score, locale())));
         } else if (r.outcome == ResultOutcome::TimeUp) {
             score->setToolTip(tr("The time limit passed before the task was done"));
         }
@@ -231,10 +233,24 @@ void HistoryPanel::rebuild() {
         mSummary->setText(mTrainees->count() == 0 ? tr("No trainees yet: add one in the Exercise dock.")
                                                   : tr("No results yet."));
     } else {
-        double best = 0.0, sum = 0.0;
+        // Best and mean per exercise: scores of different exercises do not mix.
+        struct Tally {
+            QString exercise;
+            double best = 0.0, sum = 0.0;
+            int scored = 0;
+        };
+        std::vector<Tally> tallies;
         int scored = 0;
-        for (const auto& r : mResults)
-            if (isScored(r.outcome)) best = std::max(best, r.score), sum += r.score, ++scored;
+        for (const auto& r : mResults) {
+            if (!isScored(r.outcome)) continue;
+            auto it = std::find_if(tallies.begin(), tallies.end(),
+                                   [&](const Tally& t) { return t.exercise == r.exerciseName; });
+            if (it == tallies.end()) it = tallies.insert(tallies.end(), Tally{r.exerciseName});
+            it->best = std::max(it->best, r.score);
+            it->sum += r.score;
+            ++it->scored;
+            ++scored;
+        }
         const int stopped = sessions - scored;
         // When: the first and the last session, on a 24-hour clock (the day once when it is one day).
         const QDateTime first = mResults.front().startedUtc.toLocalTime();
@@ -245,10 +261,15 @@ void HistoryPanel::rebuild() {
                                  ? tr("%1, %2 to %3").arg(first.toString(day), first.toString(time), last.toString(time))
                                  : tr("%1 to %2").arg(first.toString(day + QLatin1Char(' ') + time),
                                                       last.toString(day + QLatin1Char(' ') + time));
-        QString text = scored > 0 ? tr("%n session(s) (%1); best %2, mean %3", "", sessions)
-                                        .arg(when)
-                                        .arg(best, 0, 'f', 0)
-                                        .arg(sum / double(scored), 0, 'f', 0)
+        QStringList perExercise;
+        for (const Tally& t : tallies)
+            perExercise << tr("%1: best %2, mean %3")
+                               .arg(t.exercise, scoreText(t.best, locale()),
+                                    scoreText(t.sum / double(t.scored), locale()));
+        // No plural translation is loaded for English: the two forms are spelled out.
+        const QString count = sessions == 1 ? tr("1 session (%1)").arg(when)
+                                            : tr("%1 sessions (%2)").arg(sessions).arg(when);
+        QString text = scored > 0 ? count + QStringLiteral("; ") + perExercise.join(QStringLiteral("; "))
                                   : tr("%n session(s) (%1); none scored", "", sessions).arg(when);
         if (stopped > 0) text += QLatin1Char(' ') + tr("(%n stopped, not counted)", "", stopped);
         mSummary->setText(text);

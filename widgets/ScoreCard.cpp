@@ -110,7 +110,12 @@ void ScoreCard::setReport(const ScoreReport& report, const QString& traineeName)
                                               : tr("stopped");
     mTitle->setText(traineeName.isEmpty() ? tr("%1 (%2)").arg(exercise, state)
                                           : tr("%1: %2 (%3)").arg(traineeName, exercise, state));
-    mScore->setText(tr("%1 / 100").arg(report.score, 0, 'f', 0));
+    // A stopped session has no score (History and the results leave it out too): what it earned
+    // so far is said as that.
+    const bool stopped = !report.guidance.completed && !report.guidance.timeUp;
+    mScore->setText(stopped
+                        ? tr("Stopped: %1 points so far, not a score").arg(palpate::scoreText(report.score, locale()))
+                        : tr("%1 / 100").arg(palpate::scoreText(report.score, locale())));
     mTable->setRowCount(int(report.metrics.size()));
     for (int row = 0; row < int(report.metrics.size()); ++row) {
         const MetricResult& line = report.metrics[std::size_t(row)];

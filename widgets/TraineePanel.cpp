@@ -1,5 +1,6 @@
 #include "widgets/TraineePanel.h"
 
+#include "report/MetricText.h"
 #include "engine/exercise/ExerciseKind.h"
 #include "widgets/ExerciseText.h"
 
@@ -242,7 +243,7 @@ void TraineePanel::showGuidance(const Exercise& exercise, const ScoreGuidance& g
     // Where the score so far would give the answer away (which marks hit), it waits for Finish.
     const QString timeLeft = QLocale().toString(std::max(0.0, guidance.timeLeftS), 'f', 0);
     mTime->setText(showsLiveScore(exercise)
-                       ? tr("Time left %1 s · score so far %2").arg(timeLeft, QLocale().toString(scoreSoFar, 'f', 0))
+                       ? tr("Time left %1 s · score so far %2").arg(timeLeft, scoreText(scoreSoFar))
                        : tr("Time left %1 s · score at Finish").arg(timeLeft));
 }
 

@@ -18,7 +18,7 @@ WelcomePage::WelcomePage(QWidget* parent) : QDialog(parent) {
     auto* title = new QLabel(tr("<h2>Welcome to Palpate</h2>"), this);
     title->setObjectName(QStringLiteral("welcomeTitle"));
     auto* intro = new QLabel(tr("Palpate lets you feel a soft tissue model through a haptic device, or with the "
-                                "mouse. Here are three things to try first; you find this page again under "
+                                "mouse. Here are four things to try first; you find this page again under "
                                 "Help > Welcome, and the user guide under Help > User Guide (F1)."),
                              this);
     intro->setObjectName(QStringLiteral("welcomeIntro"));

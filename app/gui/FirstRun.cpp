@@ -22,6 +22,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QPointer>
+#include <QLocale>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -178,6 +179,9 @@ bool loadLanguage(QCoreApplication& app, const QString& language) {
             *t = nullptr;
         }
     }
+    // Numbers and dates follow the language shown ("0,5 N" in German), English the system's.
+    QLocale::setDefault(language == QLatin1String("de") || language == QLatin1String("ms") ? QLocale(language)
+                                                                                           : QLocale::system());
     if (language != QLatin1String("de") && language != QLatin1String("ms")) return false;
     auto translator = std::make_unique<QTranslator>();
     if (!translator->load(QStringLiteral(":/i18n/palpate_%1.qm").arg(language))) return false;

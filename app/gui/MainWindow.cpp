@@ -688,9 +688,13 @@ void MainWindow::showStatus() {
     mOverrunLabel->setText(tr("overruns %1 (missed %2)").arg(c.overruns).arg(c.missedDeadlines));
     mFifoLabel->setText(tr("SCHED_FIFO %1").arg(c.schedFifo ? tr("yes") : tr("no")));
     mFpsLabel->setText(tr("GUI %1 fps").arg(mFrameRateFps, 0, 'f', 0));
-    mDeviceLabel->setText(tr("%1: %2")
-                              .arg(QString::fromStdString(mSession->deviceUri()),
-                                   observed ? QString::fromLatin1(deviceStateName(o.deviceState)) : tr("not started")));
+    // "mouse: Ready", not "mouse:: Ready": a URI's own trailing colon goes; the state in the
+    // language the Device dock shows it in.
+    QString uri = QString::fromStdString(mSession->deviceUri());
+    if (uri.endsWith(QLatin1Char(':'))) uri.chop(1);
+    mDeviceLabel->setText(tr("%1: %2").arg(uri, observed ? QCoreApplication::translate("palpate::DevicePanel",
+                                                                                       deviceStateName(o.deviceState))
+                                                         : tr("not started")));
     mContactLabel->setText(tr("contact: %1").arg(o.contact ? tr("yes") : tr("no")));
     // N or gf (Preferences); clamped to the device's maximum, the force felt is not the model's (docs/devices.md).
     mForceLabel->setText((o.safetyFlags & kSafetyClamped ? tr("force %1 (clipped at device max)") : tr("force %1"))

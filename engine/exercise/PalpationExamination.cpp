@@ -76,10 +76,11 @@ PalpationSummary PalpationExamination::summary(bool detail) const {
 void PalpationExamination::addCommonFeedback(PalpationSummary& p, bool somethingToFind) const {
     const ForceByPhase& phases = p.forceByPhase;
     if (somethingToFind && phases.palpationOverSearch && *phases.palpationOverSearch < 1.0)
-        p.feedback.push_back({"light_palpation", "Pressed no harder to palpate than to search (median " +
-                                                     oneDecimal(phases.palpation->p50N) + " N against " +
-                                                     oneDecimal(phases.search->p50N) +
-                                                     " N): press in on a spot that feels different."});
+        p.feedback.push_back({"light_palpation",
+                              "Pressed no harder to palpate than to search (median " +
+                                  oneDecimal(phases.palpation->p50N) + " N against " + oneDecimal(phases.search->p50N) +
+                                  " N): press in on a spot that feels different.",
+                              {phases.palpation->p50N, phases.search->p50N}});
 }
 
 }  // namespace palpate

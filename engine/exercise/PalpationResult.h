@@ -55,8 +55,11 @@ struct ForceByPhase {
 /// Feedback on how the examination went, each with a stable key (for translations and tests) and
 /// its sentence.
 struct PalpationFeedback {
-    std::string key;   ///< "pressed_too_lightly", "false_alarms", "low_coverage"
+    std::string key;   ///< "pressed_too_lightly", "false_alarms", "low_coverage", "light_palpation"
     std::string text;  ///< English
+    /// The figures in the text, in its order: a front end says the sentence in its language from
+    /// the key and these (report/PalpationSummaryText.h).
+    std::vector<double> numbers;
 };
 
 struct PalpationSummary {

@@ -95,7 +95,7 @@ TEST_F(TouchMode, ChoosingTheMouseDeviceTurnsTouchModeOnAndTheToolStartsOffTheTi
     window->advanceTicks(kTicks);
     EXPECT_FALSE(window->session().observed().contact) << "the fresh mouse tool must wait off the surface";
     EXPECT_EQ(force(), 0.0);
-    EXPECT_TRUE(window->statusText().contains(QStringLiteral("mouse:: Ready"))) << window->statusText().toStdString();
+    EXPECT_TRUE(window->statusText().contains(QStringLiteral("mouse: Ready"))) << window->statusText().toStdString();
 
     // Another device: touch mode off, no mouse to steer; back to mouse: turns it on again.
     ASSERT_EQ(window->setDeviceUri(QStringLiteral("sim:press")), QString());

@@ -334,7 +334,7 @@ TEST(TraineeMode, ResultsSurviveReopeningAndTheHistoryChartsEachSession) {
     EXPECT_EQ(history->stoppedMarkCount(), 1);
     EXPECT_EQ(history->table()->rowCount(), 2);
     EXPECT_EQ(history->table()->item(0, 2)->text(), QStringLiteral("stopped"));
-    EXPECT_TRUE(history->summaryText().contains(QStringLiteral("mean %1").arg(firstScore, 0, 'f', 0)))
+    EXPECT_TRUE(history->summaryText().contains(QStringLiteral("mean %1").arg(QLocale().toString(firstScore, 'f', 1))))
         << history->summaryText().toStdString();
 
     // The stored result's report: its recording is re-scored (the same score) into a PDF.
@@ -974,20 +974,27 @@ TEST(HistoryPanelChart, SessionsAMinuteApartAreSpacedAndAStoppedOneIsNotAScore) 
     ASSERT_GE(db.addResult(ada, reportOf(0.0, false), QStringLiteral("Press"), QString(), t.addSecs(60), 6.2, QString()), 0);
     ASSERT_GE(db.addResult(ada, reportOf(80.0, true), QStringLiteral("Press"), QString(), t.addSecs(124), 15.0, QString()), 0);
     ASSERT_GE(db.addResult(ada, reportOf(60.0, true), QStringLiteral("Press"), QString(), t.addSecs(169), 30.0, QString()), 0);
+    // Another exercise's session: its score is not mixed into the other's best and mean.
+    ASSERT_GE(db.addResult(ada, reportOf(20.0, true), QStringLiteral("Detect"), QString(), t.addSecs(30), 90.0,
+                           QString()),
+              0);
 
     HistoryPanel history;
     history.resize(340, 640);
     history.setDatabase(&db);
     history.show();
     QApplication::processEvents();
-    ASSERT_EQ(history.results().size(), 4u);
-    EXPECT_EQ(history.plottedPointCount(), 3);
+    ASSERT_EQ(history.results().size(), 5u);
+    EXPECT_EQ(history.plottedPointCount(), 4);
     EXPECT_EQ(history.stoppedMarkCount(), 1);
-    EXPECT_TRUE(history.summaryText().contains(QStringLiteral("best 100, mean 80"))) << history.summaryText().toStdString();
+    EXPECT_TRUE(history.summaryText().contains(QStringLiteral("Press: best 100.0, mean 80.0")))
+        << history.summaryText().toStdString();
+    EXPECT_TRUE(history.summaryText().contains(QStringLiteral("Detect: best 20.0, mean 20.0")))
+        << history.summaryText().toStdString();
     EXPECT_TRUE(history.summaryText().contains(QStringLiteral("1 stopped"))) << history.summaryText().toStdString();
     // Newest first: the stopped session is the third row, shown as stopped, not as 0.
     EXPECT_EQ(history.table()->item(2, 2)->text(), QStringLiteral("stopped"));
-    EXPECT_EQ(history.table()->item(0, 2)->text(), QStringLiteral("60"));
+    EXPECT_EQ(history.table()->item(0, 2)->text(), QStringLiteral("60.0"));
 
     // The scored points, on screen, are well apart (not a vertical line) and in session order.
     QLineSeries* line = nullptr;

@@ -6,6 +6,9 @@
 #include "widgets/HistoryPanel.h"
 #include "widgets/TraineePanel.h"
 
+#include "report/MetricText.h"
+#include "report/PalpationSummaryText.h"
+
 #include <gtest/gtest.h>
 
 #include <QAction>
@@ -108,6 +111,25 @@ TEST_F(Translations, BackToEnglishAndTheStoredLanguage) {
     EXPECT_EQ(installTranslator(*qApp), QStringLiteral("en"));
     EXPECT_EQ(MainWindow::tr("&File"), QStringLiteral("&File"));
     QSettings().remove("language");
+}
+
+// The trainee's feedback in the trainee's language: the sentence from its key and figures, the
+// numbers with the locale's decimal comma; a score with one decimal, the same way.
+TEST_F(Translations, FeedbackSentencesAndNumbersAreGerman) {
+    const PalpationFeedback low{"low_coverage", "Examined 33.3 % of the surface at 0.4 N or more: ...", {33.3, 0.4}};
+    const PalpationFeedback alarms{"false_alarms", "2 findings were on no lump: ...", {2.0}};
+    EXPECT_EQ(feedbackText(low, QLocale(QStringLiteral("en"))),
+              QStringLiteral("Examined 33.3 % of the surface at 0.4 N or more: cover all of it, in overlapping rows."));
+    ASSERT_TRUE(loadLanguage(*qApp, QStringLiteral("de")));
+    EXPECT_EQ(QLocale().decimalPoint(), QStringLiteral(","));  // the default locale follows the language
+    const QString german = feedbackText(low);
+    EXPECT_TRUE(german.contains(QStringLiteral("33,3 %")) && german.contains(QStringLiteral("0,4 N")) &&
+                german.contains(QStringLiteral("Oberfläche")))
+        << german.toStdString();
+    EXPECT_TRUE(feedbackText(alarms).startsWith(QStringLiteral("2 Befunde"))) << feedbackText(alarms).toStdString();
+    EXPECT_EQ(scoreText(85.25), QStringLiteral("85,3"));
+    // A key this build does not know: its English text, as it came.
+    EXPECT_EQ(feedbackText({"from_a_later_version", "Some English.", {1.0}}), QStringLiteral("Some English."));
 }
 
 int main(int argc, char** argv) {

@@ -128,21 +128,28 @@ public:
                 std::string text = "Pressed too lightly to reach the deepest lump: it lies " + oneDecimal(depthMm) +
                                    " mm under the surface, and over it the surface sank " + oneDecimal(sunkMm) +
                                    " mm at most.";
-                if (p.deepestLumpReachForceN)
+                std::vector<double> numbers{depthMm, sunkMm};
+                if (p.deepestLumpReachForceN) {
                     text += " Press to about " + oneDecimal(*p.deepestLumpReachForceN) + " N or more to feel it.";
-                p.feedback.push_back({"pressed_too_lightly", text});
+                    numbers.push_back(*p.deepestLumpReachForceN);
+                }
+                p.feedback.push_back({"pressed_too_lightly", text, numbers});
             }
         }
         if (p.detection->falseAlarms > 0)
-            p.feedback.push_back({"false_alarms", std::to_string(p.detection->falseAlarms) +
-                                                      (p.detection->falseAlarms == 1 ? " finding was" : " findings were") +
-                                                      " on no lump: mark only where the tissue resists more than around it."});
+            p.feedback.push_back({"false_alarms",
+                                  std::to_string(p.detection->falseAlarms) +
+                                      (p.detection->falseAlarms == 1 ? " finding was" : " findings were") +
+                                      " on no lump: mark only where the tissue resists more than around it.",
+                                  {double(p.detection->falseAlarms)}});
         // Only an examination of the whole surface is judged on how much of it was covered (find
         // the lump may go straight to it).
         if (p.coverageFraction < kLowCoverageFraction)
-            p.feedback.push_back({"low_coverage", "Examined " + oneDecimal(100.0 * p.coverageFraction) + " % of the surface at " +
-                                                      oneDecimal(e.coverage.minForceN) +
-                                                      " N or more: cover all of it, in overlapping rows."});
+            p.feedback.push_back({"low_coverage",
+                                  "Examined " + oneDecimal(100.0 * p.coverageFraction) + " % of the surface at " +
+                                      demandNumber(e.coverage.minForceN) +
+                                      " N or more: cover all of it, in overlapping rows.",
+                                  {100.0 * p.coverageFraction, e.coverage.minForceN}});
         mExamination.addCommonFeedback(p, !e.detectLumps.lumps.empty());
         const DetectionResult& d = *p.detection;
         metrics.put(Metric::Sensitivity, d.sensitivity.value_or(0.0), d.sensitivity.has_value());
