@@ -13,6 +13,10 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLocale>
+#include <QGridLayout>
+#include <QScrollBar>
+#include <QScrollArea>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -59,21 +63,23 @@ TraineePanel::TraineePanel(QWidget* parent) : QWidget(parent) {
     mDescription->setWordWrap(true);
     layout->addWidget(mDescription);
 
-    auto* buttons = new QHBoxLayout();
+    // Two by two: four buttons side by side (longer in German) would make the dock wider than a
+    // 1280-pixel window leaves it.
+    auto* buttons = new QGridLayout();
     mStart = new QPushButton(tr("Start"), this);
     mStart->setToolTip(tr("Start the exercise (F6)"));
     mStop = new QPushButton(tr("Stop"), this);
     mStop->setToolTip(tr("End the exercise now and score it (Shift+F6)"));
     mMark = new QPushButton(tr("Mark"), this);
     mMark->setToolTip(tr("Mark the lump where the tool presses now (M)"));
-    buttons->addWidget(mStart);
-    buttons->addWidget(mStop);
+    buttons->addWidget(mStart, 0, 0);
+    buttons->addWidget(mStop, 0, 1);
     mFinish = new QPushButton(tr("Finish"), this);
     mFinish->setObjectName(QStringLiteral("finishExaminationButton"));
     mFinish->setToolTip(tr("End the examination: every lump you found is marked (F7)"));
     mFinish->setVisible(false);
-    buttons->addWidget(mMark);
-    buttons->addWidget(mFinish);
+    buttons->addWidget(mMark, 1, 0);
+    buttons->addWidget(mFinish, 1, 1);
     layout->addLayout(buttons);
     mMessage = new QLabel(this);
     mMessage->setWordWrap(true);
@@ -116,6 +122,19 @@ TraineePanel::TraineePanel(QWidget* parent) : QWidget(parent) {
     connect(mExercises, &QComboBox::currentIndexChanged, this, [this] { emit exerciseChanged(exercisePath()); });
     connect(mExercises, &QComboBox::activated, this, &TraineePanel::exercisePicked);
     setState(State::Idle);
+}
+
+bool TraineePanel::event(QEvent* event) {
+    const bool handled = QWidget::event(event);
+    if (event->type() == QEvent::LayoutRequest) {
+        // The scroll area's viewport is this panel's parent, the area its grandparent.
+        if (auto* scroll = parentWidget() ? qobject_cast<QScrollArea*>(parentWidget()->parentWidget()) : nullptr) {
+            const int scrollBarPx = scroll->verticalScrollBar()->sizeHint().width();
+            const int needPx = minimumSizeHint().width() + scrollBarPx;
+            if (scroll->minimumWidth() < needPx) scroll->setMinimumWidth(needPx);
+        }
+    }
+    return handled;
 }
 
 void TraineePanel::setTrainees(const QList<QPair<QString, qint64>>& trainees, qint64 selectId) {

@@ -92,6 +92,11 @@ signals:
     /// The trainee chose an exercise in the combo (not a programmatic selection).
     void exercisePicked();
 
+protected:
+    /// Whenever the panel's layout changes (a score card with its table, a longer instruction), a
+    /// scroll area holding it is kept at least as wide as the panel needs: it wraps, never clips.
+    bool event(QEvent* event) override;
+
 private:
     State mState = State::Idle;
     QComboBox* mTrainees = nullptr;

@@ -46,6 +46,7 @@
 #include <QInputDialog>
 #include <QKeySequence>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -755,6 +756,9 @@ void MainWindow::createExerciseDocks() {
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(mTraineePanel);
+    // Wrap, never clip: the panel is laid out to the dock's width (its labels wrap), and the dock
+    // is never narrower than what the panel needs beside its scroll bar.
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);  // TraineePanel::event keeps it wide enough
     mExerciseDock = new QDockWidget(tr("Exercise"), this);
     mExerciseDock->setObjectName(QStringLiteral("exerciseDock"));
     mExerciseDock->setWidget(scroll);
@@ -1108,6 +1112,11 @@ void MainWindow::setMode(Mode mode) {
     else mParameterDock->raise();  // the instructor's first tool
     if (mInstructorAction) mInstructorAction->setChecked(instructor);
     if (mTraineeAction) mTraineeAction->setChecked(!instructor);
+    // Another person at the window: the instructor's draft (its lumps, its targets) is never shown
+    // to a trainee, nor a finished exercise's overlay (revealed lumps, heat map) to the next one.
+    if (!mExercises->running())
+        mViewport->setExerciseMarkers(instructor && mEditor && mEditorDock->isVisible() ? mEditor->markers()
+                                                                                        : ExerciseMarkers{});
 }
 
 void MainWindow::setExerciseRunning(bool running) {

@@ -53,6 +53,7 @@
 #include <QTest>
 #include <QUndoGroup>
 #include <QUndoStack>
+#include <QScrollArea>
 #include <QValueAxis>
 
 #include <algorithm>
@@ -792,6 +793,107 @@ TEST(InstructorMode, HidesTheTraineesDocks) {
     window->setMode(MainWindow::Mode::Trainee);
     EXPECT_FALSE(exerciseDock->isHidden());
     EXPECT_FALSE(historyDock->isHidden());
+}
+
+// The instructor's draft of a detection exercise (its lumps) is drawn for the instructor and gone
+// the moment the window is a trainee's; back in instructor mode it is there again.
+TEST(InstructorMode, TheDraftsLumpsAreNeverShownInTraineeMode) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/press_targets.good.path");
+    ASSERT_EQ(window->loadMesh(resource("meshes/sphere_1442.off")), QString());
+    window->advanceTicks(10);
+    window->setMode(MainWindow::Mode::Instructor);
+    auto* editorDock = window->findChild<QDockWidget*>(QStringLiteral("exerciseEditorDock"));
+    ASSERT_NE(editorDock, nullptr);
+    editorDock->raise();  // the editor's tab in front: its draft is drawn
+    QApplication::processEvents();
+    ExerciseEditorPanel* editor = window->exerciseEditor();
+    editor->newExercise(ExerciseType::DetectLumps);
+    editor->setPlacing(ExerciseEditorPanel::Placing::AddItem);
+    editor->vertexPicked(10);
+    editor->vertexPicked(200);
+    editor->setPlacing(ExerciseEditorPanel::Placing::None);
+    QApplication::processEvents();
+    ASSERT_EQ(editor->exercise().detectLumps.lumps.size(), 2u);
+    EXPECT_EQ(countMarkers(window->viewport()->exerciseMarkers(), ExerciseMarker::Kind::Inclusion), 2);
+    window->setMode(MainWindow::Mode::Trainee);
+    EXPECT_TRUE(window->viewport()->exerciseMarkers().markers.empty());
+    window->setMode(MainWindow::Mode::Instructor);
+    editorDock->raise();
+    QApplication::processEvents();
+    EXPECT_EQ(countMarkers(window->viewport()->exerciseMarkers(), ExerciseMarker::Kind::Inclusion), 2);
+}
+
+namespace {
+
+/// The visible widgets of the Exercise dock that reach past the dock's visible width.
+QStringList clippedInExerciseDock(MainWindow& window) {
+    QStringList clipped;
+    TraineePanel* panel = window.traineePanel();
+    auto* scroll = qobject_cast<QScrollArea*>(panel->parentWidget()->parentWidget());
+    if (!scroll) return {QStringLiteral("(no scroll area)")};
+    const int visiblePx = scroll->viewport()->width();
+    for (QWidget* w : panel->findChildren<QWidget*>()) {
+        if (!w->isVisibleTo(panel) || w->width() <= 0) continue;
+        const int rightPx = w->mapTo(scroll->viewport(), QPoint(w->width(), 0)).x();
+        if (rightPx > visiblePx + 1)
+            clipped << QStringLiteral("%1 %2 ends at %3 of %4")
+                           .arg(QString::fromLatin1(w->metaObject()->className()), w->objectName())
+                           .arg(rightPx)
+                           .arg(visiblePx);
+    }
+    return clipped;
+}
+
+}  // namespace
+
+// At 1280x800 the Exercise dock wraps its text and shows its buttons, gauge and score card whole:
+// nothing reaches past its edge, while an examination runs and when its card is shown.
+TEST(ExerciseDock, WrapsAndNeverClipsAt1280x800) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/detect_lumps.light.path");
+    window->resize(1280, 800);
+    window->setMode(MainWindow::Mode::Trainee);
+    ASSERT_EQ(window->exercises().addTrainee(QStringLiteral("Eli")), QString());
+    ASSERT_EQ(window->exercises().addExerciseFile(resource("exercises/detect_lumps.json")), QString());
+    ASSERT_EQ(window->exercises().start(), QString());
+    window->advanceTicks(2000);
+    QApplication::processEvents();
+    QStringList clipped = clippedInExerciseDock(*window);
+    EXPECT_TRUE(clipped.isEmpty()) << "running: " << clipped.join(QStringLiteral("; ")).toStdString();
+    window->advanceTicks(83831 - 2000);
+    window->exercises().finishExamination();
+    runToEnd(*window, 5000);
+    ASSERT_FALSE(window->exercises().running());
+    QApplication::processEvents();
+    QApplication::processEvents();
+    clipped = clippedInExerciseDock(*window);
+    EXPECT_TRUE(clipped.isEmpty()) << "score card: " << clipped.join(QStringLiteral("; ")).toStdString();
+    if (const QByteArray shots = qgetenv("PALPATE_SHOT_DIR"); !shots.isEmpty())
+        window->grab().save(QString::fromLocal8Bit(shots) + QStringLiteral("/trainee-1280x800.png"));
+}
+
+// An instructor's Try it of a detection exercise ends with its lumps revealed beside the score;
+// the next person, in trainee mode, does not find them drawn.
+TEST(InstructorMode, ATriedExercisesRevealedLumpsAreGoneInTraineeMode) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto window = traineeWindow(dir, "exercises/detect_lumps.light.path");
+    window->setMode(MainWindow::Mode::Instructor);
+    const auto loaded = loadExercise(findResource("exercises/detect_lumps.json"));
+    ASSERT_TRUE(loaded.exercise) << loaded.error();
+    ASSERT_EQ(window->exercises().startPreview(*loaded.exercise), QString());
+    window->advanceTicks(83831);
+    window->exercises().finishExamination();
+    runToEnd(*window, 5000);
+    ASSERT_FALSE(window->exercises().running());
+    EXPECT_EQ(countMarkers(window->viewport()->exerciseMarkers(), ExerciseMarker::Kind::Inclusion), 3)
+        << "revealed to the instructor who tried it";
+    window->setMode(MainWindow::Mode::Trainee);
+    EXPECT_EQ(countMarkers(window->viewport()->exerciseMarkers(), ExerciseMarker::Kind::Inclusion), 0);
+    EXPECT_TRUE(window->viewport()->exerciseMarkers().heat.empty());
 }
 
 TEST(InstructorMode, ClickingTheMeshPlacesTargetsTheViewportShowsAndUndoRemoves) {
