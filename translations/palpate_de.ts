@@ -1542,8 +1542,8 @@
 <context>
     <name>palpate::ExerciseMarkers</name>
     <message>
-        <source>examined: %1 to %2 N (largest force)</source>
-        <translation>untersucht: %1 bis %2 N (größte Kraft)</translation>
+        <source>examined from %1 N to %2 N (excessive)</source>
+        <translation>untersucht ab %1 N bis %2 N (übermäßig)</translation>
     </message>
 </context>
 <context>

@@ -1542,8 +1542,8 @@
 <context>
     <name>palpate::ExerciseMarkers</name>
     <message>
-        <source>examined: %1 to %2 N (largest force)</source>
-        <translation>diperiksa: %1 hingga %2 N (daya terbesar)</translation>
+        <source>examined from %1 N to %2 N (excessive)</source>
+        <translation>diperiksa dari %1 N hingga %2 N (berlebihan)</translation>
     </message>
 </context>
 <context>

@@ -10,6 +10,7 @@
 #include <QCoreApplication>
 #include <QFont>
 #include <QLinearGradient>
+#include <QLocale>
 #include <QGuiApplication>
 #include <QPainter>
 #include <QPainterPath>
@@ -79,14 +80,19 @@ void addCoverageHeat(ExerciseMarkers& markers, const ExerciseGeometry& geometry,
     const auto& rest = geometry.restMm();
     const auto& normals = geometry.normals();
     markers.heat.clear();
+    // From the force that examines (amber) to the exercise's excessive force (red): a fixed scale
+    // that means something, where the session's own largest force made a mouse's constant press
+    // all red.
     markers.heatMinN = palpation.coverage.minForceN;
-    markers.heatMaxN = palpation.coverage.minForceN;
+    markers.heatMaxN = geometry.exercise().excessiveForceN;
+    double largestN = 0.0;
     for (std::size_t v = 0; v < palpation.peakForceN.size() && v < rest.size(); ++v) {
         const float f = palpation.peakForceN[v];
         if (!(f > 0.0f)) continue;
         markers.heat.push_back({rest[v], normals[v], f});
-        markers.heatMaxN = std::max(markers.heatMaxN, double(f));
+        largestN = std::max(largestN, double(f));
     }
+    if (!(markers.heatMaxN > markers.heatMinN)) markers.heatMaxN = std::max(largestN, markers.heatMinN);
 }
 
 QColor exerciseMarkerColour(ExerciseMarker::Kind kind) {
@@ -153,9 +159,10 @@ void paintExerciseMarkers(QPainter& painter, const ExerciseMarkers& markers, con
         painter.setBrush(gradient);
         painter.setPen(QPen(QColor(0, 0, 0, 160), 1.0));
         painter.drawRect(bar);
-        const QString label = QCoreApplication::translate("palpate::ExerciseMarkers", "examined: %1 to %2 N (largest force)")
-                                  .arg(markers.heatMinN, 0, 'f', 1)
-                                  .arg(markers.heatMaxN, 0, 'f', 1);
+        const QString label = QCoreApplication::translate("palpate::ExerciseMarkers",
+                                                          "examined from %1 N to %2 N (excessive)")
+                                  .arg(QLocale().toString(markers.heatMinN, 'g', 3),
+                                       QLocale().toString(markers.heatMaxN, 'g', 3));
         painter.setPen(QColor(0, 0, 0, 200));
         painter.drawText(bar.bottomLeft() + QPointF(1, 15), label);
         painter.setPen(Qt::white);

@@ -229,10 +229,14 @@ void HistoryPanel::rebuild() {
         time->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         mTable->setItem(row, 3, time);
     }
-    if (mResults.empty()) {
-        mSummary->setText(mTrainees->count() == 0 ? tr("No trainees yet: add one in the Exercise dock.")
-                                                  : tr("No results yet."));
-    } else {
+    mSummary->setText(sessionsSummary(sessions));
+    updateButtons();
+}
+
+QString HistoryPanel::sessionsSummary(int sessions) const {
+    if (mResults.empty())
+        return mTrainees->count() == 0 ? tr("No trainees yet: add one in the Exercise dock.") : tr("No results yet.");
+    {
         // Best and mean per exercise: scores of different exercises do not mix.
         struct Tally {
             QString exercise;
@@ -272,9 +276,8 @@ void HistoryPanel::rebuild() {
         QString text = scored > 0 ? count + QStringLiteral("; ") + perExercise.join(QStringLiteral("; "))
                                   : tr("%n session(s) (%1); none scored", "", sessions).arg(when);
         if (stopped > 0) text += QLatin1Char(' ') + tr("(%n stopped, not counted)", "", stopped);
-        mSummary->setText(text);
+        return text;
     }
-    updateButtons();
 }
 
 int HistoryPanel::plottedPointCount() const {

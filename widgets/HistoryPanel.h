@@ -63,6 +63,8 @@ signals:
 
 private:
     void rebuild();
+    /// The line under the table: sessions, their dates, the best and the mean per exercise.
+    QString sessionsSummary(int sessions) const;
     void updateButtons();
 
     ResultsDatabase* mDatabase = nullptr;

@@ -423,7 +423,8 @@ TEST(TraineeMode, DetectLumpsHidesTheLumpsUntilTheEndThenShowsThemTheFindingsAnd
     for (float f : live.palpation->peakForceN) covered += f > 0.0f ? 1 : 0;
     EXPECT_GT(covered, 0u);
     EXPECT_EQ(markers.heat.size(), covered);
-    EXPECT_DOUBLE_EQ(markers.heatMinN, 0.4);  // the exercise's coverage force
+    EXPECT_DOUBLE_EQ(markers.heatMinN, 0.4);  // the exercise's coverage force (amber)
+    EXPECT_DOUBLE_EQ(markers.heatMaxN, 4.0);  // to its excessive force (red), not the session's largest
     const QString card = window->traineePanel()->scoreCard()->palpationText();
     EXPECT_TRUE(card.contains(QStringLiteral("2 of 3"))) << card.toStdString();
     EXPECT_TRUE(card.contains(QStringLiteral("Pressed too lightly"))) << card.toStdString();
