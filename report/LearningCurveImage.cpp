@@ -20,11 +20,15 @@
 
 namespace palpate {
 
-namespace {
+QString learningCurveMetricTitle(const LearningCurveMetric& m) {
+    if (m.key == QLatin1String(kLearningCurveScoreKey)) return QObject::tr("Score (of 100)");
+    return metricNameText(m.key.toStdString());
+}
 
-QChartView* metricPlot(const LearningCurveMetric& m, const std::vector<bool>& passed, double textScale, QWidget* parent) {
+QChartView* learningCurveMetricChart(const LearningCurveMetric& m, const std::vector<bool>& passed, double textScale,
+                                     QWidget* parent) {
     auto* chart = new QChart;
-    chart->setTitle(metricNameText(m.key.toStdString()));
+    chart->setTitle(learningCurveMetricTitle(m));
     chart->legend()->hide();
     const int sessions = int(m.values.size());
     double lo = INFINITY, hi = -INFINITY;
@@ -101,8 +105,6 @@ QChartView* metricPlot(const LearningCurveMetric& m, const std::vector<bool>& pa
     return view;
 }
 
-}  // namespace
-
 std::string renderLearningCurvePng(const LearningCurveData& data, const std::string& path, int widthPx, int heightPx) {
     if (const std::string problem = chartImageProblem(widthPx, heightPx, path); !problem.empty()) return problem;
     if (data.metrics.empty()) return "no metric to draw";
@@ -128,7 +130,8 @@ std::string renderLearningCurvePng(const LearningCurveData& data, const std::str
     const int n = int(data.metrics.size());
     const int columns = n <= 1 ? 1 : n <= 4 ? 2 : 3;
     for (int i = 0; i < n; ++i)
-        grid->addWidget(metricPlot(data.metrics[std::size_t(i)], data.passed, textScale, &page), i / columns, i % columns);
+        grid->addWidget(learningCurveMetricChart(data.metrics[std::size_t(i)], data.passed, textScale, &page),
+                        i / columns, i % columns);
     layout->addLayout(grid, 1);
     if (const std::string problem = renderWidgetPng(page, widthPx, heightPx, path); !problem.empty()) return problem;
     return {};

@@ -31,6 +31,10 @@
         <source> - no expert standard</source>
         <translation> – kein Expertenstandard</translation>
     </message>
+    <message>
+        <source>Score (of 100)</source>
+        <translation>Bewertung (von 100)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ChartsPanel</name>
@@ -2164,10 +2168,6 @@ Tick %7 µs, %8-mal schneller als previous</translation>
         <translation>%1 hat keine bewerteten Sitzungen dieser Übung zum Zeichnen.</translation>
     </message>
     <message>
-        <source>The curve cannot be drawn: %1</source>
-        <translation>Die Kurve kann nicht gezeichnet werden: %1</translation>
-    </message>
-    <message>
         <source>%1: best %2, mean %3</source>
         <translation>%1: bestes %2, Mittel %3</translation>
     </message>
@@ -2178,6 +2178,22 @@ Tick %7 µs, %8-mal schneller als previous</translation>
     <message>
         <source>%1 sessions (%2)</source>
         <translation>%1 Sitzungen (%2)</translation>
+    </message>
+    <message>
+        <source>&amp;Show:</source>
+        <translation>&amp;Zeigen:</translation>
+    </message>
+    <message>
+        <source>- proficient at session %1</source>
+        <translation>- kompetent ab Sitzung %1</translation>
+    </message>
+    <message>
+        <source>- not yet proficient</source>
+        <translation>- noch nicht kompetent</translation>
+    </message>
+    <message>
+        <source>- no expert standard yet: the pass marks come from experts&apos; sessions</source>
+        <translation>- noch kein Expertenstandard: die Bestehensgrenzen kommen aus Sitzungen von Experten</translation>
     </message>
 </context>
 <context>

@@ -31,6 +31,10 @@
         <source> - no expert standard</source>
         <translation> – tiada piawai pakar</translation>
     </message>
+    <message>
+        <source>Score (of 100)</source>
+        <translation>Skor (daripada 100)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ChartsPanel</name>
@@ -2161,10 +2165,6 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
         <translation>%1 tiada sesi bermarkah bagi latihan ini untuk dilukis.</translation>
     </message>
     <message>
-        <source>The curve cannot be drawn: %1</source>
-        <translation>Lengkung tidak dapat dilukis: %1</translation>
-    </message>
-    <message>
         <source>%1: best %2, mean %3</source>
         <translation>%1: terbaik %2, purata %3</translation>
     </message>
@@ -2175,6 +2175,22 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
     <message>
         <source>%1 sessions (%2)</source>
         <translation>%1 sesi (%2)</translation>
+    </message>
+    <message>
+        <source>&amp;Show:</source>
+        <translation>&amp;Tunjuk:</translation>
+    </message>
+    <message>
+        <source>- proficient at session %1</source>
+        <translation>- cekap sejak sesi %1</translation>
+    </message>
+    <message>
+        <source>- not yet proficient</source>
+        <translation>- belum cekap</translation>
+    </message>
+    <message>
+        <source>- no expert standard yet: the pass marks come from experts&apos; sessions</source>
+        <translation>- belum ada piawaian pakar: markah lulus datang daripada sesi pakar</translation>
     </message>
 </context>
 <context>

@@ -321,25 +321,58 @@ QString HistoryPanel::showLearningCurve() {
     QString trainee = mTrainees->currentText();
     const LearningCurve curve = learningCurve(*mDatabase, r->traineeId, *loaded.exercise, r->exercisePath,
                                               trainee + QStringLiteral(": ") + QString::fromStdString(loaded.exercise->name));
-    if (curve.sessions.empty() || curve.chart.metrics.empty())
-        return tr("%1 has no scored sessions of this exercise to draw.").arg(trainee);
-    QTemporaryDir dir;
-    const QString png = dir.filePath(QStringLiteral("curve.png"));
-    std::string error;
-    if (!dir.isValid() || !(error = renderLearningCurvePng(curve.chart, png.toStdString(), 1200, 800)).empty())
-        return tr("The curve cannot be drawn: %1").arg(QString::fromStdString(error));
+    if (curve.sessions.empty()) return tr("%1 has no scored sessions of this exercise to draw.").arg(trainee);
+    // One metric at a time, large enough to read: the score first, then the exercise's metrics.
+    mCurveData = curve.chart;
+    LearningCurveMetric score;
+    score.key = QLatin1String(kLearningCurveScoreKey);
+    for (const ResultRecord& s : curve.sessions) score.values.push_back(s.score);
+    mCurveData.metrics.insert(mCurveData.metrics.begin(), score);
     if (!mCurveDialog) {
         mCurveDialog = new QDialog(this);
+        mCurveDialog->setObjectName(QStringLiteral("learningCurveDialog"));
         mCurveDialog->setWindowTitle(tr("Learning curve"));
+        mCurveDialog->resize(760, 520);
         auto* layout = new QVBoxLayout(mCurveDialog);
-        mCurveImage = new QLabel(mCurveDialog);
-        mCurveImage->setAlignment(Qt::AlignCenter);
-        layout->addWidget(mCurveImage);
+        mCurveHeading = new QLabel(mCurveDialog);
+        mCurveHeading->setWordWrap(true);
+        auto* row = new QHBoxLayout;
+        auto* label = new QLabel(tr("&Show:"), mCurveDialog);
+        mCurveMetric = new QComboBox(mCurveDialog);
+        mCurveMetric->setObjectName(QStringLiteral("curveMetricCombo"));
+        label->setBuddy(mCurveMetric);
+        row->addWidget(label);
+        row->addWidget(mCurveMetric, 1);
+        layout->addWidget(mCurveHeading);
+        layout->addLayout(row);
+        connect(mCurveMetric, &QComboBox::currentIndexChanged, this, &HistoryPanel::showCurveMetric);
     }
-    mCurveImage->setPixmap(QPixmap(png).scaled(900, 600, Qt::KeepAspectRatio, Qt::SmoothTransformation));
+    QString heading = mCurveData.title;
+    if (mCurveData.proficientAtSession)
+        heading += QLatin1Char(' ') + tr("- proficient at session %1").arg(*mCurveData.proficientAtSession);
+    else if (!mCurveData.passed.empty()) heading += QLatin1Char(' ') + tr("- not yet proficient");
+    else heading += QLatin1Char(' ') + tr("- no expert standard yet: the pass marks come from experts' sessions");
+    mCurveHeading->setText(heading);
+    {
+        const QSignalBlocker block(mCurveMetric);
+        mCurveMetric->clear();
+        for (const LearningCurveMetric& m : mCurveData.metrics) mCurveMetric->addItem(learningCurveMetricTitle(m));
+        mCurveMetric->setCurrentIndex(0);
+    }
+    showCurveMetric(0);
     mCurveDialog->show();
     mCurveDialog->raise();
     return {};
+}
+
+void HistoryPanel::showCurveMetric(int index) {
+    if (!mCurveDialog || index < 0 || index >= int(mCurveData.metrics.size())) return;
+    delete mCurveChart;
+    mCurveChart = learningCurveMetricChart(mCurveData.metrics[std::size_t(index)], mCurveData.passed, 1.0,
+                                           mCurveDialog);
+    mCurveChart->setObjectName(QStringLiteral("curveChart"));
+    mCurveChart->setMinimumHeight(360);
+    mCurveDialog->layout()->addWidget(mCurveChart);
 }
 
 }  // namespace palpate

@@ -3,6 +3,7 @@
 // session marked but not scored, and the results as a table below. A result with a recording can be exported as a PDF report or replayed: the
 // window re-scores the recording (the same score bit for bit) or opens it in the Recorder.
 
+#include "results/LearningCurveData.h"
 #include "results/ResultsDatabase.h"
 
 #include <QWidget>
@@ -79,7 +80,11 @@ private:
     QPushButton* mReplay = nullptr;
     QPushButton* mCurve = nullptr;
     QDialog* mCurveDialog = nullptr;
-    QLabel* mCurveImage = nullptr;
+    QLabel* mCurveHeading = nullptr;
+    QComboBox* mCurveMetric = nullptr;
+    QWidget* mCurveChart = nullptr;  ///< the chart shown (replaced when another metric is chosen)
+    LearningCurveData mCurveData;    ///< score first, then the exercise's metrics
+    void showCurveMetric(int index);
 };
 
 }  // namespace palpate

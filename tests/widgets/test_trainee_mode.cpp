@@ -54,6 +54,7 @@
 #include <QUndoGroup>
 #include <QUndoStack>
 #include <QScrollArea>
+#include <QChartView>
 #include <QValueAxis>
 
 #include <algorithm>
@@ -530,8 +531,27 @@ TEST(TraineeMode, AnExpertReferenceSessionIsStoredAsAnExperts) {
     window->historyPanel()->selectRow(2);
     EXPECT_TRUE(window->historyPanel()->learningCurveButton()->isEnabled());
     EXPECT_EQ(window->historyPanel()->showLearningCurve(), QString());
-    ASSERT_NE(window->historyPanel()->learningCurveDialog(), nullptr);
-    EXPECT_TRUE(window->historyPanel()->learningCurveDialog()->isVisible());
+    QDialog* dialog = window->historyPanel()->learningCurveDialog();
+    ASSERT_NE(dialog, nullptr);
+    EXPECT_TRUE(dialog->isVisible());
+    // One metric at a time, the score first, each large enough to read; the choice switches it.
+    auto* metric = dialog->findChild<QComboBox*>(QStringLiteral("curveMetricCombo"));
+    ASSERT_NE(metric, nullptr);
+    ASSERT_EQ(metric->count(), int(curve.chart.metrics.size()) + 1);
+    EXPECT_EQ(metric->itemText(0), QStringLiteral("Score (of 100)"));
+    QApplication::processEvents();
+    auto* chart = dialog->findChild<QChartView*>(QStringLiteral("curveChart"));
+    ASSERT_NE(chart, nullptr);
+    EXPECT_GE(chart->height(), 300);
+    EXPECT_EQ(chart->chart()->title(), QStringLiteral("Score (of 100)"));
+    metric->setCurrentIndex(1);
+    QApplication::processEvents();
+    chart = dialog->findChild<QChartView*>(QStringLiteral("curveChart"));
+    ASSERT_NE(chart, nullptr);
+    EXPECT_EQ(chart->chart()->title(), metric->itemText(1));
+    EXPECT_EQ(dialog->findChildren<QChartView*>().size(), 1) << "one chart at a time";
+    if (const QByteArray shots = qgetenv("PALPATE_SHOT_DIR"); !shots.isEmpty())
+        dialog->grab().save(QString::fromLocal8Bit(shots) + QStringLiteral("/learning-curve.png"));
 }
 
 TEST(ForceGauge, AFadedGaugeDrawsFainterAndAHiddenOneSaysSo) {
