@@ -99,8 +99,8 @@ const QStringList& Preferences::languages() {
 QString formatForce(double newtons, const QString& unit, int decimals) {
     if (unit == QLatin1String("gf"))
         return QCoreApplication::translate("palpate::Preferences", "%1 gf")
-            .arg(newtons / kNewtonsPerGramForce, 0, 'f', qMax(0, decimals - 1));
-    return QCoreApplication::translate("palpate::Preferences", "%1 N").arg(newtons, 0, 'f', decimals);
+            .arg(QLocale().toString(newtons / kNewtonsPerGramForce, 'f', qMax(0, decimals - 1)));
+    return QCoreApplication::translate("palpate::Preferences", "%1 N").arg(QLocale().toString(newtons, 'f', decimals));
 }
 
 QString formatForce(double newtons, int decimals) { return formatForce(newtons, cachedForceUnit(), decimals); }

@@ -46,6 +46,7 @@
 #include <QInputDialog>
 #include <QKeySequence>
 #include <QScrollArea>
+#include <QLocale>
 #include <QScrollBar>
 #include <QLabel>
 #include <QMenuBar>
@@ -310,10 +311,8 @@ void MainWindow::updateDocks() {
             .arg(c.ticks)
             .arg(c.missedDeadlines)
             .arg(c.overruns)
-            .arg(c.lastComputeUs, 0, 'f', 1)
-            .arg(c.maxComputeUs, 0, 'f', 1)
-            .arg(c.lastJitterUs, 0, 'f', 1)
-            .arg(c.maxJitterUs, 0, 'f', 1)
+            .arg(QLocale().toString(c.lastComputeUs, 'f', 1), QLocale().toString(c.maxComputeUs, 'f', 1),
+                 QLocale().toString(c.lastJitterUs, 'f', 1), QLocale().toString(c.maxJitterUs, 'f', 1))
             .arg(c.schedFifo ? tr("SCHED_FIFO") : tr("normal (SCHED_FIFO not permitted)"))
             .arg(mFrameRateFps, 0, 'f', 0)
             .arg(o.displacedTotal)
@@ -683,7 +682,7 @@ void MainWindow::showStatus() {
     else
         mRateLabel->setText(tr("haptic %1 Hz").arg(mHapticRateHz, 0, 'f', 0));
     // Last/max, compact: the status bar is crowded. One decimal only where it says something.
-    auto us = [](double v) { return QString::number(v, 'f', v < 100.0 ? 1 : 0); };
+    auto us = [](double v) { return QLocale().toString(v, 'f', v < 100.0 ? 1 : 0); };
     mComputeLabel->setText(tr("tick %1/%2 µs").arg(us(c.lastComputeUs), us(c.maxComputeUs)));
     mJitterLabel->setText(tr("jitter %1/%2 µs").arg(us(c.lastJitterUs), us(c.maxJitterUs)));
     mOverrunLabel->setText(tr("overruns %1 (missed %2)").arg(c.overruns).arg(c.missedDeadlines));

@@ -4,6 +4,7 @@
 #include "app/gui/FirstRun.h"
 #include "app/gui/MainWindow.h"
 #include "widgets/HistoryPanel.h"
+#include "widgets/PreferencesDialog.h"
 #include "widgets/TraineePanel.h"
 
 #include "report/MetricText.h"
@@ -128,6 +129,7 @@ TEST_F(Translations, FeedbackSentencesAndNumbersAreGerman) {
         << german.toStdString();
     EXPECT_TRUE(feedbackText(alarms).startsWith(QStringLiteral("2 Befunde"))) << feedbackText(alarms).toStdString();
     EXPECT_EQ(scoreText(85.25), QStringLiteral("85,3"));
+    EXPECT_EQ(formatForce(1.25, QStringLiteral("N")), QStringLiteral("1,25 N"));  // the status bar, the gauge
     // A key this build does not know: its English text, as it came.
     EXPECT_EQ(feedbackText({"from_a_later_version", "Some English.", {1.0}}), QStringLiteral("Some English."));
 }
