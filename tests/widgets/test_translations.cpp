@@ -2,7 +2,10 @@
 // files load, and a MainWindow built after switching finds its menus in that language; switching
 // back to English gives the English menus. Own main().
 #include "app/gui/FirstRun.h"
+#include "base/resources/ShippedResources.h"
+#include "app/gui/ExerciseController.h"
 #include "app/gui/MainWindow.h"
+#include "widgets/RecorderPanel.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/PreferencesDialog.h"
 #include "widgets/TraineePanel.h"
@@ -17,6 +20,9 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QSettings>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QProcess>
 #include <QStandardPaths>
 
 #include <memory>
@@ -132,6 +138,47 @@ TEST_F(Translations, FeedbackSentencesAndNumbersAreGerman) {
     EXPECT_EQ(formatForce(1.25, QStringLiteral("N")), QStringLiteral("1,25 N"));  // the status bar, the gauge
     // A key this build does not know: its English text, as it came.
     EXPECT_EQ(feedbackText({"from_a_later_version", "Some English.", {1.0}}), QStringLiteral("Some English."));
+}
+
+// A German trainee's PDF report is German: its fields, its score with a decimal comma, its date in
+// German, its feedback and metric names; the scripted good path of "press the targets".
+TEST_F(Translations, TheScoreReportPdfIsGerman) {
+    const QString pdftotext = QStandardPaths::findExecutable(QStringLiteral("pdftotext"));
+    if (pdftotext.isEmpty()) GTEST_SKIP() << "pdftotext not installed (poppler-utils)";
+    ASSERT_TRUE(loadLanguage(*qApp, QStringLiteral("de")));
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    window.recorderPanel()->setRecordingFolder(dir.filePath(QStringLiteral("recordings")));
+    ASSERT_EQ(window.exercises().openDatabase(dir.filePath(QStringLiteral("results.sqlite"))), QString());
+    ASSERT_EQ(window.setDeviceUri(QStringLiteral("sim:path:") +
+                                  QString::fromStdString(findResource("exercises/press_targets.good.path"))),
+              QString());
+    window.resize(1200, 800);
+    window.show();
+    window.setMode(MainWindow::Mode::Trainee);
+    ASSERT_EQ(window.exercises().addTrainee(QStringLiteral("Ada")), QString());
+    ASSERT_EQ(window.exercises().addExerciseFile(QString::fromStdString(findResource("exercises/press_targets.json"))),
+              QString());
+    ASSERT_EQ(window.exercises().start(), QString());
+    for (int done = 0; done < 60000 && window.exercises().running(); done += 100) window.advanceTicks(100);
+    ASSERT_TRUE(window.exercises().lastReport());
+    const double score = window.exercises().lastReport()->score;
+    const QString pdf = dir.filePath(QStringLiteral("bericht.pdf"));
+    ASSERT_EQ(window.exercises().exportLastReportPdf(pdf), QString());
+    QProcess proc;
+    proc.start(pdftotext, {pdf, QStringLiteral("-")});
+    ASSERT_TRUE(proc.waitForFinished(30000));
+    const QString text = QString::fromUtf8(proc.readAllStandardOutput()).simplified();
+    EXPECT_TRUE(text.contains(QStringLiteral("Teilnehmer:"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Datum:"))) << text.toStdString();
+    EXPECT_TRUE(
+        text.contains(QStringLiteral("Punktzahl: %1 / 100").arg(QLocale(QStringLiteral("de")).toString(score, 'f', 1))))
+        << text.toStdString();
+    EXPECT_FALSE(text.contains(QStringLiteral("Score:"))) << text.toStdString();
+    EXPECT_FALSE(text.contains(QStringLiteral("Trainee:"))) << text.toStdString();
+    if (const QByteArray shots = qgetenv("PALPATE_SHOT_DIR"); !shots.isEmpty())
+        QFile::copy(pdf, QString::fromLocal8Bit(shots) + QStringLiteral("/bericht.pdf"));
 }
 
 int main(int argc, char** argv) {
