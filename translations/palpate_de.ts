@@ -5911,6 +5911,10 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
         <source>Time left %1 s · score at Finish</source>
         <translation>Verbleibende Zeit %1 s · Punktzahl bei Beenden</translation>
     </message>
+    <message>
+        <source>%1 (in %2)</source>
+        <translation>%1 (in %2)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::WelcomePage</name>

@@ -5907,6 +5907,10 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
         <source>Time left %1 s · score at Finish</source>
         <translation>Baki masa %1 s · markah apabila Tamat</translation>
     </message>
+    <message>
+        <source>%1 (in %2)</source>
+        <translation>%1 (dalam %2)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::WelcomePage</name>

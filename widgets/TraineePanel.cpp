@@ -9,6 +9,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -150,12 +151,19 @@ void TraineePanel::setTrainees(const QList<QPair<QString, qint64>>& trainees, qi
 qint64 TraineePanel::traineeId() const { return mTrainees->currentIndex() < 0 ? -1 : mTrainees->currentData().toLongLong(); }
 QString TraineePanel::traineeName() const { return mTrainees->currentIndex() < 0 ? QString() : mTrainees->currentText(); }
 
+QString TraineePanel::distinctTitle(const QString& title, const QString& path) const {
+    // Two exercises of one name (a shipped one and a copy imported from a bundle) are told apart
+    // by their folder.
+    if (mExercises->findText(title, Qt::MatchExactly) < 0) return title;
+    return tr("%1 (in %2)").arg(title, QFileInfo(path).absoluteDir().dirName());
+}
+
 void TraineePanel::setExercises(const QList<QPair<QString, QString>>& exercises, const QString& select) {
     {
         const QSignalBlocker block(mExercises);
         mExercises->clear();
         for (const auto& [title, path] : exercises) {
-            mExercises->addItem(title, path);
+            mExercises->addItem(distinctTitle(title, path), path);
             mExercises->setItemData(mExercises->count() - 1, path, Qt::ToolTipRole);
         }
         const int index = mExercises->findData(select);
@@ -168,7 +176,7 @@ void TraineePanel::addExercise(const QString& title, const QString& path) {
     int index = mExercises->findData(path);
     if (index < 0) {
         const QSignalBlocker block(mExercises);
-        mExercises->addItem(title, path);
+        mExercises->addItem(distinctTitle(title, path), path);
         index = mExercises->count() - 1;
         mExercises->setItemData(index, path, Qt::ToolTipRole);
     }

@@ -98,6 +98,8 @@ protected:
     bool event(QEvent* event) override;
 
 private:
+    /// `title`, or "title (in FOLDER)" when the list holds an exercise of that title already.
+    QString distinctTitle(const QString& title, const QString& path) const;
     State mState = State::Idle;
     QComboBox* mTrainees = nullptr;
     QComboBox* mExercises = nullptr;

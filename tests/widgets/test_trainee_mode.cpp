@@ -754,6 +754,12 @@ TEST(ExerciseDock, ABundleOpensAsAnExercise) {
     EXPECT_EQ(QFileInfo(imported).absolutePath(),
               QFileInfo(ExerciseController::importedExercisesFolder()).absoluteFilePath());
     EXPECT_TRUE(QFile::exists(QFileInfo(imported).absoluteDir().filePath(QStringLiteral("stomach_3970.off"))));
+    // The shipped trace of the same name is listed too: the copy is told apart by its folder.
+    auto* combo = window->traineePanel()->findChild<QComboBox*>(QStringLiteral("exerciseCombo"));
+    ASSERT_NE(combo, nullptr);
+    const QString name = QString::fromStdString(loadExercise(findResource("exercises/trace.json")).exercise->name);
+    EXPECT_NE(combo->findText(name), -1);
+    EXPECT_EQ(combo->currentText(), QStringLiteral("%1 (in exercises)").arg(name));
     const auto loaded = loadExercise(imported.toStdString());
     ASSERT_TRUE(loaded.exercise) << loaded.error();
     EXPECT_EQ(loaded.exercise->name, loadExercise(findResource("exercises/trace.json")).exercise->name);
