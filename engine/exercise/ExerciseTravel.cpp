@@ -1,23 +1,27 @@
 #include "engine/exercise/ExerciseTravel.h"
 
 #include "base/io/AtomicFile.h"
+#include "base/io/FileLimits.h"
+#include "base/io/InputFile.h"
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <system_error>
 
 namespace palpate {
 
 namespace {
 
-/// The whole file, or nullopt when it cannot be read.
-std::optional<std::string> readAll(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) return std::nullopt;
-    return bytes;
+/// What copyIntoFolder copies: a mesh or a preset, the larger limit of the two.
+constexpr InputKind kCopiedFile{"a file to copy beside the exercise", kMeshFile.maxBytes};
+
+/// Whether `target` holds exactly `bytes` (read through the bounded reader, never past their size).
+bool holdsBytes(const std::filesystem::path& target, const std::string& bytes) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(target, ec) || std::filesystem::file_size(target, ec) != bytes.size() || ec)
+        return false;
+    std::string ignored;
+    const auto there = readInputFile(target.string(), InputKind{"a file beside the exercise", bytes.size()}, ignored);
+    return there && *there == bytes;
 }
 
 /// Enough names to find a free one among copies of one file; more means something is wrong.
@@ -35,7 +39,7 @@ std::optional<PlacedFile> placeInFolder(const std::string& bytes, const std::str
         const std::string candidate = n == 1 ? name : stem + "-" + std::to_string(n) + extension;
         const fs::path target = fs::path(folder) / candidate;
         if (fs::exists(target, ec) || fs::is_symlink(target, ec)) {
-            if (fs::is_regular_file(target, ec) && readAll(target) == bytes) return PlacedFile{candidate, false};
+            if (holdsBytes(target, bytes)) return PlacedFile{candidate, false};
             continue;
         }
         if (const std::string problem = writeFileAtomically(target.string(), bytes); !problem.empty()) {
@@ -59,12 +63,12 @@ std::optional<std::string> copyIntoFolder(const std::string& file, const std::st
     // Already in the folder: its own copy.
     const fs::path there = fs::path(folder) / source.filename();
     if (fs::exists(there, ec) && fs::equivalent(source, there, ec)) return source.filename().string();
-    const std::optional<std::string> bytes = readAll(source);
+    std::string problem;
+    const std::optional<std::string> bytes = readInputFile(file, kCopiedFile, problem);
     if (!bytes) {
-        error = file + ": cannot be read to copy beside the exercise";
+        error = file + ": cannot be read to copy beside the exercise (" + problem + ")";
         return std::nullopt;
     }
-    std::string problem;
     const auto placed = placeInFolder(*bytes, source.filename().string(), folder, problem);
     if (!placed) {
         error = file + ": not copied beside the exercise: " + problem;

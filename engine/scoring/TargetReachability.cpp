@@ -229,13 +229,11 @@ namespace {
 std::optional<double> alongOrBeyond(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
     const std::size_t n = std::min(xs.size(), ys.size());
     if (n == 0) return std::nullopt;
-    if (n == 1) return x <= xs[0] ? std::optional<double>(ys[0]) : std::nullopt;
-    if (x <= xs[0]) return ys[0];
-    std::size_t i = 1;
-    while (i + 1 < n && xs[i] < x) ++i;
-    const double span = xs[i] - xs[i - 1];
-    if (!(span > 0.0)) return ys[i];
-    return ys[i - 1] + (ys[i] - ys[i - 1]) * (x - xs[i - 1]) / span;
+    if (x <= xs[n - 1]) return forceAt(ys, xs, x);  // along: the probe's own interpolation
+    if (n == 1) return std::nullopt;
+    const double span = xs[n - 1] - xs[n - 2];
+    if (!(span > 0.0)) return ys[n - 1];
+    return ys[n - 2] + (ys[n - 1] - ys[n - 2]) * (x - xs[n - 2]) / span;
 }
 
 /// The smallest x at which y (ascending in the main) reaches `level`, along or beyond the
