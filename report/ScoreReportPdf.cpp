@@ -138,6 +138,21 @@ public:
         }
         return words.join(QLatin1Char(' '));
     }
+    /// `font`, made smaller (to 70 % at most) until every word of the cells fits its column: a
+    /// header's word ("Abweichung" in a narrow column) is not broken between its letters.
+    QFont fittingFont(const QFont& font, const std::vector<Cell>& cells, const std::vector<double>& widths) const {
+        QFont fitted = font;
+        const double smallest = 0.7 * font.pointSizeF();
+        auto fits = [&] {
+            const QFontMetricsF fm = metrics(fitted);
+            for (std::size_t c = 0; c < cells.size() && c < widths.size(); ++c)
+                for (const QString& word : cells[c].text.split(QLatin1Char(' ')))
+                    if (fm.horizontalAdvance(word) > widths[c]) return false;
+            return true;
+        };
+        while (!fits() && fitted.pointSizeF() - 0.25 >= smallest) fitted.setPointSizeF(fitted.pointSizeF() - 0.25);
+        return fitted;
+    }
     double textHeight(const QFont& font, double width, const QString& text) const {
         if (text.isEmpty()) return 0.0;
         return metrics(font).boundingRect(QRectF(0, 0, width, 1e9), Qt::TextWordWrap, wrappable(font, width, text)).height();
@@ -200,7 +215,8 @@ public:
         };
         std::vector<Cell> header;
         for (const Column& c : columns) header.push_back({c.title, {}});
-        const double headerH = rowHeight(header, mBold);
+        const QFont headerFont = fittingFont(mBold, header, width);
+        const double headerH = rowHeight(header, headerFont);
         const double headingH = textHeight(mHeading, mPage.width(), heading) + metrics(mBody).height() * 0.3;
         double total = headingH + headerH;
         for (const auto& row : rows) total += rowHeight(row, mBody);
@@ -208,7 +224,7 @@ public:
         auto drawHeader = [&](const QString& title) {
             mY += drawText(mHeading, 0, mY, mPage.width(), title) + metrics(mBody).height() * 0.3;
             for (std::size_t c = 0; c < columns.size(); ++c)
-                drawText(mBold, left[c], mY + pad, width[c], header[c].text, columns[c].alignRight);
+                drawText(headerFont, left[c], mY + pad, width[c], header[c].text, columns[c].alignRight);
             mY += headerH;
             mPainter.setPen(QPen(Qt::black, mm(0.3)));
             mPainter.drawLine(QPointF(0, mY), QPointF(mPage.width(), mY));

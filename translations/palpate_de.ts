@@ -1315,10 +1315,6 @@
         <translation>%1: Ziel %2 lässt sich mit der Maus nicht halten: sein Fenster %3–%4 N liegt zwischen %5 N bei %6 mm und %7 N bei %8 mm Tiefe (eine Raststufe des Mausrads auseinander). Das Fenster so verbreitern, dass es einen der beiden Werte einschließt.</translation>
     </message>
     <message>
-        <source> (%1–%2 N is met between a third and two thirds of that depth)</source>
-        <translation> (%1–%2 N wird zwischen einem Drittel und zwei Dritteln dieser Tiefe erreicht)</translation>
-    </message>
-    <message>
         <source>%1: target %2 cannot be reached with the mouse: pressing %3 mm deep (the deepest) gives %4 N, below its window&apos;s %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.</source>
         <translation>%1: Ziel %2 ist mit der Maus nicht erreichbar: %3 mm tief gedrückt (am tiefsten) ergibt %4 N, unter den %5 N seines Fensters. Das Fenster auf höchstens %4 N senken%6 oder ein steiferes Gewebe-Preset wählen.</translation>
     </message>
@@ -1541,6 +1537,10 @@
     <message>
         <source>Exercise bundles (*.palpex)</source>
         <translation>Übungspakete (*.palpex)</translation>
+    </message>
+    <message>
+        <source> (%1–%2 N is met pressing at least two wheel steps past the default touch)</source>
+        <translation> (%1–%2 N werden mindestens zwei Mausradstufen tiefer als die Standardberührung erreicht)</translation>
     </message>
 </context>
 <context>

@@ -1315,10 +1315,6 @@
         <translation>%1: sasaran %2 tidak boleh ditahan dengan tetikus: tetingkapnya %3–%4 N terletak antara %5 N pada %6 mm dan %7 N pada kedalaman %8 mm (satu pusingan roda). Lebarkan tetingkap supaya merangkumi salah satunya.</translation>
     </message>
     <message>
-        <source> (%1–%2 N is met between a third and two thirds of that depth)</source>
-        <translation> (%1–%2 N dicapai antara satu pertiga dan dua pertiga kedalaman itu)</translation>
-    </message>
-    <message>
         <source>%1: target %2 cannot be reached with the mouse: pressing %3 mm deep (the deepest) gives %4 N, below its window&apos;s %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.</source>
         <translation>%1: sasaran %2 tidak boleh dicapai dengan tetikus: menekan sedalam %3 mm (paling dalam) memberi %4 N, di bawah %5 N tetingkapnya. Turunkan tetingkap kepada paling banyak %4 N%6, atau pilih praset tisu yang lebih keras.</translation>
     </message>
@@ -1541,6 +1537,10 @@
     <message>
         <source>Exercise bundles (*.palpex)</source>
         <translation>Berkas latihan (*.palpex)</translation>
+    </message>
+    <message>
+        <source> (%1–%2 N is met pressing at least two wheel steps past the default touch)</source>
+        <translation> (%1–%2 N dicapai dengan menekan sekurang-kurangnya dua langkah roda melepasi sentuhan lalai)</translation>
     </message>
 </context>
 <context>

@@ -1691,7 +1691,9 @@ void ExerciseEditorPanel::showProblems(const QString& meshFile) {
                                                   : tr("Not drawn in the viewport."));
 }
 
-TouchReach ExerciseEditorPanel::touchReach() { return TouchReach{Viewport::kMaxTouchDepthMm, Viewport::kTouchDepthStepMm}; }
+TouchReach ExerciseEditorPanel::touchReach() {
+    return TouchReach{Viewport::kMaxTouchDepthMm, Viewport::kTouchDepthStepMm, Viewport::kDefaultTouchDepthMm};
+}
 
 const TouchPresses* ExerciseEditorPanel::touchPresses(const QString& meshFile, const TissueMesh& mesh,
                                                       VertexId vertex) {
@@ -1744,9 +1746,10 @@ QStringList ExerciseEditorPanel::reachWarnings(const ExerciseGeometry& geometry,
             continue;
         }
         const auto suggested = comfortableWindow(*forces, touch);
-        const QString instead = suggested ? tr(" (%1–%2 N is met between a third and two thirds of that depth)")
-                                                .arg(n(suggested->minN), n(suggested->maxN))
-                                          : QString();
+        const QString instead = suggested
+                                    ? tr(" (%1–%2 N is met pressing at least two wheel steps past the default touch)")
+                                          .arg(n(suggested->minN), n(suggested->maxN))
+                                    : QString();
         out << tr("%1: target %2 cannot be reached with the mouse: pressing %3 mm deep (the deepest) gives %4 N, below "
                   "its window's %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.")
                    .arg(key).arg(i + 1)
@@ -1827,9 +1830,10 @@ QStringList ExerciseEditorPanel::bandWarnings(const ExerciseGeometry& geometry, 
         tooSoft << QString::number(i + 1);
     }
     if (!tooSoft.isEmpty()) {
-        const QString instead = suggested ? tr(" (%1–%2 N is met between a third and two thirds of that depth)")
-                                                .arg(n(suggested->minN), n(suggested->maxN))
-                                          : QString();
+        const QString instead = suggested
+                                    ? tr(" (%1–%2 N is met pressing at least two wheel steps past the default touch)")
+                                          .arg(n(suggested->minN), n(suggested->maxN))
+                                    : QString();
         out << tr("trace.force_min_n: the band cannot be reached with the mouse at path point %1: pressing %2 mm "
                   "deep (the deepest) gives as little as %3 N there, below the band's %4 N. Lower the band to at "
                   "most %3 N%5, or choose a stiffer tissue preset.")

@@ -9,17 +9,21 @@
 
 #include <QCoreApplication>
 #include <QFont>
+#include <QFontMetricsF>
+#include <QImage>
 #include <QLinearGradient>
+#include <QList>
 #include <QLocale>
 #include <QGuiApplication>
 #include <QPainter>
 #include <QPainterPath>
+#include <QRadialGradient>
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace palpate {
 
@@ -72,6 +76,126 @@ void paintSurfaceCircle(QPainter& painter, const ExerciseMarker& marker, const O
     painter.drawPath(path);
 }
 
+/// A lump inside the tissue, seen through the surface: a shaded ball at its centre and true size
+/// (its outline the sphere's silhouette for this camera), and a dashed line up to the surface
+/// point above it, so depth and size read at a glance. Drawn without a depth test on purpose.
+void paintBody(QPainter& painter, const ExerciseMarker& marker, const OrbitCamera& camera, const glm::vec2& size,
+               QColor colour) {
+    const auto centre = camera.projectToPixel(marker.bodyCentreMm, size);
+    if (!centre) return;
+    glm::vec3 u, v;
+    tangentFrame(glm::normalize(camera.eyeMm() - marker.bodyCentreMm), u, v);
+    const auto rim = camera.projectToPixel(marker.bodyCentreMm + float(marker.bodyRadiusMm) * u, size);
+    if (!rim) return;
+    const float radiusPx = std::max(3.0f, glm::length(*rim - *centre));
+    const QPointF c = toPoint(*centre);
+    if (const auto top = camera.projectToPixel(marker.positionMm, size)) {
+        painter.setPen(QPen(colour, 1.5, Qt::DotLine));
+        painter.drawLine(toPoint(*top), c);
+    }
+    QRadialGradient shade(c - QPointF(0.35 * radiusPx, 0.35 * radiusPx), 1.3 * radiusPx);
+    QColor light = colour.lighter(160), dark = colour.darker(160);
+    light.setAlphaF(0.75f * colour.alphaF());
+    dark.setAlphaF(0.55f * colour.alphaF());
+    shade.setColorAt(0.0, light);
+    shade.setColorAt(1.0, dark);
+    painter.setBrush(shade);
+    painter.setPen(QPen(colour, marker.selected ? 2.5 : 1.5));
+    painter.drawEllipse(c, radiusPx, radiusPx);
+}
+
+/// The heat map's dots for one camera and size, drawn once into an image kept until the camera,
+/// the size or the heat map changes: a fully examined organ has thousands of dots, and the window
+/// repaints at 60 Hz while the view stands still (drawn every frame they cost 5x the frame).
+struct HeatLayer {
+    glm::mat4 viewProjection{0.0f};
+    QSize sizePx;
+    qreal pixelRatio = 0.0;
+    double minN = 0.0, maxN = 0.0, checksum = 0.0;
+    std::size_t points = 0;
+    QImage image;
+};
+
+double heatChecksum(const std::vector<HeatPoint>& heat) {
+    double sum = 0.0;
+    for (const HeatPoint& h : heat)
+        sum += double(h.forceN) + double(h.positionMm.x + 2.0f * h.positionMm.y + 3.0f * h.positionMm.z);
+    return sum;
+}
+
+void drawHeatDots(QPainter& painter, const ExerciseMarkers& markers, const OrbitCamera& camera, const glm::vec2& size) {
+    // Batched by colour and size (whole pixels), each batch one drawPoints with a round pen,
+    // without antialiasing (the dots overlap).
+    const OrbitCamera::PixelProjection project(camera, size);
+    const glm::vec3 eye = camera.eyeMm();
+    std::map<std::pair<QRgb, int>, QList<QPointF>> batches;
+    for (const HeatPoint& h : markers.heat) {
+        if (glm::dot(h.normal, eye - h.positionMm) <= 0.0f) continue;  // only the side facing the camera
+        const auto centre = project(h.positionMm);
+        if (!centre) continue;
+        glm::vec3 u, v;
+        tangentFrame(h.normal, u, v);
+        const auto edge = project(h.positionMm + 1.6f * u);
+        const float radiusPx = edge ? std::clamp(glm::length(*edge - *centre), 1.5f, 12.0f) : 2.0f;
+        QColor colour = heatColour(h.forceN, markers.heatMinN, markers.heatMaxN);
+        colour.setAlphaF(0.8f);
+        batches[{colour.rgba(), int(std::lround(2.0f * radiusPx))}].append(toPoint(*centre));
+    }
+    painter.setRenderHint(QPainter::Antialiasing, false);
+    for (const auto& [key, points] : batches) {
+        painter.setPen(QPen(QColor::fromRgba(key.first), key.second, Qt::SolidLine, Qt::RoundCap));
+        painter.drawPoints(points.constData(), int(points.size()));
+    }
+}
+
+/// The heat map under everything else (no depth test here), and its scale, bottom right (the
+/// ring legend is bottom left).
+void paintHeat(QPainter& painter, const ExerciseMarkers& markers, const OrbitCamera& camera, QSize sizePx) {
+    const glm::vec2 size(float(sizePx.width()), float(sizePx.height()));
+    static thread_local HeatLayer layer;  // the GUI thread's, shared by its viewport's frames
+    const qreal ratio = painter.device() ? painter.device()->devicePixelRatioF() : 1.0;
+    const glm::mat4 viewProjection = camera.projection(size.x / std::max(size.y, 1.0f)) * camera.view();
+    const double checksum = heatChecksum(markers.heat);
+    if (layer.viewProjection != viewProjection || layer.sizePx != sizePx || layer.pixelRatio != ratio ||
+        layer.minN != markers.heatMinN || layer.maxN != markers.heatMaxN || layer.points != markers.heat.size() ||
+        layer.checksum != checksum) {
+        layer = HeatLayer{viewProjection,
+                          sizePx,
+                          ratio,
+                          markers.heatMinN,
+                          markers.heatMaxN,
+                          checksum,
+                          markers.heat.size(),
+                          QImage((QSizeF(sizePx) * ratio).toSize(), QImage::Format_ARGB32_Premultiplied)};
+        layer.image.setDevicePixelRatio(ratio);
+        layer.image.fill(Qt::transparent);
+        QPainter layerPainter(&layer.image);
+        drawHeatDots(layerPainter, markers, camera, size);
+    }
+    painter.drawImage(QPointF(0.0, 0.0), layer.image);
+
+    QFont small = QGuiApplication::font();
+    small.setPixelSize(11);
+    painter.setFont(small);
+    const QString label = QCoreApplication::translate("palpate::ExerciseMarkers",
+                                                      "examined from %1 N to %2 N (excessive)")
+                              .arg(QLocale().toString(markers.heatMinN, 'g', 3),
+                                   QLocale().toString(markers.heatMaxN, 'g', 3));
+    const double labelWidth = QFontMetricsF(small).horizontalAdvance(label);
+    const double width = std::max(140.0, labelWidth);
+    const QRectF bar(double(size.x) - 12.0 - width, double(size.y) - 34.0, 140.0, 10.0);
+    QLinearGradient gradient(bar.topLeft(), bar.topRight());
+    gradient.setColorAt(0.0, heatColour(markers.heatMinN, markers.heatMinN, markers.heatMaxN));
+    gradient.setColorAt(1.0, heatColour(markers.heatMaxN, markers.heatMinN, markers.heatMaxN));
+    painter.setBrush(gradient);
+    painter.setPen(QPen(QColor(0, 0, 0, 160), 1.0));
+    painter.drawRect(bar);
+    painter.setPen(QColor(0, 0, 0, 200));
+    painter.drawText(bar.bottomLeft() + QPointF(1, 15), label);
+    painter.setPen(Qt::white);
+    painter.drawText(bar.bottomLeft() + QPointF(0, 14), label);
+}
+
 }  // namespace
 
 QColor heatColour(double forceN, double minN, double maxN) { return coverageHeatColour(forceN, minN, maxN); }
@@ -121,6 +245,8 @@ ExerciseMarkers exerciseMarkers(const ExerciseGeometry& geometry, MarkerAudience
         m.label = exerciseText(s.label);
         m.radiusMm = s.radiusMm;
         m.selected = s.selected;
+        m.bodyRadiusMm = s.bodyRadiusMm;
+        m.bodyCentreMm = s.bodyCentreMm;
         out.markers.push_back(m);
     }
     return out;
@@ -132,42 +258,7 @@ void paintExerciseMarkers(QPainter& painter, const ExerciseMarkers& markers, con
     painter.setRenderHint(QPainter::Antialiasing, true);
     const glm::vec2 size(float(sizePx.width()), float(sizePx.height()));
 
-    if (!markers.heat.empty()) {
-        // Under everything else; only the side facing the camera (no depth test here).
-        painter.setPen(Qt::NoPen);
-        for (const HeatPoint& h : markers.heat) {
-            if (glm::dot(h.normal, camera.eyeMm() - h.positionMm) <= 0.0f) continue;
-            const auto centre = camera.projectToPixel(h.positionMm, size);
-            if (!centre) continue;
-            glm::vec3 u, v;
-            tangentFrame(h.normal, u, v);
-            const auto edge = camera.projectToPixel(h.positionMm + 1.6f * u, size);
-            const float radiusPx = edge ? std::clamp(glm::length(*edge - *centre), 1.5f, 12.0f) : 2.0f;
-            QColor colour = heatColour(h.forceN, markers.heatMinN, markers.heatMaxN);
-            colour.setAlphaF(0.8f);
-            painter.setBrush(colour);
-            painter.drawEllipse(toPoint(*centre), radiusPx, radiusPx);
-        }
-        // The scale, bottom left.
-        QFont small = QGuiApplication::font();
-        small.setPixelSize(11);
-        painter.setFont(small);
-        const QRectF bar(12.0, double(size.y) - 34.0, 140.0, 10.0);
-        QLinearGradient gradient(bar.topLeft(), bar.topRight());
-        gradient.setColorAt(0.0, heatColour(markers.heatMinN, markers.heatMinN, markers.heatMaxN));
-        gradient.setColorAt(1.0, heatColour(markers.heatMaxN, markers.heatMinN, markers.heatMaxN));
-        painter.setBrush(gradient);
-        painter.setPen(QPen(QColor(0, 0, 0, 160), 1.0));
-        painter.drawRect(bar);
-        const QString label = QCoreApplication::translate("palpate::ExerciseMarkers",
-                                                          "examined from %1 N to %2 N (excessive)")
-                                  .arg(QLocale().toString(markers.heatMinN, 'g', 3),
-                                       QLocale().toString(markers.heatMaxN, 'g', 3));
-        painter.setPen(QColor(0, 0, 0, 200));
-        painter.drawText(bar.bottomLeft() + QPointF(1, 15), label);
-        painter.setPen(Qt::white);
-        painter.drawText(bar.bottomLeft() + QPointF(0, 14), label);
-    }
+    if (!markers.heat.empty()) paintHeat(painter, markers, camera, sizePx);
 
     if (markers.pathMm.size() >= 2) {
         QPainterPath path;
@@ -199,6 +290,7 @@ void paintExerciseMarkers(QPainter& painter, const ExerciseMarkers& markers, con
         if (!centre) continue;
         QColor colour = exerciseMarkerColour(marker.kind);
         if (facesAway(marker, camera)) colour.setAlphaF(0.35f);
+        if (marker.bodyRadiusMm > 0.0) paintBody(painter, marker, camera, size, colour);
         if (marker.radiusMm > 0.0) paintSurfaceCircle(painter, marker, camera, size, colour);
         const float radiusPx = marker.selected ? kSelectedRadiusPx : kMarkerRadiusPx;
         painter.setPen(QPen(QColor(0, 0, 0, int(200 * colour.alphaF())), marker.selected ? 3.0 : 1.5));

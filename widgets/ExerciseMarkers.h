@@ -31,6 +31,10 @@ struct ExerciseMarker {
     QString label;           ///< drawn beside it ("1", "2", ...); may be empty
     double radiusMm = 0.0;   ///< > 0: a circle of this radius on the surface (tolerance, inclusion)
     bool selected = false;   ///< the one the instructor is editing: drawn larger
+    /// > 0: a sphere inside the tissue (a lump) drawn through the surface, joined to the marker by
+    /// a dashed line its depth long, so the instructor sees how deep and how large it is.
+    double bodyRadiusMm = 0.0;
+    glm::vec3 bodyCentreMm{0.0f};
 };
 
 /// One examined vertex of the coverage heat map (docs/scoring.md, "Coverage").

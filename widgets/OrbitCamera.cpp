@@ -127,10 +127,17 @@ glm::mat4 OrbitCamera::projection(float aspect) const {
 }
 
 std::optional<glm::vec2> OrbitCamera::projectToPixel(const glm::vec3& pointMm, const glm::vec2& sizePx) const {
-    const glm::vec4 clip = projection(sizePx.x / std::max(sizePx.y, 1.0f)) * view() * glm::vec4(pointMm, 1.0f);
+    return PixelProjection(*this, sizePx)(pointMm);
+}
+
+OrbitCamera::PixelProjection::PixelProjection(const OrbitCamera& camera, const glm::vec2& sizePx)
+    : mViewProjection(camera.projection(sizePx.x / std::max(sizePx.y, 1.0f)) * camera.view()), mSizePx(sizePx) {}
+
+std::optional<glm::vec2> OrbitCamera::PixelProjection::operator()(const glm::vec3& pointMm) const {
+    const glm::vec4 clip = mViewProjection * glm::vec4(pointMm, 1.0f);
     if (clip.w <= 1e-6f) return std::nullopt;
     const glm::vec2 ndc{clip.x / clip.w, clip.y / clip.w};
-    return glm::vec2{(ndc.x * 0.5f + 0.5f) * sizePx.x, (0.5f - ndc.y * 0.5f) * sizePx.y};
+    return glm::vec2{(ndc.x * 0.5f + 0.5f) * mSizePx.x, (0.5f - ndc.y * 0.5f) * mSizePx.y};
 }
 
 }  // namespace palpate

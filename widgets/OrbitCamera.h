@@ -48,6 +48,16 @@ public:
     /// Where a world point lands in a viewport of `sizePx` (origin top left, y down); nullopt when
     /// it is behind the near plane.
     std::optional<glm::vec2> projectToPixel(const glm::vec3& pointMm, const glm::vec2& sizePx) const;
+    /// projectToPixel for many points of one frame: the matrices are built once, not per point.
+    class PixelProjection {
+    public:
+        PixelProjection(const OrbitCamera& camera, const glm::vec2& sizePx);
+        std::optional<glm::vec2> operator()(const glm::vec3& pointMm) const;
+
+    private:
+        glm::mat4 mViewProjection;
+        glm::vec2 mSizePx;
+    };
     /// The inverse: the ray from the eye through `pixel` (same coordinates as projectToPixel; the
     /// centre of pixel (i, j) is (i + 0.5, j + 0.5)). The direction is normalised.
     struct Ray {

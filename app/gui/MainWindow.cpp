@@ -61,6 +61,16 @@ namespace palpate {
 
 namespace {
 
+/// `panel` in a frameless scroll area that resizes it: a dock of it can be shorter than the panel's
+/// own minimum, so that the window's docks fit a 1280x800 screen (the panel scrolls instead).
+QScrollArea* scrolled(QWidget* panel, QWidget* parent) {
+    auto* scroll = new QScrollArea(parent);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(panel);
+    return scroll;
+}
+
 bool isMeshFile(const QString& path) {
     const QString suffix = QFileInfo(path).suffix().toLower();
     return suffix == "obj" || suffix == "off" || suffix == "ply" || suffix == "stl" || suffix == "om";
@@ -167,7 +177,7 @@ void MainWindow::createDocks() {
     mDevicePanel = new DevicePanel(this);
     mDeviceDock = new QDockWidget(tr("Device"), this);
     mDeviceDock->setObjectName(QStringLiteral("deviceDock"));
-    mDeviceDock->setWidget(mDevicePanel);
+    mDeviceDock->setWidget(scrolled(mDevicePanel, this));
     addDockWidget(Qt::RightDockWidgetArea, mDeviceDock);
     tabifyDockWidget(mParameterDock, mDeviceDock);
     mParameterDock->raise();
@@ -751,10 +761,7 @@ void MainWindow::resumeLive() {
 
 void MainWindow::createExerciseDocks() {
     mTraineePanel = new TraineePanel(this);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(mTraineePanel);
+    QScrollArea* scroll = scrolled(mTraineePanel, this);
     // Wrap, never clip: the panel is laid out to the dock's width (its labels wrap), and the dock
     // is never narrower than what the panel needs beside its scroll bar.
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);  // TraineePanel::event keeps it wide enough
@@ -766,7 +773,7 @@ void MainWindow::createExerciseDocks() {
     mHistoryPanel = new HistoryPanel(this);
     mHistoryDock = new QDockWidget(tr("History"), this);
     mHistoryDock->setObjectName(QStringLiteral("historyDock"));
-    mHistoryDock->setWidget(mHistoryPanel);
+    mHistoryDock->setWidget(scrolled(mHistoryPanel, this));
     addDockWidget(Qt::LeftDockWidgetArea, mHistoryDock);
     tabifyDockWidget(mExerciseDock, mHistoryDock);
     mExerciseDock->raise();
@@ -905,13 +912,9 @@ void MainWindow::showEditorMarkers() {
 
 void MainWindow::createLodDock() {
     mLodPanel = new LodPanel(this);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(mLodPanel);
     mLodDock = new QDockWidget(tr("Level of Detail"), this);
     mLodDock->setObjectName(QStringLiteral("levelOfDetailDock"));
-    mLodDock->setWidget(scroll);
+    mLodDock->setWidget(scrolled(mLodPanel, this));
     addDockWidget(Qt::RightDockWidgetArea, mLodDock);
     tabifyDockWidget(mChartsDock, mLodDock);
     mParameterDock->raise();

@@ -2,6 +2,7 @@
 
 #include "app/gui/MainWindow.h"
 #include "engine/core/MeshGenerator.h"
+#include "widgets/ExerciseMarkers.h"
 #include "widgets/MeshViewport.h"
 
 #include <QApplication>
@@ -118,6 +119,7 @@ struct ViewportFacts {
     int samples = 0;
     double loopRateHz = 0.0;
     double loadAtEnd = -1.0;
+    std::size_t heatPoints = 0;
     std::size_t vertexCount = 0;
 };
 
@@ -142,9 +144,9 @@ int printResult(const FrameMeasurement& m, const ViewportFacts& facts, bool fail
     const double guiCpuMsPerFrame = (m.cpuAtEndS - m.cpuAtStartS) * 1e3 / double(frames);
     std::printf(
         "frames=%llu mean_frame_ms=%.2f p95_frame_ms=%.2f fps=%.1f gui_cpu_ms_per_frame=%.2f renderer=%s "
-        "samples=%d vertices=%zu load=%.2f\n",
+        "samples=%d vertices=%zu heat_points=%zu load=%.2f\n",
         static_cast<unsigned long long>(frames), meanMs, p95Ms, fps, guiCpuMsPerFrame,
-        qPrintable(rendererName(facts.kind)), facts.samples, facts.vertexCount, facts.loadAtEnd);
+        qPrintable(rendererName(facts.kind)), facts.samples, facts.vertexCount, facts.heatPoints, facts.loadAtEnd);
     std::printf("contact in %zu of %zu frames", m.contactPaints, m.paints);
     if (facts.kind == RendererKind::OpenGL && m.paints > 0) {
         const double perFrame = double(m.uploadedVertices) / double(m.paints);
@@ -157,9 +159,21 @@ int printResult(const FrameMeasurement& m, const ViewportFacts& facts, bool fail
     return 0;
 }
 
+/// A heat map over every vertex, its forces spread over the scale (as after a thorough examination).
+ExerciseMarkers wholeSurfaceHeat(const TissueMesh& mesh) {
+    ExerciseMarkers markers;
+    markers.heatMinN = 0.4;
+    markers.heatMaxN = 4.0;
+    const auto& rest = mesh.restPositionsMm();
+    const auto& normals = mesh.restNormals();
+    for (std::size_t v = 0; v < rest.size(); ++v)
+        markers.heat.push_back({rest[v], normals[v], float(0.4 + 3.6 * double(v % 97) / 96.0)});
+    return markers;
+}
+
 }  // namespace
 
-int runViewportBenchmark(const QString& secondsText, const QString& meshPath, RendererChoice renderer) {
+int runViewportBenchmark(const QString& secondsText, const QString& meshPath, RendererChoice renderer, bool heatMap) {
     bool ok = false;
     const double seconds = secondsText.toDouble(&ok);
     if (!ok || !(seconds > 0.0) || !std::isfinite(seconds)) {
@@ -170,6 +184,7 @@ int runViewportBenchmark(const QString& secondsText, const QString& meshPath, Re
     options.seconds = seconds;
     options.meshPath = meshPath;
     options.renderer = renderer;
+    options.heatMap = heatMap;
     return runViewportBenchmark(options);
 }
 
@@ -242,6 +257,8 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
                 if (window.session().view().contact) {
                     phase = Phase::Settling;
                     contactAtS = nowS;
+                    // Once the window is up (showing it sets the markers of its mode).
+                    if (options.heatMap && mesh) viewport->setExerciseMarkers(wholeSurfaceHeat(*mesh));
                 } else if (nowS > kMaxWaitForContactS) {
                     std::fprintf(stderr, "palpate: %s did not touch the mesh within %.0f s\n",
                                  qPrintable(options.deviceUri), kMaxWaitForContactS);
@@ -287,6 +304,7 @@ int runViewportBenchmark(const ViewportBenchmarkDef& options) {
     facts.loopRateHz = window.hapticRateHz();
     facts.loadAtEnd = loadAverage();
     facts.vertexCount = vertexCount;
+    facts.heatPoints = viewport->exerciseMarkers().heat.size();
     window.close();  // stops the haptic thread
     return printResult(m, facts, failed);
 }

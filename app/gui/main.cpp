@@ -16,6 +16,7 @@
 #include <QMessageBox>
 #include <QPointer>
 #include <QTabWidget>
+#include <QScreen>
 #include <QTimer>
 
 #include <sys/resource.h>
@@ -130,6 +131,9 @@ struct GuiCommandLine {
                        "pressing, count the frames painted for --seconds, print fps= and frame times, exit.")};
     QCommandLineOption seconds{QStringLiteral("seconds"), QStringLiteral("Length of --benchmark-viewport (default 5)."),
                                QStringLiteral("S"), QStringLiteral("5")};
+    QCommandLineOption heatMap{QStringLiteral("heat-map"),
+                               QStringLiteral("With --benchmark-viewport: draw a coverage heat map over every vertex, "
+                                              "as after a whole surface was examined.")};
     // Hidden, for screenshots of the Recorder dock: opens FILE in the dock and plays it at 1x.
     QCommandLineOption openRecording{QStringLiteral("open-recording"),
                                      QStringLiteral("Open a session recording in the Recorder dock and play it."),
@@ -157,7 +161,7 @@ struct GuiCommandLine {
         parser.addOption(noFifo);
         parser.addOptions({mesh, device, preset, software, openGl, screenshot, afterMs, ticks, headless, grab});
         parser.addOptions({exercise, trainee, mode, wholeWindow});
-        parser.addOptions({benchmark, seconds});
+        parser.addOptions({benchmark, seconds, heatMap});
         parser.addOption(openRecording);
         parser.addOption(showDialog);
         parser.addOption(showDock);
@@ -333,7 +337,10 @@ int saveTimedGrab(palpate::MainWindow& window, const QPointer<QWidget>& shownDia
 /// --open-recording, then the timed shot or the event loop. The exit code.
 int runShownWindow(palpate::MainWindow& window, const QCommandLineParser& parser, const GuiCommandLine& options,
                    const RunPlan& plan, const QString& deviceProblem) {
-    window.resize(kWindowWidthPx, kWindowHeightPx);
+    // The usual size, but never more than the screen offers (a 1280x800 laptop).
+    QSize size(kWindowWidthPx, kWindowHeightPx);
+    if (const QScreen* screen = window.screen()) size = size.boundedTo(screen->availableGeometry().size());
+    window.resize(size);
     window.show();
     if (plan.interactive && !deviceProblem.isEmpty()) {
         // Once the window is up, so that Preferences (behind this box) can be reached at once.
@@ -442,7 +449,8 @@ int runGui(int argc, char** argv) {
                           : parser.isSet(options.openGl) ? palpate::RendererChoice::OpenGL
                                                          : palpate::RendererChoice::Auto;
     if (parser.isSet(options.benchmark))
-        return palpate::runViewportBenchmark(parser.value(options.seconds), parser.value(options.mesh), renderer);
+        return palpate::runViewportBenchmark(parser.value(options.seconds), parser.value(options.mesh), renderer,
+                                             parser.isSet(options.heatMap));
 
     int usageExit = 0;
     const std::optional<RunPlan> plan = planRun(parser, options, noDisplay, usageExit);

@@ -57,6 +57,10 @@ struct SurfaceMarker {
     ViewText label;          ///< drawn beside it; may be empty
     double radiusMm = 0.0;   ///< > 0: a circle of this radius on the surface (tolerance, inclusion)
     bool selected = false;   ///< the one the instructor is editing
+    /// > 0: a sphere of this radius inside the tissue (a lump), centred at bodyCentreMm, drawn
+    /// through the surface (the instructor's see-through view).
+    double bodyRadiusMm = 0.0;
+    glm::vec3 bodyCentreMm{0.0f};
 };
 
 /// Who looks at the exercise: the instructor sees everything, the trainee not what is hidden.

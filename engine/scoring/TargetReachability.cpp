@@ -178,8 +178,12 @@ double roundTwoDigits(double value, bool up) {
 
 std::optional<ForceWindow> comfortableWindow(const std::vector<double>& forcesN, const TouchReach& touch) {
     const std::vector<double> depths = touch.depthsMm();
-    const double lo = forceAt(forcesN, depths, touch.maxDepthMm / 3.0);
-    const double hi = forceAt(forcesN, depths, 2.0 * touch.maxDepthMm / 3.0);
+    const double loDepthMm = std::max(touch.maxDepthMm / 3.0, touch.defaultDepthMm + 2.0 * touch.depthStepMm);
+    const double hiDepthMm = std::min(touch.maxDepthMm,
+                                      std::max(2.0 * touch.maxDepthMm / 3.0, loDepthMm + 2.0 * touch.depthStepMm));
+    if (!(hiDepthMm > loDepthMm)) return std::nullopt;
+    const double lo = forceAt(forcesN, depths, loDepthMm);
+    const double hi = forceAt(forcesN, depths, hiDepthMm);
     // Below a millinewton nothing is felt, and the editor's three decimals cannot hold it.
     if (!(lo >= 1e-3) || !(hi > lo)) return std::nullopt;
     ForceWindow w{roundTwoDigits(lo, true), roundTwoDigits(hi, false)};

@@ -30,6 +30,8 @@ class MouseDevice;
 struct TouchReach {
     double maxDepthMm = 0.0;
     double depthStepMm = 0.0;
+    /// The press a touch starts with before the wheel deepens it (0: not known).
+    double defaultDepthMm = 0.0;
     /// The depths the force is probed at, shallowest first.
     std::vector<double> depthsMm() const;
 };
@@ -93,9 +95,11 @@ struct TargetReach {
 /// Judges `target`'s window against forces probed at touch.depthsMm() (TouchForceProbe::forcesN).
 TargetReach judgeTarget(const PressTarget& target, const std::vector<double>& forcesN, const TouchReach& touch);
 
-/// A force window a trainee meets pressing between a third and two thirds of the deepest touch
-/// (forces probed at touch.depthsMm(), interpolated), its ends rounded inwards to two significant
-/// digits: the editor's window for a first target. nullopt when the tissue gives no force there.
+/// A force window a trainee meets pressing between a third and two thirds of the deepest touch,
+/// and at least two wheel steps deeper than the default press, so that a touch left at its
+/// default is clearly short of it and reaching it is a deliberate press (forces probed at
+/// touch.depthsMm(), interpolated), its ends rounded inwards to two significant digits: the
+/// editor's window for a first target. nullopt when the tissue gives no force there.
 struct ForceWindow {
     double minN = 0.0;
     double maxN = 0.0;

@@ -127,7 +127,7 @@ TEST(TargetReachability, AWindowIsJudgedAgainstTheForcesOfTheDepths) {
 }
 
 TEST(TargetReachability, AComfortableWindowIsMetBetweenAThirdAndTwoThirdsOfTheDeepestTouch) {
-    const TouchReach touch{6.0, 0.5};
+    const TouchReach touch{6.0, 0.5, 1.0};  // the default press (1 mm) two steps short of a third
     for (const char* preset : {"stomach_wall", "phantom_gel", "skin"}) {
         const ExerciseAssets a = exampleAssets("press_targets", preset);
         std::string error;
@@ -150,6 +150,38 @@ TEST(TargetReachability, AComfortableWindowIsMetBetweenAThirdAndTwoThirdsOfTheDe
     }
     // A tissue that gives nothing gets no window.
     EXPECT_FALSE(comfortableWindow(std::vector<double>(13, 0.0), touch));
+}
+
+// A window a touch meets at its default press, or one step deeper, is no exercise: the window
+// starts two wheel steps past the default press (and stays two steps wide), wherever the
+// default sits against a third of the deepest touch.
+TEST(TargetReachability, AComfortableWindowStartsTwoStepsDeeperThanTheDefaultPress) {
+    const ExerciseAssets a = exampleAssets("press_targets", "stomach_wall");
+    const TouchReach touch{10.0, 0.5, 3.0};  // touch mode's own depths
+    std::string error;
+    auto probe = TouchForceProbe::create(*a.mesh, a.preset, nullptr, touch, error);
+    ASSERT_TRUE(probe) << error;
+    const std::vector<double> f = probe->forcesN(a.geometry->targets().front().vertex);
+    const auto depths = touch.depthsMm();
+    const auto at = [&](double d) {
+        return f[std::size_t(std::find(depths.begin(), depths.end(), d) - depths.begin())];
+    };
+    const auto window = comfortableWindow(f, touch);
+    ASSERT_TRUE(window);
+    std::printf(
+        "[ figures  ] stomach wall: the default press gives %.3g N, one step deeper %.3g N; window %.3g to %.3g N\n",
+        at(3.0), at(3.5), window->minN, window->maxN);
+    EXPECT_GT(window->minN, at(3.5));
+    EXPECT_GE(window->minN, at(4.0));
+    EXPECT_LE(window->maxN, at(7.0));  // up to two thirds of the deepest press (6.7 mm)
+    // A default deep in the range pushes the window deeper still, never past the deepest press.
+    const TouchReach deepDefault{10.0, 0.5, 7.0};
+    const auto deeper = comfortableWindow(f, deepDefault);
+    ASSERT_TRUE(deeper);
+    EXPECT_GE(deeper->minN, at(8.0));
+    EXPECT_LE(deeper->maxN, at(10.0));
+    // No room for a window past the default: none.
+    EXPECT_FALSE(comfortableWindow(f, TouchReach{10.0, 0.5, 9.5}));
 }
 
 TEST(TargetReachability, EveryTargetOfAnExerciseIsJudged) {

@@ -13,6 +13,9 @@
 #include "widgets/ExerciseEditCommands.h"
 #include "widgets/ExerciseEditorPanel.h"
 #include "widgets/Viewport.h"
+#include "widgets/OrbitCamera.h"
+#include <QPainter>
+#include <glm/geometric.hpp>
 
 #include "engine/core/TissueMesh.h"
 #include "widgets/ParameterPanel.h"
@@ -1349,6 +1352,43 @@ TEST(ExerciseEditor, DetectionExercisesAreAuthoredByClickingLumps) {
     ASSERT_EQ(editor.lastMarkers.markers.size(), 2u);
     EXPECT_EQ(editor.lastMarkers.markers[0].positionMm, drawn.mesh->restPositionsMm()[picks[0]]);
     EXPECT_EQ(editor.lastMarkers.markers[1].kind, ExerciseMarker::Kind::Inclusion);
+    // And each lump inside the tissue, seen through it: a ball of its radius, its centre its depth
+    // plus its radius below the surface point, drawn over the picture where the surface hides it.
+    {
+        const ExerciseMarker& lump = editor.lastMarkers.markers[0];
+        const LumpDef& def = lumps[0];
+        EXPECT_EQ(lump.bodyRadiusMm, def.radiusMm);
+        EXPECT_NEAR(glm::distance(lump.bodyCentreMm, lump.positionMm), def.depthMm + def.radiusMm, 1e-3);
+        EXPECT_LT(glm::dot(lump.bodyCentreMm - lump.positionMm, lump.normal), 0.0f) << "below the surface";
+        OrbitCamera camera;
+        camera.reset(drawn.mesh->restPositionsMm());
+        const QSize size(400, 300);
+        const auto centrePx = camera.projectToPixel(lump.bodyCentreMm, glm::vec2(400.0f, 300.0f));
+        ASSERT_TRUE(centrePx);
+        auto paint = [&](const ExerciseMarkers& markers) {
+            QImage image(size, QImage::Format_ARGB32_Premultiplied);
+            image.fill(Qt::transparent);
+            QPainter painter(&image);
+            paintExerciseMarkers(painter, markers, camera, size);
+            painter.end();
+            return image;
+        };
+        ExerciseMarkers surfaceOnly = editor.lastMarkers;
+        surfaceOnly.markers[0].bodyRadiusMm = 0.0;
+        const QImage seeThrough = paint(editor.lastMarkers), surface = paint(surfaceOnly);
+        // The ball (and its line up to the surface) adds opaque pixels around the centre's projection.
+        int added = 0, nearCentre = 0;
+        const float mmPerPx = camera.mmPerPixelAtTarget(glm::vec2(400.0f, 300.0f));
+        const float reachPx = float(def.radiusMm + def.depthMm + def.radiusMm) / mmPerPx + 3.0f;
+        for (int y = 0; y < size.height(); ++y)
+            for (int x = 0; x < size.width(); ++x) {
+                if (seeThrough.pixelColor(x, y).alphaF() < surface.pixelColor(x, y).alphaF() + 0.2) continue;
+                ++added;
+                nearCentre += glm::distance(glm::vec2(float(x), float(y)), *centrePx) < reachPx ? 1 : 0;
+            }
+        EXPECT_GT(added, 20);
+        EXPECT_EQ(nearCentre, added);
+    }
 
     // The second lump's depth (columns: number, vertex, radius, depth, contrast): one step.
     auto* table = child<QTableWidget>(editor.panel, "detect_lumps.lumps");

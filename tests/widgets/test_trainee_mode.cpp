@@ -883,6 +883,12 @@ TEST(ExerciseDock, WrapsAndNeverClipsAt1280x800) {
     auto window = traineeWindow(dir, "exercises/detect_lumps.light.path");
     window->resize(1280, 800);
     window->setMode(MainWindow::Mode::Trainee);
+    // The window itself fits the screen: its docks scroll rather than push it taller, in either mode.
+    EXPECT_LE(window->height(), 800) << "trainee: the docks need " << window->minimumSizeHint().height() << " px";
+    window->setMode(MainWindow::Mode::Instructor);
+    window->resize(1280, 800);
+    EXPECT_LE(window->height(), 800) << "instructor: the docks need " << window->minimumSizeHint().height() << " px";
+    window->setMode(MainWindow::Mode::Trainee);
     ASSERT_EQ(window->exercises().addTrainee(QStringLiteral("Eli")), QString());
     ASSERT_EQ(window->exercises().addExerciseFile(resource("exercises/detect_lumps.json")), QString());
     ASSERT_EQ(window->exercises().start(), QString());

@@ -176,6 +176,10 @@ TEST_F(Translations, TheScoreReportPdfIsGerman) {
         text.contains(QStringLiteral("Punktzahl: %1 / 100").arg(QLocale(QStringLiteral("de")).toString(score, 'f', 1))))
         << text.toStdString();
     EXPECT_FALSE(text.contains(QStringLiteral("Score:"))) << text.toStdString();
+    // Narrow columns' German headers stay whole words (the header's font shrinks to fit), where
+    // they used to break between letters ("Abweichu ng").
+    for (const char* header : {"Abweichung", "Teilpunktzahl", "Kraftfenster"})
+        EXPECT_TRUE(text.contains(QString::fromUtf8(header))) << header << " in " << text.toStdString();
     EXPECT_FALSE(text.contains(QStringLiteral("Trainee:"))) << text.toStdString();
     if (const QByteArray shots = qgetenv("PALPATE_SHOT_DIR"); !shots.isEmpty())
         QFile::copy(pdf, QString::fromLocal8Bit(shots) + QStringLiteral("/bericht.pdf"));

@@ -392,6 +392,8 @@ public:
             m.positionMm = lumps[i].surfaceMm;
             m.normal = normalOf(geometry, lumps[i].vertex);
             m.radiusMm = lumps[i].def.radiusMm;
+            m.bodyRadiusMm = lumps[i].def.radiusMm;
+            m.bodyCentreMm = lumps[i].centreMm;
             m.label = ViewText{PALPATE_TRANSLATE_NOOP("palpate::Exercises", "lump %1, %2 mm deep")}
                           .whole(double(i + 1))
                           .fixed(lumps[i].def.depthMm, 1);
