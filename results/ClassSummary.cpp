@@ -1,5 +1,7 @@
 #include "results/ClassSummary.h"
 
+#include "base/io/CsvField.h"
+
 #include "results/LearningCurve.h"
 #include "engine/exercise/ExerciseFile.h"
 #include "engine/scoring/Proficiency.h"
@@ -70,14 +72,17 @@ std::vector<ClassRow> classSummary(const std::vector<ResultRecord>& results, con
 }
 
 QString classSummaryCsv(const std::vector<ClassRow>& rows) {
-    const auto field = [](QString s) {
-        if (!s.contains(QLatin1Char(',')) && !s.contains(QLatin1Char('"')) && !s.contains(QLatin1Char('\n'))) return s;
-        return QLatin1Char('"') + s.replace(QLatin1Char('"'), QStringLiteral("\"\"")) + QLatin1Char('"');
-    };
+    const auto field = [](const QString& s) { return QString::fromStdString(csvTextField(s.toStdString())); };
     QString out = QStringLiteral("class,trainee,exercise,sessions,latest_score,latest_time,best_score,verdict,note\n");
     for (const ClassRow& r : rows)
-        out += QStringList{field(r.className), field(r.trainee), field(r.exercise), QString::number(r.sessions), QString::number(r.latestScore),
-                           r.latestUtc.toString(Qt::ISODate), QString::number(r.bestScore), r.verdict,
+        out += QStringList{field(r.className),
+                           field(r.trainee),
+                           field(r.exercise),
+                           QString::number(r.sessions),
+                           QString::number(r.latestScore),
+                           r.latestUtc.toString(Qt::ISODate),
+                           QString::number(r.bestScore),
+                           field(r.verdict),
                            field(r.standardNote)}
                    .join(QLatin1Char(',')) +
                QLatin1Char('\n');

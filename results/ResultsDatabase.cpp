@@ -1,5 +1,7 @@
 #include "results/ResultsDatabase.h"
 
+#include "results/ServerConnectOptions.h"
+
 #include "results/ServerLocation.h"
 
 #include <QDir>
@@ -98,9 +100,20 @@ QDateTime fromIsoUtc(const QString& s) {
     return t.toUTC();
 }
 
+/// Begins a transaction that writes. On SQLite it takes the write lock at once (BEGIN IMMEDIATE,
+/// waiting up to the busy timeout for another writer): a deferred BEGIN that reads first and
+/// writes later fails at once with "database is locked" when another process wrote meanwhile.
+constexpr int kBusyTimeoutMs = 15000;
+
+bool beginWrite(QSqlDatabase& db) {
+    if (db.driverName() != QLatin1String("QSQLITE")) return db.transaction();
+    QSqlQuery q(db);
+    return q.exec(QStringLiteral("BEGIN IMMEDIATE"));
+}
+
 /// Runs statements in one transaction; the first failure rolls back and is returned.
 QString runInTransaction(QSqlDatabase& db, const QStringList& statements) {
-    if (!db.transaction()) return db.lastError().text();
+    if (!beginWrite(db)) return db.lastError().text();
     QSqlQuery q(db);
     for (const QString& statement : statements)
         if (!q.exec(statement)) {
@@ -214,6 +227,9 @@ bool ResultsDatabase::open(const QString& path, QString* error) {
 
     mDb = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), mConnection);
     mDb.setDatabaseName(path);
+    // The window's uploader and command-line runs share one store: a writer waits for another
+    // (up to kBusyTimeoutMs) instead of failing with "database is locked".
+    mDb.setConnectOptions(QStringLiteral("QSQLITE_BUSY_TIMEOUT=%1").arg(kBusyTimeoutMs));
     if (!mDb.open()) {
         const QString why = mDb.lastError().text();
         close();
@@ -231,6 +247,8 @@ bool ResultsDatabase::open(const QString& path, QString* error) {
         }
         version = q.value(0).toInt();
         // Durable commits (a write that returned survives a crash) and the trainee references.
+        // Write-ahead logging: readers never wait for a writer, and writers queue on the lock.
+        q.exec(QStringLiteral("PRAGMA journal_mode = WAL"));
         q.exec(QStringLiteral("PRAGMA synchronous = FULL"));
         q.exec(QStringLiteral("PRAGMA foreign_keys = ON"));
     }
@@ -249,8 +267,9 @@ bool ResultsDatabase::open(const QString& path, QString* error) {
 
 bool ResultsDatabase::openServer(const QString& location, QString* error) {
     const QUrl url(location);
-    // The URL is shown in messages: never with a password (there should be none to show).
-    mPath = url.toString(QUrl::RemovePassword);
+    // The URL is shown in messages: never with a password, and its options only once they are
+    // known to hold none.
+    mPath = url.toString(QUrl::RemovePassword | QUrl::RemoveQuery);
     if (!url.isValid() || url.host().isEmpty())
         return fail(tr("is not a PostgreSQL URL (postgresql://[user@]host[:port]/database)"), error);
     if (!url.password().isEmpty())
@@ -262,25 +281,18 @@ bool ResultsDatabase::openServer(const QString& location, QString* error) {
         return fail(tr("names no database (postgresql://host/database)"), error);
     if (!QSqlDatabase::isDriverAvailable(QStringLiteral("QPSQL")))
         return fail(tr("the Qt PostgreSQL driver (QPSQL, Debian package libqt6sql6-psql) is not installed"), error);
-    // libpq's own options from the URL's query (sslmode, sslrootcert, ...); TLS when the server
-    // offers it and a short wait when it is away, unless the URL says otherwise.
-    QStringList options;
-    bool sslmode = false, timeout = false;
-    for (const auto& [key, value] : QUrlQuery(url).queryItems(QUrl::FullyDecoded)) {
-        if (key.contains(QLatin1Char(';')) || value.contains(QLatin1Char(';')))
-            return fail(tr("option %1 is not a libpq option").arg(key), error);
-        options << key + QLatin1Char('=') + value;
-        sslmode |= key == QLatin1String("sslmode");
-        timeout |= key == QLatin1String("connect_timeout");
-    }
-    if (!sslmode) options << QStringLiteral("sslmode=prefer");
-    if (!timeout) options << QStringLiteral("connect_timeout=5");
+    // libpq's own options from the URL's query (sslmode, sslrootcert, ...), each quoted; TLS when
+    // the server offers it and a short wait when it is away, unless the URL says otherwise.
+    QString optionError;
+    const QString options = serverConnectOptions(url, optionError);
+    if (!optionError.isEmpty()) return fail(optionError, error);
+    mPath = url.toString(QUrl::RemovePassword);
     mDb = QSqlDatabase::addDatabase(QStringLiteral("QPSQL"), mConnection);
     mDb.setHostName(url.host());
     if (url.port() > 0) mDb.setPort(url.port());
     mDb.setDatabaseName(database);
     if (!url.userName().isEmpty()) mDb.setUserName(url.userName());
-    mDb.setConnectOptions(options.join(QLatin1Char(';')));
+    mDb.setConnectOptions(options);
     if (!mDb.open()) {
         const QString why = mDb.lastError().text().trimmed();
         close();
@@ -420,7 +432,7 @@ bool ResultsDatabase::migrate(int from, QString* error) {
 }
 
 QString ResultsDatabase::migrateV4ToV5() {
-    if (!mDb.transaction()) return mDb.lastError().text();
+    if (!beginWrite(mDb)) return mDb.lastError().text();
     QString why;
     {
         QSqlQuery q(mDb);
@@ -451,7 +463,7 @@ QString ResultsDatabase::migrateV4ToV5() {
 }
 
 QString ResultsDatabase::migrateV2ToV3() {
-    if (!mDb.transaction()) return mDb.lastError().text();
+    if (!beginWrite(mDb)) return mDb.lastError().text();
     QString why;
     {
         QSqlQuery q(mDb);
@@ -516,7 +528,7 @@ qint64 ResultsDatabase::addTrainee(const QString& name, QString* error) {
     const QString trimmed = name.trimmed();
     if (!isOpen()) return fail(tr("not open"), error), -1;
     if (trimmed.isEmpty()) return fail(tr("a trainee needs a name"), error), -1;
-    if (!mDb.transaction()) return fail(mDb.lastError().text(), error), -1;
+    if (!beginWrite(mDb)) return fail(mDb.lastError().text(), error), -1;
     qint64 id = -1;
     QString why;
     {
@@ -594,7 +606,7 @@ qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, c
                                                   .toJson(QJsonDocument::Compact));
     const QString rubric = QString::fromUtf8(QJsonDocument(all.value(QStringLiteral("rubric")).toObject())
                                                  .toJson(QJsonDocument::Compact));
-    if (!mDb.transaction()) return fail(mDb.lastError().text(), error), -1;
+    if (!beginWrite(mDb)) return fail(mDb.lastError().text(), error), -1;
     qint64 id = -1;
     QString why;
     {
@@ -755,7 +767,7 @@ QString ResultsDatabase::staircase(qint64 traineeId, const QString& exerciseKey)
 bool ResultsDatabase::putStaircase(qint64 traineeId, const QString& exerciseKey, const QString& stateJson,
                                    QString* error) {
     if (!isOpen()) return fail(tr("not open"), error);
-    if (!mDb.transaction()) return fail(mDb.lastError().text(), error);
+    if (!beginWrite(mDb)) return fail(mDb.lastError().text(), error);
     QString why;
     {
         QSqlQuery q(mDb);

@@ -56,16 +56,37 @@ bool needsServer(ResultsDatabase& db, QString* error) {
     return false;
 }
 
-/// The login role must exist: the administrator makes it (with its password), not Palpate. Its
-/// name goes into SQL text: plain names only.
-QString roleMissing(ResultsDatabase& db, const QString& role) {
+/// The role must be a plain login role the administrator made (with its password), not Palpate:
+/// not a built-in (pg_*) or group role, not one that administers the server (superuser, creates
+/// roles or databases, replicates, bypasses row security), not the database's owner or the role
+/// granting. Its name goes into SQL text: plain names only. "" or why not.
+QString roleRefused(ResultsDatabase& db, const QString& role) {
     static const QRegularExpression plain(QStringLiteral("^[A-Za-z_][A-Za-z0-9_.@-]{0,62}$"));
     if (!plain.match(role).hasMatch())
         return Tr::tr("role name \"%1\" is refused: letters, digits, _ . @ - only, starting with a letter or _").arg(role);
+    if (role.startsWith(QLatin1String("pg_"), Qt::CaseInsensitive) || role == QLatin1String(kWorkstationGroupRole) ||
+        role == QLatin1String(kInstructorGroupRole))
+        return Tr::tr(
+                   "role %1 is refused: it is a built-in or group role, not a workstation's or an instructor's login "
+                   "(CREATE ROLE name LOGIN makes one)")
+            .arg(role);
+    const QString name = db.quotedText(role);
     QStringList check;
-    check << QStringLiteral("DO $$ BEGIN IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = %1) THEN"
-                            " RAISE EXCEPTION 'no role %2 on this server (CREATE ROLE ... LOGIN first)'; END IF; END $$")
-                 .arg(db.quotedText(role), role);
+    check << QStringLiteral(
+                 "DO $$ DECLARE r pg_roles%ROWTYPE; BEGIN"
+                 " SELECT * INTO r FROM pg_roles WHERE rolname = %1;"
+                 " IF NOT FOUND THEN RAISE EXCEPTION 'no role %2 on this server (CREATE ROLE ... LOGIN first)'; END IF;"
+                 " IF NOT r.rolcanlogin THEN RAISE EXCEPTION 'role %2 is refused: it cannot log in (a group role?);"
+                 " a workstation or an instructor is a login role (CREATE ROLE %2 LOGIN)'; END IF;"
+                 " IF r.rolsuper OR r.rolcreaterole OR r.rolcreatedb OR r.rolreplication OR r.rolbypassrls THEN"
+                 " RAISE EXCEPTION 'role %2 is refused: it administers the server (superuser, creates roles or"
+                 " databases, replicates or bypasses row security); give the workstation or instructor a plain"
+                 " login role'; END IF;"
+                 " IF r.rolname = current_user OR r.oid = (SELECT datdba FROM pg_database WHERE datname ="
+                 " current_database()) THEN RAISE EXCEPTION 'role %2 is refused: it owns the results database or"
+                 " is the role granting; give the workstation or instructor a login role of its own'; END IF;"
+                 " END $$")
+                 .arg(name, role);
     QString error;
     return db.runStatements(check, &error) ? QString() : error;
 }
@@ -92,8 +113,8 @@ namespace {
 /// Before a role's kind changes: a server, a role it has, and the group roles and policies in place.
 bool readyToChange(ResultsDatabase& server, const QString& role, QString* error) {
     if (!needsServer(server, error)) return false;
-    if (const QString missing = roleMissing(server, role); !missing.isEmpty()) {
-        if (error) *error = missing;
+    if (const QString refused = roleRefused(server, role); !refused.isEmpty()) {
+        if (error) *error = refused;
         return false;
     }
     return secureResultsServer(server, error);

@@ -5154,10 +5154,6 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <translation>der Qt-PostgreSQL-Treiber (QPSQL, Debian-Paket libqt6sql6-psql) ist nicht installiert</translation>
     </message>
     <message>
-        <source>option %1 is not a libpq option</source>
-        <translation>Option %1 ist keine libpq-Option</translation>
-    </message>
-    <message>
         <source>cannot connect: %1</source>
         <translation>keine Verbindung: %1</translation>
     </message>
@@ -5213,6 +5209,18 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>the server already has a trainee of that name in another class</source>
         <translation>der Server hat bereits einen Lernenden dieses Namens in einer anderen Klasse</translation>
     </message>
+    <message>
+        <source>option &apos;%1&apos; is not accepted in the URL (who connects and where come from the URL&apos;s own parts; docs/results-store.md lists the options)</source>
+        <translation>Option &apos;%1&apos; wird in der URL nicht angenommen (wer sich verbindet und wohin, ergibt sich aus den eigenen Teilen der URL; docs/results-store.md nennt die Optionen)</translation>
+    </message>
+    <message>
+        <source>option &apos;%1&apos; has a value libpq cannot take (a &apos;;&apos; or a NUL)</source>
+        <translation>Option &apos;%1&apos; hat einen Wert, den libpq nicht annehmen kann (ein &apos;;&apos; oder ein NUL)</translation>
+    </message>
+    <message>
+        <source>connect_timeout must be 1 to %1 seconds (0 would wait for ever)</source>
+        <translation>connect_timeout muss 1 bis %1 Sekunden sein (0 würde ewig warten)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ResultsRoles</name>
@@ -5227,6 +5235,10 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
     <message>
         <source>a workstation needs a class (--class NAME)</source>
         <translation>ein Arbeitsplatz braucht eine Klasse (--class NAME)</translation>
+    </message>
+    <message>
+        <source>role %1 is refused: it is a built-in or group role, not a workstation&apos;s or an instructor&apos;s login (CREATE ROLE name LOGIN makes one)</source>
+        <translation>Rolle %1 wird abgelehnt: Sie ist eine eingebaute oder Gruppenrolle, keine Anmeldung eines Arbeitsplatzes oder einer Lehrkraft (CREATE ROLE name LOGIN legt eine an)</translation>
     </message>
 </context>
 <context>

@@ -5150,10 +5150,6 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <translation>pemacu PostgreSQL Qt (QPSQL, pakej Debian libqt6sql6-psql) tidak dipasang</translation>
     </message>
     <message>
-        <source>option %1 is not a libpq option</source>
-        <translation>pilihan %1 bukan pilihan libpq</translation>
-    </message>
-    <message>
         <source>cannot connect: %1</source>
         <translation>tidak dapat bersambung: %1</translation>
     </message>
@@ -5209,6 +5205,18 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>the server already has a trainee of that name in another class</source>
         <translation>pelayan sudah mempunyai pelatih bernama itu dalam kelas lain</translation>
     </message>
+    <message>
+        <source>option &apos;%1&apos; is not accepted in the URL (who connects and where come from the URL&apos;s own parts; docs/results-store.md lists the options)</source>
+        <translation>pilihan &apos;%1&apos; tidak diterima dalam URL (siapa yang bersambung dan ke mana datang daripada bahagian URL itu sendiri; docs/results-store.md menyenaraikan pilihan)</translation>
+    </message>
+    <message>
+        <source>option &apos;%1&apos; has a value libpq cannot take (a &apos;;&apos; or a NUL)</source>
+        <translation>pilihan &apos;%1&apos; mempunyai nilai yang tidak dapat diterima oleh libpq (&apos;;&apos; atau NUL)</translation>
+    </message>
+    <message>
+        <source>connect_timeout must be 1 to %1 seconds (0 would wait for ever)</source>
+        <translation>connect_timeout mestilah 1 hingga %1 saat (0 akan menunggu selama-lamanya)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ResultsRoles</name>
@@ -5223,6 +5231,10 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
     <message>
         <source>a workstation needs a class (--class NAME)</source>
         <translation>stesen kerja memerlukan kelas (--class NAME)</translation>
+    </message>
+    <message>
+        <source>role %1 is refused: it is a built-in or group role, not a workstation&apos;s or an instructor&apos;s login (CREATE ROLE name LOGIN makes one)</source>
+        <translation>peranan %1 ditolak: ia peranan terbina dalam atau peranan kumpulan, bukan log masuk stesen kerja atau pengajar (CREATE ROLE name LOGIN membuatnya)</translation>
     </message>
 </context>
 <context>

@@ -305,7 +305,20 @@ void paintExerciseMarkers(QPainter& painter, const ExerciseMarkers& markers, con
             painter.drawEllipse(toPoint(*centre), radiusPx, radiusPx);
         }
         if (!marker.label.isEmpty()) {
-            const QPointF at = toPoint(*centre) + QPointF(radiusPx + 3.0, -radiusPx - 2.0);
+            // Beside the marker, on the side away from its lump (never across the ball) and
+            // inside the viewport.
+            const double textWidth = QFontMetricsF(font).horizontalAdvance(marker.label);
+            glm::vec2 away(1.0f, -1.0f);
+            if (marker.bodyRadiusMm > 0.0)
+                if (const auto body = camera.projectToPixel(marker.bodyCentreMm, size)) {
+                    const glm::vec2 towards = *body - *centre;
+                    away = {towards.x > 0.0f ? -1.0f : 1.0f, towards.y > 0.0f ? -1.0f : 1.0f};
+                }
+            if (away.x > 0.0f && centre->x + radiusPx + 3.0f + float(textWidth) > size.x) away.x = -1.0f;
+            if (away.x < 0.0f && centre->x - radiusPx - 3.0f - float(textWidth) < 0.0f) away.x = 1.0f;
+            const double x = away.x > 0.0f ? radiusPx + 3.0 : -radiusPx - 3.0 - textWidth;
+            const double y = away.y < 0.0f ? -radiusPx - 2.0 : radiusPx + 12.0;
+            const QPointF at = toPoint(*centre) + QPointF(x, y);
             painter.setPen(QColor(0, 0, 0, int(220 * colour.alphaF())));
             painter.drawText(at + QPointF(1, 1), marker.label);
             painter.setPen(colour);

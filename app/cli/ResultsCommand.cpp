@@ -3,6 +3,9 @@
 // results that the server has not acknowledged (local first: nothing is lost while it is away).
 #include "app/cli/Commands.h"
 
+#include "base/io/CsvField.h"
+#include "base/io/TerminalText.h"
+
 #include <iostream>
 
 #ifndef PALPATE_HAVE_CHARTS
@@ -60,12 +63,10 @@ bool openExisting(ResultsDatabase& db, const std::string& location, const char* 
 
 std::string text(const QString& s) { return s.toStdString(); }
 
-std::string csvField(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string quoted = "\"";
-    for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return quoted + "\"";
-}
+std::string csvField(const std::string& s) { return csvTextField(s); }
+
+/// A name as the terminal shows it: its control characters escaped (TerminalText.h).
+std::string shown(const QString& s) { return terminalSafe(s.toStdString()); }
 
 int listCommand(const Given& args) {
     ResultsDatabase db;
@@ -95,9 +96,9 @@ int listCommand(const Given& args) {
     if (db.isServer()) std::cout << text(db.path()) << " (" << text(db.connectionDescription()) << ")\n";
     if (results.empty()) std::cout << "no results in " << text(db.path()) << "\n";
     for (const ResultRecord& r : results)
-        std::cout << text(r.startedUtc.toString(Qt::ISODate)) << "  " << std::left << std::setw(16) << text(r.traineeName)
-                  << std::setw(28) << text(r.exerciseName) << std::right << std::fixed << std::setprecision(1)
-                  << std::setw(6) << r.score << "  " << text(outcomeKey(r.outcome))
+        std::cout << text(r.startedUtc.toString(Qt::ISODate)) << "  " << std::left << std::setw(16)
+                  << shown(r.traineeName) << std::setw(28) << shown(r.exerciseName) << std::right << std::fixed
+                  << std::setprecision(1) << std::setw(6) << r.score << "  " << text(outcomeKey(r.outcome))
                   << (db.isServer() || !r.syncedUtc.isEmpty() ? "" : "  (waiting for the server)") << "\n";
     return 0;
 }
@@ -172,8 +173,8 @@ int classCommand(const Given& args) {
     }
     if (rows.empty()) std::cout << "no trainee has a scored session in " << text(db.path()) << "\n";
     for (const ClassRow& r : rows)
-        std::cout << std::left << std::setw(8) << (r.className.isEmpty() ? std::string("-") : text(r.className))
-                  << std::setw(16) << text(r.trainee) << std::setw(28) << text(r.exercise) << std::right
+        std::cout << std::left << std::setw(8) << (r.className.isEmpty() ? std::string("-") : shown(r.className))
+                  << std::setw(16) << shown(r.trainee) << std::setw(28) << shown(r.exercise) << std::right
                   << std::setw(4) << r.sessions << std::fixed << std::setprecision(1) << std::setw(8) << r.latestScore
                   << std::setw(8) << r.bestScore << "  " << text(r.verdict)
                   << (r.standardNote.isEmpty() ? "" : " (" + text(r.standardNote) + ")") << "\n";

@@ -3,6 +3,7 @@
 // the learning curve against the experts' pass marks (with --png a chart), the staircase's state.
 // Also the proficiency object `palpate-cli score --db --trainee` adds to its JSON.
 #include "app/cli/Commands.h"
+#include "base/io/TerminalText.h"
 #include "base/resources/ShippedResources.h"
 #include "engine/exercise/ExerciseFile.h"
 #include "engine/exercise/RecordedExercise.h"
@@ -128,7 +129,7 @@ int listCommand(const Given& args) {
     }
     if (list.empty()) std::cout << "no trainees in " << db.path().toStdString() << "\n";
     for (const Json& t : list)
-        std::cout << t["name"].get<std::string>() << ": " << t["sessions"].get<int>() << " sessions ("
+        std::cout << terminalSafe(t["name"].get<std::string>()) << ": " << t["sessions"].get<int>() << " sessions ("
                   << t["expert_sessions"].get<int>() << " expert)\n";
     return 0;
 }
@@ -173,8 +174,9 @@ int addSessionCommand(const Given& args) {
                       {"staircase", session.staircase}};
     if (args.flag("json")) std::cout << out.dump(2) << "\n";
     else
-        std::cout << "stored session " << session.resultId << " of '" << session.exerciseName << "' for "
-                  << *args.option("trainee") << (expert ? " (expert)" : "") << ": score " << report.score << "\n";
+        std::cout << "stored session " << session.resultId << " of '" << terminalSafe(session.exerciseName) << "' for "
+                  << terminalSafe(*args.option("trainee")) << (expert ? " (expert)" : "") << ": score " << report.score
+                  << "\n";
     return 0;
 }
 
@@ -261,7 +263,8 @@ int curveCommand(const Given& args) {
         std::cout << out.dump(2) << "\n";
         return 0;
     }
-    std::cout << *args.option("trainee") << ", " << exercise->name << ": " << sessions.size() << " sessions\n";
+    std::cout << terminalSafe(*args.option("trainee")) << ", " << terminalSafe(exercise->name) << ": "
+              << sessions.size() << " sessions\n";
     if (!standard.valid()) std::cout << standard.problem << "\n";
     else
         for (const MetricStandard& m : standard.metrics)
@@ -322,10 +325,11 @@ int staircaseCommand(const Given& args) {
                       {"estimate", optionalJson(s->thresholdEstimate())}};
     if (args.flag("json")) std::cout << out.dump(2) << "\n";
     else
-        std::cout << *args.option("trainee") << ", " << exercise->name << ": " << staircaseParameterName(s->def().parameter)
-                  << " level " << s->level() << " after " << s->history().size() << " trials, "
-                  << s->reversals().size() << " reversals, estimate "
-                  << (s->thresholdEstimate() ? std::to_string(*s->thresholdEstimate()) : std::string("none yet")) << "\n";
+        std::cout << terminalSafe(*args.option("trainee")) << ", " << terminalSafe(exercise->name) << ": "
+                  << staircaseParameterName(s->def().parameter) << " level " << s->level() << " after "
+                  << s->history().size() << " trials, " << s->reversals().size() << " reversals, estimate "
+                  << (s->thresholdEstimate() ? std::to_string(*s->thresholdEstimate()) : std::string("none yet"))
+                  << "\n";
     return 0;
 }
 

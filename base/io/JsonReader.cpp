@@ -109,9 +109,16 @@ std::optional<Json> JsonReader::parse(const std::string& text) {
         }
         return j;
     } catch (const Json::parse_error& e) {
-        const std::string what = e.what();
-        mErrors.push_back(mSource + ": not valid JSON at byte " + std::to_string(e.byte) + ": " +
-                          what.substr(std::min(what.size(), what.find(']') + 2)));
+        std::string what = e.what();
+        what = what.substr(std::min(what.size(), what.find(']') + 2));
+        // The parser quotes what it last read: from a file that is not JSON at all (a preset path
+        // pointing at a file of secrets) that is the file's own text, which an error must not
+        // repeat. The line and column say where.
+        if (const auto quote = what.find("; last read: '"); quote != std::string::npos) {
+            const auto next = what.find("'; ", quote + 14);
+            what.erase(quote, next == std::string::npos ? std::string::npos : next + 1 - quote);
+        }
+        mErrors.push_back(mSource + ": not valid JSON at byte " + std::to_string(e.byte) + ": " + what);
     } catch (const Json::out_of_range& e) {
         // nlohmann refuses a number beyond a double's range (1e400) while parsing; the tracker
         // knows at which key.

@@ -101,6 +101,22 @@ TEST(TissuePreset, EveryBadKeyIsNamed) {
     expectErrorNaming("", "not valid JSON");
 }
 
+// A preset path that names a file that is not JSON (a file of secrets) is refused without
+// repeating the file's text: the error says where, not what it read.
+TEST(TissuePreset, AFileThatIsNotJsonIsNotQuoted) {
+    const auto path = std::filesystem::temp_directory_path() / "palpate-not-json-preset.txt";
+    {
+        std::ofstream out(path);
+        out << "\"dbpassword hunter2secret\nsecond line\n";  // a quote first: the parser reads the line
+    }
+    const std::string error = loadTissuePreset(path.string()).error();
+    std::filesystem::remove(path);
+    EXPECT_NE(error.find("not valid JSON"), std::string::npos) << error;
+    EXPECT_NE(error.find("at line"), std::string::npos) << error;
+    EXPECT_EQ(error.find("hunter2"), std::string::npos) << error;
+    EXPECT_EQ(error.find("dbpass"), std::string::npos) << error;
+}
+
 TEST(TissuePreset, FilesystemProblemsAreNamed) {
     EXPECT_NE(loadTissuePreset("/no/such/preset.json").error().find("no such file"), std::string::npos);
     EXPECT_NE(loadTissuePreset(std::filesystem::temp_directory_path().string()).error().find("directory"),

@@ -202,6 +202,22 @@ TEST_F(ServerRoles, WorkstationsSendTheirOwnAndReadTheirClassInstructorsReadAll)
     EXPECT_TRUE(error.contains(QStringLiteral("refused"))) << error.toStdString();
     EXPECT_FALSE(grantWorkstation(admin, QStringLiteral("ws_a"), QStringLiteral(" "), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("class"))) << error.toStdString();
+    // Refused: roles that are not a plain login of their own: built-in, group, administering the
+    // server (the administrator's own, a superuser), or unable to log in.
+    ASSERT_TRUE(runAsAdmin({QStringLiteral("DO $$ BEGIN IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = "
+                                           "'nologin_group') THEN CREATE ROLE nologin_group NOLOGIN; END IF; END $$"),
+                            QStringLiteral("DO $$ BEGIN IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = "
+                                           "'maker') THEN CREATE ROLE maker LOGIN CREATEROLE; END IF; END $$")})
+                    .isEmpty());
+    const QString administrator = qEnvironmentVariable("PGUSER");
+    for (const QString& role : {QStringLiteral("pg_read_all_data"), QStringLiteral("pg_write_all_data"),
+                                QStringLiteral("palpate_workstation"), QStringLiteral("palpate_instructor"),
+                                administrator, QStringLiteral("nologin_group"), QStringLiteral("maker")}) {
+        EXPECT_FALSE(grantWorkstation(admin, role, QStringLiteral("3A"), &error)) << role.toStdString();
+        EXPECT_TRUE(error.contains(QStringLiteral("is refused"))) << role.toStdString() << ": " << error.toStdString();
+        EXPECT_FALSE(grantInstructor(admin, role, &error)) << role.toStdString();
+        EXPECT_TRUE(error.contains(QStringLiteral("is refused"))) << role.toStdString() << ": " << error.toStdString();
+    }
     ResultsDatabase file;
     ASSERT_TRUE(file.open(dir.filePath(QStringLiteral("f.sqlite")), &error));
     EXPECT_FALSE(grantInstructor(file, QStringLiteral("teacher"), &error));

