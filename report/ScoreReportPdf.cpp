@@ -35,6 +35,34 @@ struct Tr {
 };
 
 QString number(double v, int decimals) { return QLocale().toString(v, 'f', decimals); }
+
+/// A name (exercise, trainee, device) as the report prints it: on one line (line breaks and other
+/// control characters are spaces), composed (NFC) and then at most one combining mark on a letter
+/// (stacks of marks reach into the lines above and below; real names compose to one), at most
+/// kMaxNameChars characters (then an ellipsis): whatever a file or a database holds, a name takes
+/// a few lines of the page, never the page.
+QString shownName(const QString& name) {
+    constexpr qsizetype kMaxNameChars = 240;
+    QString out;
+    int marks = 0;
+    for (const QChar c : name.normalized(QString::NormalizationForm_C)) {
+        const QChar::Category category = c.category();
+        const bool mark = category == QChar::Mark_NonSpacing || category == QChar::Mark_SpacingCombining ||
+                          category == QChar::Mark_Enclosing;
+        marks = mark ? marks + 1 : 0;
+        if (mark && marks > 1) continue;
+        const bool control = category == QChar::Other_Control || category == QChar::Separator_Line ||
+                             category == QChar::Separator_Paragraph || category == QChar::Other_Format;
+        out += control ? QChar(QLatin1Char(' ')) : c;
+    }
+    out = out.simplified();
+    if (out.size() > kMaxNameChars) {
+        qsizetype cut = kMaxNameChars;
+        if (out[cut - 1].isHighSurrogate()) --cut;
+        out = out.left(cut) + QChar(0x2026);
+    }
+    return out;
+}
 /// A force with one decimal, or two when it has them (a window of 0.65 – 1.65 N).
 QString forceText(double n) { return number(n, std::abs(n * 10.0 - std::round(n * 10.0)) < 1e-6 ? 1 : 2); }
 QString window(double minN, double maxN) { return Tr::tr("%1 – %2 N").arg(forceText(minN), forceText(maxN)); }
@@ -465,8 +493,8 @@ void drawReport(ReportLayout& layout, const ScoreReportContent& content) {
     layout.skip(line * 0.5);
     const QString device = content.device.isEmpty() ? Tr::tr("not recorded") : content.device;
     layout.fields({
-        {Tr::tr("Exercise:"), content.exerciseName.isEmpty() ? Tr::tr("(unnamed)") : content.exerciseName},
-        {Tr::tr("Trainee:"), content.traineeName.isEmpty() ? Tr::tr("not recorded") : content.traineeName},
+        {Tr::tr("Exercise:"), content.exerciseName.isEmpty() ? Tr::tr("(unnamed)") : shownName(content.exerciseName)},
+        {Tr::tr("Trainee:"), content.traineeName.isEmpty() ? Tr::tr("not recorded") : shownName(content.traineeName)},
         {Tr::tr("Date:"), content.sessionStart.isValid()
                               ? QLocale().toString(content.sessionStart.toLocalTime(), QLocale::LongFormat)
                               : Tr::tr("not recorded")},

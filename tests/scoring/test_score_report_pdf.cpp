@@ -255,6 +255,37 @@ TEST(ScoreReportPdf, LongNamesAndManyTargetsStayReadable) {
         EXPECT_NE(text.find(word), std::string::npos) << word;
 }
 
+// Names no one would choose, as an attacker or a broken import writes them: a hundred lines, a word
+// of 5000 letters, stacks of combining marks. Every line stays on its page and none overlaps.
+TEST(ScoreReportPdf, HostileNamesStayOnThePage) {
+    test::TempDir dir;
+    const std::string recording = recordPressTargets(dir);
+    auto e = nlohmann::json::parse(test::readBytes(exampleFile("press_targets.json")));
+    std::string hundredLines;
+    for (int i = 0; i < 100; ++i) hundredLines += "line " + std::to_string(i + 1) + " of the name\n";
+    std::string zalgo;
+    for (int i = 0; i < 40; ++i) zalgo += "Z\u0351\u036b\u0343\u036a\u0302\u036b\u033d\u034f\u0334\u0319";
+    const std::vector<std::pair<std::string, std::string>> names = {
+        {hundredLines, "Trainee\nwith\nlines"}, {std::string(5000, 'W'), std::string(5000, 'M')}, {zalgo, zalgo}};
+    for (std::size_t n = 0; n < names.size(); ++n) {
+        e["name"] = names[n].first;
+        const std::string exercise = dir.file("hostile" + std::to_string(n) + ".json");
+        const std::string text = e.dump();
+        test::writeBytes(exercise, std::vector<std::uint8_t>(text.begin(), text.end()));
+        const std::string pdf = dir.file("hostile" + std::to_string(n) + ".pdf");
+        const auto r = runCli("score --exercise " + shellQuote(exercise) + " --recording " + shellQuote(recording) +
+                              " --pdf " + shellQuote(pdf) + " --trainee " + shellQuote(names[n].second) +
+                              " --no-store");
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        SCOPED_TRACE("names " + std::to_string(n));
+        const std::vector<PdfPage> pages = expectReadable(pdf);
+        // The score and the targets' table are still there.
+        const std::string all = allText(pages);
+        EXPECT_NE(all.find("Score"), std::string::npos);
+        EXPECT_NE(all.find("Target"), std::string::npos);
+    }
+}
+
 TEST(ScoreReportPdf, NeverOverwritesAnInputAndFailsCleanly) {
     test::TempDir dir;
     const std::string recording = recordPressTargets(dir);

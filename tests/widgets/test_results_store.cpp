@@ -13,6 +13,7 @@
 #include "tests/widgets/ResultsServer.h"
 
 #include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -29,6 +30,11 @@
 #include <atomic>
 #include <set>
 #include <thread>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 #include <vector>
 
 using namespace palpate;
@@ -217,6 +223,36 @@ TEST(PostgresqlStore, UrlOptionsCannotSmuggleAPasswordAUserOrAnotherSslmode) {
     EXPECT_TRUE(error.contains(QStringLiteral("connect_timeout"))) << error.toStdString();
     EXPECT_EQ(options("postgresql://ws@host/class?connect_timeout=12", error),
               QStringLiteral("connect_timeout='12';sslmode='prefer'"));
+}
+
+// A server that takes the connection and then says nothing (a stalled machine, a wrong port that
+// swallows) is reported within the connect timeout, never waited on for ever; and a URL cannot ask
+// to wait for ever (connect_timeout=0).
+TEST(PostgresqlStore, AServerThatAcceptsAndStallsIsReportedNotWaitedOn) {
+    const int listener = ::socket(AF_INET, SOCK_STREAM, 0);
+    ASSERT_GE(listener, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    address.sin_port = 0;
+    ASSERT_EQ(::bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    ASSERT_EQ(::listen(listener, 8), 0);  // the kernel completes the handshake; nobody ever answers
+    socklen_t length = sizeof address;
+    ASSERT_EQ(::getsockname(listener, reinterpret_cast<sockaddr*>(&address), &length), 0);
+    const QString url = QStringLiteral("postgresql://ws@127.0.0.1:%1/class?connect_timeout=2")
+                            .arg(ntohs(address.sin_port));
+    QElapsedTimer clock;
+    clock.start();
+    ResultsDatabase db;
+    QString error;
+    EXPECT_FALSE(db.open(url, &error));
+    const double waitedS = double(clock.elapsed()) / 1000.0;
+    std::printf("[ figures  ] a stalled server was reported after %.1f s: %s\n", waitedS, qPrintable(error));
+    EXPECT_TRUE(error.contains(QStringLiteral("cannot connect"))) << error.toStdString();
+    EXPECT_LT(waitedS, 60.0) << "a hang, not a timeout";
+    EXPECT_FALSE(db.open(url.left(url.indexOf(QLatin1Char('?'))) + QStringLiteral("?connect_timeout=0"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("connect_timeout"))) << error.toStdString();
+    ::close(listener);
 }
 
 // Eight workstations send at once, each with its own connection: every result arrives once.
