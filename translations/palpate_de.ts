@@ -3131,6 +3131,38 @@ Stattdessen läuft %3: wählen Sie ein anderes im Gerät-Dock oder unter Bearbei
         <source>Back to %1 with %2 rings, as before the level of detail was used</source>
         <translation>Zurück zu %1 mit %2 Ringen, wie vor der Verwendung der Detailstufe</translation>
     </message>
+    <message>
+        <source>a folder</source>
+        <translation>ein Ordner</translation>
+    </message>
+    <message>
+        <source>a FIFO</source>
+        <translation>eine FIFO</translation>
+    </message>
+    <message>
+        <source>a device</source>
+        <translation>ein Gerät</translation>
+    </message>
+    <message>
+        <source>a socket</source>
+        <translation>ein Socket</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>keine gewöhnliche Datei</translation>
+    </message>
+    <message>
+        <source>a link to nothing</source>
+        <translation>ein Verweis ins Leere</translation>
+    </message>
+    <message>
+        <source>a link to %1</source>
+        <translation>ein Verweis auf %1</translation>
+    </message>
+    <message>
+        <source>%1 is %2, not a regular file: the preferences are neither read from it nor saved over it; this run keeps them until it ends. Move it away to keep preferences again.</source>
+        <translation>%1 ist %2, keine gewöhnliche Datei: Die Einstellungen werden weder daraus gelesen noch darüber gespeichert; dieser Lauf behält sie bis zu seinem Ende. Verschieben Sie sie, um Einstellungen wieder zu behalten.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MeshImportDialog</name>

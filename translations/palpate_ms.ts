@@ -3128,6 +3128,38 @@ pemapar %5</translation>
         <source>Back to %1 with %2 rings, as before the level of detail was used</source>
         <translation>Kembali kepada %1 dengan %2 gelang, seperti sebelum tahap perincian digunakan</translation>
     </message>
+    <message>
+        <source>a folder</source>
+        <translation>sebuah folder</translation>
+    </message>
+    <message>
+        <source>a FIFO</source>
+        <translation>sebuah FIFO</translation>
+    </message>
+    <message>
+        <source>a device</source>
+        <translation>sebuah peranti</translation>
+    </message>
+    <message>
+        <source>a socket</source>
+        <translation>sebuah soket</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>bukan fail biasa</translation>
+    </message>
+    <message>
+        <source>a link to nothing</source>
+        <translation>pautan kepada tiada apa-apa</translation>
+    </message>
+    <message>
+        <source>a link to %1</source>
+        <translation>pautan kepada %1</translation>
+    </message>
+    <message>
+        <source>%1 is %2, not a regular file: the preferences are neither read from it nor saved over it; this run keeps them until it ends. Move it away to keep preferences again.</source>
+        <translation>%1 ialah %2, bukan fail biasa: tetapan tidak dibaca daripadanya dan tidak disimpan menimpanya; larian ini menyimpannya sehingga ia tamat. Alihkannya untuk menyimpan tetapan semula.</translation>
+    </message>
 </context>
 <context>
     <name>palpate::MeshImportDialog</name>

@@ -372,8 +372,16 @@ void RecorderPanel::setRecordingStopped(const QString& error) {
     if (!error.isEmpty()) showRecordingError(error);
     if (!wasRecording) {
         mRecordStatus->setStyleSheet(QString());
-        mRecordStatus->setText(tr("Not recording.\nFolder: %1").arg(QDir::toNativeSeparators(mFolder)));
-        mRecordStatus->setToolTip(QString());
+        // A folder of any length (a data folder setting of kilobytes) in at most kShownPathChars,
+        // elided in the middle, the whole of it in the tooltip: the label never widens the window.
+        constexpr qsizetype kShownPathChars = 90;
+        QString folder = QDir::toNativeSeparators(mFolder);
+        const QString whole = folder;
+        if (folder.size() > kShownPathChars)
+            folder = folder.left(kShownPathChars / 3) + QChar(0x2026) +
+                     folder.right(kShownPathChars - kShownPathChars / 3);
+        mRecordStatus->setText(tr("Not recording.\nFolder: %1").arg(folder));
+        mRecordStatus->setToolTip(whole);
     }
     updateButtons();
 }

@@ -2,6 +2,7 @@
 // 2 bad usage.
 #include "base/resources/ShippedResources.h"
 #include "app/gui/FirstRun.h"
+#include "app/gui/SettingsFileGuard.h"
 #include "app/gui/GuiApplication.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/ViewportBenchmark.h"
@@ -17,6 +18,7 @@
 #include <QPointer>
 #include <QTabWidget>
 #include <QScreen>
+#include <QStatusBar>
 #include <QTimer>
 
 #include <sys/resource.h>
@@ -380,6 +382,8 @@ int runWindow(const QCommandLineParser& parser, const GuiCommandLine& options, c
     loopDef.trySchedFifo = !parser.isSet(options.noFifo);
     palpate::MainWindow window(renderer, mode, loopDef);
     palpate::applyPreferences(window);  // data folder, haptic rate; --preset below still wins
+    if (const QString problem = palpate::settingsFileProblem(); !problem.isEmpty())
+        window.statusBar()->showMessage(problem, 60000);
     QString deviceProblem;
     if (const QString error = window.startSession(meshPath, deviceUri, fallbackUri, deviceProblem); !error.isEmpty())
         return failed(error, plan.interactive);
@@ -435,6 +439,8 @@ int runGui(int argc, char** argv) {
 
     palpate::GuiApplication app(argc, argv);
     palpate::setApplicationNames();  // before the first QSettings (FirstRun.h)
+    if (const QString problem = palpate::guardSettingsFile(); !problem.isEmpty())
+        std::fprintf(stderr, "palpate: %s\n", qPrintable(problem));
     palpate::migrateOldSettings();
     QApplication::setApplicationVersion(QStringLiteral(PALPATE_VERSION));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/palpate-256.png")));

@@ -12,6 +12,10 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
+#include <functional>
+
 #include <cmath>
 
 namespace palpate {
@@ -147,6 +151,36 @@ TEST(Stiffening, BadKnotsAreNamedAndTheTickAllocatesNothing) {
     EXPECT_EQ(problems[0].field, "stiffeningCompliance");
     p.stiffeningCompliance[1] = 1.5;  // out of (0, 1]
     EXPECT_FALSE(validateSlopeRingParams(p).empty());
+    // Forces no tissue reaches, and that overflow the tick's floats (the tool then never touched).
+    for (const double hugeN : {3.4e38, 1e39, 1e308, kMaxStiffeningForceN * 1.01}) {
+        p = stiffeningMuscle().model.slopeRing;
+        p.stiffeningForceN[std::size_t(p.stiffeningKnots - 1)] = hugeN;
+        problems = validateSlopeRingParams(p);
+        ASSERT_FALSE(problems.empty()) << hugeN;
+        EXPECT_EQ(problems[0].field, "stiffeningForceN") << hugeN;
+    }
+    // And a preset file with one is refused, naming the key.
+    {
+        TissuePreset preset = stiffeningMuscle();
+        nlohmann::json j = nlohmann::json::parse(tissuePresetToJson(preset));
+        bool set = false;
+        std::function<void(nlohmann::json&)> setLastKnot = [&](nlohmann::json& o) {
+            if (!o.is_object()) return;
+            for (auto& [key, value] : o.items()) {
+                if (key == "stiffening_force_n" && value.is_array() && !value.empty()) {
+                    value.back() = 1e39;
+                    set = true;
+                }
+                setLastKnot(value);
+            }
+        };
+        setLastKnot(j);
+        ASSERT_TRUE(set) << j.dump();
+        const std::string json = j.dump();
+        const auto loaded = parseTissuePreset(json, "huge.json");
+        ASSERT_FALSE(loaded.preset.has_value());
+        EXPECT_NE(loaded.error().find("stiffening_force_n"), std::string::npos) << loaded.error();
+    }
 
     const TissuePreset preset = stiffeningMuscle();
     auto scene = HapticScene::create(sphere(), slopeRingModelDef(preset.model.slopeRing), preset.octree);

@@ -20,6 +20,7 @@
 #include "widgets/TraineePanel.h"
 
 #include <gtest/gtest.h>
+#include <functional>
 
 #include <QComboBox>
 #include <QDir>
@@ -110,6 +111,62 @@ QString makeRecording(const QTemporaryDir& dir) {
 }
 
 }  // namespace
+
+// A palpate.conf that is not a regular file is neither read (a FIFO would block the start for
+// ever) nor saved over (a link to a device would replace the device): the window starts, says so,
+// and leaves the thing as it was.
+TEST(Settings, APreferencesFileThatIsNotARegularFileIsNeitherReadNorReplaced) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(QDir().mkpath(dir.filePath(QStringLiteral("config/palpate"))));
+    const QString conf = dir.filePath(QStringLiteral("config/palpate/palpate.conf"));
+    const QString fifo = dir.filePath(QStringLiteral("a-fifo"));
+    ASSERT_EQ(::mkfifo(fifo.toLocal8Bit().constData(), 0644), 0);
+    struct Case {
+        const char* what;
+        std::function<bool()> make;
+        const char* said;
+    };
+    const std::vector<Case> cases = {
+        {"a FIFO", [&] { return ::mkfifo(conf.toLocal8Bit().constData(), 0644) == 0; }, "a FIFO"},
+        {"a link to a FIFO", [&] { return QFile::link(fifo, conf); }, "a link to a FIFO"},
+        {"a folder", [&] { return QDir().mkdir(conf); }, "a folder"},
+        {"a link to nothing", [&] { return QFile::link(dir.filePath(QStringLiteral("gone")), conf); },
+         "a link to nothing"}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.what);
+        ASSERT_TRUE(c.make());
+        // A screenshot run reads the preferences and, at exit, saves the window's state.
+        const GuiRun run = runGui(dir, {QStringLiteral("--screenshot"), dir.filePath(QStringLiteral("shot.png")),
+                                        QStringLiteral("--ticks"), QStringLiteral("20")});
+        EXPECT_FALSE(run.crashed);
+        EXPECT_EQ(run.exitCode, 0) << run.err.toStdString();
+        EXPECT_TRUE(run.err.contains(QStringLiteral("not a regular file"))) << run.err.toStdString();
+        EXPECT_TRUE(run.err.contains(QLatin1String(c.said))) << run.err.toStdString();
+        // Still what it was.
+        struct stat after {};
+        ASSERT_EQ(::lstat(conf.toLocal8Bit().constData(), &after), 0);
+        EXPECT_FALSE(S_ISREG(after.st_mode));
+        struct stat target {};
+        if (::stat(fifo.toLocal8Bit().constData(), &target) == 0) EXPECT_TRUE(S_ISFIFO(target.st_mode));
+        EXPECT_FALSE(QFileInfo::exists(dir.filePath(QStringLiteral("gone"))));
+        if (QFileInfo(conf).isDir() && !QFileInfo(conf).isSymLink()) QDir(conf).removeRecursively();
+        else QFile::remove(conf);
+    }
+}
+
+// A data folder of kilobytes (a pasted path, a broken setting) is shown elided: the window keeps
+// its width.
+TEST(Settings, AVeryLongDataFolderDoesNotWidenTheWindow) {
+    QTemporaryDir dir;
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    const int usualWidth = window.minimumSizeHint().width();
+    QString folder = dir.path();
+    while (folder.size() < 4500) folder += QStringLiteral("/a-very-long-folder-name-without-any-space");
+    window.recorderPanel()->setRecordingFolder(folder);
+    QApplication::processEvents();
+    EXPECT_LE(window.minimumSizeHint().width(), usualWidth + 50) << "from " << usualWidth;
+    EXPECT_LE(window.minimumSizeHint().width(), 1280);
+}
 
 TEST(StartupDevice, UnopenableDeviceGivesWayToTheFallbackAndIsNamed) {
     QTemporaryDir dir;

@@ -146,7 +146,7 @@ constexpr FieldDef<SlopeRingParams> kFields[] = {
          .jsonKey = "stiffening_force_n",
          .unit = "N",
          .lo = 0,
-         .hi = kNoLimit,
+         .hi = kMaxStiffeningForceN,
          .lower = Bound::Open,
          .tip = PALPATE_TRANSLATE_NOOP("palpate::Parameters",
                                        "Contact force above which the next stiffening compliance applies, N."),

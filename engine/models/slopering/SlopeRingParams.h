@@ -14,6 +14,11 @@ namespace palpate {
 
 /// Knots of the strain-stiffening curve (docs/method.md, "Tissue that stiffens with depth").
 inline constexpr int kMaxStiffeningKnots = 8;
+/// The largest force a knot may sit at: far past any press on tissue (a desktop device renders
+/// 3 N, a strong hand 100 N), and small enough that the tick's float arithmetic on the knots stays
+/// exact to a micronewton (a knot at 3.4e38 N made the effective force infinite: the tool never
+/// touched the tissue).
+inline constexpr double kMaxStiffeningForceN = 1000.0;
 
 /// The slope model's loop is stable while alpha (1 + gain) stays below this (docs/stability.md,
 /// "The slope model's loop gain"): the one statement of the rule; the validator, the stability
