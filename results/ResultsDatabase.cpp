@@ -211,6 +211,10 @@ bool ResultsDatabase::open(const QString& path, QString* error) {
     const QFileInfo info(path);
     if (info.exists()) {
         if (info.isDir()) return fail(tr("is a folder, not a results database"), error);
+        // A device or a FIFO is never opened: SQLite would block on a FIFO, and beside a device it
+        // writes its journal (as root, /dev/null-journal).
+        if (!info.isFile())
+            return fail(tr("is not a regular file (a device, a FIFO or a socket): not a results database"), error);
         if (!info.isReadable()) return fail(tr("cannot be read (permission denied)"), error);
         if (!info.isWritable()) return fail(tr("is not writable"), error);
     } else {

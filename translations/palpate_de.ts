@@ -5253,6 +5253,10 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>connect_timeout must be 1 to %1 seconds (0 would wait for ever)</source>
         <translation>connect_timeout muss 1 bis %1 Sekunden sein (0 würde ewig warten)</translation>
     </message>
+    <message>
+        <source>is not a regular file (a device, a FIFO or a socket): not a results database</source>
+        <translation>ist keine gewöhnliche Datei (ein Gerät, eine FIFO oder ein Socket): keine Ergebnisdatenbank</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ResultsRoles</name>

@@ -5249,6 +5249,10 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>connect_timeout must be 1 to %1 seconds (0 would wait for ever)</source>
         <translation>connect_timeout mestilah 1 hingga %1 saat (0 akan menunggu selama-lamanya)</translation>
     </message>
+    <message>
+        <source>is not a regular file (a device, a FIFO or a socket): not a results database</source>
+        <translation>bukan fail biasa (peranti, FIFO atau soket): bukan pangkalan data keputusan</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ResultsRoles</name>

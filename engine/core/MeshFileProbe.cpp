@@ -204,9 +204,15 @@ std::string probeStl(const std::string& bytes) {
     if (bytes.size() < expected)
         return "is truncated: binary STL declares " + std::to_string(count) + " triangles (" +
                std::to_string(expected) + " bytes) but has " + std::to_string(bytes.size()) + " bytes";
-    if (bytes.size() > expected + 1024)
-        return "is not a binary STL: it declares " + std::to_string(count) + " triangles but has " +
-               std::to_string(bytes.size()) + " bytes";
+    // Bytes after the last triangle: a few are padding some exporters write (noted by the reader);
+    // a whole triangle's worth or more means the header understates the count, and reading only
+    // what it declares would silently drop the rest of the mesh.
+    if (bytes.size() >= expected + 50)
+        return "declares " + std::to_string(count) + " triangles in its header, but " +
+               std::to_string((bytes.size() - expected) / 50) + " more triangles' worth of bytes follow (" +
+               std::to_string(bytes.size()) +
+               " bytes in all): the header understates the count, or this is not a "
+               "binary STL";
     for (std::uint32_t t = 0; t < count; ++t)
         for (int k = 3; k < 12; ++k) {  // skip the facet normal; check the three vertices
             float value = 0.0f;

@@ -331,10 +331,16 @@ std::string readPolygonSoupBytes(const std::string& original, const std::string&
     else if (ext == "ply") sanitisePly(bytes, notes);
     else if (ext == "stl" && !isBinaryStl(bytes))
         sanitiseText(bytes, notes);
-    else if (ext == "stl")
+    else if (ext == "stl") {
         // CGAL takes a file that begins with "solid" for ASCII and falls back to binary only after
         // the ASCII parse appended what it could; the header's 80 bytes are unused in binary STL.
         bytes[0] = 'B';
+        std::uint32_t declared = 0;
+        if (bytes.size() >= 84) std::memcpy(&declared, bytes.data() + 80, 4);
+        const std::uint64_t expected = 84ull + 50ull * declared;
+        if (bytes.size() > expected && bytes.size() < expected + 50)
+            notes.push_back(countedText(bytes.size() - expected, "byte", "bytes") + " after the last triangle ignored");
+    }
     // OBJ's own pre-scan first, for its line numbers; it keeps every line, so the probe's line
     // numbers stay right too.
     if (ext == "obj" && bytes.find('\0') == std::string::npos)

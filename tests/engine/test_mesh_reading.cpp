@@ -289,6 +289,26 @@ TEST(MeshReading, BinaryAndAsciiStlOfTheSameCubeGiveTheSameSoup) {
     EXPECT_EQ(fromSolid.polygons, binary.polygons);
 }
 
+// A binary STL whose header understates its triangle count would be read as the smaller mesh:
+// refused, saying how much follows; a few padding bytes after the last triangle load with a note.
+TEST(MeshReading, ABinaryStlThatUnderstatesItsTrianglesIsRefusedAndPaddingNoted) {
+    const RawMesh c = cubeTriangles();  // 12 triangles
+    std::string understated = test::toBinaryStl(c);
+    const std::uint32_t ten = 10;
+    std::memcpy(understated.data() + 80, &ten, 4);
+    PolygonSoup soup;
+    const std::string problem = readPolygonSoupBytes(understated, "stl", soup);
+    EXPECT_NE(problem.find("declares 10 triangles"), std::string::npos) << problem;
+    EXPECT_NE(problem.find("2 more triangles"), std::string::npos) << problem;
+    const std::string padded = test::toBinaryStl(c) + std::string(3, '\0');
+    ASSERT_EQ(readPolygonSoupBytes(padded, "stl", soup), "");
+    EXPECT_EQ(soup.polygons.size(), 12u);
+    bool noted = false;
+    for (const std::string& note : soup.notes)
+        noted |= note.find("3 bytes after the last triangle") != std::string::npos;
+    EXPECT_TRUE(noted);
+}
+
 TEST(MeshReading, OpenMeshFilesGiveTheirPolygonsAndHostileOnesAreRefused) {
     TempDir dir;
     const RawMesh ico = test::icosahedron();

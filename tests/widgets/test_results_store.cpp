@@ -34,6 +34,7 @@
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
 
@@ -125,6 +126,23 @@ TEST_P(Backends, CopyingResultsTwiceKeepsOneOfEach) {
 
 INSTANTIATE_TEST_SUITE_P(SqliteAndPostgresql, Backends, ::testing::Values(false, true),
                          [](const auto& info) { return info.param ? "Postgresql" : "Sqlite"; });
+
+// A device or a FIFO given as the store is refused before SQLite opens it (it would block on the
+// FIFO, and write its journal beside the device).
+TEST(SqliteStore, ADeviceOrAFifoIsNoStore) {
+    QTemporaryDir dir;
+    const QString fifo = dir.filePath(QStringLiteral("results.sqlite"));
+    ASSERT_EQ(::mkfifo(fifo.toLocal8Bit().constData(), 0644), 0);
+    const QString linkToNull = dir.filePath(QStringLiteral("null.sqlite"));
+    ASSERT_TRUE(QFile::link(QStringLiteral("/dev/null"), linkToNull));
+    for (const QString& path : {fifo, linkToNull}) {
+        ResultsDatabase db;
+        QString error;
+        EXPECT_FALSE(db.open(path, &error)) << path.toStdString();
+        EXPECT_TRUE(error.contains(QStringLiteral("not a regular file"))) << error.toStdString();
+        EXPECT_TRUE(error.contains(path)) << error.toStdString();
+    }
+}
 
 // Twenty writers at once into one workstation's store (the window's uploader, CLI runs, another
 // window): each waits its turn for the write lock, and nothing is lost to "database is locked".
