@@ -79,6 +79,8 @@ QString ResultUploader::statusText() const {
     // Short: the status bar has many fields (the tooltip says which server and why).
     if (!mHaveReport) return tr("Results: sending…");
     if (mLast.waiting == 0) return mLast.error.isEmpty() ? tr("Results: all sent") : tr("Results: server does not answer");
+    if (!mLast.refused.empty() && mLast.error.isEmpty())
+        return tr("Results: %1 waiting, %2 refused (see the tooltip)").arg(mLast.waiting).arg(mLast.refused.size());
     return mLast.waiting == 1 ? tr("Results: 1 waiting") : tr("Results: %1 waiting").arg(mLast.waiting);
 }
 

@@ -362,6 +362,12 @@ bool ResultsDatabase::openServer(const QString& location, QString* error) {
     return true;
 }
 
+bool ResultsDatabase::answers() const {
+    if (!isOpen()) return false;
+    QSqlQuery q(mDb);
+    return q.exec(QStringLiteral("SELECT 1")) && q.next();
+}
+
 QString ResultsDatabase::connectionDescription() const {
     if (!mServer || !isOpen()) return {};
     QString out = mClassName.isEmpty() ? tr("role %1").arg(mRole) : tr("role %1, class %2").arg(mRole, mClassName);

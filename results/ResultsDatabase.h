@@ -95,6 +95,8 @@ public:
     bool isServer() const { return mServer; }
     void close();
     bool isOpen() const;
+    /// Open, and a trivial query is answered now (a server that went away: false).
+    bool answers() const;
     QString path() const { return mPath; }
     /// The version of the open file (kSchemaVersion after a successful open).
     int schemaVersion() const;

@@ -5082,6 +5082,10 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>Results: %1 waiting</source>
         <translation>Ergebnisse: %1 warten</translation>
     </message>
+    <message>
+        <source>Results: %1 waiting, %2 refused (see the tooltip)</source>
+        <translation>Ergebnisse: %1 warten, %2 abgelehnt (siehe Tooltip)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ResultsDatabase</name>
@@ -5256,6 +5260,10 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
     <message>
         <source>is not a regular file (a device, a FIFO or a socket): not a results database</source>
         <translation>ist keine gewöhnliche Datei (ein Gerät, eine FIFO oder ein Socket): keine Ergebnisdatenbank</translation>
+    </message>
+    <message>
+        <source>The server refused %1&apos;s result of &quot;%2&quot; (%3, %4): %5. It stays on this workstation; rename the trainee here or ask the instructor (results grant, docs/results-store.md), then send again.</source>
+        <translation>Der Server hat das Ergebnis von %1 in „%2“ (%3, %4) abgelehnt: %5. Es bleibt auf diesem Arbeitsplatz; benennen Sie den Teilnehmer hier um oder fragen Sie die Lehrkraft (results grant, docs/results-store.md) und senden Sie dann erneut.</translation>
     </message>
 </context>
 <context>

@@ -5078,6 +5078,10 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>Results: %1 waiting</source>
         <translation>Keputusan: %1 menunggu</translation>
     </message>
+    <message>
+        <source>Results: %1 waiting, %2 refused (see the tooltip)</source>
+        <translation>Keputusan: %1 menunggu, %2 ditolak (lihat petua alat)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ResultsDatabase</name>
@@ -5252,6 +5256,10 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
     <message>
         <source>is not a regular file (a device, a FIFO or a socket): not a results database</source>
         <translation>bukan fail biasa (peranti, FIFO atau soket): bukan pangkalan data keputusan</translation>
+    </message>
+    <message>
+        <source>The server refused %1&apos;s result of &quot;%2&quot; (%3, %4): %5. It stays on this workstation; rename the trainee here or ask the instructor (results grant, docs/results-store.md), then send again.</source>
+        <translation>Pelayan menolak keputusan %1 bagi "%2" (%3, %4): %5. Ia kekal di stesen kerja ini; namakan semula pelatih di sini atau tanya pengajar (results grant, docs/results-store.md), kemudian hantar semula.</translation>
     </message>
 </context>
 <context>

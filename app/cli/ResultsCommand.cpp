@@ -181,6 +181,17 @@ int classCommand(const Given& args) {
     return 0;
 }
 
+Json refusedJson(const SyncReport& report) {
+    Json list = Json::array();
+    for (const RefusedResult& r : report.refused)
+        list.push_back({{"uid", text(r.uid)},
+                        {"trainee", text(r.trainee)},
+                        {"exercise", text(r.exercise)},
+                        {"time", text(r.startedUtc.toString(Qt::ISODate))},
+                        {"why", text(r.why)}});
+    return list;
+}
+
 int syncCommand(const Given& args) {
     const auto url = args.option("db");
     if (!url || !isServerLocation(QString::fromStdString(*url))) {
@@ -205,18 +216,21 @@ int syncCommand(const Given& args) {
                           {"already_there", report.alreadyThere},
                           {"waiting", report.waiting},
                           {"error", text(report.error)},
+                          {"refused", refusedJson(report)},
                           {"connection", text(report.connection)}}
                          .dump(2)
                   << "\n";
     else
         std::cout << report.sent << " sent, " << report.alreadyThere << " already on the server, " << report.waiting
                   << " waiting\n";
+    for (const QString& line : report.refusedText().split(QLatin1Char('\n'), Qt::SkipEmptyParts))
+        std::cerr << "results sync: " << shown(line) << "\n";
     if (!report.error.isEmpty()) {
         std::cerr << "results sync: " << text(report.error) << " (" << report.waiting
                   << " results wait on this workstation; run sync again when the server answers)\n";
         return 1;
     }
-    return 0;
+    return report.refused.empty() ? 0 : 1;  // a refused result waits for someone to act
 }
 
 /// The server's roles: a workstation of a class, or an instructor (docs/results-store.md, "Roles").

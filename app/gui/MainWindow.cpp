@@ -812,10 +812,12 @@ void MainWindow::createExerciseDocks() {
         mResultsLabel->setVisible(!text.isEmpty());
         const SyncReport& last = mUploader->lastReport();
         // Who the server takes this workstation for (its role and class) and whether it is encrypted.
-        mResultsLabel->setToolTip(last.error.isEmpty()
-                                      ? tr("Results kept on this workstation and copied to %1 (%2)")
-                                            .arg(mUploader->serverUrl(), last.connection)
-                                      : tr("The last copy to %1 stopped: %2").arg(mUploader->serverUrl(), last.error));
+        QString tip = last.error.isEmpty()
+                          ? tr("Results kept on this workstation and copied to %1 (%2)")
+                                .arg(mUploader->serverUrl(), last.connection)
+                          : tr("The last copy to %1 stopped: %2").arg(mUploader->serverUrl(), last.error);
+        if (!last.refused.empty()) tip += QLatin1Char('\n') + last.refusedText();
+        mResultsLabel->setToolTip(tip);
     });
     connect(mExercises, &ExerciseController::resultStored, mUploader, &ResultUploader::syncNow);
 }

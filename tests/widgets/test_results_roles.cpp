@@ -124,6 +124,43 @@ protected:
     std::optional<ScopedEnv> passFile, password;
 };
 
+// A result the server refuses while it answers (its trainee's name belongs to another class) is
+// named with why and what to do, stays waiting, and does not hold back the results after it.
+TEST_F(ServerRoles, ARefusedResultIsNamedAndTheOthersStillGo) {
+    ResultsDatabase admin;
+    QString error;
+    ASSERT_TRUE(admin.open(serverUrl(), &error)) << error.toStdString();
+    ASSERT_TRUE(grantWorkstation(admin, QStringLiteral("ws_a"), QStringLiteral("3A"), &error)) << error.toStdString();
+    ASSERT_TRUE(grantWorkstation(admin, QStringLiteral("ws_b"), QStringLiteral("3B"), &error)) << error.toStdString();
+    ASSERT_EQ(syncAs(workstationFile(dir, QStringLiteral("b"), QStringLiteral("Kim"), 1), QStringLiteral("ws_b")).sent,
+              1);
+    // Workstation a: Kim (of 3B on the server) first, then its own Ann.
+    const QString aFile = workstationFile(dir, QStringLiteral("a"), QStringLiteral("Kim"), 2);
+    {
+        ResultsDatabase a;
+        ASSERT_TRUE(a.open(aFile, &error)) << error.toStdString();
+        const qint64 ann = a.addTrainee(QStringLiteral("Ann"), &error);
+        ASSERT_GE(a.addResult(ann, palpate::test::completedReport(80.0), QStringLiteral("Press two targets"),
+                              QStringLiteral("/e.json"), QDateTime::currentDateTimeUtc().addSecs(60), 10.0, QString(),
+                              &error),
+                  0)
+            << error.toStdString();
+    }
+    const SyncReport report = syncAs(aFile, QStringLiteral("ws_a"));
+    EXPECT_TRUE(report.error.isEmpty()) << report.error.toStdString();
+    EXPECT_EQ(report.sent, 1) << "Ann's result went, after Kim's were refused";
+    EXPECT_EQ(report.waiting, 2);
+    ASSERT_EQ(report.refused.size(), 2u);
+    EXPECT_EQ(report.refused[0].trainee, QStringLiteral("Kim"));
+    EXPECT_TRUE(report.refused[0].why.contains(QStringLiteral("another class"))) << report.refused[0].why.toStdString();
+    const QString text = report.refusedText();
+    EXPECT_TRUE(text.contains(QStringLiteral("Kim"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("rename the trainee"))) << text.toStdString();
+    ResultsDatabase a;
+    ASSERT_TRUE(a.open(aFile, &error)) << error.toStdString();
+    EXPECT_EQ(a.unsyncedResults().size(), 2u) << "Kim's stay on the workstation";
+}
+
 TEST_F(ServerRoles, WorkstationsSendTheirOwnAndReadTheirClassInstructorsReadAll) {
     ResultsDatabase admin;
     QString error;
