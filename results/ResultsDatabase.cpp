@@ -17,6 +17,7 @@
 #include <QSqlError>
 #include <QSqlField>
 #include <QSqlQuery>
+#include <QSqlRecord>
 #include <QVariant>
 
 #include <atomic>
@@ -265,8 +266,40 @@ bool ResultsDatabase::open(const QString& path, QString* error) {
         close();
         return false;
     }
+    // A file that says it is of this version but lacks a table or a column is damaged (or not
+    // ours): reading it would show "no results" instead of saying so.
+    if (const QString problem = schemaProblem(); !problem.isEmpty()) {
+        close();
+        return fail(tr("the results schema is damaged (%1): restore the file from a copy (Palpate does not repair it)")
+                        .arg(problem),
+                    error);
+    }
     mLastError.clear();
     return true;
+}
+
+QString ResultsDatabase::schemaProblem() const {
+    struct Table {
+        const char* name;
+        std::vector<const char*> columns;
+    };
+    static const Table kTables[] = {
+        {"trainees", {"id", "name", "created", "class_name"}},
+        {"results",
+         {"id", "trainee_id", "exercise_name", "exercise_path", "started_utc", "duration_s", "score", "metrics_json",
+          "rubric_json", "recording_path", "outcome", "expert", "aids_json", "uid", "workstation", "synced_utc",
+          "submitted_by"}},
+        {"staircases", {"trainee_id", "exercise_key", "state_json", "updated_utc"}},
+        {"class_workstations", {"role_name", "class_name"}},
+    };
+    for (const Table& table : kTables) {
+        const QSqlRecord record = mDb.record(QLatin1String(table.name));
+        if (record.isEmpty()) return tr("table %1 is missing").arg(QLatin1String(table.name));
+        for (const char* column : table.columns)
+            if (record.indexOf(QLatin1String(column)) < 0)
+                return tr("table %1 has no column %2").arg(QLatin1String(table.name), QLatin1String(column));
+    }
+    return {};
 }
 
 bool ResultsDatabase::openServer(const QString& location, QString* error) {
@@ -343,6 +376,12 @@ bool ResultsDatabase::openServer(const QString& location, QString* error) {
     if (!migrated) {
         close();
         return false;
+    }
+    if (const QString problem = schemaProblem(); !problem.isEmpty()) {
+        close();
+        return fail(
+            tr("the results schema is damaged (%1): the server's administrator restores it from a backup").arg(problem),
+            error);
     }
     // Who this is on the server: a workstation role belongs to one class (ResultsRoles.h), and
     // its trainees are that class's.

@@ -156,6 +156,8 @@ public:
 private:
     bool fail(const QString& problem, QString* error) const;
     bool migrate(int from, QString* error);
+    /// "" when every table and column this build reads is there; else which one is missing.
+    QString schemaProblem() const;
     /// Version 2 to 3: the outcome column, and `completed` for the old rows whose completion is 1
     /// (the rest cannot be told apart from a time-up and stay Unknown).
     QString migrateV2ToV3();

@@ -5265,6 +5265,22 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>The server refused %1&apos;s result of &quot;%2&quot; (%3, %4): %5. It stays on this workstation; rename the trainee here or ask the instructor (results grant, docs/results-store.md), then send again.</source>
         <translation>Der Server hat das Ergebnis von %1 in „%2“ (%3, %4) abgelehnt: %5. Es bleibt auf diesem Arbeitsplatz; benennen Sie den Teilnehmer hier um oder fragen Sie die Lehrkraft (results grant, docs/results-store.md) und senden Sie dann erneut.</translation>
     </message>
+    <message>
+        <source>the results schema is damaged (%1): restore the file from a copy (Palpate does not repair it)</source>
+        <translation>das Schema der Ergebnisse ist beschädigt (%1): Stellen Sie die Datei aus einer Kopie wieder her (Palpate repariert sie nicht)</translation>
+    </message>
+    <message>
+        <source>table %1 is missing</source>
+        <translation>Tabelle %1 fehlt</translation>
+    </message>
+    <message>
+        <source>table %1 has no column %2</source>
+        <translation>Tabelle %1 hat keine Spalte %2</translation>
+    </message>
+    <message>
+        <source>the results schema is damaged (%1): the server&apos;s administrator restores it from a backup</source>
+        <translation>das Schema der Ergebnisse ist beschädigt (%1): Die Administration des Servers stellt es aus einer Sicherung wieder her</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ResultsRoles</name>

@@ -5259,7 +5259,23 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
     </message>
     <message>
         <source>The server refused %1&apos;s result of &quot;%2&quot; (%3, %4): %5. It stays on this workstation; rename the trainee here or ask the instructor (results grant, docs/results-store.md), then send again.</source>
-        <translation>Pelayan menolak keputusan %1 bagi "%2" (%3, %4): %5. Ia kekal di stesen kerja ini; namakan semula pelatih di sini atau tanya pengajar (results grant, docs/results-store.md), kemudian hantar semula.</translation>
+        <translation>Pelayan menolak keputusan %1 bagi &quot;%2&quot; (%3, %4): %5. Ia kekal di stesen kerja ini; namakan semula pelatih di sini atau tanya pengajar (results grant, docs/results-store.md), kemudian hantar semula.</translation>
+    </message>
+    <message>
+        <source>the results schema is damaged (%1): restore the file from a copy (Palpate does not repair it)</source>
+        <translation>skema keputusan rosak (%1): pulihkan fail daripada salinan (Palpate tidak membaikinya)</translation>
+    </message>
+    <message>
+        <source>table %1 is missing</source>
+        <translation>jadual %1 tiada</translation>
+    </message>
+    <message>
+        <source>table %1 has no column %2</source>
+        <translation>jadual %1 tiada lajur %2</translation>
+    </message>
+    <message>
+        <source>the results schema is damaged (%1): the server&apos;s administrator restores it from a backup</source>
+        <translation>skema keputusan rosak (%1): pentadbir pelayan memulihkannya daripada sandaran</translation>
     </message>
 </context>
 <context>

@@ -127,6 +127,31 @@ TEST_P(Backends, CopyingResultsTwiceKeepsOneOfEach) {
 INSTANTIATE_TEST_SUITE_P(SqliteAndPostgresql, Backends, ::testing::Values(false, true),
                          [](const auto& info) { return info.param ? "Postgresql" : "Sqlite"; });
 
+// A store that says it is of this version but lacks a table or a column is named as damaged,
+// never read as an empty one ("no results").
+TEST(SqliteStore, ADamagedSchemaIsNamedNotReadAsEmpty) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("damaged.sqlite"));
+    {
+        ResultsDatabase db;
+        QString error;
+        ASSERT_TRUE(db.open(path, &error)) << error.toStdString();
+    }
+    {
+        QSqlDatabase raw = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("damage"));
+        raw.setDatabaseName(path);
+        ASSERT_TRUE(raw.open());
+        ASSERT_TRUE(QSqlQuery(raw).exec(QStringLiteral("DROP TABLE staircases")));
+    }
+    QSqlDatabase::removeDatabase(QStringLiteral("damage"));
+    ResultsDatabase db;
+    QString error;
+    EXPECT_FALSE(db.open(path, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("damaged"))) << error.toStdString();
+    EXPECT_TRUE(error.contains(QStringLiteral("staircases"))) << error.toStdString();
+    EXPECT_TRUE(error.contains(path)) << error.toStdString();
+}
+
 // A device or a FIFO given as the store is refused before SQLite opens it (it would block on the
 // FIFO, and write its journal beside the device).
 TEST(SqliteStore, ADeviceOrAFifoIsNoStore) {
