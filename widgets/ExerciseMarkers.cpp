@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace palpate {
 
@@ -307,18 +308,36 @@ void paintExerciseMarkers(QPainter& painter, const ExerciseMarkers& markers, con
         if (!marker.label.isEmpty()) {
             // Beside the marker, on the side away from its lump (never across the ball) and
             // inside the viewport.
-            const double textWidth = QFontMetricsF(font).horizontalAdvance(marker.label);
+            const QFontMetricsF metrics(font);
+            const double textWidth = metrics.horizontalAdvance(marker.label);
             glm::vec2 away(1.0f, -1.0f);
+            std::optional<glm::vec2> body;
+            float bodyPx = 0.0f;
             if (marker.bodyRadiusMm > 0.0)
-                if (const auto body = camera.projectToPixel(marker.bodyCentreMm, size)) {
+                if ((body = camera.projectToPixel(marker.bodyCentreMm, size))) {
                     const glm::vec2 towards = *body - *centre;
                     away = {towards.x > 0.0f ? -1.0f : 1.0f, towards.y > 0.0f ? -1.0f : 1.0f};
+                    glm::vec3 u, v;
+                    tangentFrame(glm::normalize(camera.eyeMm() - marker.bodyCentreMm), u, v);
+                    if (const auto rim = camera.projectToPixel(marker.bodyCentreMm + float(marker.bodyRadiusMm) * u,
+                                                               size))
+                        bodyPx = glm::length(*rim - *body);
                 }
             if (away.x > 0.0f && centre->x + radiusPx + 3.0f + float(textWidth) > size.x) away.x = -1.0f;
             if (away.x < 0.0f && centre->x - radiusPx - 3.0f - float(textWidth) < 0.0f) away.x = 1.0f;
             const double x = away.x > 0.0f ? radiusPx + 3.0 : -radiusPx - 3.0 - textWidth;
-            const double y = away.y < 0.0f ? -radiusPx - 2.0 : radiusPx + 12.0;
-            const QPointF at = toPoint(*centre) + QPointF(x, y);
+            double y = away.y < 0.0f ? -radiusPx - 2.0 : radiusPx + 12.0;
+            QPointF at = toPoint(*centre) + QPointF(x, y);
+            // Pushed to its ball's side by the viewport's edge: then above or below the ball.
+            if (body) {
+                const QRectF text(at.x(), at.y() - metrics.ascent(), textWidth, metrics.height());
+                const bool acrossX = text.right() > body->x - bodyPx && text.left() < body->x + bodyPx;
+                const bool acrossY = text.bottom() > body->y - bodyPx && text.top() < body->y + bodyPx;
+                if (acrossX && acrossY)
+                    at.setY(away.y < 0.0f ? std::min(at.y(), double(body->y - bodyPx) - 2.0 - metrics.descent())
+                                          : std::max(at.y(), double(body->y + bodyPx) + 2.0 + metrics.ascent()));
+            }
+            at.setY(std::clamp(at.y(), metrics.ascent(), double(size.y) - metrics.descent()));
             painter.setPen(QColor(0, 0, 0, int(220 * colour.alphaF())));
             painter.drawText(at + QPointF(1, 1), marker.label);
             painter.setPen(colour);

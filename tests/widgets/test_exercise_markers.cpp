@@ -99,3 +99,56 @@ TEST(HeatMap, OnlyTheSideFacingTheCameraIsColoured) {
 
 }  // namespace
 }  // namespace palpate
+
+namespace palpate {
+namespace {
+
+// A lump's label is drawn beside its surface point, never across its ball: also when the
+// viewport's edge pushes it to the ball's side (then it goes above or below the ball).
+TEST(LumpLabel, NeverCrossesItsBallEvenAtTheViewportsEdge) {
+    const TissueMesh& mesh = test::generatedMesh(GeneratedShape::Sphere, 1442);
+    OrbitCamera camera;
+    camera.reset(mesh.restPositionsMm());
+    const QSize size(320, 240);
+    const glm::vec2 sizeF(320.0f, 240.0f);
+    // The front-facing vertex furthest right on screen: its lump lies to its left, and there is no
+    // room for the label on its right.
+    VertexId right = 0;
+    float rightX = -1e9f;
+    for (VertexId v = 0; v < mesh.vertexCount(); ++v) {
+        const glm::vec3& p = mesh.restPositionsMm()[v];
+        if (glm::dot(mesh.restNormals()[v], camera.eyeMm() - p) <= 0.0f) continue;
+        if (const auto px = camera.projectToPixel(p, sizeF); px && px->x > rightX) {
+            rightX = px->x;
+            right = v;
+        }
+    }
+    ExerciseMarker lump;
+    lump.kind = ExerciseMarker::Kind::Inclusion;
+    lump.positionMm = mesh.restPositionsMm()[right];
+    lump.normal = mesh.restNormals()[right];
+    lump.radiusMm = 7.0;
+    lump.bodyRadiusMm = 7.0;
+    lump.bodyCentreMm = lump.positionMm - 15.0f * lump.normal;  // 8 mm deep
+    lump.label = QStringLiteral("lump 1, 8.0 mm deep");
+    ExerciseMarkers withLabel, without;
+    withLabel.markers.push_back(lump);
+    lump.label.clear();
+    without.markers.push_back(lump);
+    const QImage a = painted(withLabel, camera, size), b = painted(without, camera, size);
+    const auto ball = camera.projectToPixel(lump.bodyCentreMm, sizeF);
+    ASSERT_TRUE(ball);
+    const float ballPx = float(lump.bodyRadiusMm) / camera.mmPerPixelAtTarget(sizeF);
+    int labelPixels = 0, onBall = 0;
+    for (int y = 0; y < size.height(); ++y)
+        for (int x = 0; x < size.width(); ++x) {
+            if (a.pixel(x, y) == b.pixel(x, y)) continue;
+            ++labelPixels;
+            onBall += glm::distance(glm::vec2(float(x) + 0.5f, float(y) + 0.5f), *ball) < 0.9f * ballPx ? 1 : 0;
+        }
+    EXPECT_GT(labelPixels, 50) << "the label is drawn";
+    EXPECT_EQ(onBall, 0) << "of " << labelPixels << " label pixels";
+}
+
+}  // namespace
+}  // namespace palpate
