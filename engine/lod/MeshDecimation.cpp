@@ -1,5 +1,7 @@
 #include "engine/lod/MeshDecimation.h"
 
+#include <algorithm>
+
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModAspectRatioT.hh>
@@ -72,6 +74,21 @@ DecimationResult decimateProgressively(const TissueMesh& source, std::span<const
     if (const std::string e = joinedMessages(validateDecimationGuards(guards)); !e.empty()) {
         result.error = e;
         return result;
+    }
+    {
+        std::vector<std::size_t> valence(source.vertexCount(), 0);
+        for (const auto& t : source.triangles())
+            for (const VertexId v : t) ++valence[v];
+        const auto widest = std::max_element(valence.begin(), valence.end());
+        if (widest != valence.end() && *widest > kMaxDecimationValence) {
+            result.error = source.report().source + ": vertex " +
+                           std::to_string(source.originalIndex()[std::size_t(widest - valence.begin())]) + " has " +
+                           std::to_string(*widest) + " triangles around it (at most " +
+                           std::to_string(kMaxDecimationValence) +
+                           " for levels of detail: a fan that wide makes decimation take hours); remesh the mesh "
+                           "first (palpate-cli mesh import --remesh-edge-mm E, or the window's mesh import)";
+            return result;
+        }
     }
     OmMesh om;
     om.request_vertex_status();

@@ -18,6 +18,12 @@
 
 namespace palpate {
 
+/// The most triangles around one vertex the decimater takes: each collapse at a vertex re-ranks
+/// every edge around it and checks every triangle around each, so a fan of k triangles costs k^2
+/// per collapse (a 2000-triangle hub ran past a minute at 0 %). Remeshed or scanned surfaces have
+/// 5-8; a CAD fan of a few dozen passes.
+inline constexpr std::size_t kMaxDecimationValence = 128;
+
 struct DecimationGuards {
     /// ModNormalFlippingT: a collapse may turn no triangle's normal by more than this (degrees).
     double maxNormalDeviationDeg = 60.0;
@@ -44,7 +50,8 @@ struct DecimationResult {
 /// Decimates `source` progressively to each of `targetVertices` (descending), taking a copy after
 /// each, so that every level is a coarsening of the one before. A target the guards do not let it
 /// reach gives a surface with more vertices (the caller reports it). `progress` receives the
-/// fraction of all planned collapses done; `cancel` stops at a consistent state.
+/// fraction of all planned collapses done; `cancel` stops at a consistent state. A vertex with more
+/// than kMaxDecimationValence triangles around it is an error naming it (remesh first).
 DecimationResult decimateProgressively(const TissueMesh& source, std::span<const std::size_t> targetVertices,
                                        const DecimationGuards& guards,
                                        const std::function<void(double fraction)>& progress = {},

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <set>
 
 namespace palpate {
@@ -104,6 +105,34 @@ TEST(MeshLevels, ASmallMeshHasOnlyItsSourceLevelAndSaysWhy) {
     ASSERT_EQ(levels.levels.size(), 1u);
     ASSERT_EQ(levels.notes.size(), 1u);
     EXPECT_NE(levels.notes[0].find("no coarser level"), std::string::npos) << levels.notes[0];
+}
+
+// A vertex with thousands of triangles around it (a fan from a CAD export) would make the
+// decimater run for hours at 0 %: refused at once, naming the vertex and what to do.
+TEST(MeshLevels, AHugeFanIsRefusedAtOnceNamingItsVertex) {
+    constexpr int kFan = 600;
+    std::vector<glm::vec3> positions{{0.0f, 0.0f, 30.0f}};
+    for (int i = 0; i < kFan; ++i) {
+        const float a = 6.2831853f * float(i) / float(kFan);
+        positions.push_back({40.0f * std::cos(a), 40.0f * std::sin(a), 0.0f});
+    }
+    positions.push_back({0.0f, 0.0f, -30.0f});
+    std::vector<std::array<VertexId, 3>> triangles;
+    for (int i = 0; i < kFan; ++i) {
+        const VertexId a = VertexId(1 + i), b = VertexId(1 + (i + 1) % kFan);
+        triangles.push_back({0, a, b});
+        triangles.push_back({VertexId(kFan + 1), b, a});
+    }
+    auto loaded = TissueMesh::fromTriangles(positions, triangles, "hub.off");
+    ASSERT_TRUE(loaded.mesh) << loaded.error();
+    try {
+        generateLevels(*loaded.mesh, LevelDef{});
+        ADD_FAILURE() << "a 600-triangle fan was decimated";
+    } catch (const std::exception& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("600 triangles around it"), std::string::npos) << what;
+        EXPECT_NE(what.find("remesh"), std::string::npos) << what;
+    }
 }
 
 TEST(MeshLevels, BadOptionsAreNamed) {
