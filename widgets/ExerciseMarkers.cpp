@@ -80,16 +80,30 @@ void paintSurfaceCircle(QPainter& painter, const ExerciseMarker& marker, const O
 /// A lump inside the tissue, seen through the surface: a shaded ball at its centre and true size
 /// (its outline the sphere's silhouette for this camera), and a dashed line up to the surface
 /// point above it, so depth and size read at a glance. Drawn without a depth test on purpose.
-void paintBody(QPainter& painter, const ExerciseMarker& marker, const OrbitCamera& camera, const glm::vec2& size,
-               QColor colour) {
+/// A marker's lump as the viewport shows it: its centre and its silhouette's radius, in pixels;
+/// nullopt when it has none or it is behind the camera.
+struct ProjectedBall {
+    glm::vec2 centre{0.0f};
+    float radiusPx = 0.0f;
+};
+std::optional<ProjectedBall> projectedBall(const ExerciseMarker& marker, const OrbitCamera& camera,
+                                           const glm::vec2& size) {
+    if (!(marker.bodyRadiusMm > 0.0)) return std::nullopt;
     const auto centre = camera.projectToPixel(marker.bodyCentreMm, size);
-    if (!centre) return;
+    if (!centre) return std::nullopt;
     glm::vec3 u, v;
     tangentFrame(glm::normalize(camera.eyeMm() - marker.bodyCentreMm), u, v);
     const auto rim = camera.projectToPixel(marker.bodyCentreMm + float(marker.bodyRadiusMm) * u, size);
-    if (!rim) return;
-    const float radiusPx = std::max(3.0f, glm::length(*rim - *centre));
-    const QPointF c = toPoint(*centre);
+    if (!rim) return std::nullopt;
+    return ProjectedBall{*centre, std::max(3.0f, glm::length(*rim - *centre))};
+}
+
+void paintBody(QPainter& painter, const ExerciseMarker& marker, const OrbitCamera& camera, const glm::vec2& size,
+               QColor colour) {
+    const auto ball = projectedBall(marker, camera, size);
+    if (!ball) return;
+    const float radiusPx = ball->radiusPx;
+    const QPointF c = toPoint(ball->centre);
     if (const auto top = camera.projectToPixel(marker.positionMm, size)) {
         painter.setPen(QPen(colour, 1.5, Qt::DotLine));
         painter.drawLine(toPoint(*top), c);
@@ -311,31 +325,24 @@ void paintExerciseMarkers(QPainter& painter, const ExerciseMarkers& markers, con
             const QFontMetricsF metrics(font);
             const double textWidth = metrics.horizontalAdvance(marker.label);
             glm::vec2 away(1.0f, -1.0f);
-            std::optional<glm::vec2> body;
-            float bodyPx = 0.0f;
-            if (marker.bodyRadiusMm > 0.0)
-                if ((body = camera.projectToPixel(marker.bodyCentreMm, size))) {
-                    const glm::vec2 towards = *body - *centre;
-                    away = {towards.x > 0.0f ? -1.0f : 1.0f, towards.y > 0.0f ? -1.0f : 1.0f};
-                    glm::vec3 u, v;
-                    tangentFrame(glm::normalize(camera.eyeMm() - marker.bodyCentreMm), u, v);
-                    if (const auto rim = camera.projectToPixel(marker.bodyCentreMm + float(marker.bodyRadiusMm) * u,
-                                                               size))
-                        bodyPx = glm::length(*rim - *body);
-                }
+            const std::optional<ProjectedBall> ball = projectedBall(marker, camera, size);
+            if (ball) {
+                const glm::vec2 towards = ball->centre - *centre;
+                away = {towards.x > 0.0f ? -1.0f : 1.0f, towards.y > 0.0f ? -1.0f : 1.0f};
+            }
             if (away.x > 0.0f && centre->x + radiusPx + 3.0f + float(textWidth) > size.x) away.x = -1.0f;
             if (away.x < 0.0f && centre->x - radiusPx - 3.0f - float(textWidth) < 0.0f) away.x = 1.0f;
             const double x = away.x > 0.0f ? radiusPx + 3.0 : -radiusPx - 3.0 - textWidth;
             double y = away.y < 0.0f ? -radiusPx - 2.0 : radiusPx + 12.0;
             QPointF at = toPoint(*centre) + QPointF(x, y);
             // Pushed to its ball's side by the viewport's edge: then above or below the ball.
-            if (body) {
+            if (ball) {
                 const QRectF text(at.x(), at.y() - metrics.ascent(), textWidth, metrics.height());
-                const bool acrossX = text.right() > body->x - bodyPx && text.left() < body->x + bodyPx;
-                const bool acrossY = text.bottom() > body->y - bodyPx && text.top() < body->y + bodyPx;
-                if (acrossX && acrossY)
-                    at.setY(away.y < 0.0f ? std::min(at.y(), double(body->y - bodyPx) - 2.0 - metrics.descent())
-                                          : std::max(at.y(), double(body->y + bodyPx) + 2.0 + metrics.ascent()));
+                const QRectF disc(toPoint(ball->centre) - QPointF(ball->radiusPx, ball->radiusPx),
+                                  QSizeF(2.0 * ball->radiusPx, 2.0 * ball->radiusPx));
+                if (text.intersects(disc))
+                    at.setY(away.y < 0.0f ? std::min(at.y(), disc.top() - 2.0 - metrics.descent())
+                                          : std::max(at.y(), disc.bottom() + 2.0 + metrics.ascent()));
             }
             at.setY(std::clamp(at.y(), metrics.ascent(), double(size.y) - metrics.descent()));
             painter.setPen(QColor(0, 0, 0, int(220 * colour.alphaF())));

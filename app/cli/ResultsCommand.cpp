@@ -63,8 +63,6 @@ bool openExisting(ResultsDatabase& db, const std::string& location, const char* 
 
 std::string text(const QString& s) { return s.toStdString(); }
 
-std::string csvField(const std::string& s) { return csvTextField(s); }
-
 /// A name as the terminal shows it: its control characters escaped (TerminalText.h).
 std::string shown(const QString& s) { return terminalSafe(s.toStdString()); }
 
@@ -119,11 +117,11 @@ int exportCommand(const Given& args) {
     std::ostringstream out;
     out << "trainee,class,exercise,exercise_path,time,duration_s,score,outcome,expert,workstation,uid\n";
     for (const ResultRecord& r : db.allResults())
-        out << csvField(text(r.traineeName)) << ',' << csvField(text(r.traineeClass)) << ','
-            << csvField(text(r.exerciseName)) << ','
-            << csvField(text(r.exercisePath)) << ',' << text(r.startedUtc.toString(Qt::ISODate)) << ',' << r.durationS
-            << ',' << r.score << ',' << text(outcomeKey(r.outcome)) << ',' << (r.expert ? 1 : 0) << ','
-            << csvField(text(r.workstation)) << ',' << text(r.uid) << '\n';
+        out << csvTextField(text(r.traineeName)) << ',' << csvTextField(text(r.traineeClass)) << ','
+            << csvTextField(text(r.exerciseName)) << ',' << csvTextField(text(r.exercisePath)) << ','
+            << text(r.startedUtc.toString(Qt::ISODate)) << ',' << r.durationS << ',' << r.score << ','
+            << text(outcomeKey(r.outcome)) << ',' << (r.expert ? 1 : 0) << ',' << csvTextField(text(r.workstation))
+            << ',' << text(r.uid) << '\n';
     std::ofstream file(*csv);
     file << out.str();
     if (!file) {
