@@ -1,5 +1,6 @@
 #include "results/ResultsDatabase.h"
 
+#include "results/ServerCallDeadline.h"
 #include "results/ServerConnectOptions.h"
 
 #include "results/ServerLocation.h"
@@ -19,6 +20,8 @@
 #include <QSqlQuery>
 #include <QSqlRecord>
 #include <QVariant>
+
+#include <libpq-fe.h>
 
 #include <atomic>
 #include <vector>
@@ -92,6 +95,22 @@ const char* const kServerVersionTable[] = {
 /// Every migration of a fresh or older server runs under this advisory lock: two workstations that
 /// open a new server at once must not both create the tables.
 constexpr int kMigrationLock = 0x50414c50;  // "PALP"
+
+/// The socket of the server connection `db` holds (QPSQL's handle is libpq's PGconn); -1 if none.
+int serverSocket(const QSqlDatabase& db) {
+    const QVariant handle = db.isValid() && db.driver() ? db.driver()->handle() : QVariant();
+    // (Qt names the type by libpq's struct: "pg_conn*"; older builds "PGconn*".)
+    if (!handle.isValid() ||
+        (qstrcmp(handle.typeName(), "pg_conn*") != 0 && qstrcmp(handle.typeName(), "PGconn*") != 0))
+        return -1;
+    PGconn* connection = *static_cast<PGconn* const*>(handle.constData());
+    return connection ? PQsocket(connection) : -1;
+}
+
+/// Runs a prepared statement, unless preparing it failed (a statement the server cancelled while it
+/// waited on a lock): Qt's PostgreSQL driver would then run an empty EXECUTE and report a syntax
+/// error in place of the real problem, which stays in lastError().
+bool execPrepared(QSqlQuery& q) { return !q.lastError().isValid() && q.exec(); }
 
 QString newUid() { return QUuid::createUuid().toString(QUuid::WithoutBraces); }
 
@@ -186,8 +205,26 @@ ResultsDatabase::ResultsDatabase()
 
 ResultsDatabase::~ResultsDatabase() { close(); }
 
+class ResultsDatabase::ServerCall {
+public:
+    ServerCall(ServerCallDeadline* deadline, int socket) : mCall(deadline, socket) {}
+
+private:
+    ServerCallDeadline::Call mCall;
+};
+
+ResultsDatabase::ServerCall ResultsDatabase::serverCall() const {
+    return ServerCall(mDeadline.get(), mDeadline ? serverSocket(mDb) : -1);
+}
+
 bool ResultsDatabase::fail(const QString& problem, QString* error) const {
-    mLastError = tr("%1: %2").arg(QDir::toNativeSeparators(mPath), problem);
+    // A call the deadline cut short fails as "server closed the connection": say what happened.
+    const QString why = mDeadline && mDeadline->expired()
+                            ? tr("the server did not answer within %1 s (the URL's statement_timeout sets the wait, "
+                                 "docs/results-store.md)")
+                                  .arg(double(mDeadline->limit().count()) / 1000.0)
+                            : problem;
+    mLastError = tr("%1: %2").arg(QDir::toNativeSeparators(mPath), why);
     if (error) *error = mLastError;
     return false;
 }
@@ -206,6 +243,7 @@ bool ResultsDatabase::isOpen() const { return mDb.isValid() && mDb.isOpen(); }
 
 bool ResultsDatabase::open(const QString& path, QString* error) {
     close();
+    mDeadline.reset();
     mPath = path;
     mServer = isServerLocation(path);
     if (mServer) return openServer(path, error);
@@ -321,20 +359,22 @@ bool ResultsDatabase::openServer(const QString& location, QString* error) {
     // libpq's own options from the URL's query (sslmode, sslrootcert, ...), each quoted; TLS when
     // the server offers it and a short wait when it is away, unless the URL says otherwise.
     QString optionError;
-    const QString options = serverConnectOptions(url, optionError);
-    if (!optionError.isEmpty()) return fail(optionError, error);
+    const std::optional<ServerOptions> options = serverConnectOptions(url, optionError);
+    if (!options) return fail(optionError, error);
     mPath = url.toString(QUrl::RemovePassword);
     mDb = QSqlDatabase::addDatabase(QStringLiteral("QPSQL"), mConnection);
     mDb.setHostName(url.host());
     if (url.port() > 0) mDb.setPort(url.port());
     mDb.setDatabaseName(database);
     if (!url.userName().isEmpty()) mDb.setUserName(url.userName());
-    mDb.setConnectOptions(options);
+    mDb.setConnectOptions(options->connectOptions);
     if (!mDb.open()) {
         const QString why = mDb.lastError().text().trimmed();
         close();
         return fail(tr("cannot connect: %1").arg(why), error);
     }
+    mDeadline = std::make_unique<ServerCallDeadline>(std::chrono::milliseconds(options->callDeadlineMs()));
+    const ServerCall call = serverCall();
     QSqlQuery q(mDb);
     q.exec(QStringLiteral("SELECT pg_advisory_lock(%1)").arg(kMigrationLock));
     int version = -1;
@@ -402,6 +442,7 @@ bool ResultsDatabase::openServer(const QString& location, QString* error) {
 }
 
 bool ResultsDatabase::answers() const {
+    const ServerCall call = serverCall();
     if (!isOpen()) return false;
     QSqlQuery q(mDb);
     return q.exec(QStringLiteral("SELECT 1")) && q.next();
@@ -414,6 +455,7 @@ QString ResultsDatabase::connectionDescription() const {
 }
 
 bool ResultsDatabase::runStatements(const QStringList& statements, QString* error) {
+    const ServerCall call = serverCall();
     if (!isOpen()) return fail(tr("not open"), error);
     const QString why = runInTransaction(mDb, statements);
     if (!why.isEmpty()) return fail(why, error);
@@ -500,7 +542,7 @@ QString ResultsDatabase::migrateV4ToV5() {
             q.prepare(QStringLiteral("UPDATE results SET uid = ? WHERE id = ?"));
             q.addBindValue(newUid());
             q.addBindValue(id);
-            if (!q.exec()) why = q.lastError().text();
+            if (!execPrepared(q)) why = q.lastError().text();
         }
         if (why.isEmpty() && !q.exec(QStringLiteral("CREATE UNIQUE INDEX results_by_uid ON results(uid)"))) why = q.lastError().text();
         if (why.isEmpty() && !q.exec(setVersionStatement(5))) why = q.lastError().text();
@@ -536,7 +578,7 @@ QString ResultsDatabase::migrateV2ToV3() {
             q.prepare(QStringLiteral("UPDATE results SET outcome = ? WHERE id = ?"));
             q.addBindValue(outcomeKey(ResultOutcome::Completed));
             q.addBindValue(id);
-            if (!q.exec()) why = q.lastError().text();
+            if (!execPrepared(q)) why = q.lastError().text();
         }
         if (why.isEmpty() && !q.exec(setVersionStatement(3))) why = q.lastError().text();
         q.finish();
@@ -547,6 +589,7 @@ QString ResultsDatabase::migrateV2ToV3() {
 }
 
 int ResultsDatabase::schemaVersion() const {
+    const ServerCall call = serverCall();
     if (!isOpen()) return -1;
     QSqlQuery q(mDb);
     if (!q.exec(mServer ? QStringLiteral("SELECT version FROM palpate_schema") : QStringLiteral("PRAGMA user_version")) ||
@@ -574,6 +617,7 @@ bool ResultsDatabase::createVersion1(const QString& path, QString* error) {
 }
 
 qint64 ResultsDatabase::addTrainee(const QString& name, QString* error) {
+    const ServerCall call = serverCall();
     const QString trimmed = name.trimmed();
     if (!isOpen()) return fail(tr("not open"), error), -1;
     if (trimmed.isEmpty()) return fail(tr("a trainee needs a name"), error), -1;
@@ -584,8 +628,7 @@ qint64 ResultsDatabase::addTrainee(const QString& name, QString* error) {
         QSqlQuery q(mDb);
         q.prepare(QStringLiteral("SELECT id FROM trainees WHERE name = ?"));
         q.addBindValue(trimmed);
-        if (!q.exec())
-            why = q.lastError().text();
+        if (!execPrepared(q)) why = q.lastError().text();
         else if (q.next())
             id = q.value(0).toLongLong();
         else {
@@ -598,13 +641,13 @@ qint64 ResultsDatabase::addTrainee(const QString& name, QString* error) {
             q.addBindValue(trimmed);
             q.addBindValue(isoUtc(QDateTime::currentDateTimeUtc()));
             q.addBindValue(mClassName.isNull() ? QString(QLatin1String("")) : mClassName);
-            if (!q.exec()) {
+            if (!execPrepared(q)) {
                 why = q.lastError().text();
             } else {
                 q.finish();
                 q.prepare(QStringLiteral("SELECT id FROM trainees WHERE name = ?"));
                 q.addBindValue(trimmed);
-                if (!q.exec()) why = q.lastError().text();
+                if (!execPrepared(q)) why = q.lastError().text();
                 else if (q.next()) id = q.value(0).toLongLong();
                 // The name is taken, by a trainee this role may not see: one of another class.
                 else why = tr("the server already has a trainee of that name in another class");
@@ -620,11 +663,12 @@ qint64 ResultsDatabase::addTrainee(const QString& name, QString* error) {
 }
 
 std::vector<TraineeRecord> ResultsDatabase::trainees() const {
+    const ServerCall call = serverCall();
     std::vector<TraineeRecord> out;
     if (!isOpen()) return out;
     QSqlQuery q(mDb);
     if (!q.exec(QStringLiteral("SELECT id, name, created, class_name FROM trainees ORDER BY name, id"))) {
-        mLastError = tr("%1: %2").arg(mPath, q.lastError().text());
+        fail(q.lastError().text(), nullptr);
         return out;
     }
     while (q.next())
@@ -642,6 +686,7 @@ qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, c
 qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, const QString& exerciseName,
                                   const QString& exercisePath, const QDateTime& startedUtc, double durationS,
                                   const QString& recordingPath, bool expert, QString* error) {
+    const ServerCall call = serverCall();
     QJsonArray aidsArray;
     for (const GuidanceAid& aid : report.aids)
         aidsArray.append(QJsonObject{{QStringLiteral("name"), QString::fromStdString(aid.name)},
@@ -662,8 +707,7 @@ qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, c
         QSqlQuery q(mDb);
         q.prepare(QStringLiteral("SELECT 1 FROM trainees WHERE id = ?"));
         q.addBindValue(traineeId);
-        if (!q.exec())
-            why = q.lastError().text();
+        if (!execPrepared(q)) why = q.lastError().text();
         else if (!q.next())
             why = tr("no trainee with id %1").arg(traineeId);
         else {
@@ -687,8 +731,7 @@ qint64 ResultsDatabase::addResult(qint64 traineeId, const ScoreReport& report, c
             q.addBindValue(aids);
             q.addBindValue(newUid());
             q.addBindValue(QSysInfo::machineHostName());
-            if (q.exec() && q.next())
-                id = q.value(0).toLongLong();
+            if (execPrepared(q) && q.next()) id = q.value(0).toLongLong();
             else
                 why = q.lastError().text();
         }
@@ -712,16 +755,18 @@ std::vector<ResultRecord> ResultsDatabase::unsyncedResults() const {
 }
 
 bool ResultsDatabase::markSynced(const QString& uid, const QDateTime& whenUtc, QString* error) {
+    const ServerCall call = serverCall();
     if (!isOpen()) return fail(tr("not open"), error);
     QSqlQuery q(mDb);
     q.prepare(QStringLiteral("UPDATE results SET synced_utc = ? WHERE uid = ?"));
     q.addBindValue(isoUtc(whenUtc));
     q.addBindValue(uid);
-    if (!q.exec()) return fail(tr("cannot mark result %1 as sent: %2").arg(uid, q.lastError().text()), error);
+    if (!execPrepared(q)) return fail(tr("cannot mark result %1 as sent: %2").arg(uid, q.lastError().text()), error);
     return true;
 }
 
 std::optional<bool> ResultsDatabase::importResult(const ResultRecord& r, const QString& traineeName, QString* error) {
+    const ServerCall call = serverCall();
     if (r.uid.isEmpty()) return fail(tr("a result without a uid cannot be copied"), error), std::nullopt;
     const qint64 trainee = addTrainee(traineeName, error);
     if (trainee < 0) return std::nullopt;
@@ -748,7 +793,8 @@ std::optional<bool> ResultsDatabase::importResult(const ResultRecord& r, const Q
     q.addBindValue(r.aidsJson);
     q.addBindValue(r.uid);
     q.addBindValue(r.workstation);
-    if (!q.exec()) return fail(tr("cannot store result %1: %2").arg(r.uid, q.lastError().text()), error), std::nullopt;
+    if (!execPrepared(q))
+        return fail(tr("cannot store result %1: %2").arg(r.uid, q.lastError().text()), error), std::nullopt;
     return q.next();
 }
 
@@ -760,6 +806,7 @@ std::vector<ResultRecord> ResultsDatabase::expertResults(const QString& exercise
 }
 
 std::vector<ResultRecord> ResultsDatabase::selectResults(const QString& where, const QVariant& bind) const {
+    const ServerCall call = serverCall();
     std::vector<ResultRecord> out;
     if (!isOpen()) return out;
     QSqlQuery q(mDb);
@@ -770,8 +817,8 @@ std::vector<ResultRecord> ResultsDatabase::selectResults(const QString& where, c
         " ORDER BY r.started_utc, r.id")
                   .arg(where));
     q.addBindValue(bind);
-    if (!q.exec()) {
-        mLastError = tr("%1: %2").arg(mPath, q.lastError().text());
+    if (!execPrepared(q)) {
+        fail(q.lastError().text(), nullptr);
         return out;
     }
     while (q.next()) {
@@ -801,13 +848,14 @@ std::vector<ResultRecord> ResultsDatabase::selectResults(const QString& where, c
 }
 
 QString ResultsDatabase::staircase(qint64 traineeId, const QString& exerciseKey) const {
+    const ServerCall call = serverCall();
     if (!isOpen()) return {};
     QSqlQuery q(mDb);
     q.prepare(QStringLiteral("SELECT state_json FROM staircases WHERE trainee_id = ? AND exercise_key = ?"));
     q.addBindValue(traineeId);
     q.addBindValue(exerciseKey);
-    if (!q.exec()) {
-        mLastError = tr("%1: %2").arg(mPath, q.lastError().text());
+    if (!execPrepared(q)) {
+        fail(q.lastError().text(), nullptr);
         return {};
     }
     return q.next() ? q.value(0).toString() : QString();
@@ -815,6 +863,7 @@ QString ResultsDatabase::staircase(qint64 traineeId, const QString& exerciseKey)
 
 bool ResultsDatabase::putStaircase(qint64 traineeId, const QString& exerciseKey, const QString& stateJson,
                                    QString* error) {
+    const ServerCall call = serverCall();
     if (!isOpen()) return fail(tr("not open"), error);
     if (!beginWrite(mDb)) return fail(mDb.lastError().text(), error);
     QString why;
@@ -827,7 +876,7 @@ bool ResultsDatabase::putStaircase(qint64 traineeId, const QString& exerciseKey,
         q.addBindValue(exerciseKey);
         q.addBindValue(stateJson);
         q.addBindValue(isoUtc(QDateTime::currentDateTimeUtc()));
-        if (!q.exec()) why = q.lastError().text();
+        if (!execPrepared(q)) why = q.lastError().text();
     }
     if (why.isEmpty() && !mDb.commit()) why = mDb.lastError().text();
     if (!why.isEmpty()) {

@@ -14,10 +14,13 @@
 #include <QString>
 #include <QVariant>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
 namespace palpate {
+
+class ServerCallDeadline;
 
 struct TraineeRecord {
     qint64 id = -1;
@@ -155,6 +158,9 @@ public:
 
 private:
     bool fail(const QString& problem, QString* error) const;
+    /// On a server, every public call runs under a deadline (ServerCallDeadline.h); on a file, none.
+    class ServerCall;
+    ServerCall serverCall() const;
     bool migrate(int from, QString* error);
     /// "" when every table and column this build reads is there; else which one is missing.
     QString schemaProblem() const;
@@ -176,6 +182,7 @@ private:
     QString mClassName;
     bool mEncrypted = false;
     QSqlDatabase mDb;
+    std::unique_ptr<ServerCallDeadline> mDeadline;  ///< on a server only
     mutable QString mLastError;
 };
 

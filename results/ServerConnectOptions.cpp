@@ -39,6 +39,15 @@ constexpr std::array<const char*, 20> kAllowed = {"sslmode",
                                                   "tcp_user_timeout"};
 
 constexpr int kMaxConnectTimeoutS = 60;
+constexpr int kMaxStatementTimeoutS = 600;
+
+/// A whole number of seconds in [1, max], or nothing.
+std::optional<int> seconds(const QString& value, int max) {
+    bool ok = false;
+    const int s = value.toInt(&ok);
+    if (!ok || s < 1 || s > max) return std::nullopt;
+    return s;
+}
 
 bool allowed(const QString& key) {
     for (const char* k : kAllowed)
@@ -57,7 +66,8 @@ QString conninfoQuoted(const QString& value) {
     return out + QLatin1Char('\'');
 }
 
-QString serverConnectOptions(const QUrl& url, QString& error) {
+std::optional<ServerOptions> serverConnectOptions(const QUrl& url, QString& error) {
+    ServerOptions out;
     QStringList options;
     bool sslmode = false, timeout = false;
     for (const auto& [key, value] : QUrlQuery(url).queryItems(QUrl::FullyDecoded)) {
@@ -68,28 +78,32 @@ QString serverConnectOptions(const QUrl& url, QString& error) {
             error = Tr::tr(
                 "a password in the URL is refused: put it in ~/.pgpass or the file PGPASSFILE names "
                 "(docs/results-store.md)");
-            return {};
+            return std::nullopt;
+        }
+        if (key == QLatin1String("statement_timeout")) {
+            const std::optional<int> s = seconds(value, kMaxStatementTimeoutS);
+            if (!s) {
+                error = Tr::tr("statement_timeout must be 1 to %1 seconds").arg(kMaxStatementTimeoutS);
+                return std::nullopt;
+            }
+            out.statementTimeoutS = *s;
+            continue;
         }
         if (!allowed(key)) {
             error = Tr::tr(
                         "option '%1' is not accepted in the URL (who connects and where come from the URL's own "
                         "parts; docs/results-store.md lists the options)")
                         .arg(key.left(40));
-            return {};
+            return std::nullopt;
         }
         // Qt's driver turns every ';' into a space before libpq reads the string.
         if (value.contains(QLatin1Char(';')) || value.contains(QChar(0))) {
             error = Tr::tr("option '%1' has a value libpq cannot take (a ';' or a NUL)").arg(key);
-            return {};
+            return std::nullopt;
         }
-        if (key == QLatin1String("connect_timeout")) {
-            bool ok = false;
-            const int seconds = value.toInt(&ok);
-            if (!ok || seconds < 1 || seconds > kMaxConnectTimeoutS) {
-                error = Tr::tr("connect_timeout must be 1 to %1 seconds (0 would wait for ever)")
-                            .arg(kMaxConnectTimeoutS);
-                return {};
-            }
+        if (key == QLatin1String("connect_timeout") && !seconds(value, kMaxConnectTimeoutS)) {
+            error = Tr::tr("connect_timeout must be 1 to %1 seconds (0 would wait for ever)").arg(kMaxConnectTimeoutS);
+            return std::nullopt;
         }
         options << key + QLatin1Char('=') + conninfoQuoted(value);
         sslmode |= key == QLatin1String("sslmode");
@@ -97,8 +111,12 @@ QString serverConnectOptions(const QUrl& url, QString& error) {
     }
     if (!sslmode) options << QStringLiteral("sslmode='prefer'");
     if (!timeout) options << QStringLiteral("connect_timeout='5'");
+    // The server cancels a statement that runs longer (one waiting on a lock, a slow disk).
+    options << QStringLiteral("options=") +
+                   conninfoQuoted(QStringLiteral("-c statement_timeout=%1").arg(out.statementTimeoutS * 1000));
+    out.connectOptions = options.join(QLatin1Char(';'));
     error.clear();
-    return options.join(QLatin1Char(';'));
+    return out;
 }
 
 }  // namespace palpate

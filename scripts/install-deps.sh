@@ -7,7 +7,7 @@ packages=(
   g++ cmake ninja-build pkg-config git
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-charts-dev qt6-tools-dev qt6-tools-dev-tools
   qt6-l10n-tools libqt6sql6-sqlite libqt6sql6-psql qt6-qpa-plugins libgl-dev libegl-dev libgl1-mesa-dri
-  postgresql-15 postgresql-common
+  postgresql-15 postgresql-common libpq-dev
   libopenmesh-dev libglm-dev nlohmann-json3-dev libcli11-dev libeigen3-dev libcgal-dev
   libhidapi-dev libusb-1.0-0-dev umockdev libumockdev-dev
   libgtest-dev libgmock-dev libbenchmark-dev

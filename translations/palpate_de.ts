@@ -5281,6 +5281,14 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>the results schema is damaged (%1): the server&apos;s administrator restores it from a backup</source>
         <translation>das Schema der Ergebnisse ist beschädigt (%1): Die Administration des Servers stellt es aus einer Sicherung wieder her</translation>
     </message>
+    <message>
+        <source>the server did not answer within %1 s (the URL&apos;s statement_timeout sets the wait, docs/results-store.md)</source>
+        <translation>der Server hat nicht innerhalb von %1 s geantwortet (statement_timeout in der URL legt die Wartezeit fest, docs/results-store.md)</translation>
+    </message>
+    <message>
+        <source>statement_timeout must be 1 to %1 seconds</source>
+        <translation>statement_timeout muss 1 bis %1 Sekunden betragen</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ResultsRoles</name>

@@ -5277,6 +5277,14 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>the results schema is damaged (%1): the server&apos;s administrator restores it from a backup</source>
         <translation>skema keputusan rosak (%1): pentadbir pelayan memulihkannya daripada sandaran</translation>
     </message>
+    <message>
+        <source>the server did not answer within %1 s (the URL&apos;s statement_timeout sets the wait, docs/results-store.md)</source>
+        <translation>pelayan tidak menjawab dalam %1 s (statement_timeout dalam URL menetapkan tempoh menunggu, docs/results-store.md)</translation>
+    </message>
+    <message>
+        <source>statement_timeout must be 1 to %1 seconds</source>
+        <translation>statement_timeout mestilah 1 hingga %1 saat</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ResultsRoles</name>

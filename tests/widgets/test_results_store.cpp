@@ -9,6 +9,7 @@
 #include "results/ResultSync.h"
 #include "results/ResultUploader.h"
 #include "results/ResultsDatabase.h"
+#include "results/ServerCallDeadline.h"
 #include "results/ServerConnectOptions.h"
 #include "tests/widgets/ResultsServer.h"
 
@@ -20,6 +21,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QSqlDatabase>
+#include <QSqlError>
 #include <QSqlQuery>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -32,6 +34,7 @@
 #include <thread>
 
 #include <arpa/inet.h>
+#include <csignal>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
@@ -233,18 +236,23 @@ TEST(PostgresqlStore, APasswordInTheUrlIsRefusedAndAnAbsentServerNamed) {
 // refused in any form and never repeated, and connect_timeout cannot be 0 (for ever).
 TEST(PostgresqlStore, UrlOptionsCannotSmuggleAPasswordAUserOrAnotherSslmode) {
     const auto options = [](const char* url, QString& error) {
-        return serverConnectOptions(QUrl(QString::fromUtf8(url)), error);
+        const std::optional<ServerOptions> out = serverConnectOptions(QUrl(QString::fromUtf8(url)), error);
+        return out ? out->connectOptions : QString();
     };
+    // Every connection asks the server to cancel a statement that runs longer than 5 s.
+    const QString timeout = QStringLiteral(";options='-c statement_timeout=5000'");
     QString error;
-    EXPECT_EQ(options("postgresql://ws@host/class", error), QStringLiteral("sslmode='prefer';connect_timeout='5'"));
+    EXPECT_EQ(options("postgresql://ws@host/class", error),
+              QStringLiteral("sslmode='prefer';connect_timeout='5'") + timeout);
     EXPECT_EQ(error, QString());
     EXPECT_EQ(options("postgresql://ws@host/class?sslmode=verify-full&sslrootcert=/etc/ca%20root.crt", error),
-              QStringLiteral("sslmode='verify-full';sslrootcert='/etc/ca root.crt';connect_timeout='5'"));
+              QStringLiteral("sslmode='verify-full';sslrootcert='/etc/ca root.crt';connect_timeout='5'") + timeout);
     // A space in a value stays inside its quotes: one option, whatever follows the space.
     EXPECT_EQ(options("postgresql://ws@host/class?sslmode=verify-full&application_name=x%20sslmode%3Ddisable", error),
-              QStringLiteral("sslmode='verify-full';application_name='x sslmode=disable';connect_timeout='5'"));
+              QStringLiteral("sslmode='verify-full';application_name='x sslmode=disable';connect_timeout='5'") +
+                  timeout);
     EXPECT_EQ(options("postgresql://ws@host/class?application_name=it%27s%5C", error),
-              QStringLiteral("application_name='it\\'s\\\\';sslmode='prefer';connect_timeout='5'"));
+              QStringLiteral("application_name='it\\'s\\\\';sslmode='prefer';connect_timeout='5'") + timeout);
     for (const char* url :
          {"postgresql://room12@host/palpate?password=room12pw", "postgresql://room12@host/palpate?PassWord=room12pw",
           "postgresql://room12@host/palpate?sslmode=prefer%20password%3Droom12pw"}) {
@@ -265,7 +273,21 @@ TEST(PostgresqlStore, UrlOptionsCannotSmuggleAPasswordAUserOrAnotherSslmode) {
     EXPECT_EQ(options("postgresql://ws@host/class?connect_timeout=0", error), QString());
     EXPECT_TRUE(error.contains(QStringLiteral("connect_timeout"))) << error.toStdString();
     EXPECT_EQ(options("postgresql://ws@host/class?connect_timeout=12", error),
-              QStringLiteral("connect_timeout='12';sslmode='prefer'"));
+              QStringLiteral("connect_timeout='12';sslmode='prefer'") + timeout);
+    // statement_timeout is Palpate's: the server's limit, and the client's a little after it.
+    QString unused;
+    const std::optional<ServerOptions> slow = serverConnectOptions(
+        QUrl(QStringLiteral("postgresql://ws@host/class?statement_timeout=12")), unused);
+    ASSERT_TRUE(slow.has_value());
+    EXPECT_EQ(slow->connectOptions,
+              QStringLiteral("sslmode='prefer';connect_timeout='5';options='-c statement_timeout=12000'"));
+    EXPECT_EQ(slow->callDeadlineMs(), 14000);
+    for (const char* url :
+         {"postgresql://ws@host/class?statement_timeout=0", "postgresql://ws@host/class?statement_timeout=601",
+          "postgresql://ws@host/class?statement_timeout=soon"}) {
+        EXPECT_EQ(options(url, error), QString()) << url;
+        EXPECT_TRUE(error.contains(QStringLiteral("statement_timeout"))) << error.toStdString();
+    }
 }
 
 // A server that takes the connection and then says nothing (a stalled machine, a wrong port that
@@ -299,6 +321,119 @@ TEST(PostgresqlStore, AServerThatAcceptsAndStallsIsReportedNotWaitedOn) {
 }
 
 // Eight workstations send at once, each with its own connection: every result arrives once.
+// The deadline on its own: a call that outlives it has its socket shut (a blocked read returns at
+// once), and a call that ends in time leaves the socket alone, even when the next call reuses it.
+TEST(ServerCallDeadlineTest, ShutsTheSocketOfACallThatOutlivesItOnly) {
+    int pair[2];
+    ASSERT_EQ(::socketpair(AF_UNIX, SOCK_STREAM, 0, pair), 0);
+    ServerCallDeadline deadline(std::chrono::milliseconds(200));
+    {
+        const ServerCallDeadline::Call quick(&deadline, pair[0]);
+        const ServerCallDeadline::Call nested(&deadline, pair[0]);  // only the outer one sets the deadline
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));
+    EXPECT_FALSE(deadline.expired());
+    ASSERT_EQ(::write(pair[1], "x", 1), 1);
+    char byte = 0;
+    EXPECT_EQ(::read(pair[0], &byte, 1), 1) << "a call that ended in time had its socket shut";
+    QElapsedTimer clock;
+    clock.start();
+    {
+        const ServerCallDeadline::Call stalled(&deadline, pair[0]);
+        EXPECT_EQ(::read(pair[0], &byte, 1), 0) << "the read should end when the socket is shut";
+    }
+    EXPECT_GE(clock.elapsed(), 150);
+    EXPECT_LT(clock.elapsed(), 10000);
+    EXPECT_TRUE(deadline.expired());
+    ::close(pair[0]);
+    ::close(pair[1]);
+}
+
+namespace {
+
+/// A connection of the test's own as the cluster's superuser (to find and stop another's backend,
+/// or to hold a lock); closed and removed with the object.
+struct AdminConnection {
+    AdminConnection() {
+        db = QSqlDatabase::addDatabase(QStringLiteral("QPSQL"), QStringLiteral("stall-admin"));
+        db.setHostName(qEnvironmentVariable("PGHOST"));
+        db.setPort(qEnvironmentVariableIntValue("PGPORT"));
+        db.setDatabaseName(qEnvironmentVariable("PGDATABASE"));
+        db.setUserName(qEnvironmentVariable("PGUSER"));
+        db.open();
+    }
+    ~AdminConnection() {
+        db.close();
+        db = QSqlDatabase();
+        QSqlDatabase::removeDatabase(QStringLiteral("stall-admin"));
+    }
+    /// The backend serving the connection whose application_name is `name`; 0 if none.
+    qint64 backendOf(const QString& name) {
+        QSqlQuery q(db);
+        q.prepare(QStringLiteral("SELECT pid FROM pg_stat_activity WHERE application_name = ?"));
+        q.addBindValue(name);
+        return q.exec() && q.next() ? q.value(0).toLongLong() : 0;
+    }
+    QSqlDatabase db;
+};
+
+}  // namespace
+
+// A server that answered the connection and then stops in the middle of the session (its process
+// stopped, as a machine that went to sleep): the next call gives up after the statement timeout
+// and a grace, names the wait, and the database says so; never a hang. And a statement the server
+// itself holds up (a lock another session keeps) is cancelled by the server at the timeout.
+TEST(PostgresqlStore, AServerThatStallsMidSessionIsReportedWithinTheStatementTimeout) {
+    REQUIRE_SERVER();
+    clearServer();
+    AdminConnection admin;
+    ASSERT_TRUE(admin.db.isOpen()) << admin.db.lastError().text().toStdString();
+    {
+        ResultsDatabase db;
+        QString error;
+        ASSERT_TRUE(db.open(serverUrl() + QStringLiteral("?statement_timeout=1&application_name=palpate-stall"),
+                            &error))
+            << error.toStdString();
+        ASSERT_GE(db.addTrainee(QStringLiteral("Ada")), 0);
+        const qint64 backend = admin.backendOf(QStringLiteral("palpate-stall"));
+        ASSERT_GT(backend, 0);
+        ASSERT_EQ(::kill(pid_t(backend), SIGSTOP), 0);
+        QElapsedTimer clock;
+        clock.start();
+        const auto trainees = db.trainees();
+        const double waitedS = double(clock.elapsed()) / 1000.0;
+        ::kill(pid_t(backend), SIGCONT);
+        std::printf("[ figures  ] a server stopped mid-session was reported after %.1f s: %s\n", waitedS,
+                    qPrintable(db.lastError()));
+        EXPECT_TRUE(trainees.empty());
+        EXPECT_TRUE(db.lastError().contains(QStringLiteral("did not answer within 3 s")))
+            << db.lastError().toStdString();
+        EXPECT_GE(waitedS, 2.5);
+        EXPECT_LT(waitedS, 30.0) << "a hang, not a timeout";
+        // The connection is spent: the next call fails at once, it does not wait again.
+        clock.restart();
+        EXPECT_FALSE(db.answers());
+        EXPECT_LT(double(clock.elapsed()) / 1000.0, 2.5);
+    }
+    {
+        ResultsDatabase db;
+        QString error;
+        ASSERT_TRUE(db.open(serverUrl() + QStringLiteral("?statement_timeout=1"), &error)) << error.toStdString();
+        QSqlQuery hold(admin.db);
+        ASSERT_TRUE(hold.exec(QStringLiteral("BEGIN")));
+        ASSERT_TRUE(hold.exec(QStringLiteral("LOCK TABLE trainees IN ACCESS EXCLUSIVE MODE")));
+        QElapsedTimer clock;
+        clock.start();
+        EXPECT_LT(db.addTrainee(QStringLiteral("Bo"), &error), 0);
+        const double waitedS = double(clock.elapsed()) / 1000.0;
+        hold.exec(QStringLiteral("ROLLBACK"));
+        EXPECT_TRUE(error.contains(QStringLiteral("statement timeout"))) << error.toStdString();
+        EXPECT_LT(waitedS, 2.9) << "the server's own cancel, before the client's deadline";
+        // The connection survives the server's cancel.
+        EXPECT_GE(db.addTrainee(QStringLiteral("Bo"), &error), 0) << error.toStdString();
+    }
+}
+
 TEST(PostgresqlStore, ManyWorkstationsAtOnceLoseAndDuplicateNothing) {
     REQUIRE_SERVER();
     clearServer();
