@@ -359,7 +359,7 @@ bool ResultsDatabase::openServer(const QString& location, QString* error) {
     // libpq's own options from the URL's query (sslmode, sslrootcert, ...), each quoted; TLS when
     // the server offers it and a short wait when it is away, unless the URL says otherwise.
     QString optionError;
-    const std::optional<ServerOptions> options = serverConnectOptions(url, optionError);
+    const std::optional<ServerConnectDef> options = serverConnectOptions(url, optionError);
     if (!options) return fail(optionError, error);
     mPath = url.toString(QUrl::RemovePassword);
     mDb = QSqlDatabase::addDatabase(QStringLiteral("QPSQL"), mConnection);

@@ -66,8 +66,8 @@ QString conninfoQuoted(const QString& value) {
     return out + QLatin1Char('\'');
 }
 
-std::optional<ServerOptions> serverConnectOptions(const QUrl& url, QString& error) {
-    ServerOptions out;
+std::optional<ServerConnectDef> serverConnectOptions(const QUrl& url, QString& error) {
+    ServerConnectDef out;
     QStringList options;
     bool sslmode = false, timeout = false;
     for (const auto& [key, value] : QUrlQuery(url).queryItems(QUrl::FullyDecoded)) {

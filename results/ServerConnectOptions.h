@@ -14,7 +14,7 @@
 
 namespace palpate {
 
-struct ServerOptions {
+struct ServerConnectDef {
     /// As Qt's PostgreSQL driver takes them (setConnectOptions: "key='value';..."), with
     /// sslmode=prefer and connect_timeout=5 unless the URL sets them, and the statement timeout.
     QString connectOptions;
@@ -25,7 +25,7 @@ struct ServerOptions {
 
 /// The URL's query as options for the driver; or nothing, with `error` saying which option and why
 /// (never quoting a value: it may hold a secret).
-std::optional<ServerOptions> serverConnectOptions(const QUrl& url, QString& error);
+std::optional<ServerConnectDef> serverConnectOptions(const QUrl& url, QString& error);
 
 /// `value` as a libpq conninfo value: in single quotes, a quote or backslash escaped by a backslash.
 QString conninfoQuoted(const QString& value);

@@ -248,7 +248,7 @@ Problems validateRecordingHeader(const RecordingHeader& h) {
     return {};
 }
 
-void encodeRecordingHeader(const RecordingHeader& h, std::vector<std::uint8_t>& out) {
+std::uint32_t encodeRecordingHeader(const RecordingHeader& h, std::vector<std::uint8_t>& out) {
     std::vector<std::uint8_t> body;
     ByteWriter b(body);
     b.str(h.engineVersion);
@@ -272,7 +272,9 @@ void encodeRecordingHeader(const RecordingHeader& h, std::vector<std::uint8_t>& 
     w.u8(kRecordingFormatVersion);
     w.u32(std::uint32_t(body.size()));
     w.bytes(body.data(), body.size());
-    w.u32(crc32(body.data(), body.size()));
+    const std::uint32_t crc = crc32(body.data(), body.size());
+    w.u32(crc);
+    return crc;
 }
 
 std::string decodeRecordingHeader(const std::uint8_t* data, std::size_t size, RecordingHeader& header,
@@ -336,6 +338,7 @@ std::string decodeRecordingHeader(const std::uint8_t* data, std::size_t size, Re
     }
     // 1 and 2 share every layout; 2 adds an event kind; 3 appends the contact; 4 the mesh's unit
     h.formatVersion = version;
+    h.bodyCrc = readU32(body + length);
     header = std::move(h);
     headerBytes = kPreambleBytes + length + 4;
     return {};
@@ -349,8 +352,8 @@ void encodeChunk(const ChunkHeader& h, const std::uint8_t* payload, std::size_t 
     ByteWriter w(out);
     w.bytes(kChunkMagic, sizeof(kChunkMagic));
     w.u8(std::uint8_t(h.type));
-    w.u8(0);
-    w.u16(0);
+    w.u8(std::uint8_t(h.headerTag & 0xFFu));
+    w.u16(std::uint16_t((h.headerTag >> 8) & 0xFFFFu));
     w.u32(std::uint32_t(payloadBytes));
     w.u64(h.firstTick);
     w.u32(h.count);
@@ -375,6 +378,7 @@ ChunkStatus parseChunk(const std::uint8_t* data, std::size_t size, std::size_t o
     h.firstTick = readU64(p + 12);
     h.count = readU32(p + 20);
     h.hash = readU64(p + 24);
+    h.headerTag = std::uint32_t(p[5]) | std::uint32_t(p[6]) << 8 | std::uint32_t(p[7]) << 16;
     if (h.payloadBytes > kMaxChunkPayloadBytes) return ChunkStatus::BadField;
     if (h.firstTick > ~std::uint64_t(0) - h.count) return ChunkStatus::BadField;  // tick range wraps
     // From here the header is trustworthy (its CRC matched): the caller may use it to say which

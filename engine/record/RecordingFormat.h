@@ -2,8 +2,8 @@
 // The session recording file (docs/recording.md has the byte-by-byte layout):
 //
 //   preamble  "PALPREC" + format version (u8), header length (u32), header body, CRC-32 of the body
-//   chunks    "PCHK", type, payload length, first tick, count, hash, CRC-32 of those fields,
-//             payload, CRC-32 of the payload
+//   chunks    "PCHK", type, header tag, payload length, first tick, count, hash, CRC-32 of those
+//             fields, payload, CRC-32 of the payload
 //
 // Append-only: a chunk is written whole with one write(2), so a crash loses at most the chunk being
 // filled. Every chunk decodes on its own (its delta coding restarts), so a damaged chunk costs only
@@ -33,12 +33,16 @@ inline constexpr char kRecordingMagic[7] = {'P', 'A', 'L', 'P', 'R', 'E', 'C'};
 /// 3: appends the contact to the header, scene and parameter events. 4: appends the mesh's unit
 /// to the header and scene events (older files: mm). 5: appends the slope-ring parameters'
 /// stiffening knots to the header and the scene and parameter events (older files: linear tissue).
-inline constexpr std::uint8_t kRecordingFormatVersion = 5;
+/// 6: every chunk carries its header's tag (the low 24 bits of the header body's CRC, in bytes
+/// that were zero), so that chunks spliced behind another recording's header are told apart.
+inline constexpr std::uint8_t kRecordingFormatVersion = 6;
+/// The first version whose chunks carry their header's tag.
+inline constexpr std::uint8_t kHeaderTagFormatVersion = 6;
 inline constexpr std::uint8_t kOldestRecordingFormatVersion = 1;
 inline constexpr std::uint8_t kChunkMagic[4] = {'P', 'C', 'H', 'K'};
 /// Magic (7) + version (1) + header length (4).
 inline constexpr std::size_t kPreambleBytes = 12;
-/// Magic, type, reserved, payload length, first tick, count, hash, header CRC.
+/// Magic, type, header tag (3 bytes), payload length, first tick, count, hash, header CRC.
 inline constexpr std::size_t kChunkHeaderBytes = 36;
 /// Chunk header + payload CRC: what a chunk costs besides its payload.
 inline constexpr std::size_t kChunkOverheadBytes = kChunkHeaderBytes + 4;
@@ -118,6 +122,8 @@ struct RecordingHeader {
     std::string note;              ///< free text: trainee, exercise, ...
     /// The file's format version (decode sets it; encode always writes kRecordingFormatVersion).
     std::uint8_t formatVersion = kRecordingFormatVersion;
+    /// The CRC-32 of the header body as stored (decode sets it): its low 24 bits tag the chunks.
+    std::uint32_t bodyCrc = 0;
 
     /// The engine's version (PALPATE version) as stored in new recordings.
     static std::string recordingEngineVersion();
@@ -127,8 +133,10 @@ struct RecordingHeader {
 /// kMaxHeaderBytes), else the problem naming the field ("header.note: 100000 bytes, at most ...").
 Problems validateRecordingHeader(const RecordingHeader& header);
 
-/// Preamble, body and CRC, appended to `out`.
-void encodeRecordingHeader(const RecordingHeader& header, std::vector<std::uint8_t>& out);
+/// Preamble, body and CRC, appended to `out`; returns the body's CRC.
+std::uint32_t encodeRecordingHeader(const RecordingHeader& header, std::vector<std::uint8_t>& out);
+/// The tag a chunk carries to say which header it belongs to (format 6).
+inline std::uint32_t chunkHeaderTag(std::uint32_t headerBodyCrc) { return headerBodyCrc & 0xFFFFFFu; }
 /// Parses the preamble and header from the start of `data`; sets `headerBytes` to where the first
 /// chunk may start. On failure returns false and `error` names the field ("header.meshPath: ...").
 std::string decodeRecordingHeader(const std::uint8_t* data, std::size_t size, RecordingHeader& header,
@@ -163,6 +171,7 @@ struct ChunkHeader {
     std::uint64_t firstTick = 0;
     std::uint32_t count = 0;
     std::uint64_t hash = 0;  ///< session determinism hash after the chunk's last tick
+    std::uint32_t headerTag = 0;  ///< (format 6) chunkHeaderTag of its recording's header; 0 before
 };
 
 /// Appends a whole chunk (header, payload, CRCs) to `out`.

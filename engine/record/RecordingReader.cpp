@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <new>
 
@@ -288,7 +289,46 @@ std::string RecordingReader::scanData(const ChunkHeader& h, const std::uint8_t* 
     return {};
 }
 
+std::string RecordingReader::checkTouched(const std::vector<RecordingEvent>& chunkEvents) {
+    std::vector<const RecordingEvent*> scenes;
+    for (const RecordingEvent& e : chunkEvents)
+        if (e.kind == EventKind::SceneChanged) scenes.push_back(&e);
+    std::stable_sort(scenes.begin(), scenes.end(),
+                     [](const RecordingEvent* a, const RecordingEvent* b) { return a->tick < b->tick; });
+    std::uint32_t count = mScan.vertexCount, before = count;
+    std::uint64_t switchTick = 0;
+    bool switched = false;
+    std::size_t next = 0;
+    const auto advance = [&](std::uint64_t tick) {
+        for (; next < scenes.size() && scenes[next]->tick <= tick; ++next) {
+            before = count;
+            count = scenes[next]->scene ? scenes[next]->scene->vertexCount : 0;  // unknown scene: no check
+            switchTick = scenes[next]->tick;
+            switched = true;
+        }
+    };
+    for (const RecordedTick& t : mScratch) {
+        advance(t.tick);
+        if (t.touched == kNoVertex || count == 0) continue;
+        // The tick at a scene's switch may still be the old scene's: either count holds there.
+        const std::uint32_t limit = switched && t.tick == switchTick ? std::max(before, count) : count;
+        if (before == 0 && switched && t.tick == switchTick) continue;
+        if (t.touched >= limit)
+            return "chunk's tick " + std::to_string(t.tick) + " touches vertex " + std::to_string(t.touched) +
+                   ", past the scene's " + std::to_string(limit) + " vertices (a chunk of another recording's mesh)";
+    }
+    advance(~std::uint64_t(0));
+    mScan.vertexCount = count;
+    return {};
+}
+
 namespace {
+
+std::string hexTag(std::uint32_t tag) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%06x", unsigned(tag));
+    return text;
+}
 
 /// Live: the header is not whole yet (the file ends inside it, and what is there agrees so far).
 bool headerCutShort(const std::vector<std::uint8_t>& bytes) {
@@ -367,6 +407,7 @@ void RecordingReader::scan() {
         addDamage(0, mScan.offset, mHeaderError, nullptr);
     }
     mScan.hashKnown = mSummary.headerOk;  // the session hash starts from the seed at the first chunk
+    mScan.vertexCount = mSummary.headerOk ? mHeader.scene.vertexCount : 0;
 
     std::vector<RecordingEvent> none;
     scanChunks();  // appends to mEvents
@@ -410,6 +451,16 @@ void RecordingReader::scanChunks() {
             addDamage(offset, chunkBytes, "chunk after the end chunk", nullptr);
             continue;
         }
+        // (format 6) Every chunk names its header: one behind another recording's header was spliced in.
+        if (mSummary.headerOk && mHeader.formatVersion >= kHeaderTagFormatVersion &&
+            h.headerTag != chunkHeaderTag(mHeader.bodyCrc)) {
+            addDamage(offset, chunkBytes,
+                      "chunk of another recording (its header tag " + hexTag(h.headerTag) + ", this header's " +
+                          hexTag(chunkHeaderTag(mHeader.bodyCrc)) + ")",
+                      nullptr);
+            st.hashKnown = false;
+            continue;
+        }
         ChunkInfo info;
         info.offset = offset;
         info.bytes = std::uint32_t(chunkBytes);
@@ -434,6 +485,11 @@ void RecordingReader::scanChunks() {
             std::vector<RecordingEvent> chunkEvents;
             if (!(why = scanData(h, payload, info, chunkEvents)).empty()) {
                 addDamage(offset, chunkBytes, "chunk does not decode: " + why, &h);
+                st.hashKnown = false;
+                continue;
+            }
+            if (!(why = checkTouched(chunkEvents)).empty()) {
+                addDamage(offset, chunkBytes, why, &h);
                 st.hashKnown = false;
                 continue;
             }

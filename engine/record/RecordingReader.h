@@ -140,6 +140,7 @@ private:
         std::uint64_t endTicks = 0;
         bool haveTime = false;
         double firstTimeS = 0.0, lastTimeS = 0.0;
+        std::uint32_t vertexCount = 0;  // of the scene in force; 0 when not known
     };
 
     void scan();
@@ -147,6 +148,10 @@ private:
     void finishScan(std::vector<RecordingEvent>& newEvents);
     std::string scanData(const ChunkHeader& header, const std::uint8_t* payload, ChunkInfo& info,
                          std::vector<RecordingEvent>& events);
+    /// "" when every tick of the chunk just scanned (mScratch) touches a vertex of the scene in force
+    /// at that tick (the header's, then each SceneChanged event's from its tick on), else which tick
+    /// does not. Moves the scene in force past the chunk.
+    std::string checkTouched(const std::vector<RecordingEvent>& chunkEvents);
     void addDamage(std::uint64_t offset, std::uint64_t bytes, std::string reason, const ChunkHeader* header);
 
     std::string mName;

@@ -171,7 +171,7 @@ std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path
         return nullptr;
     }
     std::vector<std::uint8_t> bytes;
-    encodeRecordingHeader(header, bytes);
+    const std::uint32_t headerCrc = encodeRecordingHeader(header, bytes);
 
     std::string tempPath;
     const bool replacing = ::access(path.c_str(), F_OK) == 0;
@@ -194,6 +194,7 @@ std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path
     } catch (const std::bad_alloc&) {  // its chunk buffers, under a tight address-space limit
         return abandon(nullptr, path + ": cannot allocate the recording's buffers: out of memory");
     }
+    writer->mHeaderTag = chunkHeaderTag(headerCrc);
     try {
         writer->mThread = std::thread([w = writer.get()] { w->threadMain(); });
     } catch (const std::system_error& e) {
@@ -545,7 +546,9 @@ void RecordingWriter::addEvent(EventKind kind, std::uint64_t tick, std::uint64_t
     ++mWorking.events;
 }
 
-void RecordingWriter::emitChunk(const ChunkHeader& header, const std::vector<std::uint8_t>& payload) {
+void RecordingWriter::emitChunk(const ChunkHeader& chunk, const std::vector<std::uint8_t>& payload) {
+    ChunkHeader header = chunk;
+    header.headerTag = mHeaderTag;
     encodeChunk(header, payload.data(), payload.size(), mOut);
     ++mWorking.chunks;
     mEncoded.push_back({mOut.size(), mWorking});

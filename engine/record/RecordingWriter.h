@@ -170,6 +170,7 @@ private:
     std::vector<Encoded> mEncoded;
     RecordingStats mWritten;      // the figures of the whole chunks in the file
     bool mHeaderWritten = false;  // under mMutex: the thread waits for it
+    std::uint32_t mHeaderTag = 0;  // set before the thread starts: every chunk carries it
     std::uint64_t mLostCommandsReported = 0;
     bool mHaveLastTick = false;
     RecordedTick mLastTick;

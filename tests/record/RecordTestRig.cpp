@@ -2,6 +2,8 @@
 
 #include "engine/core/MeshGenerator.h"
 #include "engine/core/SceneTarget.h"
+#include "engine/record/Crc32.h"
+#include "engine/record/RecordingFormat.h"
 #include "engine/record/RecordingSession.h"
 
 #include <sys/wait.h>
@@ -62,6 +64,20 @@ RecordRig makeRecordRig(SimTrajectory trajectory, TissuePreset preset, const std
         def, HapticScene::create(std::move(*loaded.mesh), preset),
         std::move(device));
     return rig;
+}
+
+void retagChunks(std::vector<std::uint8_t>& bytes, std::size_t from, std::uint32_t headerCrc) {
+    const std::uint32_t tag = chunkHeaderTag(headerCrc);
+    for (std::size_t offset = findChunkMagic(bytes.data(), bytes.size(), from); offset < bytes.size();
+         offset = findChunkMagic(bytes.data(), bytes.size(), offset + 1)) {
+        if (bytes.size() - offset < kChunkHeaderBytes) break;
+        std::uint8_t* p = bytes.data() + offset;
+        p[5] = std::uint8_t(tag);
+        p[6] = std::uint8_t(tag >> 8);
+        p[7] = std::uint8_t(tag >> 16);
+        const std::uint32_t crc = crc32(p + 4, kChunkHeaderBytes - 8);
+        for (int i = 0; i < 4; ++i) p[kChunkHeaderBytes - 4 + std::size_t(i)] = std::uint8_t(crc >> (8 * i));
+    }
 }
 
 std::vector<std::uint8_t> readBytes(const std::string& path) {

@@ -40,6 +40,9 @@ std::unique_ptr<SimulatedDevice> aimedDevice(const TissueMesh& mesh, SimTrajecto
                                              float toolRadiusMm = float(presetToolRadiusMm(TissuePreset{})));
 
 std::vector<std::uint8_t> readBytes(const std::string& path);
+/// A forger who knows the format: the chunks from `from` on get the tag of the header whose body
+/// CRC is `headerCrc`, their header CRCs recomputed, so that they pass as that header's.
+void retagChunks(std::vector<std::uint8_t>& bytes, std::size_t from, std::uint32_t headerCrc);
 void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes);
 
 /// Runs palpate-cli with these arguments (already quoted where needed).

@@ -108,8 +108,15 @@ TEST(RecordCliThreads, DamagedForgedAndGarbageFiles) {
     ASSERT_TRUE((error = decodeRecordingHeader(bytes.data(), bytes.size(), header, headerBytes)).empty());
     header.scene.params.springStiffnessNPerMm *= 1.5;
     std::vector<std::uint8_t> forged;
-    encodeRecordingHeader(header, forged);
+    const std::uint32_t forgedCrc = encodeRecordingHeader(header, forged);
+    const std::size_t forgedHeaderBytes = forged.size();
     forged.insert(forged.end(), bytes.begin() + std::ptrdiff_t(headerBytes), bytes.end());
+    // Spliced as it is (the chunks still name the old header): verify says so.
+    writeBytes(dir.file("spliced.palprec"), forged);
+    const auto spliced = runCli("record verify " + shellQuote(dir.file("spliced.palprec")));
+    EXPECT_EQ(spliced.exitCode, 1) << spliced.output;
+    EXPECT_NE(spliced.output.find("chunk of another recording"), std::string::npos) << spliced.output;
+    retagChunks(forged, forgedHeaderBytes, forgedCrc);  // a forger who retags the chunks
     writeBytes(dir.file("forged.palprec"), forged);
     EXPECT_EQ(runCli("record verify " + shellQuote(dir.file("forged.palprec"))).exitCode, 0);
     const auto replay = runCli("record replay " + shellQuote(dir.file("forged.palprec")));

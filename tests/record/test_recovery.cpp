@@ -183,6 +183,53 @@ TEST(Recovery, GarbageAndSplicesNeverConfuseTheReader) {
     }
 }
 
+// One recording's header in front of another's chunks is not a recording: each chunk names its
+// header (format 6). And a forger who retags them still cannot pass ticks that touch vertices past
+// the mesh the header (or a later scene) names.
+TEST(Recovery, ChunksBehindAnotherRecordingsHeaderAreNamedNotRead) {
+    const auto& full = sampleRecording();
+    const RecordingReader whole = RecordingReader::fromBytes(full);
+    ASSERT_TRUE(whole.summary().intact);
+    std::size_t headerBytes = 0;
+    RecordingHeader other;
+    ASSERT_EQ(decodeRecordingHeader(full.data(), full.size(), other, headerBytes), "");
+    other.note = "another session";
+    std::vector<std::uint8_t> spliced;
+    const std::uint32_t otherCrc = encodeRecordingHeader(other, spliced);
+    const std::size_t otherHeaderBytes = spliced.size();
+    spliced.insert(spliced.end(), full.begin() + std::ptrdiff_t(headerBytes), full.end());
+    RecordingReader r = RecordingReader::fromBytes(spliced);
+    EXPECT_TRUE(r.headerOk());
+    EXPECT_FALSE(r.summary().intact);
+    EXPECT_EQ(r.summary().ticks, 0u);
+    ASSERT_FALSE(r.damage().empty());
+    EXPECT_NE(r.damage()[0].reason.find("chunk of another recording"), std::string::npos) << r.damage()[0].reason;
+
+    // Retagged, the same chunks behind a header whose mesh has 3 vertices: the touched vertices
+    // are past it.
+    bool touchesPastThree = false;
+    whole.forEachTick([&](const RecordedTick& t) {
+        touchesPastThree |= t.touched != kNoVertex && t.touched >= 3;
+        return !touchesPastThree;
+    });
+    ASSERT_TRUE(touchesPastThree);
+    other.scene.vertexCount = 3;
+    std::vector<std::uint8_t> small;
+    const std::uint32_t smallCrc = encodeRecordingHeader(other, small);
+    const std::size_t smallHeaderBytes = small.size();
+    small.insert(small.end(), full.begin() + std::ptrdiff_t(headerBytes), full.end());
+    retagChunks(small, smallHeaderBytes, smallCrc);
+    r = RecordingReader::fromBytes(small);
+    EXPECT_FALSE(r.summary().intact);
+    EXPECT_LT(r.summary().ticks, whole.summary().ticks);
+    bool named = false;
+    for (const auto& d : r.damage()) named |= d.reason.find("touches vertex") != std::string::npos;
+    EXPECT_TRUE(named);
+    // The genuine header retagged onto them again reads whole (the check is not of the tag alone).
+    retagChunks(spliced, otherHeaderBytes, otherCrc);
+    EXPECT_TRUE(RecordingReader::fromBytes(spliced).summary().intact);
+}
+
 TEST(RecoveryThreads, SigkillMidRecordingLosesAtMost100Ms) {
     // A child records a real-time session and publishes the loop's newest tick to shared memory
     // every millisecond; the parent kills it with SIGKILL mid-recording and reads the file.

@@ -175,15 +175,18 @@ TEST(Replay, ADifferenceIsFoundAtItsTick) {
     RecordingHeader forged = original.header();
     forged.scene.params.contactStiffnessNPerMm *= 1.01;
     std::vector<std::uint8_t> bytes;
-    encodeRecordingHeader(forged, bytes);
+    const std::uint32_t forgedCrc = encodeRecordingHeader(forged, bytes);
     const auto file = readBytes(path);
     std::size_t headerBytes = 0;
     RecordingHeader ignored;
     std::string error;
     ASSERT_TRUE((error = decodeRecordingHeader(file.data(), file.size(), ignored, headerBytes)).empty());
+    const std::size_t forgedHeaderBytes = bytes.size();
     bytes.insert(bytes.end(), file.begin() + std::ptrdiff_t(headerBytes), file.end());
+    EXPECT_FALSE(RecordingReader::fromBytes(bytes, "forged").summary().intact);  // the chunks name the old header
+    retagChunks(bytes, forgedHeaderBytes, forgedCrc);
     const RecordingReader reader = RecordingReader::fromBytes(bytes, "forged");
-    ASSERT_TRUE(reader.summary().intact);  // the file is whole: only the replay can tell
+    ASSERT_TRUE(reader.summary().intact);  // retagged, the file is whole: only the replay can tell
     const ReplayStatus s = replayRecording(reader, error);
     EXPECT_TRUE(s.mismatch);
     EXPECT_FALSE(s.ok());

@@ -236,7 +236,7 @@ TEST(PostgresqlStore, APasswordInTheUrlIsRefusedAndAnAbsentServerNamed) {
 // refused in any form and never repeated, and connect_timeout cannot be 0 (for ever).
 TEST(PostgresqlStore, UrlOptionsCannotSmuggleAPasswordAUserOrAnotherSslmode) {
     const auto options = [](const char* url, QString& error) {
-        const std::optional<ServerOptions> out = serverConnectOptions(QUrl(QString::fromUtf8(url)), error);
+        const std::optional<ServerConnectDef> out = serverConnectOptions(QUrl(QString::fromUtf8(url)), error);
         return out ? out->connectOptions : QString();
     };
     // Every connection asks the server to cancel a statement that runs longer than 5 s.
@@ -276,7 +276,7 @@ TEST(PostgresqlStore, UrlOptionsCannotSmuggleAPasswordAUserOrAnotherSslmode) {
               QStringLiteral("connect_timeout='12';sslmode='prefer'") + timeout);
     // statement_timeout is Palpate's: the server's limit, and the client's a little after it.
     QString unused;
-    const std::optional<ServerOptions> slow = serverConnectOptions(
+    const std::optional<ServerConnectDef> slow = serverConnectOptions(
         QUrl(QStringLiteral("postgresql://ws@host/class?statement_timeout=12")), unused);
     ASSERT_TRUE(slow.has_value());
     EXPECT_EQ(slow->connectOptions,
