@@ -73,7 +73,7 @@ void Preferences::save() const {
     cachedForceUnit() = forceUnit;
 }
 
-QString Preferences::defaultDataFolder() { return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation); }
+QString Preferences::defaultDataFolder() { return palpate::defaultDataFolder(); }
 
 QString Preferences::effectiveDataFolder() const { return dataFolder.isEmpty() ? defaultDataFolder() : dataFolder; }
 

@@ -15,6 +15,8 @@
 //
 // --device, --preset and the recorder's own Folder… choice win over these.
 
+#include "results/DataFolder.h"
+
 #include <QDialog>
 #include <QList>
 #include <QString>
@@ -35,7 +37,7 @@ struct Preferences {
     static constexpr const char* kForceUnitKey = "units/force";
     static constexpr const char* kHapticRateKey = "haptic/rateHz";
     static constexpr const char* kDeviceUriKey = "device/defaultUri";
-    static constexpr const char* kDataFolderKey = "dataFolder";
+    static constexpr const char* kDataFolderKey = palpate::kDataFolderKey;  // results/DataFolder.h
     static constexpr const char* kFirstRunDoneKey = "firstRunDone";
     static constexpr const char* kFadeGaugeKey = "guidance/fadeGauge";
     static constexpr const char* kFadeSessionsKey = "guidance/fadeSessions";

@@ -2,9 +2,12 @@
 #ifdef PALPATE_HAVE_CHARTS
 #include "app/cli/ResultsLocation.h"
 
+#include "results/DataFolder.h"
+#include "results/SettingsFileGuard.h"
+
 #include <QCoreApplication>
-#include <QDir>
-#include <QStandardPaths>
+
+#include <iostream>
 
 namespace palpate::cli {
 
@@ -13,9 +16,15 @@ std::string defaultDatabasePath() {
     QCoreApplication::setApplicationName(QStringLiteral("palpate"));
     QCoreApplication::setOrganizationName(QString());
     QCoreApplication::setOrganizationDomain(QStringLiteral("palpate"));
-    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-        .filePath(QStringLiteral("results.sqlite"))
-        .toStdString();
+    // The window's store: the data folder of its preferences (results/DataFolder.h).
+    const QString store = defaultResultsStore();
+    // A preferences file that is not a regular file is not read (a FIFO would hang): say so once.
+    static bool told = false;
+    if (const QString problem = settingsFileProblem(); !problem.isEmpty() && !told) {
+        std::cerr << "palpate-cli: " << problem.toStdString() << "\n";
+        told = true;
+    }
+    return store.toStdString();
 }
 
 }  // namespace palpate::cli

@@ -24,6 +24,8 @@
 #include <QSettings>
 #include <QStandardPaths>
 
+#include "results/DataFolder.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -69,9 +71,7 @@ ExerciseController::ExerciseController(HapticSession& session, Viewport& viewpor
 
 ExerciseController::~ExerciseController() = default;
 
-QString ExerciseController::defaultDatabasePath() {
-    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath(QStringLiteral("results.sqlite"));
-}
+QString ExerciseController::defaultDatabasePath() { return defaultResultsStore(); }
 
 QString ExerciseController::openDatabase(const QString& path) {
     QDir().mkpath(QFileInfo(path).absolutePath());

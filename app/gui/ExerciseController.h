@@ -44,7 +44,7 @@ public:
     /// Opens (creating, migrating) the results database. "" or the error (naming the file).
     QString openDatabase(const QString& path);
     ResultsDatabase& database() { return mDatabase; }
-    /// The default: results.sqlite in the application's data folder.
+    /// The default: results.sqlite in the data folder (results/DataFolder.h), as the CLI's.
     static QString defaultDatabasePath();
 
     /// Adds a trainee (or finds one of that name) and selects it. "" or the error.

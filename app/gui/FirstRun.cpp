@@ -1,4 +1,5 @@
 #include "app/gui/FirstRun.h"
+#include "results/DataFolder.h"
 #include "results/ResultUploader.h"
 
 #include "base/resources/ShippedResources.h"
@@ -212,7 +213,7 @@ void applyPreferences(MainWindow& window) {
     // The recorder's own Folder… choice (QSettings "recorder/folder") stays.
     if (!QSettings().contains(QStringLiteral("recorder/folder")) && window.recorderPanel()->recordingFolder() != recordings)
         window.recorderPanel()->setRecordingFolder(recordings);
-    const QString database = folder.filePath(QStringLiteral("results.sqlite"));
+    const QString database = resultsStorePath(folder.absolutePath());
     if (window.exercises().database().path() != database && !window.exercises().running()) {
         QDir().mkpath(folder.absolutePath());
         window.exercises().openDatabase(database);

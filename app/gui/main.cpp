@@ -2,7 +2,7 @@
 // 2 bad usage.
 #include "base/resources/ShippedResources.h"
 #include "app/gui/FirstRun.h"
-#include "app/gui/SettingsFileGuard.h"
+#include "results/SettingsFileGuard.h"
 #include "app/gui/GuiApplication.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/ViewportBenchmark.h"

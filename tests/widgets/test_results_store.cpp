@@ -14,6 +14,7 @@
 #include "tests/widgets/ResultsServer.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
@@ -32,6 +33,7 @@
 #include <atomic>
 #include <set>
 #include <thread>
+#include <tuple>
 
 #include <arpa/inet.h>
 #include <csignal>
@@ -635,6 +637,47 @@ std::pair<int, QByteArray> cli(const QStringList& arguments) {
     p.start(QStringLiteral(PALPATE_CLI_PATH), arguments);
     p.waitForFinished(120000);
     return {p.exitCode(), p.readAllStandardOutput()};
+}
+
+// One store by default: the command line without --db uses the data folder the window's
+// Preferences name (its palpate.conf), so a result stored from the CLI is the window's; and a
+// palpate.conf that is a FIFO is not read (the CLI would hang) but named, the default used.
+TEST(ResultsCli, WithoutDbTheCliUsesTheWindowsDataFolder) {
+    QTemporaryDir dir;
+    const QString chosen = dir.filePath(QStringLiteral("class room data"));
+    ASSERT_TRUE(QDir().mkpath(chosen));
+    ASSERT_TRUE(QDir().mkpath(dir.filePath(QStringLiteral("config/palpate"))));
+    {
+        QFile conf(dir.filePath(QStringLiteral("config/palpate/palpate.conf")));
+        ASSERT_TRUE(conf.open(QIODevice::WriteOnly));
+        conf.write(QStringLiteral("[General]\ndataFolder=%1\n").arg(chosen).toUtf8());
+    }
+    const QString store = dir.filePath(QStringLiteral("class room data/results.sqlite"));
+    ASSERT_TRUE(QFile::copy(workstation(dir, QStringLiteral("ws"), QStringLiteral("Ada"), 2), store));
+    const auto listDefault = [&] {
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
+        env.insert(QStringLiteral("XDG_DATA_HOME"), dir.filePath(QStringLiteral("data")));
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(PALPATE_CLI_PATH),
+                {QStringLiteral("results"), QStringLiteral("list"), QStringLiteral("--json")});
+        if (!p.waitForFinished(60000)) p.kill();
+        return std::make_tuple(p.exitCode(), QJsonDocument::fromJson(p.readAllStandardOutput()).object(),
+                               QString::fromLocal8Bit(p.readAllStandardError()));
+    };
+    auto [code, json, err] = listDefault();
+    EXPECT_EQ(code, 0) << err.toStdString();
+    EXPECT_EQ(json.value(QStringLiteral("database")).toString(), store);
+    EXPECT_EQ(json.value(QStringLiteral("results")).toArray().size(), 2);
+
+    // The preferences file a FIFO: not read, named; the default folder (empty here) is used.
+    ASSERT_TRUE(QFile::remove(dir.filePath(QStringLiteral("config/palpate/palpate.conf"))));
+    ASSERT_EQ(::mkfifo(qPrintable(dir.filePath(QStringLiteral("config/palpate/palpate.conf"))), 0600), 0);
+    std::tie(code, json, err) = listDefault();
+    EXPECT_EQ(code, 1);
+    EXPECT_TRUE(err.contains(QStringLiteral("a FIFO"))) << err.toStdString();
+    EXPECT_TRUE(err.contains(dir.filePath(QStringLiteral("data/palpate/results.sqlite")))) << err.toStdString();
 }
 
 // A trainee's name is data wherever it goes: a spreadsheet formula stays text in every CSV (the

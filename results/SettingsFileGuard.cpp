@@ -1,4 +1,4 @@
-#include "app/gui/SettingsFileGuard.h"
+#include "results/SettingsFileGuard.h"
 
 #include <QCoreApplication>
 #include <QDir>
