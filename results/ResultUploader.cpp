@@ -1,5 +1,7 @@
 #include "results/ResultUploader.h"
 
+#include "results/HandOff.h"
+
 #include <QThread>
 
 namespace palpate {
@@ -51,7 +53,7 @@ void ResultUploader::syncNow() {
                 report = syncResults(localDb, serverDb);
             }
         }
-        QMetaObject::invokeMethod(this, [this, report] { onFinished(report); }, Qt::QueuedConnection);
+        handOffTo(this, [this, report] { onFinished(report); });
     });
     mThread->setObjectName(QStringLiteral("results upload"));
     mThread->start(QThread::LowPriority);

@@ -1,5 +1,7 @@
 #include "widgets/ChartsPanel.h"
 
+#include "results/HandOff.h"
+
 #include "widgets/SaveFileChoice.h"
 #include "engine/accuracy/SweepCsv.h"
 #include "report/SpeedAccuracyChart.h"
@@ -329,8 +331,7 @@ bool ChartsPanel::startWorker(const SweepDef& requested, std::function<SweepResu
     def.cancel = &mCancel;
     // Called on the worker thread: the text goes to the panel's thread as a queued call.
     def.progress = [this](double fraction, const std::string& line) {
-        QMetaObject::invokeMethod(
-            this, [this, fraction, text = QString::fromStdString(line)] { onProgress(fraction, text); }, Qt::QueuedConnection);
+        handOffTo(this, [this, fraction, text = QString::fromStdString(line)] { onProgress(fraction, text); });
     };
     mThread = QThread::create([this, def, run = std::move(run)] {
         SweepResult result;
@@ -340,8 +341,7 @@ bool ChartsPanel::startWorker(const SweepDef& requested, std::function<SweepResu
         } catch (const std::exception& e) {
             error = QString::fromStdString(e.what());
         }
-        QMetaObject::invokeMethod(
-            this, [this, result = std::move(result), error] { onFinished(result, error); }, Qt::QueuedConnection);
+        handOffTo(this, [this, result = std::move(result), error] { onFinished(result, error); });
     });
     mThread->setObjectName(QStringLiteral("sweep"));
     mRunClock.start();

@@ -1,5 +1,7 @@
 #include "widgets/ClassDialog.h"
 
+#include "results/HandOff.h"
+
 #include "results/ResultsDatabase.h"
 
 #include <QComboBox>
@@ -106,8 +108,7 @@ bool ClassDialog::refresh() {
             }
         }
         const QString described = connection.isEmpty() ? source : tr("%1 as %2").arg(source, connection);
-        QMetaObject::invokeMethod(
-            this, [this, rows, error, described] { onLoaded(rows, error, described); }, Qt::QueuedConnection);
+        handOffTo(this, [this, rows, error, described] { onLoaded(rows, error, described); });
     });
     mThread->setObjectName(QStringLiteral("class view"));
     mRefresh->setEnabled(false);

@@ -1,5 +1,7 @@
 #include "widgets/LodPanel.h"
 
+#include "results/HandOff.h"
+
 #include "engine/lod/LevelCache.h"
 #include "engine/lod/MeshLevels.h"
 
@@ -540,9 +542,8 @@ bool LodPanel::plan() {
             if (text == lastText && step - lastStep < kProgressSteps / 200) return;
             lastStep = step;
             lastText = text;
-            QMetaObject::invokeMethod(
-                this, [this, generation, step, text] { onProgress(generation, double(step) / kProgressSteps, text); },
-                Qt::QueuedConnection);
+            handOffTo(this,
+                      [this, generation, step, text] { onProgress(generation, double(step) / kProgressSteps, text); });
         };
         try {
             std::shared_ptr<const TissueMesh> source = mesh;
@@ -614,7 +615,7 @@ bool LodPanel::plan() {
             result->error = tr("unknown error");
         }
         // Its last act: the panel joins the thread when it runs this.
-        QMetaObject::invokeMethod(this, [this, result] { onFinished(result); }, Qt::QueuedConnection);
+        handOffTo(this, [this, result] { onFinished(result); });
     });
     mThread->setObjectName(QStringLiteral("lod plan"));
     mRunClock.start();

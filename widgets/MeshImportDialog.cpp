@@ -1,5 +1,7 @@
 #include "widgets/MeshImportDialog.h"
 
+#include "results/HandOff.h"
+
 #include "widgets/MeshSizeText.h"
 #include "widgets/SaveFileChoice.h"
 
@@ -431,12 +433,9 @@ void MeshImportDialog::startPreview() {
                 job->postedPercent = percent;
                 job->postedStage = stage;
                 const QString stageText = qs(stage);
-                QMetaObject::invokeMethod(
-                    this,
-                    [this, job, fraction, stageText] {
-                        if (job == mJob && !job->cancel) showProgress(fraction, stageText);
-                    },
-                    Qt::QueuedConnection);
+                handOffTo(this, [this, job, fraction, stageText] {
+                    if (job == mJob && !job->cancel) showProgress(fraction, stageText);
+                });
             }
             return !job->cancel.load();
         };
@@ -447,8 +446,7 @@ void MeshImportDialog::startPreview() {
             job->result.source = job->path;
             job->result.errors.push_back(job->path + ": " + e.what());
         }
-        QMetaObject::invokeMethod(
-            this, [this, job] { previewFinished(job); }, Qt::QueuedConnection);
+        handOffTo(this, [this, job] { previewFinished(job); });
     });
     updateEnabled();
 }

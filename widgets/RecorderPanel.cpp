@@ -1,5 +1,7 @@
 #include "widgets/RecorderPanel.h"
 
+#include "results/HandOff.h"
+
 #include "engine/replay/RecordingPlayer.h"
 #include "engine/record/RecordingReader.h"
 #include "widgets/RecordingTimeline.h"
@@ -513,7 +515,7 @@ bool RecorderPanel::openRecording(const QString& path) {
                 result->error = tr("%1: cannot replay: %2").arg(p, QString::fromLocal8Bit(e.what()));
             }
         }
-        QMetaObject::invokeMethod(this, [this, result] { onOpenFinished(result); }, Qt::QueuedConnection);
+        handOffTo(this, [this, result] { onOpenFinished(result); });
     });
     return true;
 }
@@ -748,12 +750,10 @@ void RecorderPanel::startSeekJob(std::uint64_t tick) {
             if (stepped == 0) break;  // the replay can go no further (end, or it stopped)
         }
         const double usPerTick = ran > 0 ? double(clock.nsecsElapsed()) * 1e-3 / double(ran) : 0.0;
-        QMetaObject::invokeMethod(
-            this, [this, usPerTick, reached] {
-                if (usPerTick > 0.0) mUsPerTick = 0.5 * mUsPerTick + 0.5 * usPerTick;
-                onSeekFinished(reached);
-            },
-            Qt::QueuedConnection);
+        handOffTo(this, [this, usPerTick, reached] {
+            if (usPerTick > 0.0) mUsPerTick = 0.5 * mUsPerTick + 0.5 * usPerTick;
+            onSeekFinished(reached);
+        });
     });
     updateTimeLabels();
 }

@@ -1,5 +1,7 @@
 #include "widgets/StiffeningPanel.h"
 
+#include "results/HandOff.h"
+
 #include <QChart>
 #include <QChartView>
 #include <QDoubleSpinBox>
@@ -120,7 +122,7 @@ bool StiffeningPanel::compute() {
             error = QString::fromStdString(e.what());
         }
         // Its last act: the panel joins the thread when it runs this.
-        QMetaObject::invokeMethod(this, [this, result, error] { onFinished(result, error); }, Qt::QueuedConnection);
+        handOffTo(this, [this, result, error] { onFinished(result, error); });
     });
     mThread->setObjectName(QStringLiteral("stiffening reference"));
     mBusy->setVisible(true);

@@ -1,5 +1,7 @@
 #include "app/gui/DeviceController.h"
 
+#include "base/concurrency/HandOff.h"
+
 #include "app/gui/ExerciseController.h"
 #include "device/open/DeviceUri.h"
 #include "widgets/DevicePanel.h"
@@ -115,9 +117,11 @@ QString DeviceController::openInBackground(const QString& uri) {
         } catch (const std::exception& e) {
             job->error = job->uri + ": " + e.what();
         }
+        handOffRelease();  // the job goes to the window through QThread::finished
     });
     mOpenThread->setParent(this);  // deleted with the window if it closes first (waitForOpening waits for it)
     connect(mOpenThread, &QThread::finished, this, [this, job] {
+        handOffAcquire();
         mOpenThread->deleteLater();
         mOpenThread = nullptr;
         mPanel.setEnabled(!mExercises.running());
