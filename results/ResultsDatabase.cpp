@@ -244,6 +244,7 @@ bool ResultsDatabase::isOpen() const { return mDb.isValid() && mDb.isOpen(); }
 bool ResultsDatabase::open(const QString& path, QString* error) {
     close();
     mDeadline.reset();
+    mReadOnly = false;
     mPath = path;
     mServer = isServerLocation(path);
     if (mServer) return openServer(path, error);
@@ -255,7 +256,9 @@ bool ResultsDatabase::open(const QString& path, QString* error) {
         if (!info.isFile())
             return fail(tr("is not a regular file (a device, a FIFO or a socket): not a results database"), error);
         if (!info.isReadable()) return fail(tr("cannot be read (permission denied)"), error);
-        if (!info.isWritable()) return fail(tr("is not writable"), error);
+        // A store this user may not write (a colleague's, a copy on read-only media) is opened to
+        // be read: listed and exported, never changed.
+        mReadOnly = !info.isWritable();
     } else {
         const QFileInfo folder(info.absolutePath());
         if (!folder.isDir())
@@ -269,10 +272,24 @@ bool ResultsDatabase::open(const QString& path, QString* error) {
         return fail(tr("the Qt SQLite driver (QSQLITE) is not installed"), error);
 
     mDb = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), mConnection);
-    mDb.setDatabaseName(path);
     // The window's uploader and command-line runs share one store: a writer waits for another
     // (up to kBusyTimeoutMs) instead of failing with "database is locked".
-    mDb.setConnectOptions(QStringLiteral("QSQLITE_BUSY_TIMEOUT=%1").arg(kBusyTimeoutMs));
+    QString options = QStringLiteral("QSQLITE_BUSY_TIMEOUT=%1").arg(kBusyTimeoutMs);
+    if (!mReadOnly) {
+        mDb.setDatabaseName(path);
+    } else if (QFileInfo(info.absolutePath()).isWritable()) {
+        mDb.setDatabaseName(path);
+        options += QStringLiteral(";QSQLITE_OPEN_READONLY");
+    } else {
+        // Nowhere to put the write-ahead log's index either (read-only media): read the file as
+        // it is, assuming nobody changes it meanwhile.
+        QUrl uri = QUrl::fromLocalFile(info.absoluteFilePath());
+        uri.setScheme(QStringLiteral("file"));
+        uri.setQuery(QStringLiteral("mode=ro&immutable=1"));
+        mDb.setDatabaseName(uri.toString(QUrl::FullyEncoded));
+        options += QStringLiteral(";QSQLITE_OPEN_READONLY;QSQLITE_OPEN_URI");
+    }
+    mDb.setConnectOptions(options);
     if (!mDb.open()) {
         const QString why = mDb.lastError().text();
         close();
@@ -291,7 +308,7 @@ bool ResultsDatabase::open(const QString& path, QString* error) {
         version = q.value(0).toInt();
         // Durable commits (a write that returned survives a crash) and the trainee references.
         // Write-ahead logging: readers never wait for a writer, and writers queue on the lock.
-        q.exec(QStringLiteral("PRAGMA journal_mode = WAL"));
+        if (!mReadOnly) q.exec(QStringLiteral("PRAGMA journal_mode = WAL"));
         q.exec(QStringLiteral("PRAGMA synchronous = FULL"));
         q.exec(QStringLiteral("PRAGMA foreign_keys = ON"));
     }
@@ -299,6 +316,14 @@ bool ResultsDatabase::open(const QString& path, QString* error) {
         close();
         return fail(tr("schema version %1 is newer than this build reads (%2): update Palpate")
                         .arg(version).arg(kSchemaVersion), error);
+    }
+    if (version < kSchemaVersion && mReadOnly) {
+        close();
+        return fail(tr("is read-only and of schema version %1 (this build reads %2): open it once where it can be "
+                       "written, to update it")
+                        .arg(version)
+                        .arg(kSchemaVersion),
+                    error);
     }
     if (version < kSchemaVersion && !migrate(version, error)) {
         close();

@@ -96,6 +96,9 @@ public:
     /// TLS is used when the server offers it (sslmode=prefer unless the URL says otherwise).
     bool open(const QString& location, QString* error = nullptr);
     bool isServer() const { return mServer; }
+    /// A store file this user may not write: opened to be read (listed, exported); every write
+    /// fails, naming it read-only.
+    bool isReadOnly() const { return mReadOnly; }
     void close();
     bool isOpen() const;
     /// Open, and a trivial query is answered now (a server that went away: false).
@@ -178,6 +181,7 @@ private:
     QString mConnection;
     QString mPath;
     bool mServer = false;
+    bool mReadOnly = false;
     QString mRole;
     QString mClassName;
     bool mEncrypted = false;

@@ -25,6 +25,7 @@
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -678,6 +679,54 @@ TEST(ResultsCli, WithoutDbTheCliUsesTheWindowsDataFolder) {
     EXPECT_EQ(code, 1);
     EXPECT_TRUE(err.contains(QStringLiteral("a FIFO"))) << err.toStdString();
     EXPECT_TRUE(err.contains(dir.filePath(QStringLiteral("data/palpate/results.sqlite")))) << err.toStdString();
+}
+
+// A store this user may not write (a colleague's file, a copy on read-only media) can still be
+// listed and exported: it is opened to be read. Run as a user without write rights (as root the
+// test drops to nobody, as root may write anything), in a folder that is writable and one that
+// is not (where SQLite cannot even keep the write-ahead log's index).
+TEST(ResultsCli, AReadOnlyStoreCanBeListed) {
+    const bool root = ::geteuid() == 0;
+    const QString setpriv = QStandardPaths::findExecutable(QStringLiteral("setpriv"));
+    if (root && setpriv.isEmpty()) GTEST_SKIP() << "setpriv (util-linux) is needed to drop root's rights";
+    QTemporaryDir work;
+    // Under /tmp itself when root: the test's own TMPDIR may be closed to nobody.
+    QTemporaryDir shared(root ? QStringLiteral("/tmp/palpate-readonly-XXXXXX")
+                              : work.filePath(QStringLiteral("ro-XXXXXX")));
+    ASSERT_TRUE(shared.isValid());
+    const QString folder = shared.path();
+    const QString store = folder + QStringLiteral("/results.sqlite");
+    ASSERT_TRUE(QFile::copy(workstation(work, QStringLiteral("ws"), QStringLiteral("Ada"), 2), store));
+    const auto listAsReader = [&] {
+        QStringList arguments{QStringLiteral("results"), QStringLiteral("list"), QStringLiteral("--json"),
+                              QStringLiteral("--db"), store};
+        QString program = QStringLiteral(PALPATE_CLI_PATH);
+        if (root) {
+            arguments = QStringList{QStringLiteral("--reuid=65534"), QStringLiteral("--regid=65534"),
+                                    QStringLiteral("--clear-groups"), program} +
+                        arguments;
+            program = setpriv;
+        }
+        QProcess p;
+        p.start(program, arguments);
+        if (!p.waitForFinished(60000)) p.kill();
+        return std::make_tuple(p.exitCode(), QJsonDocument::fromJson(p.readAllStandardOutput()).object(),
+                               QString::fromLocal8Bit(p.readAllStandardError()));
+    };
+    ASSERT_EQ(::chmod(qPrintable(store), 0444), 0);
+    for (const mode_t folderMode : {mode_t(01777), mode_t(0555)}) {
+        ASSERT_EQ(::chmod(qPrintable(folder), folderMode), 0);
+        // The CLI binary must be reachable by that user too (the build folder usually is).
+        const auto [code, json, err] = listAsReader();
+        EXPECT_EQ(code, 0) << "folder mode " << std::oct << folderMode << ": " << err.toStdString();
+        EXPECT_EQ(json.value(QStringLiteral("results")).toArray().size(), 2) << err.toStdString();
+    }
+    ASSERT_EQ(::chmod(qPrintable(folder), 0700), 0);
+    // Nothing was written beside it (no journal left by the readers), and it is unchanged.
+    EXPECT_FALSE(QFileInfo::exists(store + QStringLiteral("-journal")));
+    ResultsDatabase check;
+    EXPECT_TRUE(check.open(store));
+    EXPECT_EQ(check.allResults().size(), 2u);
 }
 
 // A trainee's name is data wherever it goes: a spreadsheet formula stays text in every CSV (the
