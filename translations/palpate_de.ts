@@ -5102,10 +5102,6 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <translation>kann nicht gelesen werden (Zugriff verweigert)</translation>
     </message>
     <message>
-        <source>is not writable</source>
-        <translation>ist nicht beschreibbar</translation>
-    </message>
-    <message>
         <source>cannot be created: folder %1 does not exist</source>
         <translation>kann nicht angelegt werden: Ordner %1 existiert nicht</translation>
     </message>
@@ -5288,6 +5284,10 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
     <message>
         <source>statement_timeout must be 1 to %1 seconds</source>
         <translation>statement_timeout muss 1 bis %1 Sekunden betragen</translation>
+    </message>
+    <message>
+        <source>is read-only and of schema version %1 (this build reads %2): open it once where it can be written, to update it</source>
+        <translation>ist schreibgeschützt und hat Schemaversion %1 (dieser Build liest %2): einmal dort öffnen, wo sie beschrieben werden kann, um sie zu aktualisieren</translation>
     </message>
 </context>
 <context>

@@ -5098,10 +5098,6 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <translation>tidak dapat dibaca (kebenaran ditolak)</translation>
     </message>
     <message>
-        <source>is not writable</source>
-        <translation>tidak boleh ditulis</translation>
-    </message>
-    <message>
         <source>cannot be created: folder %1 does not exist</source>
         <translation>tidak dapat dicipta: folder %1 tidak wujud</translation>
     </message>
@@ -5284,6 +5280,10 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
     <message>
         <source>statement_timeout must be 1 to %1 seconds</source>
         <translation>statement_timeout mestilah 1 hingga %1 saat</translation>
+    </message>
+    <message>
+        <source>is read-only and of schema version %1 (this build reads %2): open it once where it can be written, to update it</source>
+        <translation>hanya boleh dibaca dan berversi skema %1 (binaan ini membaca %2): buka sekali di tempat ia boleh ditulis untuk mengemas kininya</translation>
     </message>
 </context>
 <context>
