@@ -300,10 +300,15 @@ bool ResultsDatabase::open(const QString& path, QString* error) {
     {
         QSqlQuery q(mDb);
         if (!q.exec(QStringLiteral("PRAGMA user_version")) || !q.next()) {
-            const QString why = q.lastError().text();
+            const QSqlError problem = q.lastError();
             q.finish();
             close();
-            return fail(tr("not a results database (%1)").arg(why), error);
+            // SQLite's I/O error (10) or full disk (13), in their extended forms (the low byte):
+            // the file may be fine, the disk is not.
+            const int code = problem.nativeErrorCode().toInt() & 0xFF;
+            if (code == 10 || code == 13)
+                return fail(tr("cannot be read or written (%1): is the disk full?").arg(problem.text()), error);
+            return fail(tr("not a results database (%1)").arg(problem.text()), error);
         }
         version = q.value(0).toInt();
         // Durable commits (a write that returned survives a crash) and the trainee references.

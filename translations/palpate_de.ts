@@ -5289,6 +5289,10 @@ Aufgenommen mit Palpate %2 bei %3 Hz am %4; Gerät %5; %6 Ticks, %7 Ereignisse</
         <source>is read-only and of schema version %1 (this build reads %2): open it once where it can be written, to update it</source>
         <translation>ist schreibgeschützt und hat Schemaversion %1 (dieser Build liest %2): einmal dort öffnen, wo sie beschrieben werden kann, um sie zu aktualisieren</translation>
     </message>
+    <message>
+        <source>cannot be read or written (%1): is the disk full?</source>
+        <translation>kann nicht gelesen oder geschrieben werden (%1): ist der Datenträger voll?</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ResultsRoles</name>

@@ -5285,6 +5285,10 @@ Dirakam dengan Palpate %2 pada %3 Hz pada %4; peranti %5; %6 tik, %7 peristiwa</
         <source>is read-only and of schema version %1 (this build reads %2): open it once where it can be written, to update it</source>
         <translation>hanya boleh dibaca dan berversi skema %1 (binaan ini membaca %2): buka sekali di tempat ia boleh ditulis untuk mengemas kininya</translation>
     </message>
+    <message>
+        <source>cannot be read or written (%1): is the disk full?</source>
+        <translation>tidak boleh dibaca atau ditulis (%1): adakah cakera penuh?</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ResultsRoles</name>

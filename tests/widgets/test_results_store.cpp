@@ -729,6 +729,55 @@ TEST(ResultsCli, AReadOnlyStoreCanBeListed) {
     EXPECT_EQ(check.allResults().size(), 2u);
 }
 
+// A disk that fills up while a result is stored (here a file size limit, RLIMIT_FSIZE, at one
+// size after another) is a failure naming the store, never a success without the row: every run
+// either stores its result (exit 0, the row is there) or says where it could not (exit 1).
+TEST(ResultsCli, AFullDiskIsAFailureNamingTheStoreNeverASilentSuccess) {
+    QTemporaryDir dir;
+    const QString source = QStringLiteral(PALPATE_SOURCE_DIR);
+    const QString recording = dir.filePath(QStringLiteral("press.palprec"));
+    ASSERT_EQ(
+        cli({QStringLiteral("run"), QStringLiteral("--exercise"),
+             source + QStringLiteral("/resources/exercises/press_targets.json"), QStringLiteral("--device"),
+             QStringLiteral("sim:path:") + source + QStringLiteral("/resources/exercises/press_targets.good.path"),
+             QStringLiteral("--seconds"), QStringLiteral("0.3"), QStringLiteral("--record"), recording,
+             QStringLiteral("--no-fifo")})
+            .first,
+        0);
+    const QString store = dir.filePath(QStringLiteral("results.sqlite"));
+    ASSERT_EQ(cli({QStringLiteral("score"), QStringLiteral("--recording"), recording, QStringLiteral("--trainee"),
+                   QStringLiteral("First"), QStringLiteral("--db"), store})
+                  .first,
+              0);
+    int stored = 0, refused = 0;
+    for (int blocks = 8; blocks <= 160; blocks += 8) {  // 512-byte blocks: 4 to 80 KiB
+        const QString trainee = QStringLiteral("T%1").arg(blocks);
+        QProcess p;
+        p.start(QStringLiteral("/bin/sh"),
+                {QStringLiteral("-c"), QStringLiteral("ulimit -f %1; exec \"$0\" \"$@\"").arg(blocks),
+                 QStringLiteral(PALPATE_CLI_PATH), QStringLiteral("score"), QStringLiteral("--recording"), recording,
+                 QStringLiteral("--trainee"), trainee, QStringLiteral("--db"), store});
+        ASSERT_TRUE(p.waitForFinished(60000));
+        const QString err = QString::fromLocal8Bit(p.readAllStandardError());
+        ResultsDatabase db;
+        ASSERT_TRUE(db.open(store));
+        bool there = false;
+        for (const ResultRecord& r : db.allResults()) there |= r.traineeName == trainee;
+        if (p.exitCode() == 0) {
+            EXPECT_TRUE(there) << "exit 0 without the row, at " << blocks << " blocks";
+            ++stored;
+        } else {
+            EXPECT_EQ(p.exitCode(), 1) << err.toStdString();
+            EXPECT_TRUE(err.contains(store)) << err.toStdString();
+            EXPECT_FALSE(err.contains(QStringLiteral("not a results database"))) << err.toStdString();
+            ++refused;
+        }
+    }
+    std::printf("[ figures  ] under a file size limit of 4 to 80 KiB: %d stored, %d refused naming the store\n", stored,
+                refused);
+    EXPECT_GT(refused, 0) << "the limit never bit: the test proves nothing";
+}
+
 // A trainee's name is data wherever it goes: a spreadsheet formula stays text in every CSV (the
 // export and the class's), and an escape sequence is shown on the terminal, not obeyed.
 TEST(ResultsCli, NamesThatLookLikeFormulasOrTerminalCommandsStayText) {
