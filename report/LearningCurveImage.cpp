@@ -66,6 +66,9 @@ QChartView* learningCurveMetricChart(const LearningCurveMetric& m, const std::ve
         lower->append(x0, std::min(from, to));
         lower->append(x1, std::min(from, to));
         auto* band = new QAreaSeries(upper, lower);
+        // An area series does not own its edges: they go with it.
+        upper->setParent(band);
+        lower->setParent(band);
         band->setColor(QColor(120, 200, 120, 70));
         band->setBorderColor(Qt::transparent);
         attach(band);
