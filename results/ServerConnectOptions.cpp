@@ -1,6 +1,7 @@
 #include "results/ServerConnectOptions.h"
 
 #include <QCoreApplication>
+#include <QRegularExpression>
 #include <QStringList>
 #include <QUrlQuery>
 
@@ -72,9 +73,11 @@ std::optional<ServerConnectDef> serverConnectOptions(const QUrl& url, QString& e
     bool sslmode = false, timeout = false;
     for (const auto& [key, value] : QUrlQuery(url).queryItems(QUrl::FullyDecoded)) {
         // A password anywhere (a key, or inside a value: "prefer password=...") is refused, and
-        // never repeated in the message.
-        if (key.contains(QLatin1String("password"), Qt::CaseInsensitive) ||
-            value.contains(QLatin1String("password"), Qt::CaseInsensitive)) {
+        // never repeated in the message. A value that merely names a password-like path
+        // (/etc/passwords/ca.crt) is not one.
+        static const QRegularExpression passwordSetting(QStringLiteral("password\\s*="),
+                                                        QRegularExpression::CaseInsensitiveOption);
+        if (key.contains(QLatin1String("password"), Qt::CaseInsensitive) || value.contains(passwordSetting)) {
             error = Tr::tr(
                 "a password in the URL is refused: put it in ~/.pgpass or the file PGPASSFILE names "
                 "(docs/results-store.md)");

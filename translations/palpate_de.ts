@@ -4618,6 +4618,10 @@ Das Modell kann divergieren (oder das Gerät brummen); der Divergenzschutz würd
         <source>Class&apos;s server: no password here; put it in ~/.pgpass (docs/results-store.md).</source>
         <translation>Server der Klasse: kein Passwort hier; es gehört in ~/.pgpass (docs/results-store.md).</translation>
     </message>
+    <message>
+        <source>Class&apos;s server: %1</source>
+        <translation>Server der Klasse: %1</translation>
+    </message>
 </context>
 <context>
     <name>palpate::RecorderPanel</name>

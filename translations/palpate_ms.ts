@@ -4614,6 +4614,10 @@ Model mungkin mencapah (atau peranti berdengung); pengawal pencapahan kemudian a
         <source>Class&apos;s server: no password here; put it in ~/.pgpass (docs/results-store.md).</source>
         <translation>Pelayan kelas: tiada kata laluan di sini; letakkannya dalam ~/.pgpass (docs/results-store.md).</translation>
     </message>
+    <message>
+        <source>Class&apos;s server: %1</source>
+        <translation>Pelayan kelas: %1</translation>
+    </message>
 </context>
 <context>
     <name>palpate::RecorderPanel</name>

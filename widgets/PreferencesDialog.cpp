@@ -1,5 +1,7 @@
 #include "widgets/PreferencesDialog.h"
 
+#include "results/ServerConnectOptions.h"
+
 #include "results/ResultsDatabase.h"
 
 #include "device/open/DeviceUri.h"
@@ -271,6 +273,9 @@ void PreferencesDialog::validate() {
             mProblem = tr("Class's server: postgresql://[user@]host[:port]/database");
         else if (!url.password().isEmpty())
             mProblem = tr("Class's server: no password here; put it in ~/.pgpass (docs/results-store.md).");
+        // The query's options as the store will read them: a password in any form, an option
+        // the URL may not set, a timeout out of range.
+        else if (QString why; !serverConnectOptions(url, why)) mProblem = tr("Class's server: %1").arg(why);
     }
     mProblemLabel->setText(mProblem);
     mProblemLabel->setVisible(!mProblem.isEmpty());

@@ -176,6 +176,20 @@ TEST_F(FirstRunTest, PreferencesDialogRefusesABadDeviceAndARelativeFolder) {
     dialog.dataFolderEdit()->setText(QStringLiteral("relative/folder"));
     EXPECT_FALSE(dialog.problem().isEmpty());
     EXPECT_FALSE(ok->isEnabled());
+
+    // A password in the server's URL, in any form, is refused here as where the URL is read.
+    dialog.dataFolderEdit()->clear();
+    auto* server = dialog.findChild<QLineEdit*>(QStringLiteral("resultsServerEdit"));
+    ASSERT_NE(server, nullptr);
+    for (const char* url : {"postgresql://room12:pw@host/palpate", "postgresql://room12@host/palpate?password=pw",
+                            "postgresql://room12@host/palpate?sslmode=prefer%20password%3Dpw"}) {
+        server->setText(QString::fromLatin1(url));
+        EXPECT_TRUE(dialog.problem().contains(QLatin1String("password")))
+            << url << ": " << dialog.problem().toStdString();
+        EXPECT_FALSE(ok->isEnabled()) << url;
+    }
+    server->setText(QStringLiteral("postgresql://room12@host/palpate?sslrootcert=/etc/passwords/ca.crt"));
+    EXPECT_EQ(dialog.problem(), QString());
 }
 
 TEST_F(FirstRunTest, PreferencesApplyToTheWindow) {

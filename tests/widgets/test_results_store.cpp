@@ -277,6 +277,12 @@ TEST(PostgresqlStore, UrlOptionsCannotSmuggleAPasswordAUserOrAnotherSslmode) {
     EXPECT_TRUE(error.contains(QStringLiteral("connect_timeout"))) << error.toStdString();
     EXPECT_EQ(options("postgresql://ws@host/class?connect_timeout=12", error),
               QStringLiteral("connect_timeout='12';sslmode='prefer'") + timeout);
+    // A value that only names a password-like path is no password.
+    EXPECT_EQ(options("postgresql://ws@host/class?sslmode=verify-full&sslrootcert=/etc/passwords/ca.crt", error),
+              QStringLiteral("sslmode='verify-full';sslrootcert='/etc/passwords/ca.crt';connect_timeout='5'") +
+                  timeout);
+    EXPECT_EQ(options("postgresql://ws@host/class?application_name=x%20PASSWORD%20%3D%20pw", error), QString());
+    EXPECT_TRUE(error.contains(QStringLiteral("password"))) << error.toStdString();
     // statement_timeout is Palpate's: the server's limit, and the client's a little after it.
     QString unused;
     const std::optional<ServerConnectDef> slow = serverConnectOptions(
