@@ -32,8 +32,8 @@ public:
 
 protected:
     bool event(QEvent* e) override {
+        handOffAcquire();  // before the event itself is read: the worker made it
         if (e->type() != handOffEventType()) return QObject::event(e);
-        handOffAcquire();
         if (mReceiver) mRun();
         mRun = nullptr;
         deleteLater();
@@ -51,8 +51,9 @@ private:
 inline void handOffTo(QObject* receiver, std::function<void()> run) {
     auto* target = new detail::HandOffTarget(receiver, std::move(run));
     target->moveToThread(receiver->thread());
-    handOffRelease();
-    QCoreApplication::postEvent(target, new QEvent(detail::handOffEventType()));
+    auto* event = new QEvent(detail::handOffEventType());
+    handOffRelease();  // after everything the receiver will read, the event included
+    QCoreApplication::postEvent(target, event);
 }
 
 }  // namespace palpate

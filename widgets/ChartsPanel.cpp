@@ -169,6 +169,7 @@ ChartsPanel::~ChartsPanel() {
     if (mThread) {
         mCancel.store(true);
         mThread->wait();
+        handOffAcquire();  // the sweep's last act was its hand-off (results/HandOff.h)
         delete mThread;
     }
 }
