@@ -51,6 +51,8 @@ private:
 inline void handOffTo(QObject* receiver, std::function<void()> run) {
     auto* target = new detail::HandOffTarget(receiver, std::move(run));
     target->moveToThread(receiver->thread());
+    // A receiver deleted before the delivery takes the undelivered hand-off with it (its event too).
+    QObject::connect(receiver, &QObject::destroyed, target, [target] { delete target; });
     auto* event = new QEvent(detail::handOffEventType());
     handOffRelease();  // after everything the receiver will read, the event included
     QCoreApplication::postEvent(target, event);

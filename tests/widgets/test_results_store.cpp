@@ -9,6 +9,7 @@
 #include "results/ResultSync.h"
 #include "results/ResultUploader.h"
 #include "results/ResultsDatabase.h"
+#include "results/HandOff.h"
 #include "results/ServerCallDeadline.h"
 #include "results/ServerConnectOptions.h"
 #include "tests/widgets/ResultsServer.h"
@@ -28,6 +29,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThread>
 
 #include <gtest/gtest.h>
 
@@ -330,6 +332,26 @@ TEST(PostgresqlStore, AServerThatAcceptsAndStallsIsReportedNotWaitedOn) {
 }
 
 // Eight workstations send at once, each with its own connection: every result arrives once.
+// A worker's hand-off runs in the receiver's thread; one whose receiver is deleted first never runs,
+// and what it held is freed with the receiver (nothing waits for an event loop that may not come).
+TEST(HandOffTest, RunsInTheReceiversThreadOrGoesWithTheReceiver) {
+    auto receiver = std::make_unique<QObject>();
+    QThread* ranIn = nullptr;
+    std::thread([&] { handOffTo(receiver.get(), [&] { ranIn = QThread::currentThread(); }); }).join();
+    EXPECT_EQ(ranIn, nullptr);  // not yet: it waits for the receiver's event loop
+    QCoreApplication::processEvents();
+    EXPECT_EQ(ranIn, receiver->thread());
+
+    auto held = std::make_shared<int>(1);
+    bool ran = false;
+    std::thread([&, copy = held] { handOffTo(receiver.get(), [&ran, copy] { ran = true; }); }).join();
+    EXPECT_EQ(held.use_count(), 2);  // the pending hand-off holds its copy
+    receiver.reset();
+    EXPECT_EQ(held.use_count(), 1);  // freed with the receiver, at once
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(ran);
+}
+
 // The deadline on its own: a call that outlives it has its socket shut (a blocked read returns at
 // once), and a call that ends in time leaves the socket alone, even when the next call reuses it.
 TEST(ServerCallDeadlineTest, ShutsTheSocketOfACallThatOutlivesItOnly) {
