@@ -1,4 +1,6 @@
 #include "report/ScoreReportFromRecording.h"
+
+#include "report/ExerciseWords.h"
 #include "engine/exercise/ExerciseKind.h"
 
 #include <glm/geometric.hpp>
@@ -87,7 +89,7 @@ bool scoreReportFromRecording(const QString& recordingPath, const Exercise* exer
 
     content = {};
     content.report = scorer->report();
-    content.exerciseName = QString::fromStdString(content.report.exerciseName);
+    content.exerciseName = shownExerciseName(graded);  // the report is read in the window's language
     content.traineeName = traineeName.isEmpty() ? recordedTraineeName(reader.header()) : traineeName;
     const RecordedDevice& device = reader.header().device;
     content.device = device.spec.name.empty() || device.spec.name == device.uri

@@ -1542,6 +1542,22 @@
         <source> (%1–%2 N is met pressing at least two wheel steps past the default touch)</source>
         <translation> (%1–%2 N werden mindestens zwei Mausradstufen tiefer als die Standardberührung erreicht)</translation>
     </message>
+    <message>
+        <source>Text in:</source>
+        <translation>Text auf:</translation>
+    </message>
+    <message>
+        <source>Which language&apos;s name and description you edit: the exercise&apos;s own, or a translation trainees who use Palpate in that language see (translations). An empty translation shows the exercise&apos;s own words.</source>
+        <translation>Welche Sprache Sie bei Name und Beschreibung bearbeiten: die eigenen Worte der Übung oder eine Übersetzung, die Lernende sehen, die Palpate in dieser Sprache verwenden (translations). Eine leere Übersetzung zeigt die eigenen Worte der Übung.</translation>
+    </message>
+    <message>
+        <source>Its own words</source>
+        <translation>Eigene Worte</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ExerciseMarkers</name>
@@ -2194,6 +2210,14 @@ Tick %7 µs, %8-mal schneller als previous</translation>
     <message>
         <source>- no expert standard yet: the pass marks come from experts&apos; sessions</source>
         <translation>- noch kein Expertenstandard: die Bestehensgrenzen kommen aus Sitzungen von Experten</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::Language</name>
+    <message>
+        <source>en</source>
+        <comment>The code of the language of this translation: de, ms. Exercise files carry their name and description under it.</comment>
+        <translation>de</translation>
     </message>
 </context>
 <context>

@@ -1542,6 +1542,22 @@
         <source> (%1–%2 N is met pressing at least two wheel steps past the default touch)</source>
         <translation> (%1–%2 N dicapai dengan menekan sekurang-kurangnya dua langkah roda melepasi sentuhan lalai)</translation>
     </message>
+    <message>
+        <source>Text in:</source>
+        <translation>Teks dalam:</translation>
+    </message>
+    <message>
+        <source>Which language&apos;s name and description you edit: the exercise&apos;s own, or a translation trainees who use Palpate in that language see (translations). An empty translation shows the exercise&apos;s own words.</source>
+        <translation>Bahasa nama dan penerangan yang anda sunting: kata-kata latihan itu sendiri, atau terjemahan yang dilihat pelatih yang menggunakan Palpate dalam bahasa itu (translations). Terjemahan kosong menunjukkan kata-kata latihan itu sendiri.</translation>
+    </message>
+    <message>
+        <source>Its own words</source>
+        <translation>Kata-kata asal</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ExerciseMarkers</name>
@@ -2191,6 +2207,14 @@ tik %7 µs, %8x lebih pantas daripada previous</translation>
     <message>
         <source>- no expert standard yet: the pass marks come from experts&apos; sessions</source>
         <translation>- belum ada piawaian pakar: markah lulus datang daripada sesi pakar</translation>
+    </message>
+</context>
+<context>
+    <name>palpate::Language</name>
+    <message>
+        <source>en</source>
+        <comment>The code of the language of this translation: de, ms. Exercise files carry their name and description under it.</comment>
+        <translation>ms</translation>
     </message>
 </context>
 <context>

@@ -413,6 +413,10 @@ void ExerciseEditorPanel::buildExerciseForm(QFormLayout* exerciseForm) {
     mTypeCombo->setObjectName(QStringLiteral("exerciseTypeCombo"));
     for (std::size_t i = 0; i < exerciseKinds().size(); ++i) mTypeCombo->addItem(QString());
     exerciseForm->addRow(rowLabel(QT_TR_NOOP("Type:")), mTypeCombo);
+    mTextLanguageCombo = new QComboBox(mExerciseGroup);
+    mTextLanguageCombo->setObjectName(QStringLiteral("exerciseTextLanguageCombo"));
+    for (const char* code : {"", "de", "ms"}) mTextLanguageCombo->addItem(QString(), QString::fromLatin1(code));
+    exerciseForm->addRow(rowLabel(QT_TR_NOOP("Text in:")), mTextLanguageCombo);
     mNameEdit = new QLineEdit(mExerciseGroup);
     mNameEdit->setObjectName(QStringLiteral("exerciseNameEdit"));
     exerciseForm->addRow(rowLabel(QT_TR_NOOP("Name:")), mNameEdit);
@@ -594,6 +598,10 @@ void ExerciseEditorPanel::connectEdits() {
     // Each edit is one undo step.
     connect(mTypeCombo, &QComboBox::activated, this, [this](int index) {
         if (index >= 0 && index < int(exerciseKinds().size())) changeType(exerciseKinds()[std::size_t(index)]->type());
+    });
+    connect(mTextLanguageCombo, &QComboBox::currentIndexChanged, this, [this] {
+        const Guard guard(mShowing);
+        showExerciseText(mExercise);
     });
     connect(mNameEdit, &QLineEdit::textEdited, this, [this] { onFieldEdited(kName); });
     connect(mDescriptionEdit, &QPlainTextEdit::textChanged, this, [this] { onFieldEdited(kDescription); });
@@ -803,8 +811,14 @@ void ExerciseEditorPanel::retranslateUi() {
 
     mExerciseGroup->setTitle(tr("Exercise"));
     mTypeCombo->setToolTip(tr("What the trainee does. Each type keeps its own points: switching back restores them."));
+    mTextLanguageCombo->setToolTip(
+        tr("Which language's name and description you edit: the exercise's own, or a "
+           "translation trainees who use Palpate in that language see (translations). "
+           "An empty translation shows the exercise's own words."));
+    for (int i = 0; i < mTextLanguageCombo->count(); ++i)
+        mTextLanguageCombo->setItemText(i, textLanguageName(mTextLanguageCombo->itemData(i).toString()));
     mNameEdit->setToolTip(tr("The name trainees and score reports see (name)."));
-    mNameEdit->setPlaceholderText(tr("Required"));
+    showTextPlaceholders(mExercise);
     mDescriptionEdit->setToolTip(tr("What the trainee is asked to do, shown before the exercise starts (description)."));
     mSceneGroup->setTitle(tr("Tissue"));
     mMeshCombo->setToolTip(tr("The mesh file (mesh): a shipped mesh, a path relative to resources/ or to the exercise "
@@ -1180,7 +1194,59 @@ bool ExerciseEditorPanel::confirmDiscard() {
 
 bool ExerciseEditorPanel::isModified() const { return !mUndoStack->isClean(); }
 
+namespace {
+
+/// Sets the name or description of `language` ("" the exercise's own). A translation left with
+/// neither is removed: a file never holds an empty one.
+void setExerciseText(Exercise& e, const std::string& language, std::string ExerciseTextDef::*field, std::string text) {
+    if (language.empty()) {
+        ExerciseTextDef own{e.name, e.description};
+        own.*field = std::move(text);
+        e.name = own.name;
+        e.description = own.description;
+        return;
+    }
+    ExerciseTextDef& translation = e.translations[language];
+    translation.*field = std::move(text);
+    if (translation.name.empty() && translation.description.empty()) e.translations.erase(language);
+}
+
+}  // namespace
+
 // ---- Showing and editing ---------------------------------------------------------------------------
+
+QString ExerciseEditorPanel::textLanguage() const {
+    return mTextLanguageCombo ? mTextLanguageCombo->currentData().toString() : QString();
+}
+
+QString ExerciseEditorPanel::textLanguageName(const QString& code) {
+    if (code.isEmpty()) return tr("Its own words");
+    const QString language = QLocale(code).nativeLanguageName();
+    return language.isEmpty() ? code : tr("%1 (%2)").arg(language, code);
+}
+
+void ExerciseEditorPanel::showExerciseText(const Exercise& e) {
+    // A file may carry languages this build does not offer: they are edited like the others.
+    for (const auto& [code, words] : e.translations)
+        if (mTextLanguageCombo->findData(qs(code)) < 0)
+            mTextLanguageCombo->addItem(textLanguageName(qs(code)), qs(code));
+    const std::string code = textLanguage().toStdString();
+    ExerciseTextDef text{e.name, e.description};
+    if (!code.empty()) {
+        const auto found = e.translations.find(code);
+        text = found == e.translations.end() ? ExerciseTextDef{} : found->second;
+    }
+    if (mNameEdit->text() != qs(text.name)) mNameEdit->setText(qs(text.name));
+    if (mDescriptionEdit->toPlainText() != qs(text.description)) mDescriptionEdit->setPlainText(qs(text.description));
+    showTextPlaceholders(e);
+}
+
+void ExerciseEditorPanel::showTextPlaceholders(const Exercise& e) {
+    // A translation's empty field shows the words the trainee then reads: the exercise's own.
+    const bool own = textLanguage().isEmpty();
+    mNameEdit->setPlaceholderText(own ? tr("Required") : qs(e.name));
+    mDescriptionEdit->setPlaceholderText(own ? QString() : qs(e.description));
+}
 
 void ExerciseEditorPanel::showExercise(const Exercise& exercise) {
     {
@@ -1190,8 +1256,7 @@ void ExerciseEditorPanel::showExercise(const Exercise& exercise) {
         mTypeCombo->setCurrentIndex(typeIndex(e.type));
         mTypePages->setCurrentIndex(typeIndex(e.type));
         mTypeGroup->setTitle(typeText(e.type));
-        if (mNameEdit->text() != qs(e.name)) mNameEdit->setText(qs(e.name));
-        if (mDescriptionEdit->toPlainText() != qs(e.description)) mDescriptionEdit->setPlainText(qs(e.description));
+        showExerciseText(e);
         if (mMeshCombo->currentText() != qs(e.meshPath)) mMeshCombo->setEditText(qs(e.meshPath));
         if (mPresetCombo->currentText() != qs(e.tissuePresetPath)) mPresetCombo->setEditText(qs(e.tissuePresetPath));
         const int unitIndex = meshUnitChoice(e.meshUnit);
@@ -1294,8 +1359,15 @@ void ExerciseEditorPanel::onFieldEdited(int field) {
     Exercise e = mExercise;
     QString what;
     switch (Field(field)) {
-        case kName: e.name = ss(mNameEdit->text()); what = tr("name"); break;
-        case kDescription: e.description = ss(mDescriptionEdit->toPlainText()); what = tr("description"); break;
+        case kName:
+            setExerciseText(e, textLanguage().toStdString(), &ExerciseTextDef::name, ss(mNameEdit->text()));
+            what = tr("name");
+            break;
+        case kDescription:
+            setExerciseText(e, textLanguage().toStdString(), &ExerciseTextDef::description,
+                            ss(mDescriptionEdit->toPlainText()));
+            what = tr("description");
+            break;
         case kTimeLimit: e.timeLimitS = mTimeLimitSpin->value(); what = tr("time limit"); break;
         case kDisplacementLimit: e.displacementLimitMm = mDisplacementSpin->value(); what = tr("damage limit"); break;
         case kExcessiveForce:

@@ -344,6 +344,13 @@ private:
     QGroupBox* mTypeGroup = nullptr;
     QGroupBox* mRubricGroup = nullptr;
     QComboBox* mTypeCombo = nullptr;
+    /// Which language's name and description the two fields edit: "" the exercise's own, else a
+    /// code of its translations (docs/scoring.md, "Translations").
+    QComboBox* mTextLanguageCombo = nullptr;
+    QString textLanguage() const;
+    static QString textLanguageName(const QString& code);
+    void showExerciseText(const Exercise& e);
+    void showTextPlaceholders(const Exercise& e);
     QLineEdit* mNameEdit = nullptr;
     QPlainTextEdit* mDescriptionEdit = nullptr;
     QComboBox* mMeshCombo = nullptr;

@@ -52,6 +52,12 @@ struct ExerciseMarkers {
     std::vector<HeatPoint> heat;
     double heatMinN = 0.0, heatMaxN = 0.0;
     bool empty() const { return markers.empty() && pathMm.empty() && heat.empty(); }
+    /// Whether a lump inside the tissue is shown: then the surface is drawn see-through.
+    bool seeThrough() const {
+        for (const ExerciseMarker& m : markers)
+            if (m.bodyRadiusMm > 0.0) return true;
+        return false;
+    }
 };
 
 /// The heat map of a palpation score over `geometry`'s rest surface: a point per examined vertex.

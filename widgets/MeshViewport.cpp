@@ -238,6 +238,8 @@ void MeshViewport::paintGL() {
         mMeshProgram->setUniformValue("uViewportPx", float(width() * scale), float(height() * scale));
         mMeshProgram->setUniformValue("uWireframe", mWireframe);
         mMeshProgram->setUniformValue("uWireColor", style::kWire.x, style::kWire.y, style::kWire.z, style::kWireAlpha);
+        mMeshProgram->setUniformValue("uBackground", bg.x, bg.y, bg.z);
+        mMeshProgram->setUniformValue("uOpacity", surfaceOpacity());
 
         // One pass: shading, ring colours and the wireframe (mesh.geom, mesh.frag). The fill is pushed
         // back a little so that the ghost's edges can be tested against it.

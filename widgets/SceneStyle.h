@@ -41,6 +41,10 @@ inline constexpr glm::vec3 kGhost{0.70f, 0.85f, 1.00f};
 inline constexpr float kGhostFillAlpha = 0.22f;
 inline constexpr float kGhostWireAlpha = 0.45f;
 
+/// The see-through view (an exercise's lumps shown to the instructor): the tissue's surface is drawn
+/// at this opacity over the background, in both renderers, so the lumps drawn inside read as inside.
+inline constexpr float kSeeThroughOpacity = 0.4f;
+
 inline constexpr glm::vec3 kTool{0.25f, 0.8f, 1.0f};
 inline constexpr glm::vec3 kForceArrow{0.35f, 1.0f, 0.45f};
 inline constexpr glm::vec3 kWire{0.0f, 0.0f, 0.0f};

@@ -81,6 +81,8 @@ void ScoreCard::clear() {
     mExportPdf->setEnabled(false);
 }
 
+QString ScoreCard::titleText() const { return mTitle->text(); }
+
 QString ScoreCard::scoreText() const { return mScore->text(); }
 
 QString ScoreCard::palpationText() const { return mPalpation->text(); }

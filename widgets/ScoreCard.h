@@ -27,6 +27,8 @@ public:
 
     /// The texts shown, for tests and the accessibility tree.
     QString scoreText() const;
+    /// "Ada: Press three targets (completed)", the exercise named in the user's language.
+    QString titleText() const;
     QTableWidget* breakdownTable() const { return mTable; }
     QPushButton* exportPdfButton() const { return mExportPdf; }
     QPushButton* historyButton() const { return mHistory; }

@@ -171,7 +171,8 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
     const int backSign = mBackFaceCulling && mScene.closedAndConsistent() && mScene.outside(mCamera.eyeMm())
                              ? mScene.outwardWinding()
                              : 0;
-    const FrameKey key{sizePx, view, projection, mWireframe, mShowRestGhost, backSign};
+    const float opacity = surfaceOpacity();
+    const FrameKey key{sizePx, view, projection, mWireframe, mShowRestGhost, backSign, opacity};
     // Only the vertices that changed since the last frame (and the corners around them, whose
     // normals moved) are drawn again, inside the rectangle they cover, when nothing else changed.
     // The ghost blends over what is there, so it is always drawn whole.
@@ -253,6 +254,7 @@ void SoftwareViewport::rasterScene(QSize sizePx, float devicePixelRatio) {
                          glm::vec3 rgb = base * (ambient + (1.0f - ambient) * diffuse) + glm::vec3(specular);
                          if (wireAlpha > 0.0f && edgePx < 1.0f)
                              rgb = glm::mix(rgb, wire, wireAlpha * wireWeight(edgePx));
+                         rgb = glm::mix(style::kBackground, rgb, opacity);  // as mesh.frag
                          pixels[std::ptrdiff_t(y) * stride + x] = packRgb(rgb.x, rgb.y, rgb.z);
                      });
     }

@@ -92,6 +92,7 @@ private:
         glm::mat4 view{1.0f}, projection{1.0f};
         bool wireframe = false, ghost = false;
         int backSign = 0;
+        float opacity = 1.0f;
         bool operator==(const FrameKey&) const = default;
     };
     FrameKey mLastKey;

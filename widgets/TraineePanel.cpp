@@ -61,6 +61,7 @@ TraineePanel::TraineePanel(QWidget* parent) : QWidget(parent) {
                            "(expert mean ± 2 SD) and moves no staircase"));
     layout->addWidget(mExpert);
     mDescription = new QLabel(this);
+    mDescription->setObjectName(QStringLiteral("exerciseDescriptionLabel"));
     mDescription->setWordWrap(true);
     layout->addWidget(mDescription);
 

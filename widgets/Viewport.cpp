@@ -1,5 +1,7 @@
 #include "widgets/Viewport.h"
 
+#include "widgets/SceneStyle.h"
+
 #include <QMouseEvent>
 #include <QWheelEvent>
 #include <QWidget>
@@ -82,6 +84,8 @@ void Viewport::touchAt(QPointF pointPx) {
     const auto vertex = pickVertexAt(pointPx, widget()->size());
     if (vertex && mTouchHandlers.moved) mTouchHandlers.moved(*vertex, pointPx);
 }
+
+float Viewport::surfaceOpacity() const { return mExerciseMarkers.seeThrough() ? style::kSeeThroughOpacity : 1.0f; }
 
 void Viewport::setExerciseMarkers(ExerciseMarkers markers) {
     mExerciseMarkers = std::move(markers);

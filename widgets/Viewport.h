@@ -85,6 +85,9 @@ public:
     /// An exercise's markers (targets, path, inclusion, the trainee's mark) drawn over the mesh.
     void setExerciseMarkers(ExerciseMarkers markers);
     const ExerciseMarkers& exerciseMarkers() const { return mExerciseMarkers; }
+    /// The tissue surface's opacity: style::kSeeThroughOpacity while the markers show a lump inside
+    /// the tissue (the instructor's see-through view), else 1.
+    float surfaceOpacity() const;
 
     /// Click-to-place (the instructor's exercise editor): while a handler is set, a left click
     /// that does not drag (less than kClickSlopPx) picks the vertex under it and calls the handler

@@ -12,6 +12,7 @@
 #include "widgets/GuardedLoad.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/ScoreCard.h"
+#include "report/ExerciseWords.h"
 #include "report/ScoreReportFromRecording.h"
 #include "report/ScoreReportPdf.h"
 #include "widgets/TraineePanel.h"
@@ -118,7 +119,7 @@ void ExerciseController::listExampleExercises() {
         for (const QFileInfo& file : dir.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
             const auto loaded = guardedLoad(file.absoluteFilePath().toStdString(),
                                             [&] { return loadExercise(file.absoluteFilePath().toStdString()); });
-            if (loaded.exercise) list.append({QString::fromStdString(loaded.exercise->name), file.absoluteFilePath()});
+            if (loaded.exercise) list.append({shownExerciseName(*loaded.exercise), file.absoluteFilePath()});
         }
     }
     mShippedExercises.clear();
@@ -127,7 +128,7 @@ void ExerciseController::listExampleExercises() {
     // (and kept in the settings: a folder on a network drive may be back tomorrow).
     for (const QString& path : openedExercises()) {
         const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
-        if (loaded.exercise) list.append({QString::fromStdString(loaded.exercise->name), path});
+        if (loaded.exercise) list.append({shownExerciseName(*loaded.exercise), path});
     }
     mPanel.setExercises(list);
 }
@@ -161,7 +162,7 @@ QString ExerciseController::addExerciseFile(const QString& path) {
         while (opened.size() > kMaxOpenedExercises) opened.removeLast();
         QSettings().setValue(QLatin1String(kOpenedExercisesKey), opened);
     }
-    mPanel.addExercise(QString::fromStdString(loaded.exercise->name), absolute);
+    mPanel.addExercise(shownExerciseName(*loaded.exercise), absolute);
     mExercisePicked = true;
     return {};
 }
@@ -190,8 +191,7 @@ void ExerciseController::showExerciseDescription(const QString& path) {
         return;
     }
     const auto loaded = guardedLoad(path.toStdString(), [&] { return loadExercise(path.toStdString()); });
-    mPanel.setExerciseDescription(loaded.exercise ? QString::fromStdString(loaded.exercise->description)
-                                                  : joined(loaded.errors));
+    mPanel.setExerciseDescription(loaded.exercise ? shownExerciseDescription(*loaded.exercise) : joined(loaded.errors));
     if (!running()) mPanel.setState(TraineePanel::State::Idle);
 }
 
@@ -256,20 +256,21 @@ QString ExerciseController::begin(const Exercise& requested, bool preview) {
     mPhase = Phase::Starting;
     mPanel.scoreCard()->clear();
     mPanel.setState(TraineePanel::State::Starting);
-    mPanel.setMessage(preview ? tr("Preview of \"%1\": not stored.").arg(QString::fromStdString(exercise.name))
-                      : mStaircaseLevel
-                          ? tr("Your level: every lump at %1 %2 (the staircase adapts it to you).")
-                                .arg(QString::fromUtf8(staircaseParameterName(exercise.detectLumps.staircase->parameter)))
-                                .arg(*mStaircaseLevel, 0, 'g', 4)
-                          : QString());
-    mPanel.setExerciseDescription(QString::fromStdString(exercise.description));
+    mPanel.setMessage(preview           ? tr("Preview of \"%1\": not stored.").arg(shownExerciseName(exercise))
+                      : mStaircaseLevel ? tr("Your level: every lump at %1 %2 (the staircase adapts it to you).")
+                                              .arg(QString::fromUtf8(
+                                                  staircaseParameterName(exercise.detectLumps.staircase->parameter)))
+                                              .arg(*mStaircaseLevel, 0, 'g', 4)
+                                        : QString());
+    mPanel.setExerciseDescription(shownExerciseDescription(exercise));
     mPanel.setFinishShown(exerciseKind(exercise.type).finishedByTrainee());
     mGaugeLevel = preview ? 1.0 : gaugeLevelFor(exercise);
     mPanel.setGaugeLevel(mGaugeLevel);
     // The combo names what runs (a preview from the welcome page or the editor too).
-    mPanel.showRunningExercise(QString::fromStdString(exercise.name),
-                               exercise.sourcePath.empty() ? QString()
-                                                           : QFileInfo(QString::fromStdString(exercise.sourcePath)).absoluteFilePath());
+    mPanel.showRunningExercise(shownExerciseName(exercise),
+                               exercise.sourcePath.empty()
+                                   ? QString()
+                                   : QFileInfo(QString::fromStdString(exercise.sourcePath)).absoluteFilePath());
     updateMarkers();
     emit runningChanged(true);
     poll();  // the first scene of a new loop is the loop's at once
@@ -311,7 +312,7 @@ void ExerciseController::startRecording() {
     mStartedUtc = QDateTime::currentDateTimeUtc();
     mPhase = Phase::Running;
     mPanel.setState(TraineePanel::State::Running);
-    emit message(tr("Exercise \"%1\" started; recording to %2").arg(QString::fromStdString(mAssets->exercise.name), path));
+    emit message(tr("Exercise \"%1\" started; recording to %2").arg(shownExerciseName(mAssets->exercise), path));
 }
 
 void ExerciseController::poll() {
@@ -466,7 +467,9 @@ void ExerciseController::finish(const QString& why) {
     report.aids.push_back({"force_gauge", mGaugeLevel});
     mLastReport = report;
     mPhase = Phase::Finished;
-    mPanel.scoreCard()->setReport(report, mTraineeName);
+    ScoreReport shown = report;  // the card names the exercise in the trainee's language; the store by its name
+    shown.exerciseName = shownExerciseName(mAssets->exercise).toStdString();
+    mPanel.scoreCard()->setReport(shown, mTraineeName);
     mPanel.setState(TraineePanel::State::Finished);
     QString stored;
     if (!mPreview) {

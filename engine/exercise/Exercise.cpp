@@ -27,10 +27,38 @@ Rubric effectiveRubric(const Exercise& e) {
     return rubric;
 }
 
+bool isLanguageCode(const std::string& code) {
+    const auto lower = [&](std::size_t i) { return i < code.size() && code[i] >= 'a' && code[i] <= 'z'; };
+    const auto upper = [&](std::size_t i) { return i < code.size() && code[i] >= 'A' && code[i] <= 'Z'; };
+    const std::size_t letters = lower(0) && lower(1) ? (lower(2) ? 3 : 2) : 0;
+    if (letters == 0) return false;
+    if (code.size() == letters) return true;
+    return code.size() == letters + 3 && code[letters] == '_' && upper(letters + 1) && upper(letters + 2);
+}
+
+ExerciseTextDef exerciseTextIn(const Exercise& e, const std::string& language) {
+    ExerciseTextDef text{e.name, e.description};
+    // The language itself first, then its base ("de_AT" -> "de").
+    for (const std::string& code : {language, language.substr(0, language.find('_'))}) {
+        const auto found = e.translations.find(code);
+        if (found == e.translations.end()) continue;
+        if (!found->second.name.empty()) text.name = found->second.name;
+        if (!found->second.description.empty()) text.description = found->second.description;
+        break;
+    }
+    return text;
+}
+
 Problems validateExercise(const Exercise& e) {
     Problems errors;
     ExerciseChecker c(errors);
     if (e.name.empty()) c.error("name", "must not be empty");
+    for (const auto& [code, text] : e.translations) {
+        if (!isLanguageCode(code))
+            c.error("translations", "'" + code + "' is not a language code (use two letters such as de, or de_AT)");
+        else if (text.name.empty() && text.description.empty())
+            c.error("translations." + code, "gives neither a name nor a description");
+    }
     if (e.meshPath.empty()) c.error("mesh", "must name a mesh file");
     c.range("mesh_unit", e.meshUnit.mmPerUnit, kMinMmPerUnit, kMaxMmPerUnit);
     if (e.tissuePresetPath.empty()) c.error("tissue_preset", "must name a tissue preset file");

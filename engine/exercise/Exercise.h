@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -98,9 +99,19 @@ struct TraceDef {
     double toleranceMm = 4.0;        ///< a path point is covered by contact this close to it
 };
 
-struct Exercise {
+/// An exercise's name and description in another language; an empty field falls back to the
+/// exercise's own (docs/exercises.md, "Translations").
+struct ExerciseTextDef {
     std::string name;
     std::string description;
+};
+
+struct Exercise {
+    std::string name;  ///< also the key results are stored and grouped under, in every language
+    std::string description;
+    /// "translations": language code ("de", "ms", "pt_BR") -> the words shown to a user of that
+    /// language. The name above stays the exercise's identity.
+    std::map<std::string, ExerciseTextDef> translations;
     ExerciseType type = ExerciseType::PressTargets;
     std::string meshPath;           ///< as written: absolute, relative to the file, or to resources/
     /// "mesh_unit": the unit of the mesh file's coordinates (docs/meshes.md, "Units"); the mesh is
@@ -128,6 +139,13 @@ struct Exercise {
     /// The file it was read from (relative paths resolve from its folder); not saved.
     std::string sourcePath;
 };
+
+/// The name and description a user of `language` ("de", or "de_AT", which falls back to "de") reads:
+/// the translation's fields where it gives them, the exercise's own otherwise.
+ExerciseTextDef exerciseTextIn(const Exercise& exercise, const std::string& language);
+/// Whether `code` is a language code a translation may be filed under: two or three lower-case
+/// letters, then optionally "_" and two upper-case letters.
+bool isLanguageCode(const std::string& code);
 
 /// Every problem, each naming the key as in the JSON file ("press_targets.targets[1].force_max_n:
 /// ..."); empty when valid. Vertex ids are checked against a mesh later (ExerciseGeometry).

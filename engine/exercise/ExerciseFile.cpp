@@ -56,14 +56,38 @@ Json meshUnitJson(const MeshUnit& unit) {
 
 namespace {
 
+/// "translations": {"de": {"name": ..., "description": ...}, ...}; the codes and empty entries are
+/// judged by validateExercise, like every other value.
+void readTranslations(JsonReader& r, const Json& translations, Exercise& e) {
+    if (!translations.is_object()) {
+        r.error("translations", "must be an object of language codes, e.g. {\"de\": {\"name\": ...}}");
+        return;
+    }
+    for (const auto& [code, words] : translations.items()) {
+        if (!isLanguageCode(code)) {
+            // Not quoted: a key may hold anything, and a code is at most six plain letters.
+            r.error("translations", "a key of " + std::to_string(code.size()) +
+                                        " bytes is not a language code (use two letters such as de, or de_AT)");
+            continue;
+        }
+        const std::string key = "translations." + code;
+        if (!r.object(words, key, {"name", "description"})) continue;
+        ExerciseTextDef& text = e.translations[code];
+        r.text(words, key, "name", text.name);
+        r.text(words, key, "description", text.description);
+    }
+}
+
 ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::string& source) {
     ExerciseLoadResult result;
     JsonReader r(result.errors, source);
     const std::optional<Json> parsed = r.parse(textIn);
     if (!parsed) return result;
     const Json& j = *parsed;
-    std::vector<std::string> keys = {"format", "version",  "name",     "description", "type",  "mesh", "mesh_unit",
-                                     "tissue_preset", "time_limit_s", "show_live_score", "rubric", "coverage", "damage", "force", "needs"};
+    std::vector<std::string> keys = {"format",      "version",   "name",          "description",  "type",
+                                     "mesh",        "mesh_unit", "tissue_preset", "time_limit_s", "show_live_score",
+                                     "rubric",      "coverage",  "damage",        "force",        "needs",
+                                     "translations"};
     for (const ExerciseKind* kind : exerciseKinds()) keys.emplace_back(kind->key());
     if (!r.object(j, "", keys)) return result;
 
@@ -73,6 +97,7 @@ ExerciseLoadResult parseExerciseText(const std::string& textIn, const std::strin
     e.sourcePath = source;
     r.text(j, "", "name", e.name, true);
     r.text(j, "", "description", e.description);
+    if (j.contains("translations")) readTranslations(r, j.at("translations"), e);
     std::string type;
     r.text(j, "", "type", type, true);
     bool typeKnown = false;
@@ -204,6 +229,16 @@ std::string exerciseToJson(const Exercise& e, int indent) {
                 {"weight", e.rubric[i]->weight}, {"full", e.rubric[i]->fullMarks}, {"zero", e.rubric[i]->zeroMarks}};
     if (!rubric.empty()) j["rubric"] = rubric;
     if (e.needs) j["needs"] = {{"max_error", e.needs->maxErrorFraction}, {"budget_us", e.needs->budgetUs}};
+    if (!e.translations.empty()) {
+        Json translations = Json::object();
+        for (const auto& [code, text] : e.translations) {
+            Json words = Json::object();
+            if (!text.name.empty()) words["name"] = text.name;
+            if (!text.description.empty()) words["description"] = text.description;
+            translations[code] = words;
+        }
+        j["translations"] = translations;
+    }
     return indent < 0 ? j.dump() : j.dump(indent) + "\n";
 }
 

@@ -13,8 +13,10 @@ namespace palpate {
 namespace {
 
 /// The same task and grading (the files may name the mesh and preset differently; whether the
-/// mesh, in its unit, is the recorded one is the mesh hash's to say).
+/// mesh, in its unit, is the recorded one is the mesh hash's to say; translations change no task).
 bool sameExercise(Exercise a, Exercise b) {
+    a.translations.clear();
+    b.translations.clear();
     a.meshPath = b.meshPath = a.tissuePresetPath = b.tissuePresetPath = "";
     a.meshUnit = b.meshUnit = kMillimetres;
     return exerciseToJson(a, -1) == exerciseToJson(b, -1);

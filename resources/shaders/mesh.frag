@@ -17,6 +17,8 @@ uniform float uShininess;
 uniform float uRingAmbient;  // more ambient inside the rings: their colours must read on any face
 uniform bool uWireframe;
 uniform vec4 uWireColor;     // rgb, and the opacity of a line's centre
+uniform vec3 uBackground;    // the see-through view fades the surface towards it
+uniform float uOpacity;      // 1, or SceneStyle.h's kSeeThroughOpacity while a lump is shown inside
 
 out vec4 fragColor;
 
@@ -36,5 +38,7 @@ void main() {
         float line = 1.0 - smoothstep(0.5, 1.0, d);
         color = mix(color, uWireColor.rgb, uWireColor.a * line);
     }
-    fragColor = vec4(color, 1.0);
+    // Mixed with the background rather than blended: the picture stays opaque (it is grabbed) and the
+    // software renderer does the same.
+    fragColor = vec4(mix(uBackground, color, uOpacity), 1.0);
 }

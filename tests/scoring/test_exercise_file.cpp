@@ -83,6 +83,62 @@ TEST(ExerciseFile, SaveLoadRoundTrip) {
     EXPECT_TRUE(loadExercise(path).exercise);
 }
 
+// An exercise carries its words in other languages; a user of one reads them, with the exercise's
+// own words for whatever the translation leaves out; the codes and entries are checked.
+TEST(ExerciseFile, TranslationsRoundTripFallBackAndAreChecked) {
+    Json j = pressJson();
+    j["description"] = "Press them.";
+    j["translations"] = Json::parse(R"({"de": {"name": "Drücken", "description": "Drücken Sie."},
+                                        "ms": {"name": "Tekan"}})");
+    const auto r = parseExercise(j.dump(), "ex.json");
+    ASSERT_TRUE(r.exercise) << r.error();
+    const Exercise& e = *r.exercise;
+    EXPECT_EQ(exerciseTextIn(e, "de").name, "Drücken");
+    EXPECT_EQ(exerciseTextIn(e, "de_AT").description, "Drücken Sie.");  // the region falls back to its language
+    EXPECT_EQ(exerciseTextIn(e, "ms").name, "Tekan");
+    EXPECT_EQ(exerciseTextIn(e, "ms").description, "Press them.");  // not translated: the exercise's own
+    EXPECT_EQ(exerciseTextIn(e, "fr").name, "p");
+    EXPECT_EQ(exerciseTextIn(e, "en").description, "Press them.");
+    // Written back as read, and parsed to the same exercise.
+    const auto back = parseExercise(exerciseToJson(e), "ex.json");
+    ASSERT_TRUE(back.exercise) << back.error();
+    EXPECT_EQ(exerciseToJson(*back.exercise), exerciseToJson(e));
+    EXPECT_EQ(back.exercise->translations.at("ms").description, "");
+
+    for (const char* code : {"de", "ms", "pt_BR", "fil"}) EXPECT_TRUE(isLanguageCode(code)) << code;
+    for (const char* code : {"", "D", "DE", "de-AT", "de_at", "deutsch", "de_ATX", "d\x1b"})
+        EXPECT_FALSE(isLanguageCode(code)) << code;
+
+    Json bad = pressJson();
+    bad["translations"] = "German";
+    expectError(bad, "translations", "must be an object");
+    bad["translations"] = Json::parse(R"({"Deutsch": {"name": "x"}})");
+    expectError(bad, "translations", "a key of 7 bytes is not a language code");
+    bad["translations"] = Json::parse(R"({"de": {"title": "x"}})");
+    expectError(bad, "translations.de.title", "unknown key");
+    bad["translations"] = Json::parse(R"({"de": {"name": 3}})");
+    expectError(bad, "translations.de.name", "must be a string");
+    bad["translations"] = Json::parse(R"({"de": {}})");
+    expectError(bad, "translations.de", "gives neither a name nor a description");
+}
+
+// Every shipped exercise speaks German and Malay: a name and a description in each.
+TEST(ExerciseFile, ShippedExercisesCarryGermanAndMalay) {
+    int exercises = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(test::resourcesDir() + "/exercises")) {
+        if (entry.path().extension() != ".json") continue;
+        const auto r = loadExercise(entry.path().string());
+        ASSERT_TRUE(r.exercise) << r.error();
+        ++exercises;
+        for (const char* code : {"de", "ms"}) {
+            const ExerciseTextDef text = exerciseTextIn(*r.exercise, code);
+            EXPECT_NE(text.name, r.exercise->name) << entry.path() << " in " << code;
+            EXPECT_NE(text.description, r.exercise->description) << entry.path() << " in " << code;
+        }
+    }
+    EXPECT_GE(exercises, 5);
+}
+
 TEST(ExerciseFile, ErrorsNameTheKey) {
     EXPECT_EQ(errorsOf(pressJson()), "");
     auto with = [](const std::function<void(Json&)>& change) {

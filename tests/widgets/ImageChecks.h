@@ -60,4 +60,26 @@ inline int countDifferent(const QImage& a, const QImage& b, int tolerance, const
     return count;
 }
 
+/// Of the surface's pixels in `plain` (not `background`, outside `exclude`), how many `faded` shows
+/// as that pixel mixed with the background at `opacity` (within `tolerance` per channel).
+struct FadedCount {
+    int surface = 0;
+    int faded = 0;
+};
+inline FadedCount countFaded(const QImage& plain, const QImage& faded, QRgb background, float opacity,
+                             const QRectF& exclude, int tolerance) {
+    FadedCount c;
+    auto mix = [&](int bg, int v) { return int(std::lround(bg + (v - bg) * opacity)); };
+    for (int y = 0; y < plain.height(); ++y)
+        for (int x = 0; x < plain.width(); ++x) {
+            const QRgb p = plain.pixel(x, y);
+            if (exclude.contains(QPointF(x + 0.5, y + 0.5)) || nearRgb(p, background, 12)) continue;
+            ++c.surface;
+            const QRgb expected = qRgb(mix(qRed(background), qRed(p)), mix(qGreen(background), qGreen(p)),
+                                       mix(qBlue(background), qBlue(p)));
+            if (nearRgb(faded.pixel(x, y), expected, tolerance)) ++c.faded;
+        }
+    return c;
+}
+
 }  // namespace palpate::test

@@ -32,6 +32,7 @@
 #include <QScrollBar>
 #include <QApplication>
 #include <QComboBox>
+#include <QPlainTextEdit>
 #include <QDockWidget>
 #include <QDir>
 #include <QCheckBox>
@@ -754,6 +755,56 @@ TEST(ExerciseEditor, TypingIntoAFieldIsOneStepAndUndoRestoresTheForm) {
     QTest::keyClick(name, Qt::Key_Backspace);
     EXPECT_TRUE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("name:")));
     EXPECT_TRUE(name->property("invalid").toBool());
+}
+
+// "Text in" chooses which language's name and description the two fields edit: a translation is
+// typed like the exercise's own words (one undo step, shown again on undo), an empty translation
+// shows the own words greyed, one emptied is dropped from the file, and all of it is saved.
+TEST(ExerciseEditor, TheNameAndDescriptionAreEditedInEachLanguage) {
+    Editor editor;
+    const std::string shipped = findInSource("exercises/press_targets.json");
+    ASSERT_EQ(editor.panel.openExercise(QString::fromStdString(shipped)), QString());
+    auto* language = child<QComboBox>(editor.panel, "exerciseTextLanguageCombo");
+    auto* name = child<QLineEdit>(editor.panel, "exerciseNameEdit");
+    auto* description = child<QPlainTextEdit>(editor.panel, "exerciseDescriptionEdit");
+    EXPECT_EQ(name->text(), QStringLiteral("Press three targets"));
+    language->setCurrentIndex(language->findData(QStringLiteral("de")));
+    EXPECT_EQ(name->text(), QStringLiteral("Drei Ziele drücken"));
+    EXPECT_TRUE(description->toPlainText().startsWith(QStringLiteral("Drücken Sie")));
+    EXPECT_EQ(editor.panel.undoStack()->count(), 0);  // choosing a language changes nothing
+
+    name->selectAll();
+    name->setFocus();
+    QTest::keyClicks(name, QStringLiteral("Drei Punkte"));
+    EXPECT_EQ(editor.panel.exercise().translations.at("de").name, "Drei Punkte");
+    EXPECT_EQ(editor.panel.exercise().name, "Press three targets");
+    EXPECT_EQ(editor.panel.undoStack()->count(), 1);
+    language->setCurrentIndex(language->findData(QString()));
+    EXPECT_EQ(name->text(), QStringLiteral("Press three targets"));
+    language->setCurrentIndex(language->findData(QStringLiteral("de")));
+    editor.panel.undoAction()->trigger();
+    EXPECT_EQ(name->text(), QStringLiteral("Drei Ziele drücken"));
+    editor.panel.redoAction()->trigger();
+    EXPECT_EQ(name->text(), QStringLiteral("Drei Punkte"));
+
+    // Emptied, the Malay translation is gone and the fields show the own words as placeholders.
+    language->setCurrentIndex(language->findData(QStringLiteral("ms")));
+    name->selectAll();
+    QTest::keyClick(name, Qt::Key_Backspace);
+    description->selectAll();
+    QTest::keyClick(description, Qt::Key_Backspace);
+    EXPECT_EQ(editor.panel.exercise().translations.count("ms"), 0u);
+    EXPECT_EQ(name->placeholderText(), QStringLiteral("Press three targets"));
+    EXPECT_FALSE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("translations")));
+
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("press.json"));
+    ASSERT_EQ(editor.panel.saveExercise(file), QString());
+    const auto loaded = loadExercise(file.toStdString());
+    ASSERT_TRUE(loaded.exercise) << loaded.error();
+    EXPECT_EQ(exerciseTextIn(*loaded.exercise, "de").name, "Drei Punkte");
+    EXPECT_EQ(exerciseTextIn(*loaded.exercise, "ms").name, "Press three targets");
+    EXPECT_EQ(loaded.exercise->name, "Press three targets");
 }
 
 TEST(ExerciseEditor, UnsavedChangesAreNotDiscardedWithoutAsking) {

@@ -3,6 +3,7 @@
 // has no OpenGL for widgets (docs/architecture.md). Every test skips, saying why, when no OpenGL 3.3
 // core context can be created. The scene is the default one stepped into contact (deterministic).
 #include "ImageChecks.h"
+#include "LumpMarker.h"
 
 #include "base/resources/ShippedResources.h"
 #include "app/gui/HapticSession.h"
@@ -221,6 +222,26 @@ TEST_F(GlViewport, ShowsTheRestGhostOverTheDentOnly) {
                 ++awayFromDent;
         }
     EXPECT_LE(awayFromDent, 10) << "ghost drawn away from the dent";
+}
+
+// The see-through view in OpenGL: the surface faded towards the background as the software renderer
+// fades it (mesh.frag), away from the markers.
+TEST_F(GlViewport, ALumpShownInsideTheTissueDrawsTheSurfaceSeeThrough) {
+    auto viewport = makeViewport();
+    const QImage plain = viewport->grabImage();
+    ExerciseMarkers markers;
+    markers.markers.push_back(lumpMarkerFacingTheCamera(*viewport));
+    viewport->setExerciseMarkers(markers);
+    const QImage seeThrough = viewport->grabImage();
+    keep(seeThrough, "see_through");
+    const auto centre = viewport->camera().projectToPixel(markers.markers[0].positionMm,
+                                                          glm::vec2(float(kWidthPx), float(kHeightPx)));
+    ASSERT_TRUE(centre);
+    const QRectF markerArea(centre->x - 80.0, centre->y - 80.0, 160.0, 160.0);
+    const FadedCount faded = countFaded(plain, seeThrough, toQColor(style::kBackground).rgb(),
+                                        style::kSeeThroughOpacity, markerArea, 3);
+    EXPECT_GT(faded.surface, kWidthPx * kHeightPx / 8);
+    EXPECT_GE(faded.faded, faded.surface * 98 / 100) << faded.faded << " of " << faded.surface;
 }
 
 TEST_F(GlViewport, PicksAndPansLikeTheSoftwareViewport) {

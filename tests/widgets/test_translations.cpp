@@ -8,6 +8,7 @@
 #include "widgets/RecorderPanel.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/PreferencesDialog.h"
+#include "widgets/ScoreCard.h"
 #include "widgets/TraineePanel.h"
 
 #include "report/MetricText.h"
@@ -41,6 +42,20 @@ QStringList actionTexts(const MainWindow& window) {
     QStringList texts;
     for (const QAction* action : window.findChildren<QAction*>()) texts << action->text();
     return texts;
+}
+
+/// Trainee mode, Ada, "press the targets" chosen and its good path as the device; recordings and
+/// results in `dir`.
+void preparePressTargets(MainWindow& window, const QTemporaryDir& dir) {
+    window.recorderPanel()->setRecordingFolder(dir.filePath(QStringLiteral("recordings")));
+    ASSERT_EQ(window.exercises().openDatabase(dir.filePath(QStringLiteral("results.sqlite"))), QString());
+    ASSERT_EQ(window.setDeviceUri(QStringLiteral("sim:path:") +
+                                  QString::fromStdString(findResource("exercises/press_targets.good.path"))),
+              QString());
+    window.setMode(MainWindow::Mode::Trainee);
+    ASSERT_EQ(window.exercises().addTrainee(QStringLiteral("Ada")), QString());
+    ASSERT_EQ(window.exercises().addExerciseFile(QString::fromStdString(findResource("exercises/press_targets.json"))),
+              QString());
 }
 
 class Translations : public ::testing::Test {
@@ -149,17 +164,9 @@ TEST_F(Translations, TheScoreReportPdfIsGerman) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     MainWindow window(RendererChoice::Software, LoopMode::Stepped);
-    window.recorderPanel()->setRecordingFolder(dir.filePath(QStringLiteral("recordings")));
-    ASSERT_EQ(window.exercises().openDatabase(dir.filePath(QStringLiteral("results.sqlite"))), QString());
-    ASSERT_EQ(window.setDeviceUri(QStringLiteral("sim:path:") +
-                                  QString::fromStdString(findResource("exercises/press_targets.good.path"))),
-              QString());
     window.resize(1200, 800);
     window.show();
-    window.setMode(MainWindow::Mode::Trainee);
-    ASSERT_EQ(window.exercises().addTrainee(QStringLiteral("Ada")), QString());
-    ASSERT_EQ(window.exercises().addExerciseFile(QString::fromStdString(findResource("exercises/press_targets.json"))),
-              QString());
+    ASSERT_NO_FATAL_FAILURE(preparePressTargets(window, dir));
     ASSERT_EQ(window.exercises().start(), QString());
     for (int done = 0; done < 60000 && window.exercises().running(); done += 100) window.advanceTicks(100);
     ASSERT_TRUE(window.exercises().lastReport());
@@ -183,6 +190,62 @@ TEST_F(Translations, TheScoreReportPdfIsGerman) {
     EXPECT_FALSE(text.contains(QStringLiteral("Trainee:"))) << text.toStdString();
     if (const QByteArray shots = qgetenv("PALPATE_SHOT_DIR"); !shots.isEmpty())
         QFile::copy(pdf, QString::fromLocal8Bit(shots) + QStringLiteral("/bericht.pdf"));
+}
+
+// A trainee using Palpate in German or Malay reads the shipped exercises' names and descriptions
+// in that language, in the list, the dock, the score card and the PDF; results are still stored
+// under the exercise's own name, so a class that mixes languages is one exercise.
+TEST_F(Translations, ExercisesSpeakTheTraineesLanguage) {
+    const QString pdftotext = QStandardPaths::findExecutable(QStringLiteral("pdftotext"));
+    struct Case {
+        const char* language;
+        const char* listed;
+        const char* description;
+    };
+    for (const Case& c : {Case{"de", "Drei Ziele drücken", "Drücken Sie die drei markierten Punkte"},
+                          Case{"ms", "Tekan tiga sasaran", "Tekan tiga titik bertanda"}}) {
+        SCOPED_TRACE(c.language);
+        ASSERT_TRUE(loadLanguage(*qApp, QString::fromLatin1(c.language)));
+        QTemporaryDir dir;
+        ASSERT_TRUE(dir.isValid());
+        MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+        ASSERT_NO_FATAL_FAILURE(preparePressTargets(window, dir));
+        window.setMode(MainWindow::Mode::Trainee);
+        ASSERT_EQ(window.exercises().addTrainee(QStringLiteral("Ada")), QString());
+        ASSERT_EQ(
+            window.exercises().addExerciseFile(QString::fromStdString(findResource("exercises/press_targets.json"))),
+            QString());
+        TraineePanel& panel = *window.traineePanel();
+        const QString listed = QString::fromUtf8(c.listed);
+        EXPECT_EQ(panel.exerciseTitle(), listed);
+        QStringList titles;
+        for (const auto& [title, path] : panel.exercises()) titles << title;
+        EXPECT_FALSE(titles.contains(QStringLiteral("Press three targets")))
+            << titles.join(QLatin1Char('|')).toStdString();
+        const auto* description = panel.findChild<QLabel*>(QStringLiteral("exerciseDescriptionLabel"));
+        ASSERT_NE(description, nullptr);
+        EXPECT_TRUE(description->text().startsWith(QString::fromUtf8(c.description)))
+            << description->text().toStdString();
+
+        ASSERT_EQ(window.exercises().start(), QString());
+        for (int done = 0; done < 60000 && window.exercises().running(); done += 100) window.advanceTicks(100);
+        ASSERT_TRUE(window.exercises().lastReport());
+        const std::vector<ResultRecord> stored = window.exercises().database().allResults();
+        ASSERT_EQ(stored.size(), 1u);
+        EXPECT_EQ(stored.front().exerciseName, QStringLiteral("Press three targets"));
+        const auto* card = panel.findChild<ScoreCard*>();
+        ASSERT_NE(card, nullptr);
+        EXPECT_TRUE(card->titleText().contains(listed)) << card->titleText().toStdString();
+        if (pdftotext.isEmpty()) continue;
+        const QString pdf = dir.filePath(QStringLiteral("report.pdf"));
+        ASSERT_EQ(window.exercises().exportLastReportPdf(pdf), QString());
+        QProcess proc;
+        proc.start(pdftotext, {pdf, QStringLiteral("-")});
+        ASSERT_TRUE(proc.waitForFinished(30000));
+        const QString text = QString::fromUtf8(proc.readAllStandardOutput()).simplified();
+        EXPECT_TRUE(text.contains(listed)) << text.toStdString();
+        EXPECT_FALSE(text.contains(QStringLiteral("Press three targets"))) << text.toStdString();
+    }
 }
 
 int main(int argc, char** argv) {

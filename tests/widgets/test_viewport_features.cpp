@@ -2,6 +2,7 @@
 // their legend, the rest-shape ghost, pan, picking, and the bookkeeping behind partial uploads (the
 // observer's changed vertices and versions, the scene's dirty vertices, ranges and normals).
 #include "ImageChecks.h"
+#include "LumpMarker.h"
 
 #include "base/resources/ShippedResources.h"
 #include "app/gui/HapticSession.h"
@@ -359,6 +360,37 @@ TEST(SoftwareViewportFeatures, ShowsTheRestGhostOnlyWhereTheTissueMoved) {
         for (int x = 0; x < masked.width(); ++x)
             if (around.contains(QPointF(x + 0.5, y + 0.5))) masked.setPixel(x, y, withoutGhost.pixel(x, y));
     EXPECT_EQ(countDifferent(masked, withoutGhost, 3, legend), 0) << "ghost drawn away from the dent";
+}
+
+// The instructor's see-through view: while a lump inside the tissue is shown, the surface is drawn
+// faded towards the background (style::kSeeThroughOpacity), everywhere but where the markers paint;
+// without the lump the picture is the plain one again.
+TEST(SoftwareViewportFeatures, ALumpShownInsideTheTissueDrawsTheSurfaceSeeThrough) {
+    auto session = steppedSession(0);
+    SoftwareViewport viewport;
+    viewport.resize(640, 480);
+    viewport.setMesh(*session->drawnMesh());
+    const QImage plain = viewport.grabImage();
+    EXPECT_EQ(viewport.surfaceOpacity(), 1.0f);
+
+    ExerciseMarkers markers;
+    markers.markers.push_back(lumpMarkerFacingTheCamera(viewport));
+    viewport.setExerciseMarkers(markers);
+    EXPECT_EQ(viewport.surfaceOpacity(), style::kSeeThroughOpacity);
+    const QImage seeThrough = viewport.grabImage();
+
+    const auto centre = viewport.camera().projectToPixel(markers.markers[0].positionMm, glm::vec2(640.0f, 480.0f));
+    ASSERT_TRUE(centre);
+    const QRectF markerArea(centre->x - 80.0, centre->y - 80.0, 160.0, 160.0);
+    const QRgb background = toQColor(style::kBackground).rgb();
+    const FadedCount faded = countFaded(plain, seeThrough, background, style::kSeeThroughOpacity, markerArea, 2);
+    EXPECT_GT(faded.surface, 640 * 480 / 8);
+    EXPECT_GE(faded.faded, faded.surface * 99 / 100) << faded.faded << " of " << faded.surface;
+
+    // A surface marker alone (a target) keeps the surface opaque.
+    markers.markers[0].bodyRadiusMm = 0.0;
+    viewport.setExerciseMarkers(markers);
+    EXPECT_EQ(countDifferent(viewport.grabImage(), plain, 0, markerArea), 0);
 }
 
 TEST(SoftwareViewportFeatures, ShadesTheDentWithNormalsRecomputedAroundIt) {
