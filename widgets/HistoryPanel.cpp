@@ -1,5 +1,6 @@
 #include "widgets/HistoryPanel.h"
 
+#include "report/ExerciseWords.h"
 #include "report/MetricText.h"
 #include "results/LearningCurve.h"
 #include "report/LearningCurveImage.h"
@@ -121,8 +122,22 @@ void HistoryPanel::refresh() {
     rebuild();
 }
 
+QString HistoryPanel::shownName(const ResultRecord& r) const {
+    if (r.exercisePath.isEmpty()) return r.exerciseName;
+    auto it = mShownNames.find(r.exercisePath);
+    if (it == mShownNames.end()) {
+        const std::string path = r.exercisePath.toStdString();
+        const auto loaded = guardedLoad(path, [&] { return loadExercise(path); });
+        // Results are grouped under the stored name: a file since renamed names another exercise.
+        const bool same = loaded.exercise && QString::fromStdString(loaded.exercise->name) == r.exerciseName;
+        it = mShownNames.insert(r.exercisePath, same ? shownExerciseName(*loaded.exercise) : QString());
+    }
+    return it->isEmpty() ? r.exerciseName : *it;
+}
+
 void HistoryPanel::rebuild() {
     mResults.clear();
+    mShownNames.clear();
     const qint64 id = traineeId();
     if (mDatabase && mDatabase->isOpen() && id >= 0) mResults = mDatabase->results(id);
 
@@ -188,7 +203,7 @@ void HistoryPanel::rebuild() {
         auto& pair = byExercise[r.exerciseName];
         if (!pair.first) {
             pair.first = new QLineSeries();
-            pair.first->setName(r.exerciseName);
+            pair.first->setName(shownName(r));
             pair.second = new QScatterSeries();
             pair.second->setMarkerSize(8.0);
             attach(pair.first);
@@ -209,7 +224,7 @@ void HistoryPanel::rebuild() {
         auto* when = new QTableWidgetItem(r.startedUtc.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")));
         when->setData(Qt::UserRole, r.id);
         mTable->setItem(row, 0, when);
-        mTable->setItem(row, 1, new QTableWidgetItem(r.exerciseName));
+        mTable->setItem(row, 1, new QTableWidgetItem(shownName(r)));
         auto* score = new QTableWidgetItem(scoreText(r.score, locale()));
         score->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         if (!isScored(r.outcome)) {
@@ -225,7 +240,7 @@ void HistoryPanel::rebuild() {
             score->setToolTip(tr("The time limit passed before the task was done"));
         }
         mTable->setItem(row, 2, score);
-        auto* time = new QTableWidgetItem(QString::number(r.durationS, 'f', 1));
+        auto* time = new QTableWidgetItem(locale().toString(r.durationS, 'f', 1));
         time->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         mTable->setItem(row, 3, time);
     }
@@ -239,7 +254,8 @@ QString HistoryPanel::sessionsSummary(int sessions) const {
     {
         // Best and mean per exercise: scores of different exercises do not mix.
         struct Tally {
-            QString exercise;
+            QString exercise;  ///< the stored name: what groups them
+            QString shown;
             double best = 0.0, sum = 0.0;
             int scored = 0;
         };
@@ -249,7 +265,7 @@ QString HistoryPanel::sessionsSummary(int sessions) const {
             if (!isScored(r.outcome)) continue;
             auto it = std::find_if(tallies.begin(), tallies.end(),
                                    [&](const Tally& t) { return t.exercise == r.exerciseName; });
-            if (it == tallies.end()) it = tallies.insert(tallies.end(), Tally{r.exerciseName});
+            if (it == tallies.end()) it = tallies.insert(tallies.end(), Tally{r.exerciseName, shownName(r)});
             it->best = std::max(it->best, r.score);
             it->sum += r.score;
             ++it->scored;
@@ -268,7 +284,7 @@ QString HistoryPanel::sessionsSummary(int sessions) const {
         QStringList perExercise;
         for (const Tally& t : tallies)
             perExercise << tr("%1: best %2, mean %3")
-                               .arg(t.exercise, scoreText(t.best, locale()),
+                               .arg(t.shown, scoreText(t.best, locale()),
                                     scoreText(t.sum / double(t.scored), locale()));
         // No plural translation is loaded for English: the two forms are spelled out.
         const QString count = sessions == 1 ? tr("1 session (%1)").arg(when)

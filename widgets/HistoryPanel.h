@@ -6,6 +6,7 @@
 #include "results/LearningCurveData.h"
 #include "results/ResultsDatabase.h"
 
+#include <QHash>
 #include <QWidget>
 
 #include <optional>
@@ -67,9 +68,13 @@ private:
     /// The line under the table: sessions, their dates, the best and the mean per exercise.
     QString sessionsSummary(int sessions) const;
     void updateButtons();
+    /// The result's exercise as the user reads it: its file's name in their language when the
+    /// file still opens and is that exercise, else the name it is stored under.
+    QString shownName(const ResultRecord& r) const;
 
     ResultsDatabase* mDatabase = nullptr;
     std::vector<ResultRecord> mResults;
+    mutable QHash<QString, QString> mShownNames;  ///< exercise file -> shown name ("" none), per rebuild
     QComboBox* mTrainees = nullptr;
     QChart* mChart = nullptr;
     QChartView* mChartView = nullptr;

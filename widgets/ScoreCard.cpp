@@ -26,6 +26,9 @@ ScoreCard::ScoreCard(QWidget* parent) : QWidget(parent) {
     big.setBold(true);
     mScore->setFont(big);
     mScore->setAlignment(Qt::AlignCenter);
+    // "Stopped: 34.5 points so far, not a score" in a large font is wider than the dock: it wraps
+    // rather than widen the window past the screen.
+    mScore->setWordWrap(true);
     mScore->setAccessibleName(tr("Score"));
     mTable = new QTableWidget(0, 4, this);
     mTable->setHorizontalHeaderLabels({tr("Metric"), tr("Value"), tr("Sub-score"), tr("Points")});
@@ -125,9 +128,11 @@ void ScoreCard::setReport(const ScoreReport& report, const QString& traineeName)
         name->setToolTip(metricNameText(line.metric) + QStringLiteral(": ") + metricDescriptionText(line.metric));
         mTable->setItem(row, 0, name);
         mTable->setItem(row, 1, new QTableWidgetItem(line.measured ? localMetricValueText(line.metric, line.value) : QStringLiteral("-")));
-        mTable->setItem(row, 2, new QTableWidgetItem(line.weight > 0.0 ? QStringLiteral("%1 %").arg(100.0 * line.subScore, 0, 'f', 0)
-                                                                       : tr("not scored")));
-        mTable->setItem(row, 3, new QTableWidgetItem(QString::number(line.contribution, 'f', 1)));
+        mTable->setItem(row, 2,
+                        new QTableWidgetItem(line.weight > 0.0 ? QStringLiteral("%1 %").arg(
+                                                                     locale().toString(100.0 * line.subScore, 'f', 0))
+                                                               : tr("not scored")));
+        mTable->setItem(row, 3, new QTableWidgetItem(palpate::scoreText(line.contribution, locale())));
         for (int c = 1; c < 4; ++c) mTable->item(row, c)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     }
     fitNameColumn();

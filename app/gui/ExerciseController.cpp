@@ -13,6 +13,7 @@
 #include "widgets/HistoryPanel.h"
 #include "widgets/ScoreCard.h"
 #include "report/ExerciseWords.h"
+#include "report/MetricText.h"
 #include "report/ScoreReportFromRecording.h"
 #include "report/ScoreReportPdf.h"
 #include "widgets/TraineePanel.h"
@@ -496,7 +497,7 @@ void ExerciseController::finish(const QString& why) {
         mHistory.setTrainee(mTraineeId);
     }
     mPanel.setMessage((why.isEmpty() ? QString() : tr("Ended: %1. ").arg(why)) + stored);
-    emit message(tr("Exercise \"%1\": score %2").arg(QString::fromStdString(report.exerciseName)).arg(report.score, 0, 'f', 0));
+    emit message(tr("Exercise \"%1\": score %2").arg(shownExerciseName(mAssets->exercise), scoreText(report.score)));
     updateMarkers();
     emit runningChanged(false);
     emit finished();

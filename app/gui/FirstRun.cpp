@@ -50,6 +50,17 @@ namespace {
 QTranslator* gAppTranslator = nullptr;
 QTranslator* gQtTranslator = nullptr;
 
+// Qt's standard buttons (Close, OK, Cancel, ...) take their words from Qt's own catalogue, which
+// Debian ships for German but not for Malay: ours carries them too, in Qt's context, so that no
+// dialog shows an English button in a translated window. Only looked up, never called.
+[[maybe_unused]] constexpr const char* kStandardButtonTexts[] = {
+    QT_TRANSLATE_NOOP("QPlatformTheme", "OK"),      QT_TRANSLATE_NOOP("QPlatformTheme", "Cancel"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "Close"),   QT_TRANSLATE_NOOP("QPlatformTheme", "Save"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "Discard"), QT_TRANSLATE_NOOP("QPlatformTheme", "&Yes"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "&No"),     QT_TRANSLATE_NOOP("QPlatformTheme", "Restore Defaults"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "Apply"),   QT_TRANSLATE_NOOP("QPlatformTheme", "Help"),
+};
+
 UrlOpener& urlOpener() {
     static UrlOpener opener = [](const QUrl& url) { return QDesktopServices::openUrl(url); };
     return opener;

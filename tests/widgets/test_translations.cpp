@@ -17,6 +17,9 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QDialogButtonBox>
+#include <QPushButton>
+#include <QTableWidget>
 #include <QApplication>
 #include <QLabel>
 #include <QMenuBar>
@@ -236,6 +239,15 @@ TEST_F(Translations, ExercisesSpeakTheTraineesLanguage) {
         const auto* card = panel.findChild<ScoreCard*>();
         ASSERT_NE(card, nullptr);
         EXPECT_TRUE(card->titleText().contains(listed)) << card->titleText().toStdString();
+        // The card's points follow the language's decimal sign; History names the exercise so too.
+        const QChar decimal = QLocale(QString::fromLatin1(c.language)).decimalPoint().at(0);
+        for (int row = 0; row < card->breakdownTable()->rowCount(); ++row) {
+            const QString points = card->breakdownTable()->item(row, 3)->text();
+            EXPECT_TRUE(points.contains(decimal)) << points.toStdString();
+        }
+        QTableWidget* history = window.historyPanel()->table();
+        ASSERT_GE(history->rowCount(), 1);
+        EXPECT_EQ(history->item(0, 1)->text(), listed);
         if (pdftotext.isEmpty()) continue;
         const QString pdf = dir.filePath(QStringLiteral("report.pdf"));
         ASSERT_EQ(window.exercises().exportLastReportPdf(pdf), QString());
@@ -246,6 +258,34 @@ TEST_F(Translations, ExercisesSpeakTheTraineesLanguage) {
         EXPECT_TRUE(text.contains(listed)) << text.toStdString();
         EXPECT_FALSE(text.contains(QStringLiteral("Press three targets"))) << text.toStdString();
     }
+}
+
+// A stopped session's card in German ("Abgebrochen: bisher 0,0 Punkte, keine Bewertung", large)
+// wraps in the Exercise dock instead of widening the window past a 1280-pixel screen; Qt's own
+// buttons speak Malay too (Debian ships no Malay catalogue for Qt: ours carries them).
+TEST_F(Translations, AStoppedCardWrapsAndStandardButtonsAreTranslated) {
+    ASSERT_TRUE(loadLanguage(*qApp, QStringLiteral("de")));
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    MainWindow window(RendererChoice::Software, LoopMode::Stepped);
+    window.resize(1280, 800);
+    window.show();
+    ASSERT_NO_FATAL_FAILURE(preparePressTargets(window, dir));
+    window.resize(1280, 800);
+    ASSERT_EQ(window.exercises().start(), QString());
+    window.advanceTicks(200);
+    window.exercises().stop();
+    ASSERT_FALSE(window.exercises().running());
+    for (int i = 0; i < 3; ++i) QApplication::processEvents();
+    const auto* card = window.traineePanel()->findChild<ScoreCard*>();
+    ASSERT_NE(card, nullptr);
+    EXPECT_TRUE(card->scoreText().startsWith(QStringLiteral("Abgebrochen"))) << card->scoreText().toStdString();
+    EXPECT_LE(window.width(), 1280) << "the card needs " << window.minimumSizeHint().width() << " px";
+
+    ASSERT_TRUE(loadLanguage(*qApp, QStringLiteral("ms")));
+    QDialogButtonBox buttons(QDialogButtonBox::Close | QDialogButtonBox::Cancel);
+    EXPECT_EQ(buttons.button(QDialogButtonBox::Close)->text(), QStringLiteral("Tutup"));
+    EXPECT_EQ(buttons.button(QDialogButtonBox::Cancel)->text(), QStringLiteral("Batal"));
 }
 
 int main(int argc, char** argv) {
