@@ -6106,8 +6106,8 @@ Tick %4 µs, Verschiebungsfehler %5 %, Kraftfehler %6 %%7</translation>
         <translation>Die Beispielübung durchführen</translation>
     </message>
     <message>
-        <source>&quot;Press the targets&quot; as a preview: the Exercise dock guides you and scores the run (nothing is stored).</source>
-        <translation>„Ziele drücken“ als Vorschau: das Dock „Übung“ leitet Sie an und bewertet den Durchgang (nichts wird gespeichert).</translation>
+        <source>&quot;Press three targets&quot; as a preview: the Exercise dock guides you and scores the run (nothing is stored).</source>
+        <translation>„Drei Ziele drücken“ als Vorschau: das Dock „Übung“ leitet Sie an und bewertet den Durchgang (nichts wird gespeichert).</translation>
     </message>
     <message>
         <source>Read the user guide</source>

@@ -6102,8 +6102,8 @@ tik %4 µs, ralat anjakan %5 %, ralat daya %6 %%7</translation>
         <translation>Jalankan latihan contoh</translation>
     </message>
     <message>
-        <source>&quot;Press the targets&quot; as a preview: the Exercise dock guides you and scores the run (nothing is stored).</source>
-        <translation>&quot;Tekan sasaran&quot; sebagai pratonton: dok Latihan membimbing anda dan memberi markah (tiada apa-apa disimpan).</translation>
+        <source>&quot;Press three targets&quot; as a preview: the Exercise dock guides you and scores the run (nothing is stored).</source>
+        <translation>&quot;Tekan tiga sasaran&quot; sebagai pratonton: dok Latihan membimbing anda dan memberi markah (tiada apa-apa disimpan).</translation>
     </message>
     <message>
         <source>Read the user guide</source>

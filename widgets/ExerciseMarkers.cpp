@@ -345,9 +345,16 @@ void paintExerciseMarkers(QPainter& painter, const ExerciseMarkers& markers, con
                                           : std::max(at.y(), disc.bottom() + 2.0 + metrics.ascent()));
             }
             at.setY(std::clamp(at.y(), metrics.ascent(), double(size.y) - metrics.descent()));
-            painter.setPen(QColor(0, 0, 0, int(220 * colour.alphaF())));
+            // A faded marker's label stays readable (a lump seen from the side, on the far half): lighter
+            // and nearly opaque on its shadow, while the marker itself stays faded.
+            QColor text = colour;
+            if (colour.alphaF() < 1.0f) {
+                text = exerciseMarkerColour(marker.kind).lighter(140);
+                text.setAlphaF(0.9f);
+            }
+            painter.setPen(QColor(0, 0, 0, int(230 * text.alphaF())));
             painter.drawText(at + QPointF(1, 1), marker.label);
-            painter.setPen(colour);
+            painter.setPen(text);
             painter.drawText(at, marker.label);
         }
     }

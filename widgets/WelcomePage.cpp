@@ -46,7 +46,7 @@ WelcomePage::WelcomePage(QWidget* parent) : QDialog(parent) {
                               "view. No haptic device needed."),
                            &WelcomePage::touchModeRequested);
     mExercise = addAction(QStringLiteral("welcomeExercise"), tr("Run the example exercise"),
-                          tr("\"Press the targets\" as a preview: the Exercise dock guides you and scores the "
+                          tr("\"Press three targets\" as a preview: the Exercise dock guides you and scores the "
                              "run (nothing is stored)."),
                           &WelcomePage::exerciseRequested);
     mUserGuide = addAction(QStringLiteral("welcomeUserGuide"), tr("Read the user guide"),
