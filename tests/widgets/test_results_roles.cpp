@@ -16,6 +16,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include "tests/widgets/ForkedProcess.h"
+
 #include <QProcess>
 #include <QSqlDatabase>
 #include <QSqlError>
@@ -282,7 +284,7 @@ TEST_F(ServerRoles, WorkstationsSendTheirOwnAndReadTheirClassInstructorsReadAll)
 
 /// Runs a program; its exit code and what it wrote.
 std::pair<int, QString> run(const QString& program, const QStringList& arguments) {
-    QProcess p;
+    test::ForkedProcess p;
     p.setProcessChannelMode(QProcess::MergedChannels);
     p.start(program, arguments);
     if (!p.waitForFinished(60000)) return {-1, QStringLiteral("did not finish")};
@@ -396,7 +398,7 @@ struct CliRun {
     QByteArray out, err;
 };
 CliRun cli(const QStringList& arguments) {
-    QProcess p;
+    test::ForkedProcess p;
     p.start(QStringLiteral(PALPATE_CLI_PATH), arguments);
     p.waitForFinished(120000);
     return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};

@@ -21,6 +21,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include "tests/widgets/ForkedProcess.h"
+
 #include <QProcess>
 #include <QSqlDatabase>
 #include <QSqlError>
@@ -512,7 +514,7 @@ bool openWhenStarted(ResultsDatabase& db) {
 
 /// pg_ctlcluster on the cluster pg_virtualenv made (15/regress).
 bool cluster(const char* action) {
-    QProcess p;
+    test::ForkedProcess p;
     p.start(QStringLiteral("pg_ctlcluster"),
             {qEnvironmentVariable("PGVERSION", QStringLiteral("15")), QStringLiteral("regress"), QString::fromLatin1(action)});
     return p.waitForFinished(60000) && p.exitCode() == 0;
@@ -649,7 +651,7 @@ TEST(ClassSummaryTest, LatestBestAndTheVerdictPerTraineeAndExercise) {
     EXPECT_FALSE(unknown[0].standardNote.isEmpty());
     db.close();
     // The command line says the same.
-    QProcess p;
+    test::ForkedProcess p;
     p.start(QStringLiteral(PALPATE_CLI_PATH), {QStringLiteral("results"), QStringLiteral("class"), QStringLiteral("--db"),
                                                dir.filePath(QStringLiteral("class.sqlite")), QStringLiteral("--json")});
     ASSERT_TRUE(p.waitForFinished(60000));
@@ -662,7 +664,7 @@ TEST(ClassSummaryTest, LatestBestAndTheVerdictPerTraineeAndExercise) {
 
 /// palpate-cli with `arguments`; stdout and the exit code.
 std::pair<int, QByteArray> cli(const QStringList& arguments) {
-    QProcess p;
+    test::ForkedProcess p;
     p.start(QStringLiteral(PALPATE_CLI_PATH), arguments);
     p.waitForFinished(120000);
     return {p.exitCode(), p.readAllStandardOutput()};
@@ -684,7 +686,7 @@ TEST(ResultsCli, WithoutDbTheCliUsesTheWindowsDataFolder) {
     const QString store = dir.filePath(QStringLiteral("class room data/results.sqlite"));
     ASSERT_TRUE(QFile::copy(workstation(dir, QStringLiteral("ws"), QStringLiteral("Ada"), 2), store));
     const auto listDefault = [&] {
-        QProcess p;
+        test::ForkedProcess p;
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
         env.insert(QStringLiteral("XDG_DATA_HOME"), dir.filePath(QStringLiteral("data")));
@@ -735,7 +737,7 @@ TEST(ResultsCli, AReadOnlyStoreCanBeListed) {
                         arguments;
             program = setpriv;
         }
-        QProcess p;
+        test::ForkedProcess p;
         p.start(program, arguments);
         if (!p.waitForFinished(60000)) p.kill();
         return std::make_tuple(p.exitCode(), QJsonDocument::fromJson(p.readAllStandardOutput()).object(),
@@ -780,7 +782,7 @@ TEST(ResultsCli, AFullDiskIsAFailureNamingTheStoreNeverASilentSuccess) {
     int stored = 0, refused = 0;
     for (int blocks = 8; blocks <= 160; blocks += 8) {  // 512-byte blocks: 4 to 80 KiB
         const QString trainee = QStringLiteral("T%1").arg(blocks);
-        QProcess p;
+        test::ForkedProcess p;
         p.start(QStringLiteral("/bin/sh"),
                 {QStringLiteral("-c"), QStringLiteral("ulimit -f %1; exec \"$0\" \"$@\"").arg(blocks),
                  QStringLiteral(PALPATE_CLI_PATH), QStringLiteral("score"), QStringLiteral("--recording"), recording,
