@@ -81,6 +81,8 @@ void ForceGauge::setLevel(double level) {
     update();
 }
 
+QString ForceGauge::readingText() const { return tr("%1 N").arg(locale().toString(mForceN, 'f', 2)); }
+
 void ForceGauge::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing, true);
@@ -136,27 +138,26 @@ void ForceGauge::paintEvent(QPaintEvent*) {
         p.drawText(QRectF(x - 30.0, track.bottom() + 3.0, 60.0, 14.0), Qt::AlignHCenter | Qt::AlignTop, text);
     };
     if (mWindowMaxN > mWindowMinN) {
-        label(mWindowMinN, QString::number(mWindowMinN, 'g', 3));
-        label(mWindowMaxN, QString::number(mWindowMaxN, 'g', 3));
+        label(mWindowMinN, locale().toString(mWindowMinN, 'g', 3));
+        label(mWindowMaxN, locale().toString(mWindowMaxN, 'g', 3));
     }
     if (examineShown) {
         p.setPen(kExamineColour);
-        label(mExamineAtN, QLocale().toString(mExamineAtN, 'g', 3));
+        label(mExamineAtN, locale().toString(mExamineAtN, 'g', 3));
         p.setPen(palette().color(QPalette::WindowText));
     }
-    if (excessiveShown) label(mExcessiveN, QString::number(mExcessiveN, 'g', 3));
+    if (excessiveShown) label(mExcessiveN, locale().toString(mExcessiveN, 'g', 3));
     // The reading, right-aligned under the track's end, clear of the window's labels.
     font.setBold(true);
     p.setFont(font);
-    p.drawText(QRectF(readingLeft, labelY - 11.0, 60.0, 14.0), Qt::AlignRight | Qt::AlignTop,
-               tr("%1 N").arg(mForceN, 0, 'f', 2));
+    p.drawText(QRectF(readingLeft, labelY - 11.0, 60.0, 14.0), Qt::AlignRight | Qt::AlignTop, readingText());
     if (mExcessiveN > 0.0 && !excessiveShown) {
         // Off this scale: the track's right end says where excessive begins.
         font.setBold(false);
         p.setFont(font);
         p.setPen(QColor(200, 30, 30));
         p.drawText(track.adjusted(0.0, 0.0, -4.0, 0.0), Qt::AlignRight | Qt::AlignVCenter,
-                   tr("excessive ≥ %1 N ▸").arg(QString::number(mExcessiveN, 'g', 3)));
+                   tr("excessive ≥ %1 N ▸").arg(locale().toString(mExcessiveN, 'g', 3)));
     }
 }
 

@@ -29,6 +29,8 @@ public:
     double level() const { return mLevel; }
 
     double forceN() const { return mForceN; }
+    /// The reading under the track ("0.50 N", "0,50 N" in German).
+    QString readingText() const;
     double windowMinN() const { return mWindowMinN; }
     double windowMaxN() const { return mWindowMaxN; }
     double fullScaleN() const { return mFullScaleN; }

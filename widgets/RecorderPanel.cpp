@@ -391,13 +391,13 @@ void RecorderPanel::setRecordingStopped(const QString& error) {
 void RecorderPanel::showRecordingStats(const RecordingStats& stats) {
     const QLocale locale;
     QString text = tr("%1 %2 · %3 ticks · %4 · %5 B/tick · drops %6 (%7 gaps)")
-                       .arg(mRecording                   ? tr("● REC")
+                       .arg(mRecording                 ? tr("● REC")
                             : mRecordError->isHidden() ? tr("Saved %1:").arg(QFileInfo(mRecordingPath).fileName())
                                                        : tr("Stopped %1:").arg(QFileInfo(mRecordingPath).fileName()),
                             RecordingTimeline::formatTime(stats.elapsedS))
                        .arg(locale.toString(qulonglong(stats.ticks)))
                        .arg(locale.formattedDataSize(qint64(stats.bytes)))
-                       .arg(stats.bytesPerTick(), 0, 'f', 1)
+                       .arg(locale.toString(stats.bytesPerTick(), 'f', 1))
                        .arg(stats.droppedTicks)
                        .arg(stats.gaps);
     if (stats.lostCommands > 0) text += tr(" · %1 commands lost").arg(stats.lostCommands);

@@ -115,7 +115,7 @@ MainWindow::MainWindow(RendererChoice renderer, LoopMode mode, const HapticLoopD
     touch.released = [this] { releaseTouch(); };
     touch.depthChanged = [this](double depthMm) {
         if (mTouchVertex != kNoVertex) touchVertex(mTouchVertex);
-        statusBar()->showMessage(tr("Touch depth %1 mm").arg(depthMm, 0, 'f', 1), 2000);
+        statusBar()->showMessage(tr("Touch depth %1 mm").arg(locale().toString(depthMm, 'f', 1)), 2000);
     };
     mViewport->setTouchHandlers(std::move(touch));
     createStatusBar();

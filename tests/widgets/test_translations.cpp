@@ -8,6 +8,7 @@
 #include "widgets/RecorderPanel.h"
 #include "widgets/HistoryPanel.h"
 #include "widgets/PreferencesDialog.h"
+#include "widgets/ForceGauge.h"
 #include "widgets/ScoreCard.h"
 #include "widgets/TraineePanel.h"
 
@@ -261,10 +262,14 @@ TEST_F(Translations, ExercisesSpeakTheTraineesLanguage) {
 }
 
 // A stopped session's card in German ("Abgebrochen: bisher 0,0 Punkte, keine Bewertung", large)
-// wraps in the Exercise dock instead of widening the window past a 1280-pixel screen; Qt's own
+// wraps in the Exercise dock instead of widening the window past a 1280-pixel screen, and the
+// force gauge reads "0,50 N"; Qt's own
 // buttons speak Malay too (Debian ships no Malay catalogue for Qt: ours carries them).
 TEST_F(Translations, AStoppedCardWrapsAndStandardButtonsAreTranslated) {
     ASSERT_TRUE(loadLanguage(*qApp, QStringLiteral("de")));
+    ForceGauge gauge;
+    gauge.setForceN(0.5);
+    EXPECT_EQ(gauge.readingText(), QStringLiteral("0,50 N"));
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     MainWindow window(RendererChoice::Software, LoopMode::Stepped);
