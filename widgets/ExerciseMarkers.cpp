@@ -345,13 +345,11 @@ void paintExerciseMarkers(QPainter& painter, const ExerciseMarkers& markers, con
                                           : std::max(at.y(), disc.bottom() + 2.0 + metrics.ascent()));
             }
             at.setY(std::clamp(at.y(), metrics.ascent(), double(size.y) - metrics.descent()));
-            // A faded marker's label stays readable (a lump seen from the side, on the far half): lighter
-            // and nearly opaque on its shadow, while the marker itself stays faded.
-            QColor text = colour;
-            if (colour.alphaF() < 1.0f) {
-                text = exerciseMarkerColour(marker.kind).lighter(140);
-                text.setAlphaF(0.9f);
-            }
+            // The label in a lighter tint of the marker's colour on a dark shadow, so it reads over the
+            // tissue as over the background; a faded marker's label (a lump seen from the side, on the
+            // far half) stays nearly opaque while the marker itself is faded.
+            QColor text = exerciseMarkerColour(marker.kind).lighter(140);
+            text.setAlphaF(colour.alphaF() < 1.0f ? 0.9f : 1.0f);
             painter.setPen(QColor(0, 0, 0, int(230 * text.alphaF())));
             painter.drawText(at + QPointF(1, 1), marker.label);
             painter.setPen(text);
