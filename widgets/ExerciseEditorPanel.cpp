@@ -14,7 +14,7 @@
 #include "engine/exercise/ExerciseTravel.h"
 #include "engine/exercise/ExerciseGeometry.h"
 #include "engine/scene/TissuePreset.h"
-#include "engine/scoring/TargetReachability.h"
+#include "engine/scoring/ExerciseReachCheck.h"
 #include "engine/exercise/ExerciseKind.h"
 
 #include <QAction>
@@ -1029,7 +1029,9 @@ void ExerciseEditorPanel::newExercise(ExerciseType type) {
     if (exerciseKind(type).palpation()) {
         const QString meshFile = resolved(mExercise, mExercise.meshPath);
         if (const TissueMesh* mesh = checkMesh(meshFile))
-            if (const auto reach = examineReach(meshFile, *mesh); reach && reach->defaultPressN >= 1e-3) {
+            if (const auto reach = mReach.examine(ss(meshFile), ss(resolved(mExercise, mExercise.tissuePresetPath)),
+                                                  *mesh);
+                reach && reach->defaultPressN >= 1e-3) {
                 e = mExercise;
                 e.coverage.minForceN = reach->defaultPressN;
                 showExercise(e);
@@ -1767,205 +1769,112 @@ TouchReach ExerciseEditorPanel::touchReach() {
     return TouchReach{Viewport::kMaxTouchDepthMm, Viewport::kTouchDepthStepMm, Viewport::kDefaultTouchDepthMm};
 }
 
-const TouchPresses* ExerciseEditorPanel::touchPresses(const QString& meshFile, const TissueMesh& mesh,
-                                                      VertexId vertex) {
-    const QString presetFile = resolved(mExercise, mExercise.tissuePresetPath);
-    if (meshFile.isEmpty() || presetFile.isEmpty()) return nullptr;  // a problem says so already
-    const auto stamp = [](const QString& file) { return QFileInfo(file).lastModified().toString(Qt::ISODateWithMs); };
-    const QString key = meshFile + QLatin1Char('\n') + stamp(meshFile) + QLatin1Char('\n') +
-                        qs(mExercise.meshUnit.text()) + QLatin1Char('\n') + presetFile + QLatin1Char('\n') +
-                        stamp(presetFile);
-    if (key != mProbeKey) {
-        mProbeKey = key;
-        mProbe.reset();
-        mProbePresses.clear();
-        mReachError.clear();
-        const PresetLoadResult loaded = guardedLoad(ss(presetFile), [&] { return loadTissuePreset(ss(presetFile)); });
-        std::string error = loaded.errors.empty() ? std::string("not a tissue preset") : loaded.errors.front();
-        // Press targets have no physics of their own: the scene is the tissue's as it is.
-        if (loaded.preset) mProbe = TouchForceProbe::create(mesh, *loaded.preset, nullptr, touchReach(), error);
-        if (!mProbe) mReachError = qs(error);
-    }
-    if (!mProbe) return nullptr;
-    auto it = mProbePresses.find(vertex);
-    if (it == mProbePresses.end()) it = mProbePresses.insert(vertex, mProbe->presses(vertex));
-    return it->forcesN.empty() ? nullptr : &*it;
+const std::vector<double>* ExerciseEditorPanel::touchForces(const QString& meshFile, const TissueMesh& mesh,
+                                                            VertexId vertex) {
+    const TouchPresses* p = mReach.presses(ss(meshFile), ss(resolved(mExercise, mExercise.tissuePresetPath)), mesh,
+                                           vertex);
+    return p ? &p->forcesN : nullptr;
 }
 
 QStringList ExerciseEditorPanel::reachWarnings(const ExerciseGeometry& geometry, const QString& meshFile,
                                                const TissueMesh& mesh) {
-    QStringList out = bandWarnings(geometry, meshFile, mesh);
-    const TouchReach touch = touchReach();
+    QStringList out;
+    const std::string presetFile = ss(resolved(geometry.exercise(), geometry.exercise().tissuePresetPath));
+    for (const ReachFinding& f : mReach.check(geometry, ss(meshFile), presetFile, mesh)) out << reachText(f, geometry);
+    return out;
+}
+
+QString ExerciseEditorPanel::reachText(const ReachFinding& f, const ExerciseGeometry& geometry) const {
+    using Kind = ReachFinding::Kind;
     const QLocale l = locale();
     const auto n = [&l](double v) { return l.toString(v, 'g', 3); };
-    for (std::size_t i = 0; i < geometry.targets().size(); ++i) {
-        const ResolvedTarget& target = geometry.targets()[i];
-        const std::vector<double>* forces = touchForces(meshFile, mesh, target.vertex);
-        if (!forces) {
-            if (!mReachError.isEmpty())
-                out << tr("tissue_preset: whether the targets can be reached with the mouse is not known: %1").arg(mReachError);
-            break;
+    const Exercise& e = geometry.exercise();
+    const QString instead = f.suggested
+                                ? tr(" (%1–%2 N is met pressing at least two wheel steps past the default touch)")
+                                      .arg(n(f.suggested->minN), n(f.suggested->maxN))
+                                : QString();
+    QStringList points;
+    for (const std::size_t i : f.points) points << QString::number(i + 1);
+    const QString lumpKey = QStringLiteral("detect_lumps.lumps[%1].depth_mm").arg(f.item);
+    switch (f.kind) {
+        case Kind::Unknown: {
+            const QString why = qs(f.why);
+            switch (f.subject) {
+                case ReachFinding::Subject::Targets:
+                    return tr("tissue_preset: whether the targets can be reached with the mouse is not known: %1")
+                        .arg(why);
+                case ReachFinding::Subject::Band:
+                    return tr("tissue_preset: whether the band can be reached with the mouse is not known: %1")
+                        .arg(why);
+                case ReachFinding::Subject::Lumps:
+                    return tr("tissue_preset: whether the lumps can be felt is not known: %1").arg(why);
+                case ReachFinding::Subject::Coverage:
+                    return tr("tissue_preset: whether the mouse presses hard enough to examine is not known: %1")
+                        .arg(why);
+            }
+            return {};
         }
-        const TargetReach reach = judgeTarget(target.def, *forces, touch);
-        if (reach.reachable) continue;
-        const QString key = QStringLiteral("press_targets.targets[%1].force_min_n").arg(i);
-        if (reach.belowForceN) {
-            out << tr("%1: target %2 cannot be held with the mouse: its window %3–%4 N lies between %5 N at %6 mm and "
+        case Kind::TargetBetweenSteps: {
+            const PressTarget& def = geometry.targets()[f.item].def;
+            return tr("%1: target %2 cannot be held with the mouse: its window %3–%4 N lies between %5 N at %6 mm and "
                       "%7 N at %8 mm deep (one turn of the wheel apart). Widen the window to take in one of them.")
-                       .arg(key).arg(i + 1)
-                       .arg(n(target.def.forceMinN), n(target.def.forceMaxN), n(*reach.belowForceN), n(*reach.belowDepthMm),
-                            n(*reach.aboveForceN), n(*reach.aboveDepthMm));
-            continue;
+                .arg(QStringLiteral("press_targets.targets[%1].force_min_n").arg(f.item))
+                .arg(f.item + 1)
+                .arg(n(def.forceMinN), n(def.forceMaxN), n(*f.target.belowForceN), n(*f.target.belowDepthMm),
+                     n(*f.target.aboveForceN), n(*f.target.aboveDepthMm));
         }
-        const auto suggested = comfortableWindow(*forces, touch);
-        const QString instead = suggested
-                                    ? tr(" (%1–%2 N is met pressing at least two wheel steps past the default touch)")
-                                          .arg(n(suggested->minN), n(suggested->maxN))
-                                    : QString();
-        out << tr("%1: target %2 cannot be reached with the mouse: pressing %3 mm deep (the deepest) gives %4 N, below "
-                  "its window's %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.")
-                   .arg(key).arg(i + 1)
-                   .arg(n(reach.maxDepthMm), n(reach.maxForceN), n(target.def.forceMinN), instead);
-    }
-    out << lumpWarnings(geometry, meshFile, mesh);
-    if (exerciseKind(geometry.exercise().type).palpation())
-        out << coverageWarnings(geometry.exercise(), meshFile, mesh);
-    return out;
-}
-
-std::optional<ExamineReach> ExerciseEditorPanel::examineReach(const QString& meshFile, const TissueMesh& mesh) {
-    std::vector<std::vector<double>> forces;
-    for (const VertexId v : examinePoints(mesh.restPositionsMm())) {
-        const std::vector<double>* f = touchForces(meshFile, mesh, v);
-        if (!f) return std::nullopt;
-        forces.push_back(*f);
-    }
-    return judgeExamining(forces, touchReach(), Viewport::kDefaultTouchDepthMm);
-}
-
-QStringList ExerciseEditorPanel::coverageWarnings(const Exercise& exercise, const QString& meshFile,
-                                                  const TissueMesh& mesh) {
-    QStringList out;
-    const std::optional<ExamineReach> reach = examineReach(meshFile, mesh);
-    if (!reach) {
-        if (!mReachError.isEmpty())
-            out << tr("tissue_preset: whether the mouse presses hard enough to examine is not known: %1")
-                       .arg(mReachError);
-        return out;
-    }
-    if (exercise.coverage.minForceN <= reach->deepestN) return out;
-    const QLocale l = locale();
-    const auto n = [&l](double v) { return l.toString(v, 'g', 3); };
-    out << tr("coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives "
-              "%2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as "
-              "examined. Lower it to %4 N (what the mouse's default press gives), or choose a stiffer tissue preset.")
-               .arg(n(touchReach().maxDepthMm), n(reach->deepestN), n(exercise.coverage.minForceN),
-                    n(reach->defaultPressN));
-    return out;
-}
-
-QStringList ExerciseEditorPanel::bandWarnings(const ExerciseGeometry& geometry, const QString& meshFile,
-                                              const TissueMesh& mesh) {
-    QStringList out;
-    if (geometry.pathVertices().empty()) return out;
-    const TouchReach touch = touchReach();
-    const QLocale l = locale();
-    const auto n = [&l](double v) { return l.toString(v, 'g', 3); };
-    // The band at every path point, as a target's window (pressed, not slid: a slide at the
-    // same depth renders about the same force, plus friction).
-    PressTarget band;
-    band.forceMinN = geometry.exercise().trace.forceMinN;
-    band.forceMaxN = geometry.exercise().trace.forceMaxN;
-    QStringList tooSoft, between;
-    double leastN = 0.0, deepestMm = 0.0;
-    std::optional<ForceWindow> suggested;
-    const auto& vertices = geometry.pathVertices();
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-        const std::vector<double>* forces = touchForces(meshFile, mesh, vertices[i]);
-        if (!forces) {
-            if (!mReachError.isEmpty())
-                out << tr("tissue_preset: whether the band can be reached with the mouse is not known: %1")
-                           .arg(mReachError);
-            return out;
-        }
-        const TargetReach reach = judgeTarget(band, *forces, touch);
-        if (reach.reachable) continue;
-        if (reach.belowForceN) {
-            between << QString::number(i + 1);
-            continue;
-        }
-        if (tooSoft.isEmpty() || reach.maxForceN < leastN) {
-            leastN = reach.maxForceN;
-            suggested = comfortableWindow(*forces, touch);
-        }
-        deepestMm = reach.maxDepthMm;
-        tooSoft << QString::number(i + 1);
-    }
-    if (!tooSoft.isEmpty()) {
-        const QString instead = suggested
-                                    ? tr(" (%1–%2 N is met pressing at least two wheel steps past the default touch)")
-                                          .arg(n(suggested->minN), n(suggested->maxN))
-                                    : QString();
-        out << tr("trace.force_min_n: the band cannot be reached with the mouse at path point %1: pressing %2 mm "
-                  "deep (the deepest) gives as little as %3 N there, below the band's %4 N. Lower the band to at "
-                  "most %3 N%5, or choose a stiffer tissue preset.")
-                   .arg(tooSoft.join(QStringLiteral(", ")), n(deepestMm), n(leastN), n(band.forceMinN), instead);
-    } else if (!between.isEmpty()) {
-        out << tr("trace.force_min_n: the band %1–%2 N lies between the forces of two turns of the wheel at path "
-                  "point %3: widen it.")
-                   .arg(n(band.forceMinN), n(band.forceMaxN), between.join(QStringLiteral(", ")));
-    }
-    return out;
-}
-
-QStringList ExerciseEditorPanel::lumpWarnings(const ExerciseGeometry& geometry, const QString& meshFile,
-                                              const TissueMesh& mesh) {
-    QStringList out;
-    const TouchReach touch = touchReach();
-    const QLocale l = locale();
-    const auto n = [&l](double v) { return l.toString(v, 'g', 3); };
-    // A device renders up to its maximum force; the nominal one of a desktop device (DeviceSpec).
-    const double deviceMaxN = DeviceSpec{}.maxForceN;
-    const double excessiveN = geometry.exercise().excessiveForceN;
-    for (std::size_t i = 0; i < geometry.lumps().size(); ++i) {
-        const ResolvedLump& lump = geometry.lumps()[i];
-        const TouchPresses* presses = touchPresses(meshFile, mesh, lump.vertex);
-        if (!presses) {
-            if (!mReachError.isEmpty())
-                out << tr("tissue_preset: whether the lumps can be felt is not known: %1").arg(mReachError);
-            break;
-        }
-        const LumpReach reach = judgeLump(lump.def, *presses, touch);
-        const QString key = QStringLiteral("detect_lumps.lumps[%1].depth_mm").arg(i);
-        if (!reach.mouseFeels && !std::isfinite(reach.engageDepthMm))
-            out << tr("%1: lump %2 cannot be felt with the mouse: the surface above it does not sink to its top (%3 mm "
+        case Kind::TargetTooSoft:
+            return tr("%1: target %2 cannot be reached with the mouse: pressing %3 mm deep (the deepest) gives %4 N, below "
+                      "its window's %5 N. Lower the window to at most %4 N%6, or choose a stiffer tissue preset.")
+                .arg(QStringLiteral("press_targets.targets[%1].force_min_n").arg(f.item))
+                .arg(f.item + 1)
+                .arg(n(f.target.maxDepthMm), n(f.target.maxForceN), n(geometry.targets()[f.item].def.forceMinN),
+                     instead);
+        case Kind::BandTooSoft:
+            return tr("trace.force_min_n: the band cannot be reached with the mouse at path point %1: pressing %2 mm "
+                      "deep (the deepest) gives as little as %3 N there, below the band's %4 N. Lower the band to at "
+                      "most %3 N%5, or choose a stiffer tissue preset.")
+                .arg(points.join(QStringLiteral(", ")), n(f.target.maxDepthMm), n(f.leastN), n(e.trace.forceMinN),
+                     instead);
+        case Kind::BandBetweenSteps:
+            return tr("trace.force_min_n: the band %1–%2 N lies between the forces of two turns of the wheel at path "
+                      "point %3: widen it.")
+                .arg(n(e.trace.forceMinN), n(e.trace.forceMaxN), points.join(QStringLiteral(", ")));
+        case Kind::LumpNeverEngaged:
+            return tr("%1: lump %2 cannot be felt with the mouse: the surface above it does not sink to its top (%3 mm "
                       "under it) however deep the mouse presses. Make it shallower, or choose a softer tissue preset.")
-                       .arg(key)
-                       .arg(i + 1)
-                       .arg(n(lump.def.depthMm));
-        else if (!reach.mouseFeels)
-            out << tr("%1: lump %2 cannot be felt with the mouse: its top lies %3 mm under the surface; the "
+                .arg(lumpKey)
+                .arg(f.item + 1)
+                .arg(n(geometry.lumps()[f.item].def.depthMm));
+        case Kind::LumpTooDeep:
+            return tr("%1: lump %2 cannot be felt with the mouse: its top lies %3 mm under the surface; the "
                       "surface sinks that far under a press %4 mm deep, and the lump is felt a wheel step (%5 mm) "
                       "deeper, but the mouse presses at most %6 mm deep. Make it at most %7 mm deep, or train this "
                       "one with a device.")
-                       .arg(key)
-                       .arg(i + 1)
-                       .arg(n(lump.def.depthMm), n(reach.engageDepthMm), n(reach.feelDepthMm - reach.engageDepthMm),
-                            n(reach.mouseDeepestMm), n(reach.deepestFeltMm));
-        if (reach.forceN && *reach.forceN >= excessiveN)
-            out << tr("%1: feeling lump %2 takes about %3 N, at or above the excessive force %4 N: the trainee who "
+                .arg(lumpKey)
+                .arg(f.item + 1)
+                .arg(n(geometry.lumps()[f.item].def.depthMm), n(f.lump.engageDepthMm),
+                     n(f.lump.feelDepthMm - f.lump.engageDepthMm), n(f.lump.mouseDeepestMm), n(f.lump.deepestFeltMm));
+        case Kind::LumpExcessive:
+            return tr("%1: feeling lump %2 takes about %3 N, at or above the excessive force %4 N: the trainee who "
                       "finds it is marked down for pressing too hard. Make it shallower, or raise the excessive force.")
-                       .arg(key)
-                       .arg(i + 1)
-                       .arg(n(*reach.forceN), n(excessiveN));
-        else if (reach.forceN && *reach.forceN > deviceMaxN)
-            out << tr("%1: feeling lump %2 takes about %3 N, more than a desktop device renders (%4 N). Make it "
+                .arg(lumpKey)
+                .arg(f.item + 1)
+                .arg(n(*f.lump.forceN), n(f.excessiveN));
+        case Kind::LumpBeyondDevice:
+            return tr("%1: feeling lump %2 takes about %3 N, more than a desktop device renders (%4 N). Make it "
                       "shallower, or choose a softer tissue preset.")
-                       .arg(key)
-                       .arg(i + 1)
-                       .arg(n(*reach.forceN), n(deviceMaxN));
+                .arg(lumpKey)
+                .arg(f.item + 1)
+                .arg(n(*f.lump.forceN), n(f.deviceMaxN));
+        case Kind::CoverageTooSoft:
+            return tr("coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives "
+                      "%2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as "
+                      "examined. Lower it to %4 N (what the mouse's default press gives), or choose a stiffer tissue preset.")
+                .arg(n(mReach.touch().maxDepthMm), n(f.examine.deepestN), n(e.coverage.minForceN),
+                     n(f.examine.defaultPressN));
     }
-    return out;
+    return {};
 }
 
 void ExerciseEditorPanel::updateTitle() {

@@ -17,7 +17,7 @@
 #include "engine/core/TissueMesh.h"
 #include "engine/exercise/Exercise.h"
 #include "engine/exercise/ExerciseFile.h"
-#include "engine/scoring/TargetReachability.h"
+#include "engine/scoring/ExerciseReachCheck.h"
 #include "widgets/ExerciseMarkers.h"
 
 #include <QHash>
@@ -268,20 +268,13 @@ private:
     /// else the exercise's file (loaded once per path); null when there is none.
     const TissueMesh* checkMesh(const QString& meshPath);
     /// The rendered force at each touch depth at an engine vertex of the exercise's mesh with its
-    /// tissue (cached per mesh, preset and vertex); null with mReachError set when it cannot be had.
-    const TouchPresses* touchPresses(const QString& meshFile, const TissueMesh& mesh, VertexId vertex);
-    const std::vector<double>* touchForces(const QString& meshFile, const TissueMesh& mesh, VertexId vertex) {
-        const TouchPresses* p = touchPresses(meshFile, mesh, vertex);
-        return p ? &p->forcesN : nullptr;
-    }
+    /// tissue (mReach keeps them per mesh, preset and vertex); null when it cannot be had.
+    const std::vector<double>* touchForces(const QString& meshFile, const TissueMesh& mesh, VertexId vertex);
     /// The reachability warnings of the press targets (each), the trace's band (at every path
-    /// point) and the lumps (each, with the mouse and with a device) placed on `geometry`'s mesh.
+    /// point), the lumps (each, with the mouse and with a device) and the examining force placed on
+    /// `geometry`'s mesh, in the user's language.
     QStringList reachWarnings(const ExerciseGeometry& geometry, const QString& meshFile, const TissueMesh& mesh);
-    QStringList bandWarnings(const ExerciseGeometry& geometry, const QString& meshFile, const TissueMesh& mesh);
-    QStringList lumpWarnings(const ExerciseGeometry& geometry, const QString& meshFile, const TissueMesh& mesh);
-    QStringList coverageWarnings(const Exercise& exercise, const QString& meshFile, const TissueMesh& mesh);
-    /// How firmly the mouse examines the exercise's tissue; nullopt when not known.
-    std::optional<ExamineReach> examineReach(const QString& meshFile, const TissueMesh& mesh);
+    QString reachText(const ReachFinding& finding, const ExerciseGeometry& geometry) const;
     /// A label registered for retranslation.
     QLabel* rowLabel(const char* text);
 
@@ -291,11 +284,8 @@ private:
     std::shared_ptr<const TissueMesh> mCheckMesh;
     QString mCheckMeshPath;  ///< its file and, after a newline, its unit: either changed reloads it
     QString mCheckMeshError;
-    /// The force probe of the exercise's mesh and tissue, and what it found per vertex.
-    std::unique_ptr<TouchForceProbe> mProbe;
-    QString mProbeKey;  ///< mesh file, preset file and its modification time: a new one rebuilds
-    QHash<VertexId, TouchPresses> mProbePresses;
-    QString mReachError;
+    /// Whether the mouse reaches what the exercise asks on its tissue (its probe, per vertex).
+    ExerciseReachCheck mReach{touchReach()};
     QStringList mWarnings;
 
     ResourceFinder mFindResource;

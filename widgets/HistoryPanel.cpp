@@ -224,7 +224,9 @@ void HistoryPanel::rebuild() {
         auto* when = new QTableWidgetItem(r.startedUtc.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")));
         when->setData(Qt::UserRole, r.id);
         mTable->setItem(row, 0, when);
-        mTable->setItem(row, 1, new QTableWidgetItem(shownName(r)));
+        auto* exercise = new QTableWidgetItem(shownName(r));
+        exercise->setToolTip(shownName(r));  // the column elides a long name at the dock's width
+        mTable->setItem(row, 1, exercise);
         auto* score = new QTableWidgetItem(scoreText(r.score, locale()));
         score->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         if (!isScored(r.outcome)) {

@@ -100,7 +100,7 @@ struct TraceDef {
 };
 
 /// An exercise's name and description in another language; an empty field falls back to the
-/// exercise's own (docs/exercises.md, "Translations").
+/// exercise's own (docs/scoring.md, "Translations").
 struct ExerciseTextDef {
     std::string name;
     std::string description;

@@ -56,8 +56,8 @@ Json meshUnitJson(const MeshUnit& unit) {
 
 namespace {
 
-/// "translations": {"de": {"name": ..., "description": ...}, ...}; the codes and empty entries are
-/// judged by validateExercise, like every other value.
+/// "translations": {"de": {"name": ..., "description": ...}, ...} (docs/scoring.md, "Translations").
+/// A key that is no language code is refused here; an entry with neither text by validateExercise.
 void readTranslations(JsonReader& r, const Json& translations, Exercise& e) {
     if (!translations.is_object()) {
         r.error("translations", "must be an object of language codes, e.g. {\"de\": {\"name\": ...}}");

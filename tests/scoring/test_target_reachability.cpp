@@ -4,6 +4,8 @@
 // (reachable at a depth, beyond the deepest press, or between two wheel steps).
 #include "engine/scoring/TargetReachability.h"
 
+#include "engine/scoring/ExerciseReachCheck.h"
+
 #include "device/MouseDevice.h"
 #include "engine/loop/HapticLoop.h"
 #include "tests/scoring/ScoringTestRig.h"
@@ -204,6 +206,41 @@ TEST(TargetReachability, EveryTargetOfAnExerciseIsJudged) {
     a.geometry = ExerciseGeometry::build(lowered, *a.mesh, error);
     ASSERT_TRUE(a.geometry) << error;
     for (const TargetReach& r : checkTargetReachability(a, kTouch, error)) EXPECT_TRUE(r.reachable);
+}
+
+// The editor's check (engine/scoring/ExerciseReachCheck.h) finds what checkTargetReachability
+// judges, with a window the tissue does meet; a preset that cannot be read makes the reach unknown,
+// saying why, and nothing is judged on it.
+TEST(ExerciseReachCheck, NamesEachUnreachableTargetWithAWindowThatIsMet) {
+    const ExerciseAssets a = exampleAssets("press_targets", "stomach_wall");
+    std::string error;
+    const auto judged = checkTargetReachability(a, kTouch, error);
+    ASSERT_EQ(error, "");
+    ExerciseReachCheck check(kTouch);
+    const std::vector<ReachFinding> findings = check.check(*a.geometry, a.meshPath, a.presetPath, *a.mesh);
+    ASSERT_EQ(findings.size(), judged.size());
+    for (std::size_t i = 0; i < findings.size(); ++i) {
+        const ReachFinding& f = findings[i];
+        EXPECT_EQ(f.kind, ReachFinding::Kind::TargetTooSoft);
+        EXPECT_EQ(f.item, i);
+        EXPECT_DOUBLE_EQ(f.target.maxForceN, judged[i].maxForceN);
+        ASSERT_TRUE(f.suggested);
+        EXPECT_LE(f.suggested->maxN, f.target.maxForceN);
+        // The window it suggests is met at one of the depths.
+        PressTarget met = a.geometry->targets()[i].def;
+        met.forceMinN = f.suggested->minN;
+        met.forceMaxN = f.suggested->maxN;
+        const TouchPresses* presses = check.presses(a.meshPath, a.presetPath, *a.mesh, a.geometry->targets()[i].vertex);
+        ASSERT_NE(presses, nullptr);
+        EXPECT_TRUE(judgeTarget(met, presses->forcesN, kTouch).reachable);
+    }
+
+    const std::vector<ReachFinding> unknown = check.check(*a.geometry, a.meshPath, a.presetPath + ".missing", *a.mesh);
+    ASSERT_EQ(unknown.size(), 1u);
+    EXPECT_EQ(unknown[0].kind, ReachFinding::Kind::Unknown);
+    EXPECT_EQ(unknown[0].subject, ReachFinding::Subject::Targets);
+    EXPECT_NE(unknown[0].why.find(".missing"), std::string::npos) << unknown[0].why;
+    EXPECT_EQ(check.presses(a.meshPath, "", *a.mesh, 0), nullptr);  // no preset named: nothing to probe
 }
 
 TEST(TargetReachability, ALumpIsFeltAWheelStepPastThePressThatSinksTheSurfaceToItsTop) {

@@ -9,6 +9,7 @@
 #include "widgets/HistoryPanel.h"
 #include "widgets/PreferencesDialog.h"
 #include "widgets/ForceGauge.h"
+#include "widgets/MeshSizeText.h"
 #include "widgets/ScoreCard.h"
 #include "widgets/TraineePanel.h"
 
@@ -262,14 +263,16 @@ TEST_F(Translations, ExercisesSpeakTheTraineesLanguage) {
 }
 
 // A stopped session's card in German ("Abgebrochen: bisher 0,0 Punkte, keine Bewertung", large)
-// wraps in the Exercise dock instead of widening the window past a 1280-pixel screen, and the
-// force gauge reads "0,50 N"; Qt's own
-// buttons speak Malay too (Debian ships no Malay catalogue for Qt: ours carries them).
+// wraps in the Exercise dock instead of widening the window past a 1280-pixel screen; the force
+// gauge and the mesh's size take the decimal comma; Qt's own buttons speak Malay too (Debian ships
+// no Malay catalogue for Qt: ours carries them).
 TEST_F(Translations, AStoppedCardWrapsAndStandardButtonsAreTranslated) {
     ASSERT_TRUE(loadLanguage(*qApp, QStringLiteral("de")));
     ForceGauge gauge;
     gauge.setForceN(0.5);
     EXPECT_EQ(gauge.readingText(), QStringLiteral("0,50 N"));
+    EXPECT_EQ(formatLengthMm(75.94), QStringLiteral("75,9"));  // the mesh's size in the status bar
+    EXPECT_EQ(formatLengthMm(1500.0), QStringLiteral("1500"));
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     MainWindow window(RendererChoice::Software, LoopMode::Stepped);
