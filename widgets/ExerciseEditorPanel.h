@@ -20,7 +20,6 @@
 #include "engine/scoring/ExerciseReachCheck.h"
 #include "widgets/ExerciseMarkers.h"
 
-#include <QHash>
 #include <QList>
 #include <QString>
 #include <QStringList>

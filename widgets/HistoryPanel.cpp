@@ -224,8 +224,9 @@ void HistoryPanel::rebuild() {
         auto* when = new QTableWidgetItem(r.startedUtc.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")));
         when->setData(Qt::UserRole, r.id);
         mTable->setItem(row, 0, when);
-        auto* exercise = new QTableWidgetItem(shownName(r));
-        exercise->setToolTip(shownName(r));  // the column elides a long name at the dock's width
+        const QString name = shownName(r);
+        auto* exercise = new QTableWidgetItem(name);
+        exercise->setToolTip(name);  // the column elides a long name at the dock's width
         mTable->setItem(row, 1, exercise);
         auto* score = new QTableWidgetItem(scoreText(r.score, locale()));
         score->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);

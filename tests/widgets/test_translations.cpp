@@ -63,6 +63,20 @@ void preparePressTargets(MainWindow& window, const QTemporaryDir& dir) {
               QString());
 }
 
+/// Starts the chosen exercise and steps it to its end (at most a minute of ticks).
+void runPressTargets(MainWindow& window) {
+    ASSERT_EQ(window.exercises().start(), QString());
+    for (int done = 0; done < 60000 && window.exercises().running(); done += 100) window.advanceTicks(100);
+}
+
+/// A PDF's text as pdftotext reads it, whitespace simplified ("" when it cannot be read).
+QString pdfText(const QString& pdftotext, const QString& pdf) {
+    QProcess proc;
+    proc.start(pdftotext, {pdf, QStringLiteral("-")});
+    if (!proc.waitForFinished(30000)) return {};
+    return QString::fromUtf8(proc.readAllStandardOutput()).simplified();
+}
+
 class Translations : public ::testing::Test {
 protected:
     void TearDown() override { loadLanguage(*qApp, QStringLiteral("en")); }
@@ -172,16 +186,13 @@ TEST_F(Translations, TheScoreReportPdfIsGerman) {
     window.resize(1200, 800);
     window.show();
     ASSERT_NO_FATAL_FAILURE(preparePressTargets(window, dir));
-    ASSERT_EQ(window.exercises().start(), QString());
-    for (int done = 0; done < 60000 && window.exercises().running(); done += 100) window.advanceTicks(100);
+    ASSERT_NO_FATAL_FAILURE(runPressTargets(window));
     ASSERT_TRUE(window.exercises().lastReport());
     const double score = window.exercises().lastReport()->score;
     const QString pdf = dir.filePath(QStringLiteral("bericht.pdf"));
     ASSERT_EQ(window.exercises().exportLastReportPdf(pdf), QString());
-    QProcess proc;
-    proc.start(pdftotext, {pdf, QStringLiteral("-")});
-    ASSERT_TRUE(proc.waitForFinished(30000));
-    const QString text = QString::fromUtf8(proc.readAllStandardOutput()).simplified();
+    const QString text = pdfText(pdftotext, pdf);
+    ASSERT_FALSE(text.isEmpty());
     EXPECT_TRUE(text.contains(QStringLiteral("Teilnehmer:"))) << text.toStdString();
     EXPECT_TRUE(text.contains(QStringLiteral("Datum:"))) << text.toStdString();
     EXPECT_TRUE(
@@ -232,8 +243,7 @@ TEST_F(Translations, ExercisesSpeakTheTraineesLanguage) {
         EXPECT_TRUE(description->text().startsWith(QString::fromUtf8(c.description)))
             << description->text().toStdString();
 
-        ASSERT_EQ(window.exercises().start(), QString());
-        for (int done = 0; done < 60000 && window.exercises().running(); done += 100) window.advanceTicks(100);
+        ASSERT_NO_FATAL_FAILURE(runPressTargets(window));
         ASSERT_TRUE(window.exercises().lastReport());
         const std::vector<ResultRecord> stored = window.exercises().database().allResults();
         ASSERT_EQ(stored.size(), 1u);
@@ -253,10 +263,8 @@ TEST_F(Translations, ExercisesSpeakTheTraineesLanguage) {
         if (pdftotext.isEmpty()) continue;
         const QString pdf = dir.filePath(QStringLiteral("report.pdf"));
         ASSERT_EQ(window.exercises().exportLastReportPdf(pdf), QString());
-        QProcess proc;
-        proc.start(pdftotext, {pdf, QStringLiteral("-")});
-        ASSERT_TRUE(proc.waitForFinished(30000));
-        const QString text = QString::fromUtf8(proc.readAllStandardOutput()).simplified();
+        const QString text = pdfText(pdftotext, pdf);
+        ASSERT_FALSE(text.isEmpty());
         EXPECT_TRUE(text.contains(listed)) << text.toStdString();
         EXPECT_FALSE(text.contains(QStringLiteral("Press three targets"))) << text.toStdString();
     }
