@@ -1601,6 +1601,10 @@
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
+    <message>
+        <source>Checking whether the mouse can do what the exercise asks…</source>
+        <translation>Menyemak sama ada tetikus dapat melakukan apa yang diminta oleh latihan…</translation>
+    </message>
 </context>
 <context>
     <name>palpate::ExerciseMarkers</name>

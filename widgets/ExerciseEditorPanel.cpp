@@ -14,7 +14,6 @@
 #include "engine/exercise/ExerciseTravel.h"
 #include "engine/exercise/ExerciseGeometry.h"
 #include "engine/scene/TissuePreset.h"
-#include "engine/scoring/ExerciseReachCheck.h"
 #include "engine/exercise/ExerciseKind.h"
 
 #include <QAction>
@@ -47,6 +46,7 @@
 #include <QStyle>
 #include <QStyledItemDelegate>
 #include <QTableWidget>
+#include <QTimer>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -202,6 +202,7 @@ QAbstractSpinBox[invalid="true"], QLineEdit[invalid="true"], QComboBox[invalid="
   border: 2px solid #d32f2f; border-radius: 3px; background-color: #fff0f0; }
 QLabel#problemsLabel { color: #c62828; }
 QLabel#warningsLabel { color: #8a5a00; background-color: #fff8e1; border: 1px solid #ffcc80; border-radius: 3px; padding: 3px; }
+QLabel#checkingLabel { color: #616161; font-style: italic; }
 QLabel#messageLabel[error="true"] { color: #c62828; }
 QLabel#messageLabel[error="false"] { color: #2e7d32; }
 QLabel#placingLabel { background-color: #e3f2fd; border: 1px solid #90caf9; border-radius: 3px; padding: 3px; }
@@ -209,6 +210,8 @@ QLabel#exerciseTitleLabel { font-weight: bold; }
 )";
 
 const QColor kInvalidCell(255, 224, 224);
+/// How long a reach check runs before the editor says it is checking.
+constexpr int kCheckingShownAfterMs = 250;
 const QColor kWarningCell(255, 236, 179);
 const QColor kDefaultRubricText(120, 120, 120);
 
@@ -226,7 +229,9 @@ QFormLayout* addFormGroup(QWidget* fields, QVBoxLayout* fieldsLayout, QGroupBox*
 }  // namespace
 
 ExerciseEditorPanel::ExerciseEditorPanel(ResourceFinder findResource, QWidget* parent)
-    : QWidget(parent), mFindResource(std::move(findResource)) {
+    : QWidget(parent),
+      mFindResource(std::move(findResource)),
+      mDocument(std::make_unique<ExerciseDocument>(mFindResource, touchReach())) {
     // resources/ itself: the folder a shipped file is found in (the finder only finds files).
     if (mFindResource)
         for (const char* anchor : kResourceAnchors) {
@@ -257,6 +262,8 @@ ExerciseEditorPanel::ExerciseEditorPanel(ResourceFinder findResource, QWidget* p
 }
 
 ExerciseEditorPanel::~ExerciseEditorPanel() {
+    // Waits for a running reach check: its callback must not reach a panel that is half gone.
+    mDocument.reset();
     // The stack is a child: it is deleted after this body and emits cleanChanged on its way out,
     // when the members the slot touches are already gone.
     mUndoStack->disconnect(this);
@@ -303,6 +310,7 @@ void ExerciseEditorPanel::buildUi() {
     layout->addWidget(scroll, 1);
     layout->addWidget(mPlacingLabel);
     layout->addWidget(mProblemsLabel);
+    layout->addWidget(mCheckingLabel);
     layout->addWidget(mWarningsLabel);
     layout->addWidget(mMessageLabel);
     layout->addLayout(previewRow);
@@ -571,6 +579,15 @@ QHBoxLayout* ExerciseEditorPanel::buildFeedback() {
     mProblemsLabel->setWordWrap(true);
     mProblemsLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
     mProblemsLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    mCheckingLabel = new QLabel(this);
+    mCheckingLabel->setObjectName(QStringLiteral("checkingLabel"));
+    mCheckingLabel->setWordWrap(true);
+    mCheckingLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    mCheckingLabel->setVisible(false);
+    mCheckingTimer = new QTimer(this);
+    mCheckingTimer->setSingleShot(true);
+    mCheckingTimer->setInterval(kCheckingShownAfterMs);
+    connect(mCheckingTimer, &QTimer::timeout, this, [this] { mCheckingLabel->setVisible(mChecking); });
     mWarningsLabel = new QLabel(this);
     mWarningsLabel->setObjectName(QStringLiteral("warningsLabel"));
     mWarningsLabel->setWordWrap(true);
@@ -601,7 +618,7 @@ void ExerciseEditorPanel::connectEdits() {
     });
     connect(mTextLanguageCombo, &QComboBox::currentIndexChanged, this, [this] {
         const Guard guard(mShowing);
-        showExerciseText(mExercise);
+        showExerciseText(exercise());
     });
     connect(mNameEdit, &QLineEdit::textEdited, this, [this] { onFieldEdited(kName); });
     connect(mDescriptionEdit, &QPlainTextEdit::textChanged, this, [this] { onFieldEdited(kDescription); });
@@ -616,7 +633,7 @@ void ExerciseEditorPanel::connectEdits() {
     connect(mNameEdit, &QLineEdit::editingFinished, this, [this] { ++mMergeEpoch; });
     connect(mNeedsCheck, &QCheckBox::toggled, this, [this](bool on) {
         if (mShowing) return;
-        Exercise e = mExercise;
+        Exercise e = exercise();
         if (on) e.needs = LodNeeds{mNeedsErrorSpin->value() / 100.0, mNeedsBudgetSpin->value()};
         else e.needs.reset();
         pushEdit(e, on ? tr("State targets") : tr("Remove targets"), -1);
@@ -629,13 +646,13 @@ void ExerciseEditorPanel::connectEdits() {
     }
     connect(mMeshUnitCombo, &QComboBox::activated, this, &ExerciseEditorPanel::commitMeshUnit);
     connect(mShowMeshButton, &QPushButton::clicked, this, [this] {
-        const QString path = resolved(mExercise, mExercise.meshPath);
-        if (path.isEmpty()) showMessage(tr("The mesh '%1' cannot be found.").arg(qs(mExercise.meshPath)), true);
+        const QString path = resolved(exercise(), exercise().meshPath);
+        if (path.isEmpty()) showMessage(tr("The mesh '%1' cannot be found.").arg(qs(exercise().meshPath)), true);
         else emit meshRequested(path);
     });
     connect(mLiveScoreCheck, &QCheckBox::toggled, this, [this](bool on) {
         if (mShowing) return;
-        Exercise e = mExercise;
+        Exercise e = exercise();
         e.showLiveScore = on;
         pushEdit(e, on ? tr("Show the live score") : tr("Hide the live score"));
     });
@@ -750,14 +767,14 @@ QWidget* ExerciseEditorPanel::buildKindPage(const ExerciseKind& kind) {
     return p.page;
 }
 
-ExerciseEditorPanel::KindPage& ExerciseEditorPanel::page() { return mPages[std::size_t(typeIndex(mExercise.type))]; }
+ExerciseEditorPanel::KindPage& ExerciseEditorPanel::page() { return mPages[std::size_t(typeIndex(exercise().type))]; }
 
 const ExerciseEditorPanel::KindPage& ExerciseEditorPanel::page() const {
-    return mPages[std::size_t(typeIndex(mExercise.type))];
+    return mPages[std::size_t(typeIndex(exercise().type))];
 }
 
 int ExerciseEditorPanel::itemCount() const {
-    return int(exerciseKind(mExercise.type).editing().items.count(mExercise));
+    return int(exerciseKind(exercise().type).editing().items.count(exercise()));
 }
 
 QAction* ExerciseEditorPanel::newAction(ExerciseType type) const { return mNewActions[std::size_t(typeIndex(type))]; }
@@ -770,6 +787,7 @@ void ExerciseEditorPanel::retranslateUi() {
     for (const auto& [label, text] : mRowLabels) label->setText(tr(text));
     mUndoAction->setText(tr("Undo"));
     mRedoAction->setText(tr("Redo"));
+    mCheckingLabel->setText(tr("Checking whether the mouse can do what the exercise asks…"));
     // What each type asks of the trainee: the New action's and the type combo's tooltips.
     const std::pair<ExerciseType, QString> newTips[] = {
         {ExerciseType::PressTargets, tr("press a sequence of surface targets, each with a force window and a hold.")},
@@ -818,7 +836,7 @@ void ExerciseEditorPanel::retranslateUi() {
     for (int i = 0; i < mTextLanguageCombo->count(); ++i)
         mTextLanguageCombo->setItemText(i, textLanguageName(mTextLanguageCombo->itemData(i).toString()));
     mNameEdit->setToolTip(tr("The name trainees and score reports see (name)."));
-    showTextPlaceholders(mExercise);
+    showTextPlaceholders(exercise());
     mDescriptionEdit->setToolTip(tr("What the trainee is asked to do, shown before the exercise starts (description)."));
     mSceneGroup->setTitle(tr("Tissue"));
     mMeshCombo->setToolTip(tr("The mesh file (mesh): a shipped mesh, a path relative to resources/ or to the exercise "
@@ -891,7 +909,7 @@ void ExerciseEditorPanel::retranslateUi() {
                                 "numbers; editing a line sets it in the exercise."));
     mResetRubricButton->setText(tr("Reset to defaults"));
     mResetRubricButton->setToolTip(tr("Remove every rubric line the exercise sets: all metrics use the defaults."));
-    showExercise(mExercise);
+    showExercise(exercise());
 }
 
 void ExerciseEditorPanel::changeEvent(QEvent* event) {
@@ -963,43 +981,24 @@ QString ExerciseEditorPanel::storablePath(const Exercise& exercise, const QStrin
     return canonical;
 }
 
-const TissueMesh* ExerciseEditorPanel::checkMesh(const QString& meshPath) {
-    if (drawnMeshMatches()) return mDrawnMesh.get();
-    if (meshPath.isEmpty()) return nullptr;
-    const QString key = meshPath + QLatin1Char('\n') + qs(mExercise.meshUnit.text());
-    if (key != mCheckMeshPath) {
-        // Loaded once per path and unit: the checks run after every edit.
-        mCheckMeshPath = key;
-        mCheckMesh.reset();
-        mCheckMeshError.clear();
-        auto loaded = TissueMesh::load(ss(meshPath), mExercise.meshUnit);
-        if (loaded.mesh) mCheckMesh = std::make_shared<const TissueMesh>(std::move(*loaded.mesh));
-        else mCheckMeshError = qs(loaded.error());
-    }
-    return mCheckMesh.get();
-}
-
 void ExerciseEditorPanel::setDrawnMesh(std::shared_ptr<const TissueMesh> mesh, const QString& path) {
-    mDrawnMesh = std::move(mesh);
-    mDrawnMeshPath = path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath();
+    mDocument->setDrawnMesh(std::move(mesh), ss(path));
     if (!drawnMeshMatches() && mPlacing != Placing::None) updatePlacingUi();
     refresh();
 }
 
-bool ExerciseEditorPanel::drawnMeshMatches() const {
-    if (!mDrawnMesh || mDrawnMeshPath.isEmpty()) return false;
-    // The same file read in another unit is another size: its points in mm would not be the exercise's.
-    if (!(mDrawnMesh->report().unit == mExercise.meshUnit)) return false;
-    const QString mine = QFileInfo(resolved(mExercise, mExercise.meshPath)).canonicalFilePath();
-    return !mine.isEmpty() && mine == QFileInfo(mDrawnMeshPath).canonicalFilePath();
-}
+bool ExerciseEditorPanel::drawnMeshMatches() const { return mDocument->drawnMeshMatches(); }
+
+const Exercise& ExerciseEditorPanel::exercise() const { return mDocument->exercise(); }
 
 void ExerciseEditorPanel::newExercise(ExerciseType type) {
     Exercise e;
     e.type = type;
     e.name = ss(tr("New exercise: %1").arg(typeText(type).toLower()));
     // The drawn mesh (the instructor places points on what they see), else the default stomach.
-    if (mDrawnMesh && !mDrawnMeshPath.isEmpty()) e.meshPath = ss(storablePath(e, mDrawnMeshPath));
+    const std::shared_ptr<const TissueMesh>& drawnMesh = mDocument->drawnMesh();
+    if (drawnMesh && !mDocument->drawnMeshPath().empty())
+        e.meshPath = ss(storablePath(e, qs(mDocument->drawnMeshPath())));
     else if (!resolved(e, kDefaultMesh).isEmpty()) e.meshPath = kDefaultMesh;
     else if (mMeshCombo->count() > 0) e.meshPath = ss(mMeshCombo->itemText(0));
     for (const char* preset : kDefaultPresets)
@@ -1010,11 +1009,11 @@ void ExerciseEditorPanel::newExercise(ExerciseType type) {
     if (e.tissuePresetPath.empty() && mPresetCombo->count() > 0) e.tissuePresetPath = ss(mPresetCombo->itemText(0));
     // The lump starts on the mesh's +x side (where the shipped example hides it), so that it is
     // visible at once; the instructor moves it.
-    if (mDrawnMesh && mDrawnMesh->vertexCount() > 0) {
-        const auto& rest = mDrawnMesh->restPositionsMm();
+    if (drawnMesh && drawnMesh->vertexCount() > 0) {
+        const auto& rest = drawnMesh->restPositionsMm();
         const auto it = std::max_element(rest.begin(), rest.end(), [](const glm::vec3& a, const glm::vec3& b) { return a.x < b.x; });
         const VertexId v = VertexId(it - rest.begin());
-        e.findLump.inclusion.centre.vertex = mDrawnMesh->originalIndex().empty() ? v : mDrawnMesh->originalIndex()[v];
+        e.findLump.inclusion.centre.vertex = drawnMesh->originalIndex().empty() ? v : drawnMesh->originalIndex()[v];
     } else {
         e.findLump.inclusion.centre.vertex = 0;
     }
@@ -1026,17 +1025,12 @@ void ExerciseEditorPanel::newExercise(ExerciseType type) {
     // An examination starts with the force the mouse's default press gives (before the wheel
     // turns): a sweep examines from the start. The file's default may be out of reach on a soft
     // tissue.
-    if (exerciseKind(type).palpation()) {
-        const QString meshFile = resolved(mExercise, mExercise.meshPath);
-        if (const TissueMesh* mesh = checkMesh(meshFile))
-            if (const auto reach = mReach.examine(ss(meshFile), ss(resolved(mExercise, mExercise.tissuePresetPath)),
-                                                  *mesh);
-                reach && reach->defaultPressN >= 1e-3) {
-                e = mExercise;
-                e.coverage.minForceN = reach->defaultPressN;
-                showExercise(e);
-            }
-    }
+    if (exerciseKind(type).palpation())
+        if (const auto reach = mDocument->examineReach(); reach && reach->defaultPressN >= 1e-3) {
+            e = exercise();
+            e.coverage.minForceN = reach->defaultPressN;
+            showExercise(e);
+        }
     mUndoStack->setClean();
     showMessage(QString(), false);
     updateTitle();
@@ -1071,10 +1065,10 @@ QString ExerciseEditorPanel::saveExercise(const QString& path) {
         return text;
     }
     // The paths as they will be read from the new file: relative to resources/ when there.
-    Exercise out = mExercise;
+    Exercise out = exercise();
     out.sourcePath = ss(QFileInfo(path).absoluteFilePath());
-    const QString meshFile = resolved(mExercise, mExercise.meshPath);
-    const QString presetFile = resolved(mExercise, mExercise.tissuePresetPath);
+    const QString meshFile = resolved(exercise(), exercise().meshPath);
+    const QString presetFile = resolved(exercise(), exercise().tissuePresetPath);
     out.meshPath = ss(storablePath(out, meshFile));
     out.tissuePresetPath = ss(storablePath(out, presetFile));
     // A file neither under resources/ nor in the exercise's folder would be named by its absolute
@@ -1124,7 +1118,7 @@ QString ExerciseEditorPanel::save() {
 bool ExerciseEditorPanel::saveAsDialog() {
     QString suggested = mPath;
     if (suggested.isEmpty()) {
-        QString base = qs(mExercise.name).toLower();
+        QString base = qs(exercise().name).toLower();
         base.replace(QRegularExpression(QStringLiteral("[^a-z0-9]+")), QStringLiteral("_"));
         base.remove(QRegularExpression(QStringLiteral("^_+|_+$")));
         suggested = (mLastDirectory.isEmpty() ? QDir::homePath() : mLastDirectory) + QLatin1Char('/') +
@@ -1173,20 +1167,20 @@ void ExerciseEditorPanel::openDialog() {
 }
 
 void ExerciseEditorPanel::browsePath(bool mesh) {
-    QString start = resolved(mExercise, mesh ? mExercise.meshPath : mExercise.tissuePresetPath);
+    QString start = resolved(exercise(), mesh ? exercise().meshPath : exercise().tissuePresetPath);
     if (start.isEmpty()) start = mResourceRoot;
     const QString path = mesh ? QFileDialog::getOpenFileName(this, tr("Choose a mesh"), start,
                                                              tr("Meshes (*.off *.obj *.ply *.stl *.om);;All files (*)"))
                               : QFileDialog::getOpenFileName(this, tr("Choose a tissue preset"), start,
                                                              tr("Tissue presets (*.json);;All files (*)"));
-    if (!path.isEmpty()) commitPath(mesh, storablePath(mExercise, path));
+    if (!path.isEmpty()) commitPath(mesh, storablePath(exercise(), path));
 }
 
 void ExerciseEditorPanel::setDiscardQuestion(DiscardQuestion question) { mDiscardQuestion = std::move(question); }
 
 bool ExerciseEditorPanel::confirmDiscard() {
     if (!isModified()) return true;
-    switch (mDiscardQuestion ? mDiscardQuestion(qs(mExercise.name)) : DiscardAnswer::Cancel) {
+    switch (mDiscardQuestion ? mDiscardQuestion(qs(exercise().name)) : DiscardAnswer::Cancel) {
         case DiscardAnswer::Discard: return true;
         case DiscardAnswer::Save: return save().isEmpty();
         case DiscardAnswer::Cancel: return false;
@@ -1253,8 +1247,8 @@ void ExerciseEditorPanel::showTextPlaceholders(const Exercise& e) {
 void ExerciseEditorPanel::showExercise(const Exercise& exercise) {
     {
         const Guard guard(mShowing);
-        mExercise = exercise;
-        const Exercise& e = mExercise;
+        mDocument->setExercise(exercise);
+        const Exercise& e = mDocument->exercise();
         mTypeCombo->setCurrentIndex(typeIndex(e.type));
         mTypePages->setCurrentIndex(typeIndex(e.type));
         mTypeGroup->setTitle(typeText(e.type));
@@ -1348,17 +1342,17 @@ void ExerciseEditorPanel::showItems(const Exercise& e) {
 }
 
 void ExerciseEditorPanel::pushEdit(const Exercise& after, const QString& text, int field) {
-    if (sameExercise(after, mExercise)) return;
+    if (sameExercise(after, exercise())) return;
     showMessage(QString(), false);
     // Typing "1.5" or holding an arrow is one step, until the field loses focus.
     const int mergeKey = field < 0 ? ExerciseEditCommand::kNoMerge : field + kMergeFields * (mMergeEpoch % 64);
-    mUndoStack->push(new ExerciseEditCommand(mExercise, after, text, mergeKey,
+    mUndoStack->push(new ExerciseEditCommand(exercise(), after, text, mergeKey,
                                              [this](const Exercise& exercise) { showExercise(exercise); }));
 }
 
 void ExerciseEditorPanel::onFieldEdited(int field) {
     if (mShowing) return;
-    Exercise e = mExercise;
+    Exercise e = exercise();
     QString what;
     switch (Field(field)) {
         case kName:
@@ -1406,27 +1400,27 @@ void ExerciseEditorPanel::onFieldEdited(int field) {
 
 void ExerciseEditorPanel::commitMeshUnit(int index) {
     if (mShowing || index < 0 || index >= kMeshUnitChoices) return;
-    Exercise e = mExercise;
+    Exercise e = exercise();
     // "scale…" starts from the factor the exercise has (10 for cm), for the user to change.
-    e.meshUnit = index == kScaleChoice ? MeshUnit{"", mExercise.meshUnit.mmPerUnit} : namedMeshUnit(index);
+    e.meshUnit = index == kScaleChoice ? MeshUnit{"", exercise().meshUnit.mmPerUnit} : namedMeshUnit(index);
     mMeshScaleSpin->setVisible(index == kScaleChoice);
     pushEdit(e, tr("Change %1").arg(tr("mesh unit")), -1);
 }
 
 void ExerciseEditorPanel::onItemCellChanged(int row, int column) {
     if (mShowing || row < 0 || row >= itemCount()) return;
-    const PlacedItems& items = exerciseKind(mExercise.type).editing().items;
+    const PlacedItems& items = exerciseKind(exercise().type).editing().items;
     QTableWidget* table = page().table;
-    Exercise e = mExercise;
+    Exercise e = exercise();
     const QVariant value = table->item(row, column)->data(Qt::EditRole);
     bool ok = false;
     const double v = value.toDouble(&ok);
     if (!ok) {
-        showExercise(mExercise);  // not a number: show what the exercise holds
+        showExercise(exercise());  // not a number: show what the exercise holds
         return;
     }
     if (column == kItemVertex) {
-        if (v < 0) return showExercise(mExercise);
+        if (v < 0) return showExercise(exercise());
         items.setPoint(e, std::size_t(row), SurfacePoint{std::uint32_t(v), glm::vec3(0.0f)});
     } else if (column >= kItemNumbers && column < kItemNumbers + int(items.numbers.size())) {
         items.numbers[std::size_t(column - kItemNumbers)].set(e, std::size_t(row), v);
@@ -1445,8 +1439,8 @@ void ExerciseEditorPanel::onRubricCellChanged(int row, int column) {
     const Metric m = Metric(nameItem->data(Qt::UserRole).toInt());
     bool ok = false;
     const double v = mRubricTable->item(row, column)->data(Qt::EditRole).toDouble(&ok);
-    if (!ok) return showExercise(mExercise);
-    Exercise e = mExercise;
+    if (!ok) return showExercise(exercise());
+    Exercise e = exercise();
     // An edited line is set in the exercise whole: its other values are the defaults it showed.
     RubricItem line = e.rubric[std::size_t(m)] ? *e.rubric[std::size_t(m)] : defaultRubricItem(e, m);
     if (column == kRubricWeight) line.weight = v;
@@ -1457,22 +1451,22 @@ void ExerciseEditorPanel::onRubricCellChanged(int row, int column) {
 }
 
 void ExerciseEditorPanel::resetRubric() {
-    Exercise e = mExercise;
+    Exercise e = exercise();
     e.rubric = {};
     pushEdit(e, tr("Reset the rubric"));
 }
 
 void ExerciseEditorPanel::commitPath(bool mesh, const QString& text) {
     if (mShowing) return;
-    Exercise e = mExercise;
+    Exercise e = exercise();
     (mesh ? e.meshPath : e.tissuePresetPath) = ss(text.trimmed());
     pushEdit(e, mesh ? tr("Change the mesh") : tr("Change the tissue preset"));
 }
 
 void ExerciseEditorPanel::changeType(ExerciseType type) {
-    if (type == mExercise.type) return;
+    if (type == exercise().type) return;
     setPlacing(Placing::None);
-    Exercise e = mExercise;
+    Exercise e = exercise();
     e.type = type;
     // Rubric lines of metrics the new type does not measure would make the file invalid.
     for (std::size_t i = 0; i < kMetricCount; ++i)
@@ -1482,7 +1476,7 @@ void ExerciseEditorPanel::changeType(ExerciseType type) {
 }
 
 void ExerciseEditorPanel::setSelectedIndex(int index) {
-    const bool single = exerciseKind(mExercise.type).editing().items.single;
+    const bool single = exerciseKind(exercise().type).editing().items.single;
     index = !single && index >= 0 && index < itemCount() ? index : -1;
     if (index == mSelected) return;
     mSelected = index;
@@ -1496,20 +1490,20 @@ void ExerciseEditorPanel::setSelectedIndex(int index) {
 }
 
 void ExerciseEditorPanel::removeSelected() {
-    const PlacedItems& items = exerciseKind(mExercise.type).editing().items;
+    const PlacedItems& items = exerciseKind(exercise().type).editing().items;
     const int i = mSelected;
     if (items.single || i < 0 || i >= itemCount()) return;
-    Exercise e = mExercise;
+    Exercise e = exercise();
     items.erase(e, std::size_t(i));
     mSelected = std::min(i, int(items.count(e)) - 1);
     pushEdit(e, tr("Remove %1").arg(exerciseText(ViewText{items.itemName}.whole(i + 1))));
 }
 
 void ExerciseEditorPanel::moveSelected(int delta) {
-    const PlacedItems& items = exerciseKind(mExercise.type).editing().items;
+    const PlacedItems& items = exerciseKind(exercise().type).editing().items;
     const int i = mSelected, j = mSelected + delta;
     if (items.single || !items.ordered || i < 0 || j < 0 || j >= itemCount()) return;
-    Exercise e = mExercise;
+    Exercise e = exercise();
     items.swap(e, std::size_t(i), std::size_t(j));
     mSelected = j;
     const QString item = exerciseText(ViewText{items.itemName}.whole(i + 1));
@@ -1520,7 +1514,7 @@ void ExerciseEditorPanel::moveSelected(int delta) {
 
 void ExerciseEditorPanel::setPlacing(Placing placing) {
     // Add only where items are added; Move only with an item selected (a single item: always).
-    const PlacedItems& items = exerciseKind(mExercise.type).editing().items;
+    const PlacedItems& items = exerciseKind(exercise().type).editing().items;
     const bool fits = placing == Placing::None || (placing == Placing::AddItem && !items.single) ||
                       (placing == Placing::MoveSelected && (items.single || mSelected >= 0));
     if (!fits) placing = Placing::None;
@@ -1533,12 +1527,12 @@ void ExerciseEditorPanel::setPlacing(Placing placing) {
 void ExerciseEditorPanel::updatePlacingUi() {
     const Guard guard(mShowing);
     for (KindPage& p : mPages) {
-        const bool current = p.kind->type() == mExercise.type;
+        const bool current = p.kind->type() == exercise().type;
         p.add->setChecked(current && mPlacing == Placing::AddItem);
         p.move->setChecked(current && mPlacing == Placing::MoveSelected);
     }
     mStopPlacingAction->setEnabled(mPlacing != Placing::None);
-    const PlacedItems& items = exerciseKind(mExercise.type).editing().items;
+    const PlacedItems& items = exerciseKind(exercise().type).editing().items;
     QString hint;
     switch (mPlacing) {
         case Placing::None: break;
@@ -1559,12 +1553,13 @@ std::optional<std::uint32_t> ExerciseEditorPanel::fileVertex(VertexId engineVert
         showMessage(tr("That click was on another mesh than the exercise's: press Show this mesh first."), true);
         return std::nullopt;
     }
-    if (engineVertex >= mDrawnMesh->vertexCount()) {
+    const TissueMesh& drawn = *mDocument->drawnMesh();
+    if (engineVertex >= drawn.vertexCount()) {
         showMessage(tr("Vertex %1 is not on the drawn mesh.").arg(engineVertex), true);
         return std::nullopt;
     }
     // The viewport picks in the engine's order; the file stores the mesh file's own numbering.
-    const auto& original = mDrawnMesh->originalIndex();
+    const auto& original = drawn.originalIndex();
     return original.empty() ? engineVertex : original[engineVertex];
 }
 
@@ -1573,8 +1568,8 @@ void ExerciseEditorPanel::vertexPicked(VertexId engineVertex) {
     const auto vertex = fileVertex(engineVertex);
     if (!vertex) return;
     const SurfacePoint at{*vertex, glm::vec3(0.0f)};
-    const PlacedItems& items = exerciseKind(mExercise.type).editing().items;
-    Exercise e = mExercise;
+    const PlacedItems& items = exerciseKind(exercise().type).editing().items;
+    Exercise e = exercise();
     if (mPlacing == Placing::AddItem) {
         // The new item takes the last one's numbers (items of one exercise are usually alike); the
         // first gets a force window its tissue reaches at a third to two thirds of the deepest
@@ -1582,8 +1577,8 @@ void ExerciseEditorPanel::vertexPicked(VertexId engineVertex) {
         const bool first = items.count(e) == 0;
         items.append(e, at);
         if (first && items.takeReachableWindow)
-            if (const auto* forces = touchForces(resolved(e, e.meshPath), *mDrawnMesh, engineVertex))
-                if (const auto window = comfortableWindow(*forces, touchReach()))
+            if (const auto presses = mDocument->pressesOnDrawnMesh(engineVertex))
+                if (const auto window = comfortableWindow(presses->forcesN, touchReach()))
                     items.takeReachableWindow(e, window->minN, window->maxN);
         mSelected = int(items.count(e)) - 1;
         pushEdit(e, tr("Add %1").arg(exerciseText(ViewText{items.itemName}.whole(mSelected + 1))));
@@ -1602,61 +1597,44 @@ void ExerciseEditorPanel::vertexPicked(VertexId engineVertex) {
 QStringList ExerciseEditorPanel::blockingProblems() const { return mBlocking; }
 
 void ExerciseEditorPanel::refresh() {
-    const Exercise& e = mExercise;
+    const Exercise& e = exercise();
+    const ExerciseProblems found = mDocument->examine();
     QStringList blocking;
-    for (const std::string& problem : messagesOf(validateExercise(e))) blocking << qs(problem);
-    if (e.needs)
-        for (const std::string& problem : messagesOf(validateLodNeeds(*e.needs))) blocking << qs(problem);
-    const QString meshFile = resolved(e, e.meshPath);
-    if (!e.meshPath.empty() && meshFile.isEmpty())
+    for (const std::string& problem : found.invalid) blocking << qs(problem);
+    if (found.meshNotFound)
         blocking << tr("mesh: '%1' is not found beside the exercise file or under resources/").arg(qs(e.meshPath));
-    if (!e.tissuePresetPath.empty() && resolved(e, e.tissuePresetPath).isEmpty())
+    if (found.presetNotFound)
         blocking << tr("tissue_preset: '%1' is not found beside the exercise file or under resources/")
                         .arg(qs(e.tissuePresetPath));
-
-    // Placement: every point must be a vertex of the exercise's mesh (the drawn one, else its file).
-    std::shared_ptr<const ExerciseGeometry> geometry;
-    std::string placementError;
-    const TissueMesh* mesh = checkMesh(meshFile);
-    if (!mesh && !meshFile.isEmpty() && !mCheckMeshError.isEmpty()) blocking << tr("mesh: %1").arg(mCheckMeshError);
-    if (mesh) {
-        geometry = ExerciseGeometry::build(e, *mesh, placementError);
-        // A key a problem names already (a path of fewer than two points) is not named twice.
-        const QString key = problemKey(qs(placementError));
-        const bool named = std::any_of(blocking.begin(), blocking.end(),
-                                       [&](const QString& p) { return problemKey(p) == key; });
-        if (!geometry && !named) blocking << qs(placementError);
-    }
-    mWarnings.clear();
-    if (geometry && mesh)
-        for (const QString& warning : reachWarnings(*geometry, meshFile, *mesh)) {
-            // An item with a problem (a window upside down) is named by the problem alone.
-            const QString target = problemKey(warning).section(QLatin1Char('.'), 0, 1);
-            const bool named = std::any_of(blocking.begin(), blocking.end(),
-                                           [&](const QString& p) { return problemKey(p).startsWith(target); });
-            if (!named) mWarnings << warning;
-        }
+    if (!found.meshError.empty()) blocking << tr("mesh: %1").arg(qs(found.meshError));
+    if (!found.placementError.empty()) blocking << qs(found.placementError);
     mBlocking = blocking;
     mProblems = blocking;
+    const QString meshFile = qs(mDocument->meshFile());
     if (!meshFile.isEmpty() && !drawnMeshMatches()) {
-        const QString drawn = mDrawnMesh ? QFileInfo(mDrawnMeshPath).fileName() : tr("no mesh");
-        const bool otherUnit = mDrawnMesh && QFileInfo(mDrawnMeshPath).canonicalFilePath() ==
-                                                 QFileInfo(meshFile).canonicalFilePath();
+        const std::shared_ptr<const TissueMesh>& drawnMesh = mDocument->drawnMesh();
+        const QString drawnPath = qs(mDocument->drawnMeshPath());
+        const QString drawn = drawnMesh ? QFileInfo(drawnPath).fileName() : tr("no mesh");
+        const bool otherUnit = drawnMesh &&
+                               QFileInfo(drawnPath).canonicalFilePath() == QFileInfo(meshFile).canonicalFilePath();
         if (otherUnit)
             mProblems << tr("mesh_unit: the viewport shows %1 read in %2, this exercise reads it in %3: press Show "
                             "this mesh to place points by clicking")
-                             .arg(drawn, qs(mDrawnMesh->report().unit.description()),
-                                  qs(mExercise.meshUnit.description()));
+                             .arg(drawn, qs(drawnMesh->report().unit.description()),
+                                  qs(exercise().meshUnit.description()));
         else
             mProblems << tr("mesh: the viewport shows %1, not this exercise's %2: press Show this mesh to place points "
                             "by clicking")
                              .arg(drawn, QFileInfo(meshFile).fileName());
     }
+    const std::shared_ptr<const ExerciseGeometry>& geometry = mDocument->geometry();
+    checkReach();
 
     // The markers, on the drawn mesh only (picks and markers are in its numbering).
     ExerciseMarkers markers;
     const PlacedItems& items = exerciseKind(e.type).editing().items;
     if (drawnMeshMatches()) {
+        const TissueMesh& drawn = *mDocument->drawnMesh();
         if (geometry) {
             markers = exerciseMarkers(*geometry, MarkerAudience::Instructor, nullptr, items.single ? -1 : mSelected);
         } else {
@@ -1664,12 +1642,12 @@ void ExerciseEditorPanel::refresh() {
             // vertex) are still shown, so the instructor sees where the next click continues.
             const bool path = items.ordered && items.numbers.empty();
             for (std::size_t i = 0; i < items.count(e); ++i) {
-                const VertexId v = ExerciseGeometry::snap(items.point(e, i), *mDrawnMesh);
+                const VertexId v = ExerciseGeometry::snap(items.point(e, i), drawn);
                 if (v == kNoVertex) continue;
                 ExerciseMarker m;
                 m.kind = ExerciseMarker::Kind::PathPoint;
-                m.positionMm = mDrawnMesh->restPositionsMm()[v];
-                m.normal = mDrawnMesh->restNormals().size() > v ? mDrawnMesh->restNormals()[v] : glm::vec3(0.0f);
+                m.positionMm = drawn.restPositionsMm()[v];
+                m.normal = drawn.restNormals().size() > v ? drawn.restNormals()[v] : glm::vec3(0.0f);
                 m.label = path && i == 0 ? QStringLiteral("start") : QString();
                 m.selected = int(i) == mSelected;
                 markers.markers.push_back(m);
@@ -1687,7 +1665,7 @@ void ExerciseEditorPanel::refresh() {
 
 void ExerciseEditorPanel::showProblems(const QString& meshFile) {
     // The list under the form, the fields and cells the problems name, and what can be pressed.
-    const Exercise& e = mExercise;
+    const Exercise& e = exercise();
     const Guard guard(mShowing);
     QStringList lines;
     for (const QString& p : mProblems) lines << QStringLiteral("• ") + p.toHtmlEscaped();
@@ -1769,20 +1747,48 @@ TouchReach ExerciseEditorPanel::touchReach() {
     return TouchReach{Viewport::kMaxTouchDepthMm, Viewport::kTouchDepthStepMm, Viewport::kDefaultTouchDepthMm};
 }
 
-const std::vector<double>* ExerciseEditorPanel::touchForces(const QString& meshFile, const TissueMesh& mesh,
-                                                            VertexId vertex) {
-    const TouchPresses* p = mReach.presses(ss(meshFile), ss(resolved(mExercise, mExercise.tissuePresetPath)), mesh,
-                                           vertex);
-    return p ? &p->forcesN : nullptr;
+void ExerciseEditorPanel::checkReach() {
+    // The findings of the exercise as it was when the check began come back on the GUI thread;
+    // only the latest check's are shown.
+    // The worker calls back on its thread; the destructor stops it before this panel goes, and
+    // Qt drops a call still queued for a panel that is gone.
+    const std::uint64_t generation = mDocument->checkReach([this](ReachCheckResult result) {
+        QMetaObject::invokeMethod(
+            this, [this, result = std::move(result)]() mutable { showReach(std::move(result)); }, Qt::QueuedConnection);
+    });
+    mChecking = generation != 0;
+    // Nothing to check (no mesh, or points not placed): no warnings. Otherwise the last ones stay
+    // until the new ones come, and "Checking…" shows only when a check takes long enough to be
+    // noticed (a vertex or tissue probed for the first time): most edits are answered from the
+    // probe's cache at once, and a line that flickers on every keystroke would be noise.
+    if (!mChecking) {
+        mWarnings.clear();
+        mCheckingTimer->stop();
+        mCheckingLabel->setVisible(false);
+    } else if (!mCheckingTimer->isActive() && !mCheckingLabel->isVisible()) {
+        mCheckingTimer->start();
+    }
 }
 
-QStringList ExerciseEditorPanel::reachWarnings(const ExerciseGeometry& geometry, const QString& meshFile,
-                                               const TissueMesh& mesh) {
-    QStringList out;
-    const std::string presetFile = ss(resolved(geometry.exercise(), geometry.exercise().tissuePresetPath));
-    for (const ReachFinding& f : mReach.check(geometry, ss(meshFile), presetFile, mesh)) out << reachText(f, geometry);
-    return out;
+void ExerciseEditorPanel::showReach(ReachCheckResult result) {
+    if (result.generation != mDocument->latestCheck()) return;  // a later check is running
+    mWarnings.clear();
+    for (const ReachFinding& f : result.findings) {
+        const QString warning = reachText(f, *result.geometry);
+        // An item with a problem (a window upside down) is named by the problem alone.
+        const QString target = problemKey(warning).section(QLatin1Char('.'), 0, 1);
+        const bool named = std::any_of(mBlocking.begin(), mBlocking.end(),
+                                       [&](const QString& p) { return problemKey(p).startsWith(target); });
+        if (!named) mWarnings << warning;
+    }
+    mChecking = false;
+    mCheckingTimer->stop();
+    mCheckingLabel->setVisible(false);
+    showProblems(qs(mDocument->meshFile()));
+    emit reachChecked();
 }
+
+bool ExerciseEditorPanel::reachChecking() const { return mChecking; }
 
 QString ExerciseEditorPanel::reachText(const ReachFinding& f, const ExerciseGeometry& geometry) const {
     using Kind = ReachFinding::Kind;
@@ -1871,7 +1877,7 @@ QString ExerciseEditorPanel::reachText(const ReachFinding& f, const ExerciseGeom
             return tr("coverage.min_force_n: the mouse cannot examine this tissue: pressing %1 mm deep (the deepest) gives "
                       "%2 N over most of the surface, below the examining force %3 N, so nothing the trainee does counts as "
                       "examined. Lower it to %4 N (what the mouse's default press gives), or choose a stiffer tissue preset.")
-                .arg(n(mReach.touch().maxDepthMm), n(f.examine.deepestN), n(e.coverage.minForceN),
+                .arg(n(touchReach().maxDepthMm), n(f.examine.deepestN), n(e.coverage.minForceN),
                      n(f.examine.defaultPressN));
     }
     return {};
@@ -1879,8 +1885,9 @@ QString ExerciseEditorPanel::reachText(const ReachFinding& f, const ExerciseGeom
 
 void ExerciseEditorPanel::updateTitle() {
     const QString file = mPath.isEmpty() ? tr("not saved yet") : QFileInfo(mPath).fileName();
-    mTitleLabel->setText(tr("%1 — %2%3").arg(qs(mExercise.name).isEmpty() ? tr("(unnamed)") : qs(mExercise.name), file,
-                                             isModified() ? tr(" (modified)") : QString()));
+    mTitleLabel->setText(tr("%1 — %2%3")
+                             .arg(qs(exercise().name).isEmpty() ? tr("(unnamed)") : qs(exercise().name), file,
+                                  isModified() ? tr(" (modified)") : QString()));
     mTitleLabel->setToolTip(mPath.isEmpty() ? QString() : QDir::toNativeSeparators(mPath));
 }
 
@@ -1898,7 +1905,7 @@ bool ExerciseEditorPanel::preview() {
         return false;
     }
     setPlacing(Placing::None);
-    emit previewRequested(mExercise);
+    emit previewRequested(exercise());
     return true;
 }
 

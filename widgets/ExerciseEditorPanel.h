@@ -7,9 +7,11 @@
 // points it places (targets, the inclusion, path points, lumps) with their numbers, and the
 // numbers of its section. Points are placed
 // by clicking the drawn mesh: the window forwards the viewport's picks to vertexPicked() while
-// placingChanged(true) says the panel wants them. Each press target is checked, live, for whether
-// its force window can be reached pressing with the mouse (TargetReachability.h): a warning per
-// target that cannot, saying what to change; a first target gets a window the tissue reaches. Every edit is one step on
+// placingChanged(true) says the panel wants them. The exercise, its meshes and its checks are an
+// ExerciseDocument (Qt-free); this panel shows them. Each press target is checked, live, for whether
+// its force window can be reached pressing with the mouse (TargetReachability.h), on the document's
+// worker thread: a warning per target that cannot, saying what to change; a first target gets a
+// window the tissue reaches. Every edit is one step on
 // a QUndoStack (typing into one field merges). Files are the engine's exercise JSON (ExerciseFile.h); saving writes
 // mesh and preset paths relative to resources/ when they are under it, as the shipped examples do.
 // A plain QWidget, meant for a QDockWidget (about 380 px wide: the form scrolls).
@@ -17,7 +19,7 @@
 #include "engine/core/TissueMesh.h"
 #include "engine/exercise/Exercise.h"
 #include "engine/exercise/ExerciseFile.h"
-#include "engine/scoring/ExerciseReachCheck.h"
+#include "engine/scoring/ExerciseDocument.h"
 #include "widgets/ExerciseMarkers.h"
 
 #include <QList>
@@ -45,6 +47,7 @@ class QPlainTextEdit;
 class QPushButton;
 class QStackedWidget;
 class QTableWidget;
+class QTimer;
 class QToolButton;
 class QUndoStack;
 
@@ -101,7 +104,7 @@ public:
 
     /// The exercise being edited; its sourcePath is where its relative paths resolve from (the
     /// file it was opened from or last saved to, empty for a new one).
-    const Exercise& exercise() const { return mExercise; }
+    const Exercise& exercise() const;
     /// The file Save writes ("" for a new exercise).
     QString currentPath() const { return mPath; }
     /// Unsaved changes (the undo stack is not at its clean state).
@@ -121,8 +124,12 @@ public:
     /// Targets whose force window (or a trace whose band) cannot be reached pressing with the mouse
     /// (touch mode's deepest press, the exercise's tissue and tool), each naming the key and what
     /// to change.
-    /// They do not block saving or Try it: a device in the hand may press harder.
+    /// They do not block saving or Try it: a device in the hand may press harder. Checked on a
+    /// worker thread after every change (reachChecking() until reachChecked()); until then the
+    /// last check's stay.
     QStringList warnings() const { return mWarnings; }
+    /// True from a change until its reach check's warnings are shown.
+    bool reachChecking() const;
     /// How deep touch mode presses: the viewport's depths.
     static TouchReach touchReach();
     /// The markers the viewport should draw (what markersChanged last sent).
@@ -169,6 +176,8 @@ signals:
     /// with resolveExercisePath (its sourcePath, else resources/, else absolute).
     void previewRequested(const palpate::Exercise& exercise);
     void modifiedChanged(bool modified);
+    /// The warnings of the latest change are shown (warnings()).
+    void reachChecked();
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -263,37 +272,24 @@ private:
     /// The drawn mesh's vertex (file numbering) for a pick, or nullopt with the reason shown.
     std::optional<std::uint32_t> fileVertex(VertexId engineVertex);
     QString typeText(ExerciseType type) const;
-    /// The mesh the exercise's points are checked on: the drawn one when it is the exercise's,
-    /// else the exercise's file (loaded once per path); null when there is none.
-    const TissueMesh* checkMesh(const QString& meshPath);
-    /// The rendered force at each touch depth at an engine vertex of the exercise's mesh with its
-    /// tissue (mReach keeps them per mesh, preset and vertex); null when it cannot be had.
-    const std::vector<double>* touchForces(const QString& meshFile, const TissueMesh& mesh, VertexId vertex);
-    /// The reachability warnings of the press targets (each), the trace's band (at every path
-    /// point), the lumps (each, with the mouse and with a device) and the examining force placed on
-    /// `geometry`'s mesh, in the user's language.
-    QStringList reachWarnings(const ExerciseGeometry& geometry, const QString& meshFile, const TissueMesh& mesh);
+    /// Starts checking whether the mouse reaches what the exercise asks (on the document's worker).
+    void checkReach();
+    /// The findings of a check, in the user's language, unless a later check was started.
+    void showReach(ReachCheckResult result);
     QString reachText(const ReachFinding& finding, const ExerciseGeometry& geometry) const;
     /// A label registered for retranslation.
     QLabel* rowLabel(const char* text);
 
     /// Translatable row labels (QT_TR_NOOP texts), set again on a language change.
     std::vector<std::pair<QLabel*, const char*>> mRowLabels;
-    /// The exercise's mesh when the viewport draws another one: its vertices are still checked.
-    std::shared_ptr<const TissueMesh> mCheckMesh;
-    QString mCheckMeshPath;  ///< its file and, after a newline, its unit: either changed reloads it
-    QString mCheckMeshError;
-    /// Whether the mouse reaches what the exercise asks on its tissue (its probe, per vertex).
-    ExerciseReachCheck mReach{touchReach()};
     QStringList mWarnings;
-
+    bool mChecking = false;  ///< a reach check runs whose warnings are not shown yet
     ResourceFinder mFindResource;
     QString mResourceRoot;  ///< resources/ as found through mFindResource ("" if not)
+    /// The exercise, its drawn and checked meshes, its problems and its reach check.
+    std::unique_ptr<ExerciseDocument> mDocument;
 
-    Exercise mExercise;
     QString mPath;
-    std::shared_ptr<const TissueMesh> mDrawnMesh;
-    QString mDrawnMeshPath;
     Placing mPlacing = Placing::None;
     int mSelected = -1;
     QStringList mProblems;
@@ -369,6 +365,8 @@ private:
     // Feedback.
     QLabel* mPlacingLabel = nullptr;
     QLabel* mProblemsLabel = nullptr;
+    QLabel* mCheckingLabel = nullptr;
+    QTimer* mCheckingTimer = nullptr;
     QLabel* mWarningsLabel = nullptr;
     QLabel* mMessageLabel = nullptr;
 };

@@ -28,9 +28,11 @@
 #include "engine/exercise/ExerciseKind.h"
 
 #include <QAction>
+#include <QElapsedTimer>
 #include <QWheelEvent>
 #include <QScrollBar>
 #include <QApplication>
+#include <QElapsedTimer>
 #include <QComboBox>
 #include <QPlainTextEdit>
 #include <QDockWidget>
@@ -144,6 +146,17 @@ int rubricRow(ExerciseEditorPanel& panel, const char* metric) {
     for (int r = 0; r < table->rowCount(); ++r)
         if (table->item(r, 0)->text() == QLatin1String(metric)) return r;
     return -1;
+}
+
+/// The panel's warnings once the reach check of its latest change has answered (it runs on a
+/// worker thread).
+QStringList shownWarnings(ExerciseEditorPanel& panel) {
+    QElapsedTimer waited;
+    waited.start();
+    while (panel.reachChecking() && waited.elapsed() < 120000)
+        QCoreApplication::processEvents(QEventLoop::AllEvents | QEventLoop::WaitForMoreEvents, 50);
+    EXPECT_FALSE(panel.reachChecking()) << "the reach check did not answer in 2 minutes";
+    return panel.warnings();
 }
 
 bool hasProblemStartingWith(const QStringList& problems, const QString& key) {
@@ -1047,7 +1060,7 @@ TEST(ExerciseEditor, ANewExercisesFirstTargetCanBeReachedWithTheMouse) {
     const auto reach = s.check();
     ASSERT_EQ(reach.size(), 1u);
     EXPECT_TRUE(reach[0].reachable) << "the deepest touch gives " << reach[0].maxForceN << " N";
-    EXPECT_TRUE(s.editor.panel.warnings().isEmpty()) << s.editor.panel.warnings().join('\n').toStdString();
+    EXPECT_TRUE(shownWarnings(s.editor.panel).isEmpty()) << shownWarnings(s.editor.panel).join('\n').toStdString();
     EXPECT_FALSE(child<QLabel>(s.editor.panel, "warningsLabel")->isVisibleTo(&s.editor.panel));
 }
 
@@ -1060,7 +1073,7 @@ TEST(ExerciseEditor, AWindowTheMouseCannotReachIsWarnedAboutUntilItIsFixed) {
     const auto reach = s.check();
     ASSERT_EQ(reach.size(), 1u);
     ASSERT_FALSE(reach[0].reachable);
-    const QStringList warnings = s.editor.panel.warnings();
+    const QStringList warnings = shownWarnings(s.editor.panel);
     ASSERT_EQ(warnings.size(), 1);
     EXPECT_TRUE(warnings[0].startsWith(QStringLiteral("press_targets.targets[0].force_min_n"))) << warnings[0].toStdString();
     const QString most = QLocale().toString(reach[0].maxForceN, 'g', 3);
@@ -1080,17 +1093,17 @@ TEST(ExerciseEditor, AWindowTheMouseCannotReachIsWarnedAboutUntilItIsFixed) {
     emit preset->lineEdit()->editingFinished();
     ASSERT_EQ(s.editor.panel.exercise().tissuePresetPath, "presets/tissues/skin.json");
     EXPECT_TRUE(s.check()[0].reachable);
-    EXPECT_TRUE(s.editor.panel.warnings().isEmpty()) << s.editor.panel.warnings().join('\n').toStdString();
+    EXPECT_TRUE(shownWarnings(s.editor.panel).isEmpty()) << shownWarnings(s.editor.panel).join('\n').toStdString();
     EXPECT_FALSE(label->isVisibleTo(&s.editor.panel));
     EXPECT_FALSE(table->item(0, 2)->data(Qt::BackgroundRole).isValid());
 
     // Back to the stomach wall (undo), then the window lowered as the warning says: it goes too.
     s.editor.panel.undoStack()->undo();
-    ASSERT_EQ(s.editor.panel.warnings().size(), 1);
+    ASSERT_EQ(shownWarnings(s.editor.panel).size(), 1);
     table->item(0, 2)->setData(Qt::EditRole, 0.5 * reach[0].maxForceN);
     table->item(0, 3)->setData(Qt::EditRole, reach[0].maxForceN);
     EXPECT_TRUE(s.check()[0].reachable);
-    EXPECT_TRUE(s.editor.panel.warnings().isEmpty()) << s.editor.panel.warnings().join('\n').toStdString();
+    EXPECT_TRUE(shownWarnings(s.editor.panel).isEmpty()) << shownWarnings(s.editor.panel).join('\n').toStdString();
 }
 
 TEST(ExerciseEditor, ATraceBandTheMouseCannotReachIsWarnedAboutAndANewOneCan) {
@@ -1105,23 +1118,24 @@ TEST(ExerciseEditor, ATraceBandTheMouseCannotReachIsWarnedAboutAndANewOneCan) {
     EXPECT_TRUE(editor.panel.problems().isEmpty()) << editor.panel.problems().join('\n').toStdString();
     // The first point set a band the stomach wall reaches; the later ones kept it.
     EXPECT_LT(editor.panel.exercise().trace.forceMaxN, TraceDef{}.forceMinN);
-    EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
+    EXPECT_TRUE(shownWarnings(editor.panel).isEmpty()) << shownWarnings(editor.panel).join('\n').toStdString();
 
     // The engine's default band, 0.5-1.5 N, is more than the stomach wall gives.
     auto* low = child<QDoubleSpinBox>(editor.panel, "trace.force_min_n");
     auto* high = child<QDoubleSpinBox>(editor.panel, "trace.force_max_n");
     high->setValue(TraceDef{}.forceMaxN);
     low->setValue(TraceDef{}.forceMinN);
-    ASSERT_EQ(editor.panel.warnings().size(), 1);
-    EXPECT_TRUE(editor.panel.warnings()[0].startsWith(QStringLiteral("trace.force_min_n"))) << editor.panel.warnings()[0].toStdString();
-    EXPECT_TRUE(editor.panel.warnings()[0].contains(QStringLiteral("path point 1, 2, 3")))
-        << editor.panel.warnings()[0].toStdString();
+    ASSERT_EQ(shownWarnings(editor.panel).size(), 1);
+    EXPECT_TRUE(shownWarnings(editor.panel)[0].startsWith(QStringLiteral("trace.force_min_n")))
+        << shownWarnings(editor.panel)[0].toStdString();
+    EXPECT_TRUE(shownWarnings(editor.panel)[0].contains(QStringLiteral("path point 1, 2, 3")))
+        << shownWarnings(editor.panel)[0].toStdString();
     EXPECT_TRUE(child<QLabel>(editor.panel, "warningsLabel")->isVisibleTo(&editor.panel));
     // Muscle reaches it (the shipped trace's tissue).
     auto* preset = child<QComboBox>(editor.panel, "tissuePresetCombo");
     preset->setEditText(QStringLiteral("presets/tissues/muscle.json"));
     emit preset->lineEdit()->editingFinished();
-    EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
+    EXPECT_TRUE(shownWarnings(editor.panel).isEmpty()) << shownWarnings(editor.panel).join('\n').toStdString();
 }
 
 TEST(ExerciseEditor, EveryShippedExampleCanBeDoneWithTheMouse) {
@@ -1144,7 +1158,8 @@ TEST(ExerciseEditor, EveryShippedExampleCanBeDoneWithTheMouse) {
         // The editor agrees.
         Editor editor;
         ASSERT_EQ(editor.panel.openExercise(QString::fromStdString(path)), QString());
-        EXPECT_TRUE(editor.panel.warnings().isEmpty()) << name << ": " << editor.panel.warnings().join('\n').toStdString();
+        EXPECT_TRUE(shownWarnings(editor.panel).isEmpty())
+            << name << ": " << shownWarnings(editor.panel).join('\n').toStdString();
     }
     EXPECT_GT(targets, 0);
 }
@@ -1375,16 +1390,16 @@ TEST(ExerciseEditor, DetectionExercisesAreAuthoredByClickingLumps) {
                 editor.panel.exercise().tissuePresetPath.c_str(), examiningN);
     EXPECT_GT(examiningN, 0.0);
     EXPECT_LT(examiningN, CoverageDef{}.minForceN);
-    EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
+    EXPECT_TRUE(shownWarnings(editor.panel).isEmpty()) << shownWarnings(editor.panel).join('\n').toStdString();
     auto* examinedFrom = child<QDoubleSpinBox>(*child<QWidget>(editor.panel, "detect_lumpsPage"),
                                                "coverage.min_force_n");
     examinedFrom->setValue(CoverageDef{}.minForceN);
-    ASSERT_EQ(editor.panel.warnings().size(), 1);
-    EXPECT_TRUE(editor.panel.warnings()[0].startsWith(QStringLiteral("coverage.min_force_n")))
-        << editor.panel.warnings()[0].toStdString();
+    ASSERT_EQ(shownWarnings(editor.panel).size(), 1);
+    EXPECT_TRUE(shownWarnings(editor.panel)[0].startsWith(QStringLiteral("coverage.min_force_n")))
+        << shownWarnings(editor.panel)[0].toStdString();
     editor.panel.undoStack()->undo();
     EXPECT_EQ(editor.panel.exercise().coverage.minForceN, examiningN);
-    EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
+    EXPECT_TRUE(shownWarnings(editor.panel).isEmpty()) << shownWarnings(editor.panel).join('\n').toStdString();
 
     child<QToolButton>(editor.panel, "detect_lumps.lumps.add")->click();
     ASSERT_EQ(editor.panel.placing(), ExerciseEditorPanel::Placing::AddItem);
@@ -1449,14 +1464,14 @@ TEST(ExerciseEditor, DetectionExercisesAreAuthoredByClickingLumps) {
     ASSERT_EQ(table->rowCount(), 2);
     table->item(1, 3)->setData(Qt::EditRole, 3.5);
     EXPECT_EQ(editor.panel.exercise().detectLumps.lumps[1].depthMm, 3.5);
-    EXPECT_TRUE(editor.panel.warnings().isEmpty()) << editor.panel.warnings().join('\n').toStdString();
+    EXPECT_TRUE(shownWarnings(editor.panel).isEmpty()) << shownWarnings(editor.panel).join('\n').toStdString();
     // Deeper than the mouse presses: warned, naming the lump's depth; it still saves (a device may feel it).
     table->item(1, 3)->setData(Qt::EditRole, Viewport::kMaxTouchDepthMm);
-    ASSERT_FALSE(editor.panel.warnings().isEmpty());
-    EXPECT_TRUE(editor.panel.warnings()[0].startsWith(QStringLiteral("detect_lumps.lumps[1].depth_mm")))
-        << editor.panel.warnings()[0].toStdString();
-    EXPECT_TRUE(editor.panel.warnings()[0].contains(QStringLiteral("lump 2")))
-        << editor.panel.warnings()[0].toStdString();
+    ASSERT_FALSE(shownWarnings(editor.panel).isEmpty());
+    EXPECT_TRUE(shownWarnings(editor.panel)[0].startsWith(QStringLiteral("detect_lumps.lumps[1].depth_mm")))
+        << shownWarnings(editor.panel)[0].toStdString();
+    EXPECT_TRUE(shownWarnings(editor.panel)[0].contains(QStringLiteral("lump 2")))
+        << shownWarnings(editor.panel)[0].toStdString();
     // A contrast of 1 is no lump: a problem naming the cell's key.
     table->item(0, 4)->setData(Qt::EditRole, 1.0);
     EXPECT_TRUE(hasProblemStartingWith(editor.panel.problems(), QStringLiteral("detect_lumps.lumps[0].contrast")))
