@@ -167,7 +167,11 @@ SmallStrainResult runSmallStrainCase(const SmallStrainCase& c) {
         }
         if (r <= 5.0 * a) surface.push_back(n);
     }
-    const LinearElasticFem linear(mesh, c.material.smallStrain, fixed);
+    // The hyperelastic FEM's tets have constant strain: so must the linear FEM it is compared with,
+    // or the comparison would measure the element, not the material law.
+    FemSolverDef constantStrain;
+    constantStrain.element = TetElement::ConstantStrain;
+    const LinearElasticFem linear(mesh, c.material.smallStrain, fixed, constantStrain);
     const FemSolution lin = linear.solve(prescribed);
     const HyperelasticFem hyper(mesh, c.material, fixed);
     HyperelasticLoad load;

@@ -103,7 +103,12 @@ OrganReferenceSolver::OrganReferenceSolver(const TissueMesh& mesh, const OrganRe
     if (!(def.maxDepthMm > 0.0) || !(def.maxDepthOverThickness > 0.0 && def.maxDepthOverThickness < 1.0) ||
         def.hyperelasticSteps < 1 || def.hyperelasticSteps > 100)
         throw std::invalid_argument("organ reference: depth must be positive, its fraction of the layer in (0, 1), steps in 1..100");
-    mImpl.reset(new Impl{mesh, def, SurfaceIndenter(mesh, def.contact.material, def.fill)});
+    // Constant-strain tets, like the hyperelastic FEM it is compared with at small strain: they lock
+    // at the presets' nu (docs/accuracy.md, "Locking, and the element that does not lock") until
+    // the hyperelastic laws have the nodal-pressure element too.
+    FemSolverDef constantStrain;
+    constantStrain.element = TetElement::ConstantStrain;
+    mImpl.reset(new Impl{mesh, def, SurfaceIndenter(mesh, def.contact.material, def.fill, constantStrain)});
 }
 
 OrganReferenceSolver::~OrganReferenceSolver() = default;

@@ -186,7 +186,87 @@ void tetStiffnessInto(const std::array<glm::dvec3, 4>& p, double lambda, double 
         }
 }
 
+/// Adds the nodal-averaged volumetric stiffness to `k` (docs/accuracy.md, "Element"): node a owns
+/// the volume V_a = sum of V_e / 4 over its tets and the volume change theta_a = sum over its tets of
+/// (V_e / 4) div u_e / V_a = sum over nodes n of g_an . u_n; the energy is lambda V_a theta_a^2 / 2,
+/// so K gets lambda V_a g_an g_am^T for every pair (n, m) of a's patch (whole 3x3 blocks).
+void addNodalVolumetricStiffness(const TetMesh& mesh, double lambdaNPerMm2, SparseMatrix& k) {
+    const std::size_t nodes = mesh.nodeCount();
+    std::vector<TetGradients> grads;
+    grads.reserve(mesh.tetCount());
+    std::vector<double> nodeVolume(nodes, 0.0);
+    std::vector<std::uint32_t> tetsOfStart(nodes + 1, 0);
+    for (const auto& tet : mesh.tets) {
+        grads.push_back(tetGradients({mesh.nodesMm[tet[0]], mesh.nodesMm[tet[1]], mesh.nodesMm[tet[2]],
+                                      mesh.nodesMm[tet[3]]}));
+        for (TetNodeId n : tet) {
+            nodeVolume[n] += grads.back().volumeMm3 / 4.0;
+            ++tetsOfStart[n + 1];
+        }
+    }
+    for (std::size_t n = 0; n < nodes; ++n) tetsOfStart[n + 1] += tetsOfStart[n];
+    std::vector<std::uint32_t> tetsOf(tetsOfStart.back());
+    {
+        std::vector<std::uint32_t> fill(tetsOfStart.begin(), tetsOfStart.end() - 1);
+        for (std::size_t t = 0; t < mesh.tetCount(); ++t)
+            for (TetNodeId n : mesh.tets[t]) tetsOf[fill[n]++] = std::uint32_t(t);
+    }
+    // Triplets per chunk of nodes (a node's patch of ~15 nodes gives ~2000 entries).
+    constexpr std::size_t kChunkNodes = 1u << 13;
+    const int dofs = int(k.rows());
+    std::vector<Triplet> triplets;
+    std::vector<TetNodeId> patch;
+    std::vector<glm::dvec3> g;
+    for (std::size_t first = 0; first < nodes; first += kChunkNodes) {
+        const std::size_t last = std::min(nodes, first + kChunkNodes);
+        triplets.clear();
+        for (std::size_t a = first; a < last; ++a) {
+            if (!(nodeVolume[a] > 0.0)) continue;  // a node in no tet has no volume to keep
+            patch.clear();
+            g.clear();
+            for (std::uint32_t i = tetsOfStart[a]; i < tetsOfStart[a + 1]; ++i) {
+                const std::uint32_t t = tetsOf[i];
+                const double weight = grads[t].volumeMm3 / 4.0 / nodeVolume[a];
+                for (int b = 0; b < 4; ++b) {
+                    const TetNodeId n = mesh.tets[t][std::size_t(b)];
+                    const auto at = std::find(patch.begin(), patch.end(), n);
+                    if (at == patch.end()) {
+                        patch.push_back(n);
+                        g.push_back(weight * grads[t].grad[std::size_t(b)]);
+                    } else {
+                        g[std::size_t(at - patch.begin())] += weight * grads[t].grad[std::size_t(b)];
+                    }
+                }
+            }
+            const double scale = lambdaNPerMm2 * nodeVolume[a];
+            for (std::size_t p = 0; p < patch.size(); ++p)
+                for (std::size_t q = 0; q < patch.size(); ++q)
+                    for (int i = 0; i < 3; ++i)
+                        for (int j = 0; j < 3; ++j)
+                            triplets.emplace_back(int(3 * patch[p]) + i, int(3 * patch[q]) + j,
+                                                  scale * g[p][i] * g[q][j]);
+        }
+        SparseMatrix chunk(dofs, dofs);
+        chunk.setFromTriplets(triplets.begin(), triplets.end());
+        k += chunk;
+    }
+}
+
 }  // namespace
+
+std::string_view tetElementName(TetElement element) {
+    switch (element) {
+        case TetElement::ConstantStrain: return "constant-strain";
+        case TetElement::NodalPressure: return "nodal-pressure";
+    }
+    return "constant-strain";
+}
+
+std::optional<TetElement> parseTetElement(std::string_view name) {
+    for (const TetElement e : {TetElement::ConstantStrain, TetElement::NodalPressure})
+        if (name == tetElementName(e)) return e;
+    return std::nullopt;
+}
 
 std::array<double, 2> lameConstantsNPerMm2(const ElasticMaterial& m) {
     const double e = m.youngsModulusNPerMm2, nu = m.poissonRatio;
@@ -220,7 +300,7 @@ struct StiffnessMatrix::Data {
     double assemblySeconds = 0;
 };
 
-StiffnessMatrix::StiffnessMatrix(const TetMesh& mesh, const ElasticMaterial& material) {
+StiffnessMatrix::StiffnessMatrix(const TetMesh& mesh, const ElasticMaterial& material, TetElement element) {
     if (const std::string e = joinedMessages(validateElasticMaterial(material)); !e.empty())
         throw std::invalid_argument(e);
     if (mesh.nodesMm.empty() || mesh.tets.empty()) throw std::invalid_argument("empty tet mesh");
@@ -239,7 +319,12 @@ StiffnessMatrix::StiffnessMatrix(const TetMesh& mesh, const ElasticMaterial& mat
     // Assembly: triplets per chunk of tets, summed into K (bounds the triplet memory on big meshes).
     // All 144 entries of every tet go in, zeros too, so every node pair's 3x3 block is stored whole.
     const auto start = std::chrono::steady_clock::now();
-    const auto [lambda, mu] = lameConstantsNPerMm2(material);
+    const auto [lameLambda, mu] = lameConstantsNPerMm2(material);
+    // The nodal-pressure element keeps the mu term per tet (lambda -> 0) and takes the lambda term,
+    // the one that locks, at the nodes below: the same split the hyperelastic laws' energies have
+    // (mu/2 psi per tet, lambda/2 (ln J)^2 of the volume change).
+    const bool nodalPressure = element == TetElement::NodalPressure;
+    const double lambda = nodalPressure ? 0.0 : lameLambda;
     constexpr std::size_t kChunkTets = 1u << 16;
     SparseMatrix& k = data->k;
     k.resize(dofs, dofs);
@@ -271,6 +356,7 @@ StiffnessMatrix::StiffnessMatrix(const TetMesh& mesh, const ElasticMaterial& mat
         else
             k += chunk;
     }
+    if (nodalPressure) addNodalVolumetricStiffness(mesh, lameLambda, k);
     k.makeCompressed();
     data->assemblySeconds = secondsSince(start);
     mData = std::move(data);
@@ -332,7 +418,7 @@ struct LinearElasticFem::Impl {
 
 LinearElasticFem::LinearElasticFem(const TetMesh& mesh, const ElasticMaterial& material,
                                    std::vector<std::uint8_t> fixedDofs, const FemSolverDef& options)
-    : LinearElasticFem(StiffnessMatrix(mesh, material), std::move(fixedDofs), options) {}
+    : LinearElasticFem(StiffnessMatrix(mesh, material, options.element), std::move(fixedDofs), options) {}
 
 LinearElasticFem::LinearElasticFem(const StiffnessMatrix& stiffness, std::vector<std::uint8_t> fixedDofs,
                                    const FemSolverDef& options)

@@ -1,5 +1,6 @@
 #pragma once
-// Reference linear-elastic FEM (docs/accuracy.md): 4-node tets, isotropic (E, nu), small strain, static.
+// Reference linear-elastic FEM (docs/accuracy.md): 4-node tets, isotropic (E, nu), small strain, static,
+// with constant strain per tet or with the volume change averaged at the nodes (locking-free as nu -> 0.5).
 // K is assembled from triplets; Dirichlet conditions by partition into free and fixed DOFs (never
 // penalty); a direct LDLT or a preconditioned conjugate-gradient solve. Units: mm, N, N/mm^2.
 // DOF numbering: node i owns DOFs 3i (x), 3i+1 (y), 3i+2 (z).
@@ -13,7 +14,9 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace palpate {
@@ -30,7 +33,24 @@ enum class FemPreconditioner {
     NodeBlockJacobi,     ///< Jacobi with each node's 3x3 block inverted (~12 % fewer iterations than Diagonal)
 };
 
+/// How a tet's volume change is taken (docs/accuracy.md, "Element").
+enum class TetElement {
+    /// Constant strain per tet: locks as nu -> 0.5 (too stiff: 4-node tets cannot keep the volume).
+    ConstantStrain,
+    /// Average nodal pressure (after Bonet & Burton 1998): the mu term per tet, the lambda term of
+    /// the volume change averaged over each node's tets, so one volume constraint per node instead
+    /// of per tet.
+    NodalPressure,
+};
+
+std::string_view tetElementName(TetElement element);
+/// "constant-strain" or "nodal-pressure"; nullopt otherwise.
+std::optional<TetElement> parseTetElement(std::string_view name);
+
 struct FemSolverDef {
+    /// The element K is assembled from (StiffnessMatrix); read where K is built from a mesh. The
+    /// tissue presets' nu (0.45-0.49) needs the locking-free one.
+    TetElement element = TetElement::NodalPressure;
     FemSolverKind kind = FemSolverKind::Auto;
     /// Auto picks LDLT at or below this many free DOFs. Measured on the graded block: LDLT and CG
     /// both ~0.03 s at 1.4k DOFs, LDLT 10x slower at 5k (3D fill); see docs/accuracy.md.
@@ -79,7 +99,7 @@ class StiffnessMatrix {
 public:
     /// Throws std::invalid_argument on a bad mesh (missing nodes, non-finite, flat or inverted tets)
     /// or material.
-    StiffnessMatrix(const TetMesh& mesh, const ElasticMaterial& material);
+    StiffnessMatrix(const TetMesh& mesh, const ElasticMaterial& material, TetElement element);
     /// The same K in a rotated frame, u' = R u at every node (R K_ab R^T per node block), as if
     /// the rotated mesh had been assembled. For new axes e1, e2, e3: R = transpose(dmat3(e1, e2, e3)).
     StiffnessMatrix rotated(const glm::dmat3& rotation) const;

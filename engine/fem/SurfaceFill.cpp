@@ -256,7 +256,7 @@ SurfaceIndenter::SurfaceIndenter(const TissueMesh& mesh, const ElasticMaterial& 
                                  const FemSolverDef& solver)
     : mSolver(solver),
       mFilled(fillSurface(mesh, fill)),
-      mStiffness(mFilled.mesh, checkedMaterial(material)) {
+      mStiffness(mFilled.mesh, checkedMaterial(material), solver.element) {
     SurfaceData s = checkedSurface(mesh);
     mRestMm = std::move(s.restMm);
     mNormals = std::move(s.normals);

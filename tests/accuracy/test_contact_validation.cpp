@@ -109,15 +109,18 @@ TEST(GradedBlock, RejectsBadOptions) {
     EXPECT_THROW(makeGradedBlock(o), std::invalid_argument);
 }
 
-ContactCaseResult run(ContactReference reference, int aOverH, double nu) {
+ContactCaseResult run(ContactReference reference, int aOverH, double nu,
+                      TetElement element = TetElement::ConstantStrain) {
     ContactCase c;
     c.reference = reference;
     c.aOverH = aOverH;
     c.material.poissonRatio = nu;
+    c.solver.element = element;
     return runContactCase(c);
 }
 
-// Tolerances: the measured errors (docs/accuracy.md, nu = 0.3) with ~20-40 % headroom.
+// Tolerances: the measured errors of constant-strain tets (docs/accuracy.md, nu = 0.3) with
+// ~20-40 % headroom.
 TEST(ContactValidation, PunchCoarseLevelsWithinMeasuredTolerancesAndConverging) {
     const auto coarse = run(ContactReference::Punch, 2, 0.3);  // measured: 2.96 % / 1.63 %
     const auto finer = run(ContactReference::Punch, 4, 0.3);   // measured: 1.57 % / 0.12 %
@@ -150,11 +153,13 @@ TEST(ContactValidation, HertzCoarseLevelsWithinMeasuredTolerancesAndConverging) 
     EXPECT_NEAR(finer.indentationMm, 0.1, 1e-12);
 }
 
+// At the tissue presets' nu, with the product's element.
 TEST(ContactValidation, PunchMeetsTheFivePercentGoalAtAOverH8) {
-    const auto r = run(ContactReference::Punch, 8, 0.45);  // measured: 0.50 % / 1.11 %
+    const auto r = run(ContactReference::Punch, 8, 0.49, TetElement::NodalPressure);  // measured: 1.23 % / 1.77 %
     EXPECT_LT(r.displacementError, 0.05);
     EXPECT_LT(r.forceError, 0.05);
-    EXPECT_LT(r.forceError, 0.02);
+    EXPECT_LT(r.forceError, 0.03);
+    EXPECT_LT(r.forceFemN, r.forceClosedN);  // the nodal average is slightly soft, not stiff
 }
 
 TEST(ContactValidation, LockingShowsAsNuApproachesOneHalf) {
@@ -163,6 +168,31 @@ TEST(ContactValidation, LockingShowsAsNuApproachesOneHalf) {
     EXPECT_GT(locked.displacementError, 3.0 * normal.displacementError);
     EXPECT_GT(locked.forceError, 3.0 * normal.forceError);
     EXPECT_GT(locked.forceFemN, locked.forceClosedN);  // locking is too stiff
+}
+
+// The product's element (the default): the nodal-pressure tets do not lock. At nu = 0.499 the
+// punch and Hertz errors are those of nu = 0.3, and they fall with the spacing (measured,
+// docs/accuracy.md: punch force 1.88 %, Hertz force 4.11 % at a/h = 4, where constant-strain tets
+// give +122 % for the punch).
+TEST(ContactValidation, NodalPressureTetsDoNotLockAsNuApproachesOneHalf) {
+    EXPECT_EQ(ContactCase{}.solver.element, TetElement::NodalPressure);
+    const auto punchCoarse = run(ContactReference::Punch, 2, 0.499, TetElement::NodalPressure);
+    const auto punch = run(ContactReference::Punch, 4, 0.499, TetElement::NodalPressure);
+    const auto punchLow = run(ContactReference::Punch, 4, 0.3, TetElement::NodalPressure);
+    const auto hertz = run(ContactReference::Hertz, 4, 0.499, TetElement::NodalPressure);
+    const auto locked = run(ContactReference::Punch, 4, 0.499, TetElement::ConstantStrain);
+    std::printf(
+        "[ figures  ] a/h = 4, nu 0.499: punch force %.2f %% (a/h = 2: %.2f %%), Hertz %.2f %%; nu 0.3 punch "
+        "%.2f %%; constant strain %.1f %%\n",
+        100 * punch.forceError, 100 * punchCoarse.forceError, 100 * hertz.forceError, 100 * punchLow.forceError,
+        100 * locked.forceError);
+    EXPECT_LT(punch.forceError, 0.035);
+    EXPECT_LT(punch.displacementError, 0.03);
+    EXPECT_LT(punch.forceError, punchCoarse.forceError);
+    EXPECT_LT(punch.forceError, 1.5 * punchLow.forceError);
+    EXPECT_LT(hertz.forceError, 0.055);
+    EXPECT_LT(hertz.displacementError, 0.006);
+    EXPECT_GT(locked.forceError, 10.0 * punch.forceError);
 }
 
 TEST(ContactValidation, LogLogSlope) {

@@ -90,7 +90,7 @@ TEST(TetStiffness, RejectsAFlatTet) {
 
 /// The patch test: u = A x + c on the boundary of a jittered box; every solver reproduces it
 /// inside to 1e-9 relative and every tet carries the stress C : sym(A).
-void expectPatchTestPasses(FemSolverDef options) {
+void expectPatchTestPasses(FemSolverDef options, const ElasticMaterial& material = kMaterial) {
     const auto box = test::kuhnBox(4, {-1.0, 0.5, -2.0}, 3.0, 0.2, 7);
     const double a[3][3] = {{0.010, 0.004, -0.002}, {-0.003, 0.006, 0.001}, {0.002, -0.005, -0.008}};
     const glm::dvec3 c{0.05, -0.02, 0.01};
@@ -115,7 +115,7 @@ void expectPatchTestPasses(FemSolverDef options) {
         }
     }
     ASSERT_EQ(interior, 27u);
-    LinearElasticFem fem(box.mesh, kMaterial, fixed, options);
+    LinearElasticFem fem(box.mesh, material, fixed, options);
     const FemSolution s = fem.solve(prescribed);
     double scale = 0;
     for (const auto& p : box.mesh.nodesMm) scale = std::max(scale, glm::length(exact(p)));
@@ -123,7 +123,7 @@ void expectPatchTestPasses(FemSolverDef options) {
         EXPECT_LE(glm::length(s.displacementMm[n] - exact(box.mesh.nodesMm[n])), 1e-9 * scale) << "node " << n;
 
     // Constant stress: sigma = lambda tr(eps) I + 2 mu eps with eps = sym(A), by hand.
-    const double lambda = lambdaOf(kMaterial), mu = muOf(kMaterial);
+    const double lambda = lambdaOf(material), mu = muOf(material);
     const double trace = a[0][0] + a[1][1] + a[2][2];
     const std::array<double, 6> expected{lambda * trace + 2 * mu * a[0][0], lambda * trace + 2 * mu * a[1][1],
                                          lambda * trace + 2 * mu * a[2][2], mu * (a[1][2] + a[2][1]),
@@ -135,7 +135,7 @@ void expectPatchTestPasses(FemSolverDef options) {
                                           box.mesh.nodesMm[t[3]]};
         const std::array<glm::dvec3, 4> u{s.displacementMm[t[0]], s.displacementMm[t[1]], s.displacementMm[t[2]],
                                           s.displacementMm[t[3]]};
-        const auto stress = tetStressNPerMm2(p, u, kMaterial);
+        const auto stress = tetStressNPerMm2(p, u, material);
         for (int i = 0; i < 6; ++i) EXPECT_NEAR(stress[std::size_t(i)], expected[std::size_t(i)], 1e-9 * stressScale);
     }
     // No body force: the reactions balance, and interior nodes carry none.
@@ -153,9 +153,63 @@ void expectPatchTestPasses(FemSolverDef options) {
 }
 
 TEST(LinearElasticFem, PatchTestDirect) {
-    FemSolverDef o;
-    o.kind = FemSolverKind::DirectLdlt;
-    expectPatchTestPasses(o);
+    // Both elements, and nearly incompressible: a uniform volume change averaged at the nodes is
+    // itself, so the nodal-pressure element passes the patch test as the constant-strain one does.
+    for (const TetElement element : {TetElement::ConstantStrain, TetElement::NodalPressure})
+        for (const double nu : {0.3, 0.499}) {
+            SCOPED_TRACE(std::string(tetElementName(element)) + ", nu " + std::to_string(nu));
+            FemSolverDef o;
+            o.kind = FemSolverKind::DirectLdlt;
+            o.element = element;
+            expectPatchTestPasses(o, ElasticMaterial{0.01, nu});
+        }
+}
+
+// The nodal-pressure element's K gives no force for a rigid motion, and a nearly incompressible
+// box pressed with its sides free needs far less force than with constant-strain tets, which lock.
+TEST(StiffnessMatrix, NodalPressureIsRigidFreeAndDoesNotLock) {
+    const auto box = test::kuhnBox(3, {0, 0, 0}, 1.0, 0.15, 3);
+    const ElasticMaterial nearlyIncompressible{0.01, 0.499};
+    std::vector<std::uint8_t> bottom(box.mesh.dofCount(), 0);
+    for (std::size_t n = 0; n < box.mesh.nodeCount(); ++n)
+        if (box.mesh.nodesMm[n].z < 1e-9) bottom[3 * n] = bottom[3 * n + 1] = bottom[3 * n + 2] = 1;
+    // Rigid motions of the whole box: no reaction anywhere (prescribe all DOFs).
+    std::vector<std::uint8_t> all(box.mesh.dofCount(), 1);
+    all[0] = 0;  // one free DOF: the system needs one
+    const LinearElasticFem free(box.mesh, nearlyIncompressible, all);
+    std::vector<double> rigid(box.mesh.dofCount(), 0.0);
+    for (std::size_t n = 0; n < box.mesh.nodeCount(); ++n) {
+        const glm::dvec3& p = box.mesh.nodesMm[n];
+        const glm::dvec3 u = glm::dvec3(0.01, -0.02, 0.03) + glm::cross(glm::dvec3(0.02, 0.01, -0.015), p);
+        for (int i = 0; i < 3; ++i) rigid[3 * n + std::size_t(i)] = u[i];
+    }
+    const FemSolution r = free.solve(rigid);
+    for (std::size_t n = 1; n < box.mesh.nodeCount(); ++n) EXPECT_NEAR(glm::length(r.reactionN[n]), 0.0, 1e-15);
+    // The top pressed down 1 % with the bottom held: nearly incompressible constant-strain tets
+    // lock (the top barely moves without changing volume); the nodal-pressure element needs far
+    // less force.
+    std::vector<std::uint8_t> pressed = bottom;
+    std::vector<double> values(box.mesh.dofCount(), 0.0);
+    for (std::size_t n = 0; n < box.mesh.nodeCount(); ++n)
+        if (box.mesh.nodesMm[n].z > 1.0 - 1e-9) {
+            pressed[3 * n + 2] = 1;
+            values[3 * n + 2] = -0.01;
+        }
+    double force[2] = {0.0, 0.0};
+    for (const TetElement element : {TetElement::ConstantStrain, TetElement::NodalPressure}) {
+        FemSolverDef o;
+        o.element = element;
+        const FemSolution s = LinearElasticFem(box.mesh, nearlyIncompressible, pressed, o).solve(values);
+        for (std::size_t n = 0; n < box.mesh.nodeCount(); ++n)
+            if (box.mesh.nodesMm[n].z > 1.0 - 1e-9) force[element == TetElement::NodalPressure] -= s.reactionN[n].z;
+    }
+    std::printf("[ figures  ] box pressed 1 %% at nu 0.499: %.4g N constant strain, %.4g N nodal pressure\n", force[0],
+                force[1]);
+    EXPECT_GT(force[1], 0.0);
+    EXPECT_LT(force[1], 0.5 * force[0]);
+    EXPECT_EQ(parseTetElement("nodal-pressure"), TetElement::NodalPressure);
+    EXPECT_EQ(parseTetElement("constant-strain"), TetElement::ConstantStrain);
+    EXPECT_FALSE(parseTetElement("quadratic"));
 }
 
 TEST(LinearElasticFem, PatchTestConjugateGradientBothPreconditioners) {
@@ -224,12 +278,16 @@ TEST(StiffnessMatrix, RotatedEqualsAssemblingTheRotatedMesh) {
             values[3 * i + 2] = 0.01 * double(i % 5);
             if (i % 3 == 0) fixed[3 * i] = fixed[3 * i + 1] = 1;
         }
-    const StiffnessMatrix k(box.mesh, kMaterial);
-    const auto a = LinearElasticFem(k.rotated(glm::transpose(glm::dmat3(t1, t2, n))), fixed).solve(values);
-    const auto b = LinearElasticFem(turned, kMaterial, fixed).solve(values);
-    for (std::size_t i = 0; i < box.mesh.nodeCount(); ++i) {
-        EXPECT_NEAR(glm::length(a.displacementMm[i] - b.displacementMm[i]), 0.0, 1e-12);
-        EXPECT_NEAR(glm::length(a.reactionN[i] - b.reactionN[i]), 0.0, 1e-14);
+    for (const TetElement element : {TetElement::ConstantStrain, TetElement::NodalPressure}) {
+        FemSolverDef o;
+        o.element = element;
+        const StiffnessMatrix k(box.mesh, kMaterial, element);
+        const auto a = LinearElasticFem(k.rotated(glm::transpose(glm::dmat3(t1, t2, n))), fixed).solve(values);
+        const auto b = LinearElasticFem(turned, kMaterial, fixed, o).solve(values);
+        for (std::size_t i = 0; i < box.mesh.nodeCount(); ++i) {
+            EXPECT_NEAR(glm::length(a.displacementMm[i] - b.displacementMm[i]), 0.0, 1e-12);
+            EXPECT_NEAR(glm::length(a.reactionN[i] - b.reactionN[i]), 0.0, 1e-14);
+        }
     }
 }
 
