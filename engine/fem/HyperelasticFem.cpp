@@ -5,6 +5,7 @@
 #include <Eigen/SparseCore>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -56,11 +57,19 @@ struct HyperelasticFem::Impl {
     std::vector<glm::dvec3> restMm;
     std::vector<std::array<TetNodeId, 4>> tets;
     std::vector<RestTet> rest;
-    HyperelasticLawEvaluator law;
+    HyperelasticLawEvaluator law;  ///< per tet: the whole law, or without its volume term (nodal)
     HyperelasticSolverDef options;
     std::vector<std::uint8_t> fixed;
     std::vector<int> freeIndex;   // per DOF: index among the free DOFs, or kNoFree
+    std::vector<std::size_t> freeDof;  // per free index: its DOF
     std::size_t freeCount = 0;
+    /// The nodal-pressure element (docs/accuracy.md, "Element"): the law's volume term
+    /// lambda/2 (ln J_a)^2 is taken on each node's volume ratio J_a = (sum of J_e V_e / 4) / V_a.
+    bool nodal = false;
+    double lambda = 0.0;
+    std::vector<double> nodeVolume;          ///< V_a: a quarter of each of the node's tets
+    std::vector<std::uint32_t> tetsOfStart;  ///< the node's tets: tetsOf[tetsOfStart[a] .. [a + 1])
+    std::vector<std::uint32_t> tetsOf;
     SparseMatrix pattern;         // K_ff's sparsity (both triangles), values rewritten per iteration
     std::vector<int> slot;        // per tet, 144 entries: position in pattern's values, or -1
     bool direct = true;
@@ -68,7 +77,52 @@ struct HyperelasticFem::Impl {
 
     Impl(const TetMesh& mesh, const HyperelasticMaterial& m, std::vector<std::uint8_t> mask,
          const HyperelasticSolverDef& o)
-        : restMm(mesh.nodesMm), tets(mesh.tets), law(m), options(o), fixed(std::move(mask)) {}
+        : restMm(mesh.nodesMm),
+          tets(mesh.tets),
+          law(o.element == TetElement::NodalPressure ? HyperelasticLawEvaluator(m).withoutVolumeTerm()
+                                                     : HyperelasticLawEvaluator(m)),
+          options(o),
+          fixed(std::move(mask)),
+          nodal(o.element == TetElement::NodalPressure),
+          lambda(HyperelasticLawEvaluator(m).lambdaNPerMm2()) {}
+
+    /// The nodes' volumes and tets (after `rest` is set).
+    void buildNodePatches() {
+        const std::size_t nodes = restMm.size();
+        nodeVolume.assign(nodes, 0.0);
+        tetsOfStart.assign(nodes + 1, 0);
+        for (std::size_t e = 0; e < tets.size(); ++e)
+            for (TetNodeId n : tets[e]) {
+                nodeVolume[n] += rest[e].volumeMm3 / 4.0;
+                ++tetsOfStart[n + 1];
+            }
+        for (std::size_t n = 0; n < nodes; ++n) tetsOfStart[n + 1] += tetsOfStart[n];
+        tetsOf.assign(tetsOfStart.back(), 0);
+        std::vector<std::uint32_t> fill(tetsOfStart.begin(), tetsOfStart.end() - 1);
+        for (std::size_t e = 0; e < tets.size(); ++e)
+            for (TetNodeId n : tets[e]) tetsOf[fill[n]++] = std::uint32_t(e);
+    }
+
+    /// The nodes of a's patch (its tets' nodes), each once.
+    void patchOf(std::size_t a, std::vector<TetNodeId>& patch) const {
+        patch.clear();
+        for (std::uint32_t i = tetsOfStart[a]; i < tetsOfStart[a + 1]; ++i)
+            for (TetNodeId n : tets[tetsOf[i]])
+                if (std::find(patch.begin(), patch.end(), n) == patch.end()) patch.push_back(n);
+    }
+
+    /// Each node's volume ratio J_a from the tets' J_e; false when one is not positive.
+    bool nodeVolumeRatios(const std::vector<double>& tetJ, std::vector<double>& nodeJ) const {
+        nodeJ.assign(restMm.size(), 0.0);
+        for (std::size_t e = 0; e < tets.size(); ++e)
+            for (TetNodeId n : tets[e]) nodeJ[n] += tetJ[e] * rest[e].volumeMm3 / 4.0;
+        for (std::size_t a = 0; a < nodeJ.size(); ++a) {
+            if (nodeVolume[a] <= 0.0) continue;
+            nodeJ[a] /= nodeVolume[a];
+            if (!(nodeJ[a] > 0.0)) return false;
+        }
+        return true;
+    }
 
     /// Free DOFs whose entry of K_ff may be nonzero: the tets' couplings and each node's own 3x3
     /// block (the sphere's penalty).
@@ -89,6 +143,19 @@ struct HyperelasticFem::Impl {
                     const int r = freeIndex[3 * n + i], c = freeIndex[3 * n + k];
                     if (r != kNoFree && c != kNoFree) triplets.emplace_back(r, c, 0.0);
                 }
+        // The nodal volume term couples every pair of nodes of a node's patch.
+        std::vector<TetNodeId> patch;
+        if (nodal)
+            for (std::size_t a = 0; a < restMm.size(); ++a) {
+                patchOf(a, patch);
+                for (TetNodeId n : patch)
+                    for (TetNodeId m : patch)
+                        for (int i = 0; i < 3; ++i)
+                            for (int k = 0; k < 3; ++k) {
+                                const int r = freeIndex[3 * n + std::size_t(i)], c = freeIndex[3 * m + std::size_t(k)];
+                                if (r != kNoFree && c != kNoFree) triplets.emplace_back(r, c, 0.0);
+                            }
+            }
         pattern.resize(Eigen::Index(freeCount), Eigen::Index(freeCount));
         pattern.setFromTriplets(triplets.begin(), triplets.end());
         pattern.makeCompressed();
@@ -136,10 +203,22 @@ struct HyperelasticFem::Impl {
     /// Potential energy of `u`; +inf when a tet inverts.
     double energy(const std::vector<double>& u, const SphereContactDef* sphere) const {
         double total = 0.0;
+        std::vector<double> tetJ(nodal ? tets.size() : 0);
         for (std::size_t e = 0; e < tets.size(); ++e) {
-            const HyperelasticPoint p = law.evaluate(deformationGradient(e, u));
+            const glm::dmat3 f = deformationGradient(e, u);
+            const HyperelasticPoint p = law.evaluate(f);
             if (!p.valid) return std::numeric_limits<double>::infinity();
             total += rest[e].volumeMm3 * p.energyNPerMm2;
+            if (nodal) tetJ[e] = glm::determinant(f);
+        }
+        if (nodal) {
+            std::vector<double> nodeJ;
+            if (!nodeVolumeRatios(tetJ, nodeJ)) return std::numeric_limits<double>::infinity();
+            for (std::size_t a = 0; a < nodeJ.size(); ++a)
+                if (nodeVolume[a] > 0.0) {
+                    const double lnJ = std::log(nodeJ[a]);
+                    total += nodeVolume[a] * 0.5 * lambda * lnJ * lnJ;
+                }
         }
         if (sphere)
             for (TetNodeId n : sphere->nodes) {
@@ -201,6 +280,7 @@ struct HyperelasticFem::Impl {
                 }
             }
         }
+        if (nodal && !assembleNodalVolumeTerm(u, gradient, tangent, fixedIncrement, predictor)) return false;
         if (internalOnly) *internalOnly = gradient;
         if (sphere)
             for (TetNodeId n : sphere->nodes) {
@@ -219,6 +299,123 @@ struct HyperelasticFem::Impl {
                         if (r != kNoFree && c != kNoFree) values[positionOf(r, c)] += kappa * normal[i] * normal[k];
                     }
             }
+        return true;
+    }
+
+    /// Adds K entry (row DOF, column DOF) of the free block, or its push on the free DOFs when the
+    /// column is a fixed DOF still to move.
+    void addEntry(std::size_t rowDof, std::size_t colDof, double v, double* values,
+                  const std::vector<double>* fixedIncrement, std::vector<double>* predictor) const {
+        const int r = freeIndex[rowDof], c = freeIndex[colDof];
+        if (r == kNoFree) return;
+        if (c != kNoFree) values[positionOf(r, c)] += v;
+        else if (predictor && (*fixedIncrement)[colDof] != 0.0) (*predictor)[rowDof] += v * (*fixedIncrement)[colDof];
+    }
+
+    /// The nodal volume term of the nodal-pressure element: its force sum_e pbar_e V_e cof(F_e) g_n
+    /// (pbar_e the mean of p_a = lambda ln J_a / J_a over the tet's nodes) and, with `tangent`, its
+    /// stiffness: per node V_a U''(J_a) dJ_a dJ_a^T, per tet pbar_e V_e d2J_e. False when a node's
+    /// volume ratio is not positive.
+    bool assembleNodalVolumeTerm(const std::vector<double>& u, std::vector<double>& gradient, bool tangent,
+                                 const std::vector<double>* fixedIncrement, std::vector<double>* predictor) const {
+        double* values = const_cast<SparseMatrix&>(pattern).valuePtr();
+        std::vector<double> tetJ(tets.size());
+        std::vector<std::array<glm::dvec3, 4>> h(tets.size());  // F_e^-T g_n: J_e h_n = cof(F_e) g_n
+        for (std::size_t e = 0; e < tets.size(); ++e) {
+            const glm::dmat3 f = deformationGradient(e, u);
+            tetJ[e] = glm::determinant(f);
+            if (!(tetJ[e] > 0.0)) return false;
+            const glm::dmat3 inverseTranspose = glm::transpose(glm::inverse(f));
+            for (int n = 0; n < 4; ++n) h[e][std::size_t(n)] = inverseTranspose * rest[e].grad[std::size_t(n)];
+        }
+        std::vector<double> nodeJ;
+        if (!nodeVolumeRatios(tetJ, nodeJ)) return false;
+        std::vector<double> pressure(nodeJ.size(), 0.0);
+        for (std::size_t a = 0; a < nodeJ.size(); ++a)
+            if (nodeVolume[a] > 0.0) pressure[a] = lambda * std::log(nodeJ[a]) / nodeJ[a];
+        for (std::size_t e = 0; e < tets.size(); ++e) {
+            double mean = 0.0;
+            for (TetNodeId n : tets[e]) mean += 0.25 * pressure[n];
+            const double scale = mean * rest[e].volumeMm3 * tetJ[e];
+            for (int n = 0; n < 4; ++n)
+                for (int i = 0; i < 3; ++i)
+                    gradient[3 * tets[e][std::size_t(n)] + std::size_t(i)] += scale * h[e][std::size_t(n)][i];
+            if (!tangent) continue;
+            // d2 J / dx_n,i dx_m,k = J (h_n,i h_m,k - h_m,i h_n,k)
+            const int* at = slot.data() + e * 144;
+            for (int n = 0; n < 4; ++n)
+                for (int m = 0; m < 4; ++m) {
+                    const glm::dvec3& hn = h[e][std::size_t(n)];
+                    const glm::dvec3& hm = h[e][std::size_t(m)];
+                    for (int i = 0; i < 3; ++i)
+                        for (int k = 0; k < 3; ++k) {
+                            const double v = scale * (hn[i] * hm[k] - hm[i] * hn[k]);
+                            const int position = at[(3 * n + i) * 12 + 3 * m + k];
+                            if (position >= 0) values[position] += v;
+                            else
+                                addEntry(3 * tets[e][std::size_t(n)] + std::size_t(i),
+                                         3 * tets[e][std::size_t(m)] + std::size_t(k), v, values, fixedIncrement,
+                                         predictor);
+                        }
+                }
+        }
+        if (!tangent) return true;
+        // Per node, the row dJ_a/dx of D (free DOFs) and its product with the fixed DOFs' motion
+        // still to come; the stiffness is D^T diag(k) D, added into the pattern column by column.
+        std::vector<Eigen::Triplet<double>> rows;
+        std::vector<double> k(nodeJ.size(), 0.0), pushed(nodeJ.size(), 0.0);
+        std::vector<TetNodeId> patch;
+        std::vector<glm::dvec3> d;
+        for (std::size_t a = 0; a < nodeJ.size(); ++a) {
+            if (nodeVolume[a] <= 0.0) continue;
+            patch.clear();
+            d.clear();
+            for (std::uint32_t t = tetsOfStart[a]; t < tetsOfStart[a + 1]; ++t) {
+                const std::uint32_t e = tetsOf[t];
+                const double weight = rest[e].volumeMm3 / 4.0 * tetJ[e] / nodeVolume[a];
+                for (int n = 0; n < 4; ++n) {
+                    const TetNodeId node = tets[e][std::size_t(n)];
+                    const auto at = std::find(patch.begin(), patch.end(), node);
+                    if (at == patch.end()) {
+                        patch.push_back(node);
+                        d.push_back(weight * h[e][std::size_t(n)]);
+                    } else {
+                        d[std::size_t(at - patch.begin())] += weight * h[e][std::size_t(n)];
+                    }
+                }
+            }
+            const double lnJ = std::log(nodeJ[a]);
+            k[a] = nodeVolume[a] * lambda * (1.0 - lnJ) / (nodeJ[a] * nodeJ[a]);
+            for (std::size_t p = 0; p < patch.size(); ++p)
+                for (int i = 0; i < 3; ++i) {
+                    const std::size_t dof = 3 * patch[p] + std::size_t(i);
+                    if (freeIndex[dof] != kNoFree) rows.emplace_back(int(a), freeIndex[dof], d[p][i]);
+                    else if (predictor) pushed[a] += d[p][i] * (*fixedIncrement)[dof];
+                }
+        }
+        SparseMatrix dFree(Eigen::Index(nodeJ.size()), Eigen::Index(freeCount));
+        dFree.setFromTriplets(rows.begin(), rows.end());
+        const Eigen::Map<const Eigen::VectorXd> kMap(k.data(), Eigen::Index(k.size()));
+        const SparseMatrix kd = kMap.asDiagonal() * dFree;
+        const SparseMatrix nodalK = SparseMatrix(dFree.transpose()) * kd;
+        for (Eigen::Index col = 0; col < nodalK.outerSize(); ++col) {
+            int position = pattern.outerIndexPtr()[col];
+            const int* inner = pattern.innerIndexPtr();
+            const int end = pattern.outerIndexPtr()[col + 1];
+            for (SparseMatrix::InnerIterator it(nodalK, col); it; ++it) {
+                while (position < end && inner[position] < it.row()) ++position;  // it holds every patch pair
+                if (position < end && inner[position] == it.row()) values[position] += it.value();
+            }
+        }
+        if (predictor) {
+            // K_fp times the motion: D_f^T diag(k) (D_p motion)
+            for (Eigen::Index col = 0; col < dFree.outerSize(); ++col)
+                for (SparseMatrix::InnerIterator it(dFree, col); it; ++it) {
+                    const std::size_t node = std::size_t(it.row());
+                    if (pushed[node] == 0.0) continue;
+                    (*predictor)[freeDof[std::size_t(col)]] += it.value() * k[node] * pushed[node];
+                }
+        }
         return true;
     }
 };
@@ -247,8 +444,12 @@ HyperelasticFem::HyperelasticFem(const TetMesh& mesh, const HyperelasticMaterial
     }
     s.freeIndex.assign(s.fixed.size(), kNoFree);
     for (std::size_t d = 0; d < s.fixed.size(); ++d)
-        if (!s.fixed[d]) s.freeIndex[d] = int(s.freeCount++);
+        if (!s.fixed[d]) {
+            s.freeIndex[d] = int(s.freeCount++);
+            s.freeDof.push_back(d);
+        }
     if (s.freeCount == 0) throw std::invalid_argument("every DOF is fixed: nothing to solve");
+    if (s.nodal) s.buildNodePatches();
     s.buildPattern();
     const FemSolverKind kind = options.linear.kind;
     s.direct = kind == FemSolverKind::DirectLdlt ||

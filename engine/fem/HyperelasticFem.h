@@ -30,7 +30,11 @@ struct SphereContactDef {
 };
 
 struct HyperelasticSolverDef {
-    FemSolverDef linear;                 ///< LDLT or CG for each Newton step (CG tolerance is adapted)
+    /// The tets (docs/accuracy.md, "Element"): constant strain, or the law's volume term on each
+    /// node's volume ratio (nodal pressure, locking-free). Constant strain until the nodal-pressure
+    /// hyperelastic FEM is checked against a second solver at large strain.
+    TetElement element = TetElement::ConstantStrain;
+    FemSolverDef linear;  ///< LDLT or CG for each Newton step (CG tolerance is adapted; its element is not read)
     /// |r_free| <= tol * |internal force| ends the iterations. Rounding leaves ~2e-9 on the graded
     /// block at strains of 1e-4, where the energy's decrease is below its last digit.
     double residualTolerance = 1e-8;

@@ -39,6 +39,12 @@ HyperelasticLawEvaluator::HyperelasticLawEvaluator(const HyperelasticMaterial& m
     mB = m.law == HyperelasticLaw::Exponential ? m.stiffeningExponent : 0.0;
 }
 
+HyperelasticLawEvaluator HyperelasticLawEvaluator::withoutVolumeTerm() const {
+    HyperelasticLawEvaluator out = *this;
+    out.mLambda = 0.0;
+    return out;
+}
+
 /// J - 1 and psi = I1 - 3 - 2 ln J from H = F - I without the cancellation of the plain formulas
 /// (at small strain psi is O(H^2) while I1 - 3 and 2 ln J are O(H)): J - 1 = tr H + (principal 2x2
 /// minors) + det H, ln J = log1p(J - 1).

@@ -52,6 +52,10 @@ public:
     HyperelasticPoint evaluate(const glm::dmat3& deformationGradient) const;
     /// A_iJkL = dP_iJ / dF_kL flattened as tangent[(3 i + J) * 9 + 3 k + L]; false when J <= 0.
     bool tangent(const glm::dmat3& deformationGradient, std::array<double, 81>& tangent) const;
+    /// The same law without its volume term lambda/2 (ln J)^2: what the nodal-pressure element
+    /// evaluates per tet, the volume term going to the nodes (docs/accuracy.md, "Element").
+    HyperelasticLawEvaluator withoutVolumeTerm() const;
+    double lambdaNPerMm2() const { return mLambda; }
 
 private:
     double mLambda, mMu, mB;

@@ -7,9 +7,12 @@
 #include "engine/fem/ClosedForms.h"
 #include "engine/fem/HyperelasticClosedForms.h"
 #include "engine/fem/HyperelasticFem.h"
+#include "engine/fem/LinearElasticFem.h"
+#include "tests/accuracy/AccuracyTestMeshes.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -138,6 +141,76 @@ TEST(HyperelasticFem, TheSmallStrainLimitIsTheLinearFemWithinOnePercent) {
         EXPECT_GT(r.forceLinearN, 0.0);
         EXPECT_LT(r.forceDifference, 0.01) << hyperelasticLawName(m.law);
         EXPECT_LT(r.displacementDifference, 0.01) << hyperelasticLawName(m.law);
+    }
+}
+
+// The nodal-pressure hyperelastic FEM (an option until it is checked against a second solver at
+// large strain; docs/accuracy.md): a homogeneous deformation gives every node the tets' volume
+// ratio, so it is the constant-strain FEM's exact solution too; at small strain it is the linear
+// nodal-pressure FEM, also at nu = 0.499 where constant-strain tets lock.
+TEST(HyperelasticFem, NodalPressureKeepsHomogeneousDeformationsAndIsTheLinearElementAtSmallStrain) {
+    const auto box = test::kuhnBox(3, {0, 0, 0}, 1.0, 0.15, 5);
+    HyperelasticSolverDef nodal;
+    nodal.element = TetElement::NodalPressure;
+    nodal.linear.kind = FemSolverKind::DirectLdlt;
+    {
+        // Stretched 30 % along x, sheared 20 %, squeezed 10 % along z: the boundary carries it.
+        const double f[3][3] = {{1.3, 0.2, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 0.9}};
+        std::vector<std::uint8_t> fixed(box.mesh.dofCount(), 0);
+        HyperelasticLoad load;
+        load.prescribedMm.assign(box.mesh.dofCount(), 0.0);
+        for (std::size_t n = 0; n < box.mesh.nodeCount(); ++n)
+            if (box.onBoundary[n])
+                for (int i = 0; i < 3; ++i) {
+                    fixed[3 * n + std::size_t(i)] = 1;
+                    const glm::dvec3& x = box.mesh.nodesMm[n];
+                    load.prescribedMm[3 * n + std::size_t(i)] = f[i][0] * x.x + f[i][1] * x.y + f[i][2] * x.z - x[i];
+                }
+        const std::vector<glm::dvec3> rest(box.mesh.nodeCount(), glm::dvec3(0.0));
+        const HyperelasticState a = HyperelasticFem(box.mesh, neoHookean(0.49), fixed, nodal).solve(load, rest);
+        const HyperelasticState b = HyperelasticFem(box.mesh, neoHookean(0.49), fixed).solve(load, rest);
+        ASSERT_TRUE(a.converged) << a.failure;
+        ASSERT_TRUE(b.converged) << b.failure;
+        double largest = 0.0;
+        for (const auto& r : b.reactionN) largest = std::max(largest, glm::length(r));
+        for (std::size_t n = 0; n < box.mesh.nodeCount(); ++n) {
+            const glm::dvec3& x = box.mesh.nodesMm[n];
+            for (int i = 0; i < 3; ++i)
+                EXPECT_NEAR(a.displacementMm[n][i], f[i][0] * x.x + f[i][1] * x.y + f[i][2] * x.z - x[i], 1e-9);
+            EXPECT_NEAR(glm::length(a.reactionN[n] - b.reactionN[n]), 0.0, 1e-8 * largest);
+        }
+    }
+    // Small strain: the top pressed 1e-4 mm with the bottom held and the sides free.
+    for (const double nu : {0.3, 0.499}) {
+        std::vector<std::uint8_t> fixed(box.mesh.dofCount(), 0);
+        HyperelasticLoad load;
+        load.prescribedMm.assign(box.mesh.dofCount(), 0.0);
+        for (std::size_t n = 0; n < box.mesh.nodeCount(); ++n) {
+            const double z = box.mesh.nodesMm[n].z;
+            if (z < 1e-9) fixed[3 * n] = fixed[3 * n + 1] = fixed[3 * n + 2] = 1;
+            if (z > 1.0 - 1e-9) {
+                fixed[3 * n + 2] = 1;
+                load.prescribedMm[3 * n + 2] = -1e-4;
+            }
+        }
+        const HyperelasticState hyper = HyperelasticFem(box.mesh, neoHookean(nu), fixed, nodal)
+                                            .solve(load,
+                                                   std::vector<glm::dvec3>(box.mesh.nodeCount(), glm::dvec3(0.0)));
+        ASSERT_TRUE(hyper.converged) << hyper.failure;
+        FemSolverDef linearNodal;
+        linearNodal.element = TetElement::NodalPressure;
+        const FemSolution linear = LinearElasticFem(box.mesh, neoHookean(nu).smallStrain, fixed, linearNodal)
+                                       .solve(load.prescribedMm);
+        double forceHyper = 0.0, forceLinear = 0.0;
+        for (std::size_t n = 0; n < box.mesh.nodeCount(); ++n)
+            if (box.mesh.nodesMm[n].z > 1.0 - 1e-9) {
+                forceHyper -= hyper.reactionN[n].z;
+                forceLinear -= linear.reactionN[n].z;
+            }
+        EXPECT_GT(forceLinear, 0.0);
+        EXPECT_NEAR(forceHyper / forceLinear, 1.0, 0.01) << "nu " << nu;
+        for (std::size_t n = 0; n < box.mesh.nodeCount(); ++n)
+            EXPECT_NEAR(glm::length(hyper.displacementMm[n] - linear.displacementMm[n]), 0.0, 0.01 * 1e-4) << n;
     }
 }
 
