@@ -262,11 +262,11 @@ ExerciseEditorPanel::ExerciseEditorPanel(ResourceFinder findResource, QWidget* p
 }
 
 ExerciseEditorPanel::~ExerciseEditorPanel() {
+    // Nothing the children say on their way out (a field losing focus, the undo stack's
+    // cleanChanged) may reach this half-destroyed panel.
+    for (QObject* child : findChildren<QObject*>()) child->blockSignals(true);
     // Waits for a running reach check: its callback must not reach a panel that is half gone.
     mDocument.reset();
-    // The stack is a child: it is deleted after this body and emits cleanChanged on its way out,
-    // when the members the slot touches are already gone.
-    mUndoStack->disconnect(this);
 }
 
 QLabel* ExerciseEditorPanel::rowLabel(const char* text) {
